@@ -10,5 +10,6 @@
 #include "collide/geometry3.h"
 #include "collide/query2.h"
 #include "collide/query3.h"
+#include "collide/broad.h"
 
 #endif

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs with apt-get whatever the build, the tool and the test suite need and this machine
+# lacks. Sourced by the other scripts; does nothing when everything is already there.
+set -euo pipefail
+
+collide_missing_packages() {
+	local missing=()
+	command -v cmake >/dev/null 2>&1 || missing+=(cmake)
+	command -v cc >/dev/null 2>&1 || missing+=(gcc)
+	command -v make >/dev/null 2>&1 || missing+=(make)
+	command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
+	dpkg -s libcjson-dev >/dev/null 2>&1 || missing+=(libcjson-dev)
+	if [ "${1:-}" = "tests" ]; then
+		command -v clang >/dev/null 2>&1 || missing+=(clang)
+		# clang's AddressSanitizer/UBSan runtime lives in a separate package on Debian 12.
+		ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.asan-x86_64.a >/dev/null 2>&1 ||
+			missing+=(libclang-rt-14-dev)
+		command -v xmllint >/dev/null 2>&1 || missing+=(libxml2-utils)
+	fi
+	echo "${missing[@]:-}"
+}
+
+collide_ensure_deps() {
+	local missing
+	missing=$(collide_missing_packages "${1:-}")
+	if [ -n "$missing" ]; then
+		echo "collide: installing missing packages: $missing"
+		local sudo=""
+		[ "$(id -u)" -eq 0 ] || sudo="sudo"
+		$sudo apt-get update -qq
+		# shellcheck disable=SC2086
+		DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing >/dev/null
+	fi
+}

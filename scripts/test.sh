@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Builds and runs the whole test suite three times: the float build, the double build
+# (COLLIDE_DOUBLE) and the sanitizer build (clang, AddressSanitizer + UBSan, Debug so that
+# CD_ASSERT is live). Warnings are errors in all three. Ends with CTest's summary.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=ensure-deps.sh
+. "$root/scripts/ensure-deps.sh"
+collide_ensure_deps tests
+
+jobs=$(nproc)
+run_suite() {
+	local name=$1
+	shift
+	local build="$root/build/$name"
+	echo "=== $name build ==="
+	mkdir -p "$build"
+	# Quiet when all is well; the whole log when configuring or compiling fails.
+	if ! { cmake -S "$root" -B "$build" -DCOLLIDE_WERROR=ON "$@" &&
+		cmake --build "$build" -j"$jobs"; } >"$build/build.log" 2>&1; then
+		cat "$build/build.log"
+		echo "collide: the $name build failed" >&2
+		exit 1
+	fi
+	ctest --test-dir "$build" -j"$jobs" --output-on-failure --timeout 600
+}
+
+run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo
+run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON
+CC=clang run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON
