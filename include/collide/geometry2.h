@@ -111,6 +111,16 @@ extern "C"
 	 *   CD_ERROR_DEGENERATE        fewer than 3 distinct points, or all points collinear */
 	CD_API cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out);
 
+/* Weld and collinearity tolerance of cd2MakePolygon at ordinary coordinates: half a linear slop. */
+#define CD2_POLYGON_WELD_TOLERANCE (CD_R(0.5) * CD_LINEAR_SLOP)
+
+	/* The tolerance cd2MakePolygon uses for points whose largest |coordinate| is maxAbsCoordinate:
+	 * max(CD2_POLYGON_WELD_TOLERANCE, 64 * CD_REAL_EPSILON * maxAbsCoordinate), so that welding and
+	 * collinearity still make sense where round-off exceeds the slop (huge coordinates). Points
+	 * closer than this are welded; a vertex closer than this to the line through its neighbours is
+	 * dropped. */
+	CD_API cdReal cd2GetPolygonWeldTolerance(cdReal maxAbsCoordinate);
+
 	/* The 4-vertex polygon of an oriented box (never fails for a valid box with non-zero area;
 	 * returns CD_ERROR_DEGENERATE for a zero-area box and the validator's errors otherwise). */
 	CD_API cdResult cd2MakeBoxPolygon(cd2Box box, cd2Polygon* out);
