@@ -1,0 +1,350 @@
+/* collide: 2D ray casts against the primitive shapes, and the dispatcher on tagged shapes.
+ *
+ * Same conventions as the 3D casts (see raycast3.c and query3.h): fraction in [0, 1], point =
+ * origin + fraction * translation, outward unit normal; an origin inside a solid shape (boundary
+ * included) hits at fraction 0 with normal -normalize(translation), the zero vector for a zero
+ * translation; zero-length rays never hit the non-solid segment; *hit is untouched on a miss. */
+#include "collide/query2.h"
+
+#include "query/raycast_common.h"
+
+/* Unit direction and length of the translation; false for a zero (or non-finite) length. */
+static bool cd2GetRayDirection(cd2Vec translation, cd2Vec* direction, cdReal* length)
+{
+	cdReal l = cd2Length(translation);
+	if (!(l > CD_R(0.0)) || !cdIsValidReal(l))
+	{
+		return false;
+	}
+	*length = l;
+	*direction = cd2Scale(CD_R(1.0) / l, translation);
+	return true;
+}
+
+static bool cd2HitFromInside(cd2Ray ray, cd2RayHit* hit)
+{
+	hit->fraction = CD_R(0.0);
+	hit->point = ray.origin;
+	hit->normal = cd2Neg(cd2Normalize(ray.translation));
+	return true;
+}
+
+static bool cd2HitAtFraction(cd2Ray ray, cdReal fraction, cd2Vec normal, cd2RayHit* hit)
+{
+	fraction = cdClamp(fraction, CD_R(0.0), CD_R(1.0));
+	hit->fraction = fraction;
+	hit->point = cd2MulAdd(ray.origin, fraction, ray.translation);
+	hit->normal = normal;
+	return true;
+}
+
+/* Entry into a disk whose center is `offset` = origin - center away from the ray origin, for an
+ * origin outside it; the normal falls back to -direction for a zero radius. */
+static bool cd2RayEntryIntoCircle(cd2Vec offset, cdReal radius, cd2Vec direction, cdReal length,
+								  cdReal* distance, cd2Vec* normal)
+{
+	cdReal outside = cd2Dot(offset, offset) - radius * radius;
+	cdReal lineOffset = cd2Cross(direction, offset);
+	if (!cdRayEntryIntoBall(cd2Dot(offset, direction), outside, radius * radius, lineOffset * lineOffset,
+							length, distance))
+	{
+		return false;
+	}
+	*normal = cd2Normalize(cd2MulAdd(offset, *distance, direction));
+	if (cd2LengthSquared(*normal) == CD_R(0.0))
+	{
+		*normal = cd2Neg(direction);
+	}
+	return true;
+}
+
+bool cd2RaycastCircle(cd2Circle c, cd2Ray ray, cd2RayHit* hit)
+{
+	cd2Vec offset = cd2Sub(ray.origin, c.center);
+	if (cd2Dot(offset, offset) <= c.radius * c.radius)
+	{
+		return cd2HitFromInside(ray, hit);
+	}
+	cd2Vec direction, normal;
+	cdReal length, distance;
+	if (!cd2GetRayDirection(ray.translation, &direction, &length) ||
+		!cd2RayEntryIntoCircle(offset, c.radius, direction, length, &distance, &normal))
+	{
+		return false;
+	}
+	return cd2HitAtFraction(ray, distance / length, normal, hit);
+}
+
+/* A stadium is the union of its two end disks and the rectangle between them (see the 3D capsule):
+ * the first entry is the earliest of the entry into the infinite band around the axis, when it
+ * lies between the ends, and the entries into the two disks. */
+bool cd2RaycastCapsule(cd2Capsule c, cd2Ray ray, cd2RayHit* hit)
+{
+	cd2Vec axis = cd2Sub(c.p2, c.p1);
+	cd2Vec offset = cd2Sub(ray.origin, c.p1);
+	cdReal radiusSquared = c.radius * c.radius;
+
+	cdReal axisLengthSquared = cd2Dot(axis, axis);
+	cdReal along = cd2Dot(offset, axis);
+	cd2Vec fromAxis = offset;
+	if (along >= axisLengthSquared)
+	{
+		fromAxis = cd2Sub(ray.origin, c.p2);
+	}
+	else if (along > CD_R(0.0))
+	{
+		fromAxis = cd2MulSub(offset, along / axisLengthSquared, axis);
+	}
+	if (cd2Dot(fromAxis, fromAxis) <= radiusSquared)
+	{
+		return cd2HitFromInside(ray, hit);
+	}
+
+	cd2Vec direction;
+	cdReal length;
+	if (!cd2GetRayDirection(ray.translation, &direction, &length))
+	{
+		return false;
+	}
+
+	bool found = false;
+	cdReal best = length;
+	cd2Vec bestNormal = CD2_VEC_ZERO;
+	cdReal distance;
+	cd2Vec normal;
+
+	cdReal axisLength;
+	cd2Vec unitAxis = cd2GetLengthAndNormalize(&axisLength, axis);
+	if (cd2LengthSquared(unitAxis) > CD_R(0.0))
+	{
+		/* Signed distance from the axis line (positive on the left) and its rate along the ray. */
+		cdReal side = cd2Cross(unitAxis, offset);
+		cdReal rate = cd2Cross(unitAxis, direction);
+		if (cdAbs(side) > c.radius && side * rate < CD_R(0.0))
+		{
+			cdReal t = (cdAbs(side) - c.radius) / cdAbs(rate);
+			cdReal hitAlong = cd2Dot(offset, unitAxis) + t * cd2Dot(direction, unitAxis);
+			if (t <= best && CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
+			{
+				found = true;
+				best = t;
+				bestNormal = side > CD_R(0.0) ? cd2LeftPerp(unitAxis) : cd2RightPerp(unitAxis);
+			}
+		}
+	}
+
+	if (cd2RayEntryIntoCircle(offset, c.radius, direction, length, &distance, &normal) && distance <= best)
+	{
+		found = true;
+		best = distance;
+		bestNormal = normal;
+	}
+	if (cd2RayEntryIntoCircle(cd2Sub(ray.origin, c.p2), c.radius, direction, length, &distance, &normal) &&
+		distance <= best)
+	{
+		found = true;
+		best = distance;
+		bestNormal = normal;
+	}
+	if (!found)
+	{
+		return false;
+	}
+	return cd2HitAtFraction(ray, best / length, bestNormal, hit);
+}
+
+/* Slab test in a frame where the box is lower..upper; fills the fraction and the local normal. */
+static cdSlabResult cd2RaycastLocalBox(cd2Vec lower, cd2Vec upper, cd2Vec origin, cd2Vec translation,
+									   cdReal* fraction, cd2Vec* normal)
+{
+	cdReal o[2] = {origin.x, origin.y};
+	cdReal d[2] = {translation.x, translation.y};
+	cdReal lo[2] = {lower.x, lower.y};
+	cdReal hi[2] = {upper.x, upper.y};
+	int axis = 0;
+	cdSlabResult result = cdRaycastSlabs(2, o, d, lo, hi, fraction, &axis);
+	if (result == CD_SLAB_HIT)
+	{
+		cdReal sign = d[axis] > CD_R(0.0) ? CD_R(-1.0) : CD_R(1.0);
+		*normal = axis == 0 ? cd2MakeVec(sign, CD_R(0.0)) : cd2MakeVec(CD_R(0.0), sign);
+	}
+	return result;
+}
+
+bool cd2RaycastAabb(cd2Aabb b, cd2Ray ray, cd2RayHit* hit)
+{
+	cdReal fraction = CD_R(0.0);
+	cd2Vec normal = CD2_VEC_ZERO;
+	switch (cd2RaycastLocalBox(b.min, b.max, ray.origin, ray.translation, &fraction, &normal))
+	{
+		case CD_SLAB_MISS:
+			return false;
+		case CD_SLAB_INSIDE:
+			return cd2HitFromInside(ray, hit);
+		case CD_SLAB_HIT:
+			break;
+	}
+	/* Keep the point on the box against round-off: clamp it, and put it exactly on the entry side. */
+	cd2Vec point = cd2Clamp(cd2MulAdd(ray.origin, fraction, ray.translation), b.min, b.max);
+	if (normal.x != CD_R(0.0))
+	{
+		point.x = normal.x < CD_R(0.0) ? b.min.x : b.max.x;
+	}
+	else
+	{
+		point.y = normal.y < CD_R(0.0) ? b.min.y : b.max.y;
+	}
+	hit->fraction = fraction;
+	hit->point = point;
+	hit->normal = normal;
+	return true;
+}
+
+bool cd2RaycastBox(cd2Box b, cd2Ray ray, cd2RayHit* hit)
+{
+	cd2Vec origin = cd2InvRotateVector(b.rotation, cd2Sub(ray.origin, b.center));
+	cd2Vec translation = cd2InvRotateVector(b.rotation, ray.translation);
+	cdReal fraction = CD_R(0.0);
+	cd2Vec normal = CD2_VEC_ZERO;
+	switch (cd2RaycastLocalBox(cd2Neg(b.halfExtents), b.halfExtents, origin, translation, &fraction, &normal))
+	{
+		case CD_SLAB_MISS:
+			return false;
+		case CD_SLAB_INSIDE:
+			return cd2HitFromInside(ray, hit);
+		case CD_SLAB_HIT:
+			break;
+	}
+	return cd2HitAtFraction(ray, fraction, cd2RotateVector(b.rotation, normal), hit);
+}
+
+/* Clipping against the edge half-planes (Ericson 5.3.8): dot(n, origin + t d - v) <= 0 reads
+ * t * dot(n, d) <= dot(n, v - origin). Fractions are compared as products before dividing, so a
+ * nearly parallel edge never divides to an overflowing quotient that matters. */
+bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
+{
+	CD_ASSERT(polygon != NULL && hit != NULL);
+	int count = polygon->count;
+	if (count < 1 || count > CD2_MAX_POLYGON_VERTICES)
+	{
+		return false;
+	}
+
+	bool inside = true;
+	for (int i = 0; i < count && inside; ++i)
+	{
+		inside = cd2Dot(polygon->normals[i], cd2Sub(polygon->vertices[i], ray.origin)) >= CD_R(0.0);
+	}
+	if (inside)
+	{
+		return cd2HitFromInside(ray, hit);
+	}
+
+	cdReal lower = CD_R(0.0), upper = CD_R(1.0);
+	int index = -1;
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal numerator = cd2Dot(polygon->normals[i], cd2Sub(polygon->vertices[i], ray.origin));
+		cdReal denominator = cd2Dot(polygon->normals[i], ray.translation);
+		if (denominator == CD_R(0.0))
+		{
+			if (numerator < CD_R(0.0))
+			{
+				return false; /* parallel to this edge and outside it */
+			}
+		}
+		else if (denominator < CD_R(0.0) && numerator < lower * denominator)
+		{
+			lower = numerator / denominator;
+			index = i;
+		}
+		else if (denominator > CD_R(0.0) && numerator < upper * denominator)
+		{
+			upper = numerator / denominator;
+		}
+		if (upper < lower)
+		{
+			return false;
+		}
+	}
+	/* The origin is outside some edge; the ray enters through it or through a later one. */
+	if (index < 0)
+	{
+		return false;
+	}
+	return cd2HitAtFraction(ray, lower, polygon->normals[index], hit);
+}
+
+/* Two-sided: solves origin + t d = p1 + s e with t, s in [0, 1], comparing the numerators with the
+ * denominator before dividing. A ray along the segment's line hits at the first point it shares
+ * with it, with normal -normalize(translation) (the segment as a zero-radius capsule). */
+bool cd2RaycastSegment(cd2Segment g, cd2Ray ray, cd2RayHit* hit)
+{
+	cd2Vec d = ray.translation;
+	if (d.x == CD_R(0.0) && d.y == CD_R(0.0))
+	{
+		return false;
+	}
+	cd2Vec e = cd2Sub(g.p2, g.p1);
+	cd2Vec start = cd2Sub(g.p1, ray.origin);
+	cdReal denominator = cd2Cross(d, e);
+	if (denominator != CD_R(0.0))
+	{
+		cdReal fractionNumerator = cd2Cross(start, e);
+		cdReal segmentNumerator = cd2Cross(start, d);
+		if (denominator < CD_R(0.0))
+		{
+			denominator = -denominator;
+			fractionNumerator = -fractionNumerator;
+			segmentNumerator = -segmentNumerator;
+		}
+		if (fractionNumerator < CD_R(0.0) || fractionNumerator > denominator ||
+			segmentNumerator < CD_R(0.0) || segmentNumerator > denominator)
+		{
+			return false;
+		}
+		cd2Vec normal = cd2LeftPerp(cd2Normalize(e));
+		if (cd2Dot(normal, d) > CD_R(0.0))
+		{
+			normal = cd2Neg(normal);
+		}
+		return cd2HitAtFraction(ray, fractionNumerator / denominator, normal, hit);
+	}
+
+	cd2Vec finish = cd2Add(start, e);
+	if (cd2Cross(d, start) != CD_R(0.0) || cd2Cross(d, finish) != CD_R(0.0))
+	{
+		return false; /* parallel, off the ray's line */
+	}
+	cdReal lengthSquared = cd2Dot(d, d);
+	cdReal startAlong = cd2Dot(start, d), finishAlong = cd2Dot(finish, d);
+	cdReal first = cdMin(startAlong, finishAlong), last = cdMax(startAlong, finishAlong);
+	if (last < CD_R(0.0) || first > lengthSquared)
+	{
+		return false;
+	}
+	return cd2HitAtFraction(ray, cdMax(first, CD_R(0.0)) / lengthSquared, cd2Neg(cd2Normalize(d)), hit);
+}
+
+bool cd2Raycast(const cd2Shape* shape, cd2Ray ray, cd2RayHit* hit)
+{
+	CD_ASSERT(shape != NULL && hit != NULL);
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return cd2RaycastCircle(shape->circle, ray, hit);
+		case CD2_SHAPE_CAPSULE:
+			return cd2RaycastCapsule(shape->capsule, ray, hit);
+		case CD2_SHAPE_AABB:
+			return cd2RaycastAabb(shape->aabb, ray, hit);
+		case CD2_SHAPE_BOX:
+			return cd2RaycastBox(shape->box, ray, hit);
+		case CD2_SHAPE_POLYGON:
+			return cd2RaycastPolygon(&shape->polygon, ray, hit);
+		case CD2_SHAPE_SEGMENT:
+			return cd2RaycastSegment(shape->segment, ray, hit);
+		case CD2_SHAPE_TYPE_COUNT:
+			break;
+	}
+	return false;
+}

@@ -1,0 +1,423 @@
+/* collide: 3D ray casts against the primitive shapes, and the dispatcher on tagged shapes.
+ *
+ * Conventions (query3.h): the ray is origin + t * translation with t in [0, 1]; a hit reports the
+ * entry fraction, the point origin + fraction * translation and the outward unit normal there.
+ * A ray whose origin lies in a solid shape (boundary included) hits at fraction 0 with normal
+ * -normalize(translation), the zero vector for a zero translation. A zero translation hits only
+ * such solid shapes: it never hits the non-solid triangle and segment. *hit is untouched on a miss.
+ *
+ * Curved shapes work in distance units along the unit ray direction, which keeps every
+ * intermediate product of the order of the squared coordinates (no overflow for coordinates up to
+ * 1e9 in float) and lets the entry formulas avoid cancellation (see cdRayEntryIntoBall). */
+#include "collide/query3.h"
+
+#include "query/raycast_common.h"
+
+/* Unit direction and length of the translation; false for a zero (or non-finite) length. */
+static bool cd3GetRayDirection(cd3Vec translation, cd3Vec* direction, cdReal* length)
+{
+	cdReal l = cd3Length(translation);
+	if (!(l > CD_R(0.0)) || !cdIsValidReal(l))
+	{
+		return false;
+	}
+	*length = l;
+	*direction = cd3Scale(CD_R(1.0) / l, translation);
+	return true;
+}
+
+static bool cd3HitFromInside(cd3Ray ray, cd3RayHit* hit)
+{
+	hit->fraction = CD_R(0.0);
+	hit->point = ray.origin;
+	hit->normal = cd3Neg(cd3Normalize(ray.translation));
+	return true;
+}
+
+/* Fills *hit for an entry `distance` along the unit direction of a ray of length `length`. */
+static bool cd3HitAtDistance(cd3Ray ray, cdReal distance, cdReal length, cd3Vec normal, cd3RayHit* hit)
+{
+	cdReal fraction = cdClamp(distance / length, CD_R(0.0), CD_R(1.0));
+	hit->fraction = fraction;
+	hit->point = cd3MulAdd(ray.origin, fraction, ray.translation);
+	hit->normal = normal;
+	return true;
+}
+
+/* Entry into a ball whose center is `offset` = origin - center away from the ray origin, for an
+ * origin outside it. The normal falls back to -direction when the entry point is the center of a
+ * zero-radius ball. */
+static bool cd3RayEntryIntoSphere(cd3Vec offset, cdReal radius, cd3Vec direction, cdReal length,
+								  cdReal* distance, cd3Vec* normal)
+{
+	cdReal outside = cd3Dot(offset, offset) - radius * radius;
+	cd3Vec lineOffset = cd3Cross(direction, offset);
+	if (!cdRayEntryIntoBall(cd3Dot(offset, direction), outside, radius * radius, cd3LengthSquared(lineOffset),
+							length, distance))
+	{
+		return false;
+	}
+	*normal = cd3Normalize(cd3MulAdd(offset, *distance, direction));
+	if (cd3LengthSquared(*normal) == CD_R(0.0))
+	{
+		*normal = cd3Neg(direction);
+	}
+	return true;
+}
+
+bool cd3RaycastSphere(cd3Sphere s, cd3Ray ray, cd3RayHit* hit)
+{
+	cd3Vec offset = cd3Sub(ray.origin, s.center);
+	if (cd3Dot(offset, offset) <= s.radius * s.radius)
+	{
+		return cd3HitFromInside(ray, hit);
+	}
+	cd3Vec direction;
+	cdReal length, distance;
+	cd3Vec normal;
+	if (!cd3GetRayDirection(ray.translation, &direction, &length) ||
+		!cd3RayEntryIntoSphere(offset, s.radius, direction, length, &distance, &normal))
+	{
+		return false;
+	}
+	return cd3HitAtDistance(ray, distance, length, normal, hit);
+}
+
+/* A capsule is the union of its two end balls and the finite cylinder between them. The first
+ * entry into the union is the earliest of: the entry into the infinite cylinder when that point
+ * lies between the end planes, and the entries into the two balls (a ray entering the finite
+ * cylinder through an end disk is already inside that end's ball). Rays parallel to the axis
+ * never meet the side and are handled by the balls. */
+bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit)
+{
+	cd3Vec axis = cd3Sub(c.p2, c.p1);
+	cd3Vec offset = cd3Sub(ray.origin, c.p1);
+	cdReal radiusSquared = c.radius * c.radius;
+
+	/* Squared distance from the origin to the axis segment, for the inside test. */
+	cdReal axisLengthSquared = cd3Dot(axis, axis);
+	cdReal along = cd3Dot(offset, axis);
+	cd3Vec fromAxis = offset;
+	if (along >= axisLengthSquared)
+	{
+		fromAxis = cd3Sub(ray.origin, c.p2);
+	}
+	else if (along > CD_R(0.0))
+	{
+		fromAxis = cd3MulSub(offset, along / axisLengthSquared, axis);
+	}
+	if (cd3Dot(fromAxis, fromAxis) <= radiusSquared)
+	{
+		return cd3HitFromInside(ray, hit);
+	}
+
+	cd3Vec direction;
+	cdReal length;
+	if (!cd3GetRayDirection(ray.translation, &direction, &length))
+	{
+		return false;
+	}
+
+	bool found = false;
+	cdReal best = length;
+	cd3Vec bestNormal = CD3_VEC_ZERO;
+	cdReal distance;
+	cd3Vec normal;
+
+	cdReal axisLength;
+	cd3Vec unitAxis = cd3GetLengthAndNormalize(&axisLength, axis);
+	if (cd3LengthSquared(unitAxis) > CD_R(0.0))
+	{
+		cdReal offsetAlong = cd3Dot(offset, unitAxis);
+		cdReal directionAlong = cd3Dot(direction, unitAxis);
+		cd3Vec offsetPerp = cd3MulSub(offset, offsetAlong, unitAxis);
+		cd3Vec directionPerp = cd3MulSub(direction, directionAlong, unitAxis);
+		cdReal a = cd3Dot(directionPerp, directionPerp);
+		cdReal b = cd3Dot(offsetPerp, directionPerp);
+		cdReal outside = cd3Dot(offsetPerp, offsetPerp) - radiusSquared;
+		/* |directionPerp x offsetPerp| = |det(direction, offset, unitAxis)|: the discriminant
+		 * b^2 - a * outside rewritten as a * r^2 - det^2 without cancellation. */
+		cdReal det = cd3Dot(cd3Cross(direction, offset), unitAxis);
+		cdReal disc = a * radiusSquared - det * det;
+		if (outside > CD_R(0.0) && b < CD_R(0.0) && disc >= CD_R(0.0))
+		{
+			cdReal t = outside / (-b + cdSqrt(disc));
+			cdReal hitAlong = offsetAlong + t * directionAlong;
+			if (t <= best && CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
+			{
+				found = true;
+				best = t;
+				bestNormal = cd3Normalize(cd3MulAdd(offsetPerp, t, directionPerp));
+				if (cd3LengthSquared(bestNormal) == CD_R(0.0))
+				{
+					bestNormal = cd3Neg(cd3Normalize(directionPerp));
+				}
+			}
+		}
+	}
+
+	if (cd3RayEntryIntoSphere(offset, c.radius, direction, length, &distance, &normal) && distance <= best)
+	{
+		found = true;
+		best = distance;
+		bestNormal = normal;
+	}
+	if (cd3RayEntryIntoSphere(cd3Sub(ray.origin, c.p2), c.radius, direction, length, &distance, &normal) &&
+		distance <= best)
+	{
+		found = true;
+		best = distance;
+		bestNormal = normal;
+	}
+	if (!found)
+	{
+		return false;
+	}
+	return cd3HitAtDistance(ray, best, length, bestNormal, hit);
+}
+
+/* Slab test in a frame where the box is lower..upper; fills the fraction and the local normal. */
+static cdSlabResult cd3RaycastLocalBox(cd3Vec lower, cd3Vec upper, cd3Vec origin, cd3Vec translation,
+									   cdReal* fraction, cd3Vec* normal)
+{
+	cdReal o[3] = {origin.x, origin.y, origin.z};
+	cdReal d[3] = {translation.x, translation.y, translation.z};
+	cdReal lo[3] = {lower.x, lower.y, lower.z};
+	cdReal hi[3] = {upper.x, upper.y, upper.z};
+	int axis = 0;
+	cdSlabResult result = cdRaycastSlabs(3, o, d, lo, hi, fraction, &axis);
+	if (result == CD_SLAB_HIT)
+	{
+		cdReal n[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+		n[axis] = d[axis] > CD_R(0.0) ? CD_R(-1.0) : CD_R(1.0);
+		*normal = cd3MakeVec(n[0], n[1], n[2]);
+	}
+	return result;
+}
+
+bool cd3RaycastAabb(cd3Aabb b, cd3Ray ray, cd3RayHit* hit)
+{
+	cdReal fraction = CD_R(0.0);
+	cd3Vec normal = CD3_VEC_ZERO;
+	switch (cd3RaycastLocalBox(b.min, b.max, ray.origin, ray.translation, &fraction, &normal))
+	{
+		case CD_SLAB_MISS:
+			return false;
+		case CD_SLAB_INSIDE:
+			return cd3HitFromInside(ray, hit);
+		case CD_SLAB_HIT:
+			break;
+	}
+	/* Keep the point on the box against round-off: clamp it, and put it exactly on the entry face. */
+	cd3Vec point = cd3Clamp(cd3MulAdd(ray.origin, fraction, ray.translation), b.min, b.max);
+	if (normal.x != CD_R(0.0))
+	{
+		point.x = normal.x < CD_R(0.0) ? b.min.x : b.max.x;
+	}
+	else if (normal.y != CD_R(0.0))
+	{
+		point.y = normal.y < CD_R(0.0) ? b.min.y : b.max.y;
+	}
+	else
+	{
+		point.z = normal.z < CD_R(0.0) ? b.min.z : b.max.z;
+	}
+	hit->fraction = fraction;
+	hit->point = point;
+	hit->normal = normal;
+	return true;
+}
+
+bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit)
+{
+	cd3Vec origin = cd3InvRotateVector(b.rotation, cd3Sub(ray.origin, b.center));
+	cd3Vec translation = cd3InvRotateVector(b.rotation, ray.translation);
+	cdReal fraction = CD_R(0.0);
+	cd3Vec normal = CD3_VEC_ZERO;
+	switch (cd3RaycastLocalBox(cd3Neg(b.halfExtents), b.halfExtents, origin, translation, &fraction, &normal))
+	{
+		case CD_SLAB_MISS:
+			return false;
+		case CD_SLAB_INSIDE:
+			return cd3HitFromInside(ray, hit);
+		case CD_SLAB_HIT:
+			break;
+	}
+	hit->fraction = fraction;
+	hit->point = cd3MulAdd(ray.origin, fraction, ray.translation);
+	hit->normal = cd3RotateVector(b.rotation, normal);
+	return true;
+}
+
+/* Two-sided triangle (Ericson 5.3.4): the line through the ray meets the closed triangle when the
+ * three scalar triple products of the translation with the vertices relative to the origin share a
+ * sign; the fraction then comes from the plane. Working relative to the origin keeps the products
+ * small for far-away rays. A ray in the triangle's plane and a zero-area triangle never hit. */
+bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
+{
+	cd3Vec d = ray.translation;
+	cd3Vec pa = cd3Sub(t.a, ray.origin);
+	cd3Vec pb = cd3Sub(t.b, ray.origin);
+	cd3Vec pc = cd3Sub(t.c, ray.origin);
+
+	cd3Vec m = cd3Cross(d, pc);
+	cdReal u = cd3Dot(pb, m);
+	cdReal v = -cd3Dot(pa, m);
+	cdReal w = cd3Dot(d, cd3Cross(pb, pa));
+	bool allNonNegative = u >= CD_R(0.0) && v >= CD_R(0.0) && w >= CD_R(0.0);
+	bool allNonPositive = u <= CD_R(0.0) && v <= CD_R(0.0) && w <= CD_R(0.0);
+	if (!allNonNegative && !allNonPositive)
+	{
+		return false;
+	}
+
+	cd3Vec faceNormal = cd3Cross(cd3Sub(t.b, t.a), cd3Sub(t.c, t.a));
+	cd3Vec unitNormal = cd3Normalize(faceNormal);
+	if (cd3LengthSquared(unitNormal) == CD_R(0.0))
+	{
+		return false; /* zero area: a segment or a point, which a ray meets with probability zero */
+	}
+	/* fraction = dot(n, a - origin) / dot(n, translation), tested in [0, 1] before dividing. */
+	cdReal numerator = cd3Dot(unitNormal, pa);
+	cdReal denominator = cd3Dot(unitNormal, d);
+	if (denominator == CD_R(0.0))
+	{
+		return false;
+	}
+	cd3Vec normal = unitNormal;
+	if (denominator > CD_R(0.0))
+	{
+		/* The ray moves along the face normal, so it comes from the back side. */
+		normal = cd3Neg(unitNormal);
+		numerator = -numerator;
+		denominator = -denominator;
+	}
+	/* Now denominator < 0: need denominator <= numerator <= 0. */
+	if (numerator > CD_R(0.0) || numerator < denominator)
+	{
+		return false;
+	}
+	cdReal fraction = cdClamp(numerator / denominator, CD_R(0.0), CD_R(1.0));
+	hit->fraction = fraction;
+	hit->point = cd3MulAdd(ray.origin, fraction, d);
+	hit->normal = normal;
+	return true;
+}
+
+bool cd3RaycastPlane(cd3Plane plane, cd3Ray ray, cd3RayHit* hit)
+{
+	cdReal height = cd3Dot(plane.normal, ray.origin) - plane.offset;
+	if (height <= CD_R(0.0))
+	{
+		return cd3HitFromInside(ray, hit);
+	}
+	cdReal approach = -cd3Dot(plane.normal, ray.translation);
+	if (approach <= CD_R(0.0) || height > approach)
+	{
+		return false;
+	}
+	cdReal fraction = cdClamp(height / approach, CD_R(0.0), CD_R(1.0));
+	hit->fraction = fraction;
+	hit->point = cd3MulAdd(ray.origin, fraction, ray.translation);
+	hit->normal = plane.normal;
+	return true;
+}
+
+/* Squared distance between the ray point at `distance` (relative to the origin) and the segment
+ * start + [0, segmentLength] * unitSegment (also relative to the origin). */
+static cdReal cd3RayPointSegmentDistanceSquared(cd3Vec direction, cdReal distance, cd3Vec start,
+												cd3Vec unitSegment, cdReal segmentLength)
+{
+	cd3Vec point = cd3Scale(distance, direction);
+	cdReal along = cdClamp(cd3Dot(cd3Sub(point, start), unitSegment), CD_R(0.0), segmentLength);
+	return cd3LengthSquared(cd3Sub(point, cd3MulAdd(start, along, unitSegment)));
+}
+
+/* A segment has no interior and a ray meets it with probability zero, so the ray hits when it
+ * passes within a tolerance of it: 64 CD_REAL_EPSILON times the largest coordinate magnitude of the
+ * segment and the ray's end points (the round-off of the closest-point computation). The hit is
+ * the earliest of the candidate points within the tolerance: the closest approach of the two
+ * lines, the first ray point level with the segment (for rays along it) and the origin. The normal
+ * is perpendicular to the segment and faces the ray origin, -normalize(translation) when that is
+ * undefined (a ray along the segment, a zero-length segment). Zero-length rays never hit. */
+static bool cd3RaycastSegment(cd3Segment g, cd3Ray ray, cd3RayHit* hit)
+{
+	cd3Vec direction;
+	cdReal length;
+	if (!cd3GetRayDirection(ray.translation, &direction, &length))
+	{
+		return false;
+	}
+	cd3Vec end = cd3Add(ray.origin, ray.translation);
+	cd3Vec magnitude = cd3Max(cd3Max(cd3Abs(ray.origin), cd3Abs(end)), cd3Max(cd3Abs(g.p1), cd3Abs(g.p2)));
+	cdReal tolerance = CD_R(64.0) * CD_REAL_EPSILON * cdMax(magnitude.x, cdMax(magnitude.y, magnitude.z));
+	cdReal toleranceSquared = tolerance * tolerance;
+
+	cdReal segmentLength;
+	cd3Vec unitSegment = cd3GetLengthAndNormalize(&segmentLength, cd3Sub(g.p2, g.p1));
+	cd3Vec start = cd3Sub(g.p1, ray.origin);
+	cdReal cosine = cd3Dot(direction, unitSegment);
+	cdReal startAlongRay = cd3Dot(direction, start);
+	cdReal startAlongSegment = cd3Dot(unitSegment, start);
+
+	cdReal candidates[3];
+	int candidateCount = 0;
+	candidates[candidateCount++] = CD_R(0.0);
+	cdReal endAlongRay = startAlongRay + segmentLength * cosine;
+	candidates[candidateCount++] = cdClamp(cdMin(startAlongRay, endAlongRay), CD_R(0.0), length);
+	cdReal sineSquared = cd3LengthSquared(cd3Cross(direction, unitSegment));
+	if (sineSquared > CD_R(0.0))
+	{
+		/* Closest points of the two lines: s - w cos = startAlongRay, s cos - w = startAlongSegment. */
+		cdReal s = (startAlongRay - cosine * startAlongSegment) / sineSquared;
+		candidates[candidateCount++] = cdClamp(s, CD_R(0.0), length);
+	}
+
+	bool found = false;
+	cdReal best = length;
+	for (int i = 0; i < candidateCount; ++i)
+	{
+		if (candidates[i] <= best &&
+			cd3RayPointSegmentDistanceSquared(direction, candidates[i], start, unitSegment, segmentLength) <=
+				toleranceSquared)
+		{
+			found = true;
+			best = candidates[i];
+		}
+	}
+	if (!found)
+	{
+		return false;
+	}
+	cd3Vec normal = cd3Neg(cd3Normalize(cd3MulSub(direction, cosine, unitSegment)));
+	if (cd3LengthSquared(normal) == CD_R(0.0))
+	{
+		normal = cd3Neg(direction);
+	}
+	return cd3HitAtDistance(ray, best, length, normal, hit);
+}
+
+bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit)
+{
+	CD_ASSERT(shape != NULL && hit != NULL);
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			return cd3RaycastSphere(shape->sphere, ray, hit);
+		case CD3_SHAPE_CAPSULE:
+			return cd3RaycastCapsule(shape->capsule, ray, hit);
+		case CD3_SHAPE_AABB:
+			return cd3RaycastAabb(shape->aabb, ray, hit);
+		case CD3_SHAPE_BOX:
+			return cd3RaycastBox(shape->box, ray, hit);
+		case CD3_SHAPE_TRIANGLE:
+			return cd3RaycastTriangle(shape->triangle, ray, hit);
+		case CD3_SHAPE_PLANE:
+			return cd3RaycastPlane(shape->plane, ray, hit);
+		case CD3_SHAPE_SEGMENT:
+			return cd3RaycastSegment(shape->segment, ray, hit);
+		case CD3_SHAPE_TYPE_COUNT:
+			break;
+	}
+	return false;
+}
