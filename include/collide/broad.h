@@ -126,6 +126,17 @@ extern "C"
 	 * the moves. Returns the number of pairs. fcn may be NULL (only count). */
 	CD_API int cd3BroadPhase_UpdatePairs(cd3BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
 
+	/* Reports every pair of proxies whose fat boxes overlap, moved or not, in the same order as
+	 * UpdatePairs (each pair once, proxyA < proxyB, sorted). Leaves the moves alone. Returns the
+	 * number of pairs; fcn may be NULL. (For comparisons with libraries that report full sets.) */
+	CD_API int cd3BroadPhase_FindAllPairs(cd3BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+
+	/* Adds `count` proxies at once (faster than one by one: an empty tree is bulk-built).
+	 * outIds[i] receives the id of boxes[i], or CD_NULL_PROXY for an invalid box. userData may be
+	 * NULL (all zero). Returns the number of proxies created. */
+	CD_API int cd3BroadPhase_CreateProxies(cd3BroadPhase* broadPhase, const cd3Aabb* boxes,
+										   const uint64_t* userData, int count, int* outIds);
+
 	/* Rebuilds the structure from scratch for the current boxes (tree: a fast top-down SAH build,
 	 * best after bulk loading or for static sets; others: re-sort/re-bin). Queries give the same
 	 * answers before and after. */
@@ -173,6 +184,9 @@ extern "C"
 									  void* context);
 
 	CD_API int cd2BroadPhase_UpdatePairs(cd2BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+	CD_API int cd2BroadPhase_FindAllPairs(cd2BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+	CD_API int cd2BroadPhase_CreateProxies(cd2BroadPhase* broadPhase, const cd2Aabb* boxes,
+										   const uint64_t* userData, int count, int* outIds);
 	CD_API void cd2BroadPhase_Rebuild(cd2BroadPhase* broadPhase);
 	CD_API cdBroadPhaseStats cd2BroadPhase_GetStats(const cd2BroadPhase* broadPhase);
 	CD_API bool cd2BroadPhase_Validate(const cd2BroadPhase* broadPhase);
