@@ -79,8 +79,9 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		void (*findPairs)(const void* self, cdBroadPairSinkFcn* fcn, void* context);                         \
 		/* Optional: called before pair finding, so deferred work (sorting) can be done. */                  \
 		void (*flush)(void* self);                                                                           \
-		/* Rebuilds from the table's live proxies (same answers afterwards); false = out of memory,        \
-		 * the old structure then stays valid. */                                                            \
+		/* Rebuilds from scratch over exactly the table's live proxies (moveIndex != FREE), including    \
+		 * ones never inserted (bulk loading: the frontend fills the table, then rebuilds an empty       \
+		 * backend). false = out of memory; the old structure then stays valid and unchanged. */        \
 		bool (*rebuild)(void* self);                                                                         \
 		/* Fills nodeCount, height, memoryBytes, sahCost (proxyCount is set by the frontend). */             \
 		void (*getStats)(const void* self, cdBroadPhaseStats* stats);                                        \
