@@ -1,0 +1,395 @@
+/* Distance and closest points between any two 3D shapes: GJK on the shapes' cores (support3.h)
+ * with a Voronoi-region sub-algorithm, then the radii are taken off. The half-space is handled
+ * in closed form, since it has no finite support in most directions. */
+#include "collide/query3.h"
+
+#include "support3.h"
+
+/* GJK converges in a handful of iterations on these small point sets; the cap only guards
+ * against cycling caused by round-off. */
+#define GJK_MAX_ITERATIONS 64
+
+/* A simplex this flat (sine of its angle, or volume relative to its edge lengths) gives
+ * barycentric coordinates dominated by round-off; it is then treated through its faces/edges. */
+#define GJK_DEGENERATE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+/* The origin counts as touching the simplex when the closest point is within this many
+ * epsilons of the simplex's own size: below it the distance is round-off. */
+#define GJK_TOUCH_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+typedef struct GjkVertex
+{
+	cd3Vec a, b, w; /* support points on A and B, w = a - b */
+	int indexA, indexB;
+} GjkVertex;
+
+typedef struct GjkSimplex
+{
+	GjkVertex v[4];
+	cdReal lambda[4];
+	int count;
+} GjkSimplex;
+
+/* Barycentric coordinates of the point of segment w0-w1 closest to the origin. */
+static void SolveSegment(cd3Vec w0, cd3Vec w1, cdReal* l0, cdReal* l1)
+{
+	cd3Vec e = cd3Sub(w1, w0);
+	cdReal d1 = -cd3Dot(w0, e);
+	cdReal d2 = cd3Dot(w1, e);
+	if (d1 <= CD_R(0.0))
+	{
+		*l0 = CD_R(1.0);
+		*l1 = CD_R(0.0);
+	}
+	else if (d2 <= CD_R(0.0))
+	{
+		*l0 = CD_R(0.0);
+		*l1 = CD_R(1.0);
+	}
+	else
+	{
+		cdReal sum = d1 + d2;
+		*l0 = d2 / sum;
+		*l1 = d1 / sum;
+	}
+}
+
+static cd3Vec Combine(const cd3Vec* w, const cdReal* l, int count)
+{
+	cd3Vec v = cd3Scale(l[0], w[0]);
+	for (int i = 1; i < count; ++i)
+	{
+		v = cd3MulAdd(v, l[i], w[i]);
+	}
+	return v;
+}
+
+/* Barycentric coordinates of the point of triangle w[0..2] closest to the origin. */
+static void SolveTriangle(const cd3Vec* w, cdReal* l)
+{
+	cd3Vec e1 = cd3Sub(w[1], w[0]);
+	cd3Vec e2 = cd3Sub(w[2], w[0]);
+	cd3Vec n = cd3Cross(e1, e2);
+	if (cd3Length(n) > GJK_DEGENERATE_TOLERANCE * cd3Length(e1) * cd3Length(e2))
+	{
+		cdReal l0 = cd3Dot(n, cd3Cross(w[1], w[2]));
+		cdReal l1 = cd3Dot(n, cd3Cross(w[2], w[0]));
+		cdReal l2 = cd3Dot(n, cd3Cross(w[0], w[1]));
+		cdReal sum = l0 + l1 + l2;
+		if (l0 >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0) && sum > CD_R(0.0))
+		{
+			l[0] = l0 / sum;
+			l[1] = l1 / sum;
+			l[2] = l2 / sum;
+			return;
+		}
+	}
+
+	/* Outside the face (or a flat triangle): the closest point lies on an edge. */
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	for (int i = 0; i < 3; ++i)
+	{
+		int j = (i + 1) % 3, k = (i + 2) % 3;
+		cdReal li, lj;
+		SolveSegment(w[i], w[j], &li, &lj);
+		cdReal distanceSquared = cd3LengthSquared(cd3Add(cd3Scale(li, w[i]), cd3Scale(lj, w[j])));
+		if (distanceSquared < bestDistanceSquared)
+		{
+			bestDistanceSquared = distanceSquared;
+			l[i] = li;
+			l[j] = lj;
+			l[k] = CD_R(0.0);
+		}
+	}
+}
+
+/* Barycentric coordinates of the point of tetrahedron w[0..3] closest to the origin; returns
+ * true when the origin lies inside it. */
+static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
+{
+	cd3Vec e1 = cd3Sub(w[1], w[0]);
+	cd3Vec e2 = cd3Sub(w[2], w[0]);
+	cd3Vec e3 = cd3Sub(w[3], w[0]);
+	cdReal volume = cd3Dot(cd3Cross(e1, e2), e3);
+	if (cdAbs(volume) > GJK_DEGENERATE_TOLERANCE * cd3Length(e1) * cd3Length(e2) * cd3Length(e3))
+	{
+		cd3Vec o = cd3Neg(w[0]);
+		cdReal l0 = cd3Dot(cd3Cross(w[1], w[2]), w[3]) / volume;
+		cdReal l1 = cd3Dot(cd3Cross(o, e2), e3) / volume;
+		cdReal l2 = cd3Dot(cd3Cross(e1, o), e3) / volume;
+		cdReal l3 = cd3Dot(cd3Cross(e1, e2), o) / volume;
+		if (l0 >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0) && l3 >= CD_R(0.0))
+		{
+			cdReal sum = l0 + l1 + l2 + l3;
+			l[0] = l0 / sum;
+			l[1] = l1 / sum;
+			l[2] = l2 / sum;
+			l[3] = l3 / sum;
+			return true;
+		}
+	}
+
+	/* Outside (or flat): the closest point lies on a face. */
+	static const int faces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	for (int f = 0; f < 4; ++f)
+	{
+		cd3Vec face[3] = {w[faces[f][0]], w[faces[f][1]], w[faces[f][2]]};
+		cdReal faceLambda[3];
+		SolveTriangle(face, faceLambda);
+		cdReal distanceSquared = cd3LengthSquared(Combine(face, faceLambda, 3));
+		if (distanceSquared < bestDistanceSquared)
+		{
+			bestDistanceSquared = distanceSquared;
+			for (int i = 0; i < 4; ++i)
+			{
+				l[i] = CD_R(0.0);
+			}
+			for (int i = 0; i < 3; ++i)
+			{
+				l[faces[f][i]] = faceLambda[i];
+			}
+		}
+	}
+	return false;
+}
+
+/* Reduces the simplex to the vertices that support its point closest to the origin, sets their
+ * weights and returns true when the origin is enclosed by a tetrahedron. */
+static bool SolveSimplex(GjkSimplex* simplex)
+{
+	cd3Vec w[4];
+	cdReal l[4] = {CD_R(1.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		w[i] = simplex->v[i].w;
+	}
+	bool enclosed = false;
+	if (simplex->count == 2)
+	{
+		SolveSegment(w[0], w[1], &l[0], &l[1]);
+	}
+	else if (simplex->count == 3)
+	{
+		SolveTriangle(w, l);
+	}
+	else if (simplex->count == 4)
+	{
+		enclosed = SolveTetrahedron(w, l);
+	}
+
+	int kept = 0;
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		if (l[i] > CD_R(0.0) || (kept == 0 && i == simplex->count - 1))
+		{
+			simplex->v[kept] = simplex->v[i];
+			simplex->lambda[kept] = l[i] > CD_R(0.0) ? l[i] : CD_R(1.0);
+			++kept;
+		}
+	}
+	simplex->count = kept;
+	return enclosed;
+}
+
+static cd3Vec SimplexPoint(const GjkSimplex* simplex)
+{
+	cd3Vec v = CD3_VEC_ZERO;
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		v = cd3MulAdd(v, simplex->lambda[i], simplex->v[i].w);
+	}
+	return v;
+}
+
+static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int indexB)
+{
+	GjkVertex vertex;
+	vertex.indexA = indexA;
+	vertex.indexB = indexB;
+	vertex.a = a->points[indexA];
+	vertex.b = b->points[indexB];
+	vertex.w = cd3Sub(vertex.a, vertex.b);
+	return vertex;
+}
+
+/* Closest points of the cores of a and b; *touching is set when the cores overlap (then
+ * *pointA and *pointB coincide up to round-off). */
+static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* pointB, bool* touching)
+{
+	GjkSimplex simplex;
+	simplex.count = 1;
+	simplex.v[0] = MakeVertex(a, b, 0, 0);
+	simplex.lambda[0] = CD_R(1.0);
+
+	GjkSimplex previous = simplex;
+	cdReal previousDistanceSquared = CD_REAL_MAX;
+	*touching = false;
+	for (int iteration = 0; iteration < GJK_MAX_ITERATIONS; ++iteration)
+	{
+		if (SolveSimplex(&simplex))
+		{
+			*touching = true;
+			break;
+		}
+		cd3Vec v = SimplexPoint(&simplex);
+		cdReal distanceSquared = cd3LengthSquared(v);
+		cdReal size = CD_R(0.0);
+		for (int i = 0; i < simplex.count; ++i)
+		{
+			size = cdMax(size, cd3Length(simplex.v[i].w));
+		}
+		cdReal touch = GJK_TOUCH_TOLERANCE * size;
+		if (distanceSquared <= touch * touch)
+		{
+			*touching = true;
+			break;
+		}
+		if (distanceSquared >= previousDistanceSquared)
+		{
+			/* Round-off stalled the descent: the previous simplex was at least as close. */
+			simplex = previous;
+			break;
+		}
+		previous = simplex;
+		previousDistanceSquared = distanceSquared;
+
+		int indexA = cd3CoreSupport(a, cd3Neg(v));
+		int indexB = cd3CoreSupport(b, v);
+		bool duplicate = false;
+		for (int i = 0; i < simplex.count; ++i)
+		{
+			duplicate = duplicate || (simplex.v[i].indexA == indexA && simplex.v[i].indexB == indexB);
+		}
+		if (duplicate)
+		{
+			break;
+		}
+		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
+		/* No support point lies meaningfully beyond v: v is the closest point (relative gap). */
+		if (distanceSquared - cd3Dot(v, vertex.w) <= CD_R(4.0) * CD_REAL_EPSILON * distanceSquared)
+		{
+			break;
+		}
+		simplex.v[simplex.count] = vertex;
+		simplex.lambda[simplex.count] = CD_R(0.0);
+		++simplex.count;
+	}
+
+	cd3Vec pa = CD3_VEC_ZERO, pb = CD3_VEC_ZERO;
+	for (int i = 0; i < simplex.count; ++i)
+	{
+		pa = cd3MulAdd(pa, simplex.lambda[i], simplex.v[i].a);
+		pb = cd3MulAdd(pb, simplex.lambda[i], simplex.v[i].b);
+	}
+	*pointA = pa;
+	*pointB = pb;
+}
+
+static cd3ClosestPoints Touching(cd3Vec point)
+{
+	cd3ClosestPoints result = {point, point, CD_R(0.0)};
+	return result;
+}
+
+/* Half-space (dot(n, x) <= offset) against a finite shape given by its core. */
+static cd3ClosestPoints DistancePlaneCore(cd3Plane plane, const cd3Core* core)
+{
+	cd3Vec n = plane.normal;
+	cd3Vec deepest = cd3MulSub(core->points[cd3CoreSupport(core, cd3Neg(n))], core->radius, n);
+	cdReal separation = cd3Dot(n, deepest) - plane.offset;
+	if (separation <= CD_R(0.0))
+	{
+		return Touching(deepest);
+	}
+	cd3ClosestPoints result = {cd3MulSub(deepest, separation, n), deepest, separation};
+	return result;
+}
+
+/* Two half-spaces meet unless their normals are opposite and their solid sides apart. */
+static cd3ClosestPoints DistancePlanePlane(cd3Plane a, cd3Plane b)
+{
+	cdReal c = cd3Dot(a.normal, b.normal);
+	cd3Vec axis = cd3Cross(a.normal, b.normal);
+	cdReal sineSquared = cd3LengthSquared(axis);
+	if (sineSquared > GJK_DEGENERATE_TOLERANCE * GJK_DEGENERATE_TOLERANCE)
+	{
+		/* The point of the line where both boundaries meet closest to the origin. */
+		cdReal alpha = (a.offset - c * b.offset) / sineSquared;
+		cdReal beta = (b.offset - c * a.offset) / sineSquared;
+		cd3Vec point = cd3Add(cd3Scale(alpha, a.normal), cd3Scale(beta, b.normal));
+		/* One refinement step: the residuals of the 2x2 solve shrink by the conditioning. */
+		cdReal residualA = cd3Dot(a.normal, point) - a.offset;
+		cdReal residualB = cd3Dot(b.normal, point) - b.offset;
+		alpha = (residualA - c * residualB) / sineSquared;
+		beta = (residualB - c * residualA) / sineSquared;
+		return Touching(cd3Sub(point, cd3Add(cd3Scale(alpha, a.normal), cd3Scale(beta, b.normal))));
+	}
+	if (c > CD_R(0.0))
+	{
+		/* Nested: a point t * a.normal with t <= a.offset and t * c <= b.offset. */
+		return Touching(cd3Scale(cdMin(a.offset, b.offset / c), a.normal));
+	}
+	/* Opposite: x = t * a.normal is in both when -b.offset / |c| <= t <= a.offset. */
+	cdReal lower = b.offset / c;
+	if (lower <= a.offset)
+	{
+		return Touching(cd3Scale(CD_R(0.5) * (lower + a.offset), a.normal));
+	}
+	cd3ClosestPoints result = {cd3Scale(a.offset, a.normal), cd3Scale(lower, a.normal), lower - a.offset};
+	return result;
+}
+
+static cd3ClosestPoints Swap(cd3ClosestPoints result)
+{
+	cd3ClosestPoints swapped = {result.pointB, result.pointA, result.distance};
+	return swapped;
+}
+
+cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd3Core coreA, coreB;
+	bool finiteA = cd3MakeCore(a, &coreA);
+	bool finiteB = cd3MakeCore(b, &coreB);
+	if (!finiteA || !finiteB)
+	{
+		if (a->type == CD3_SHAPE_PLANE && b->type == CD3_SHAPE_PLANE)
+		{
+			return DistancePlanePlane(a->plane, b->plane);
+		}
+		if (a->type == CD3_SHAPE_PLANE && finiteB)
+		{
+			return DistancePlaneCore(a->plane, &coreB);
+		}
+		if (b->type == CD3_SHAPE_PLANE && finiteA)
+		{
+			return Swap(DistancePlaneCore(b->plane, &coreA));
+		}
+		CD_ASSERT(false);
+		cd3ClosestPoints none = {CD3_VEC_ZERO, CD3_VEC_ZERO, CD_REAL_MAX};
+		return none;
+	}
+
+	cd3Vec pointA, pointB;
+	bool touching;
+	GjkCores(&coreA, &coreB, &pointA, &pointB, &touching);
+	if (touching)
+	{
+		return Touching(pointA);
+	}
+
+	cdReal radius = coreA.radius + coreB.radius;
+	cd3Vec delta = cd3Sub(pointB, pointA);
+	cdReal coreDistance = cd3Length(delta);
+	if (coreDistance <= radius)
+	{
+		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
+		cdReal t = radius > CD_R(0.0) ? coreA.radius / radius : CD_R(0.0);
+		return Touching(cd3MulAdd(pointA, t, delta));
+	}
+	cd3Vec normal = cd3Scale(CD_R(1.0) / coreDistance, delta);
+	cd3ClosestPoints result = {cd3MulAdd(pointA, coreA.radius, normal),
+							   cd3MulSub(pointB, coreB.radius, normal), coreDistance - radius};
+	return result;
+}

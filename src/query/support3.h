@@ -1,0 +1,101 @@
+/* Internal: 3D shapes as GJK sees them. Every finite shape is the convex hull of at most eight
+ * "core" points grown by a radius (a sphere is a point, a capsule a segment, a box its eight
+ * corners). The half-space has no finite core and is handled separately by its users. */
+#ifndef COLLIDE_SUPPORT3_H
+#define COLLIDE_SUPPORT3_H
+
+#include "collide/geometry3.h"
+
+#define CD3_CORE_MAX_POINTS 8
+
+typedef struct cd3Core
+{
+	cd3Vec points[CD3_CORE_MAX_POINTS];
+	int count;
+	cdReal radius;
+} cd3Core;
+
+/* Fills *core for every shape type except the half-space (returns false for it and for an
+ * unknown type). */
+static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
+{
+	core->radius = CD_R(0.0);
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			core->points[0] = shape->sphere.center;
+			core->count = 1;
+			core->radius = shape->sphere.radius;
+			return true;
+		case CD3_SHAPE_CAPSULE:
+			core->points[0] = shape->capsule.p1;
+			core->points[1] = shape->capsule.p2;
+			core->count = 2;
+			core->radius = shape->capsule.radius;
+			return true;
+		case CD3_SHAPE_AABB:
+		{
+			cd3Vec lo = shape->aabb.min, hi = shape->aabb.max;
+			for (int i = 0; i < 8; ++i)
+			{
+				core->points[i] =
+					cd3MakeVec((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+			}
+			core->count = 8;
+			return true;
+		}
+		case CD3_SHAPE_BOX:
+		{
+			const cd3Box* box = &shape->box;
+			cd3Vec axisX =
+				cd3RotateVector(box->rotation, cd3MakeVec(box->halfExtents.x, CD_R(0.0), CD_R(0.0)));
+			cd3Vec axisY =
+				cd3RotateVector(box->rotation, cd3MakeVec(CD_R(0.0), box->halfExtents.y, CD_R(0.0)));
+			cd3Vec axisZ =
+				cd3RotateVector(box->rotation, cd3MakeVec(CD_R(0.0), CD_R(0.0), box->halfExtents.z));
+			for (int i = 0; i < 8; ++i)
+			{
+				cd3Vec p = box->center;
+				p = (i & 1) ? cd3Add(p, axisX) : cd3Sub(p, axisX);
+				p = (i & 2) ? cd3Add(p, axisY) : cd3Sub(p, axisY);
+				p = (i & 4) ? cd3Add(p, axisZ) : cd3Sub(p, axisZ);
+				core->points[i] = p;
+			}
+			core->count = 8;
+			return true;
+		}
+		case CD3_SHAPE_TRIANGLE:
+			core->points[0] = shape->triangle.a;
+			core->points[1] = shape->triangle.b;
+			core->points[2] = shape->triangle.c;
+			core->count = 3;
+			return true;
+		case CD3_SHAPE_SEGMENT:
+			core->points[0] = shape->segment.p1;
+			core->points[1] = shape->segment.p2;
+			core->count = 2;
+			return true;
+		default:
+			core->count = 0;
+			return false;
+	}
+}
+
+/* Index of the core point farthest along `direction` (the first one on ties). */
+static inline int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
+{
+	int best = 0;
+	cdReal bestValue = cd3Dot(core->points[0], direction);
+	for (int i = 1; i < core->count; ++i)
+	{
+		cdReal value = cd3Dot(core->points[i], direction);
+		if (value > bestValue)
+		{
+			best = i;
+			bestValue = value;
+		}
+	}
+	return best;
+}
+
+#endif

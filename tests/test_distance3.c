@@ -1,0 +1,948 @@
+/* Tests of cd3Distance (GJK): exact cases, and thousands of random pairs of every type
+ * combination against an independent brute-force reference in double precision (feature
+ * enumeration), plus symmetry, rigid-transform invariance and witness-point checks. */
+#include "collide/query3.h"
+#include "test.h"
+
+#include <string.h>
+
+/* ---- double-precision reference ------------------------------------------------------------ */
+typedef struct DVec
+{
+	double x, y, z;
+} DVec;
+
+static DVec DMake(double x, double y, double z)
+{
+	DVec v = {x, y, z};
+	return v;
+}
+static DVec DFrom(cd3Vec v)
+{
+	return DMake((double)v.x, (double)v.y, (double)v.z);
+}
+static DVec DAdd(DVec a, DVec b)
+{
+	return DMake(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+static DVec DSub(DVec a, DVec b)
+{
+	return DMake(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+static DVec DScale(double s, DVec a)
+{
+	return DMake(s * a.x, s * a.y, s * a.z);
+}
+static double DDot(DVec a, DVec b)
+{
+	return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+static DVec DCross(DVec a, DVec b)
+{
+	return DMake(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static double DLength(DVec a)
+{
+	return sqrt(DDot(a, a));
+}
+
+/* q v q* for a (nearly) unit quaternion, in double. */
+static DVec DRotate(cd3Quat q, DVec v)
+{
+	DVec u = DMake((double)q.x, (double)q.y, (double)q.z);
+	DVec t = DScale(2.0, DCross(u, v));
+	return DAdd(DAdd(v, DScale((double)q.w, t)), DCross(u, t));
+}
+
+static double PointSegmentDistance(DVec p, DVec a, DVec b)
+{
+	DVec e = DSub(b, a);
+	double ee = DDot(e, e);
+	double t = ee > 0.0 ? DDot(DSub(p, a), e) / ee : 0.0;
+	t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+	return DLength(DSub(p, DAdd(a, DScale(t, e))));
+}
+
+static double PointTriangleDistance(DVec p, DVec a, DVec b, DVec c)
+{
+	double best = PointSegmentDistance(p, a, b);
+	double other = PointSegmentDistance(p, b, c);
+	best = other < best ? other : best;
+	other = PointSegmentDistance(p, c, a);
+	best = other < best ? other : best;
+	DVec n = DCross(DSub(b, a), DSub(c, a));
+	double nn = DDot(n, n);
+	if (nn > 0.0)
+	{
+		DVec ap = DSub(p, a);
+		double s = DDot(n, ap) / nn;
+		DVec q = DSub(p, DScale(s, n));
+		if (DDot(n, DCross(DSub(b, a), DSub(q, a))) >= 0.0 &&
+			DDot(n, DCross(DSub(c, b), DSub(q, b))) >= 0.0 && DDot(n, DCross(DSub(a, c), DSub(q, c))) >= 0.0)
+		{
+			double planar = fabs(DDot(n, ap)) / sqrt(nn);
+			best = planar < best ? planar : best;
+		}
+	}
+	return best;
+}
+
+static double SegmentSegmentDistance(DVec p1, DVec q1, DVec p2, DVec q2)
+{
+	double best = PointSegmentDistance(p1, p2, q2);
+	double d = PointSegmentDistance(q1, p2, q2);
+	best = d < best ? d : best;
+	d = PointSegmentDistance(p2, p1, q1);
+	best = d < best ? d : best;
+	d = PointSegmentDistance(q2, p1, q1);
+	best = d < best ? d : best;
+	/* Interior critical point of |p1 + s d1 - p2 - t d2|^2. */
+	DVec d1 = DSub(q1, p1), d2 = DSub(q2, p2), r = DSub(p1, p2);
+	double a = DDot(d1, d1), e = DDot(d2, d2), b = DDot(d1, d2), c = DDot(d1, r), f = DDot(d2, r);
+	double det = a * e - b * b;
+	if (det > 1e-12 * a * e)
+	{
+		double s = (b * f - c * e) / det;
+		double t = (a * f - b * c) / det;
+		if (s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0)
+		{
+			d = DLength(DSub(DAdd(p1, DScale(s, d1)), DAdd(p2, DScale(t, d2))));
+			best = d < best ? d : best;
+		}
+	}
+	return best;
+}
+
+/* Segment p-q crosses the plane of triangle a-b-c strictly, inside the triangle. */
+static bool SegmentPiercesTriangle(DVec p, DVec q, DVec a, DVec b, DVec c)
+{
+	DVec n = DCross(DSub(b, a), DSub(c, a));
+	double sp = DDot(n, DSub(p, a)), sq = DDot(n, DSub(q, a));
+	if (!((sp < 0.0 && sq > 0.0) || (sp > 0.0 && sq < 0.0)))
+	{
+		return false;
+	}
+	DVec x = DAdd(p, DScale(sp / (sp - sq), DSub(q, p)));
+	return DDot(n, DCross(DSub(b, a), DSub(x, a))) >= 0.0 && DDot(n, DCross(DSub(c, b), DSub(x, b))) >= 0.0 &&
+		   DDot(n, DCross(DSub(a, c), DSub(x, c))) >= 0.0;
+}
+
+/* A finite shape as vertices, edges and triangles (its core) grown by a radius; solid boxes also
+ * keep their frame for point containment. */
+typedef struct RefShape
+{
+	DVec vertices[8];
+	int edges[12][2];
+	int triangles[12][3];
+	int vertexCount, edgeCount, triangleCount;
+	double radius;
+	bool solidBox;
+	DVec center, axes[3], halfExtents;
+	bool isPlane;
+	DVec normal;
+	double offset;
+} RefShape;
+
+static const int g_boxEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+									  {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+/* Two triangles per face of the cube whose vertex i has bits (x, y, z) = (i & 1, i & 2, i & 4). */
+static const int g_boxTriangles[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+										  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+
+static RefShape MakeRef(const cd3Shape* shape)
+{
+	RefShape r;
+	memset(&r, 0, sizeof(r));
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			r.vertices[0] = DFrom(shape->sphere.center);
+			r.vertexCount = 1;
+			r.radius = (double)shape->sphere.radius;
+			break;
+		case CD3_SHAPE_CAPSULE:
+			r.vertices[0] = DFrom(shape->capsule.p1);
+			r.vertices[1] = DFrom(shape->capsule.p2);
+			r.vertexCount = 2;
+			r.edges[0][0] = 0;
+			r.edges[0][1] = 1;
+			r.edgeCount = 1;
+			r.radius = (double)shape->capsule.radius;
+			break;
+		case CD3_SHAPE_SEGMENT:
+			r.vertices[0] = DFrom(shape->segment.p1);
+			r.vertices[1] = DFrom(shape->segment.p2);
+			r.vertexCount = 2;
+			r.edges[0][0] = 0;
+			r.edges[0][1] = 1;
+			r.edgeCount = 1;
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			r.vertices[0] = DFrom(shape->triangle.a);
+			r.vertices[1] = DFrom(shape->triangle.b);
+			r.vertices[2] = DFrom(shape->triangle.c);
+			r.vertexCount = 3;
+			for (int i = 0; i < 3; ++i)
+			{
+				r.edges[i][0] = i;
+				r.edges[i][1] = (i + 1) % 3;
+				r.triangles[0][i] = i;
+			}
+			r.edgeCount = 3;
+			r.triangleCount = 1;
+			break;
+		case CD3_SHAPE_AABB:
+		case CD3_SHAPE_BOX:
+		{
+			r.solidBox = true;
+			if (shape->type == CD3_SHAPE_AABB)
+			{
+				DVec lo = DFrom(shape->aabb.min), hi = DFrom(shape->aabb.max);
+				r.center = DScale(0.5, DAdd(lo, hi));
+				r.halfExtents = DScale(0.5, DSub(hi, lo));
+				r.axes[0] = DMake(1.0, 0.0, 0.0);
+				r.axes[1] = DMake(0.0, 1.0, 0.0);
+				r.axes[2] = DMake(0.0, 0.0, 1.0);
+			}
+			else
+			{
+				r.center = DFrom(shape->box.center);
+				r.halfExtents = DFrom(shape->box.halfExtents);
+				r.axes[0] = DRotate(shape->box.rotation, DMake(1.0, 0.0, 0.0));
+				r.axes[1] = DRotate(shape->box.rotation, DMake(0.0, 1.0, 0.0));
+				r.axes[2] = DRotate(shape->box.rotation, DMake(0.0, 0.0, 1.0));
+			}
+			for (int i = 0; i < 8; ++i)
+			{
+				DVec p = r.center;
+				p = DAdd(p, DScale((i & 1) ? r.halfExtents.x : -r.halfExtents.x, r.axes[0]));
+				p = DAdd(p, DScale((i & 2) ? r.halfExtents.y : -r.halfExtents.y, r.axes[1]));
+				p = DAdd(p, DScale((i & 4) ? r.halfExtents.z : -r.halfExtents.z, r.axes[2]));
+				r.vertices[i] = p;
+			}
+			r.vertexCount = 8;
+			memcpy(r.edges, g_boxEdges, sizeof(g_boxEdges));
+			memcpy(r.triangles, g_boxTriangles, sizeof(g_boxTriangles));
+			r.edgeCount = 12;
+			r.triangleCount = 12;
+			break;
+		}
+		case CD3_SHAPE_PLANE:
+			r.isPlane = true;
+			r.normal = DFrom(shape->plane.normal);
+			r.offset = (double)shape->plane.offset;
+			break;
+		default:
+			break;
+	}
+	return r;
+}
+
+static bool RefPointInBox(const RefShape* r, DVec p)
+{
+	if (!r->solidBox)
+	{
+		return false;
+	}
+	DVec d = DSub(p, r->center);
+	const double slack = 1e-12;
+	return fabs(DDot(d, r->axes[0])) <= r->halfExtents.x + slack &&
+		   fabs(DDot(d, r->axes[1])) <= r->halfExtents.y + slack &&
+		   fabs(DDot(d, r->axes[2])) <= r->halfExtents.z + slack;
+}
+
+/* Distance from a point to the core of a finite shape (0 inside a solid box). */
+static double RefPointCoreDistance(const RefShape* r, DVec p)
+{
+	if (RefPointInBox(r, p))
+	{
+		return 0.0;
+	}
+	double best = INFINITY;
+	for (int i = 0; i < r->vertexCount; ++i)
+	{
+		double d = DLength(DSub(p, r->vertices[i]));
+		best = d < best ? d : best;
+	}
+	for (int i = 0; i < r->edgeCount; ++i)
+	{
+		double d = PointSegmentDistance(p, r->vertices[r->edges[i][0]], r->vertices[r->edges[i][1]]);
+		best = d < best ? d : best;
+	}
+	for (int i = 0; i < r->triangleCount; ++i)
+	{
+		const int* t = r->triangles[i];
+		double d = PointTriangleDistance(p, r->vertices[t[0]], r->vertices[t[1]], r->vertices[t[2]]);
+		best = d < best ? d : best;
+	}
+	return best;
+}
+
+/* Distance from a point to the shape (0 inside a solid). */
+static double RefPointShapeDistance(const RefShape* r, DVec p)
+{
+	if (r->isPlane)
+	{
+		double s = DDot(r->normal, p) - r->offset;
+		return s > 0.0 ? s : 0.0;
+	}
+	double d = RefPointCoreDistance(r, p) - r->radius;
+	return d > 0.0 ? d : 0.0;
+}
+
+static bool AnyEdgePierces(const RefShape* edges, const RefShape* triangles)
+{
+	for (int i = 0; i < edges->edgeCount; ++i)
+	{
+		for (int j = 0; j < triangles->triangleCount; ++j)
+		{
+			const int* t = triangles->triangles[j];
+			if (SegmentPiercesTriangle(edges->vertices[edges->edges[i][0]],
+									   edges->vertices[edges->edges[i][1]], triangles->vertices[t[0]],
+									   triangles->vertices[t[1]], triangles->vertices[t[2]]))
+			{
+				return true;
+			}
+		}
+	}
+	return false;
+}
+
+/* Distance between the cores of two finite shapes by feature enumeration; intersection is
+ * detected separately (a vertex inside a solid box, or an edge piercing a triangle). */
+static double RefCoreDistance(const RefShape* a, const RefShape* b)
+{
+	for (int i = 0; i < b->vertexCount; ++i)
+	{
+		if (RefPointInBox(a, b->vertices[i]))
+		{
+			return 0.0;
+		}
+	}
+	for (int i = 0; i < a->vertexCount; ++i)
+	{
+		if (RefPointInBox(b, a->vertices[i]))
+		{
+			return 0.0;
+		}
+	}
+	if (AnyEdgePierces(a, b) || AnyEdgePierces(b, a))
+	{
+		return 0.0;
+	}
+	double best = INFINITY;
+	for (int i = 0; i < a->vertexCount; ++i)
+	{
+		double d = RefPointCoreDistance(b, a->vertices[i]);
+		best = d < best ? d : best;
+	}
+	for (int i = 0; i < b->vertexCount; ++i)
+	{
+		double d = RefPointCoreDistance(a, b->vertices[i]);
+		best = d < best ? d : best;
+	}
+	for (int i = 0; i < a->edgeCount; ++i)
+	{
+		for (int j = 0; j < b->edgeCount; ++j)
+		{
+			double d = SegmentSegmentDistance(a->vertices[a->edges[i][0]], a->vertices[a->edges[i][1]],
+											  b->vertices[b->edges[j][0]], b->vertices[b->edges[j][1]]);
+			best = d < best ? d : best;
+		}
+	}
+	return best;
+}
+
+static double RefPlaneDepth(const RefShape* plane, const RefShape* shape)
+{
+	double lowest = INFINITY;
+	for (int i = 0; i < shape->vertexCount; ++i)
+	{
+		double s = DDot(plane->normal, shape->vertices[i]);
+		lowest = s < lowest ? s : lowest;
+	}
+	return lowest - shape->radius - plane->offset;
+}
+
+static double RefDistance(const cd3Shape* sa, const cd3Shape* sb)
+{
+	RefShape a = MakeRef(sa), b = MakeRef(sb);
+	double d;
+	if (a.isPlane && b.isPlane)
+	{
+		bool opposite = a.normal.x == -b.normal.x && a.normal.y == -b.normal.y && a.normal.z == -b.normal.z;
+		d = opposite ? -(a.offset + b.offset) : 0.0;
+	}
+	else if (a.isPlane)
+	{
+		d = RefPlaneDepth(&a, &b);
+	}
+	else if (b.isPlane)
+	{
+		d = RefPlaneDepth(&b, &a);
+	}
+	else
+	{
+		d = RefCoreDistance(&a, &b) - a.radius - b.radius;
+	}
+	return d > 0.0 ? d : 0.0;
+}
+
+/* ---- random shapes ----------------------------------------------------------------------------- */
+static cdReal RandomReal(TestRng* rng, double lower, double upper)
+{
+	return (cdReal)TestRngRange(rng, lower, upper);
+}
+
+static cd3Vec RandomVec(TestRng* rng, double extent)
+{
+	return cd3MakeVec(RandomReal(rng, -extent, extent), RandomReal(rng, -extent, extent),
+					  RandomReal(rng, -extent, extent));
+}
+
+static cd3Quat RandomQuat(TestRng* rng)
+{
+	double x, y, z, w, n;
+	do
+	{
+		x = TestRngRange(rng, -1.0, 1.0);
+		y = TestRngRange(rng, -1.0, 1.0);
+		z = TestRngRange(rng, -1.0, 1.0);
+		w = TestRngRange(rng, -1.0, 1.0);
+		n = sqrt(x * x + y * y + z * z + w * w);
+	} while (n < 0.1 || n > 1.0);
+	return cd3MakeQuat((cdReal)(x / n), (cdReal)(y / n), (cdReal)(z / n), (cdReal)(w / n));
+}
+
+static cd3Vec RandomUnit(TestRng* rng)
+{
+	cd3Quat q = RandomQuat(rng);
+	return cd3RotateVector(q, cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0)));
+}
+
+/* A size in [0, upper), exactly zero one time in eight (degenerate shapes must work too). */
+static cdReal RandomSize(TestRng* rng, double upper)
+{
+	return TestRngInt(rng, 8) == 0 ? CD_R(0.0) : RandomReal(rng, 0.0, upper);
+}
+
+static cd3Shape RandomShape(TestRng* rng, cd3ShapeType type)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = type;
+	cd3Vec center = RandomVec(rng, 2.0);
+	switch (type)
+	{
+		case CD3_SHAPE_SPHERE:
+			s.sphere.center = center;
+			s.sphere.radius = RandomSize(rng, 1.2);
+			break;
+		case CD3_SHAPE_CAPSULE:
+		{
+			cd3Vec half = cd3Scale(RandomSize(rng, 1.2), RandomUnit(rng));
+			s.capsule.p1 = cd3Sub(center, half);
+			s.capsule.p2 = cd3Add(center, half);
+			s.capsule.radius = RandomSize(rng, 0.8);
+			break;
+		}
+		case CD3_SHAPE_AABB:
+		{
+			cd3Vec half = cd3MakeVec(RandomSize(rng, 1.2), RandomSize(rng, 1.2), RandomSize(rng, 1.2));
+			s.aabb.min = cd3Sub(center, half);
+			s.aabb.max = cd3Add(center, half);
+			break;
+		}
+		case CD3_SHAPE_BOX:
+			s.box.center = center;
+			s.box.halfExtents = cd3MakeVec(RandomSize(rng, 1.2), RandomSize(rng, 1.2), RandomSize(rng, 1.2));
+			s.box.rotation = RandomQuat(rng);
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			s.triangle.a = cd3Add(center, RandomVec(rng, 1.5));
+			s.triangle.b = cd3Add(center, RandomVec(rng, 1.5));
+			s.triangle.c = TestRngInt(rng, 10) == 0
+							   ? cd3Lerp(s.triangle.a, s.triangle.b, RandomReal(rng, -0.5, 1.5))
+							   : cd3Add(center, RandomVec(rng, 1.5));
+			break;
+		case CD3_SHAPE_PLANE:
+			s.plane.normal = RandomUnit(rng);
+			s.plane.offset = cd3Dot(s.plane.normal, center) + RandomReal(rng, -1.0, 1.0);
+			break;
+		case CD3_SHAPE_SEGMENT:
+		{
+			cd3Vec half = cd3Scale(RandomSize(rng, 1.5), RandomUnit(rng));
+			s.segment.p1 = cd3Sub(center, half);
+			s.segment.p2 = cd3Add(center, half);
+			break;
+		}
+		default:
+			break;
+	}
+	return s;
+}
+
+static cd3Shape TransformShape(const cd3Shape* shape, cd3Transform t)
+{
+	cd3Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			s.sphere.center = cd3TransformPoint(t, shape->sphere.center);
+			break;
+		case CD3_SHAPE_CAPSULE:
+			s.capsule.p1 = cd3TransformPoint(t, shape->capsule.p1);
+			s.capsule.p2 = cd3TransformPoint(t, shape->capsule.p2);
+			break;
+		case CD3_SHAPE_AABB: /* translation only */
+			s.aabb.min = cd3Add(shape->aabb.min, t.p);
+			s.aabb.max = cd3Add(shape->aabb.max, t.p);
+			break;
+		case CD3_SHAPE_BOX:
+			s.box.center = cd3TransformPoint(t, shape->box.center);
+			s.box.rotation = cd3NormalizeQuat(cd3MulQuat(t.q, shape->box.rotation));
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			s.triangle.a = cd3TransformPoint(t, shape->triangle.a);
+			s.triangle.b = cd3TransformPoint(t, shape->triangle.b);
+			s.triangle.c = cd3TransformPoint(t, shape->triangle.c);
+			break;
+		case CD3_SHAPE_PLANE:
+			s.plane.normal = cd3RotateVector(t.q, shape->plane.normal);
+			s.plane.offset = shape->plane.offset + cd3Dot(s.plane.normal, t.p);
+			break;
+		case CD3_SHAPE_SEGMENT:
+			s.segment.p1 = cd3TransformPoint(t, shape->segment.p1);
+			s.segment.p2 = cd3TransformPoint(t, shape->segment.p2);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+static const char* TypeName(cd3ShapeType type)
+{
+	static const char* names[] = {"sphere", "capsule", "aabb", "box", "triangle", "plane", "segment"};
+	return (int)type >= 0 && type < CD3_SHAPE_TYPE_COUNT ? names[type] : "?";
+}
+
+static void PrintShape(const char* label, const cd3Shape* s)
+{
+	fprintf(stderr, "  %s %s: ", label, TypeName(s->type));
+	switch (s->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			fprintf(stderr, "center (%.9g %.9g %.9g) radius %.9g\n", (double)s->sphere.center.x,
+					(double)s->sphere.center.y, (double)s->sphere.center.z, (double)s->sphere.radius);
+			break;
+		case CD3_SHAPE_CAPSULE:
+			fprintf(stderr, "p1 (%.9g %.9g %.9g) p2 (%.9g %.9g %.9g) radius %.9g\n", (double)s->capsule.p1.x,
+					(double)s->capsule.p1.y, (double)s->capsule.p1.z, (double)s->capsule.p2.x,
+					(double)s->capsule.p2.y, (double)s->capsule.p2.z, (double)s->capsule.radius);
+			break;
+		case CD3_SHAPE_AABB:
+			fprintf(stderr, "min (%.9g %.9g %.9g) max (%.9g %.9g %.9g)\n", (double)s->aabb.min.x,
+					(double)s->aabb.min.y, (double)s->aabb.min.z, (double)s->aabb.max.x,
+					(double)s->aabb.max.y, (double)s->aabb.max.z);
+			break;
+		case CD3_SHAPE_BOX:
+			fprintf(stderr, "center (%.9g %.9g %.9g) half (%.9g %.9g %.9g) q (%.9g %.9g %.9g %.9g)\n",
+					(double)s->box.center.x, (double)s->box.center.y, (double)s->box.center.z,
+					(double)s->box.halfExtents.x, (double)s->box.halfExtents.y, (double)s->box.halfExtents.z,
+					(double)s->box.rotation.x, (double)s->box.rotation.y, (double)s->box.rotation.z,
+					(double)s->box.rotation.w);
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			fprintf(stderr, "a (%.9g %.9g %.9g) b (%.9g %.9g %.9g) c (%.9g %.9g %.9g)\n",
+					(double)s->triangle.a.x, (double)s->triangle.a.y, (double)s->triangle.a.z,
+					(double)s->triangle.b.x, (double)s->triangle.b.y, (double)s->triangle.b.z,
+					(double)s->triangle.c.x, (double)s->triangle.c.y, (double)s->triangle.c.z);
+			break;
+		case CD3_SHAPE_PLANE:
+			fprintf(stderr, "normal (%.9g %.9g %.9g) offset %.9g\n", (double)s->plane.normal.x,
+					(double)s->plane.normal.y, (double)s->plane.normal.z, (double)s->plane.offset);
+			break;
+		case CD3_SHAPE_SEGMENT:
+			fprintf(stderr, "p1 (%.9g %.9g %.9g) p2 (%.9g %.9g %.9g)\n", (double)s->segment.p1.x,
+					(double)s->segment.p1.y, (double)s->segment.p1.z, (double)s->segment.p2.x,
+					(double)s->segment.p2.y, (double)s->segment.p2.z);
+			break;
+		default:
+			break;
+	}
+}
+
+/* Absolute tolerance for shapes of size ~1-5 near the origin: float round-off in the shapes
+ * themselves (box rotations, transforms) and in GJK's termination. */
+#if CD_DOUBLE
+#define TOLERANCE 1e-9
+#else
+#define TOLERANCE 2e-5
+#endif
+
+static bool g_printedCase = false;
+
+static void ReportCase(bool ok, const cd3Shape* a, const cd3Shape* b)
+{
+	if (!ok && !g_printedCase && g_testFailures <= TEST_MAX_PRINTED_FAILURES)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+}
+
+/* The result is finite, its witnesses lie on their shapes, |pointA - pointB| == distance, and
+ * an overlap reports the same point twice. */
+static bool CheckResult(const cd3Shape* a, const cd3Shape* b, cd3ClosestPoints r)
+{
+	RefShape ra = MakeRef(a), rb = MakeRef(b);
+	DVec pa = DFrom(r.pointA), pb = DFrom(r.pointB);
+	double distance = (double)r.distance;
+	bool finite = isfinite(distance) && isfinite(pa.x) && isfinite(pa.y) && isfinite(pa.z) &&
+				  isfinite(pb.x) && isfinite(pb.y) && isfinite(pb.z);
+	TEST_CHECKF(finite, "non-finite result %g", distance);
+	if (!finite)
+	{
+		return false;
+	}
+	double onA = RefPointShapeDistance(&ra, pa), onB = RefPointShapeDistance(&rb, pb);
+	double gap = DLength(DSub(pb, pa));
+	/* Witnesses of half-spaces can lie far out (where two planes meet): relative round-off. */
+	double magnitude = DLength(pa) > DLength(pb) ? DLength(pa) : DLength(pb);
+	double tolerance = TOLERANCE * (magnitude > 1.0 ? magnitude : 1.0);
+	bool ok = distance >= 0.0 && onA <= tolerance && onB <= tolerance && fabs(gap - distance) <= tolerance;
+	TEST_CHECKF(ok,
+				"witness off: distance %.9g, pointA off A by %.3g, pointB off B by %.3g, |pB - pA| = %.9g",
+				distance, onA, onB, gap);
+	bool same = distance > 0.0 || cd3VecEqual(r.pointA, r.pointB);
+	TEST_CHECKF(same, "overlap reported with different points, |pB - pA| = %.3g", gap);
+	return ok && same;
+}
+
+static double g_maxError = 0.0;
+
+static void CheckPair(TestRng* rng, const cd3Shape* a, const cd3Shape* b)
+{
+	g_printedCase = false;
+	double expected = RefDistance(a, b);
+	cd3ClosestPoints r = cd3Distance(a, b);
+	bool ok = CheckResult(a, b, r);
+	double error = fabs((double)r.distance - expected);
+	g_maxError = error > g_maxError ? error : g_maxError;
+	bool near = error <= TOLERANCE;
+	TEST_CHECKF(near, "distance %.9g, reference %.9g", (double)r.distance, expected);
+	ReportCase(ok && near, a, b);
+	g_printedCase = !(ok && near);
+
+	/* Symmetry: the same distance, and the witnesses swapped. The witnesses are unique when
+	 * one shape is a ball (strictly convex); otherwise both pairs need only be valid. */
+	cd3ClosestPoints s = cd3Distance(b, a);
+	bool okSwapped = CheckResult(b, a, s);
+	bool symmetric = fabs((double)(s.distance - r.distance)) <= TOLERANCE;
+	TEST_CHECKF(symmetric, "d(a,b) = %.9g, d(b,a) = %.9g", (double)r.distance, (double)s.distance);
+	if (a->type == CD3_SHAPE_SPHERE || b->type == CD3_SHAPE_SPHERE)
+	{
+		double moved =
+			DLength(DSub(DFrom(r.pointA), DFrom(s.pointB))) + DLength(DSub(DFrom(r.pointB), DFrom(s.pointA)));
+		bool swapped = r.distance == CD_R(0.0) || moved <= 100.0 * TOLERANCE;
+		TEST_CHECKF(swapped, "witnesses not swapped: moved by %.3g", moved);
+		symmetric = symmetric && swapped;
+	}
+	ReportCase(okSwapped && symmetric, a, b);
+	g_printedCase = g_printedCase || !(okSwapped && symmetric);
+
+	/* Invariance under a common rigid transform (translation only with an AABB). */
+	cd3Transform t;
+	t.p = RandomVec(rng, 3.0);
+	t.q = (a->type == CD3_SHAPE_AABB || b->type == CD3_SHAPE_AABB) ? CD3_QUAT_IDENTITY : RandomQuat(rng);
+	cd3Shape ta = TransformShape(a, t), tb = TransformShape(b, t);
+	cd3ClosestPoints u = cd3Distance(&ta, &tb);
+	bool invariant = fabs((double)(u.distance - r.distance)) <= 2.0 * TOLERANCE;
+	TEST_CHECKF(invariant, "transformed distance %.9g, original %.9g", (double)u.distance,
+				(double)r.distance);
+	ReportCase(invariant, a, b);
+}
+
+static void TestRandomPairs(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d01u);
+	const int pairsPerCombination = 700;
+	for (int ta = 0; ta < CD3_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = ta; tb < CD3_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int i = 0; i < pairsPerCombination; ++i)
+			{
+				cd3Shape a = RandomShape(&rng, (cd3ShapeType)ta);
+				cd3Shape b = RandomShape(&rng, (cd3ShapeType)tb);
+				CheckPair(&rng, &a, &b);
+			}
+		}
+	}
+	printf("largest distance error against the reference: %.3g\n", g_maxError);
+}
+
+/* ---- exact cases ------------------------------------------------------------------------------- */
+static cd3Shape Sphere(cdReal x, cdReal y, cdReal z, cdReal radius)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_SPHERE;
+	s.sphere.center = cd3MakeVec(x, y, z);
+	s.sphere.radius = radius;
+	return s;
+}
+
+static cd3Shape Aabb(cd3Vec lo, cd3Vec hi)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_AABB;
+	s.aabb.min = lo;
+	s.aabb.max = hi;
+	return s;
+}
+
+static cd3Shape Capsule(cd3Vec p1, cd3Vec p2, cdReal radius)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_CAPSULE;
+	s.capsule.p1 = p1;
+	s.capsule.p2 = p2;
+	s.capsule.radius = radius;
+	return s;
+}
+
+static cd3Shape Segment(cd3Vec p1, cd3Vec p2)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_SEGMENT;
+	s.segment.p1 = p1;
+	s.segment.p2 = p2;
+	return s;
+}
+
+static cd3Shape Triangle(cd3Vec a, cd3Vec b, cd3Vec c)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_TRIANGLE;
+	s.triangle.a = a;
+	s.triangle.b = b;
+	s.triangle.c = c;
+	return s;
+}
+
+static cd3Shape Plane(cd3Vec normal, cdReal offset)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_PLANE;
+	s.plane.normal = normal;
+	s.plane.offset = offset;
+	return s;
+}
+
+static cd3Shape Box(cd3Vec center, cd3Vec half, cd3Quat rotation)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD3_SHAPE_BOX;
+	s.box.center = center;
+	s.box.halfExtents = half;
+	s.box.rotation = rotation;
+	return s;
+}
+
+#define V(x, y, z) cd3MakeVec(CD_R(x), CD_R(y), CD_R(z))
+#define NEAR_VEC(a, b)                                                                                       \
+	do                                                                                                       \
+	{                                                                                                        \
+		TEST_CHECK_NEAR((a).x, (b).x, TOLERANCE);                                                            \
+		TEST_CHECK_NEAR((a).y, (b).y, TOLERANCE);                                                            \
+		TEST_CHECK_NEAR((a).z, (b).z, TOLERANCE);                                                            \
+	} while (0)
+
+static void TestSpheres(void)
+{
+	cd3Shape a = Sphere(CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(1.0));
+	cd3Shape b = Sphere(CD_R(4.0), CD_R(0.0), CD_R(0.0), CD_R(2.0));
+	cd3ClosestPoints r = cd3Distance(&a, &b);
+	TEST_CHECK_NEAR(r.distance, 1.0, TOLERANCE);
+	NEAR_VEC(r.pointA, V(1.0, 0.0, 0.0));
+	NEAR_VEC(r.pointB, V(2.0, 0.0, 0.0));
+
+	/* Touching: distance 0, one point. */
+	b.sphere.center.x = CD_R(3.0);
+	r = cd3Distance(&a, &b);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB));
+	NEAR_VEC(r.pointA, V(1.0, 0.0, 0.0));
+
+	/* Overlapping: the point lies inside both. */
+	b.sphere.center.x = CD_R(2.0);
+	r = cd3Distance(&a, &b);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB));
+	TEST_CHECK(cd3Length(r.pointA) <= CD_R(1.0) + TOLERANCE &&
+			   cd3VecDistance(r.pointA, b.sphere.center) <= CD_R(2.0));
+
+	/* Coincident zero-radius spheres (points). */
+	cd3Shape p = Sphere(CD_R(1.0), CD_R(2.0), CD_R(3.0), CD_R(0.0));
+	r = cd3Distance(&p, &p);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, p.sphere.center));
+}
+
+static void TestBoxesAndAabbs(void)
+{
+	cd3Shape a = Aabb(V(0.0, 0.0, 0.0), V(1.0, 1.0, 1.0));
+	cd3Shape b = Aabb(V(3.0, 0.5, 0.5), V(4.0, 2.0, 2.0));
+	TEST_CHECK_NEAR(cd3Distance(&a, &b).distance, 2.0, TOLERANCE);
+
+	/* Corner to corner: sqrt(3). */
+	b = Aabb(V(2.0, 2.0, 2.0), V(3.0, 3.0, 3.0));
+	cd3ClosestPoints r = cd3Distance(&a, &b);
+	TEST_CHECK_NEAR(r.distance, sqrt(3.0), TOLERANCE);
+	NEAR_VEC(r.pointA, V(1.0, 1.0, 1.0));
+	NEAR_VEC(r.pointB, V(2.0, 2.0, 2.0));
+
+	/* Face contact counts as touching. */
+	b = Aabb(V(1.0, 0.0, 0.0), V(2.0, 1.0, 1.0));
+	TEST_CHECK(cd3Distance(&a, &b).distance == CD_R(0.0));
+
+	/* Nested. */
+	b = Aabb(V(0.25, 0.25, 0.25), V(0.5, 0.5, 0.5));
+	r = cd3Distance(&a, &b);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB));
+
+	/* A box turned 45 degrees about z: its corner reaches x = 5 - sqrt(2). */
+	cd3Quat q = cd3MakeQuatAxisAngle(V(0.0, 0.0, 1.0), CD_R(0.25) * CD_PI);
+	cd3Shape box = Box(V(5.0, 0.5, 0.5), V(1.0, 1.0, 0.5), q);
+	r = cd3Distance(&a, &box);
+	TEST_CHECK_NEAR(r.distance, 4.0 - sqrt(2.0), 4.0 * TOLERANCE);
+	TEST_CHECK_NEAR(r.pointB.x, 5.0 - sqrt(2.0), 4.0 * TOLERANCE);
+	TEST_CHECK_NEAR(r.pointB.y, 0.5, 4.0 * TOLERANCE);
+
+	/* Zero-size box (a point) touching a corner. */
+	cd3Shape point = Box(V(1.0, 1.0, 1.0), V(0.0, 0.0, 0.0), CD3_QUAT_IDENTITY);
+	TEST_CHECK(cd3Distance(&a, &point).distance == CD_R(0.0));
+	point.box.center = V(1.0, 1.0, 3.0);
+	TEST_CHECK_NEAR(cd3Distance(&point, &a).distance, 2.0, TOLERANCE);
+}
+
+static void TestCapsulesSegmentsTriangles(void)
+{
+	/* Parallel capsules: distance 3 - 0.5 - 0.25. */
+	cd3Shape a = Capsule(V(0.0, 0.0, 0.0), V(4.0, 0.0, 0.0), CD_R(0.5));
+	cd3Shape b = Capsule(V(1.0, 3.0, 0.0), V(2.0, 3.0, 0.0), CD_R(0.25));
+	cd3ClosestPoints r = cd3Distance(&a, &b);
+	TEST_CHECK_NEAR(r.distance, 2.25, TOLERANCE);
+	TEST_CHECK_NEAR(r.pointA.y, 0.5, TOLERANCE);
+	TEST_CHECK_NEAR(r.pointB.y, 2.75, TOLERANCE);
+
+	/* Zero-length capsule is a sphere. */
+	b = Capsule(V(2.0, 0.0, 2.0), V(2.0, 0.0, 2.0), CD_R(1.0));
+	TEST_CHECK_NEAR(cd3Distance(&a, &b).distance, 0.5, TOLERANCE);
+
+	/* Crossing segments (skew lines at distance 1, then touching). */
+	cd3Shape s1 = Segment(V(-1.0, 0.0, 0.0), V(1.0, 0.0, 0.0));
+	cd3Shape s2 = Segment(V(0.0, -1.0, 1.0), V(0.0, 1.0, 1.0));
+	r = cd3Distance(&s1, &s2);
+	TEST_CHECK_NEAR(r.distance, 1.0, TOLERANCE);
+	NEAR_VEC(r.pointA, V(0.0, 0.0, 0.0));
+	NEAR_VEC(r.pointB, V(0.0, 0.0, 1.0));
+	s2 = Segment(V(0.0, -1.0, 0.0), V(0.0, 1.0, 0.0));
+	r = cd3Distance(&s1, &s2);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB));
+	NEAR_VEC(r.pointA, V(0.0, 0.0, 0.0));
+
+	/* Segment piercing a triangle, and one hovering above it. */
+	cd3Shape t = Triangle(V(-1.0, -1.0, 0.0), V(2.0, -1.0, 0.0), V(-1.0, 2.0, 0.0));
+	cd3Shape g = Segment(V(0.0, 0.0, -1.0), V(0.0, 0.0, 1.0));
+	r = cd3Distance(&t, &g);
+	TEST_CHECK(r.distance == CD_R(0.0));
+	NEAR_VEC(r.pointA, V(0.0, 0.0, 0.0));
+	g = Segment(V(0.0, 0.0, 0.5), V(3.0, 3.0, 0.5));
+	TEST_CHECK_NEAR(cd3Distance(&t, &g).distance, 0.5, TOLERANCE);
+
+	/* Degenerate (collinear) triangle behaves as its segment. */
+	cd3Shape flat = Triangle(V(0.0, 0.0, 0.0), V(1.0, 0.0, 0.0), V(2.0, 0.0, 0.0));
+	cd3Shape p = Sphere(CD_R(1.5), CD_R(2.0), CD_R(0.0), CD_R(0.5));
+	r = cd3Distance(&flat, &p);
+	TEST_CHECK_NEAR(r.distance, 1.5, TOLERANCE);
+	NEAR_VEC(r.pointA, V(1.5, 0.0, 0.0));
+	cd3Shape dot = Triangle(V(1.0, 1.0, 1.0), V(1.0, 1.0, 1.0), V(1.0, 1.0, 1.0));
+	TEST_CHECK_NEAR(cd3Distance(&dot, &p).distance, sqrt(0.25 + 1.0 + 1.0) - 0.5, TOLERANCE);
+}
+
+static void TestPlanes(void)
+{
+	cd3Shape ground = Plane(V(0.0, 1.0, 0.0), CD_R(1.0));
+	cd3Shape s = Sphere(CD_R(3.0), CD_R(4.0), CD_R(0.0), CD_R(1.0));
+	cd3ClosestPoints r = cd3Distance(&ground, &s);
+	TEST_CHECK_NEAR(r.distance, 2.0, TOLERANCE);
+	NEAR_VEC(r.pointA, V(3.0, 1.0, 0.0));
+	NEAR_VEC(r.pointB, V(3.0, 3.0, 0.0));
+	r = cd3Distance(&s, &ground);
+	NEAR_VEC(r.pointA, V(3.0, 3.0, 0.0));
+	NEAR_VEC(r.pointB, V(3.0, 1.0, 0.0));
+
+	/* Resting and sunk shapes: distance 0 at a point inside both. */
+	s.sphere.center.y = CD_R(2.0);
+	TEST_CHECK(cd3Distance(&ground, &s).distance == CD_R(0.0));
+	cd3Shape box = Aabb(V(-1.0, -5.0, -1.0), V(1.0, 0.0, 1.0));
+	r = cd3Distance(&box, &ground);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB) && r.pointA.y <= CD_R(1.0));
+
+	/* Opposite half-spaces: apart, then overlapping; non-opposite ones always meet. */
+	cd3Shape sky = Plane(V(0.0, -1.0, 0.0), CD_R(-4.0)); /* y >= 4 */
+	r = cd3Distance(&ground, &sky);
+	TEST_CHECK_NEAR(r.distance, 3.0, TOLERANCE);
+	TEST_CHECK_NEAR(r.pointA.y, 1.0, TOLERANCE);
+	TEST_CHECK_NEAR(r.pointB.y, 4.0, TOLERANCE);
+	sky.plane.offset = CD_R(0.0); /* y >= 0 */
+	r = cd3Distance(&ground, &sky);
+	TEST_CHECK(r.distance == CD_R(0.0) && r.pointA.y >= CD_R(0.0) && r.pointA.y <= CD_R(1.0));
+	cd3Shape wall = Plane(V(1.0, 0.0, 0.0), CD_R(-7.0));
+	r = cd3Distance(&ground, &wall);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB));
+	TEST_CHECK_NEAR(r.pointA.x, -7.0, TOLERANCE);
+	TEST_CHECK_NEAR(r.pointA.y, 1.0, TOLERANCE);
+	cd3Shape same = Plane(V(0.0, 1.0, 0.0), CD_R(-3.0));
+	r = cd3Distance(&ground, &same);
+	TEST_CHECK(r.distance == CD_R(0.0) && r.pointA.y <= CD_R(-3.0));
+}
+
+/* Far from the origin and very small or very large: finite answers, right to round-off. */
+static void TestScales(void)
+{
+	const cdReal scales[] = {CD_R(1e-9), CD_R(1e-4), CD_R(1.0), CD_R(1e4), CD_R(1e9)};
+	for (int i = 0; i < 5; ++i)
+	{
+		cdReal k = scales[i];
+		cd3Quat q = cd3MakeQuatAxisAngle(V(1.0, 2.0, 3.0), CD_R(0.7));
+		cd3Shape box = Box(cd3Scale(k, V(1.0, 2.0, 3.0)), cd3Scale(k, V(1.0, 0.5, 0.25)), q);
+		cd3Shape cap = Capsule(cd3Scale(k, V(5.0, 2.0, 3.0)), cd3Scale(k, V(5.0, 4.0, 3.0)), CD_R(0.5) * k);
+		cd3ClosestPoints r = cd3Distance(&box, &cap);
+		double expected = RefDistance(&box, &cap);
+		TEST_CHECKF(isfinite((double)r.distance) && fabs((double)r.distance - expected) <= 1e-4 * expected,
+					"scale %g: distance %.9g, reference %.9g", (double)k, (double)r.distance, expected);
+		cd3Shape t = Triangle(cd3Scale(k, V(0.0, 0.0, 0.0)), cd3Scale(k, V(1.0, 0.0, 0.0)),
+							  cd3Scale(k, V(0.0, 1.0, 0.0)));
+		cd3Shape s = Sphere(CD_R(0.25) * k, CD_R(0.25) * k, CD_R(2.0) * k, k);
+		r = cd3Distance(&t, &s);
+		TEST_CHECK_NEAR((double)r.distance / (double)k, 1.0, 1e-4);
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(TestSpheres);
+	TEST_RUN(TestBoxesAndAabbs);
+	TEST_RUN(TestCapsulesSegmentsTriangles);
+	TEST_RUN(TestPlanes);
+	TEST_RUN(TestScales);
+	TEST_RUN(TestRandomPairs);
+	return TEST_SUMMARY();
+}
