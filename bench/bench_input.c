@@ -155,9 +155,11 @@ static cd3Shape RandomShape3(BenchRng* rng, cd3ShapeType type, Dvec3 center)
 				/* Keep triangles fat enough that the validator would accept them. */
 				if (n.x * n.x + n.y * n.y + n.z * n.z > 0.05)
 				{
-					shape.triangle.a = ToVec3(Add3(center, a));
-					shape.triangle.b = ToVec3(Add3(center, b));
-					shape.triangle.c = ToVec3(Add3(center, c));
+					/* Centered on its centroid, so that rays and shapes aimed at the center meet it. */
+					Dvec3 offset = Add3(center, Scale3(-1.0 / 3.0, Add3(a, Add3(b, c))));
+					shape.triangle.a = ToVec3(Add3(offset, a));
+					shape.triangle.b = ToVec3(Add3(offset, b));
+					shape.triangle.c = ToVec3(Add3(offset, c));
 					break;
 				}
 			}

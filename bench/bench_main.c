@@ -2,7 +2,7 @@
  *
  * Method, per row: generate a batch of random valid inputs (4096, with the second shape placed
  * so that about half the answers are true, which keeps branches realistic), run the function
- * over the batch once to warm up and to size the repetition count, then time several runs of
+ * over the batch once to warm up and to size the repetition count, then time 7 runs of
  * `reps` passes over the batch with CLOCK_MONOTONIC. The table shows the median and the fastest
  * run in ns per call, and the fraction of calls that answered true.
  *
@@ -326,7 +326,7 @@ static void Usage(FILE* stream)
 	fprintf(stream, "usage: collide_bench [--quick] [--filter SUBSTRING] [--runs N] [--csv]\n"
 					"  --quick             one short pass per function: a smoke test, not a measurement\n"
 					"  --filter SUBSTRING  only the rows whose function or section contains SUBSTRING\n"
-					"  --runs N            timed runs per row, 1..15 (default 5); the median is reported\n"
+					"  --runs N            timed runs per row, 1..15 (default 7); the median is reported\n"
 					"  --csv               print group,function,impl,median_ns,min_ns,true_fraction\n");
 }
 
@@ -335,9 +335,9 @@ static bool ParseOptions(int argc, char** argv, BenchOptions* options)
 	options->quick = false;
 	options->csv = false;
 	options->filter = NULL;
-	options->runs = 5;
+	options->runs = 7;
 	options->batchCount = BENCH_BATCH_MAX;
-	options->secondsPerRun = 0.03;
+	options->secondsPerRun = 0.04;
 	for (int i = 1; i < argc; ++i)
 	{
 		if (strcmp(argv[i], "--quick") == 0)
