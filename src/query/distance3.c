@@ -5,6 +5,8 @@
 
 #include "support3.h"
 
+#include <string.h>
+
 /* GJK converges in a handful of iterations on these small point sets; the cap only guards
  * against cycling caused by round-off. */
 #define GJK_MAX_ITERATIONS 64
@@ -218,6 +220,7 @@ static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int 
 static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* pointB, bool* touching)
 {
 	GjkSimplex simplex;
+	memset(&simplex, 0, sizeof(simplex));
 	simplex.count = 1;
 	simplex.v[0] = MakeVertex(a, b, 0, 0);
 	simplex.lambda[0] = CD_R(1.0);

@@ -1,0 +1,257 @@
+/* Distance and closest points between any two 2D shapes: GJK on the shapes' cores (support2.h)
+ * with a Voronoi-region sub-algorithm, then the radii are taken off. */
+#include "collide/query2.h"
+
+#include "support2.h"
+
+#include <string.h>
+
+/* GJK converges in a handful of iterations on these small point sets; the cap only guards
+ * against cycling caused by round-off. */
+#define GJK_MAX_ITERATIONS 64
+
+/* A triangle this flat (sine of its angle) gives barycentric coordinates dominated by
+ * round-off; it is then treated through its edges. */
+#define GJK_DEGENERATE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+/* The origin counts as touching the simplex when the closest point is within this many
+ * epsilons of the simplex's own size: below it the distance is round-off. */
+#define GJK_TOUCH_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+typedef struct GjkVertex
+{
+	cd2Vec a, b, w; /* support points on A and B, w = a - b */
+	int indexA, indexB;
+} GjkVertex;
+
+typedef struct GjkSimplex
+{
+	GjkVertex v[3];
+	cdReal lambda[3];
+	int count;
+} GjkSimplex;
+
+/* Barycentric coordinates of the point of segment w0-w1 closest to the origin. */
+static void SolveSegment(cd2Vec w0, cd2Vec w1, cdReal* l0, cdReal* l1)
+{
+	cd2Vec e = cd2Sub(w1, w0);
+	cdReal d1 = -cd2Dot(w0, e);
+	cdReal d2 = cd2Dot(w1, e);
+	if (d1 <= CD_R(0.0))
+	{
+		*l0 = CD_R(1.0);
+		*l1 = CD_R(0.0);
+	}
+	else if (d2 <= CD_R(0.0))
+	{
+		*l0 = CD_R(0.0);
+		*l1 = CD_R(1.0);
+	}
+	else
+	{
+		cdReal sum = d1 + d2;
+		*l0 = d2 / sum;
+		*l1 = d1 / sum;
+	}
+}
+
+/* Barycentric coordinates of the point of triangle w[0..2] closest to the origin; returns true
+ * when the origin lies inside it. */
+static bool SolveTriangle(const cd2Vec* w, cdReal* l)
+{
+	cd2Vec e1 = cd2Sub(w[1], w[0]);
+	cd2Vec e2 = cd2Sub(w[2], w[0]);
+	cdReal area = cd2Cross(e1, e2);
+	if (cdAbs(area) > GJK_DEGENERATE_TOLERANCE * cd2Length(e1) * cd2Length(e2))
+	{
+		cdReal l0 = cd2Cross(w[1], w[2]) / area;
+		cdReal l1 = cd2Cross(w[2], w[0]) / area;
+		cdReal l2 = cd2Cross(w[0], w[1]) / area;
+		if (l0 >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0))
+		{
+			cdReal sum = l0 + l1 + l2;
+			l[0] = l0 / sum;
+			l[1] = l1 / sum;
+			l[2] = l2 / sum;
+			return true;
+		}
+	}
+
+	/* Outside (or flat): the closest point lies on an edge. */
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	for (int i = 0; i < 3; ++i)
+	{
+		int j = (i + 1) % 3, k = (i + 2) % 3;
+		cdReal li, lj;
+		SolveSegment(w[i], w[j], &li, &lj);
+		cdReal distanceSquared = cd2LengthSquared(cd2Add(cd2Scale(li, w[i]), cd2Scale(lj, w[j])));
+		if (distanceSquared < bestDistanceSquared)
+		{
+			bestDistanceSquared = distanceSquared;
+			l[i] = li;
+			l[j] = lj;
+			l[k] = CD_R(0.0);
+		}
+	}
+	return false;
+}
+
+/* Reduces the simplex to the vertices that support its point closest to the origin, sets their
+ * weights and returns true when the origin is enclosed by a triangle. */
+static bool SolveSimplex(GjkSimplex* simplex)
+{
+	cd2Vec w[3];
+	cdReal l[3] = {CD_R(1.0), CD_R(0.0), CD_R(0.0)};
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		w[i] = simplex->v[i].w;
+	}
+	bool enclosed = false;
+	if (simplex->count == 2)
+	{
+		SolveSegment(w[0], w[1], &l[0], &l[1]);
+	}
+	else if (simplex->count == 3)
+	{
+		enclosed = SolveTriangle(w, l);
+	}
+
+	int kept = 0;
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		if (l[i] > CD_R(0.0) || (kept == 0 && i == simplex->count - 1))
+		{
+			simplex->v[kept] = simplex->v[i];
+			simplex->lambda[kept] = l[i] > CD_R(0.0) ? l[i] : CD_R(1.0);
+			++kept;
+		}
+	}
+	simplex->count = kept;
+	return enclosed;
+}
+
+static GjkVertex MakeVertex(const cd2Core* a, const cd2Core* b, int indexA, int indexB)
+{
+	GjkVertex vertex;
+	vertex.indexA = indexA;
+	vertex.indexB = indexB;
+	vertex.a = a->points[indexA];
+	vertex.b = b->points[indexB];
+	vertex.w = cd2Sub(vertex.a, vertex.b);
+	return vertex;
+}
+
+/* Closest points of the cores of a and b; *touching is set when the cores overlap (then
+ * *pointA and *pointB coincide up to round-off). */
+static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* pointB, bool* touching)
+{
+	GjkSimplex simplex;
+	memset(&simplex, 0, sizeof(simplex));
+	simplex.count = 1;
+	simplex.v[0] = MakeVertex(a, b, 0, 0);
+	simplex.lambda[0] = CD_R(1.0);
+
+	GjkSimplex previous = simplex;
+	cdReal previousDistanceSquared = CD_REAL_MAX;
+	*touching = false;
+	for (int iteration = 0; iteration < GJK_MAX_ITERATIONS; ++iteration)
+	{
+		if (SolveSimplex(&simplex))
+		{
+			*touching = true;
+			break;
+		}
+		cd2Vec v = CD2_VEC_ZERO;
+		cdReal size = CD_R(0.0);
+		for (int i = 0; i < simplex.count; ++i)
+		{
+			v = cd2MulAdd(v, simplex.lambda[i], simplex.v[i].w);
+			size = cdMax(size, cd2Length(simplex.v[i].w));
+		}
+		cdReal distanceSquared = cd2LengthSquared(v);
+		cdReal touch = GJK_TOUCH_TOLERANCE * size;
+		if (distanceSquared <= touch * touch)
+		{
+			*touching = true;
+			break;
+		}
+		if (distanceSquared >= previousDistanceSquared)
+		{
+			/* Round-off stalled the descent: the previous simplex was at least as close. */
+			simplex = previous;
+			break;
+		}
+		previous = simplex;
+		previousDistanceSquared = distanceSquared;
+
+		int indexA = cd2CoreSupport(a, cd2Neg(v));
+		int indexB = cd2CoreSupport(b, v);
+		bool duplicate = false;
+		for (int i = 0; i < simplex.count; ++i)
+		{
+			duplicate = duplicate || (simplex.v[i].indexA == indexA && simplex.v[i].indexB == indexB);
+		}
+		if (duplicate)
+		{
+			break;
+		}
+		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
+		/* No support point lies meaningfully beyond v: v is the closest point (relative gap). */
+		if (distanceSquared - cd2Dot(v, vertex.w) <= CD_R(4.0) * CD_REAL_EPSILON * distanceSquared)
+		{
+			break;
+		}
+		simplex.v[simplex.count] = vertex;
+		simplex.lambda[simplex.count] = CD_R(0.0);
+		++simplex.count;
+	}
+
+	cd2Vec pa = CD2_VEC_ZERO, pb = CD2_VEC_ZERO;
+	for (int i = 0; i < simplex.count; ++i)
+	{
+		pa = cd2MulAdd(pa, simplex.lambda[i], simplex.v[i].a);
+		pb = cd2MulAdd(pb, simplex.lambda[i], simplex.v[i].b);
+	}
+	*pointA = pa;
+	*pointB = pb;
+}
+
+static cd2ClosestPoints Touching(cd2Vec point)
+{
+	cd2ClosestPoints result = {point, point, CD_R(0.0)};
+	return result;
+}
+
+cd2ClosestPoints cd2Distance(const cd2Shape* a, const cd2Shape* b)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd2Core coreA, coreB;
+	if (!cd2MakeCore(a, &coreA) || !cd2MakeCore(b, &coreB))
+	{
+		CD_ASSERT(false);
+		cd2ClosestPoints none = {CD2_VEC_ZERO, CD2_VEC_ZERO, CD_REAL_MAX};
+		return none;
+	}
+
+	cd2Vec pointA, pointB;
+	bool touching;
+	GjkCores(&coreA, &coreB, &pointA, &pointB, &touching);
+	if (touching)
+	{
+		return Touching(pointA);
+	}
+
+	cdReal radius = coreA.radius + coreB.radius;
+	cd2Vec delta = cd2Sub(pointB, pointA);
+	cdReal coreDistance = cd2Length(delta);
+	if (coreDistance <= radius)
+	{
+		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
+		cdReal t = radius > CD_R(0.0) ? coreA.radius / radius : CD_R(0.0);
+		return Touching(cd2MulAdd(pointA, t, delta));
+	}
+	cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
+	cd2ClosestPoints result = {cd2MulAdd(pointA, coreA.radius, normal),
+							   cd2MulSub(pointB, coreB.radius, normal), coreDistance - radius};
+	return result;
+}

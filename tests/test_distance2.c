@@ -1,0 +1,696 @@
+/* Tests of cd2Distance (GJK): exact cases, and thousands of random pairs of every type
+ * combination against an independent brute-force reference in double precision (feature
+ * enumeration), plus symmetry, rigid-transform invariance and witness-point checks. */
+#include "collide/query2.h"
+#include "test.h"
+
+#include <string.h>
+
+/* ---- double-precision reference ------------------------------------------------------------ */
+typedef struct DVec
+{
+	double x, y;
+} DVec;
+
+static DVec DMake(double x, double y)
+{
+	DVec v = {x, y};
+	return v;
+}
+static DVec DFrom(cd2Vec v)
+{
+	return DMake((double)v.x, (double)v.y);
+}
+static DVec DAdd(DVec a, DVec b)
+{
+	return DMake(a.x + b.x, a.y + b.y);
+}
+static DVec DSub(DVec a, DVec b)
+{
+	return DMake(a.x - b.x, a.y - b.y);
+}
+static DVec DScale(double s, DVec a)
+{
+	return DMake(s * a.x, s * a.y);
+}
+static double DDot(DVec a, DVec b)
+{
+	return a.x * b.x + a.y * b.y;
+}
+static double DCross(DVec a, DVec b)
+{
+	return a.x * b.y - a.y * b.x;
+}
+static double DLength(DVec a)
+{
+	return sqrt(DDot(a, a));
+}
+
+static double PointSegmentDistance(DVec p, DVec a, DVec b)
+{
+	DVec e = DSub(b, a);
+	double ee = DDot(e, e);
+	double t = ee > 0.0 ? DDot(DSub(p, a), e) / ee : 0.0;
+	t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+	return DLength(DSub(p, DAdd(a, DScale(t, e))));
+}
+
+static double SegmentSegmentDistance(DVec p1, DVec q1, DVec p2, DVec q2)
+{
+	double o1 = DCross(DSub(q1, p1), DSub(p2, p1)), o2 = DCross(DSub(q1, p1), DSub(q2, p1));
+	double o3 = DCross(DSub(q2, p2), DSub(p1, p2)), o4 = DCross(DSub(q2, p2), DSub(q1, p2));
+	if (((o1 < 0.0 && o2 > 0.0) || (o1 > 0.0 && o2 < 0.0)) &&
+		((o3 < 0.0 && o4 > 0.0) || (o3 > 0.0 && o4 < 0.0)))
+	{
+		return 0.0; /* proper crossing */
+	}
+	double best = PointSegmentDistance(p1, p2, q2);
+	double d = PointSegmentDistance(q1, p2, q2);
+	best = d < best ? d : best;
+	d = PointSegmentDistance(p2, p1, q1);
+	best = d < best ? d : best;
+	d = PointSegmentDistance(q2, p1, q1);
+	return d < best ? d : best;
+}
+
+/* A shape as its core vertices (a closed loop for solids) grown by a radius. */
+typedef struct RefShape
+{
+	DVec vertices[CD2_MAX_POLYGON_VERTICES];
+	int count;
+	bool solid; /* count >= 3, counter-clockwise */
+	double radius;
+} RefShape;
+
+static RefShape MakeRef(const cd2Shape* shape)
+{
+	RefShape r;
+	memset(&r, 0, sizeof(r));
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			r.vertices[0] = DFrom(shape->circle.center);
+			r.count = 1;
+			r.radius = (double)shape->circle.radius;
+			break;
+		case CD2_SHAPE_CAPSULE:
+			r.vertices[0] = DFrom(shape->capsule.p1);
+			r.vertices[1] = DFrom(shape->capsule.p2);
+			r.count = 2;
+			r.radius = (double)shape->capsule.radius;
+			break;
+		case CD2_SHAPE_SEGMENT:
+			r.vertices[0] = DFrom(shape->segment.p1);
+			r.vertices[1] = DFrom(shape->segment.p2);
+			r.count = 2;
+			break;
+		case CD2_SHAPE_AABB:
+		{
+			DVec lo = DFrom(shape->aabb.min), hi = DFrom(shape->aabb.max);
+			r.vertices[0] = lo;
+			r.vertices[1] = DMake(hi.x, lo.y);
+			r.vertices[2] = hi;
+			r.vertices[3] = DMake(lo.x, hi.y);
+			r.count = 4;
+			r.solid = true;
+			break;
+		}
+		case CD2_SHAPE_BOX:
+		{
+			DVec c = DFrom(shape->box.center), h = DFrom(shape->box.halfExtents);
+			double cs = (double)shape->box.rotation.c, sn = (double)shape->box.rotation.s;
+			DVec ax = DMake(cs * h.x, sn * h.x), ay = DMake(-sn * h.y, cs * h.y);
+			r.vertices[0] = DSub(DSub(c, ax), ay);
+			r.vertices[1] = DSub(DAdd(c, ax), ay);
+			r.vertices[2] = DAdd(DAdd(c, ax), ay);
+			r.vertices[3] = DAdd(DSub(c, ax), ay);
+			r.count = 4;
+			r.solid = true;
+			break;
+		}
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < shape->polygon.count; ++i)
+			{
+				r.vertices[i] = DFrom(shape->polygon.vertices[i]);
+			}
+			r.count = shape->polygon.count;
+			r.solid = true;
+			break;
+		default:
+			break;
+	}
+	return r;
+}
+
+/* Twice the signed area of the core loop (0 for points and segments). */
+static double RefArea(const RefShape* r)
+{
+	double area = 0.0;
+	for (int i = 0; r->solid && i < r->count; ++i)
+	{
+		area += DCross(r->vertices[i], r->vertices[(i + 1) % r->count]);
+	}
+	return area;
+}
+
+/* Inside a solid of non-zero area; a flat box or polygon is just its loop of edges. */
+static bool RefPointInSolid(const RefShape* r, DVec p)
+{
+	if (!r->solid || RefArea(r) <= 0.0)
+	{
+		return false;
+	}
+	for (int i = 0; i < r->count; ++i)
+	{
+		DVec a = r->vertices[i], b = r->vertices[(i + 1) % r->count];
+		if (DCross(DSub(b, a), DSub(p, a)) < -1e-12 * DLength(DSub(b, a)) * DLength(DSub(p, a)))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static int EdgeCount(const RefShape* r)
+{
+	return r->solid ? r->count : r->count - 1;
+}
+
+static double RefPointCoreDistance(const RefShape* r, DVec p)
+{
+	if (RefPointInSolid(r, p))
+	{
+		return 0.0;
+	}
+	double best = DLength(DSub(p, r->vertices[0]));
+	for (int i = 0; i < EdgeCount(r); ++i)
+	{
+		double d = PointSegmentDistance(p, r->vertices[i], r->vertices[(i + 1) % r->count]);
+		best = d < best ? d : best;
+	}
+	return best;
+}
+
+static double RefPointShapeDistance(const RefShape* r, DVec p)
+{
+	double d = RefPointCoreDistance(r, p) - r->radius;
+	return d > 0.0 ? d : 0.0;
+}
+
+static double RefCoreDistance(const RefShape* a, const RefShape* b)
+{
+	double best = INFINITY;
+	for (int i = 0; i < a->count; ++i)
+	{
+		double d = RefPointCoreDistance(b, a->vertices[i]);
+		best = d < best ? d : best;
+	}
+	for (int i = 0; i < b->count; ++i)
+	{
+		double d = RefPointCoreDistance(a, b->vertices[i]);
+		best = d < best ? d : best;
+	}
+	for (int i = 0; i < EdgeCount(a); ++i)
+	{
+		for (int j = 0; j < EdgeCount(b); ++j)
+		{
+			double d = SegmentSegmentDistance(a->vertices[i], a->vertices[(i + 1) % a->count], b->vertices[j],
+											  b->vertices[(j + 1) % b->count]);
+			best = d < best ? d : best;
+		}
+	}
+	return best;
+}
+
+static double RefDistance(const cd2Shape* sa, const cd2Shape* sb)
+{
+	RefShape a = MakeRef(sa), b = MakeRef(sb);
+	double d = RefCoreDistance(&a, &b) - a.radius - b.radius;
+	return d > 0.0 ? d : 0.0;
+}
+
+/* ---- random shapes ----------------------------------------------------------------------------- */
+static cdReal RandomReal(TestRng* rng, double lower, double upper)
+{
+	return (cdReal)TestRngRange(rng, lower, upper);
+}
+
+static cd2Vec RandomVec(TestRng* rng, double extent)
+{
+	return cd2MakeVec(RandomReal(rng, -extent, extent), RandomReal(rng, -extent, extent));
+}
+
+static cd2Rot RandomRot(TestRng* rng)
+{
+	return cd2MakeRot(RandomReal(rng, -3.2, 3.2));
+}
+
+static cdReal RandomSize(TestRng* rng, double upper)
+{
+	return TestRngInt(rng, 8) == 0 ? CD_R(0.0) : RandomReal(rng, 0.0, upper);
+}
+
+/* A convex counter-clockwise polygon: sorted angles on an ellipse, then turned (built by hand so
+ * that these tests depend on cd2Distance only). */
+static cd2Polygon RandomPolygon(TestRng* rng, cd2Vec center)
+{
+	cd2Polygon polygon;
+	memset(&polygon, 0, sizeof(polygon));
+	int count = 3 + TestRngInt(rng, CD2_MAX_POLYGON_VERTICES - 2);
+	double angles[CD2_MAX_POLYGON_VERTICES];
+	for (int i = 0; i < count; ++i)
+	{
+		/* One random angle per sector keeps the vertices apart. */
+		angles[i] = (i + TestRngRange(rng, 0.1, 0.9)) * 2.0 * 3.14159265358979 / count;
+	}
+	double rx = TestRngRange(rng, 0.2, 1.5), ry = TestRngRange(rng, 0.2, 1.5);
+	cd2Rot q = RandomRot(rng);
+	cd2Vec sum = CD2_VEC_ZERO;
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec local = cd2MakeVec((cdReal)(rx * cos(angles[i])), (cdReal)(ry * sin(angles[i])));
+		polygon.vertices[i] = cd2Add(center, cd2RotateVector(q, local));
+		sum = cd2Add(sum, polygon.vertices[i]);
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec edge = cd2Sub(polygon.vertices[(i + 1) % count], polygon.vertices[i]);
+		polygon.normals[i] = cd2Normalize(cd2RightPerp(edge));
+	}
+	polygon.centroid = cd2Scale(CD_R(1.0) / (cdReal)count, sum);
+	polygon.count = count;
+	return polygon;
+}
+
+static cd2Shape RandomShape(TestRng* rng, cd2ShapeType type)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = type;
+	cd2Vec center = RandomVec(rng, 2.0);
+	switch (type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = center;
+			s.circle.radius = RandomSize(rng, 1.2);
+			break;
+		case CD2_SHAPE_CAPSULE:
+		{
+			cd2Vec half = cd2RotateVector(RandomRot(rng), cd2MakeVec(RandomSize(rng, 1.2), CD_R(0.0)));
+			s.capsule.p1 = cd2Sub(center, half);
+			s.capsule.p2 = cd2Add(center, half);
+			s.capsule.radius = RandomSize(rng, 0.8);
+			break;
+		}
+		case CD2_SHAPE_AABB:
+		{
+			cd2Vec half = cd2MakeVec(RandomSize(rng, 1.2), RandomSize(rng, 1.2));
+			s.aabb.min = cd2Sub(center, half);
+			s.aabb.max = cd2Add(center, half);
+			break;
+		}
+		case CD2_SHAPE_BOX:
+			s.box.center = center;
+			s.box.halfExtents = cd2MakeVec(RandomSize(rng, 1.2), RandomSize(rng, 1.2));
+			s.box.rotation = RandomRot(rng);
+			break;
+		case CD2_SHAPE_POLYGON:
+			s.polygon = RandomPolygon(rng, center);
+			break;
+		case CD2_SHAPE_SEGMENT:
+		{
+			cd2Vec half = cd2RotateVector(RandomRot(rng), cd2MakeVec(RandomSize(rng, 1.5), CD_R(0.0)));
+			s.segment.p1 = cd2Sub(center, half);
+			s.segment.p2 = cd2Add(center, half);
+			break;
+		}
+		default:
+			break;
+	}
+	return s;
+}
+
+static cd2Shape TransformShape(const cd2Shape* shape, cd2Transform t)
+{
+	cd2Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = cd2TransformPoint(t, shape->circle.center);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			s.capsule.p1 = cd2TransformPoint(t, shape->capsule.p1);
+			s.capsule.p2 = cd2TransformPoint(t, shape->capsule.p2);
+			break;
+		case CD2_SHAPE_AABB: /* translation only */
+			s.aabb.min = cd2Add(shape->aabb.min, t.p);
+			s.aabb.max = cd2Add(shape->aabb.max, t.p);
+			break;
+		case CD2_SHAPE_BOX:
+			s.box.center = cd2TransformPoint(t, shape->box.center);
+			s.box.rotation = cd2NormalizeRot(cd2MulRot(t.q, shape->box.rotation));
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < shape->polygon.count; ++i)
+			{
+				s.polygon.vertices[i] = cd2TransformPoint(t, shape->polygon.vertices[i]);
+				s.polygon.normals[i] = cd2RotateVector(t.q, shape->polygon.normals[i]);
+			}
+			s.polygon.centroid = cd2TransformPoint(t, shape->polygon.centroid);
+			break;
+		case CD2_SHAPE_SEGMENT:
+			s.segment.p1 = cd2TransformPoint(t, shape->segment.p1);
+			s.segment.p2 = cd2TransformPoint(t, shape->segment.p2);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+static const char* TypeName(cd2ShapeType type)
+{
+	static const char* names[] = {"circle", "capsule", "aabb", "box", "polygon", "segment"};
+	return (int)type >= 0 && type < CD2_SHAPE_TYPE_COUNT ? names[type] : "?";
+}
+
+static void PrintShape(const char* label, const cd2Shape* s)
+{
+	fprintf(stderr, "  %s %s:", label, TypeName(s->type));
+	switch (s->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			fprintf(stderr, " center (%.9g %.9g) radius %.9g", (double)s->circle.center.x,
+					(double)s->circle.center.y, (double)s->circle.radius);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			fprintf(stderr, " p1 (%.9g %.9g) p2 (%.9g %.9g) radius %.9g", (double)s->capsule.p1.x,
+					(double)s->capsule.p1.y, (double)s->capsule.p2.x, (double)s->capsule.p2.y,
+					(double)s->capsule.radius);
+			break;
+		case CD2_SHAPE_AABB:
+			fprintf(stderr, " min (%.9g %.9g) max (%.9g %.9g)", (double)s->aabb.min.x, (double)s->aabb.min.y,
+					(double)s->aabb.max.x, (double)s->aabb.max.y);
+			break;
+		case CD2_SHAPE_BOX:
+			fprintf(stderr, " center (%.9g %.9g) half (%.9g %.9g) rot (%.9g %.9g)", (double)s->box.center.x,
+					(double)s->box.center.y, (double)s->box.halfExtents.x, (double)s->box.halfExtents.y,
+					(double)s->box.rotation.c, (double)s->box.rotation.s);
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < s->polygon.count; ++i)
+			{
+				fprintf(stderr, " (%.9g %.9g)", (double)s->polygon.vertices[i].x,
+						(double)s->polygon.vertices[i].y);
+			}
+			break;
+		case CD2_SHAPE_SEGMENT:
+			fprintf(stderr, " p1 (%.9g %.9g) p2 (%.9g %.9g)", (double)s->segment.p1.x,
+					(double)s->segment.p1.y, (double)s->segment.p2.x, (double)s->segment.p2.y);
+			break;
+		default:
+			break;
+	}
+	fprintf(stderr, "\n");
+}
+
+/* Absolute tolerance for shapes of size ~1-5 near the origin: float round-off in the shapes
+ * themselves (rotations, transforms) and in GJK's termination. */
+#if CD_DOUBLE
+#define TOLERANCE 1e-9
+#else
+#define TOLERANCE 2e-5
+#endif
+
+static bool g_printedCase = false;
+
+static void ReportCase(bool ok, const cd2Shape* a, const cd2Shape* b)
+{
+	if (!ok && !g_printedCase && g_testFailures <= TEST_MAX_PRINTED_FAILURES)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+		g_printedCase = true;
+	}
+}
+
+static bool CheckResult(const cd2Shape* a, const cd2Shape* b, cd2ClosestPoints r)
+{
+	RefShape ra = MakeRef(a), rb = MakeRef(b);
+	DVec pa = DFrom(r.pointA), pb = DFrom(r.pointB);
+	double distance = (double)r.distance;
+	bool finite = isfinite(distance) && isfinite(pa.x) && isfinite(pa.y) && isfinite(pb.x) && isfinite(pb.y);
+	TEST_CHECKF(finite, "non-finite result %g", distance);
+	if (!finite)
+	{
+		return false;
+	}
+	double onA = RefPointShapeDistance(&ra, pa), onB = RefPointShapeDistance(&rb, pb);
+	double gap = DLength(DSub(pb, pa));
+	bool ok = distance >= 0.0 && onA <= TOLERANCE && onB <= TOLERANCE && fabs(gap - distance) <= TOLERANCE;
+	TEST_CHECKF(ok,
+				"witness off: distance %.9g, pointA off A by %.3g, pointB off B by %.3g, |pB - pA| = %.9g",
+				distance, onA, onB, gap);
+	bool same = distance > 0.0 || cd2VecEqual(r.pointA, r.pointB);
+	TEST_CHECKF(same, "overlap reported with different points, |pB - pA| = %.3g", gap);
+	return ok && same;
+}
+
+static double g_maxError = 0.0;
+
+static void CheckPair(TestRng* rng, const cd2Shape* a, const cd2Shape* b)
+{
+	g_printedCase = false;
+	double expected = RefDistance(a, b);
+	cd2ClosestPoints r = cd2Distance(a, b);
+	bool ok = CheckResult(a, b, r);
+	double error = fabs((double)r.distance - expected);
+	g_maxError = error > g_maxError ? error : g_maxError;
+	bool near = error <= TOLERANCE;
+	TEST_CHECKF(near, "distance %.9g, reference %.9g", (double)r.distance, expected);
+	ReportCase(ok && near, a, b);
+
+	/* Symmetry: the same distance, and the witnesses swapped (unique when one shape is a disk,
+	 * otherwise both pairs need only be valid). */
+	cd2ClosestPoints s = cd2Distance(b, a);
+	bool okSwapped = CheckResult(b, a, s);
+	bool symmetric = fabs((double)(s.distance - r.distance)) <= TOLERANCE;
+	TEST_CHECKF(symmetric, "d(a,b) = %.9g, d(b,a) = %.9g", (double)r.distance, (double)s.distance);
+	if (a->type == CD2_SHAPE_CIRCLE || b->type == CD2_SHAPE_CIRCLE)
+	{
+		double moved =
+			DLength(DSub(DFrom(r.pointA), DFrom(s.pointB))) + DLength(DSub(DFrom(r.pointB), DFrom(s.pointA)));
+		bool swapped = r.distance == CD_R(0.0) || moved <= 100.0 * TOLERANCE;
+		TEST_CHECKF(swapped, "witnesses not swapped: moved by %.3g", moved);
+		symmetric = symmetric && swapped;
+	}
+	ReportCase(okSwapped && symmetric, a, b);
+
+	/* Invariance under a common rigid transform (translation only with an AABB). */
+	cd2Transform t;
+	t.p = RandomVec(rng, 3.0);
+	t.q = (a->type == CD2_SHAPE_AABB || b->type == CD2_SHAPE_AABB) ? CD2_ROT_IDENTITY : RandomRot(rng);
+	cd2Shape ta = TransformShape(a, t), tb = TransformShape(b, t);
+	cd2ClosestPoints u = cd2Distance(&ta, &tb);
+	bool invariant = fabs((double)(u.distance - r.distance)) <= 2.0 * TOLERANCE;
+	TEST_CHECKF(invariant, "transformed distance %.9g, original %.9g", (double)u.distance,
+				(double)r.distance);
+	ReportCase(invariant, a, b);
+}
+
+static void TestRandomPairs(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d02u);
+	const int pairsPerCombination = 1000;
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = ta; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int i = 0; i < pairsPerCombination; ++i)
+			{
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb);
+				CheckPair(&rng, &a, &b);
+			}
+		}
+	}
+	printf("largest distance error against the reference: %.3g\n", g_maxError);
+}
+
+/* ---- exact cases ------------------------------------------------------------------------------- */
+static cd2Shape Circle(cdReal x, cdReal y, cdReal radius)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD2_SHAPE_CIRCLE;
+	s.circle.center = cd2MakeVec(x, y);
+	s.circle.radius = radius;
+	return s;
+}
+
+static cd2Shape Aabb(cd2Vec lo, cd2Vec hi)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD2_SHAPE_AABB;
+	s.aabb.min = lo;
+	s.aabb.max = hi;
+	return s;
+}
+
+static cd2Shape Capsule(cd2Vec p1, cd2Vec p2, cdReal radius)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD2_SHAPE_CAPSULE;
+	s.capsule.p1 = p1;
+	s.capsule.p2 = p2;
+	s.capsule.radius = radius;
+	return s;
+}
+
+static cd2Shape Segment(cd2Vec p1, cd2Vec p2)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD2_SHAPE_SEGMENT;
+	s.segment.p1 = p1;
+	s.segment.p2 = p2;
+	return s;
+}
+
+static cd2Shape Box(cd2Vec center, cd2Vec half, cd2Rot rotation)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD2_SHAPE_BOX;
+	s.box.center = center;
+	s.box.halfExtents = half;
+	s.box.rotation = rotation;
+	return s;
+}
+
+/* The unit square [0,1]^2 as a hand-built polygon. */
+static cd2Shape UnitSquarePolygon(void)
+{
+	cd2Shape s;
+	memset(&s, 0, sizeof(s));
+	s.type = CD2_SHAPE_POLYGON;
+	s.polygon.vertices[0] = cd2MakeVec(CD_R(0.0), CD_R(0.0));
+	s.polygon.vertices[1] = cd2MakeVec(CD_R(1.0), CD_R(0.0));
+	s.polygon.vertices[2] = cd2MakeVec(CD_R(1.0), CD_R(1.0));
+	s.polygon.vertices[3] = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	s.polygon.normals[0] = cd2MakeVec(CD_R(0.0), CD_R(-1.0));
+	s.polygon.normals[1] = cd2MakeVec(CD_R(1.0), CD_R(0.0));
+	s.polygon.normals[2] = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	s.polygon.normals[3] = cd2MakeVec(CD_R(-1.0), CD_R(0.0));
+	s.polygon.centroid = cd2MakeVec(CD_R(0.5), CD_R(0.5));
+	s.polygon.count = 4;
+	return s;
+}
+
+#define V(x, y) cd2MakeVec(CD_R(x), CD_R(y))
+#define NEAR_VEC(a, b)                                                                                       \
+	do                                                                                                       \
+	{                                                                                                        \
+		TEST_CHECK_NEAR((a).x, (b).x, TOLERANCE);                                                            \
+		TEST_CHECK_NEAR((a).y, (b).y, TOLERANCE);                                                            \
+	} while (0)
+
+static void TestCircles(void)
+{
+	cd2Shape a = Circle(CD_R(0.0), CD_R(0.0), CD_R(1.0));
+	cd2Shape b = Circle(CD_R(0.0), CD_R(5.0), CD_R(2.0));
+	cd2ClosestPoints r = cd2Distance(&a, &b);
+	TEST_CHECK_NEAR(r.distance, 2.0, TOLERANCE);
+	NEAR_VEC(r.pointA, V(0.0, 1.0));
+	NEAR_VEC(r.pointB, V(0.0, 3.0));
+	b.circle.center.y = CD_R(3.0);
+	r = cd2Distance(&a, &b);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd2VecEqual(r.pointA, r.pointB));
+	NEAR_VEC(r.pointA, V(0.0, 1.0));
+	b.circle.center.y = CD_R(0.5);
+	r = cd2Distance(&a, &b);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd2VecEqual(r.pointA, r.pointB) &&
+			   cd2Length(r.pointA) <= CD_R(1.0));
+	cd2Shape p = Circle(CD_R(3.0), CD_R(-1.0), CD_R(0.0));
+	r = cd2Distance(&p, &p);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd2VecEqual(r.pointA, p.circle.center));
+}
+
+static void TestPolygonsAndBoxes(void)
+{
+	cd2Shape square = UnitSquarePolygon();
+	cd2Shape aabb = Aabb(V(3.0, 3.0), V(4.0, 5.0));
+	cd2ClosestPoints r = cd2Distance(&square, &aabb);
+	TEST_CHECK_NEAR(r.distance, sqrt(8.0), TOLERANCE);
+	NEAR_VEC(r.pointA, V(1.0, 1.0));
+	NEAR_VEC(r.pointB, V(3.0, 3.0));
+
+	/* Edge contact, nesting, a zero-size box on a corner. */
+	aabb = Aabb(V(1.0, 0.25), V(2.0, 0.75));
+	TEST_CHECK(cd2Distance(&square, &aabb).distance == CD_R(0.0));
+	aabb = Aabb(V(0.25, 0.25), V(0.75, 0.75));
+	r = cd2Distance(&aabb, &square);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd2VecEqual(r.pointA, r.pointB));
+	cd2Shape point = Box(V(1.0, 1.0), V(0.0, 0.0), CD2_ROT_IDENTITY);
+	TEST_CHECK(cd2Distance(&point, &square).distance == CD_R(0.0));
+
+	/* A box turned 45 degrees: its corner reaches x = 4 - sqrt(2). */
+	cd2Shape box = Box(V(4.0, 0.5), V(1.0, 1.0), cd2MakeRot(CD_R(0.25) * CD_PI));
+	r = cd2Distance(&square, &box);
+	TEST_CHECK_NEAR(r.distance, 3.0 - sqrt(2.0), 4.0 * TOLERANCE);
+	NEAR_VEC(r.pointA, V(1.0, 0.5));
+	TEST_CHECK_NEAR(r.pointB.x, 4.0 - sqrt(2.0), 4.0 * TOLERANCE);
+}
+
+static void TestCapsulesAndSegments(void)
+{
+	cd2Shape a = Capsule(V(0.0, 0.0), V(4.0, 0.0), CD_R(0.5));
+	cd2Shape b = Capsule(V(1.0, 3.0), V(2.0, 3.0), CD_R(0.25));
+	TEST_CHECK_NEAR(cd2Distance(&a, &b).distance, 2.25, TOLERANCE);
+	b = Capsule(V(6.0, 0.0), V(6.0, 0.0), CD_R(1.0)); /* zero length */
+	cd2ClosestPoints r = cd2Distance(&a, &b);
+	TEST_CHECK_NEAR(r.distance, 0.5, TOLERANCE);
+	NEAR_VEC(r.pointA, V(4.5, 0.0));
+	NEAR_VEC(r.pointB, V(5.0, 0.0));
+
+	cd2Shape s1 = Segment(V(-1.0, 0.0), V(1.0, 0.0));
+	cd2Shape s2 = Segment(V(0.0, -1.0), V(0.0, 1.0));
+	r = cd2Distance(&s1, &s2);
+	TEST_CHECK(r.distance == CD_R(0.0) && cd2VecEqual(r.pointA, r.pointB));
+	NEAR_VEC(r.pointA, V(0.0, 0.0));
+	s2 = Segment(V(2.0, 0.0), V(5.0, 0.0)); /* collinear, apart */
+	TEST_CHECK_NEAR(cd2Distance(&s1, &s2).distance, 1.0, TOLERANCE);
+	s2 = Segment(V(0.5, 0.0), V(5.0, 0.0)); /* collinear, overlapping */
+	TEST_CHECK(cd2Distance(&s1, &s2).distance == CD_R(0.0));
+	cd2Shape dot = Segment(V(0.5, 2.0), V(0.5, 2.0));
+	r = cd2Distance(&dot, &s1);
+	TEST_CHECK_NEAR(r.distance, 2.0, TOLERANCE);
+	NEAR_VEC(r.pointB, V(0.5, 0.0));
+}
+
+static void TestScales(void)
+{
+	const cdReal scales[] = {CD_R(1e-9), CD_R(1e-4), CD_R(1.0), CD_R(1e4), CD_R(1e9)};
+	for (int i = 0; i < 5; ++i)
+	{
+		cdReal k = scales[i];
+		cd2Shape box = Box(cd2Scale(k, V(1.0, 2.0)), cd2Scale(k, V(1.0, 0.5)), cd2MakeRot(CD_R(0.7)));
+		cd2Shape cap = Capsule(cd2Scale(k, V(5.0, 2.0)), cd2Scale(k, V(5.0, 4.0)), CD_R(0.5) * k);
+		cd2ClosestPoints r = cd2Distance(&box, &cap);
+		double expected = RefDistance(&box, &cap);
+		TEST_CHECKF(isfinite((double)r.distance) && fabs((double)r.distance - expected) <= 1e-4 * expected,
+					"scale %g: distance %.9g, reference %.9g", (double)k, (double)r.distance, expected);
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(TestCircles);
+	TEST_RUN(TestPolygonsAndBoxes);
+	TEST_RUN(TestCapsulesAndSegments);
+	TEST_RUN(TestScales);
+	TEST_RUN(TestRandomPairs);
+	return TEST_SUMMARY();
+}
