@@ -1,0 +1,130 @@
+/* collide tool: every pairwise query of a scene. Library shapes go through the generic
+ * dispatchers (cdNOverlap for the yes/no answer, cdNDistance for the closest points); points are
+ * not library shapes, so the tool asks cdNPointInShape and cdNClosestPointOnShape for them. */
+#include "scene.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static void store2(double out[3], cd2Vec v)
+{
+	out[0] = (double)v.x;
+	out[1] = (double)v.y;
+	out[2] = 0.0;
+}
+
+static void store3(double out[3], cd3Vec v)
+{
+	out[0] = (double)v.x;
+	out[1] = (double)v.y;
+	out[2] = (double)v.z;
+}
+
+static double distanceBetween(const double a[3], const double b[3])
+{
+	double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+	return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+static void queryPair2(const ToolShape* a, const ToolShape* b, ToolPairResult* pair)
+{
+	if (a->isPoint && b->isPoint)
+	{
+		pair->overlap = cd2VecEqual(a->point2, b->point2);
+		store2(pair->pointA, a->point2);
+		store2(pair->pointB, b->point2);
+	}
+	else if (a->isPoint || b->isPoint)
+	{
+		const ToolShape* point = a->isPoint ? a : b;
+		const ToolShape* shape = a->isPoint ? b : a;
+		cd2Vec closest = cd2ClosestPointOnShape(&shape->shape2, point->point2);
+		pair->overlap = cd2PointInShape(&shape->shape2, point->point2);
+		store2(a->isPoint ? pair->pointA : pair->pointB, point->point2);
+		store2(a->isPoint ? pair->pointB : pair->pointA, closest);
+	}
+	else
+	{
+		pair->overlap = cd2Overlap(&a->shape2, &b->shape2);
+		cd2ClosestPoints closest = cd2Distance(&a->shape2, &b->shape2);
+		store2(pair->pointA, closest.pointA);
+		store2(pair->pointB, closest.pointB);
+		pair->distance = (double)closest.distance;
+		return;
+	}
+	pair->distance = distanceBetween(pair->pointA, pair->pointB);
+}
+
+static void queryPair3(const ToolShape* a, const ToolShape* b, ToolPairResult* pair)
+{
+	if (a->isPoint && b->isPoint)
+	{
+		pair->overlap = cd3VecEqual(a->point3, b->point3);
+		store3(pair->pointA, a->point3);
+		store3(pair->pointB, b->point3);
+	}
+	else if (a->isPoint || b->isPoint)
+	{
+		const ToolShape* point = a->isPoint ? a : b;
+		const ToolShape* shape = a->isPoint ? b : a;
+		cd3Vec closest = cd3ClosestPointOnShape(&shape->shape3, point->point3);
+		pair->overlap = cd3PointInShape(&shape->shape3, point->point3);
+		store3(a->isPoint ? pair->pointA : pair->pointB, point->point3);
+		store3(a->isPoint ? pair->pointB : pair->pointA, closest);
+	}
+	else
+	{
+		pair->overlap = cd3Overlap(&a->shape3, &b->shape3);
+		cd3ClosestPoints closest = cd3Distance(&a->shape3, &b->shape3);
+		store3(pair->pointA, closest.pointA);
+		store3(pair->pointB, closest.pointB);
+		pair->distance = (double)closest.distance;
+		return;
+	}
+	pair->distance = distanceBetween(pair->pointA, pair->pointB);
+}
+
+bool toolQueryScene(const ToolScene* scene, ToolSceneResult* result)
+{
+	result->scene = scene;
+	result->pairs = NULL;
+	result->pairCount = 0;
+	result->overlapCount = 0;
+	int n = scene->shapeCount;
+	int pairCount = n * (n - 1) / 2;
+	if (pairCount == 0)
+	{
+		return true;
+	}
+	result->pairs = calloc((size_t)pairCount, sizeof(ToolPairResult));
+	if (result->pairs == NULL)
+	{
+		return false;
+	}
+	for (int i = 0; i < n; ++i)
+	{
+		for (int j = i + 1; j < n; ++j)
+		{
+			ToolPairResult* pair = &result->pairs[result->pairCount++];
+			pair->a = i;
+			pair->b = j;
+			if (scene->dimension == 2)
+			{
+				queryPair2(&scene->shapes[i], &scene->shapes[j], pair);
+			}
+			else
+			{
+				queryPair3(&scene->shapes[i], &scene->shapes[j], pair);
+			}
+			result->overlapCount += pair->overlap ? 1 : 0;
+		}
+	}
+	return true;
+}
+
+void toolFreeSceneResult(ToolSceneResult* result)
+{
+	free(result->pairs);
+	result->pairs = NULL;
+	result->pairCount = 0;
+}

@@ -1,0 +1,170 @@
+/* collide tool: the text report. One table row per pair with fixed-width columns, then one
+ * summary line per scene. */
+#include "scene.h"
+
+#include <math.h>
+#include <string.h>
+
+const char* toolFormatNumber(double value, char* buffer, size_t size)
+{
+	double magnitude = fabs(value);
+	if (magnitude >= 1e6 || (magnitude < 1e-3 && magnitude > 0.0))
+	{
+		snprintf(buffer, size, "%.4g", value);
+		return buffer;
+	}
+	snprintf(buffer, size, "%.4f", value);
+	/* Trim trailing zeros (and the point) so that 2.5000 reads 2.5 and 3.0000 reads 3. */
+	char* point = strchr(buffer, '.');
+	if (point != NULL)
+	{
+		char* end = buffer + strlen(buffer) - 1;
+		while (end > point && *end == '0')
+		{
+			*end-- = 0;
+		}
+		if (end == point)
+		{
+			*end = 0;
+		}
+	}
+	if (strcmp(buffer, "-0") == 0)
+	{
+		snprintf(buffer, size, "0");
+	}
+	return buffer;
+}
+
+/* Coordinates a million times smaller than the point's largest one are round-off of the float
+ * queries (4.5e-08 next to 1.5); they print as 0 so that the table stays readable. */
+static void formatPoint(const double p[3], int dimension, char* buffer, size_t size)
+{
+	double largest = fmax(fabs(p[0]), fmax(fabs(p[1]), dimension == 3 ? fabs(p[2]) : 0.0));
+	double shown[3];
+	for (int i = 0; i < 3; ++i)
+	{
+		shown[i] = fabs(p[i]) < 1e-6 * largest ? 0.0 : p[i];
+	}
+	char x[32], y[32], z[32];
+	toolFormatNumber(shown[0], x, sizeof x);
+	toolFormatNumber(shown[1], y, sizeof y);
+	if (dimension == 2)
+	{
+		snprintf(buffer, size, "(%s, %s)", x, y);
+	}
+	else
+	{
+		snprintf(buffer, size, "(%s, %s, %s)", x, y, toolFormatNumber(shown[2], z, sizeof z));
+	}
+}
+
+/* Width on a terminal: one column per UTF-8 code point (names are checked to be valid UTF-8). */
+static int displayWidth(const char* s)
+{
+	int width = 0;
+	for (const unsigned char* p = (const unsigned char*)s; *p != 0; ++p)
+	{
+		width += (*p & 0xc0) != 0x80 ? 1 : 0;
+	}
+	return width;
+}
+
+static void printCell(FILE* out, const char* text, int width, bool last)
+{
+	fputs(text, out);
+	if (!last)
+	{
+		for (int i = displayWidth(text); i < width + 2; ++i)
+		{
+			fputc(' ', out);
+		}
+	}
+}
+
+enum
+{
+	COLUMN_SCENE,
+	COLUMN_A,
+	COLUMN_B,
+	COLUMN_OVERLAP,
+	COLUMN_DISTANCE,
+	COLUMN_POINT_A,
+	COLUMN_POINT_B,
+	COLUMN_COUNT
+};
+
+typedef struct Row
+{
+	char cells[COLUMN_COUNT][96];
+} Row;
+
+static void fillRow(const ToolSceneResult* result, const ToolPairResult* pair, Row* row)
+{
+	const ToolScene* scene = result->scene;
+	snprintf(row->cells[COLUMN_SCENE], sizeof row->cells[0], "%s", scene->name);
+	snprintf(row->cells[COLUMN_A], sizeof row->cells[0], "%s", scene->shapes[pair->a].name);
+	snprintf(row->cells[COLUMN_B], sizeof row->cells[0], "%s", scene->shapes[pair->b].name);
+	snprintf(row->cells[COLUMN_OVERLAP], sizeof row->cells[0], "%s", pair->overlap ? "yes" : "no");
+	toolFormatNumber(pair->distance, row->cells[COLUMN_DISTANCE], sizeof row->cells[0]);
+	formatPoint(pair->pointA, scene->dimension, row->cells[COLUMN_POINT_A], sizeof row->cells[0]);
+	formatPoint(pair->pointB, scene->dimension, row->cells[COLUMN_POINT_B], sizeof row->cells[0]);
+}
+
+static void printRow(FILE* out, const Row* row, const int* widths)
+{
+	for (int c = 0; c < COLUMN_COUNT; ++c)
+	{
+		printCell(out, row->cells[c], widths[c], c == COLUMN_COUNT - 1);
+	}
+	fputc('\n', out);
+}
+
+void toolPrintReport(FILE* out, const ToolSceneResult* results, int sceneCount)
+{
+	Row header = {{"scene", "A", "B", "overlap", "distance", "closest point on A", "closest point on B"}};
+	int widths[COLUMN_COUNT];
+	for (int c = 0; c < COLUMN_COUNT; ++c)
+	{
+		widths[c] = displayWidth(header.cells[c]);
+	}
+	/* Two passes (measure, then print) so that every column lines up across all scenes. */
+	for (int s = 0; s < sceneCount; ++s)
+	{
+		for (int p = 0; p < results[s].pairCount; ++p)
+		{
+			Row row;
+			fillRow(&results[s], &results[s].pairs[p], &row);
+			for (int c = 0; c < COLUMN_COUNT; ++c)
+			{
+				int width = displayWidth(row.cells[c]);
+				widths[c] = width > widths[c] ? width : widths[c];
+			}
+		}
+	}
+	printRow(out, &header, widths);
+	Row rule;
+	for (int c = 0; c < COLUMN_COUNT; ++c)
+	{
+		int width = widths[c] < (int)sizeof rule.cells[c] - 1 ? widths[c] : (int)sizeof rule.cells[c] - 1;
+		memset(rule.cells[c], '-', (size_t)width);
+		rule.cells[c][width] = 0;
+	}
+	printRow(out, &rule, widths);
+	for (int s = 0; s < sceneCount; ++s)
+	{
+		for (int p = 0; p < results[s].pairCount; ++p)
+		{
+			Row row;
+			fillRow(&results[s], &results[s].pairs[p], &row);
+			printRow(out, &row, widths);
+		}
+	}
+	fputc('\n', out);
+	for (int s = 0; s < sceneCount; ++s)
+	{
+		const ToolScene* scene = results[s].scene;
+		fprintf(out, "%s (%dD): %d shape%s, %d pair%s, %d overlapping\n", scene->name, scene->dimension,
+				scene->shapeCount, scene->shapeCount == 1 ? "" : "s", results[s].pairCount,
+				results[s].pairCount == 1 ? "" : "s", results[s].overlapCount);
+	}
+}
