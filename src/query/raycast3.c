@@ -271,8 +271,12 @@ bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
 		return false;
 	}
 
-	cd3Vec faceNormal = cd3Cross(cd3Sub(t.b, t.a), cd3Sub(t.c, t.a));
-	cd3Vec unitNormal = cd3Normalize(faceNormal);
+	/* The face normal from unit edges: their cross product has length sin(angle) whatever the
+	 * triangle's size, so neither overflow (1e9 coordinates in float) nor a tiny triangle trips the
+	 * zero-length test of cd3Normalize, which then means a zero area. */
+	cd3Vec edge1 = cd3Normalize(cd3Sub(t.b, t.a));
+	cd3Vec edge2 = cd3Normalize(cd3Sub(t.c, t.a));
+	cd3Vec unitNormal = cd3Normalize(cd3Cross(edge1, edge2));
 	if (cd3LengthSquared(unitNormal) == CD_R(0.0))
 	{
 		return false; /* zero area: a segment or a point, which a ray meets with probability zero */
@@ -358,18 +362,19 @@ static bool cd3RaycastSegment(cd3Segment g, cd3Ray ray, cd3RayHit* hit)
 	cd3Vec start = cd3Sub(g.p1, ray.origin);
 	cdReal cosine = cd3Dot(direction, unitSegment);
 	cdReal startAlongRay = cd3Dot(direction, start);
-	cdReal startAlongSegment = cd3Dot(unitSegment, start);
 
 	cdReal candidates[3];
 	int candidateCount = 0;
 	candidates[candidateCount++] = CD_R(0.0);
 	cdReal endAlongRay = startAlongRay + segmentLength * cosine;
 	candidates[candidateCount++] = cdClamp(cdMin(startAlongRay, endAlongRay), CD_R(0.0), length);
-	cdReal sineSquared = cd3LengthSquared(cd3Cross(direction, unitSegment));
+	cd3Vec across = cd3Cross(direction, unitSegment);
+	cdReal sineSquared = cd3LengthSquared(across);
 	if (sineSquared > CD_R(0.0))
 	{
-		/* Closest points of the two lines: s - w cos = startAlongRay, s cos - w = startAlongSegment. */
-		cdReal s = (startAlongRay - cosine * startAlongSegment) / sineSquared;
+		/* Closest approach of the two lines, dot(start x a, u x a) / |u x a|^2: unlike the textbook
+		 * (dot(u, start) - cos dot(a, start)) / sin^2 it does not cancel for nearly parallel lines. */
+		cdReal s = cd3Dot(cd3Cross(start, unitSegment), across) / sineSquared;
 		candidates[candidateCount++] = cdClamp(s, CD_R(0.0), length);
 	}
 
