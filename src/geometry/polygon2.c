@@ -156,9 +156,10 @@ cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out)
 	}
 	--hullCount;
 
-	/* Drop nearly collinear vertices, the flattest first, until every vertex stands farther than the
-	 * tolerance outside the line through its neighbours. Removing a vertex of a convex polygon keeps
-	 * it convex, and the dropped point stays within the tolerance of the result. */
+	/* Drop nearly collinear vertices, the flattest first, while some vertex stands within the
+	 * tolerance of the line through its neighbours. Removing a vertex of a convex polygon keeps it
+	 * convex; a removal is skipped if it would leave any input point farther than the tolerance
+	 * outside the new edge, so drops never accumulate beyond the tolerance. */
 	while (hullCount >= 3)
 	{
 		int flattest = -1;
@@ -169,7 +170,16 @@ cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out)
 			cd2Vec next = hull[i + 1 < hullCount ? i + 1 : 0];
 			double base = DistanceDouble(previous, next);
 			double height = base > 0.0 ? Orient(previous, next, hull[i]) / -base : 0.0;
-			if (height <= flattestHeight)
+			if (height > flattestHeight)
+			{
+				continue;
+			}
+			bool keepsPointsInside = true;
+			for (int j = 0; j < uniqueCount && keepsPointsInside && base > 0.0; ++j)
+			{
+				keepsPointsInside = Orient(previous, next, unique[j]) / -base <= tolerance;
+			}
+			if (keepsPointsInside)
 			{
 				flattest = i;
 				flattestHeight = height;

@@ -1,0 +1,389 @@
+/* Tests of the convex polygon builders cd2MakePolygon and cd2MakeBoxPolygon: exact cases, errors
+ * (leaving the output untouched), random clouds checked against the rules every polygon keeps
+ * (convex, counter-clockwise, unit outward normals, area centroid, vertices taken from the input,
+ * every input point inside within the weld tolerance), and huge and small coordinates. */
+#include "collide/geometry2.h"
+#include "test.h"
+
+#include <string.h>
+
+static cd2Vec V(double x, double y)
+{
+	return cd2MakeVec((cdReal)x, (cdReal)y);
+}
+
+/* A polygon filled with a byte pattern, to check that failing builders leave it untouched. */
+static cd2Polygon Sentinel(void)
+{
+	cd2Polygon polygon;
+	memset(&polygon, 0x5A, sizeof polygon);
+	return polygon;
+}
+
+static bool IsSentinel(const cd2Polygon* polygon)
+{
+	cd2Polygon sentinel = Sentinel();
+	return memcmp(polygon, &sentinel, sizeof sentinel) == 0;
+}
+
+static double MaxAbsCoordinate(const cd2Vec* points, int count)
+{
+	double m = 0.0;
+	for (int i = 0; i < count; ++i)
+	{
+		m = fmax(m, fmax(fabs((double)points[i].x), fabs((double)points[i].y)));
+	}
+	return m;
+}
+
+/* Checks every rule of a built polygon independently of the validator, in double. `points` are the
+ * builder's input; `tolerance` is the allowed distance of an input point outside the polygon. */
+static void CheckPolygon(const cd2Polygon* polygon, const cd2Vec* points, int count, double tolerance,
+						 const char* label)
+{
+	int n = polygon->count;
+	TEST_CHECKF(n >= 3 && n <= CD2_MAX_POLYGON_VERTICES, "%s: count %d", label, n);
+	if (n < 3 || n > CD2_MAX_POLYGON_VERTICES)
+	{
+		return;
+	}
+	TEST_CHECKF(cd2IsValidPolygon(polygon), "%s: validator rejects the result", label);
+	double scale = fmax(1.0, MaxAbsCoordinate(polygon->vertices, n));
+	double twiceArea = 0.0, cx = 0.0, cy = 0.0;
+	for (int i = 0; i < n; ++i)
+	{
+		cd2Vec a = polygon->vertices[i], b = polygon->vertices[(i + 1) % n],
+			   c = polygon->vertices[(i + 2) % n];
+		/* every vertex is one of the input points */
+		bool found = false;
+		for (int j = 0; j < count; ++j)
+		{
+			found = found || cd2VecEqual(a, points[j]);
+		}
+		TEST_CHECKF(found, "%s: vertex %d (%g, %g) is not an input point", label, i, (double)a.x,
+					(double)a.y);
+		/* strictly convex, counter-clockwise turn at every vertex */
+		double ex = (double)b.x - (double)a.x, ey = (double)b.y - (double)a.y;
+		double fx = (double)c.x - (double)b.x, fy = (double)c.y - (double)b.y;
+		TEST_CHECKF(ex * fy - ey * fx > 0.0, "%s: no left turn at vertex %d", label, (i + 1) % n);
+		/* unit outward normal perpendicular to its edge */
+		double length = hypot(ex, ey);
+		double nx = (double)polygon->normals[i].x, ny = (double)polygon->normals[i].y;
+		TEST_CHECKF(fabs(hypot(nx, ny) - 1.0) < 1e-5, "%s: normal %d not unit", label, i);
+		TEST_CHECKF(fabs(nx - ey / length) < 1e-5 && fabs(ny + ex / length) < 1e-5,
+					"%s: normal %d (%g, %g) wrong", label, i, nx, ny);
+		/* area centroid by the shoelace formula on absolute coordinates */
+		double cross = (double)a.x * (double)b.y - (double)b.x * (double)a.y;
+		twiceArea += cross;
+		cx += ((double)a.x + (double)b.x) * cross;
+		cy += ((double)a.y + (double)b.y) * cross;
+		/* every input point lies inside, or outside by at most the tolerance */
+		for (int j = 0; j < count; ++j)
+		{
+			double outside =
+				nx * ((double)points[j].x - (double)a.x) + ny * ((double)points[j].y - (double)a.y);
+			TEST_CHECKF(outside <= tolerance + 1e-6 * scale, "%s: input %d is %g outside edge %d", label, j,
+						outside, i);
+		}
+	}
+	TEST_CHECKF(twiceArea > 0.0, "%s: area %g", label, 0.5 * twiceArea);
+	if (twiceArea > 0.0)
+	{
+		cx /= 3.0 * twiceArea;
+		cy /= 3.0 * twiceArea;
+		double centroidTolerance = 1e-5 * scale;
+		TEST_CHECKF(fabs(cx - (double)polygon->centroid.x) <= centroidTolerance &&
+						fabs(cy - (double)polygon->centroid.y) <= centroidTolerance,
+					"%s: centroid (%g, %g), expected (%g, %g)", label, (double)polygon->centroid.x,
+					(double)polygon->centroid.y, cx, cy);
+	}
+}
+
+static void TestSquare(void)
+{
+	/* The same square given in several orders, clockwise included. */
+	cd2Vec orders[3][4] = {{V(0, 0), V(1, 0), V(1, 1), V(0, 1)},
+						   {V(0, 1), V(1, 1), V(1, 0), V(0, 0)},
+						   {V(1, 1), V(0, 0), V(0, 1), V(1, 0)}};
+	for (int k = 0; k < 3; ++k)
+	{
+		cd2Polygon polygon = Sentinel();
+		TEST_CHECK(cd2MakePolygon(orders[k], 4, &polygon) == CD_OK);
+		TEST_CHECK(polygon.count == 4);
+		CheckPolygon(&polygon, orders[k], 4, 0.0, "square");
+		TEST_CHECK(polygon.centroid.x == (cdReal)0.5 && polygon.centroid.y == (cdReal)0.5);
+		/* the normals of a unit square are the axes */
+		int axisNormals = 0;
+		for (int i = 0; i < polygon.count; ++i)
+		{
+			cd2Vec nrm = polygon.normals[i];
+			axisNormals +=
+				(fabs((double)nrm.x) == 1.0 && nrm.y == 0) || (fabs((double)nrm.y) == 1.0 && nrm.x == 0);
+		}
+		TEST_CHECK(axisNormals == 4);
+	}
+
+	cd2Vec triangle[3] = {V(0, 0), V(0, 3), V(3, 0)}; /* clockwise input */
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakePolygon(triangle, 3, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 3);
+	CheckPolygon(&polygon, triangle, 3, 0.0, "triangle");
+	TEST_CHECK_NEAR(polygon.centroid.x, 1.0, 1e-6);
+	TEST_CHECK_NEAR(polygon.centroid.y, 1.0, 1e-6);
+}
+
+static void TestWeldAndCollinear(void)
+{
+	double weld = (double)CD2_POLYGON_WELD_TOLERANCE;
+	TEST_CHECK(weld > 0.0);
+	TEST_CHECK((double)cd2GetPolygonWeldTolerance((cdReal)0) == weld);
+	TEST_CHECK((double)cd2GetPolygonWeldTolerance((cdReal)1e30f) > 1e20);
+
+	/* exact and near duplicates (well within the weld tolerance) */
+	cd2Vec duplicates[8] = {
+		V(0, 0),		 V(2, 0), V(2, 2), V(0, 2), V(0, 0), V(2 + 0.2 * weld, 0), V(2, 2 - 0.3 * weld),
+		V(0.1 * weld, 2)};
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakePolygon(duplicates, 8, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 4);
+	CheckPolygon(&polygon, duplicates, 8, weld, "duplicates");
+
+	/* mid-edge points and a point barely outside an edge are dropped */
+	cd2Vec collinear[7] = {V(0, 0), V(1, 0), V(2, 0), V(2, 1), V(2, 2), V(0, 2), V(-0.3 * weld, 1)};
+	TEST_CHECK(cd2MakePolygon(collinear, 7, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 4);
+	CheckPolygon(&polygon, collinear, 7, weld, "collinear");
+
+	/* a point clearly outside an edge is kept */
+	cd2Vec pentagon[5] = {V(0, 0), V(2, 0), V(2, 2), V(0, 2), V(-10 * weld, 1)};
+	TEST_CHECK(cd2MakePolygon(pentagon, 5, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 5);
+	CheckPolygon(&polygon, pentagon, 5, 0.0, "pentagon");
+
+	/* interior points are ignored; the 8-point octagon is kept whole */
+	cd2Vec octagon[8];
+	for (int i = 0; i < 8; ++i)
+	{
+		double angle = i * 3.14159265358979323846 / 4;
+		octagon[i] = V(cos(angle), sin(angle));
+	}
+	TEST_CHECK(cd2MakePolygon(octagon, 8, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 8);
+	CheckPolygon(&polygon, octagon, 8, 0.0, "octagon");
+	cd2Vec withInterior[8] = {V(0, 0), V(4, 0), V(0, 4), V(1, 1), V(0.5, 0.5), V(1, 2), V(2, 1), V(0.1, 0.2)};
+	TEST_CHECK(cd2MakePolygon(withInterior, 8, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 3);
+	CheckPolygon(&polygon, withInterior, 8, 0.0, "interior points");
+}
+
+static void TestErrors(void)
+{
+	cd2Vec square[4] = {V(0, 0), V(1, 0), V(1, 1), V(0, 1)};
+	cd2Polygon polygon = Sentinel();
+
+	TEST_CHECK(cd2MakePolygon(NULL, 4, &polygon) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd2MakePolygon(square, 4, NULL) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd2MakePolygon(square, -1, &polygon) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd2MakePolygon(square, 0, &polygon) == CD_ERROR_DEGENERATE);
+	TEST_CHECK(cd2MakePolygon(square, 1, &polygon) == CD_ERROR_DEGENERATE);
+	TEST_CHECK(cd2MakePolygon(square, 2, &polygon) == CD_ERROR_DEGENERATE);
+
+	cd2Vec line[5] = {V(0, 0), V(1, 1), V(2, 2), V(-3, -3), V(0.5, 0.5)};
+	TEST_CHECK(cd2MakePolygon(line, 5, &polygon) == CD_ERROR_DEGENERATE);
+	cd2Vec nearlyLine[3] = {V(0, 0), V(4, 0), V(2, 0.1 * (double)CD2_POLYGON_WELD_TOLERANCE)};
+	TEST_CHECK(cd2MakePolygon(nearlyLine, 3, &polygon) == CD_ERROR_DEGENERATE);
+	cd2Vec samePoint[4] = {V(1, 1), V(1, 1), V(1, 1), V(1, 1)};
+	TEST_CHECK(cd2MakePolygon(samePoint, 4, &polygon) == CD_ERROR_DEGENERATE);
+	cd2Vec twoPoints[4] = {V(1, 1), V(3, 1), V(1, 1), V(3, 1)};
+	TEST_CHECK(cd2MakePolygon(twoPoints, 4, &polygon) == CD_ERROR_DEGENERATE);
+	/* smaller than the weld tolerance */
+	double tiny = 0.2 * (double)CD2_POLYGON_WELD_TOLERANCE;
+	cd2Vec tinyTriangle[3] = {V(0, 0), V(tiny, 0), V(0, tiny)};
+	TEST_CHECK(cd2MakePolygon(tinyTriangle, 3, &polygon) == CD_ERROR_DEGENERATE);
+
+	cd2Vec bad[4] = {V(0, 0), V(1, 0), V(1, 1), V(0, 1)};
+	bad[2].x = (cdReal)NAN;
+	TEST_CHECK(cd2MakePolygon(bad, 4, &polygon) == CD_ERROR_NOT_FINITE);
+	bad[2].x = (cdReal)INFINITY;
+	TEST_CHECK(cd2MakePolygon(bad, 4, &polygon) == CD_ERROR_NOT_FINITE);
+	bad[2].x = (cdReal)1;
+	bad[0].y = -(cdReal)INFINITY;
+	TEST_CHECK(cd2MakePolygon(bad, 4, &polygon) == CD_ERROR_NOT_FINITE);
+	bad[0].y = (cdReal)NAN;
+	TEST_CHECK(cd2MakePolygon(bad, 1, &polygon) == CD_ERROR_NOT_FINITE);
+
+	cd2Vec many[CD2_MAX_POLYGON_VERTICES + 1];
+	for (int i = 0; i < CD2_MAX_POLYGON_VERTICES + 1; ++i)
+	{
+		double angle = i * 2.0 * 3.14159265358979323846 / (CD2_MAX_POLYGON_VERTICES + 1);
+		many[i] = V(cos(angle), sin(angle));
+	}
+	TEST_CHECK(cd2MakePolygon(many, CD2_MAX_POLYGON_VERTICES + 1, &polygon) == CD_ERROR_TOO_MANY_POINTS);
+	TEST_CHECK(IsSentinel(&polygon));
+
+	/* box polygon errors */
+	cd2Box box = {V(0, 0), V(1, 0), CD2_ROT_IDENTITY};
+	TEST_CHECK(cd2MakeBoxPolygon(box, &polygon) == CD_ERROR_DEGENERATE);
+	box.halfExtents = V(0, 0);
+	TEST_CHECK(cd2MakeBoxPolygon(box, &polygon) == CD_ERROR_DEGENERATE);
+	box.halfExtents = V(1, -1);
+	TEST_CHECK(cd2MakeBoxPolygon(box, &polygon) == CD_ERROR_NEGATIVE_SIZE);
+	box.halfExtents = V(1, 1);
+	box.center.x = (cdReal)NAN;
+	TEST_CHECK(cd2MakeBoxPolygon(box, &polygon) == CD_ERROR_NOT_FINITE);
+	box.center.x = 0;
+	box.rotation.c = (cdReal)2;
+	TEST_CHECK(cd2MakeBoxPolygon(box, &polygon) == CD_ERROR_NOT_NORMALIZED);
+	box.rotation = CD2_ROT_IDENTITY;
+	TEST_CHECK(cd2MakeBoxPolygon(box, NULL) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(IsSentinel(&polygon));
+}
+
+static void TestBoxPolygon(void)
+{
+	TestRng rng = TestRngMake(0xB0C5);
+	for (int n = 0; n < 500; ++n)
+	{
+		double angle = TestRngRange(&rng, -4.0, 4.0);
+		cd2Box box = {V(TestRngRange(&rng, -10, 10), TestRngRange(&rng, -10, 10)),
+					  V(TestRngRange(&rng, 0.01, 3), TestRngRange(&rng, 0.01, 3)), cd2MakeRot((cdReal)angle)};
+		cd2Polygon polygon;
+		TEST_CHECK(cd2MakeBoxPolygon(box, &polygon) == CD_OK);
+		TEST_CHECK(polygon.count == 4);
+		CheckPolygon(&polygon, polygon.vertices, polygon.count, 0.0, "box");
+		TEST_CHECK_NEAR(polygon.centroid.x, box.center.x, 1e-5);
+		TEST_CHECK_NEAR(polygon.centroid.y, box.center.y, 1e-5);
+		/* every vertex is a corner of the box: local coordinates (+-hx, +-hy) */
+		for (int i = 0; i < 4; ++i)
+		{
+			cd2Vec local = cd2InvRotateVector(box.rotation, cd2Sub(polygon.vertices[i], box.center));
+			TEST_CHECK_NEAR(fabs((double)local.x), box.halfExtents.x, 1e-5);
+			TEST_CHECK_NEAR(fabs((double)local.y), box.halfExtents.y, 1e-5);
+		}
+		/* the first normal is the box's -y axis */
+		cd2Vec down = cd2RotateVector(box.rotation, V(0, -1));
+		TEST_CHECK_NEAR(polygon.normals[0].x, down.x, 1e-5);
+		TEST_CHECK_NEAR(polygon.normals[0].y, down.y, 1e-5);
+	}
+	/* a box far smaller than the weld tolerance is still a valid polygon */
+	cd2Box small = {V(1, 1), V(1e-5, 2e-5), cd2MakeRot((cdReal)0.3)};
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakeBoxPolygon(small, &polygon) == CD_OK);
+	TEST_CHECK(cd2IsValidPolygon(&polygon));
+}
+
+/* Random clouds: on success every rule holds; on failure the cloud really is degenerate, that is
+ * every point lies within two weld tolerances of the line through its two farthest points. */
+static void CheckRandomClouds(uint64_t seed, double offset, double minExtent, double maxExtent, int clouds,
+							  const char* label)
+{
+	TestRng rng = TestRngMake(seed);
+	int built = 0;
+	for (int n = 0; n < clouds; ++n)
+	{
+		int count = 3 + TestRngInt(&rng, CD2_MAX_POLYGON_VERTICES - 2);
+		double extent = exp(TestRngRange(&rng, log(minExtent), log(maxExtent)));
+		double squash =
+			TestRngInt(&rng, 4) == 0 ? TestRngRange(&rng, 0.0, 1e-2) : 1.0; /* nearly flat clouds */
+		double angle = TestRngRange(&rng, -3.2, 3.2);
+		cd2Vec points[CD2_MAX_POLYGON_VERTICES];
+		for (int i = 0; i < count; ++i)
+		{
+			double u = TestRngRange(&rng, -extent, extent), v = squash * TestRngRange(&rng, -extent, extent);
+			if (TestRngInt(&rng, 6) == 0 && i > 0)
+			{
+				points[i] = points[TestRngInt(&rng, i)]; /* exact duplicates */
+				continue;
+			}
+			points[i] =
+				V(offset + cos(angle) * u - sin(angle) * v, -offset + sin(angle) * u + cos(angle) * v);
+		}
+		double tolerance = (double)cd2GetPolygonWeldTolerance((cdReal)MaxAbsCoordinate(points, count));
+		cd2Polygon polygon = Sentinel();
+		cdResult result = cd2MakePolygon(points, count, &polygon);
+		if (result == CD_OK)
+		{
+			++built;
+			CheckPolygon(&polygon, points, count, tolerance, label);
+			continue;
+		}
+		TEST_CHECKF(result == CD_ERROR_DEGENERATE, "%s: cloud %d: %s", label, n, cdResultString(result));
+		TEST_CHECKF(IsSentinel(&polygon), "%s: failed build wrote its output", label);
+		int far1 = 0, far2 = 0;
+		double farthest = -1.0;
+		for (int i = 0; i < count; ++i)
+		{
+			for (int j = i + 1; j < count; ++j)
+			{
+				double d = hypot((double)points[i].x - (double)points[j].x,
+								 (double)points[i].y - (double)points[j].y);
+				if (d > farthest)
+				{
+					farthest = d, far1 = i, far2 = j;
+				}
+			}
+		}
+		double dx = (double)points[far2].x - (double)points[far1].x,
+			   dy = (double)points[far2].y - (double)points[far1].y;
+		for (int i = 0; i < count && farthest > 0.0; ++i)
+		{
+			double height = fabs(dx * ((double)points[i].y - (double)points[far1].y) -
+								 dy * ((double)points[i].x - (double)points[far1].x)) /
+							farthest;
+			TEST_CHECKF(height <= 2.0 * tolerance, "%s: cloud %d rejected though point %d is %g off its line",
+						label, n, i, height);
+		}
+	}
+	TEST_CHECKF(built > clouds / 2, "%s: only %d of %d clouds built", label, built, clouds);
+}
+
+static void TestRandomClouds(void)
+{
+	CheckRandomClouds(0xC10D1, 0.0, 0.05, 50.0, 3000, "ordinary");
+	CheckRandomClouds(0xC10D2, 1e6, 50.0, 1e4, 1000, "huge 1e6");
+#if CD_DOUBLE
+	CheckRandomClouds(0xC10D3, 1e30, 1e28, 1e29, 500, "huge 1e30");
+#else
+	CheckRandomClouds(0xC10D3, 1e9, 1e7, 1e8, 500, "huge 1e9");
+#endif
+}
+
+static void TestHugeAndSmall(void)
+{
+	/* a square of side 100 at 1e6: welding scales with the coordinates, the square survives */
+	cd2Vec far[4] = {V(1e6, 1e6), V(1e6 + 100, 1e6), V(1e6 + 100, 1e6 + 100), V(1e6, 1e6 + 100)};
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakePolygon(far, 4, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 4);
+	CheckPolygon(&polygon, far, 4, 0.0, "far square");
+	TEST_CHECK_NEAR(polygon.centroid.x, 1e6 + 50, 0.1);
+
+	/* at 1e6 a point 0.01 off an edge is within round-off of it and is dropped */
+	cd2Vec farCollinear[5] = {V(1e6, 1e6), V(1e6 + 100, 1e6), V(1e6 + 100, 1e6 + 100), V(1e6, 1e6 + 100),
+							  V(1e6 + 50, 1e6 - 0.01)};
+	TEST_CHECK(cd2MakePolygon(farCollinear, 5, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 4);
+
+	/* small shapes: with kilometre units (1e-3 length units per metre) the tolerances shrink a
+	 * thousandfold, and a square of side 1e-3 builds */
+	cd2Vec small[4] = {V(0, 0), V(1e-3, 0), V(1e-3, 1e-3), V(0, 1e-3)};
+	TEST_CHECK(cd2MakePolygon(small, 4, &polygon) == CD_ERROR_DEGENERATE);
+	cdSetLengthUnitsPerMeter((cdReal)1e-3);
+	cd2Polygon smallPolygon = Sentinel();
+	TEST_CHECK(cd2MakePolygon(small, 4, &smallPolygon) == CD_OK);
+	TEST_CHECK(smallPolygon.count == 4);
+	CheckPolygon(&smallPolygon, small, 4, 0.0, "small square");
+	TEST_CHECK_NEAR(smallPolygon.centroid.x, 5e-4, 1e-9);
+	cdSetLengthUnitsPerMeter((cdReal)1);
+}
+
+int main(void)
+{
+	TEST_RUN(TestSquare);
+	TEST_RUN(TestWeldAndCollinear);
+	TEST_RUN(TestErrors);
+	TEST_RUN(TestBoxPolygon);
+	TEST_RUN(TestRandomClouds);
+	TEST_RUN(TestHugeAndSmall);
+	return TEST_SUMMARY();
+}
