@@ -59,3 +59,31 @@
 #else
 #error "define CD_BROAD_DIM to 2 or 3 before including broad_dim.h"
 #endif
+
+#undef bdAdd
+#undef bdSub
+#undef bdScale
+#undef bdVecMin
+#undef bdVecMax
+#undef bdClampVec
+#undef bdIsValidVec
+#undef bdVecZero
+#if CD_BROAD_DIM == 2
+#define bdAdd cd2Add
+#define bdSub cd2Sub
+#define bdScale cd2Scale
+#define bdVecMin cd2Min
+#define bdVecMax cd2Max
+#define bdClampVec cd2Clamp
+#define bdIsValidVec cd2IsValidVec
+#define bdVecZero CD2_VEC_ZERO
+#else
+#define bdAdd cd3Add
+#define bdSub cd3Sub
+#define bdScale cd3Scale
+#define bdVecMin cd3Min
+#define bdVecMax cd3Max
+#define bdClampVec cd3Clamp
+#define bdIsValidVec cd3IsValidVec
+#define bdVecZero CD3_VEC_ZERO
+#endif

@@ -27,6 +27,20 @@ typedef bool cdBroadIdFcn(int proxyId, void* context);
  * maxFraction (or more) goes on unchanged. The backend keeps the clip and prunes with it. */
 typedef cdReal cdBroadRayIdFcn(int proxyId, cdReal maxFraction, void* context);
 
+/* Applies a ray callback's answer to the clip; true when the ray cast must stop. */
+static inline bool cdBroadApplyRayAnswer(cdReal answer, cdReal* maxFraction)
+{
+	if (answer == CD_R(0.0))
+	{
+		return true;
+	}
+	if (answer > CD_R(0.0) && answer < *maxFraction)
+	{
+		*maxFraction = answer;
+	}
+	return false;
+}
+
 /* Overlapping pair (either order; each unordered pair exactly once per call). */
 typedef void cdBroadPairSinkFcn(int proxyA, int proxyB, void* context);
 
@@ -40,12 +54,12 @@ typedef void cdBroadPairSinkFcn(int proxyA, int proxyB, void* context);
 #define CD_BROAD_DECLARE_PROXY_TABLE(P, AABB)                                                                \
 	typedef struct P##BroadProxyTable                                                                        \
 	{                                                                                                        \
-		AABB* fatBoxes;		 /* current fat box of every live proxy */                                         \
-		uint64_t* userData;	 /* user data of every live proxy */                                               \
-		int* backendSlots;	 /* one int per live proxy that the backend may use as it likes */              \
-		int* moveIndex;		 /* frontend: index in the move buffer, -1 when not moved, -2 when free */         \
-		int capacity;		 /* entries allocated */                                                           \
-		int proxyCount;		 /* live proxies */                                                                \
+		AABB* fatBoxes;		/* current fat box of every live proxy */                                        \
+		uint64_t* userData; /* user data of every live proxy */                                              \
+		int* backendSlots;	/* one int per live proxy that the backend may use as it likes */                \
+		int* moveIndex;		/* frontend: index in the move buffer, -1 when not moved, -2 when free */        \
+		int capacity;		/* entries allocated */                                                          \
+		int proxyCount;		/* live proxies */                                                               \
 	} P##BroadProxyTable;
 
 CD_BROAD_DECLARE_PROXY_TABLE(cd2, cd2Aabb)
@@ -64,24 +78,24 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 	typedef struct P##BroadBackend                                                                           \
 	{                                                                                                        \
 		const char* name;                                                                                    \
-		/* NULL when out of memory. def has been validated by the frontend. */                                 \
+		/* NULL when out of memory. def has been validated by the frontend. */                               \
 		void* (*create)(const DEF* def, P##BroadProxyTable* table);                                          \
 		void (*destroy)(void* self);                                                                         \
 		bool (*insertProxy)(void* self, int proxyId);                                                        \
 		void (*removeProxy)(void* self, int proxyId);                                                        \
 		bool (*moveProxy)(void* self, int proxyId, AABB oldFatBox);                                          \
-		/* Calls fcn once per proxy whose fat box overlaps box (closed) until fcn returns false. */            \
+		/* Calls fcn once per proxy whose fat box overlaps box (closed) until fcn returns false. */          \
 		void (*query)(const void* self, AABB box, cdBroadIdFcn* fcn, void* context);                         \
-		/* Calls fcn for proxies whose fat box the ray (t in [0, maxFraction]) may meet (conservative:        \
-		 * never skip a box the ray meets; extra candidates are fine), keeping the clip fcn returns. */    \
+		/* Calls fcn for proxies whose fat box the ray (t in [0, maxFraction]) may meet (conservative:       \
+		 * never skip a box the ray meets; extra candidates are fine), keeping the clip fcn returns. */      \
 		void (*rayCast)(const void* self, RAY ray, cdReal maxFraction, cdBroadRayIdFcn* fcn, void* context); \
 		/* Optional: every overlapping pair once. NULL: the frontend queries each proxy. */                  \
 		void (*findPairs)(const void* self, cdBroadPairSinkFcn* fcn, void* context);                         \
 		/* Optional: called before pair finding, so deferred work (sorting) can be done. */                  \
 		void (*flush)(void* self);                                                                           \
-		/* Rebuilds from scratch over exactly the table's live proxies (moveIndex != FREE), including    \
-		 * ones never inserted (bulk loading: the frontend fills the table, then rebuilds an empty       \
-		 * backend). false = out of memory; the old structure then stays valid and unchanged. */        \
+		/* Rebuilds from scratch over exactly the table's live proxies (moveIndex != FREE), including        \
+		 * ones never inserted (bulk loading: the frontend fills the table, then rebuilds an empty           \
+		 * backend). false = out of memory; the old structure then stays valid and unchanged. */             \
 		bool (*rebuild)(void* self);                                                                         \
 		/* Fills nodeCount, height, memoryBytes, sahCost (proxyCount is set by the frontend). */             \
 		void (*getStats)(const void* self, cdBroadPhaseStats* stats);                                        \
@@ -118,15 +132,18 @@ extern const cd3BroadBackend cd3BroadSapBackend;
  * growing by half again. Keeps the contents. false when out of memory (array unchanged). */
 bool cdBroadReserve(void** array, int* capacity, int needed, size_t elementSize);
 
-/* Sorts `count` pair keys ascending (LSD radix sort on the bits in use). `scratch` holds `count`
+/* Sorts `count` keys ascending (LSD radix sort over the bits in use). `scratch` holds `count`
  * keys. The result may land in either buffer: the function returns the one that holds it. */
 uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count);
 
-/* A pair key that sorts like (min, max) of two proxy ids. */
-static inline uint64_t cdBroadPairKey(int a, int b)
+/* Number of bits needed for values below `count` (at least 1). */
+int cdBroadBitsFor(int count);
+
+/* A pair key that sorts like (min, max) of two proxy ids below 2^shift. */
+static inline uint64_t cdBroadPairKey(int a, int b, int shift)
 {
-	uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
-	return ((uint64_t)lo << 32) | (uint64_t)hi;
+	uint64_t lo = (uint64_t)(a < b ? a : b), hi = (uint64_t)(a < b ? b : a);
+	return (lo << shift) | hi;
 }
 
 /* ---- per-dimension box primitives (the only code that differs between 2D and 3D) ------------- */
@@ -204,7 +221,8 @@ static inline cdReal cdBroadSafeInverse(cdReal d)
 
 static inline cd2BroadRayData cd2BroadPrepareRay(cd2Ray ray)
 {
-	cd2BroadRayData r = {ray.origin, ray.translation,
+	cd2BroadRayData r = {ray.origin,
+						 ray.translation,
 						 {cdBroadSafeInverse(ray.translation.x), cdBroadSafeInverse(ray.translation.y)}};
 	return r;
 }
