@@ -49,6 +49,13 @@ static void CheckPolygon(const cd2Polygon* polygon, const cd2Vec* points, int co
 	}
 	TEST_CHECKF(cd2IsValidPolygon(polygon), "%s: validator rejects the result", label);
 	double scale = fmax(1.0, MaxAbsCoordinate(polygon->vertices, n));
+	/* shoelace relative to the vertex mean, so that far-away polygons keep their precision */
+	double mx = 0.0, my = 0.0;
+	for (int i = 0; i < n; ++i)
+	{
+		mx += (double)polygon->vertices[i].x / n;
+		my += (double)polygon->vertices[i].y / n;
+	}
 	double twiceArea = 0.0, cx = 0.0, cy = 0.0;
 	for (int i = 0; i < n; ++i)
 	{
@@ -72,11 +79,12 @@ static void CheckPolygon(const cd2Polygon* polygon, const cd2Vec* points, int co
 		TEST_CHECKF(fabs(hypot(nx, ny) - 1.0) < 1e-5, "%s: normal %d not unit", label, i);
 		TEST_CHECKF(fabs(nx - ey / length) < 1e-5 && fabs(ny + ex / length) < 1e-5,
 					"%s: normal %d (%g, %g) wrong", label, i, nx, ny);
-		/* area centroid by the shoelace formula on absolute coordinates */
-		double cross = (double)a.x * (double)b.y - (double)b.x * (double)a.y;
+		/* area centroid by the shoelace formula */
+		double ax = (double)a.x - mx, ay = (double)a.y - my, bx = (double)b.x - mx, by = (double)b.y - my;
+		double cross = ax * by - bx * ay;
 		twiceArea += cross;
-		cx += ((double)a.x + (double)b.x) * cross;
-		cy += ((double)a.y + (double)b.y) * cross;
+		cx += (ax + bx) * cross;
+		cy += (ay + by) * cross;
 		/* every input point lies inside, or outside by at most the tolerance */
 		for (int j = 0; j < count; ++j)
 		{
@@ -89,8 +97,8 @@ static void CheckPolygon(const cd2Polygon* polygon, const cd2Vec* points, int co
 	TEST_CHECKF(twiceArea > 0.0, "%s: area %g", label, 0.5 * twiceArea);
 	if (twiceArea > 0.0)
 	{
-		cx /= 3.0 * twiceArea;
-		cy /= 3.0 * twiceArea;
+		cx = mx + cx / (3.0 * twiceArea);
+		cy = my + cy / (3.0 * twiceArea);
 		double centroidTolerance = 1e-5 * scale;
 		TEST_CHECKF(fabs(cx - (double)polygon->centroid.x) <= centroidTolerance &&
 						fabs(cy - (double)polygon->centroid.y) <= centroidTolerance,
@@ -137,7 +145,7 @@ static void TestWeldAndCollinear(void)
 	double weld = (double)CD2_POLYGON_WELD_TOLERANCE;
 	TEST_CHECK(weld > 0.0);
 	TEST_CHECK((double)cd2GetPolygonWeldTolerance((cdReal)0) == weld);
-	TEST_CHECK((double)cd2GetPolygonWeldTolerance((cdReal)1e30f) > 1e20);
+	TEST_CHECK((double)cd2GetPolygonWeldTolerance((cdReal)1e30f) >= 63.0 * (double)CD_REAL_EPSILON * 1e30);
 
 	/* exact and near duplicates (well within the weld tolerance) */
 	cd2Vec duplicates[8] = {
@@ -358,11 +366,16 @@ static void TestHugeAndSmall(void)
 	CheckPolygon(&polygon, far, 4, 0.0, "far square");
 	TEST_CHECK_NEAR(polygon.centroid.x, 1e6 + 50, 0.1);
 
-	/* at 1e6 a point 0.01 off an edge is within round-off of it and is dropped */
+	/* at 1e6 the tolerance follows the coordinates: a point half a tolerance outside an edge is
+	 * dropped, one four tolerances outside is kept */
+	double farTolerance = (double)cd2GetPolygonWeldTolerance((cdReal)(1e6 + 100));
 	cd2Vec farCollinear[5] = {V(1e6, 1e6), V(1e6 + 100, 1e6), V(1e6 + 100, 1e6 + 100), V(1e6, 1e6 + 100),
-							  V(1e6 + 50, 1e6 - 0.01)};
+							  V(1e6 + 50, 1e6 - 0.5 * farTolerance)};
 	TEST_CHECK(cd2MakePolygon(farCollinear, 5, &polygon) == CD_OK);
 	TEST_CHECK(polygon.count == 4);
+	farCollinear[4].y = (cdReal)(1e6 - 4.0 * farTolerance);
+	TEST_CHECK(cd2MakePolygon(farCollinear, 5, &polygon) == CD_OK);
+	TEST_CHECK(polygon.count == 5);
 
 	/* small shapes: with kilometre units (1e-3 length units per metre) the tolerances shrink a
 	 * thousandfold, and a square of side 1e-3 builds */
