@@ -1,0 +1,353 @@
+/* collide: closest points on 3D primitives (Ericson, Real-Time Collision Detection, ch. 5).
+ *
+ * Robustness: the routines that multiply dot products together (triangle regions, segment pairs)
+ * first divide their relative vectors by the largest component, so that the products neither
+ * overflow at 1e9 nor underflow at 1e-9 in float; the resulting parameters are scale-free and the
+ * points are rebuilt from the unscaled vectors. Degenerate inputs (zero-length segments,
+ * zero-area triangles) take explicit branches instead of dividing by zero. */
+#include "collide/query3.h"
+
+static cdReal MaxAbsComponent(cd3Vec v)
+{
+	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+}
+
+/* numerator / denominator clamped to [0, 1]; 0 when the denominator is not positive. */
+static cdReal ClampedRatio(cdReal numerator, cdReal denominator)
+{
+	if (!(denominator > CD_R(0.0)) || numerator <= CD_R(0.0))
+	{
+		return CD_R(0.0);
+	}
+	if (numerator >= denominator)
+	{
+		return CD_R(1.0);
+	}
+	return numerator / denominator;
+}
+
+cd3Vec cd3ClosestPointOnSphere(cd3Sphere s, cd3Vec p)
+{
+	cd3Vec offset = cd3Sub(p, s.center);
+	cdReal distanceSquared = cd3LengthSquared(offset);
+	if (distanceSquared <= s.radius * s.radius)
+	{
+		return p;
+	}
+	/* distanceSquared > radius^2 >= 0, so the length is positive. */
+	cdReal distance = cdSqrt(distanceSquared);
+	if (!(distance > CD_R(0.0)) || !cdIsValidReal(distance))
+	{
+		/* Only reachable through underflow/overflow of the squared length. */
+		cd3Vec direction = cd3Normalize(offset);
+		return cd3MulAdd(s.center, s.radius, direction);
+	}
+	return cd3MulAdd(s.center, s.radius / distance, offset);
+}
+
+cd3Vec cd3ClosestPointOnSegment(cd3Segment g, cd3Vec p)
+{
+	cd3Vec direction = cd3Sub(g.p2, g.p1);
+	cd3Vec offset = cd3Sub(p, g.p1);
+	cdReal scale = cdMax(MaxAbsComponent(direction), MaxAbsComponent(offset));
+	if (!(scale > CD_R(0.0)))
+	{
+		return g.p1;
+	}
+	cdReal inverse = CD_R(1.0) / scale;
+	cd3Vec d = cd3Scale(inverse, direction);
+	cdReal numerator = cd3Dot(cd3Scale(inverse, offset), d);
+	cdReal denominator = cd3Dot(d, d);
+	if (numerator <= CD_R(0.0) || !(denominator > CD_R(0.0)))
+	{
+		return g.p1;
+	}
+	if (numerator >= denominator)
+	{
+		return g.p2;
+	}
+	return cd3MulAdd(g.p1, numerator / denominator, direction);
+}
+
+cd3Vec cd3ClosestPointOnCapsule(cd3Capsule c, cd3Vec p)
+{
+	cd3Segment axis = {c.p1, c.p2};
+	cd3Sphere sphere = {cd3ClosestPointOnSegment(axis, p), c.radius};
+	return cd3ClosestPointOnSphere(sphere, p);
+}
+
+cd3Vec cd3ClosestPointOnAabb(cd3Aabb b, cd3Vec p)
+{
+	return cd3Clamp(p, b.min, b.max);
+}
+
+cd3Vec cd3ClosestPointOnBox(cd3Box b, cd3Vec p)
+{
+	cd3Quat q = cd3NormalizeQuat(b.rotation);
+	cd3Vec local = cd3InvRotateVector(q, cd3Sub(p, b.center));
+	cd3Vec h = b.halfExtents;
+	cd3Vec clamped = cd3Clamp(local, cd3Neg(h), h);
+	if (cd3VecEqual(clamped, local))
+	{
+		/* Inside: the point itself, not its rotated round trip. */
+		return p;
+	}
+	return cd3Add(b.center, cd3RotateVector(q, clamped));
+}
+
+cd3Vec cd3ClosestPointOnPlane(cd3Plane plane, cd3Vec p)
+{
+	cdReal height = cd3Dot(plane.normal, p) - plane.offset;
+	if (height <= CD_R(0.0))
+	{
+		return p;
+	}
+	/* Divide by |n|^2 so that a normal within the validator's unit tolerance still lands on the
+	 * boundary. */
+	cdReal normalSquared = cd3LengthSquared(plane.normal);
+	if (!(normalSquared > CD_R(0.0)))
+	{
+		return p;
+	}
+	return cd3MulSub(p, height / normalSquared, plane.normal);
+}
+
+static cd3Vec ClosestPointOnTriangleEdges(cd3Triangle t, cd3Vec p)
+{
+	cd3Segment edges[3] = {{t.a, t.b}, {t.b, t.c}, {t.c, t.a}};
+	cd3Vec best = t.a;
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	for (int i = 0; i < 3; ++i)
+	{
+		cd3Vec candidate = cd3ClosestPointOnSegment(edges[i], p);
+		cdReal distanceSquared = cd3VecDistanceSquared(candidate, p);
+		if (distanceSquared < bestDistanceSquared)
+		{
+			bestDistanceSquared = distanceSquared;
+			best = candidate;
+		}
+	}
+	return best;
+}
+
+/* Voronoi regions of the vertices, then the edges, then the face (Ericson 5.1.5). */
+cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
+{
+	cd3Vec ab = cd3Sub(t.b, t.a);
+	cd3Vec ac = cd3Sub(t.c, t.a);
+	cd3Vec ap = cd3Sub(p, t.a);
+	cdReal scale = cdMax(MaxAbsComponent(ab), cdMax(MaxAbsComponent(ac), MaxAbsComponent(ap)));
+	if (!(scale > CD_R(0.0)))
+	{
+		return t.a;
+	}
+	cdReal inverse = CD_R(1.0) / scale;
+	cd3Vec sab = cd3Scale(inverse, ab);
+	cd3Vec sac = cd3Scale(inverse, ac);
+	cd3Vec sap = cd3Scale(inverse, ap);
+
+	/* A (nearly) zero-area triangle has no face region, and its edge regions can be empty: it is
+	 * the segment or point it collapsed to. Same threshold as cd3IsValidTriangle. */
+	cdReal limit = CD_R(4.0) * CD_REAL_EPSILON;
+	if (cd3LengthSquared(cd3Cross(sab, sac)) <= limit * limit * cd3LengthSquared(sab) * cd3LengthSquared(sac))
+	{
+		return ClosestPointOnTriangleEdges(t, p);
+	}
+
+	cdReal d1 = cd3Dot(sab, sap);
+	cdReal d2 = cd3Dot(sac, sap);
+	if (d1 <= CD_R(0.0) && d2 <= CD_R(0.0))
+	{
+		return t.a;
+	}
+
+	cd3Vec sbp = cd3Sub(sap, sab);
+	cdReal d3 = cd3Dot(sab, sbp);
+	cdReal d4 = cd3Dot(sac, sbp);
+	if (d3 >= CD_R(0.0) && d4 <= d3)
+	{
+		return t.b;
+	}
+
+	cdReal vc = d1 * d4 - d3 * d2;
+	if (vc <= CD_R(0.0) && d1 >= CD_R(0.0) && d3 <= CD_R(0.0))
+	{
+		return cd3MulAdd(t.a, ClampedRatio(d1, d1 - d3), ab);
+	}
+
+	cd3Vec scp = cd3Sub(sap, sac);
+	cdReal d5 = cd3Dot(sab, scp);
+	cdReal d6 = cd3Dot(sac, scp);
+	if (d6 >= CD_R(0.0) && d5 <= d6)
+	{
+		return t.c;
+	}
+
+	cdReal vb = d5 * d2 - d1 * d6;
+	if (vb <= CD_R(0.0) && d2 >= CD_R(0.0) && d6 <= CD_R(0.0))
+	{
+		return cd3MulAdd(t.a, ClampedRatio(d2, d2 - d6), ac);
+	}
+
+	cdReal va = d3 * d6 - d5 * d4;
+	cdReal fromB = d4 - d3;
+	cdReal fromC = d5 - d6;
+	if (va <= CD_R(0.0) && fromB >= CD_R(0.0) && fromC >= CD_R(0.0))
+	{
+		return cd3MulAdd(t.b, ClampedRatio(fromB, fromB + fromC), cd3Sub(t.c, t.b));
+	}
+
+	if (va > CD_R(0.0) && vb > CD_R(0.0) && vc > CD_R(0.0))
+	{
+		cdReal denominator = CD_R(1.0) / (va + vb + vc);
+		cdReal v = vb * denominator;
+		cdReal w = vc * denominator;
+		return cd3Add(t.a, cd3Add(cd3Scale(v, ab), cd3Scale(w, ac)));
+	}
+
+	/* Round-off on a nearly degenerate triangle can leave no region: fall back to the edges. */
+	return ClosestPointOnTriangleEdges(t, p);
+}
+
+cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b)
+{
+	cd3Vec d1 = cd3Sub(a.p2, a.p1);
+	cd3Vec d2 = cd3Sub(b.p2, b.p1);
+	cd3Vec r = cd3Sub(a.p1, b.p1);
+	cd3ClosestPoints result;
+	cdReal scale = cdMax(MaxAbsComponent(d1), cdMax(MaxAbsComponent(d2), MaxAbsComponent(r)));
+	if (!(scale > CD_R(0.0)))
+	{
+		result.pointA = a.p1;
+		result.pointB = b.p1;
+		result.distance = CD_R(0.0);
+		return result;
+	}
+	cdReal inverse = CD_R(1.0) / scale;
+	cd3Vec u = cd3Scale(inverse, d1);
+	cd3Vec v = cd3Scale(inverse, d2);
+	cd3Vec w = cd3Scale(inverse, r);
+
+	/* Scaled so that the largest component is 1: a squared length below epsilon^2 is a point at
+	 * this precision. */
+	const cdReal tiny = CD_REAL_EPSILON * CD_REAL_EPSILON;
+	cdReal lengthA = cd3Dot(u, u);
+	cdReal lengthB = cd3Dot(v, v);
+	cdReal f = cd3Dot(v, w);
+	cdReal s, t;
+	if (lengthA <= tiny && lengthB <= tiny)
+	{
+		s = CD_R(0.0);
+		t = CD_R(0.0);
+	}
+	else if (lengthA <= tiny)
+	{
+		s = CD_R(0.0);
+		t = ClampedRatio(f, lengthB);
+	}
+	else
+	{
+		cdReal c = cd3Dot(u, w);
+		if (lengthB <= tiny)
+		{
+			t = CD_R(0.0);
+			s = ClampedRatio(-c, lengthA);
+		}
+		else
+		{
+			cdReal bb = cd3Dot(u, v);
+			/* denominator = |u x v|^2 and numerator = (u x v).(v x w) are the Lagrange-identity
+			 * forms of Ericson's a*e - b*b and b*f - c*e: the cross products avoid the
+			 * cancellation that makes nearly parallel segments lose half their digits. */
+			cd3Vec n = cd3Cross(u, v);
+			cdReal denominator = cd3Dot(n, n);
+			cdReal parallelLimit = CD_R(16.0) * CD_REAL_EPSILON * CD_REAL_EPSILON * lengthA * lengthB;
+			if (denominator > parallelLimit)
+			{
+				s = ClampedRatio(cd3Dot(n, cd3Cross(v, w)), denominator);
+			}
+			else
+			{
+				/* Parallel: every s on the overlap is as good; start from s = 0 and let the
+				 * clamping below pick the right pair. */
+				s = CD_R(0.0);
+			}
+			cdReal tNumerator = bb * s + f;
+			if (tNumerator <= CD_R(0.0))
+			{
+				t = CD_R(0.0);
+				s = ClampedRatio(-c, lengthA);
+			}
+			else if (tNumerator >= lengthB)
+			{
+				t = CD_R(1.0);
+				s = ClampedRatio(bb - c, lengthA);
+			}
+			else
+			{
+				t = tNumerator / lengthB;
+			}
+		}
+	}
+	result.pointA = cd3MulAdd(a.p1, s, d1);
+	result.pointB = cd3MulAdd(b.p1, t, d2);
+	result.distance = cd3VecDistance(result.pointA, result.pointB);
+	return result;
+}
+
+static void KeepCloser(cd3ClosestPoints* best, cdReal* bestDistanceSquared, cd3Vec onTriangle,
+					   cd3Vec onSegment)
+{
+	cdReal distanceSquared = cd3VecDistanceSquared(onTriangle, onSegment);
+	if (distanceSquared < *bestDistanceSquared)
+	{
+		*bestDistanceSquared = distanceSquared;
+		best->pointA = onTriangle;
+		best->pointB = onSegment;
+	}
+}
+
+/* The closest pair is either where the segment pierces the triangle, or involves a segment
+ * endpoint against the triangle, or a triangle edge against the segment. */
+cd3ClosestPoints cd3ClosestPointsTriangleSegment(cd3Triangle t, cd3Segment g)
+{
+	cd3ClosestPoints best;
+	best.pointA = t.a;
+	best.pointB = g.p1;
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+
+	/* Piercing point: where the segment crosses the triangle's plane. The normal is left
+	 * unnormalized (it may be tiny or huge); only the signs and the ratio of the heights matter. */
+	cd3Vec ab = cd3Sub(t.b, t.a);
+	cd3Vec ac = cd3Sub(t.c, t.a);
+	cdReal scale = cdMax(MaxAbsComponent(ab), MaxAbsComponent(ac));
+	if (scale > CD_R(0.0))
+	{
+		cdReal inverse = CD_R(1.0) / scale;
+		cd3Vec n = cd3Cross(cd3Scale(inverse, ab), cd3Scale(inverse, ac));
+		cdReal h1 = cd3Dot(n, cd3Sub(g.p1, t.a));
+		cdReal h2 = cd3Dot(n, cd3Sub(g.p2, t.a));
+		if ((h1 <= CD_R(0.0) && h2 >= CD_R(0.0)) || (h1 >= CD_R(0.0) && h2 <= CD_R(0.0)))
+		{
+			cdReal difference = h1 - h2;
+			if (difference != CD_R(0.0))
+			{
+				cdReal fraction = cdClamp(h1 / difference, CD_R(0.0), CD_R(1.0));
+				cd3Vec crossing = cd3Lerp(g.p1, g.p2, fraction);
+				KeepCloser(&best, &bestDistanceSquared, cd3ClosestPointOnTriangle(t, crossing), crossing);
+			}
+		}
+	}
+
+	KeepCloser(&best, &bestDistanceSquared, cd3ClosestPointOnTriangle(t, g.p1), g.p1);
+	KeepCloser(&best, &bestDistanceSquared, cd3ClosestPointOnTriangle(t, g.p2), g.p2);
+
+	cd3Segment edges[3] = {{t.a, t.b}, {t.b, t.c}, {t.c, t.a}};
+	for (int i = 0; i < 3; ++i)
+	{
+		cd3ClosestPoints pair = cd3ClosestPointsSegmentSegment(edges[i], g);
+		KeepCloser(&best, &bestDistanceSquared, pair.pointA, pair.pointB);
+	}
+	best.distance = cd3VecDistance(best.pointA, best.pointB);
+	return best;
+}

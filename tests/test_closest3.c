@@ -1,0 +1,419 @@
+/* Tests of the 3D closest-point queries: closest point on each shape, segment-segment and
+ * triangle-segment closest pairs. Exact cases per Voronoi region, degenerate inputs, and random
+ * cases checked against an independent double-precision projection (tests/reference3.h) and
+ * against dense sampling of the shapes. */
+#include "collide/query3.h"
+#include "reference3.h"
+#include "test.h"
+
+/* Relative accuracy expected from a closest-point routine in cdReal. */
+#define REL_TOLERANCE (CD_DOUBLE ? 1e-11 : 2e-5)
+
+static bool VecNear(cd3Vec a, cd3Vec b, double tolerance)
+{
+	return RDist(RFromVec(a), RFromVec(b)) <= tolerance;
+}
+
+static bool IsFiniteVec(cd3Vec v)
+{
+	return cd3IsValidVec(v);
+}
+
+#define CHECK_VEC(actual, ex, ey, ez, tolerance)                                                             \
+	do                                                                                                       \
+	{                                                                                                        \
+		cd3Vec actual_ = (actual);                                                                           \
+		TEST_CHECKF(VecNear(actual_, cd3MakeVec(ex, ey, ez), tolerance),                                     \
+					"%s = (%.9g %.9g %.9g), expected (%g %g %g)", #actual, (double)actual_.x,                \
+					(double)actual_.y, (double)actual_.z, (double)(ex), (double)(ey), (double)(ez));         \
+	} while (0)
+
+static void TestSphereCapsuleSegment(void)
+{
+	cd3Sphere sphere = {{1, 0, 0}, 2};
+	CHECK_VEC(cd3ClosestPointOnSphere(sphere, cd3MakeVec(5, 0, 0)), 3, 0, 0, 1e-6);
+	CHECK_VEC(cd3ClosestPointOnSphere(sphere, cd3MakeVec(1, -4, 0)), 1, -2, 0, 1e-6);
+	cd3Vec inside = {CD_R(1.5), CD_R(0.3), CD_R(-0.2)};
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnSphere(sphere, inside), inside));
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnSphere(sphere, sphere.center), sphere.center));
+	/* On the surface counts as inside. */
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnSphere(sphere, cd3MakeVec(3, 0, 0)), cd3MakeVec(3, 0, 0)));
+	cd3Sphere point = {{1, 2, 3}, 0};
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnSphere(point, cd3MakeVec(7, -8, 9)), point.center));
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnSphere(point, point.center), point.center));
+
+	cd3Segment segment = {{0, 0, 0}, {4, 0, 0}};
+	CHECK_VEC(cd3ClosestPointOnSegment(segment, cd3MakeVec(2, 3, 0)), 2, 0, 0, 1e-6);
+	CHECK_VEC(cd3ClosestPointOnSegment(segment, cd3MakeVec(-2, 3, 1)), 0, 0, 0, 0);
+	CHECK_VEC(cd3ClosestPointOnSegment(segment, cd3MakeVec(9, -3, 1)), 4, 0, 0, 0);
+	CHECK_VEC(cd3ClosestPointOnSegment(segment, cd3MakeVec(1, 0, 0)), 1, 0, 0, 1e-6);
+	cd3Segment dot = {{1, 1, 1}, {1, 1, 1}};
+	CHECK_VEC(cd3ClosestPointOnSegment(dot, cd3MakeVec(5, 0, 0)), 1, 1, 1, 0);
+	CHECK_VEC(cd3ClosestPointOnSegment(dot, cd3MakeVec(1, 1, 1)), 1, 1, 1, 0);
+
+	cd3Capsule capsule = {{0, 0, 0}, {0, 4, 0}, 1};
+	CHECK_VEC(cd3ClosestPointOnCapsule(capsule, cd3MakeVec(3, 2, 0)), 1, 2, 0, 1e-6);
+	CHECK_VEC(cd3ClosestPointOnCapsule(capsule, cd3MakeVec(0, 7, 0)), 0, 5, 0, 1e-6);
+	CHECK_VEC(cd3ClosestPointOnCapsule(capsule, cd3MakeVec(0, -3, 0)), 0, -1, 0, 1e-6);
+	inside = cd3MakeVec(CD_R(0.5), CD_R(3.5), CD_R(0.2));
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnCapsule(capsule, inside), inside));
+	cd3Capsule ball = {{2, 0, 0}, {2, 0, 0}, 1};
+	CHECK_VEC(cd3ClosestPointOnCapsule(ball, cd3MakeVec(2, 0, 5)), 2, 0, 1, 1e-6);
+	cd3Capsule line = {{0, 0, 0}, {0, 4, 0}, 0};
+	CHECK_VEC(cd3ClosestPointOnCapsule(line, cd3MakeVec(3, 2, 0)), 0, 2, 0, 1e-6);
+}
+
+static void TestAabbBoxPlane(void)
+{
+	cd3Aabb aabb = {{-1, -2, -3}, {1, 2, 3}};
+	CHECK_VEC(cd3ClosestPointOnAabb(aabb, cd3MakeVec(5, 0, 0)), 1, 0, 0, 0);
+	CHECK_VEC(cd3ClosestPointOnAabb(aabb, cd3MakeVec(5, -5, 5)), 1, -2, 3, 0);
+	cd3Vec inside = {CD_R(0.5), CD_R(-1.5), CD_R(2.9)};
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnAabb(aabb, inside), inside));
+	cd3Aabb point = {{1, 1, 1}, {1, 1, 1}};
+	CHECK_VEC(cd3ClosestPointOnAabb(point, cd3MakeVec(-4, 5, 0)), 1, 1, 1, 0);
+
+	/* 45 degrees about z: the box's +x face normal is (1, 1, 0) / sqrt(2). */
+	cd3Box box = {{1, 0, 0}, {1, 2, 3}, cd3MakeQuatAxisAngle(cd3MakeVec(0, 0, 1), CD_PI * CD_R(0.25))};
+	cdReal k = CD_R(0.70710678118654752);
+	CHECK_VEC(cd3ClosestPointOnBox(box, cd3MakeVec(1 + 5 * k, 5 * k, 0)), 1 + k, k, 0, 1e-5);
+	CHECK_VEC(cd3ClosestPointOnBox(box, cd3MakeVec(1, 0, 10)), 1, 0, 3, 1e-5);
+	inside = cd3MakeVec(CD_R(1.3), CD_R(0.4), CD_R(-2.5));
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnBox(box, inside), inside));
+	cd3Box flat = {{0, 0, 0}, {1, 0, 1}, CD3_QUAT_IDENTITY};
+	CHECK_VEC(cd3ClosestPointOnBox(flat, cd3MakeVec(CD_R(0.5), 4, -3)), 0.5, 0, -1, 1e-6);
+	cd3Box pointBox = {{3, 2, 1}, {0, 0, 0}, cd3MakeQuatAxisAngle(cd3MakeVec(1, 2, 3), 1)};
+	CHECK_VEC(cd3ClosestPointOnBox(pointBox, cd3MakeVec(9, 9, 9)), 3, 2, 1, 1e-6);
+
+	cd3Plane plane = {{0, 1, 0}, 2};
+	CHECK_VEC(cd3ClosestPointOnPlane(plane, cd3MakeVec(3, 7, -1)), 3, 2, -1, 0);
+	inside = cd3MakeVec(3, -7, -1);
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnPlane(plane, inside), inside));
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnPlane(plane, cd3MakeVec(0, 2, 0)), cd3MakeVec(0, 2, 0)));
+	cd3Plane tilted = {cd3Normalize(cd3MakeVec(1, 1, 0)), 0};
+	CHECK_VEC(cd3ClosestPointOnPlane(tilted, cd3MakeVec(2, 0, 5)), 1, -1, 5, 1e-6);
+}
+
+static void TestTriangleRegions(void)
+{
+	cd3Triangle t = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(-1, -1, 2)), 0, 0, 0, 0);	  /* vertex a */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(6, -1, 1)), 4, 0, 0, 0);	  /* vertex b */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(-1, 7, -1)), 0, 4, 0, 0);	  /* vertex c */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(2, -3, 1)), 2, 0, 0, 1e-6); /* edge ab */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(-3, 1, 1)), 0, 1, 0, 1e-6); /* edge ca */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(3, 3, -2)), 2, 2, 0, 1e-6); /* edge bc */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(1, 1, 5)), 1, 1, 0, 1e-6);  /* face, above */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(1, 2, -5)), 1, 2, 0, 1e-6); /* face, below */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(1, 2, 0)), 1, 2, 0, 1e-6);  /* in the face */
+	CHECK_VEC(cd3ClosestPointOnTriangle(t, cd3MakeVec(4, 0, 0)), 4, 0, 0, 0);	  /* on a vertex */
+
+	/* Degenerate triangles are the segment or point they collapsed to. */
+	cd3Triangle collinear = {{0, 0, 0}, {2, 0, 0}, {4, 0, 0}};
+	CHECK_VEC(cd3ClosestPointOnTriangle(collinear, cd3MakeVec(3, 5, 0)), 3, 0, 0, 1e-6);
+	CHECK_VEC(cd3ClosestPointOnTriangle(collinear, cd3MakeVec(7, 1, 1)), 4, 0, 0, 1e-6);
+	CHECK_VEC(cd3ClosestPointOnTriangle(collinear, cd3MakeVec(-1, 1, 1)), 0, 0, 0, 1e-6);
+	cd3Triangle repeated = {{0, 0, 0}, {0, 0, 0}, {4, 0, 0}};
+	CHECK_VEC(cd3ClosestPointOnTriangle(repeated, cd3MakeVec(1, 1, 0)), 1, 0, 0, 1e-6);
+	cd3Triangle repeated2 = {{4, 0, 0}, {0, 0, 0}, {4, 0, 0}};
+	CHECK_VEC(cd3ClosestPointOnTriangle(repeated2, cd3MakeVec(1, -1, 0)), 1, 0, 0, 1e-6);
+	cd3Triangle point = {{1, 2, 3}, {1, 2, 3}, {1, 2, 3}};
+	CHECK_VEC(cd3ClosestPointOnTriangle(point, cd3MakeVec(0, 0, 0)), 1, 2, 3, 0);
+	CHECK_VEC(cd3ClosestPointOnTriangle(point, cd3MakeVec(1, 2, 3)), 1, 2, 3, 0);
+}
+
+static void TestSegmentSegmentExact(void)
+{
+	/* Crossing: distance 0 at the crossing. */
+	cd3Segment a = {{-1, 0, 0}, {1, 0, 0}};
+	cd3Segment b = {{0, -1, 0}, {0, 1, 0}};
+	cd3ClosestPoints r = cd3ClosestPointsSegmentSegment(a, b);
+	CHECK_VEC(r.pointA, 0, 0, 0, 1e-6);
+	CHECK_VEC(r.pointB, 0, 0, 0, 1e-6);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	/* Skew, interior closest points. */
+	b = (cd3Segment){{CD_R(0.5), -1, 2}, {CD_R(0.5), 1, 2}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	CHECK_VEC(r.pointA, 0.5, 0, 0, 1e-6);
+	CHECK_VEC(r.pointB, 0.5, 0, 2, 1e-6);
+	TEST_CHECK_NEAR(r.distance, 2, 1e-6);
+	/* Skew, clamped at endpoints. */
+	b = (cd3Segment){{3, 1, 1}, {3, 5, 1}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	CHECK_VEC(r.pointA, 1, 0, 0, 1e-6);
+	CHECK_VEC(r.pointB, 3, 1, 1, 1e-6);
+	/* Parallel and overlapping in projection: the gap, and both points on their segments. */
+	b = (cd3Segment){{0, 3, 0}, {5, 3, 0}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	TEST_CHECK_NEAR(r.distance, 3, 1e-6);
+	TEST_CHECK(r.pointA.x >= 0 && r.pointA.x <= 1 && r.pointB.x >= 0 && r.pointB.x <= 1);
+	TEST_CHECK_NEAR(r.pointA.x, r.pointB.x, 1e-6);
+	/* Anti-parallel. */
+	b = (cd3Segment){{5, 3, 0}, {0, 3, 0}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	TEST_CHECK_NEAR(r.distance, 3, 1e-6);
+	/* Collinear and disjoint: end to end. */
+	b = (cd3Segment){{3, 0, 0}, {5, 0, 0}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	CHECK_VEC(r.pointA, 1, 0, 0, 0);
+	CHECK_VEC(r.pointB, 3, 0, 0, 0);
+	TEST_CHECK_NEAR(r.distance, 2, 1e-6);
+	b = (cd3Segment){{-5, 0, 0}, {-3, 0, 0}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	CHECK_VEC(r.pointA, -1, 0, 0, 0);
+	CHECK_VEC(r.pointB, -3, 0, 0, 0);
+	/* Collinear and overlapping: distance 0. */
+	b = (cd3Segment){{CD_R(0.5), 0, 0}, {4, 0, 0}};
+	r = cd3ClosestPointsSegmentSegment(a, b);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	/* Coincident. */
+	r = cd3ClosestPointsSegmentSegment(a, a);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	/* Degenerate: a point against a segment, and two points. */
+	cd3Segment point = {{CD_R(0.25), 2, 0}, {CD_R(0.25), 2, 0}};
+	r = cd3ClosestPointsSegmentSegment(point, a);
+	CHECK_VEC(r.pointB, 0.25, 0, 0, 1e-6);
+	TEST_CHECK_NEAR(r.distance, 2, 1e-6);
+	r = cd3ClosestPointsSegmentSegment(a, point);
+	CHECK_VEC(r.pointA, 0.25, 0, 0, 1e-6);
+	cd3Segment other = {{1, 2, 2}, {1, 2, 2}};
+	r = cd3ClosestPointsSegmentSegment(point, other);
+	TEST_CHECK_NEAR(r.distance, sqrt(0.75 * 0.75 + 4.0), 1e-6);
+	r = cd3ClosestPointsSegmentSegment(point, point);
+	TEST_CHECK(r.distance == 0 && cd3VecEqual(r.pointA, point.p1));
+}
+
+static void TestTriangleSegmentExact(void)
+{
+	cd3Triangle t = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+	/* Piercing the face. */
+	cd3Segment g = {{1, 1, -2}, {1, 1, 2}};
+	cd3ClosestPoints r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	CHECK_VEC(r.pointA, 1, 1, 0, 1e-6);
+	CHECK_VEC(r.pointB, 1, 1, 0, 1e-6);
+	/* Slanted piercing. */
+	g = (cd3Segment){{0, 0, -2}, {2, 2, 2}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	CHECK_VEC(r.pointB, 1, 1, 0, 1e-6);
+	/* Above the face, parallel to it. */
+	g = (cd3Segment){{1, 1, 3}, {2, 1, 3}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECK_NEAR(r.distance, 3, 1e-6);
+	TEST_CHECK_NEAR(r.pointA.z, 0, 1e-6);
+	/* Endpoint closest to the face. */
+	g = (cd3Segment){{1, 1, 1}, {1, 1, 9}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	CHECK_VEC(r.pointA, 1, 1, 0, 1e-6);
+	CHECK_VEC(r.pointB, 1, 1, 1, 1e-6);
+	/* Crossing below edge bc, outside the triangle: edge-edge. */
+	g = (cd3Segment){{4, 4, -1}, {4, 4, 1}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	CHECK_VEC(r.pointA, 2, 2, 0, 1e-6);
+	CHECK_VEC(r.pointB, 4, 4, 0, 1e-6);
+	TEST_CHECK_NEAR(r.distance, sqrt(8.0), 1e-6);
+	/* In the plane, crossing the triangle: distance 0. */
+	g = (cd3Segment){{-1, 1, 0}, {5, 1, 0}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	/* In the plane, inside the triangle. */
+	g = (cd3Segment){{CD_R(0.5), CD_R(0.5), 0}, {1, CD_R(0.5), 0}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	/* Zero-length segment: the point query. */
+	g = (cd3Segment){{1, 1, 5}, {1, 1, 5}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	CHECK_VEC(r.pointA, 1, 1, 0, 1e-6);
+	TEST_CHECK_NEAR(r.distance, 5, 1e-6);
+	/* Degenerate triangles: a segment, a point. */
+	cd3Triangle line = {{0, 0, 0}, {2, 0, 0}, {4, 0, 0}};
+	g = (cd3Segment){{1, -1, 1}, {1, 1, 1}};
+	r = cd3ClosestPointsTriangleSegment(line, g);
+	CHECK_VEC(r.pointA, 1, 0, 0, 1e-6);
+	TEST_CHECK_NEAR(r.distance, 1, 1e-6);
+	cd3Triangle point = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
+	r = cd3ClosestPointsTriangleSegment(point, g);
+	CHECK_VEC(r.pointA, 1, 1, 1, 0);
+	CHECK_VEC(r.pointB, 1, 1, 1, 1e-6);
+	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+}
+
+/* Nearly parallel segments that cross: the distance must stay near zero (the textbook a*e - b*b
+ * form loses half the digits here). */
+static void TestNearlyParallelSegments(void)
+{
+	TestRng rng = TestRngMake(0x5EED3101u);
+	const double angles[] = {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+	for (int i = 0; i < 600; ++i)
+	{
+		double angle = angles[i % 6];
+		cd3Vec direction = RandomUnit(&rng);
+		cd3Vec perpendicular = cd3Perpendicular(direction);
+		cd3Vec crossing = RandomVec(&rng, -2, 2);
+		cdReal c = (cdReal)cos(angle), s = (cdReal)sin(angle);
+		cd3Vec other = cd3Add(cd3Scale(c, direction), cd3Scale(s, perpendicular));
+		double length = TestRngRange(&rng, 1, 4);
+		cdReal before = (cdReal)TestRngRange(&rng, 0.2, 0.8);
+		cd3Segment a = {cd3MulSub(crossing, before * (cdReal)length, direction),
+						cd3MulAdd(crossing, (1 - before) * (cdReal)length, direction)};
+		cd3Segment b = {cd3MulSub(crossing, (1 - before) * (cdReal)length, other),
+						cd3MulAdd(crossing, before * (cdReal)length, other)};
+		cd3ClosestPoints r = cd3ClosestPointsSegmentSegment(a, b);
+		RShape ra = RFromShape(&(cd3Shape){.type = CD3_SHAPE_SEGMENT, .segment = a});
+		RShape rb = RFromShape(&(cd3Shape){.type = CD3_SHAPE_SEGMENT, .segment = b});
+		/* The inputs are rounded, so the true distance of the rounded segments is not exactly 0:
+		 * bound it by the reference. */
+		RDistance reference = RComputeDistance(&ra, &rb);
+		double tolerance = REL_TOLERANCE * 4.0;
+		TEST_CHECKF((double)r.distance <= reference.upper + tolerance,
+					"angle %g: distance %.9g, reference [%g, %g]", angle, (double)r.distance, reference.lower,
+					reference.upper);
+		TEST_CHECKF(RDist(RProject(&ra, RFromVec(r.pointA)), RFromVec(r.pointA)) <= tolerance,
+					"pointA off a");
+		TEST_CHECKF(RDist(RProject(&rb, RFromVec(r.pointB)), RFromVec(r.pointB)) <= tolerance,
+					"pointB off b");
+	}
+}
+
+/* Closest point on each shape to random points, at several scales: finite, on the shape,
+ * at the reference's distance, the point itself when inside, and no sampled point is closer. */
+static void TestRandomClosestPoint(void)
+{
+	TestRng rng = TestRngMake(0x5EED3102u);
+	const double scales[] = {1.0, 1e-6, 1e6, CD_DOUBLE ? 1e30 : 1e9, CD_DOUBLE ? 1e-30 : 1e-9};
+	int insideCount = 0;
+	for (int i = 0; i < 7000; ++i)
+	{
+		double scale = scales[i % 5];
+		cd3ShapeType type = (cd3ShapeType)(i % (int)CD3_SHAPE_TYPE_COUNT);
+		cd3Shape shape = RandomShape(&rng, type, scale);
+		RShape r = RFromShape(&shape);
+		cd3Vec p = cd3Scale((cdReal)scale, RandomVec(&rng, -4, 4));
+		RVec rp = RFromVec(p);
+		cd3Vec q = cd3ClosestPointOnShape(&shape, p);
+		TEST_CHECKF(IsFiniteVec(q), "%s: non-finite", cd3ShapeTypeName(type));
+		RVec rq = RFromVec(q);
+		double tolerance = REL_TOLERANCE * fmax(RShapeScale(&r), RMaxAbs(rp));
+		RVec reference = RProject(&r, rp);
+		double distance = RDist(rp, rq);
+		double referenceDistance = RDist(rp, reference);
+		/* On the shape. */
+		TEST_CHECKF(RDist(RProject(&r, rq), rq) <= tolerance, "%s scale %g: result %g off the shape",
+					cd3ShapeTypeName(type), scale, RDist(RProject(&r, rq), rq));
+		/* As close as the exact projection (which is unique for a convex set). */
+		TEST_CHECKF(fabs(distance - referenceDistance) <= tolerance && RDist(rq, reference) <= 10 * tolerance,
+					"%s scale %g: distance %.9g, reference %.9g", cd3ShapeTypeName(type), scale, distance,
+					referenceDistance);
+		/* Inside a solid: the point itself. */
+		bool solid = type != CD3_SHAPE_TRIANGLE && type != CD3_SHAPE_SEGMENT;
+		if (solid && referenceDistance == 0.0)
+		{
+			++insideCount;
+			TEST_CHECKF(cd3VecEqual(p, q), "%s: inside point moved", cd3ShapeTypeName(type));
+		}
+		/* No sampled point of the shape is closer. */
+		for (int k = 0; k < 40; ++k)
+		{
+			RVec sample = RSample(&r, &rng, reference, 2.0 * scale);
+			TEST_CHECKF(RDist(rp, sample) >= distance - tolerance, "%s: sample closer by %g",
+						cd3ShapeTypeName(type), distance - RDist(rp, sample));
+		}
+	}
+	TEST_CHECKF(insideCount > 200, "only %d inside cases", insideCount);
+}
+
+/* Random segment pairs and triangle-segment pairs: both points on their shapes, the distance
+ * field consistent, within the reference bracket, and no sampled pair closer. */
+static void TestRandomPairs(void)
+{
+	TestRng rng = TestRngMake(0x5EED3103u);
+	const double scales[] = {1.0, 1e-6, 1e6, CD_DOUBLE ? 1e30 : 1e9, CD_DOUBLE ? 1e-30 : 1e-9};
+	int zeroCount = 0;
+	for (int i = 0; i < 6000; ++i)
+	{
+		double scale = scales[i % 5];
+		bool triangle = (i / 5) % 2 == 0;
+		cd3Shape a = RandomShape(&rng, triangle ? CD3_SHAPE_TRIANGLE : CD3_SHAPE_SEGMENT, scale);
+		cd3Shape b = RandomShape(&rng, CD3_SHAPE_SEGMENT, scale);
+		RShape ra = RFromShape(&a);
+		if (TestRngInt(&rng, 3) == 0)
+		{
+			/* Through a point of A: (nearly, after rounding) intersecting. */
+			cd3Vec through = RToVec(RSample(&ra, &rng, RMake(0, 0, 0), 0.0));
+			cd3Vec direction = cd3Sub(b.segment.p2, b.segment.p1);
+			cdReal before = (cdReal)TestRngRange(&rng, 0, 1);
+			b.segment.p1 = cd3MulSub(through, before, direction);
+			b.segment.p2 = cd3MulAdd(through, 1 - before, direction);
+		}
+		cd3ClosestPoints result = triangle ? cd3ClosestPointsTriangleSegment(a.triangle, b.segment)
+										   : cd3ClosestPointsSegmentSegment(a.segment, b.segment);
+		RShape rb = RFromShape(&b);
+		double tolerance = REL_TOLERANCE * fmax(RShapeScale(&ra), RShapeScale(&rb));
+		RVec pa = RFromVec(result.pointA), pb = RFromVec(result.pointB);
+		TEST_CHECKF(IsFiniteVec(result.pointA) && IsFiniteVec(result.pointB) &&
+						cdIsValidReal(result.distance),
+					"non-finite");
+		TEST_CHECKF(RDist(RProject(&ra, pa), pa) <= tolerance, "%s: pointA off A by %g",
+					triangle ? "triangle" : "segment", RDist(RProject(&ra, pa), pa));
+		TEST_CHECKF(RDist(RProject(&rb, pb), pb) <= tolerance, "pointB off B by %g",
+					RDist(RProject(&rb, pb), pb));
+		TEST_CHECK_NEAR(result.distance, RDist(pa, pb), tolerance);
+		RDistance reference = RComputeDistance(&ra, &rb);
+		TEST_CHECKF((double)result.distance >= reference.lower - tolerance &&
+						(double)result.distance <= reference.upper + tolerance,
+					"%s scale %g: distance %.9g, reference [%.9g, %.9g]", triangle ? "triangle" : "segment",
+					scale, (double)result.distance, reference.lower, reference.upper);
+		if (reference.upper <= tolerance)
+		{
+			++zeroCount;
+		}
+		for (int k = 0; k < 40; ++k)
+		{
+			RVec sa = RSample(&ra, &rng, RMake(0, 0, 0), 0.0);
+			RVec sb = RSample(&rb, &rng, RMake(0, 0, 0), 0.0);
+			TEST_CHECKF(RDist(sa, sb) >= (double)result.distance - tolerance, "sampled pair closer by %g",
+						(double)result.distance - RDist(sa, sb));
+		}
+	}
+	TEST_CHECKF(zeroCount > 100, "only %d intersecting pairs", zeroCount);
+}
+
+/* Far from the origin: a unit-sized problem offset by 1e6 (float) or 1e12 (double) stays finite
+ * and accurate to the input's own resolution. */
+static void TestFarFromOrigin(void)
+{
+	TestRng rng = TestRngMake(0x5EED3104u);
+	double offset = CD_DOUBLE ? 1e12 : 1e6;
+	cd3Vec shift = cd3MakeVec((cdReal)offset, (cdReal)-offset, (cdReal)(0.5 * offset));
+	for (int i = 0; i < 1400; ++i)
+	{
+		cd3ShapeType type = (cd3ShapeType)(i % (int)CD3_SHAPE_TYPE_COUNT);
+		cd3Shape local = RandomShape(&rng, type, 1.0);
+		cd3Shape shape = TransformShape(&local, (cd3Transform){shift, CD3_QUAT_IDENTITY});
+		cd3Vec p = cd3Add(shift, RandomVec(&rng, -4, 4));
+		cd3Vec q = cd3ClosestPointOnShape(&shape, p);
+		RShape r = RFromShape(&shape);
+		RVec rq = RFromVec(q);
+		double tolerance = 8.0 * CD_REAL_EPSILON * offset;
+		TEST_CHECKF(IsFiniteVec(q), "non-finite");
+		TEST_CHECKF(RDist(RProject(&r, rq), rq) <= tolerance, "%s: off the shape by %g",
+					cd3ShapeTypeName(type), RDist(RProject(&r, rq), rq));
+		TEST_CHECKF(fabs(RDist(rq, RFromVec(p)) - RDist(RProject(&r, RFromVec(p)), RFromVec(p))) <= tolerance,
+					"%s: distance off", cd3ShapeTypeName(type));
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(TestSphereCapsuleSegment);
+	TEST_RUN(TestAabbBoxPlane);
+	TEST_RUN(TestTriangleRegions);
+	TEST_RUN(TestSegmentSegmentExact);
+	TEST_RUN(TestTriangleSegmentExact);
+	TEST_RUN(TestNearlyParallelSegments);
+	TEST_RUN(TestRandomClosestPoint);
+	TEST_RUN(TestRandomPairs);
+	TEST_RUN(TestFarFromOrigin);
+	return TEST_SUMMARY();
+}
