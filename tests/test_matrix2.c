@@ -1,0 +1,166 @@
+/* The whole 2D overlap matrix (every ordered pair of the 6 shape types) against GJK: cd2Overlap
+ * agrees with cd2Distance(a, b).distance == 0 away from the boundary, is symmetric, and is
+ * invariant under a common rigid transform (translation only with an AABB).
+ *
+ * "Away from the boundary": a separated pair counts when its distance exceeds BAND; an
+ * overlapping pair counts when it stays overlapping after B moves by BAND along each of 8
+ * directions (the axes and the diagonals), which means a penetration of at least about
+ * BAND * cos(22.5 degrees) whatever its direction. Half of the pairs are pushed close to touching
+ * (separated or penetrating by 2 to 20 BANDs) so that the boundary is probed, not only the bulk. */
+#include "random_shapes2.h"
+#include "test.h"
+
+#define BAND 1e-3
+
+static cd2Shape Translated(const cd2Shape* shape, cd2Vec offset)
+{
+	cd2Transform t = {offset, CD2_ROT_IDENTITY};
+	return TransformShape(shape, t);
+}
+
+/* 8 unit directions: +-axes and the normalized diagonals. */
+static cd2Vec Direction(int i)
+{
+	cdReal c = CD_R(0.70710678118654752);
+	static const int signs[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+	cdReal scale = i < 4 ? CD_R(1.0) : c;
+	return cd2MakeVec(scale * (cdReal)signs[i][0], scale * (cdReal)signs[i][1]);
+}
+
+static bool DeeplyOverlapping(const cd2Shape* a, const cd2Shape* b)
+{
+	for (int i = 0; i < 8; ++i)
+	{
+		cd2Shape moved = Translated(b, cd2Scale((cdReal)BAND, Direction(i)));
+		if (cd2Distance(a, &moved).distance > CD_R(0.0))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* Moves b along the closest-point direction so that the pair is separated by `gap` (negative:
+ * penetrating by about -gap). Pairs already overlapping are left alone. */
+static cd2Shape PushTowards(const cd2Shape* a, const cd2Shape* b, double gap)
+{
+	cd2ClosestPoints r = cd2Distance(a, b);
+	if (r.distance <= CD_R(0.0))
+	{
+		return *b;
+	}
+	cd2Vec n = cd2Normalize(cd2Sub(r.pointB, r.pointA));
+	return Translated(b, cd2Scale((cdReal)(gap - (double)r.distance), n));
+}
+
+typedef struct MatrixCounts
+{
+	int separated, overlapping, skipped;
+} MatrixCounts;
+
+static void CheckPair(TestRng* rng, const cd2Shape* a, const cd2Shape* b, MatrixCounts* counts)
+{
+	bool ab = cd2Overlap(a, b);
+	bool ba = cd2Overlap(b, a);
+	TEST_CHECKF(ab == ba, "%s/%s: overlap(a,b) = %d, overlap(b,a) = %d", TypeName(a->type), TypeName(b->type),
+				(int)ab, (int)ba);
+	if (ab != ba)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+
+	double distance = (double)cd2Distance(a, b).distance;
+	bool expected;
+	if (distance > BAND)
+	{
+		expected = false;
+		++counts->separated;
+	}
+	else if (distance == 0.0 && DeeplyOverlapping(a, b))
+	{
+		expected = true;
+		++counts->overlapping;
+	}
+	else
+	{
+		++counts->skipped;
+		return;
+	}
+	TEST_CHECKF(ab == expected, "%s/%s: overlap %d, GJK distance %.9g", TypeName(a->type), TypeName(b->type),
+				(int)ab, distance);
+	if (ab != expected)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+
+	cd2Transform t;
+	t.p = RandomVec(rng, 5.0);
+	t.q = (a->type == CD2_SHAPE_AABB || b->type == CD2_SHAPE_AABB) ? CD2_ROT_IDENTITY : RandomRot(rng);
+	cd2Shape ta = TransformShape(a, t), tb = TransformShape(b, t);
+	bool moved = cd2Overlap(&ta, &tb);
+	TEST_CHECKF(moved == expected, "%s/%s: overlap %d after a rigid transform, %d before (distance %.9g)",
+				TypeName(a->type), TypeName(b->type), (int)moved, (int)ab, distance);
+	if (moved != expected)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+}
+
+/* Polygons as the library builds them: cd2MakePolygon on the random convex points. */
+static cd2Shape BuiltShape(TestRng* rng, cd2ShapeType type)
+{
+	cd2Shape shape = RandomShape(rng, type);
+	if (type == CD2_SHAPE_POLYGON)
+	{
+		cd2Polygon built;
+		cdResult result = cd2MakePolygon(shape.polygon.vertices, shape.polygon.count, &built);
+		TEST_CHECKF(result == CD_OK, "cd2MakePolygon failed: %d", (int)result);
+		if (result == CD_OK)
+		{
+			shape.polygon = built;
+		}
+	}
+	return shape;
+}
+
+static void TestOverlapMatrix(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d05u);
+	const int pairsPerCombination = 500;
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			MatrixCounts counts = {0, 0, 0};
+			for (int i = 0; i < pairsPerCombination; ++i)
+			{
+				cd2Shape a = BuiltShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = BuiltShape(&rng, (cd2ShapeType)tb);
+				int mode = TestRngInt(&rng, 4);
+				if (mode == 1)
+				{
+					b = PushTowards(&a, &b, TestRngRange(&rng, 2.0, 20.0) * BAND);
+				}
+				else if (mode == 2)
+				{
+					b = PushTowards(&a, &b, -TestRngRange(&rng, 2.0, 20.0) * BAND);
+				}
+				CheckPair(&rng, &a, &b, &counts);
+			}
+			/* Both outcomes must be exercised, or the pair's check proves little. */
+			TEST_CHECKF(counts.overlapping > 20 && counts.separated > 20,
+						"%s/%s: only %d separated and %d overlapping cases (%d skipped)",
+						TypeName((cd2ShapeType)ta), TypeName((cd2ShapeType)tb), counts.separated,
+						counts.overlapping, counts.skipped);
+		}
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(TestOverlapMatrix);
+	return TEST_SUMMARY();
+}

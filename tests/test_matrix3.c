@@ -1,0 +1,187 @@
+/* The whole 3D overlap matrix (every ordered pair of the 7 shape types) against GJK: cd3Overlap
+ * agrees with cd3Distance(a, b).distance == 0 away from the boundary, is symmetric, and is
+ * invariant under a common rigid transform (translation only with an AABB).
+ *
+ * "Away from the boundary": a separated pair counts when its distance exceeds BAND; an
+ * overlapping pair counts when it stays overlapping after B moves by BAND along each of 14
+ * directions (the axes and the cube diagonals), which means a penetration of at least about
+ * BAND / sqrt(3) whatever its direction. Half of the pairs are pushed close to touching
+ * (separated or penetrating by 2 to 20 BANDs) so that the boundary is probed, not only the bulk. */
+#include "random_shapes3.h"
+#include "test.h"
+
+#define BAND 1e-3
+
+static cd3Shape Translated(const cd3Shape* shape, cd3Vec offset)
+{
+	cd3Transform t = {offset, CD3_QUAT_IDENTITY};
+	return TransformShape(shape, t);
+}
+
+/* 14 unit directions: +-axes and the normalized cube diagonals. */
+static cd3Vec Direction(int i)
+{
+	if (i < 6)
+	{
+		cdReal s = (i & 1) ? CD_R(-1.0) : CD_R(1.0);
+		return i < 2 ? cd3MakeVec(s, CD_R(0.0), CD_R(0.0))
+					 : (i < 4 ? cd3MakeVec(CD_R(0.0), s, CD_R(0.0)) : cd3MakeVec(CD_R(0.0), CD_R(0.0), s));
+	}
+	int k = i - 6;
+	cdReal c = CD_R(0.57735026918962576);
+	return cd3MakeVec((k & 1) ? -c : c, (k & 2) ? -c : c, (k & 4) ? -c : c);
+}
+
+static bool DeeplyOverlapping(const cd3Shape* a, const cd3Shape* b)
+{
+	for (int i = 0; i < 14; ++i)
+	{
+		cd3Shape moved = Translated(b, cd3Scale((cdReal)BAND, Direction(i)));
+		if (cd3Distance(a, &moved).distance > CD_R(0.0))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* Moves b along the closest-point direction so that the pair is separated by `gap` (negative:
+ * penetrating by about -gap). Pairs already overlapping are left alone. */
+static cd3Shape PushTowards(const cd3Shape* a, const cd3Shape* b, double gap)
+{
+	cd3ClosestPoints r = cd3Distance(a, b);
+	if (r.distance <= CD_R(0.0))
+	{
+		return *b;
+	}
+	cd3Vec n = cd3Normalize(cd3Sub(r.pointB, r.pointA));
+	return Translated(b, cd3Scale((cdReal)(gap - (double)r.distance), n));
+}
+
+typedef struct MatrixCounts
+{
+	int separated, overlapping, skipped;
+} MatrixCounts;
+
+static void CheckPair(TestRng* rng, const cd3Shape* a, const cd3Shape* b, MatrixCounts* counts)
+{
+	bool ab = cd3Overlap(a, b);
+	bool ba = cd3Overlap(b, a);
+	TEST_CHECKF(ab == ba, "%s/%s: overlap(a,b) = %d, overlap(b,a) = %d", TypeName(a->type), TypeName(b->type),
+				(int)ab, (int)ba);
+	if (ab != ba)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+
+	double distance = (double)cd3Distance(a, b).distance;
+	bool expected;
+	if (distance > BAND)
+	{
+		expected = false;
+		++counts->separated;
+	}
+	else if (distance == 0.0 && DeeplyOverlapping(a, b))
+	{
+		expected = true;
+		++counts->overlapping;
+	}
+	else
+	{
+		++counts->skipped;
+		return;
+	}
+	TEST_CHECKF(ab == expected, "%s/%s: overlap %d, GJK distance %.9g", TypeName(a->type), TypeName(b->type),
+				(int)ab, distance);
+	if (ab != expected)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+
+	cd3Transform t;
+	t.p = RandomVec(rng, 5.0);
+	t.q = (a->type == CD3_SHAPE_AABB || b->type == CD3_SHAPE_AABB) ? CD3_QUAT_IDENTITY : RandomQuat(rng);
+	cd3Shape ta = TransformShape(a, t), tb = TransformShape(b, t);
+	bool moved = cd3Overlap(&ta, &tb);
+	TEST_CHECKF(moved == expected, "%s/%s: overlap %d after a rigid transform, %d before (distance %.9g)",
+				TypeName(a->type), TypeName(b->type), (int)moved, (int)ab, distance);
+	if (moved != expected)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+}
+
+static void TestOverlapMatrix(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d03u);
+	const int pairsPerCombination = 400;
+	for (int ta = 0; ta < CD3_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD3_SHAPE_TYPE_COUNT; ++tb)
+		{
+			MatrixCounts counts = {0, 0, 0};
+			for (int i = 0; i < pairsPerCombination; ++i)
+			{
+				cd3Shape a = RandomShape(&rng, (cd3ShapeType)ta);
+				cd3Shape b = RandomShape(&rng, (cd3ShapeType)tb);
+				int mode = TestRngInt(&rng, 4);
+				if (mode == 1)
+				{
+					b = PushTowards(&a, &b, TestRngRange(&rng, 2.0, 20.0) * BAND);
+				}
+				else if (mode == 2)
+				{
+					b = PushTowards(&a, &b, -TestRngRange(&rng, 2.0, 20.0) * BAND);
+				}
+				CheckPair(&rng, &a, &b, &counts);
+			}
+			/* Both outcomes must be exercised, or the pair's check proves little. Two random
+			 * half-spaces always meet, and two segments never overlap robustly in 3D. */
+			bool bothPlanes = ta == CD3_SHAPE_PLANE && tb == CD3_SHAPE_PLANE;
+			bool bothSegments = ta == CD3_SHAPE_SEGMENT && tb == CD3_SHAPE_SEGMENT;
+			TEST_CHECKF((counts.overlapping > 20 || bothSegments) && (counts.separated > 20 || bothPlanes),
+						"%s/%s: only %d separated and %d overlapping cases (%d skipped)",
+						TypeName((cd3ShapeType)ta), TypeName((cd3ShapeType)tb), counts.separated,
+						counts.overlapping, counts.skipped);
+		}
+	}
+}
+
+/* Half-spaces are separated only with opposite normals: exactly opposite pairs, apart or not. */
+static void TestOppositePlanes(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d04u);
+	int separated = 0;
+	for (int i = 0; i < 500; ++i)
+	{
+		cd3Shape a = RandomShape(&rng, CD3_SHAPE_PLANE);
+		cd3Shape b = a;
+		b.plane.normal = cd3Neg(a.plane.normal);
+		b.plane.offset = RandomReal(&rng, -3.0, 3.0);
+		double gap = -((double)a.plane.offset + (double)b.plane.offset);
+		if (fabs(gap) <= BAND)
+		{
+			continue;
+		}
+		separated += gap > 0.0;
+		bool expected = gap < 0.0;
+		TEST_CHECKF(cd3Overlap(&a, &b) == expected && cd3Overlap(&b, &a) == expected, "gap %.9g", gap);
+		TEST_CHECKF((cd3Distance(&a, &b).distance == CD_R(0.0)) == expected, "gap %.9g, distance %.9g", gap,
+					(double)cd3Distance(&a, &b).distance);
+		cd3Transform t = {RandomVec(&rng, 5.0), RandomQuat(&rng)};
+		cd3Shape ta = TransformShape(&a, t), tb = TransformShape(&b, t);
+		/* The transformed normals stay opposite up to round-off: the overlap tolerance covers it. */
+		TEST_CHECKF(cd3Overlap(&ta, &tb) == expected, "gap %.9g after a rigid transform", gap);
+	}
+	TEST_CHECK(separated > 100);
+}
+
+int main(void)
+{
+	TEST_RUN(TestOverlapMatrix);
+	TEST_RUN(TestOppositePlanes);
+	return TEST_SUMMARY();
+}
