@@ -1,0 +1,843 @@
+// collide_bench_broad: collide's broadphase structures against Bullet, FCL and Box2D on the same
+// deterministic scenes. For each dimension, N and scene every structure gets the same boxes and
+// the same moves; per frame it is told the moved boxes and must produce the complete set of
+// overlapping pairs, counted on the tight boxes. The counts must agree (and match a reference
+// sweep for N <= 100,000), else the program exits with status 1.
+#include "bench_broad.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <malloc.h>
+#include <map>
+#include <sstream>
+
+namespace bench
+{
+
+// ---- scene -----------------------------------------------------------------------------------
+
+namespace
+{
+
+uint64_t NextRandom(uint64_t& state)
+{
+	uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+	return z ^ (z >> 31);
+}
+
+float Uniform(uint64_t& state, float lo, float hi)
+{
+	return lo + (hi - lo) * float(double(NextRandom(state) >> 11) * (1.0 / 9007199254740992.0));
+}
+
+enum class Motion : uint8_t
+{
+	Still,
+	Moving,
+	Teleporting
+};
+
+struct SceneState
+{
+	std::vector<float> center, half; // 3 per box
+	std::vector<Motion> motion;
+};
+
+std::map<const Scene*, SceneState> gStates;
+
+void SetBox(Box& box, const float* center, const float* half, int dim)
+{
+	for (int axis = 0; axis < 3; ++axis)
+	{
+		box.min[axis] = center[axis] - half[axis];
+		box.max[axis] = center[axis] + half[axis];
+	}
+	if (dim == 2)
+	{
+		box.min[2] = 0.0f;
+		box.max[2] = 1.0f;
+	}
+}
+
+} // namespace
+
+void Scene::Init(int dimension, int count, SceneKind sceneKind, uint64_t seed)
+{
+	dim = dimension;
+	n = count;
+	kind = sceneKind;
+	rngState = seed;
+	// Mean edge 1 m; about 1/8 (3D) or 1/4 (2D) box per unit volume gives about one overlap per box.
+	worldSize = dim == 3 ? 2.0f * std::cbrt(float(n)) : 2.0f * std::sqrt(float(n));
+	worldSize = std::max(worldSize, 8.0f);
+	SceneState& state = gStates[this];
+	state.center.assign(size_t(n) * 3, 0.0f);
+	state.half.assign(size_t(n) * 3, 0.0f);
+	state.motion.assign(size_t(n), Motion::Moving);
+	velocity.assign(size_t(n) * 3, 0.0f);
+	displacement.assign(size_t(n) * 3, 0.0f);
+	boxes.resize(size_t(n));
+	for (size_t i = 0; i < size_t(n); ++i)
+	{
+		for (int axis = 0; axis < dim; ++axis)
+		{
+			state.half[i * 3 + size_t(axis)] = Uniform(rngState, 0.25f, 0.75f);
+			state.center[i * 3 + size_t(axis)] = Uniform(rngState, 0.75f, worldSize - 0.75f);
+			velocity[i * 3 + size_t(axis)] = Uniform(rngState, -1.0f, 1.0f);
+		}
+		if (kind == SceneKind::Mix)
+		{
+			float r = Uniform(rngState, 0.0f, 1.0f);
+			state.motion[i] = r < 0.90f ? Motion::Still : (r < 0.99f ? Motion::Moving : Motion::Teleporting);
+		}
+		SetBox(boxes[i], &state.center[i * 3], &state.half[i * 3], dim);
+	}
+	int queryCount = std::min(1000, std::max(50, n));
+	queries.resize(size_t(queryCount));
+	rays.resize(size_t(queryCount));
+	for (int q = 0; q < queryCount; ++q)
+	{
+		float center[3] = {0.0f, 0.0f, 0.5f}, half[3] = {0.0f, 0.0f, 0.5f};
+		Ray& ray = rays[size_t(q)];
+		float length = std::min(worldSize, 20.0f);
+		float direction[3] = {0.0f, 0.0f, 0.0f}, norm = 0.0f;
+		for (int axis = 0; axis < dim; ++axis)
+		{
+			center[axis] = Uniform(rngState, 0.0f, worldSize);
+			half[axis] = Uniform(rngState, 1.0f, 3.0f);
+			ray.origin[axis] = Uniform(rngState, 0.0f, worldSize);
+			direction[axis] = Uniform(rngState, -1.0f, 1.0f);
+			norm += direction[axis] * direction[axis];
+		}
+		norm = std::sqrt(std::max(norm, 1e-12f));
+		ray.origin[2] = dim == 2 ? 0.5f : ray.origin[2];
+		for (int axis = 0; axis < 3; ++axis)
+		{
+			ray.translation[axis] = direction[axis] * length / norm;
+		}
+		SetBox(queries[size_t(q)], center, half, 3);
+	}
+}
+
+void Scene::Step(int)
+{
+	SceneState& state = gStates[this];
+	moved.clear();
+	for (size_t i = 0; i < size_t(n); ++i)
+	{
+		float* c = &state.center[i * 3];
+		const float* h = &state.half[i * 3];
+		float* v = &velocity[i * 3];
+		float* d = &displacement[i * 3];
+		switch (state.motion[i])
+		{
+			case Motion::Still:
+				continue;
+			case Motion::Moving:
+				for (int axis = 0; axis < dim; ++axis)
+				{
+					float next = c[axis] + v[axis] * timeStep;
+					if (next - h[axis] < 0.0f || next + h[axis] > worldSize)
+					{
+						v[axis] = -v[axis]; // bounce off the walls
+						next = c[axis] + v[axis] * timeStep;
+					}
+					c[axis] = next;
+					d[axis] = v[axis] * timeStep;
+				}
+				break;
+			case Motion::Teleporting:
+				for (int axis = 0; axis < dim; ++axis)
+				{
+					c[axis] = Uniform(rngState, 0.75f, worldSize - 0.75f);
+					d[axis] = 0.0f;
+				}
+				break;
+		}
+		SetBox(boxes[i], c, h, dim);
+		moved.push_back(int(i));
+	}
+}
+
+Box Scene::WorldBounds() const
+{
+	Box world;
+	for (int axis = 0; axis < 3; ++axis)
+	{
+		world.min[axis] = 0.0f;
+		world.max[axis] = axis < dim ? worldSize : 1.0f;
+	}
+	return world;
+}
+
+bool RayHitsBox(const Ray& ray, const Box& box)
+{
+	float tmin = 0.0f, tmax = 1.0f;
+	for (int axis = 0; axis < 3; ++axis)
+	{
+		float o = ray.origin[axis], d = ray.translation[axis];
+		if (d == 0.0f)
+		{
+			if (o < box.min[axis] || o > box.max[axis])
+			{
+				return false;
+			}
+			continue;
+		}
+		float t1 = (box.min[axis] - o) / d, t2 = (box.max[axis] - o) / d;
+		if (t1 > t2)
+		{
+			std::swap(t1, t2);
+		}
+		tmin = std::max(tmin, t1);
+		tmax = std::min(tmax, t2);
+		if (tmin > tmax)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+// ---- pair set --------------------------------------------------------------------------------
+
+void PairSet::Clear()
+{
+	std::fill(slots_.begin(), slots_.end(), kEmpty);
+	count_ = 0;
+}
+
+void PairSet::Grow()
+{
+	std::vector<uint64_t> old;
+	old.swap(slots_);
+	slots_.assign(std::max<size_t>(1024, old.size() * 2), kEmpty);
+	count_ = 0;
+	for (uint64_t key : old)
+	{
+		if (key != kEmpty)
+		{
+			Insert(int(key >> 32), int(key & 0xffffffffu));
+		}
+	}
+}
+
+bool PairSet::Insert(int a, int b)
+{
+	if ((count_ + 1) * 2 > slots_.size())
+	{
+		Grow();
+	}
+	uint64_t key = Key(a, b);
+	size_t mask = slots_.size() - 1;
+	for (size_t slot = Hash(key) & mask;; slot = (slot + 1) & mask)
+	{
+		if (slots_[slot] == key)
+		{
+			return false;
+		}
+		if (slots_[slot] == kEmpty)
+		{
+			slots_[slot] = key;
+			++count_;
+			return true;
+		}
+	}
+}
+
+void PairSet::EraseSlot(size_t slot)
+{
+	size_t mask = slots_.size() - 1;
+	size_t hole = slot;
+	for (size_t next = (hole + 1) & mask; slots_[next] != kEmpty; next = (next + 1) & mask)
+	{
+		size_t home = Hash(slots_[next]) & mask;
+		// Move the element back into the hole unless its home lies cyclically in (hole, next].
+		bool homeBetween = hole <= next ? (hole < home && home <= next) : (hole < home || home <= next);
+		if (!homeBetween)
+		{
+			slots_[hole] = slots_[next];
+			hole = next;
+		}
+	}
+	slots_[hole] = kEmpty;
+	--count_;
+}
+
+} // namespace bench
+
+// ---- harness ---------------------------------------------------------------------------------
+
+namespace
+{
+
+using namespace bench;
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point a, Clock::time_point b)
+{
+	return std::chrono::duration<double>(b - a).count();
+}
+
+size_t HeapBytes()
+{
+	struct mallinfo2 info = mallinfo2();
+	return info.uordblks + info.hblkhd;
+}
+
+// Reference: sort by min x and sweep; counts pairs of tight boxes that overlap.
+size_t ReferencePairCount(const Scene& scene)
+{
+	std::vector<int> order(size_t(scene.n));
+	for (int i = 0; i < scene.n; ++i)
+	{
+		order[size_t(i)] = i;
+	}
+	std::sort(order.begin(), order.end(),
+			  [&](int a, int b) { return scene.boxes[size_t(a)].min[0] < scene.boxes[size_t(b)].min[0]; });
+	size_t count = 0;
+	for (size_t i = 0; i < order.size(); ++i)
+	{
+		const Box& a = scene.boxes[size_t(order[i])];
+		for (size_t j = i + 1; j < order.size(); ++j)
+		{
+			const Box& b = scene.boxes[size_t(order[j])];
+			if (b.min[0] > a.max[0])
+			{
+				break;
+			}
+			count += Overlap(a, b) ? 1 : 0;
+		}
+	}
+	return count;
+}
+
+struct Result
+{
+	int dim = 3;
+	int n = 0;
+	SceneKind kind = SceneKind::Moving;
+	std::string name;
+	bool peer = false;
+	double buildMs = 0, frameMs = 0, queryUs = 0, rayUs = 0;
+	double heapBytesPerProxy = 0, reportedBytesPerProxy = 0;
+	size_t pairs = 0, queryHits = 0, rayHits = 0;
+	bool rayMeasured = false;
+	int framesRun = 0;
+	std::string extra;
+};
+
+struct Options
+{
+	std::vector<int> dims = {3};
+	std::vector<int> ns = {10000};
+	std::vector<SceneKind> scenes = {SceneKind::Moving};
+	std::vector<std::string> structures;
+	int frames = 10;
+	double maxFrameSeconds = 20.0;
+	std::string svgPath, csvPath;
+};
+
+std::vector<std::string> Split(const std::string& text)
+{
+	std::vector<std::string> parts;
+	std::stringstream stream(text);
+	std::string part;
+	while (std::getline(stream, part, ','))
+	{
+		if (!part.empty())
+		{
+			parts.push_back(part);
+		}
+	}
+	return parts;
+}
+
+const char* SceneName(SceneKind kind)
+{
+	return kind == SceneKind::Moving ? "moving" : "mix";
+}
+
+void Usage()
+{
+	std::printf("usage: collide_bench_broad [--dim 2|3|2,3] [--n N[,N...]] [--scene moving|mix|moving,mix]\n"
+				"                           [--structures a,b,...] [--frames K] [--max-frame-seconds S]\n"
+				"                           [--quick] [--svg file] [--csv file] [--list]\n"
+				"structures: tree sap grid octree");
+	for (const std::string& name : PeerNames())
+	{
+		std::printf(" %s", name.c_str());
+	}
+	std::printf("\n");
+}
+
+std::unique_ptr<Adapter> MakeAdapter(const std::string& name, bool* peer)
+{
+	std::unique_ptr<Adapter> adapter = MakeCollideAdapter(name);
+	*peer = false;
+	if (!adapter)
+	{
+		adapter = MakePeerAdapter(name);
+		*peer = adapter != nullptr;
+	}
+	return adapter;
+}
+
+double Median(std::vector<double> values)
+{
+	if (values.empty())
+	{
+		return 0.0;
+	}
+	std::sort(values.begin(), values.end());
+	size_t mid = values.size() / 2;
+	return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector<Result>& results)
+{
+	bool ok = true;
+	std::vector<size_t> expectedCounts;
+	size_t expectedQueryHits = 0, expectedRayHits = 0;
+	bool haveQueryHits = false, haveRayHits = false;
+	std::string firstName;
+	bool checkReference = n <= 100000;
+	std::printf("\n== %dD, N = %d, scene %s, %d frames ==\n", dim, n, SceneName(kind), options.frames);
+	std::printf("%-12s %10s %10s %10s %10s %9s %9s %10s  %s\n", "structure", "build ms", "frame ms",
+				"query us", "ray us", "B/proxy", "B/p stat", "pairs", "notes");
+	for (const std::string& name : options.structures)
+	{
+		bool peer = false;
+		std::unique_ptr<Adapter> adapter = MakeAdapter(name, &peer);
+		if (!adapter || !adapter->SupportsDim(dim))
+		{
+			continue;
+		}
+		Scene scene;
+		scene.Init(dim, n, kind, 0xC011DEULL + uint64_t(n) * 31u + uint64_t(dim));
+		adapter->Prepare(scene);
+
+		Result result;
+		result.dim = dim;
+		result.n = n;
+		result.kind = kind;
+		result.name = adapter->Name();
+		result.peer = peer;
+
+		size_t heapBefore = HeapBytes();
+		Clock::time_point t0 = Clock::now();
+		adapter->Build(scene);
+		Clock::time_point t1 = Clock::now();
+		result.buildMs = 1e3 * Seconds(t0, t1);
+
+		std::vector<size_t> counts;
+		counts.push_back(adapter->UpdateAndCountPairs(scene)); // frame 0: the initial pairs
+		size_t heapAfter = HeapBytes();
+		size_t owned = adapter->BenchOwnedBytes();
+		result.heapBytesPerProxy =
+			double(heapAfter > heapBefore + owned ? heapAfter - heapBefore - owned : 0) / double(n);
+		result.reportedBytesPerProxy = double(adapter->ReportedBytes()) / double(n);
+
+		std::vector<double> frameSeconds;
+		for (int frame = 1; frame <= options.frames; ++frame)
+		{
+			scene.Step(frame);
+			Clock::time_point a = Clock::now();
+			counts.push_back(adapter->UpdateAndCountPairs(scene));
+			Clock::time_point b = Clock::now();
+			frameSeconds.push_back(Seconds(a, b));
+			if (frameSeconds.back() > options.maxFrameSeconds)
+			{
+				break; // too slow to finish in reasonable time; the row says how many frames ran
+			}
+		}
+		result.framesRun = int(frameSeconds.size());
+		result.frameMs = 1e3 * Median(frameSeconds);
+		result.pairs = counts.back();
+
+		if (checkReference && (name == options.structures.front() || firstName.empty()))
+		{
+			size_t reference = ReferencePairCount(scene);
+			if (reference != counts.back())
+			{
+				std::printf("MISMATCH: %s reports %zu pairs in the last frame, reference sweep %zu\n",
+							result.name.c_str(), counts.back(), reference);
+				ok = false;
+			}
+		}
+		if (firstName.empty())
+		{
+			firstName = result.name;
+			expectedCounts = counts;
+		}
+		else
+		{
+			for (size_t f = 0; f < counts.size() && f < expectedCounts.size(); ++f)
+			{
+				if (counts[f] != expectedCounts[f])
+				{
+					std::printf("MISMATCH: frame %zu: %s reports %zu pairs, %s %zu\n", f, result.name.c_str(),
+								counts[f], firstName.c_str(), expectedCounts[f]);
+					ok = false;
+					break;
+				}
+			}
+		}
+
+		Clock::time_point q0 = Clock::now();
+		for (const Box& query : scene.queries)
+		{
+			result.queryHits += adapter->Query(scene, query);
+		}
+		Clock::time_point q1 = Clock::now();
+		result.queryUs = 1e6 * Seconds(q0, q1) / double(scene.queries.size());
+		if (haveQueryHits && result.queryHits != expectedQueryHits)
+		{
+			std::printf("MISMATCH: %s query hits %zu, expected %zu\n", result.name.c_str(), result.queryHits,
+						expectedQueryHits);
+			ok = false;
+		}
+		expectedQueryHits = result.queryHits;
+		haveQueryHits = true;
+
+		if (adapter->SupportsRay())
+		{
+			Clock::time_point r0 = Clock::now();
+			for (const Ray& ray : scene.rays)
+			{
+				result.rayHits += adapter->RayCast(scene, ray);
+			}
+			Clock::time_point r1 = Clock::now();
+			result.rayUs = 1e6 * Seconds(r0, r1) / double(scene.rays.size());
+			result.rayMeasured = true;
+			if (haveRayHits && result.rayHits != expectedRayHits)
+			{
+				std::printf("MISMATCH: %s ray hits %zu, expected %zu\n", result.name.c_str(), result.rayHits,
+							expectedRayHits);
+				ok = false;
+			}
+			expectedRayHits = result.rayHits;
+			haveRayHits = true;
+		}
+		result.extra = adapter->Extra();
+		if (result.framesRun < options.frames)
+		{
+			result.extra += " (stopped after " + std::to_string(result.framesRun) + " frames: too slow)";
+		}
+		char ray[32] = "n/a";
+		if (result.rayMeasured)
+		{
+			std::snprintf(ray, sizeof ray, "%.2f", result.rayUs);
+		}
+		char stat[32] = "-";
+		if (result.reportedBytesPerProxy > 0)
+		{
+			std::snprintf(stat, sizeof stat, "%.0f", result.reportedBytesPerProxy);
+		}
+		std::printf("%-12s %10.2f %10.3f %10.2f %10s %9.0f %9s %10zu  %s\n", result.name.c_str(),
+					result.buildMs, result.frameMs, result.queryUs, ray, result.heapBytesPerProxy, stat,
+					result.pairs, result.extra.c_str());
+		std::fflush(stdout);
+		adapter.reset();
+		gStates.erase(&scene);
+		results.push_back(result);
+	}
+	return ok;
+}
+
+// ---- SVG scaling plot ------------------------------------------------------------------------
+
+const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+						 "#8c564b", "#e377c2", "#7f7f7f", "#17becf", "#bcbd22"};
+
+void WriteSvg(const std::string& path, const std::vector<Result>& results, SceneKind kind)
+{
+	FILE* file = std::fopen(path.c_str(), "w");
+	if (!file)
+	{
+		std::fprintf(stderr, "cannot write %s\n", path.c_str());
+		return;
+	}
+	const double panelW = 420, panelH = 320, left = 60, top = 40, gap = 80;
+	std::vector<int> dims;
+	std::vector<std::string> names;
+	double minN = 1e30, maxN = 0, minT = 1e30, maxT = 0;
+	for (const Result& r : results)
+	{
+		if (r.kind != kind || r.frameMs <= 0)
+		{
+			continue;
+		}
+		if (std::find(dims.begin(), dims.end(), r.dim) == dims.end())
+		{
+			dims.push_back(r.dim);
+		}
+		if (std::find(names.begin(), names.end(), r.name) == names.end())
+		{
+			names.push_back(r.name);
+		}
+		minN = std::min(minN, double(r.n));
+		maxN = std::max(maxN, double(r.n));
+		minT = std::min(minT, r.frameMs);
+		maxT = std::max(maxT, r.frameMs);
+	}
+	std::sort(dims.begin(), dims.end());
+	if (dims.empty())
+	{
+		std::fclose(file);
+		return;
+	}
+	double lx0 = std::floor(std::log10(minN)), lx1 = std::ceil(std::log10(maxN));
+	double ly0 = std::floor(std::log10(minT)), ly1 = std::ceil(std::log10(maxT));
+	lx1 = std::max(lx1, lx0 + 1);
+	ly1 = std::max(ly1, ly0 + 1);
+	double width = left + double(dims.size()) * (panelW + gap) + 140, height = top + panelH + 70;
+	std::fprintf(file,
+				 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+				 "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%%\" height=\"100%%\" "
+				 "fill=\"white\"/>\n",
+				 width, height);
+	std::fprintf(
+		file,
+		"<text x=\"%.0f\" y=\"20\" font-size=\"15\">Broadphase: update + all pairs per frame (scene: %s), "
+		"log-log</text>\n",
+		left, SceneName(kind));
+	for (size_t p = 0; p < dims.size(); ++p)
+	{
+		double x0 = left + double(p) * (panelW + gap), y0 = top;
+		auto X = [&](double n) { return x0 + panelW * (std::log10(n) - lx0) / (lx1 - lx0); };
+		auto Y = [&](double t) { return y0 + panelH - panelH * (std::log10(t) - ly0) / (ly1 - ly0); };
+		std::fprintf(
+			file,
+			"<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"black\"/>\n",
+			x0, y0, panelW, panelH);
+		std::fprintf(file, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\">%dD</text>\n", x0 + 8, y0 + 18,
+					 dims[p]);
+		for (double e = lx0; e <= lx1; e += 1)
+		{
+			std::fprintf(file,
+						 "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>"
+						 "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">1e%.0f</text>\n",
+						 X(std::pow(10, e)), y0, X(std::pow(10, e)), y0 + panelH, X(std::pow(10, e)),
+						 y0 + panelH + 16, e);
+		}
+		for (double e = ly0; e <= ly1; e += 1)
+		{
+			std::fprintf(file,
+						 "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>"
+						 "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%g ms</text>\n",
+						 x0, Y(std::pow(10, e)), x0 + panelW, Y(std::pow(10, e)), x0 - 4,
+						 Y(std::pow(10, e)) + 4, std::pow(10, e));
+		}
+		std::fprintf(file, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">N (boxes)</text>\n",
+					 x0 + panelW / 2, y0 + panelH + 34);
+		for (size_t s = 0; s < names.size(); ++s)
+		{
+			std::vector<const Result*> line;
+			for (const Result& r : results)
+			{
+				if (r.kind == kind && r.dim == dims[p] && r.name == names[s] && r.frameMs > 0)
+				{
+					line.push_back(&r);
+				}
+			}
+			std::sort(line.begin(), line.end(), [](const Result* a, const Result* b) { return a->n < b->n; });
+			if (line.empty())
+			{
+				continue;
+			}
+			const char* color = kColors[s % (sizeof kColors / sizeof kColors[0])];
+			std::fprintf(file, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\"%s points=\"", color,
+						 line.front()->peer ? " stroke-dasharray=\"6,3\"" : "");
+			for (const Result* r : line)
+			{
+				std::fprintf(file, "%.1f,%.1f ", X(r->n), Y(r->frameMs));
+			}
+			std::fprintf(file, "\"/>\n");
+			for (const Result* r : line)
+			{
+				std::fprintf(file, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>\n", X(r->n),
+							 Y(r->frameMs), color);
+			}
+		}
+	}
+	double lx = left + double(dims.size()) * (panelW + gap) - gap + 20;
+	for (size_t s = 0; s < names.size(); ++s)
+	{
+		const char* color = kColors[s % (sizeof kColors / sizeof kColors[0])];
+		bool peer = false;
+		for (const Result& r : results)
+		{
+			if (r.name == names[s])
+			{
+				peer = r.peer;
+			}
+		}
+		double y = top + 14 + 20 * double(s);
+		std::fprintf(
+			file,
+			"<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"2\"%s/>"
+			"<text x=\"%.1f\" y=\"%.1f\">%s</text>\n",
+			lx, y, lx + 24, y, color, peer ? " stroke-dasharray=\"6,3\"" : "", lx + 30, y + 4,
+			names[s].c_str());
+	}
+	std::fprintf(
+		file,
+		"<text x=\"%.0f\" y=\"%.0f\" fill=\"#555\">solid: collide; dashed: peers. Median time per frame; "
+		"pair counts identical for every structure.</text>\n</svg>\n",
+		left, height - 8);
+	std::fclose(file);
+}
+
+void WriteCsv(const std::string& path, const std::vector<Result>& results)
+{
+	FILE* file = std::fopen(path.c_str(), "w");
+	if (!file)
+	{
+		return;
+	}
+	std::fprintf(file, "dim,n,scene,structure,peer,build_ms,frame_ms,query_us,ray_us,heap_bytes_per_proxy,"
+					   "stats_bytes_per_proxy,pairs,frames,notes\n");
+	for (const Result& r : results)
+	{
+		std::fprintf(file, "%d,%d,%s,%s,%d,%.3f,%.4f,%.3f,%s,%.1f,%.1f,%zu,%d,\"%s\"\n", r.dim, r.n,
+					 SceneName(r.kind), r.name.c_str(), r.peer ? 1 : 0, r.buildMs, r.frameMs, r.queryUs,
+					 r.rayMeasured ? std::to_string(r.rayUs).c_str() : "", r.heapBytesPerProxy,
+					 r.reportedBytesPerProxy, r.pairs, r.framesRun, r.extra.c_str());
+	}
+	std::fclose(file);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+	Options options;
+	options.structures = {"tree", "sap", "grid", "octree"};
+	for (const std::string& peer : PeerNames())
+	{
+		options.structures.push_back(peer);
+	}
+	bool quick = false;
+	for (int i = 1; i < argc; ++i)
+	{
+		std::string arg = argv[i];
+		auto value = [&]() -> std::string
+		{
+			if (i + 1 >= argc)
+			{
+				Usage();
+				std::exit(2);
+			}
+			return argv[++i];
+		};
+		if (arg == "--dim")
+		{
+			options.dims.clear();
+			for (const std::string& d : Split(value()))
+			{
+				options.dims.push_back(std::atoi(d.c_str()));
+			}
+		}
+		else if (arg == "--n")
+		{
+			options.ns.clear();
+			for (const std::string& n : Split(value()))
+			{
+				options.ns.push_back(int(std::atof(n.c_str())));
+			}
+		}
+		else if (arg == "--scene")
+		{
+			options.scenes.clear();
+			for (const std::string& s : Split(value()))
+			{
+				options.scenes.push_back(s == "mix" ? SceneKind::Mix : SceneKind::Moving);
+			}
+		}
+		else if (arg == "--structures")
+		{
+			options.structures = Split(value());
+		}
+		else if (arg == "--frames")
+		{
+			options.frames = std::max(1, std::atoi(value().c_str()));
+		}
+		else if (arg == "--max-frame-seconds")
+		{
+			options.maxFrameSeconds = std::atof(value().c_str());
+		}
+		else if (arg == "--svg")
+		{
+			options.svgPath = value();
+		}
+		else if (arg == "--csv")
+		{
+			options.csvPath = value();
+		}
+		else if (arg == "--quick")
+		{
+			quick = true;
+		}
+		else if (arg == "--list")
+		{
+			Usage();
+			return 0;
+		}
+		else
+		{
+			Usage();
+			return 2;
+		}
+	}
+	if (quick)
+	{
+		options.dims = {2, 3};
+		options.ns = {300};
+		options.scenes = {SceneKind::Moving, SceneKind::Mix};
+		options.frames = 2;
+	}
+	for (const std::string& name : options.structures)
+	{
+		bool peer = false;
+		if (!MakeAdapter(name, &peer))
+		{
+			std::fprintf(stderr, "unknown structure '%s'\n", name.c_str());
+			Usage();
+			return 2;
+		}
+	}
+	std::printf(
+		"collide_bench_broad: median time per frame of (move the boxes' proxies + complete set of\n"
+		"overlapping pairs, counted on the tight boxes); query/ray: mean per call over %s calls.\n"
+		"B/proxy: heap growth (glibc mallinfo2) over build + first frame, minus the bench's own pair set.\n",
+		"up to 1000");
+	bool ok = true;
+	std::vector<Result> results;
+	for (int dim : options.dims)
+	{
+		for (SceneKind kind : options.scenes)
+		{
+			for (int n : options.ns)
+			{
+				ok = RunCase(options, dim, n, kind, results) && ok;
+			}
+		}
+	}
+	if (!options.svgPath.empty())
+	{
+		WriteSvg(options.svgPath, results, options.scenes.front());
+	}
+	if (!options.csvPath.empty())
+	{
+		WriteCsv(options.csvPath, results);
+	}
+	std::printf(ok ? "\nall pair, query and ray counts agree\n" : "\nCOUNTS DISAGREE\n");
+	return ok ? 0 : 1;
+}

@@ -1,0 +1,280 @@
+// collide's own structures behind the bench adapter, through the public C API only.
+#include "bench_broad.h"
+
+#include <collide/broad.h>
+
+#include <cstdio>
+
+namespace bench
+{
+namespace
+{
+
+cd3Aabb To3(const Box& b)
+{
+	cd3Aabb a;
+	a.min = {cdReal(b.min[0]), cdReal(b.min[1]), cdReal(b.min[2])};
+	a.max = {cdReal(b.max[0]), cdReal(b.max[1]), cdReal(b.max[2])};
+	return a;
+}
+
+cd2Aabb To2(const Box& b)
+{
+	cd2Aabb a;
+	a.min = {cdReal(b.min[0]), cdReal(b.min[1])};
+	a.max = {cdReal(b.max[0]), cdReal(b.max[1])};
+	return a;
+}
+
+struct QueryContext
+{
+	const Scene* scene;
+	const Box* box;
+	const Ray* ray;
+	size_t hits;
+};
+
+bool Query3(int, uint64_t userData, void* context)
+{
+	QueryContext* q = static_cast<QueryContext*>(context);
+	q->hits += Overlap(q->scene->boxes[size_t(userData)], *q->box) ? 1 : 0;
+	return true;
+}
+
+bool Query2(int proxyId, uint64_t userData, void* context)
+{
+	return Query3(proxyId, userData, context);
+}
+
+cdReal Ray3(cd3Ray, cdReal maxFraction, int, uint64_t userData, void* context)
+{
+	QueryContext* q = static_cast<QueryContext*>(context);
+	q->hits += RayHitsBox(*q->ray, q->scene->boxes[size_t(userData)]) ? 1 : 0;
+	return maxFraction; // every box the ray meets, no clipping
+}
+
+cdReal Ray2(cd2Ray, cdReal maxFraction, int, uint64_t userData, void* context)
+{
+	return Ray3(cd3Ray(), maxFraction, 0, userData, context);
+}
+
+void AddPair(int, int, uint64_t userDataA, uint64_t userDataB, void* context)
+{
+	static_cast<PairSet*>(context)->Insert(int(userDataA), int(userDataB));
+}
+
+bool FatOverlap3(cd3Aabb a, cd3Aabb b)
+{
+	return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
+		   a.min.z <= b.max.z && b.min.z <= a.max.z;
+}
+
+bool FatOverlap2(cd2Aabb a, cd2Aabb b)
+{
+	return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+
+class CollideAdapter : public Adapter
+{
+  public:
+	CollideAdapter(const std::string& name, cdBroadPhaseType type) : name_(name), type_(type)
+	{
+	}
+	~CollideAdapter() override
+	{
+		if (bp3_)
+		{
+			cd3BroadPhase_Destroy(bp3_);
+		}
+		if (bp2_)
+		{
+			cd2BroadPhase_Destroy(bp2_);
+		}
+	}
+	std::string Name() const override
+	{
+		return name_;
+	}
+	bool SupportsDim(int) const override
+	{
+		return true;
+	}
+
+	void Build(const Scene& scene) override
+	{
+		dim_ = scene.dim;
+		Box world = scene.WorldBounds();
+		proxies_.resize(size_t(scene.n));
+		if (dim_ == 3)
+		{
+			cd3BroadPhaseDef def = cd3DefaultBroadPhaseDef();
+			def.type = type_;
+			def.bounds = To3(world);
+			def.capacity = scene.n;
+			if (cd3BroadPhase_Create(&def, &bp3_) != CD_OK)
+			{
+				std::fprintf(stderr, "%s: cd3BroadPhase_Create failed\n", name_.c_str());
+				std::exit(2);
+			}
+			for (int i = 0; i < scene.n; ++i)
+			{
+				proxies_[size_t(i)] =
+					cd3BroadPhase_CreateProxy(bp3_, To3(scene.boxes[size_t(i)]), uint64_t(i));
+			}
+		}
+		else
+		{
+			cd2BroadPhaseDef def = cd2DefaultBroadPhaseDef();
+			def.type = type_;
+			def.bounds = To2(world);
+			def.capacity = scene.n;
+			if (cd2BroadPhase_Create(&def, &bp2_) != CD_OK)
+			{
+				std::fprintf(stderr, "%s: cd2BroadPhase_Create failed\n", name_.c_str());
+				std::exit(2);
+			}
+			for (int i = 0; i < scene.n; ++i)
+			{
+				proxies_[size_t(i)] =
+					cd2BroadPhase_CreateProxy(bp2_, To2(scene.boxes[size_t(i)]), uint64_t(i));
+			}
+		}
+	}
+
+	size_t UpdateAndCountPairs(const Scene& scene) override
+	{
+		size_t count = 0;
+		if (dim_ == 3)
+		{
+			for (int i : scene.moved)
+			{
+				const float* d = &scene.displacement[size_t(i) * 3];
+				cd3BroadPhase_MoveProxy(bp3_, proxies_[size_t(i)], To3(scene.boxes[size_t(i)]),
+										cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])});
+			}
+			cd3BroadPhase_UpdatePairs(bp3_, AddPair, &pairs_);
+			pairs_.RemoveIf(
+				[&](int a, int b)
+				{
+					if (!FatOverlap3(cd3BroadPhase_GetFatAabb(bp3_, proxies_[size_t(a)]),
+									 cd3BroadPhase_GetFatAabb(bp3_, proxies_[size_t(b)])))
+					{
+						return false;
+					}
+					count += Overlap(scene.boxes[size_t(a)], scene.boxes[size_t(b)]) ? 1 : 0;
+					return true;
+				});
+		}
+		else
+		{
+			for (int i : scene.moved)
+			{
+				const float* d = &scene.displacement[size_t(i) * 3];
+				cd2BroadPhase_MoveProxy(bp2_, proxies_[size_t(i)], To2(scene.boxes[size_t(i)]),
+										cd2Vec{cdReal(d[0]), cdReal(d[1])});
+			}
+			cd2BroadPhase_UpdatePairs(bp2_, AddPair, &pairs_);
+			pairs_.RemoveIf(
+				[&](int a, int b)
+				{
+					if (!FatOverlap2(cd2BroadPhase_GetFatAabb(bp2_, proxies_[size_t(a)]),
+									 cd2BroadPhase_GetFatAabb(bp2_, proxies_[size_t(b)])))
+					{
+						return false;
+					}
+					count += Overlap(scene.boxes[size_t(a)], scene.boxes[size_t(b)]) ? 1 : 0;
+					return true;
+				});
+		}
+		return count;
+	}
+
+	size_t Query(const Scene& scene, const Box& box) override
+	{
+		QueryContext q{&scene, &box, nullptr, 0};
+		if (dim_ == 3)
+		{
+			cd3BroadPhase_Query(bp3_, To3(box), Query3, &q);
+		}
+		else
+		{
+			cd2BroadPhase_Query(bp2_, To2(box), Query2, &q);
+		}
+		return q.hits;
+	}
+
+	size_t RayCast(const Scene& scene, const Ray& ray) override
+	{
+		QueryContext q{&scene, nullptr, &ray, 0};
+		if (dim_ == 3)
+		{
+			cd3Ray r;
+			r.origin = {cdReal(ray.origin[0]), cdReal(ray.origin[1]), cdReal(ray.origin[2])};
+			r.translation = {cdReal(ray.translation[0]), cdReal(ray.translation[1]),
+							 cdReal(ray.translation[2])};
+			cd3BroadPhase_RayCast(bp3_, r, Ray3, &q);
+		}
+		else
+		{
+			cd2Ray r;
+			r.origin = {cdReal(ray.origin[0]), cdReal(ray.origin[1])};
+			r.translation = {cdReal(ray.translation[0]), cdReal(ray.translation[1])};
+			cd2BroadPhase_RayCast(bp2_, r, Ray2, &q);
+		}
+		return q.hits;
+	}
+
+	size_t BenchOwnedBytes() const override
+	{
+		return pairs_.Bytes() + proxies_.capacity() * sizeof(int);
+	}
+
+	size_t ReportedBytes() const override
+	{
+		cdBroadPhaseStats stats = dim_ == 3 ? cd3BroadPhase_GetStats(bp3_) : cd2BroadPhase_GetStats(bp2_);
+		return stats.memoryBytes;
+	}
+
+	std::string Extra() const override
+	{
+		cdBroadPhaseStats stats = dim_ == 3 ? cd3BroadPhase_GetStats(bp3_) : cd2BroadPhase_GetStats(bp2_);
+		bool valid = dim_ == 3 ? cd3BroadPhase_Validate(bp3_) : cd2BroadPhase_Validate(bp2_);
+		char text[160];
+		std::snprintf(text, sizeof text, "nodes=%d height=%d sah=%.1f valid=%s", stats.nodeCount,
+					  stats.height, stats.sahCost, valid ? "yes" : "NO");
+		return text;
+	}
+
+  private:
+	std::string name_;
+	cdBroadPhaseType type_;
+	int dim_ = 3;
+	cd3BroadPhase* bp3_ = nullptr;
+	cd2BroadPhase* bp2_ = nullptr;
+	std::vector<int> proxies_;
+	PairSet pairs_;
+};
+
+} // namespace
+
+std::unique_ptr<Adapter> MakeCollideAdapter(const std::string& name)
+{
+	static const struct
+	{
+		const char* name;
+		cdBroadPhaseType type;
+	} kTypes[] = {{"tree", CD_BROADPHASE_TREE},
+				  {"sap", CD_BROADPHASE_SAP},
+				  {"grid", CD_BROADPHASE_GRID},
+				  {"octree", CD_BROADPHASE_SPATIAL_TREE}};
+	for (const auto& t : kTypes)
+	{
+		if (name == t.name)
+		{
+			return std::unique_ptr<Adapter>(new CollideAdapter(name, t.type));
+		}
+	}
+	return nullptr;
+}
+
+} // namespace bench
