@@ -58,6 +58,7 @@ typedef struct Loader
 	int dimension;
 	const char* shapeName; /* for messages; NULL before the shape's name is known */
 	int shapeIndex;
+	const char* sceneName; /* for messages about a scene itself */
 } Loader;
 
 static void pushKey(Loader* loader, const char* key)
@@ -121,7 +122,8 @@ failAt(Loader* loader, const char* key, const char* format, ...)
 	va_start(args, format);
 	vsnprintf(reason, sizeof reason, format, args);
 	va_end(args);
-	loader->error->line = currentLine(loader, key);
+	/* An error about a whole shape points at its name: that is where a reader looks for it. */
+	loader->error->line = currentLine(loader, key == NULL && loader->shapeName != NULL ? "name" : key);
 	if (loader->shapeName != NULL)
 	{
 		snprintf(loader->error->message, sizeof loader->error->message, "shape \"%s\": %s", loader->shapeName,
@@ -131,6 +133,11 @@ failAt(Loader* loader, const char* key, const char* format, ...)
 	{
 		snprintf(loader->error->message, sizeof loader->error->message, "shape #%d: %s",
 				 loader->shapeIndex + 1, reason);
+	}
+	else if (loader->sceneName != NULL)
+	{
+		snprintf(loader->error->message, sizeof loader->error->message, "scene \"%s\": %s", loader->sceneName,
+				 reason);
 	}
 	else
 	{
@@ -189,7 +196,7 @@ static bool checkKeys(Loader* loader, const cJSON* object, const char* const* al
 				size_t used = strlen(list);
 				snprintf(list + used, sizeof list - used, "%s\"%s\"", i > 0 ? ", " : "", allowed[i]);
 			}
-			return failAt(loader, NULL, "unknown field \"%.64s\" (expected %s)", key, list);
+			return failAt(loader, key, "unknown field \"%.64s\" (expected %s)", key, list);
 		}
 		for (const cJSON* other = object->child; other != child; other = other->next)
 		{
@@ -495,6 +502,22 @@ static bool readAabbBounds(Loader* loader, const cJSON* object, double min[3], d
  * they did not write. Collinear and repeated corners are allowed (the builder drops them). */
 static bool checkConvexOrder(Loader* loader, const double (*points)[3], int count)
 {
+	/* All corners on one line: the builder reports that as degenerate, which says it best. */
+	int distinct = 1;
+	while (distinct < count && points[distinct][0] == points[0][0] && points[distinct][1] == points[0][1])
+	{
+		++distinct;
+	}
+	bool collinear = true;
+	for (int i = distinct + 1; i < count && collinear; ++i)
+	{
+		collinear = (points[distinct][0] - points[0][0]) * (points[i][1] - points[0][1]) ==
+					(points[distinct][1] - points[0][1]) * (points[i][0] - points[0][0]);
+	}
+	if (collinear)
+	{
+		return true;
+	}
 	int sign = 0;
 	double turning = 0.0;
 	for (int i = 0; i < count; ++i)
@@ -915,6 +938,7 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 	static const char* const sceneFields[] = {"name", "dimension", "shapes", NULL};
 	loader->shapeName = NULL;
 	loader->shapeIndex = -1;
+	loader->sceneName = NULL;
 	if (!cJSON_IsObject(object))
 	{
 		return failAt(loader, NULL, "a scene must be an object, not %s", jsonTypeName(object));
@@ -928,6 +952,7 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 	{
 		return false;
 	}
+	loader->sceneName = scene->name;
 	double dimension;
 	if (!readNumber(loader, object, "dimension", &dimension))
 	{
@@ -943,7 +968,7 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 	const cJSON* shapes = cJSON_GetObjectItemCaseSensitive(object, "shapes");
 	if (shapes == NULL)
 	{
-		return failAt(loader, NULL, "scene \"%s\": missing field \"shapes\"", scene->name);
+		return failAt(loader, NULL, "missing field \"shapes\"");
 	}
 	if (!cJSON_IsArray(shapes))
 	{
@@ -954,8 +979,7 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 	{
 		if (++count > TOOL_MAX_SHAPES_PER_SCENE)
 		{
-			return failAt(loader, "shapes", "scene \"%s\" has more than %d shapes", scene->name,
-						  TOOL_MAX_SHAPES_PER_SCENE);
+			return failAt(loader, "shapes", "more than %d shapes", TOOL_MAX_SHAPES_PER_SCENE);
 		}
 	}
 	scene->shapes = count > 0 ? calloc((size_t)count, sizeof(ToolShape)) : NULL;
@@ -1161,7 +1185,12 @@ static bool syntaxError(const char* text, size_t length, size_t offset, ToolErro
 	}
 	if (rest >= length)
 	{
-		return fail(error, jsonLineOfOffset(text, length, length),
+		size_t last = length;
+		while (last > 0 && strchr(" \t\r\n", text[last - 1]) != NULL)
+		{
+			--last;
+		}
+		return fail(error, jsonLineOfOffset(text, length, last > 0 ? last - 1 : 0),
 					"JSON syntax error: unexpected end of file (unclosed bracket, brace or string?)");
 	}
 	char near[32];

@@ -1,0 +1,33 @@
+# Runs `collide query FILE` on one malformed input and checks what a user sees: exit code 2 (and
+# not a crash), one line on stderr that starts with "FILE:LINE: " (or "FILE: " with NO_LINE) and
+# names the reason, and no sanitizer report.
+#   -DTOOL=path -DFILE=path [-DLINE=n] [-DREASON=regex] [-DNO_LINE=ON]
+execute_process(COMMAND ${TOOL} query ${FILE}
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(context "collide query ${FILE}\nexit: ${status}\nstdout: ${out}\nstderr: ${err}")
+if(NOT status STREQUAL "2")
+  message(FATAL_ERROR "expected exit code 2\n${context}")
+endif()
+if(err MATCHES "Sanitizer|runtime error|Segmentation|Aborted|assertion failed")
+  message(FATAL_ERROR "the tool crashed or a sanitizer complained\n${context}")
+endif()
+string(FIND "${err}" "${FILE}:" where)
+if(NOT where EQUAL 0)
+  message(FATAL_ERROR "stderr does not start with the file name\n${context}")
+endif()
+string(LENGTH "${FILE}:" prefix)
+string(SUBSTRING "${err}" ${prefix} -1 rest)
+if(DEFINED LINE)
+  if(NOT rest MATCHES "^${LINE}: [^\n]+\n$")
+    message(FATAL_ERROR "expected \"${FILE}:${LINE}: reason\" on one line\n${context}")
+  endif()
+elseif(NO_LINE)
+  if(NOT rest MATCHES "^ [^\n]+\n$")
+    message(FATAL_ERROR "expected \"${FILE}: reason\" on one line\n${context}")
+  endif()
+elseif(NOT rest MATCHES "^([0-9]+:)? [^\n]+\n$")
+  message(FATAL_ERROR "expected \"${FILE}:LINE: reason\" on one line\n${context}")
+endif()
+if(DEFINED REASON AND NOT rest MATCHES "${REASON}")
+  message(FATAL_ERROR "the reason does not match \"${REASON}\"\n${context}")
+endif()
