@@ -92,9 +92,12 @@ cd2Vec cd2ClosestPointOnPolygon(const cd2Polygon* polygon, cd2Vec p)
 }
 
 /* Closest points between two 2D segments: either they cross (distance 0 at the crossing) or one of
- * the four endpoints is part of a closest pair. Deciding between the two with orientation signs
- * avoids the division by the near-zero determinant of parallel segments, and zero-length segments
- * need no special case. */
+ * the four endpoints is part of a closest pair. Orientation signs pick the crossing case, which
+ * avoids the division by the near-zero determinant of parallel segments; zero-length segments need
+ * no special case. Round-off can make nearly collinear segments look crossing, so the computed
+ * crossing counts only when it lies on both segments within round-off (16 * CD_REAL_EPSILON of the
+ * largest coordinate); otherwise it is one more candidate pair, and the nearest candidate wins.
+ * Every candidate is a true pair of points on a and b. */
 cd2ClosestPoints cd2ClosestPointsSegmentSegment(cd2Segment a, cd2Segment b)
 {
 	cd2Vec da = cd2Sub(a.p2, a.p1);
@@ -107,24 +110,37 @@ cd2ClosestPoints cd2ClosestPointsSegmentSegment(cd2Segment a, cd2Segment b)
 		(b1Side > CD_R(0.0) && b2Side < CD_R(0.0)) || (b1Side < CD_R(0.0) && b2Side > CD_R(0.0));
 	bool aStraddles =
 		(a1Side > CD_R(0.0) && a2Side < CD_R(0.0)) || (a1Side < CD_R(0.0) && a2Side > CD_R(0.0));
+
+	cd2Vec candidatesA[5] = {a.p1, a.p2, cd2ClosestPointOnSegment(a, b.p1),
+							 cd2ClosestPointOnSegment(a, b.p2)};
+	cd2Vec candidatesB[5] = {cd2ClosestPointOnSegment(b, a.p1), cd2ClosestPointOnSegment(b, a.p2), b.p1,
+							 b.p2};
+	int candidateCount = 4;
 	cd2ClosestPoints result;
 	if (aStraddles && bStraddles)
 	{
-		/* a1Side and a2Side have opposite signs: the fraction lies strictly inside (0, 1). */
-		cdReal t = a1Side / (a1Side - a2Side);
-		result.pointA = cd2MulAdd(a.p1, t, da);
-		result.pointB = result.pointA;
-		result.distance = CD_R(0.0);
-		return result;
+		/* a1Side and a2Side have opposite signs: the fraction lies inside [0, 1]. */
+		cdReal t = cdClamp(a1Side / (a1Side - a2Side), CD_R(0.0), CD_R(1.0));
+		cd2Vec crossing = cd2MulAdd(a.p1, t, da);
+		cd2Vec onB = cd2ClosestPointOnSegment(b, crossing);
+		cdReal scale = cdMax(cdMax(cdMax(cdAbs(a.p1.x), cdAbs(a.p1.y)), cdMax(cdAbs(a.p2.x), cdAbs(a.p2.y))),
+							 cdMax(cdMax(cdAbs(b.p1.x), cdAbs(b.p1.y)), cdMax(cdAbs(b.p2.x), cdAbs(b.p2.y))));
+		cdReal tolerance = CD_R(16.0) * CD_REAL_EPSILON * scale;
+		if (cd2VecDistanceSquared(crossing, onB) <= tolerance * tolerance)
+		{
+			result.pointA = crossing;
+			result.pointB = crossing;
+			result.distance = CD_R(0.0);
+			return result;
+		}
+		candidatesA[4] = crossing;
+		candidatesB[4] = onB;
+		candidateCount = 5;
 	}
 
-	cd2Vec candidatesA[4] = {a.p1, a.p2, cd2ClosestPointOnSegment(a, b.p1),
-							 cd2ClosestPointOnSegment(a, b.p2)};
-	cd2Vec candidatesB[4] = {cd2ClosestPointOnSegment(b, a.p1), cd2ClosestPointOnSegment(b, a.p2), b.p1,
-							 b.p2};
 	int best = 0;
 	cdReal bestDistanceSquared = cd2VecDistanceSquared(candidatesA[0], candidatesB[0]);
-	for (int i = 1; i < 4; ++i)
+	for (int i = 1; i < candidateCount; ++i)
 	{
 		cdReal distanceSquared = cd2VecDistanceSquared(candidatesA[i], candidatesB[i]);
 		if (distanceSquared < bestDistanceSquared)
