@@ -147,6 +147,46 @@ static inline cd2Shape TransformShape(const cd2Shape* shape, cd2Transform t)
 	return s;
 }
 
+/* The shape scaled by k about the origin (positions and sizes alike). */
+static inline cd2Shape ScaleShape(const cd2Shape* shape, cdReal k)
+{
+	cd2Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = cd2Scale(k, shape->circle.center);
+			s.circle.radius = k * shape->circle.radius;
+			break;
+		case CD2_SHAPE_CAPSULE:
+			s.capsule.p1 = cd2Scale(k, shape->capsule.p1);
+			s.capsule.p2 = cd2Scale(k, shape->capsule.p2);
+			s.capsule.radius = k * shape->capsule.radius;
+			break;
+		case CD2_SHAPE_AABB:
+			s.aabb.min = cd2Scale(k, shape->aabb.min);
+			s.aabb.max = cd2Scale(k, shape->aabb.max);
+			break;
+		case CD2_SHAPE_BOX:
+			s.box.center = cd2Scale(k, shape->box.center);
+			s.box.halfExtents = cd2Scale(k, shape->box.halfExtents);
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < shape->polygon.count; ++i)
+			{
+				s.polygon.vertices[i] = cd2Scale(k, shape->polygon.vertices[i]);
+			}
+			s.polygon.centroid = cd2Scale(k, shape->polygon.centroid);
+			break;
+		case CD2_SHAPE_SEGMENT:
+			s.segment.p1 = cd2Scale(k, shape->segment.p1);
+			s.segment.p2 = cd2Scale(k, shape->segment.p2);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
 static inline const char* TypeName(cd2ShapeType type)
 {
 	static const char* names[] = {"circle", "capsule", "aabb", "box", "polygon", "segment"};

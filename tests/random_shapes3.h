@@ -141,6 +141,47 @@ static inline cd3Shape TransformShape(const cd3Shape* shape, cd3Transform t)
 	return s;
 }
 
+/* The shape scaled by k about the origin (positions and sizes alike). */
+static inline cd3Shape ScaleShape(const cd3Shape* shape, cdReal k)
+{
+	cd3Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			s.sphere.center = cd3Scale(k, shape->sphere.center);
+			s.sphere.radius = k * shape->sphere.radius;
+			break;
+		case CD3_SHAPE_CAPSULE:
+			s.capsule.p1 = cd3Scale(k, shape->capsule.p1);
+			s.capsule.p2 = cd3Scale(k, shape->capsule.p2);
+			s.capsule.radius = k * shape->capsule.radius;
+			break;
+		case CD3_SHAPE_AABB:
+			s.aabb.min = cd3Scale(k, shape->aabb.min);
+			s.aabb.max = cd3Scale(k, shape->aabb.max);
+			break;
+		case CD3_SHAPE_BOX:
+			s.box.center = cd3Scale(k, shape->box.center);
+			s.box.halfExtents = cd3Scale(k, shape->box.halfExtents);
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			s.triangle.a = cd3Scale(k, shape->triangle.a);
+			s.triangle.b = cd3Scale(k, shape->triangle.b);
+			s.triangle.c = cd3Scale(k, shape->triangle.c);
+			break;
+		case CD3_SHAPE_PLANE:
+			s.plane.offset = k * shape->plane.offset;
+			break;
+		case CD3_SHAPE_SEGMENT:
+			s.segment.p1 = cd3Scale(k, shape->segment.p1);
+			s.segment.p2 = cd3Scale(k, shape->segment.p2);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
 static inline const char* TypeName(cd3ShapeType type)
 {
 	static const char* names[] = {"sphere", "capsule", "aabb", "box", "triangle", "plane", "segment"};

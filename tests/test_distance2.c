@@ -272,6 +272,11 @@ static bool CheckResult(const cd2Shape* a, const cd2Shape* b, cd2ClosestPoints r
 	return ok && same;
 }
 
+static bool CheckFinitePoints(cd2ClosestPoints r)
+{
+	return cd2IsValidVec(r.pointA) && cd2IsValidVec(r.pointB);
+}
+
 static double g_maxError = 0.0;
 
 static void CheckPair(TestRng* rng, const cd2Shape* a, const cd2Shape* b)
@@ -501,6 +506,52 @@ static void TestScales(void)
 	}
 }
 
+/* Every pair scaled as a whole to the ends of the documented range (1e-9..1e9 in float,
+ * 1e-30..1e30 in double): finite answers that scale with the shapes; and pairs whose two shapes
+ * differ in size by up to 18 (float) or 60 (double) orders of magnitude: finite answers. */
+static void TestExtremeScales(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d06u);
+#if CD_DOUBLE
+	const double exponents = 30.0;
+#else
+	const double exponents = 9.0;
+#endif
+	for (int i = 0; i < 4000; ++i)
+	{
+		cd2Shape a = RandomShape(&rng, (cd2ShapeType)TestRngInt(&rng, CD2_SHAPE_TYPE_COUNT));
+		cd2Shape b = RandomShape(&rng, (cd2ShapeType)TestRngInt(&rng, CD2_SHAPE_TYPE_COUNT));
+		double k = pow(10.0, TestRngRange(&rng, -exponents, exponents));
+		cd2Shape sa = ScaleShape(&a, (cdReal)k), sb = ScaleShape(&b, (cdReal)k);
+		double expected = RefDistance(&sa, &sb) / k;
+		double unit = RefDistance(&a, &b);
+		cd2ClosestPoints r = cd2Distance(&sa, &sb);
+		bool ok = isfinite((double)r.distance) && CheckFinitePoints(r) &&
+				  fabs((double)r.distance / k - expected) <= 1e-3 * (1.0 + expected) &&
+				  fabs(expected - unit) <= 1e-3 * (1.0 + unit);
+		TEST_CHECKF(ok, "scale %g: distance / scale = %.9g, reference %.9g (unscaled %.9g)", k,
+					(double)r.distance / k, expected, unit);
+		if (!ok)
+		{
+			PrintShape("a", &sa);
+			PrintShape("b", &sb);
+		}
+
+		double k2 = pow(10.0, TestRngRange(&rng, -exponents, exponents));
+		cd2Shape mixed = ScaleShape(&b, (cdReal)k2);
+		r = cd2Distance(&sa, &mixed);
+		cd2ClosestPoints s = cd2Distance(&mixed, &sa);
+		ok = isfinite((double)r.distance) && r.distance >= CD_R(0.0) && CheckFinitePoints(r) &&
+			 isfinite((double)s.distance) && CheckFinitePoints(s);
+		TEST_CHECKF(ok, "scales %g and %g: distance %g", k, k2, (double)r.distance);
+		if (!ok)
+		{
+			PrintShape("a", &sa);
+			PrintShape("b", &mixed);
+		}
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestCircles);
@@ -508,5 +559,6 @@ int main(void)
 	TEST_RUN(TestCapsulesAndSegments);
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);
+	TEST_RUN(TestExtremeScales);
 	return TEST_SUMMARY();
 }

@@ -246,10 +246,17 @@ static bool RefPointInBox(const RefShape* r, DVec p)
 		return false;
 	}
 	DVec d = DSub(p, r->center);
-	const double slack = 1e-12;
-	return fabs(DDot(d, r->axes[0])) <= r->halfExtents.x + slack &&
-		   fabs(DDot(d, r->axes[1])) <= r->halfExtents.y + slack &&
-		   fabs(DDot(d, r->axes[2])) <= r->halfExtents.z + slack;
+	double h[3] = {r->halfExtents.x, r->halfExtents.y, r->halfExtents.z};
+	for (int i = 0; i < 3; ++i)
+	{
+		/* A relative slack, so that the test works at every scale. */
+		double projection = fabs(DDot(d, r->axes[i]));
+		if (projection > h[i] + 1e-12 * (h[i] + projection))
+		{
+			return false;
+		}
+	}
+	return true;
 }
 
 /* Distance from a point to the core of a finite shape (0 inside a solid box). */
@@ -434,6 +441,11 @@ static bool CheckResult(const cd3Shape* a, const cd3Shape* b, cd3ClosestPoints r
 	bool same = distance > 0.0 || cd3VecEqual(r.pointA, r.pointB);
 	TEST_CHECKF(same, "overlap reported with different points, |pB - pA| = %.3g", gap);
 	return ok && same;
+}
+
+static bool CheckFinitePoints(cd3ClosestPoints r)
+{
+	return cd3IsValidVec(r.pointA) && cd3IsValidVec(r.pointB);
 }
 
 static double g_maxError = 0.0;
@@ -752,6 +764,52 @@ static void TestScales(void)
 	}
 }
 
+/* Every pair scaled as a whole to the ends of the documented range (1e-9..1e9 in float,
+ * 1e-30..1e30 in double): finite answers that scale with the shapes; and pairs whose two shapes
+ * differ in size by up to 18 (float) or 60 (double) orders of magnitude: finite answers. */
+static void TestExtremeScales(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d06u);
+#if CD_DOUBLE
+	const double exponents = 30.0;
+#else
+	const double exponents = 9.0;
+#endif
+	for (int i = 0; i < 4000; ++i)
+	{
+		cd3Shape a = RandomShape(&rng, (cd3ShapeType)TestRngInt(&rng, CD3_SHAPE_TYPE_COUNT));
+		cd3Shape b = RandomShape(&rng, (cd3ShapeType)TestRngInt(&rng, CD3_SHAPE_TYPE_COUNT));
+		double k = pow(10.0, TestRngRange(&rng, -exponents, exponents));
+		cd3Shape sa = ScaleShape(&a, (cdReal)k), sb = ScaleShape(&b, (cdReal)k);
+		double expected = RefDistance(&sa, &sb) / k;
+		double unit = RefDistance(&a, &b);
+		cd3ClosestPoints r = cd3Distance(&sa, &sb);
+		bool ok = isfinite((double)r.distance) && CheckFinitePoints(r) &&
+				  fabs((double)r.distance / k - expected) <= 1e-3 * (1.0 + expected) &&
+				  fabs(expected - unit) <= 1e-3 * (1.0 + unit);
+		TEST_CHECKF(ok, "scale %g: distance / scale = %.9g, reference %.9g (unscaled %.9g)", k,
+					(double)r.distance / k, expected, unit);
+		if (!ok)
+		{
+			PrintShape("a", &sa);
+			PrintShape("b", &sb);
+		}
+
+		double k2 = pow(10.0, TestRngRange(&rng, -exponents, exponents));
+		cd3Shape mixed = ScaleShape(&b, (cdReal)k2);
+		r = cd3Distance(&sa, &mixed);
+		cd3ClosestPoints s = cd3Distance(&mixed, &sa);
+		ok = isfinite((double)r.distance) && r.distance >= CD_R(0.0) && CheckFinitePoints(r) &&
+			 isfinite((double)s.distance) && CheckFinitePoints(s);
+		TEST_CHECKF(ok, "scales %g and %g: distance %g", k, k2, (double)r.distance);
+		if (!ok)
+		{
+			PrintShape("a", &sa);
+			PrintShape("b", &mixed);
+		}
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestSpheres);
@@ -760,5 +818,6 @@ int main(void)
 	TEST_RUN(TestPlanes);
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);
+	TEST_RUN(TestExtremeScales);
 	return TEST_SUMMARY();
 }

@@ -162,9 +162,21 @@ static bool SolveSimplex(GjkSimplex* simplex)
 {
 	cd3Vec w[4];
 	cdReal l[4] = {CD_R(1.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+	/* The weights do not depend on scale: solve on vertices scaled to unit size, so that the
+	 * products of up to four coordinates neither overflow nor underflow at extreme sizes. */
+	cdReal largest = CD_R(0.0);
 	for (int i = 0; i < simplex->count; ++i)
 	{
 		w[i] = simplex->v[i].w;
+		largest = cdMax(largest, cdMax(cdAbs(w[i].x), cdMax(cdAbs(w[i].y), cdAbs(w[i].z))));
+	}
+	if (largest > CD_R(0.0))
+	{
+		cdReal inverse = CD_R(1.0) / largest;
+		for (int i = 0; i < simplex->count; ++i)
+		{
+			w[i] = cd3Scale(inverse, w[i]);
+		}
 	}
 	bool enclosed = false;
 	if (simplex->count == 2)
