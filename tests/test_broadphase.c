@@ -1,0 +1,520 @@
+/* Broadphase tests: every structure that can be created, in 2D and 3D, against brute force
+ * (tests/broad_oracle.h) over random operation sequences and degenerate sets. */
+#include "broad_oracle.h"
+#include "test.h"
+
+#include "collide/broad.h"
+
+static int s_typesTested[2][CD_BROADPHASE_TYPE_COUNT];
+
+/* Runs one oracle step; on a mismatch prints the reason with the context and returns false. */
+#define ORACLE_CHECK(o, call, what)                                                                          \
+	do                                                                                                       \
+	{                                                                                                        \
+		bool okCall_ = (call);                                                                               \
+		TEST_CHECKF(okCall_, "%s %dD %s: %s", cdBroadPhaseTypeName((o)->type), (o)->dim, (o)->error, what);  \
+		if (!okCall_)                                                                                        \
+		{                                                                                                    \
+			return false;                                                                                    \
+		}                                                                                                    \
+	} while (0)
+
+static cdReal R(TestRng* rng, double lo, double hi)
+{
+	return (cdReal)TestRngRange(rng, lo, hi);
+}
+
+/* A random box in [lo, hi]^dim with sizes up to maxSize (sometimes zero). */
+static OBox RandomBox(TestRng* rng, int dim, double lo, double hi, double maxSize)
+{
+	OBox b;
+	memset(&b, 0, sizeof(b));
+	bool point = TestRngInt(rng, 10) == 0;
+	for (int i = 0; i < dim; ++i)
+	{
+		b.min[i] = R(rng, lo, hi);
+		b.max[i] = point ? b.min[i] : (cdReal)(b.min[i] + TestRngRange(rng, 0.0, maxSize));
+	}
+	return b;
+}
+
+static OBox Shift(OBox b, int dim, const cdReal* d)
+{
+	for (int i = 0; i < dim; ++i)
+	{
+		b.min[i] += d[i];
+		b.max[i] += d[i];
+	}
+	return b;
+}
+
+typedef struct Scene
+{
+	double lo, hi, maxSize, smallMove;
+} Scene;
+
+/* Random rays: long, short, axis-aligned, zero translation. */
+static void RandomRay(TestRng* rng, int dim, const Scene* s, cdReal* origin, cdReal* translation)
+{
+	int kind = TestRngInt(rng, 6);
+	double span = s->hi - s->lo;
+	for (int i = 0; i < 3; ++i)
+	{
+		origin[i] = i < dim ? R(rng, s->lo - 0.1 * span, s->hi + 0.1 * span) : CD_R(0.0);
+		translation[i] = i < dim ? R(rng, -span, span) : CD_R(0.0);
+		if (kind == 1)
+		{
+			translation[i] = (cdReal)(translation[i] * 0.05);
+		}
+	}
+	if (kind == 2)
+	{
+		int keep = TestRngInt(rng, dim);
+		for (int i = 0; i < dim; ++i)
+		{
+			translation[i] = i == keep ? translation[i] : CD_R(0.0);
+		}
+	}
+	if (kind == 3)
+	{
+		translation[0] = translation[1] = translation[2] = CD_R(0.0);
+	}
+}
+
+/* Checks every answer of the broadphase against brute force. */
+static bool CheckAll(Oracle* o, TestRng* rng, const Scene* s, bool updatePairs)
+{
+	ORACLE_CHECK(o, OracleValidate(o), "validate");
+	ORACLE_CHECK(o, OracleFindAllPairs(o), "find all pairs");
+	if (updatePairs)
+	{
+		ORACLE_CHECK(o, OracleUpdatePairs(o), "update pairs");
+		ORACLE_CHECK(o, OracleUpdatePairs(o), "second update pairs (nothing moved)");
+	}
+	for (int q = 0; q < 6; ++q)
+	{
+		OBox box = RandomBox(rng, o->dim, s->lo, s->hi, 0.3 * (s->hi - s->lo));
+		ORACLE_CHECK(o, OracleQueryBox(o, box, q == 5 ? 1 + TestRngInt(rng, 3) : 0), "query");
+	}
+	for (int r = 0; r < 8; ++r)
+	{
+		cdReal origin[3], translation[3];
+		RandomRay(rng, o->dim, s, origin, translation);
+		ORACLE_CHECK(o, OracleRayCast(o, origin, translation, r == 7), "ray");
+	}
+	return true;
+}
+
+/* Random inserts, small moves, teleports, removals, re-inserts and rebuilds; checks everything
+ * after each batch and validates after every operation. */
+static bool RunRandom(int dim, cdBroadPhaseType type, uint64_t seed, const Scene* s, int maxProxies,
+					  int batches)
+{
+	Oracle* o = (Oracle*)malloc(sizeof(Oracle));
+	TestRng rng = TestRngMake(seed);
+	cdReal margin = TestRngInt(&rng, 3) == 0 ? CD_R(0.0) : (cdReal)(0.02 * s->maxSize + 0.01);
+	if (!OracleInit(o, dim, type, margin, CD_R(4.0)))
+	{
+		free(o);
+		return true; /* not available yet */
+	}
+	s_typesTested[dim - 2][type] = 1;
+	int ids[ORACLE_MAX_PROXIES];
+	OBox tight[ORACLE_MAX_PROXIES];
+	int live = 0;
+	bool ok = true;
+	for (int batch = 0; batch < batches && ok; ++batch)
+	{
+		int ops = 1 + TestRngInt(&rng, 40);
+		for (int op = 0; op < ops && ok; ++op)
+		{
+			int kind = TestRngInt(&rng, 10);
+			if (live == 0 || (kind < 3 && live < maxProxies))
+			{
+				OBox b = RandomBox(&rng, dim, s->lo, s->hi, s->maxSize);
+				int id;
+				ok = OracleCreate(o, b, TestRngNext(&rng), &id);
+				if (ok && id >= 0)
+				{
+					ids[live] = id;
+					tight[id] = b;
+					++live;
+				}
+			}
+			else if (kind < 7)
+			{
+				int id = ids[TestRngInt(&rng, live)];
+				cdReal d[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+				for (int i = 0; i < dim; ++i)
+				{
+					d[i] = R(&rng, -s->smallMove, s->smallMove);
+				}
+				OBox b = Shift(tight[id], dim, d);
+				ok = OracleMove(o, id, b, d);
+				tight[id] = b;
+			}
+			else if (kind < 8)
+			{
+				/* Teleport, with a random displacement prediction. */
+				int id = ids[TestRngInt(&rng, live)];
+				OBox b = RandomBox(&rng, dim, s->lo, s->hi, s->maxSize);
+				cdReal d[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+				for (int i = 0; i < dim; ++i)
+				{
+					d[i] = TestRngInt(&rng, 2) ? R(&rng, -s->smallMove, s->smallMove) : CD_R(0.0);
+				}
+				ok = OracleMove(o, id, b, d);
+				tight[id] = b;
+			}
+			else if (kind < 9 || TestRngInt(&rng, 8) != 0)
+			{
+				int k = TestRngInt(&rng, live);
+				ok = OracleDestroy(o, ids[k]);
+				ids[k] = ids[--live];
+			}
+			else
+			{
+				ok = OracleRebuild(o);
+			}
+			if (ok)
+			{
+				ok = OracleValidate(o);
+			}
+			TEST_CHECKF(ok, "%s %dD seed %llu batch %d op %d: %s", cdBroadPhaseTypeName(type), dim,
+						(unsigned long long)seed, batch, op, o->error);
+		}
+		if (ok)
+		{
+			ok = CheckAll(o, &rng, s, TestRngInt(&rng, 4) != 0);
+		}
+	}
+	OracleFree(o);
+	free(o);
+	return ok;
+}
+
+static const Scene kScenes[] = {
+	{0.0, 100.0, 6.0, 0.5}, /* sparse-ish, small boxes */
+	{0.0, 20.0, 6.0, 1.0},	/* dense: many pairs */
+	{-1.0, 1.0, 0.0, 0.01}, /* points only (zero-size boxes) */
+};
+
+static void TestRandomOperations(void)
+{
+	for (int dim = 2; dim <= 3; ++dim)
+	{
+		for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+		{
+			for (int sc = 0; sc < (int)(sizeof(kScenes) / sizeof(kScenes[0])); ++sc)
+			{
+				uint64_t seed = 0xB40AD000u + (uint64_t)(100 * dim + 10 * type + sc);
+				RunRandom(dim, (cdBroadPhaseType)type, seed, &kScenes[sc], 200, 25);
+			}
+		}
+	}
+	TEST_CHECK(s_typesTested[0][CD_BROADPHASE_TREE] && s_typesTested[1][CD_BROADPHASE_TREE]);
+	TEST_CHECK(s_typesTested[0][CD_BROADPHASE_SAP] && s_typesTested[1][CD_BROADPHASE_SAP]);
+}
+
+/* Bulk creation then checks; also a bulk load followed by churn. */
+static bool RunBulk(int dim, cdBroadPhaseType type, const OBox* boxes, int count, const Scene* s,
+					uint64_t seed)
+{
+	Oracle* o = (Oracle*)malloc(sizeof(Oracle));
+	TestRng rng = TestRngMake(seed);
+	if (!OracleInit(o, dim, type, CD_R(0.05), CD_R(4.0)))
+	{
+		free(o);
+		return true;
+	}
+	bool ok = true;
+	if (TestRngInt(&rng, 2) == 0)
+	{
+		for (int i = 0; i < count && ok; ++i)
+		{
+			int id;
+			ok = OracleCreate(o, boxes[i], (uint64_t)i * 7u, &id);
+			TEST_CHECKF(ok, "%s %dD create %d: %s", cdBroadPhaseTypeName(type), dim, i, o->error);
+		}
+	}
+	else
+	{
+		/* Through the bulk entry point; the oracle mirrors it. */
+		cd2Aabb* b2 = (cd2Aabb*)malloc((size_t)count * sizeof(cd2Aabb));
+		cd3Aabb* b3 = (cd3Aabb*)malloc((size_t)count * sizeof(cd3Aabb));
+		uint64_t* data = (uint64_t*)malloc((size_t)count * sizeof(uint64_t));
+		int* ids = (int*)malloc((size_t)count * sizeof(int));
+		for (int i = 0; i < count; ++i)
+		{
+			b2[i] = OracleTo2(boxes[i]);
+			b3[i] = OracleTo3(boxes[i]);
+			data[i] = (uint64_t)i * 7u;
+		}
+		int created = dim == 2 ? cd2BroadPhase_CreateProxies(o->bp2, b2, data, count, ids)
+							   : cd3BroadPhase_CreateProxies(o->bp3, b3, data, count, ids);
+		int valid = 0;
+		cdReal zero[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+		for (int i = 0; i < count; ++i)
+		{
+			if (!OracleBoxValid(o, boxes[i]))
+			{
+				TEST_CHECK(ids[i] == CD_NULL_PROXY);
+				continue;
+			}
+			++valid;
+			int id = ids[i];
+			TEST_CHECKF(id >= 0 && id < ORACLE_MAX_PROXIES && !o->alive[id], "bulk id %d", id);
+			if (id >= 0 && id < ORACLE_MAX_PROXIES)
+			{
+				o->alive[id] = true;
+				o->moved[id] = true;
+				o->fat[id] = OracleFat(o, boxes[i], zero, CD_R(1.0));
+				o->userData[id] = data[i];
+				o->idCapacity = id + 1 > o->idCapacity ? id + 1 : o->idCapacity;
+			}
+		}
+		TEST_CHECK(created == valid);
+		free(b2);
+		free(b3);
+		free(data);
+		free(ids);
+	}
+	if (ok)
+	{
+		ok = CheckAll(o, &rng, s, true);
+	}
+	if (ok)
+	{
+		OracleRebuild(o);
+		ok = CheckAll(o, &rng, s, true);
+	}
+	cdBroadPhaseStats stats = OracleStats(o);
+	int live = 0;
+	for (int id = 0; id < o->idCapacity; ++id)
+	{
+		live += o->alive[id] ? 1 : 0;
+	}
+	TEST_CHECK(stats.proxyCount == live);
+	TEST_CHECK(stats.memoryBytes > 0);
+	if (type == CD_BROADPHASE_TREE && live > 1)
+	{
+		/* n leaves hang under n - 1 internal nodes; a SAH build of any set stays shallow. */
+		int logN = 0;
+		while ((1 << logN) < live)
+		{
+			++logN;
+		}
+		TEST_CHECKF(stats.nodeCount == live - 1, "nodes %d for %d proxies", stats.nodeCount, live);
+		TEST_CHECKF(stats.height >= logN && stats.height <= 3 * logN + 2, "height %d for %d proxies",
+					stats.height, live);
+		TEST_CHECKF(stats.sahCost >= 1.0 || stats.sahCost == 0.0, "sah %g", stats.sahCost);
+	}
+	OracleFree(o);
+	free(o);
+	return ok;
+}
+
+static void TestDegenerateSets(void)
+{
+	enum
+	{
+		N = 300
+	};
+	static OBox boxes[N];
+	Scene s = {0.0, 10.0, 1.0, 0.1};
+	for (int dim = 2; dim <= 3; ++dim)
+	{
+		for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+		{
+			cdBroadPhaseType t = (cdBroadPhaseType)type;
+			/* All identical. */
+			for (int i = 0; i < N; ++i)
+			{
+				OBox b = {{CD_R(1.0), CD_R(2.0), CD_R(3.0)}, {CD_R(1.5), CD_R(2.5), CD_R(3.5)}};
+				boxes[i] = b;
+			}
+			RunBulk(dim, t, boxes, N / 3, &s, 11);
+			/* All on a line, in order (the worst insertion order for a naive tree). */
+			for (int i = 0; i < N; ++i)
+			{
+				OBox b = {{(cdReal)(0.03 * i), CD_R(1.0), CD_R(1.0)},
+						  {(cdReal)(0.03 * i + 0.05), CD_R(1.0), CD_R(1.0)}};
+				boxes[i] = b;
+			}
+			RunBulk(dim, t, boxes, N, &s, 12);
+			/* Zero-size boxes, many coincident. */
+			TestRng rng = TestRngMake(13);
+			for (int i = 0; i < N; ++i)
+			{
+				OBox b;
+				memset(&b, 0, sizeof(b));
+				for (int k = 0; k < dim; ++k)
+				{
+					b.min[k] = b.max[k] = (cdReal)TestRngInt(&rng, 5);
+				}
+				boxes[i] = b;
+			}
+			RunBulk(dim, t, boxes, N, &s, 14);
+			/* Huge coordinates, 1e6..1e9, sizes to match. */
+			Scene huge = {1e6, 1e9, 1e7, 1e5};
+			for (int i = 0; i < N; ++i)
+			{
+				boxes[i] = RandomBox(&rng, dim, huge.lo, huge.hi, huge.maxSize);
+			}
+			RunBulk(dim, t, boxes, N, &huge, 15);
+			RunRandom(dim, t, 16, &huge, 120, 12);
+			/* Invalid boxes mixed in: rejected with CD_NULL_PROXY by both entry points. */
+			for (int i = 0; i < 40; ++i)
+			{
+				boxes[i] = RandomBox(&rng, dim, 0.0, 10.0, 1.0);
+				int k = TestRngInt(&rng, dim);
+				switch (i % 5)
+				{
+					case 0:
+						boxes[i].min[k] = NAN;
+						break;
+					case 1:
+						boxes[i].max[k] = INFINITY;
+						break;
+					case 2:
+						boxes[i].min[k] = -INFINITY;
+						break;
+					case 3:
+						boxes[i].min[k] = boxes[i].max[k] + CD_R(1.0);
+						break;
+					default:
+						break;
+				}
+			}
+			RunBulk(dim, t, boxes, 40, &s, 17);
+			RunBulk(dim, t, boxes, 40, &s, 18);
+		}
+	}
+}
+
+/* Bad arguments: definitions, invalid moves, types not built yet. */
+static void TestArguments(void)
+{
+	cd3BroadPhaseDef def = cd3DefaultBroadPhaseDef();
+	cd3BroadPhase* bp = NULL;
+	TEST_CHECK(def.type == CD_BROADPHASE_TREE && def.margin > CD_R(0.0) &&
+			   def.displacementMultiplier == CD_R(4.0));
+	def.margin = -CD_R(1.0);
+	TEST_CHECK(cd3BroadPhase_Create(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	def = cd3DefaultBroadPhaseDef();
+	def.margin = NAN;
+	TEST_CHECK(cd3BroadPhase_Create(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	def = cd3DefaultBroadPhaseDef();
+	def.type = CD_BROADPHASE_TYPE_COUNT;
+	TEST_CHECK(cd3BroadPhase_Create(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd3BroadPhase_Create(NULL, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(strcmp(cdBroadPhaseTypeName(CD_BROADPHASE_SAP), "sap") == 0);
+	TEST_CHECK(strcmp(cdBroadPhaseTypeName(CD_BROADPHASE_TYPE_COUNT), "unknown") == 0);
+
+	for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+	{
+		def = cd3DefaultBroadPhaseDef();
+		def.type = (cdBroadPhaseType)type;
+		def.capacity = 10;
+		def.margin = CD_R(0.0); /* fat box = tight box, so touching is exact */
+		cdResult result = cd3BroadPhase_Create(&def, &bp);
+		TEST_CHECK(result == CD_OK || (result == CD_ERROR_INVALID_ARGUMENT && type >= CD_BROADPHASE_GRID));
+		if (result != CD_OK)
+		{
+			continue;
+		}
+		cd3Aabb box = {{CD_R(0.0), CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(1.0), CD_R(1.0)}};
+		int id = cd3BroadPhase_CreateProxy(bp, box, 42);
+		TEST_CHECK(id == 0);
+		cd3Aabb fat = cd3BroadPhase_GetFatAabb(bp, id);
+		cd3Aabb bad = box;
+		bad.max.y = NAN;
+		TEST_CHECK(!cd3BroadPhase_MoveProxy(bp, id, bad, CD3_VEC_ZERO));
+		cd3Vec nanDisplacement = {NAN, CD_R(0.0), CD_R(0.0)};
+		cd3Aabb far = {{CD_R(50.0), CD_R(0.0), CD_R(0.0)}, {CD_R(51.0), CD_R(1.0), CD_R(1.0)}};
+		TEST_CHECK(!cd3BroadPhase_MoveProxy(bp, id, far, nanDisplacement));
+		TEST_CHECK(cd3BroadPhase_GetFatAabb(bp, id).max.x == fat.max.x);
+		TEST_CHECK(cd3BroadPhase_UpdatePairs(bp, NULL, NULL) == 0);
+		int other = cd3BroadPhase_CreateProxy(bp, box, 43);
+		TEST_CHECK(other == 1);
+		TEST_CHECK(cd3BroadPhase_UpdatePairs(bp, NULL, NULL) == 1);
+		TEST_CHECK(cd3BroadPhase_UpdatePairs(bp, NULL, NULL) == 0);
+		TEST_CHECK(cd3BroadPhase_FindAllPairs(bp, NULL, NULL) == 1);
+		/* Touching boxes overlap (closed sets). */
+		cd3Aabb touching = {{CD_R(1.0), CD_R(0.0), CD_R(0.0)}, {CD_R(3.0), CD_R(1.0), CD_R(1.0)}};
+		int third = cd3BroadPhase_CreateProxy(bp, touching, 44);
+		TEST_CHECK(cd3BroadPhase_UpdatePairs(bp, NULL, NULL) == 2);
+		cd3BroadPhase_DestroyProxy(bp, other);
+		TEST_CHECK(cd3BroadPhase_CreateProxy(bp, box, 45) == other); /* ids are reused */
+		TEST_CHECK(cd3BroadPhase_GetUserData(bp, third) == 44);
+		TEST_CHECK(cd3BroadPhase_Validate(bp));
+		cd3BroadPhase_Destroy(bp);
+	}
+}
+
+/* A larger scene, moved frame by frame like a simulation, with a rebuild in the middle. */
+static void TestFrames(void)
+{
+	for (int dim = 2; dim <= 3; ++dim)
+	{
+		for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+		{
+			Oracle* o = (Oracle*)malloc(sizeof(Oracle));
+			if (!OracleInit(o, dim, (cdBroadPhaseType)type, CD_R(0.1), CD_R(4.0)))
+			{
+				free(o);
+				continue;
+			}
+			TestRng rng = TestRngMake(77 + (uint64_t)(dim * 10 + type));
+			Scene s = {0.0, 60.0, 2.0, 0.2};
+			enum
+			{
+				COUNT = 1000
+			};
+			static OBox tight[COUNT];
+			static cdReal velocity[COUNT][3];
+			bool ok = true;
+			for (int i = 0; i < COUNT && ok; ++i)
+			{
+				tight[i] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
+				for (int k = 0; k < 3; ++k)
+				{
+					velocity[i][k] = k < dim ? R(&rng, -0.2, 0.2) : CD_R(0.0);
+				}
+				int id;
+				ok = OracleCreate(o, tight[i], (uint64_t)i, &id);
+				ok = ok && id == i;
+			}
+			for (int frame = 0; frame < 12 && ok; ++frame)
+			{
+				for (int i = 0; i < COUNT && ok; ++i)
+				{
+					tight[i] = Shift(tight[i], dim, velocity[i]);
+					ok = OracleMove(o, i, tight[i], velocity[i]);
+				}
+				if (frame == 6)
+				{
+					OracleRebuild(o);
+				}
+				ok = ok && OracleValidate(o) && OracleUpdatePairs(o);
+				TEST_CHECKF(ok, "%s %dD frame %d: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
+							frame, o->error);
+			}
+			if (ok)
+			{
+				ok = CheckAll(o, &rng, &s, true);
+			}
+			OracleFree(o);
+			free(o);
+		}
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(TestArguments);
+	TEST_RUN(TestRandomOperations);
+	TEST_RUN(TestDegenerateSets);
+	TEST_RUN(TestFrames);
+	return TEST_SUMMARY();
+}
