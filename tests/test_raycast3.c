@@ -169,7 +169,7 @@ static RefCast RefRaycastSolid(const cd3Shape* s, DVec o, DVec d, double band)
 {
 	RefCast ref = {false, 0.0, true};
 	double lo = 0.0, hi = 1.0;
-	for (int i = 0; i < 100; ++i)
+	for (int i = 0; i < 70; ++i)
 	{
 		double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
 		if (RefValue(s, DAdd(o, DScale(m1, d))) <= RefValue(s, DAdd(o, DScale(m2, d))))
@@ -198,7 +198,7 @@ static RefCast RefRaycastSolid(const cd3Shape* s, DVec o, DVec d, double band)
 	ref.hit = true;
 	lo = 0.0;
 	hi = tMin;
-	for (int i = 0; i < 200; ++i)
+	for (int i = 0; i < 80; ++i)
 	{
 		double mid = 0.5 * (lo + hi);
 		if (RefValue(s, DAdd(o, DScale(mid, d))) > 0.0)

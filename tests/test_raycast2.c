@@ -1,0 +1,1141 @@
+/* Tests of the 2D ray casts: exact cases per shape, property tests against an independent
+ * double-precision reference (a convex function that is <= 0 exactly on each solid shape, searched
+ * along the ray; Cramer's rule for segments), support functions for the normals, rigid-transform
+ * and scale invariance, and agreement with the 3D casts on the same configuration in z = 0. */
+#include "collide/query2.h"
+#include "collide/query3.h"
+#include "test.h"
+
+#if CD_DOUBLE
+#define TOL 1e-9
+#define BAND 1e-6
+#else
+#define TOL 2e-4
+#define BAND 1e-2
+#endif
+
+/* ---- double-precision vectors ---------------------------------------------------------------- */
+typedef struct DVec
+{
+	double x, y;
+} DVec;
+
+static DVec DMake(double x, double y)
+{
+	DVec v = {x, y};
+	return v;
+}
+
+static DVec D(cd2Vec v)
+{
+	return DMake((double)v.x, (double)v.y);
+}
+
+static cd2Vec V(DVec v)
+{
+	return cd2MakeVec((cdReal)v.x, (cdReal)v.y);
+}
+
+static DVec DAdd(DVec a, DVec b)
+{
+	return DMake(a.x + b.x, a.y + b.y);
+}
+
+static DVec DSub(DVec a, DVec b)
+{
+	return DMake(a.x - b.x, a.y - b.y);
+}
+
+static DVec DScale(double s, DVec a)
+{
+	return DMake(s * a.x, s * a.y);
+}
+
+static double DDot(DVec a, DVec b)
+{
+	return a.x * b.x + a.y * b.y;
+}
+
+static double DCross(DVec a, DVec b)
+{
+	return a.x * b.y - a.y * b.x;
+}
+
+static double DLength(DVec a)
+{
+	return sqrt(DDot(a, a));
+}
+
+static DVec DNormalize(DVec a)
+{
+	double length = DLength(a);
+	return length > 0.0 ? DScale(1.0 / length, a) : DMake(0.0, 0.0);
+}
+
+/* Rotation by the angle of (c, s), renormalized in double. */
+static DVec DRotate(cd2Rot q, DVec v)
+{
+	double n = sqrt((double)q.c * q.c + (double)q.s * q.s), c = q.c / n, s = q.s / n;
+	return DMake(c * v.x - s * v.y, s * v.x + c * v.y);
+}
+
+static DVec DInvRotate(cd2Rot q, DVec v)
+{
+	cd2Rot inverse = {q.c, -q.s};
+	return DRotate(inverse, v);
+}
+
+/* ---- reference geometry in double ----------------------------------------------------------------- */
+
+static double RefDistanceToSegment(DVec p, DVec a, DVec b)
+{
+	DVec ab = DSub(b, a);
+	double lengthSquared = DDot(ab, ab);
+	double s = lengthSquared > 0.0 ? DDot(DSub(p, a), ab) / lengthSquared : 0.0;
+	s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+	return DLength(DSub(p, DAdd(a, DScale(s, ab))));
+}
+
+/* Convex, <= 0 exactly on the solid shape. Polygon edges come from the vertices alone (the stored
+ * normals are what the library reads, so the reference does not trust them). */
+static double RefValue(const cd2Shape* s, DVec p)
+{
+	switch (s->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return DLength(DSub(p, D(s->circle.center))) - (double)s->circle.radius;
+		case CD2_SHAPE_CAPSULE:
+			return RefDistanceToSegment(p, D(s->capsule.p1), D(s->capsule.p2)) - (double)s->capsule.radius;
+		case CD2_SHAPE_AABB:
+		{
+			DVec lo = D(s->aabb.min), hi = D(s->aabb.max);
+			return fmax(fmax(lo.x - p.x, p.x - hi.x), fmax(lo.y - p.y, p.y - hi.y));
+		}
+		case CD2_SHAPE_BOX:
+		{
+			DVec local = DInvRotate(s->box.rotation, DSub(p, D(s->box.center)));
+			return fmax(fabs(local.x) - (double)s->box.halfExtents.x,
+						fabs(local.y) - (double)s->box.halfExtents.y);
+		}
+		case CD2_SHAPE_POLYGON:
+		{
+			double value = -INFINITY;
+			int count = s->polygon.count;
+			for (int i = 0; i < count; ++i)
+			{
+				DVec a = D(s->polygon.vertices[i]), b = D(s->polygon.vertices[(i + 1) % count]);
+				DVec edge = DNormalize(DSub(b, a));
+				value = fmax(value, DCross(DSub(p, a), edge)); /* outward normal (edge.y, -edge.x) */
+			}
+			return value;
+		}
+		default:
+			return 0.0;
+	}
+}
+
+static double RefSupport(const cd2Shape* s, DVec n)
+{
+	switch (s->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return DDot(n, D(s->circle.center)) + (double)s->circle.radius * DLength(n);
+		case CD2_SHAPE_CAPSULE:
+			return fmax(DDot(n, D(s->capsule.p1)), DDot(n, D(s->capsule.p2))) +
+				   (double)s->capsule.radius * DLength(n);
+		case CD2_SHAPE_AABB:
+		{
+			DVec lo = D(s->aabb.min), hi = D(s->aabb.max);
+			return fmax(n.x * lo.x, n.x * hi.x) + fmax(n.y * lo.y, n.y * hi.y);
+		}
+		case CD2_SHAPE_BOX:
+		{
+			DVec local = DInvRotate(s->box.rotation, n);
+			return DDot(n, D(s->box.center)) + fabs(local.x) * (double)s->box.halfExtents.x +
+				   fabs(local.y) * (double)s->box.halfExtents.y;
+		}
+		case CD2_SHAPE_POLYGON:
+		{
+			double value = -INFINITY;
+			for (int i = 0; i < s->polygon.count; ++i)
+			{
+				value = fmax(value, DDot(n, D(s->polygon.vertices[i])));
+			}
+			return value;
+		}
+		default:
+			return 0.0;
+	}
+}
+
+typedef struct RefCast
+{
+	bool hit;
+	double fraction;
+	bool clear;
+} RefCast;
+
+static RefCast RefRaycastSolid(const cd2Shape* s, DVec o, DVec d, double band)
+{
+	RefCast ref = {false, 0.0, true};
+	double lo = 0.0, hi = 1.0;
+	for (int i = 0; i < 70; ++i)
+	{
+		double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+		if (RefValue(s, DAdd(o, DScale(m1, d))) <= RefValue(s, DAdd(o, DScale(m2, d))))
+		{
+			hi = m2;
+		}
+		else
+		{
+			lo = m1;
+		}
+	}
+	double tMin = 0.5 * (lo + hi);
+	double valueMin = RefValue(s, DAdd(o, DScale(tMin, d)));
+	double valueStart = RefValue(s, o);
+	double valueEnd = RefValue(s, DAdd(o, d));
+	ref.clear = fabs(valueMin) > band && fabs(valueStart) > band && fabs(valueEnd) > band;
+	if (valueStart <= 0.0)
+	{
+		ref.hit = true;
+		return ref;
+	}
+	if (valueMin > 0.0)
+	{
+		return ref;
+	}
+	ref.hit = true;
+	lo = 0.0;
+	hi = tMin;
+	for (int i = 0; i < 80; ++i)
+	{
+		double mid = 0.5 * (lo + hi);
+		if (RefValue(s, DAdd(o, DScale(mid, d))) > 0.0)
+		{
+			lo = mid;
+		}
+		else
+		{
+			hi = mid;
+		}
+	}
+	ref.fraction = hi;
+	return ref;
+}
+
+/* ---- random shapes and rays -------------------------------------------------------------------- */
+
+static cdReal R(TestRng* rng, double lower, double upper)
+{
+	return (cdReal)TestRngRange(rng, lower, upper);
+}
+
+static cd2Vec RandomVec(TestRng* rng, double extent)
+{
+	return cd2MakeVec(R(rng, -extent, extent), R(rng, -extent, extent));
+}
+
+static cd2Rot RandomRot(TestRng* rng)
+{
+	double angle = TestRngRange(rng, -3.14159265358979, 3.14159265358979);
+	cd2Rot q = {(cdReal)cos(angle), (cdReal)sin(angle)};
+	return q;
+}
+
+/* A convex polygon filled by hand under the rules of geometry2.h: vertices on an ellipse at sorted
+ * angles (counter-clockwise, strictly convex), outward unit normals from the edges. */
+static cd2Polygon MakePolygonByHand(const DVec* points, int count)
+{
+	cd2Polygon polygon;
+	polygon.count = count;
+	DVec centroid = DMake(0.0, 0.0);
+	for (int i = 0; i < count; ++i)
+	{
+		polygon.vertices[i] = V(points[i]);
+		centroid = DAdd(centroid, DScale(1.0 / count, points[i]));
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		DVec edge = DSub(D(polygon.vertices[(i + 1) % count]), D(polygon.vertices[i]));
+		polygon.normals[i] = V(DNormalize(DMake(edge.y, -edge.x)));
+	}
+	polygon.centroid = V(centroid);
+	return polygon;
+}
+
+static cd2Polygon RandomPolygon(TestRng* rng)
+{
+	int count = 3 + TestRngInt(rng, CD2_MAX_POLYGON_VERTICES - 2);
+	double angles[CD2_MAX_POLYGON_VERTICES];
+	/* Sorted angles at least a little apart, so that no edge is tiny. */
+	double step = 6.283185307179586 / count;
+	double start = TestRngRange(rng, 0.0, 6.283185307179586);
+	for (int i = 0; i < count; ++i)
+	{
+		angles[i] = start + step * (i + TestRngRange(rng, 0.0, 0.7));
+	}
+	DVec center = D(RandomVec(rng, 3.0));
+	double rx = TestRngRange(rng, 0.3, 3.0), ry = TestRngRange(rng, 0.3, 3.0);
+	DVec points[CD2_MAX_POLYGON_VERTICES];
+	for (int i = 0; i < count; ++i)
+	{
+		points[i] = DAdd(center, DMake(rx * cos(angles[i]), ry * sin(angles[i])));
+	}
+	return MakePolygonByHand(points, count);
+}
+
+static cd2Shape RandomSolid(TestRng* rng, cd2ShapeType type)
+{
+	bool degenerate = TestRngInt(rng, 10) == 0;
+	cd2Shape s;
+	s.type = type;
+	switch (type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = RandomVec(rng, 3.0);
+			s.circle.radius = degenerate ? CD_R(0.0) : R(rng, 0.1, 3.0);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			s.capsule.p1 = RandomVec(rng, 3.0);
+			s.capsule.p2 = degenerate ? s.capsule.p1 : cd2Add(s.capsule.p1, RandomVec(rng, 2.0));
+			s.capsule.radius = TestRngInt(rng, 10) == 0 ? CD_R(0.0) : R(rng, 0.1, 2.0);
+			break;
+		case CD2_SHAPE_AABB:
+		{
+			cd2Vec center = RandomVec(rng, 3.0);
+			cd2Vec half = degenerate ? CD2_VEC_ZERO : cd2MakeVec(R(rng, 0.1, 2), R(rng, 0.1, 2));
+			s.aabb.min = cd2Sub(center, half);
+			s.aabb.max = cd2Add(center, half);
+			break;
+		}
+		case CD2_SHAPE_BOX:
+			s.box.center = RandomVec(rng, 3.0);
+			s.box.halfExtents = degenerate ? CD2_VEC_ZERO : cd2MakeVec(R(rng, 0.1, 2), R(rng, 0.1, 2));
+			s.box.rotation = RandomRot(rng);
+			break;
+		case CD2_SHAPE_POLYGON:
+			s.polygon = RandomPolygon(rng);
+			break;
+		case CD2_SHAPE_SEGMENT:
+			s.segment.p1 = RandomVec(rng, 4.0);
+			s.segment.p2 = RandomVec(rng, 4.0);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+static cd2Ray RandomRay(TestRng* rng)
+{
+	cd2Ray ray;
+	ray.origin = RandomVec(rng, 10.0);
+	cd2Vec target = RandomVec(rng, 4.0);
+	ray.translation = cd2Scale(R(rng, 0.3, 2.0), cd2Sub(target, ray.origin));
+	if (TestRngInt(rng, 50) == 0)
+	{
+		ray.translation = CD2_VEC_ZERO;
+	}
+	return ray;
+}
+
+static bool IsFiniteHit(cd2RayHit hit)
+{
+	return isfinite(hit.fraction) && cd2IsValidVec(hit.point) && cd2IsValidVec(hit.normal);
+}
+
+static cd2RayHit UntouchedHit(void)
+{
+	cd2RayHit hit;
+	hit.fraction = CD_R(42.0);
+	hit.point = cd2MakeVec(CD_R(1.0), CD_R(2.0));
+	hit.normal = cd2MakeVec(CD_R(4.0), CD_R(5.0));
+	return hit;
+}
+
+static bool IsUntouched(cd2RayHit hit)
+{
+	cd2RayHit u = UntouchedHit();
+	return hit.fraction == u.fraction && cd2VecEqual(hit.point, u.point) && cd2VecEqual(hit.normal, u.normal);
+}
+
+static void CheckSolidCast(const cd2Shape* s, cd2Ray ray, double scale, int index)
+{
+	cd2RayHit hit = UntouchedHit();
+	bool got = cd2Raycast(s, ray, &hit);
+	DVec o = D(ray.origin), d = D(ray.translation);
+	double tol = TOL * scale;
+	RefCast ref = RefRaycastSolid(s, o, d, BAND * scale);
+	double valueStart = RefValue(s, o);
+	const char* name = cd2ShapeTypeName(s->type);
+
+	if (!got)
+	{
+		TEST_CHECKF(IsUntouched(hit), "%s case %d: miss changed *hit", name, index);
+	}
+	if (ref.clear)
+	{
+		TEST_CHECKF(got == ref.hit, "%s case %d: got %d, reference %d (fraction %.9g)", name, index, got,
+					ref.hit, ref.fraction);
+	}
+	if (!ref.hit && ref.clear)
+	{
+		for (int i = 0; i <= 64; ++i)
+		{
+			double t = i / 64.0;
+			TEST_CHECKF(RefValue(s, DAdd(o, DScale(t, d))) > 0.0, "%s case %d: reference miss enters at %g",
+						name, index, t);
+		}
+	}
+	if (!got)
+	{
+		return;
+	}
+
+	TEST_CHECKF(IsFiniteHit(hit), "%s case %d: not finite", name, index);
+	TEST_CHECKF(hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0), "%s case %d: fraction %g", name,
+				index, (double)hit.fraction);
+	DVec point = D(hit.point), normal = D(hit.normal);
+	DVec expectedPoint = DAdd(o, DScale((double)hit.fraction, d));
+	TEST_CHECKF(DLength(DSub(point, expectedPoint)) <= tol, "%s case %d: point off the ray by %g", name,
+				index, DLength(DSub(point, expectedPoint)));
+
+	if (valueStart < -BAND * scale)
+	{
+		TEST_CHECKF(hit.fraction == CD_R(0.0) && cd2VecEqual(hit.point, ray.origin),
+					"%s case %d: inside origin gave fraction %g", name, index, (double)hit.fraction);
+		DVec expectedNormal = DScale(-1.0, DNormalize(d));
+		TEST_CHECKF(DLength(DSub(normal, expectedNormal)) <= 1e-5, "%s case %d: inside normal (%g %g)", name,
+					index, normal.x, normal.y);
+		return;
+	}
+	if (valueStart <= BAND * scale)
+	{
+		return;
+	}
+
+	TEST_CHECKF(fabs(DLength(normal) - 1.0) <= 1e-5, "%s case %d: normal length %.9g", name, index,
+				DLength(normal));
+	TEST_CHECKF(fabs(RefValue(s, point)) <= tol, "%s case %d: point %g off the surface", name, index,
+				RefValue(s, point));
+	double support = RefSupport(s, normal);
+	TEST_CHECKF(fabs(support - DDot(normal, point)) <= tol,
+				"%s case %d: normal not outward: support %.9g, at point %.9g", name, index, support,
+				DDot(normal, point));
+	TEST_CHECKF(DDot(normal, DNormalize(d)) <= 1e-5, "%s case %d: the ray leaves through the normal's side",
+				name, index);
+	TEST_CHECKF(RefValue(s, DAdd(point, DScale(1e-2 * scale, normal))) > 0.0,
+				"%s case %d: a step along the normal stays inside", name, index);
+	if (ref.clear && ref.hit)
+	{
+		double error = fabs((double)hit.fraction - ref.fraction) * DLength(d);
+		TEST_CHECKF(error <= 10.0 * tol, "%s case %d: fraction %.9g, reference %.9g", name, index,
+					(double)hit.fraction, ref.fraction);
+	}
+}
+
+/* ---- exact cases --------------------------------------------------------------------------------- */
+
+static cd2Ray Ray(cdReal ox, cdReal oy, cdReal dx, cdReal dy)
+{
+	cd2Ray ray = {cd2MakeVec(ox, oy), cd2MakeVec(dx, dy)};
+	return ray;
+}
+
+#define CHECK_VEC(v, ex, ey, tol)                                                                            \
+	do                                                                                                       \
+	{                                                                                                        \
+		TEST_CHECK_NEAR((v).x, ex, tol);                                                                     \
+		TEST_CHECK_NEAR((v).y, ey, tol);                                                                     \
+	} while (0)
+
+#define EXACT 1e-6
+
+static void TestCircleExact(void)
+{
+	cd2Circle c = {cd2MakeVec(CD_R(1.0), CD_R(2.0)), CD_R(1.0)};
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastCircle(c, Ray(-2, 2, 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.point, 0.0, 2.0, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastCircle(c, Ray(4, 2, -4, 0), &hit));
+	CHECK_VEC(hit.normal, 1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastCircle(c, Ray(1, 5, 0, -4), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 0.0, 1.0, EXACT);
+	TEST_CHECK(cd2RaycastCircle(c, Ray(1, -1, 0, 4), &hit));
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	/* Oblique: from (5, 5) towards the center (1, 2), distance 5, entry after 4 of 10. */
+	TEST_CHECK(cd2RaycastCircle(c, Ray(5, 5, -8, -6), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.4, EXACT);
+	CHECK_VEC(hit.normal, 0.8, 0.6, EXACT);
+	hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastCircle(c, Ray(-2, 4, 6, 0), &hit));
+	TEST_CHECK(!cd2RaycastCircle(c, Ray(-2, 2, -6, 0), &hit));
+	TEST_CHECK(!cd2RaycastCircle(c, Ray(-2, 2, CD_R(1.99), 0), &hit));
+	TEST_CHECK(!cd2RaycastCircle(c, Ray(-2, 2, 0, 0), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastCircle(c, Ray(-3, 3, 8, 0), &hit)); /* tangent at (1, 3) */
+	CHECK_VEC(hit.normal, 0.0, 1.0, 1e-3);
+	TEST_CHECK(cd2RaycastCircle(c, Ray(1, CD_R(2.5), 3, 0), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.point, 1.0, 2.5, 0.0);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastCircle(c, Ray(2, 2, 3, 0), &hit)); /* on the surface */
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	TEST_CHECK(cd2RaycastCircle(c, Ray(1, 2, 0, 0), &hit));
+	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0);
+	cd2Circle point = {cd2MakeVec(CD_R(1.0), CD_R(0.0)), CD_R(0.0)};
+	TEST_CHECK(cd2RaycastCircle(point, Ray(-1, 0, 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(!cd2RaycastCircle(point, Ray(-1, CD_R(0.001), 4, 0), &hit));
+}
+
+static void TestCapsuleExact(void)
+{
+	cd2Capsule c = {CD2_VEC_ZERO, cd2MakeVec(CD_R(4.0), CD_R(0.0)), CD_R(1.0)};
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(2, 5, 0, -8), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.point, 2.0, 1.0, EXACT);
+	CHECK_VEC(hit.normal, 0.0, 1.0, EXACT);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(3, -5, 0, 8), &hit));
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(-5, 0, 8, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(9, 0, -8, 0), &hit));
+	CHECK_VEC(hit.normal, 1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(-5, CD_R(0.6), 10, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.42, EXACT);
+	CHECK_VEC(hit.normal, -0.8, 0.6, EXACT);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(8, 3, -4, -3), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.8, EXACT);
+	CHECK_VEC(hit.normal, 0.8, 0.6, EXACT);
+	hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastCapsule(c, Ray(-5, CD_R(1.01), 10, 0), &hit));
+	TEST_CHECK(!cd2RaycastCapsule(c, Ray(2, 5, 0, CD_R(-3.99)), &hit));
+	TEST_CHECK(!cd2RaycastCapsule(c, Ray(-2, 0, 0, 0), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(-5, 1, 10, 0), &hit)); /* along the flat side: touching */
+	CHECK_VEC(hit.normal, 0.0, 1.0, 1e-3);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(2, CD_R(0.5), 0, 3), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(2, 1, 0, -3), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(-1, 0, 0, 0), &hit));
+	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0);
+	cd2Capsule disk = {cd2MakeVec(CD_R(1.0), CD_R(1.0)), cd2MakeVec(CD_R(1.0), CD_R(1.0)), CD_R(2.0)};
+	TEST_CHECK(cd2RaycastCapsule(disk, Ray(1, 5, 0, -4), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 0.0, 1.0, EXACT);
+	cd2Capsule line = {cd2MakeVec(CD_R(0.0), CD_R(-1.0)), cd2MakeVec(CD_R(0.0), CD_R(1.0)), CD_R(0.0)};
+	TEST_CHECK(cd2RaycastCapsule(line, Ray(-2, CD_R(0.5), 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+}
+
+static void TestAabbExact(void)
+{
+	cd2Aabb b = {cd2MakeVec(CD_R(-1.0), CD_R(-2.0)), cd2MakeVec(CD_R(1.0), CD_R(2.0))};
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastAabb(b, Ray(-3, CD_R(0.5), 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.point, -1.0, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, 0.0);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(3, CD_R(0.5), -4, 0), &hit));
+	CHECK_VEC(hit.normal, 1.0, 0.0, 0.0);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(CD_R(0.5), 4, 0, -4), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 0.0, 1.0, 0.0);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(CD_R(0.5), -4, 0, 4), &hit));
+	CHECK_VEC(hit.normal, 0.0, -1.0, 0.0);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(3, 2, -4, -2), &hit)); /* oblique through x = 1 at (1, 1) */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 1.0, 0.0, 0.0);
+	TEST_CHECK(!cd2RaycastAabb(b, Ray(-5, CD_R(2.5), 10, 0), &hit)); /* parallel, outside */
+	TEST_CHECK(cd2RaycastAabb(b, Ray(-5, 2, 10, 0), &hit));			 /* along the top side */
+	TEST_CHECK_NEAR(hit.fraction, 0.4, EXACT);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(2, 3, -2, -2), &hit)); /* corner */
+	CHECK_VEC(hit.point, 1.0, 2.0, EXACT);
+	hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastAabb(b, Ray(3, 0, 4, 0), &hit));
+	TEST_CHECK(!cd2RaycastAabb(b, Ray(3, 0, CD_R(-1.99), 0), &hit));
+	TEST_CHECK(!cd2RaycastAabb(b, Ray(3, 0, 0, 0), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastAabb(b, Ray(0, 0, 0, 5), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, 0.0, -1.0, 0.0);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(1, 0, -5, 0), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, 1.0, 0.0, 0.0);
+	TEST_CHECK(cd2RaycastAabb(b, Ray(0, 0, 0, 0), &hit));
+	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0);
+	cd2Aabb point = {cd2MakeVec(CD_R(1.0), CD_R(1.0)), cd2MakeVec(CD_R(1.0), CD_R(1.0))};
+	TEST_CHECK(cd2RaycastAabb(point, Ray(-1, 1, 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	TEST_CHECK(!cd2RaycastAabb(point, Ray(-1, CD_R(1.001), 4, 0), &hit));
+	hit = UntouchedHit();
+	TEST_CHECK(cd2RaycastAabb(b, Ray(-5, 0, 10, CD_R(1e-40)), &hit));
+	TEST_CHECK(IsFiniteHit(hit));
+}
+
+static void TestBoxExact(void)
+{
+	/* Half extents (1, 2) rotated by 90 degrees: world x in [8, 12], y in [-1, 1]. */
+	cd2Box b = {cd2MakeVec(CD_R(10.0), CD_R(0.0)), cd2MakeVec(CD_R(1.0), CD_R(2.0)), cd2MakeRot(CD_PI / 2)};
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastBox(b, Ray(4, 0, 8, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastBox(b, Ray(16, 0, -8, 0), &hit));
+	CHECK_VEC(hit.normal, 1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastBox(b, Ray(10, 3, 0, -4), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 0.0, 1.0, EXACT);
+	TEST_CHECK(cd2RaycastBox(b, Ray(10, -3, 0, 4), &hit));
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	TEST_CHECK(!cd2RaycastBox(b, Ray(4, CD_R(1.5), 16, 0), &hit));
+	hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastBox(b, Ray(4, 0, CD_R(3.99), 0), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastBox(b, Ray(10, 0, 0, 2), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	TEST_CHECK(cd2RaycastBox(b, Ray(11, 0, 0, 0), &hit));
+	TEST_CHECK(!cd2RaycastBox(b, Ray(13, 0, 0, 0), &hit));
+	cd2Box point = {cd2MakeVec(CD_R(1.0), CD_R(0.0)), CD2_VEC_ZERO, CD2_ROT_IDENTITY};
+	TEST_CHECK(cd2RaycastBox(point, Ray(-1, 0, 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, 0.0);
+}
+
+static void TestPolygonExact(void)
+{
+	/* The triangle (0,0), (4,0), (0,4). */
+	DVec points[3] = {DMake(0, 0), DMake(4, 0), DMake(0, 4)};
+	cd2Polygon p = MakePolygonByHand(points, 3);
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(1, -2, 0, 4), &hit)); /* bottom side */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.point, 1.0, 0.0, EXACT);
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(-2, 1, 4, 0), &hit)); /* left side */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(4, 4, -4, -4), &hit)); /* hypotenuse at (2, 2) */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 0.70710678, 0.70710678, EXACT);
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(-5, 0, 10, 0), &hit)); /* along the bottom side: touching */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(6, -2, -2, 2), &hit)); /* through the vertex (4, 0) */
+	TEST_CHECK_NEAR(hit.fraction, 1.0, EXACT);
+	hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastPolygon(&p, Ray(-5, CD_R(-0.5), 10, 0), &hit)); /* parallel below */
+	TEST_CHECK(!cd2RaycastPolygon(&p, Ray(3, 3, 4, 4), &hit));			  /* away */
+	TEST_CHECK(!cd2RaycastPolygon(&p, Ray(1, -2, 0, CD_R(1.99)), &hit));  /* short */
+	TEST_CHECK(!cd2RaycastPolygon(&p, Ray(5, 5, 0, 0), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(1, 1, 5, 0), &hit)); /* inside */
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(1, 0, 0, -3), &hit)); /* on the boundary */
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, 0.0, 1.0, EXACT);
+	TEST_CHECK(cd2RaycastPolygon(&p, Ray(1, 1, 0, 0), &hit));
+	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0);
+}
+
+static void TestSegmentExact(void)
+{
+	cd2Segment g = {cd2MakeVec(CD_R(0.0), CD_R(-1.0)), cd2MakeVec(CD_R(0.0), CD_R(3.0))};
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastSegment(g, Ray(-2, 1, 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.point, 0.0, 1.0, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastSegment(g, Ray(2, 1, -4, 0), &hit)); /* two-sided */
+	CHECK_VEC(hit.normal, 1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastSegment(g, Ray(-2, 3, 4, -2), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(cd2RaycastSegment(g, Ray(-2, 3, 4, 0), &hit)); /* end point */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastSegment(g, Ray(-2, CD_R(3.01), 4, 0), &hit));
+	TEST_CHECK(!cd2RaycastSegment(g, Ray(-2, 1, CD_R(1.99), 0), &hit));
+	TEST_CHECK(!cd2RaycastSegment(g, Ray(-2, 1, -4, 0), &hit));
+	TEST_CHECK(!cd2RaycastSegment(g, Ray(0, 1, 0, 0), &hit));			/* zero-length, on it */
+	TEST_CHECK(!cd2RaycastSegment(g, Ray(CD_R(0.5), -5, 0, 10), &hit)); /* parallel, apart */
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastSegment(g, Ray(0, -5, 0, 8), &hit)); /* along it */
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
+	TEST_CHECK(cd2RaycastSegment(g, Ray(0, 1, 0, 8), &hit)); /* along it, starting on it */
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	TEST_CHECK(cd2RaycastSegment(g, Ray(0, 1, 3, 0), &hit)); /* starting on it, leaving sideways */
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	cd2Segment point = {cd2MakeVec(CD_R(1.0), CD_R(1.0)), cd2MakeVec(CD_R(1.0), CD_R(1.0))};
+	TEST_CHECK(cd2RaycastSegment(point, Ray(-1, 1, 4, 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
+	TEST_CHECK(!cd2RaycastSegment(point, Ray(-1, CD_R(1.001), 4, 0), &hit));
+}
+
+static void TestDispatcher(void)
+{
+	TestRng rng = TestRngMake(11);
+	for (int i = 0; i < 600; ++i)
+	{
+		cd2Shape s = RandomSolid(&rng, (cd2ShapeType)(i % 6));
+		cd2Ray ray = RandomRay(&rng);
+		cd2RayHit a = UntouchedHit(), b = UntouchedHit();
+		bool hitA = cd2Raycast(&s, ray, &a), hitB = false;
+		switch (s.type)
+		{
+			case CD2_SHAPE_CIRCLE:
+				hitB = cd2RaycastCircle(s.circle, ray, &b);
+				break;
+			case CD2_SHAPE_CAPSULE:
+				hitB = cd2RaycastCapsule(s.capsule, ray, &b);
+				break;
+			case CD2_SHAPE_AABB:
+				hitB = cd2RaycastAabb(s.aabb, ray, &b);
+				break;
+			case CD2_SHAPE_BOX:
+				hitB = cd2RaycastBox(s.box, ray, &b);
+				break;
+			case CD2_SHAPE_POLYGON:
+				hitB = cd2RaycastPolygon(&s.polygon, ray, &b);
+				break;
+			default:
+				hitB = cd2RaycastSegment(s.segment, ray, &b);
+				break;
+		}
+		TEST_CHECKF(hitA == hitB && a.fraction == b.fraction && cd2VecEqual(a.normal, b.normal),
+					"case %d (%s)", i, cd2ShapeTypeName(s.type));
+	}
+	cd2Shape bad;
+	bad.type = CD2_SHAPE_TYPE_COUNT;
+	bad.circle.center = CD2_VEC_ZERO;
+	bad.circle.radius = CD_R(1.0);
+	cd2RayHit hit = UntouchedHit();
+	TEST_CHECK(!cd2Raycast(&bad, Ray(0, 0, 1, 0), &hit));
+	TEST_CHECK(IsUntouched(hit));
+}
+
+/* ---- property tests ----------------------------------------------------------------------------- */
+
+static void TestSolidsAgainstReference(void)
+{
+	TestRng rng = TestRngMake(0x5eed2001);
+	for (int i = 0; i < 10000; ++i)
+	{
+		cd2Shape s = RandomSolid(&rng, (cd2ShapeType)(i % 5));
+		CheckSolidCast(&s, RandomRay(&rng), 10.0, i);
+	}
+}
+
+/* Rays aimed close to the silhouette (the support line along a random direction). */
+static void TestSolidsNearTangent(void)
+{
+	TestRng rng = TestRngMake(0x5eed2002);
+	for (int i = 0; i < 5000; ++i)
+	{
+		cd2Shape s = RandomSolid(&rng, (cd2ShapeType)(i % 5));
+		cd2Ray ray = RandomRay(&rng);
+		DVec o = D(ray.origin);
+		DVec toward = DNormalize(DSub(D(RandomVec(&rng, 0.1)), o));
+		DVec n = DMake(-toward.y, toward.x);
+		if (TestRngInt(&rng, 2) == 0)
+		{
+			n = DScale(-1.0, n);
+		}
+		double height = RefSupport(&s, n) + TestRngRange(&rng, -0.05, 0.05) - DDot(n, o);
+		DVec target =
+			DAdd(o, DAdd(DScale(height, n), DScale(DDot(DSub(D(RandomVec(&rng, 3.0)), o), toward), toward)));
+		ray.translation = V(DScale(TestRngRange(&rng, 1.0, 3.0), DSub(target, o)));
+		CheckSolidCast(&s, ray, 10.0, i);
+	}
+}
+
+/* Segments against Cramer's rule in double. */
+static void TestSegmentsAgainstReference(void)
+{
+	TestRng rng = TestRngMake(0x5eed2003);
+	int hits = 0;
+	for (int i = 0; i < 10000; ++i)
+	{
+		cd2Shape s = RandomSolid(&rng, CD2_SHAPE_SEGMENT);
+		cd2Ray ray = RandomRay(&rng);
+		DVec o = D(ray.origin), d = D(ray.translation), p1 = D(s.segment.p1), p2 = D(s.segment.p2);
+		DVec e = DSub(p2, p1), r = DSub(p1, o);
+		/* o + t d = p1 + u e  <=>  t d - u e = r. */
+		double det = DCross(d, DScale(-1.0, e));
+		cd2RayHit hit = UntouchedHit();
+		bool got = cd2Raycast(&s, ray, &hit);
+		if (!got)
+		{
+			TEST_CHECKF(IsUntouched(hit), "case %d: miss changed *hit", i);
+		}
+		double lengths = DLength(d) * DLength(e);
+		if (fabs(det) <= 1e-3 * lengths || lengths < 1e-2)
+		{
+			continue;
+		}
+		double t = DCross(r, DScale(-1.0, e)) / det;
+		double u = DCross(d, r) / det;
+		bool clear = fabs(t) > BAND && fabs(t - 1) > BAND && fabs(u) > BAND && fabs(u - 1) > BAND;
+		bool expected = t >= 0 && t <= 1 && u >= 0 && u <= 1;
+		if (clear)
+		{
+			TEST_CHECKF(got == expected, "case %d: got %d, expected %d (t %g, u %g)", i, got, expected, t, u);
+		}
+		if (!got)
+		{
+			continue;
+		}
+		++hits;
+		DVec normal = D(hit.normal), axis = DNormalize(e);
+		TEST_CHECKF(IsFiniteHit(hit) && hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0), "case %d", i);
+		TEST_CHECKF(fabs(DLength(normal) - 1.0) <= 1e-5 && fabs(DDot(normal, axis)) <= 1e-5 &&
+						DDot(normal, d) < 0.0,
+					"case %d: normal (%g %g)", i, normal.x, normal.y);
+		TEST_CHECKF(RefDistanceToSegment(D(hit.point), p1, p2) <= TOL * 10, "case %d: point off the segment",
+					i);
+		if (clear)
+		{
+			TEST_CHECKF(fabs((double)hit.fraction - t) * DLength(d) <= TOL * 100,
+						"case %d: fraction %.9g vs %.9g", i, (double)hit.fraction, t);
+		}
+	}
+	TEST_CHECKF(hits > 500, "only %d hits", hits);
+}
+
+static cd2Shape TransformShape(const cd2Shape* s, cd2Transform xf)
+{
+	cd2Shape t = *s;
+	switch (s->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			t.circle.center = cd2TransformPoint(xf, s->circle.center);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			t.capsule.p1 = cd2TransformPoint(xf, s->capsule.p1);
+			t.capsule.p2 = cd2TransformPoint(xf, s->capsule.p2);
+			break;
+		case CD2_SHAPE_AABB:
+			t.aabb.min = cd2Add(s->aabb.min, xf.p);
+			t.aabb.max = cd2Add(s->aabb.max, xf.p);
+			break;
+		case CD2_SHAPE_BOX:
+			t.box.center = cd2TransformPoint(xf, s->box.center);
+			t.box.rotation = cd2NormalizeRot(cd2MulRot(xf.q, s->box.rotation));
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < s->polygon.count; ++i)
+			{
+				t.polygon.vertices[i] = cd2TransformPoint(xf, s->polygon.vertices[i]);
+				t.polygon.normals[i] = cd2RotateVector(xf.q, s->polygon.normals[i]);
+			}
+			t.polygon.centroid = cd2TransformPoint(xf, s->polygon.centroid);
+			break;
+		case CD2_SHAPE_SEGMENT:
+			t.segment.p1 = cd2TransformPoint(xf, s->segment.p1);
+			t.segment.p2 = cd2TransformPoint(xf, s->segment.p2);
+			break;
+		default:
+			break;
+	}
+	return t;
+}
+
+static void TestRigidTransformInvariance(void)
+{
+	TestRng rng = TestRngMake(0x5eed2004);
+	for (int i = 0; i < 6000; ++i)
+	{
+		cd2ShapeType type = (cd2ShapeType)(i % 6);
+		cd2Shape s = RandomSolid(&rng, type);
+		cd2Ray ray = RandomRay(&rng);
+		cd2Transform xf = {RandomVec(&rng, 20.0),
+						   type == CD2_SHAPE_AABB ? CD2_ROT_IDENTITY : RandomRot(&rng)};
+		cd2Shape moved = TransformShape(&s, xf);
+		cd2Ray movedRay = {cd2TransformPoint(xf, ray.origin), cd2RotateVector(xf.q, ray.translation)};
+		bool clear;
+		if (type == CD2_SHAPE_SEGMENT)
+		{
+			/* Clear when both end points are off the segment's line, the ray is not along it, and
+			 * the segment's end points are off the ray's line. */
+			DVec o = D(ray.origin), d = D(ray.translation), p1 = D(s.segment.p1), p2 = D(s.segment.p2);
+			DVec axis = DNormalize(DSub(p2, p1)), unit = DNormalize(d);
+			double band = BAND * 10;
+			clear = fabs(DCross(axis, DSub(o, p1))) > band &&
+					fabs(DCross(axis, DSub(DAdd(o, d), p1))) > band &&
+					fabs(DCross(unit, DSub(p1, o))) > band && fabs(DCross(unit, DSub(p2, o))) > band &&
+					DLength(d) > band;
+		}
+		else
+		{
+			RefCast ref = RefRaycastSolid(&s, D(ray.origin), D(ray.translation), BAND * 10);
+			RefCast movedRef =
+				RefRaycastSolid(&moved, D(movedRay.origin), D(movedRay.translation), BAND * 10);
+			clear = ref.clear && movedRef.clear;
+		}
+		if (!clear)
+		{
+			continue;
+		}
+		cd2RayHit hit = UntouchedHit(), movedHit = UntouchedHit();
+		bool got = cd2Raycast(&s, ray, &hit);
+		bool movedGot = cd2Raycast(&moved, movedRay, &movedHit);
+		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd2ShapeTypeName(type),
+					i, got, movedGot);
+		if (got && movedGot)
+		{
+			double length = DLength(D(ray.translation));
+			TEST_CHECKF(fabs((double)hit.fraction - (double)movedHit.fraction) * length <= 10 * TOL * 10,
+						"%s case %d: fraction %.9g vs %.9g", cd2ShapeTypeName(type), i, (double)hit.fraction,
+						(double)movedHit.fraction);
+			DVec rotated = DRotate(xf.q, D(hit.normal));
+			TEST_CHECKF(DLength(DSub(rotated, D(movedHit.normal))) <= 10 * TOL, "%s case %d: normal",
+						cd2ShapeTypeName(type), i);
+		}
+	}
+}
+
+/* The same configuration embedded in the z = 0 plane gives the same answers in 3D. */
+static cd3Vec To3(cd2Vec v)
+{
+	return cd3MakeVec(v.x, v.y, CD_R(0.0));
+}
+
+static void TestAgreesWith3D(void)
+{
+	TestRng rng = TestRngMake(0x5eed2005);
+	cd2ShapeType types[] = {CD2_SHAPE_CIRCLE, CD2_SHAPE_CAPSULE, CD2_SHAPE_AABB, CD2_SHAPE_BOX,
+							CD2_SHAPE_SEGMENT};
+	int compared = 0;
+	for (int i = 0; i < 5000; ++i)
+	{
+		cd2Shape s = RandomSolid(&rng, types[i % 5]);
+		cd2Ray ray = RandomRay(&rng);
+		cd3Shape s3;
+		switch (s.type)
+		{
+			case CD2_SHAPE_CIRCLE:
+				s3.type = CD3_SHAPE_SPHERE;
+				s3.sphere.center = To3(s.circle.center);
+				s3.sphere.radius = s.circle.radius;
+				break;
+			case CD2_SHAPE_CAPSULE:
+				s3.type = CD3_SHAPE_CAPSULE;
+				s3.capsule.p1 = To3(s.capsule.p1);
+				s3.capsule.p2 = To3(s.capsule.p2);
+				s3.capsule.radius = s.capsule.radius;
+				break;
+			case CD2_SHAPE_AABB:
+				s3.type = CD3_SHAPE_AABB;
+				s3.aabb.min = cd3MakeVec(s.aabb.min.x, s.aabb.min.y, CD_R(-1.0));
+				s3.aabb.max = cd3MakeVec(s.aabb.max.x, s.aabb.max.y, CD_R(1.0));
+				break;
+			case CD2_SHAPE_BOX:
+			{
+				/* cos(a) = 1 - 2 sin^2(a / 2) and sin(a) = 2 sin(a / 2) cos(a / 2): the half-angle
+				 * quaternion about z. */
+				double angle = atan2((double)s.box.rotation.s, (double)s.box.rotation.c);
+				s3.type = CD3_SHAPE_BOX;
+				s3.box.center = To3(s.box.center);
+				s3.box.halfExtents = cd3MakeVec(s.box.halfExtents.x, s.box.halfExtents.y, CD_R(1.0));
+				s3.box.rotation =
+					cd3MakeQuat(CD_R(0.0), CD_R(0.0), (cdReal)sin(0.5 * angle), (cdReal)cos(0.5 * angle));
+				break;
+			}
+			default:
+				s3.type = CD3_SHAPE_SEGMENT;
+				s3.segment.p1 = To3(s.segment.p1);
+				s3.segment.p2 = To3(s.segment.p2);
+				break;
+		}
+		cd3Ray ray3 = {To3(ray.origin), To3(ray.translation)};
+		cd2RayHit hit = UntouchedHit();
+		cd3RayHit hit3;
+		bool got = cd2Raycast(&s, ray, &hit);
+		bool got3 = cd3Raycast(&s3, ray3, &hit3);
+		if (s.type != CD2_SHAPE_SEGMENT)
+		{
+			RefCast ref = RefRaycastSolid(&s, D(ray.origin), D(ray.translation), BAND * 10);
+			if (!ref.clear)
+			{
+				continue;
+			}
+		}
+		else if (!got)
+		{
+			continue; /* a 2D miss may still pass within the 3D tolerance of the segment */
+		}
+		++compared;
+		TEST_CHECKF(got == got3, "%s case %d: 2D %d, 3D %d", cd2ShapeTypeName(s.type), i, got, got3);
+		if (got && got3)
+		{
+			double length = DLength(D(ray.translation));
+			TEST_CHECKF(fabs((double)hit.fraction - (double)hit3.fraction) * length <= TOL * 10 &&
+							fabs((double)hit.normal.x - (double)hit3.normal.x) <= 10 * TOL &&
+							fabs((double)hit.normal.y - (double)hit3.normal.y) <= 10 * TOL &&
+							fabs((double)hit3.normal.z) <= 10 * TOL,
+						"%s case %d: 2D (%.9g; %g %g), 3D (%.9g; %g %g %g)", cd2ShapeTypeName(s.type), i,
+						(double)hit.fraction, (double)hit.normal.x, (double)hit.normal.y,
+						(double)hit3.fraction, (double)hit3.normal.x, (double)hit3.normal.y,
+						(double)hit3.normal.z);
+		}
+	}
+	TEST_CHECKF(compared > 3000, "only %d cases compared", compared);
+}
+
+/* A box polygon from the polygon builder gives the same answers as the box. */
+static void TestBoxPolygonAgreesWithBox(void)
+{
+	TestRng rng = TestRngMake(0x5eed2006);
+	for (int i = 0; i < 2000; ++i)
+	{
+		cd2Box box = RandomSolid(&rng, CD2_SHAPE_BOX).box;
+		box.halfExtents = cd2MakeVec(R(&rng, 0.1, 2.0), R(&rng, 0.1, 2.0));
+		cd2Shape polygon;
+		polygon.type = CD2_SHAPE_POLYGON;
+		cdResult result = cd2MakeBoxPolygon(box, &polygon.polygon);
+		TEST_CHECKF(result == CD_OK, "case %d: cd2MakeBoxPolygon failed: %s", i, cdResultString(result));
+		if (result != CD_OK)
+		{
+			continue;
+		}
+		cd2Shape boxShape;
+		boxShape.type = CD2_SHAPE_BOX;
+		boxShape.box = box;
+		cd2Ray ray = RandomRay(&rng);
+		RefCast ref = RefRaycastSolid(&boxShape, D(ray.origin), D(ray.translation), BAND * 10);
+		if (!ref.clear)
+		{
+			continue;
+		}
+		cd2RayHit a = UntouchedHit(), b = UntouchedHit();
+		bool gotA = cd2Raycast(&boxShape, ray, &a), gotB = cd2Raycast(&polygon, ray, &b);
+		TEST_CHECKF(gotA == gotB, "case %d: box %d, polygon %d", i, gotA, gotB);
+		if (gotA && gotB)
+		{
+			TEST_CHECKF(fabs((double)a.fraction - (double)b.fraction) * DLength(D(ray.translation)) <=
+								TOL * 10 &&
+							DLength(DSub(D(a.normal), D(b.normal))) <= 10 * TOL,
+						"case %d: box %.9g, polygon %.9g", i, (double)a.fraction, (double)b.fraction);
+		}
+	}
+}
+
+static void TestScales(void)
+{
+	TestRng rng = TestRngMake(0x5eed2007);
+#if CD_DOUBLE
+	const double scales[] = {0x1p-100, 0x1p-30, 0x1p20, 0x1p30, 0x1p100};
+	const double offsets[] = {1e6, 1e9, 1e30};
+#else
+	const double scales[] = {0x1p-30, 0x1p-20, 0x1p20, 0x1p30};
+	const double offsets[] = {1e6, 1e8, 1e9};
+#endif
+	int scaleCount = (int)(sizeof(scales) / sizeof(scales[0]));
+	int offsetCount = (int)(sizeof(offsets) / sizeof(offsets[0]));
+	for (int i = 0; i < 3000; ++i)
+	{
+		cd2ShapeType type = (cd2ShapeType)(i % 6);
+		cd2Shape s = RandomSolid(&rng, type);
+		cd2Ray ray = RandomRay(&rng);
+		cd2RayHit base = UntouchedHit();
+		bool baseGot = cd2Raycast(&s, ray, &base);
+
+		cdReal k = (cdReal)scales[i % scaleCount];
+		cd2Shape scaled = s;
+		switch (type)
+		{
+			case CD2_SHAPE_CIRCLE:
+				scaled.circle.center = cd2Scale(k, s.circle.center);
+				scaled.circle.radius = k * s.circle.radius;
+				break;
+			case CD2_SHAPE_CAPSULE:
+				scaled.capsule.p1 = cd2Scale(k, s.capsule.p1);
+				scaled.capsule.p2 = cd2Scale(k, s.capsule.p2);
+				scaled.capsule.radius = k * s.capsule.radius;
+				break;
+			case CD2_SHAPE_AABB:
+				scaled.aabb.min = cd2Scale(k, s.aabb.min);
+				scaled.aabb.max = cd2Scale(k, s.aabb.max);
+				break;
+			case CD2_SHAPE_BOX:
+				scaled.box.center = cd2Scale(k, s.box.center);
+				scaled.box.halfExtents = cd2Scale(k, s.box.halfExtents);
+				break;
+			case CD2_SHAPE_POLYGON:
+				for (int v = 0; v < s.polygon.count; ++v)
+				{
+					scaled.polygon.vertices[v] = cd2Scale(k, s.polygon.vertices[v]);
+				}
+				scaled.polygon.centroid = cd2Scale(k, s.polygon.centroid);
+				break;
+			default:
+				scaled.segment.p1 = cd2Scale(k, s.segment.p1);
+				scaled.segment.p2 = cd2Scale(k, s.segment.p2);
+				break;
+		}
+		cd2Ray scaledRay = {cd2Scale(k, ray.origin), cd2Scale(k, ray.translation)};
+		cd2RayHit hit = UntouchedHit();
+		bool got = cd2Raycast(&scaled, scaledRay, &hit);
+		TEST_CHECKF(got == baseGot, "%s case %d scale %g: %d vs %d", cd2ShapeTypeName(type), i, (double)k,
+					got, baseGot);
+		if (got && baseGot)
+		{
+			TEST_CHECKF(IsFiniteHit(hit) && fabs((double)hit.fraction - (double)base.fraction) <= 1e-5 &&
+							DLength(DSub(D(hit.normal), D(base.normal))) <= 1e-5,
+						"%s case %d scale %g: fraction %.9g vs %.9g", cd2ShapeTypeName(type), i, (double)k,
+						(double)hit.fraction, (double)base.fraction);
+		}
+
+		double offset = offsets[i % offsetCount];
+		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
+		cd2Transform xf = {cd2MakeVec((cdReal)(offset * cos(angle)), (cdReal)(offset * sin(angle))),
+						   CD2_ROT_IDENTITY};
+		bool useScaled = TestRngInt(&rng, 2) == 0;
+		cd2Shape far = TransformShape(useScaled ? &scaled : &s, xf);
+		cd2Ray farRay = useScaled ? scaledRay : ray;
+		farRay.origin = cd2Add(farRay.origin, xf.p);
+		hit = UntouchedHit();
+		if (cd2Raycast(&far, farRay, &hit))
+		{
+			double n = DLength(D(hit.normal));
+			TEST_CHECKF(IsFiniteHit(hit) && hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0) &&
+							(fabs(n - 1.0) <= 1e-5 || n == 0.0),
+						"%s case %d offset %g: fraction %g normal length %g", cd2ShapeTypeName(type), i,
+						offset, (double)hit.fraction, n);
+		}
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(TestCircleExact);
+	TEST_RUN(TestCapsuleExact);
+	TEST_RUN(TestAabbExact);
+	TEST_RUN(TestBoxExact);
+	TEST_RUN(TestPolygonExact);
+	TEST_RUN(TestSegmentExact);
+	TEST_RUN(TestDispatcher);
+	TEST_RUN(TestSolidsAgainstReference);
+	TEST_RUN(TestSolidsNearTangent);
+	TEST_RUN(TestSegmentsAgainstReference);
+	TEST_RUN(TestRigidTransformInvariance);
+	TEST_RUN(TestAgreesWith3D);
+	TEST_RUN(TestBoxPolygonAgreesWithBox);
+	TEST_RUN(TestScales);
+	return TEST_SUMMARY();
+}
