@@ -608,6 +608,14 @@ static void TestBoxExact(void)
 	CHECK_VEC(hit.normal, 0.0, -1.0, EXACT);
 	TEST_CHECK(cd2RaycastBox(b, Ray(11, 0, 0, 0), &hit));
 	TEST_CHECK(!cd2RaycastBox(b, Ray(13, 0, 0, 0), &hit));
+	/* A rotation a little off unit length (within the validator's tolerance) still gives unit normals. */
+	cd2Box loose = b;
+	double grow = CD_DOUBLE ? 1.0 + 2e-10 : 1.0 + 2e-5;
+	loose.rotation.c = (cdReal)(grow * b.rotation.c);
+	loose.rotation.s = (cdReal)(grow * b.rotation.s);
+	TEST_CHECK(cd2IsValidRot(loose.rotation));
+	TEST_CHECK(cd2RaycastBox(loose, Ray(10, 3, 0, -4), &hit));
+	TEST_CHECK_NEAR(cd2Length(hit.normal), 1.0, 1e-6);
 	cd2Box point = {cd2MakeVec(CD_R(1.0), CD_R(0.0)), CD2_VEC_ZERO, CD2_ROT_IDENTITY};
 	TEST_CHECK(cd2RaycastBox(point, Ray(-1, 0, 4, 0), &hit));
 	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);

@@ -693,6 +693,14 @@ static void TestBoxExact(void)
 	TEST_CHECK(cd3RaycastBox(b, Ray(11, 0, 0, 0, 0, 0), &hit));
 	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0, 0.0);
 	TEST_CHECK(!cd3RaycastBox(b, Ray(13, 0, 0, 0, 0, 0), &hit));
+	/* A rotation a little off unit length (within the validator's tolerance) still gives unit normals. */
+	cd3Box loose = b;
+	double grow = CD_DOUBLE ? 1.0 + 2e-10 : 1.0 + 2e-5;
+	loose.rotation = cd3MakeQuat((cdReal)(grow * b.rotation.x), (cdReal)(grow * b.rotation.y),
+								 (cdReal)(grow * b.rotation.z), (cdReal)(grow * b.rotation.w));
+	TEST_CHECK(cd3IsValidQuat(loose.rotation));
+	TEST_CHECK(cd3RaycastBox(loose, Ray(10, 3, 0, 0, -4, 0), &hit));
+	TEST_CHECK_NEAR(cd3Length(hit.normal), 1.0, 1e-6);
 	/* Zero-size box: a point at its center. */
 	cd3Box point = {cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.0)), CD3_VEC_ZERO, CD3_QUAT_IDENTITY};
 	TEST_CHECK(cd3RaycastBox(point, Ray(-1, 0, 0, 4, 0, 0), &hit));

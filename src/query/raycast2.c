@@ -215,7 +215,8 @@ bool cd2RaycastBox(cd2Box b, cd2Ray ray, cd2RayHit* hit)
 		case CD_SLAB_HIT:
 			break;
 	}
-	return cd2HitAtFraction(ray, fraction, cd2RotateVector(b.rotation, normal), hit);
+	/* Normalized because validators accept rotations up to 1e-4 (float) off unit length. */
+	return cd2HitAtFraction(ray, fraction, cd2Normalize(cd2RotateVector(b.rotation, normal)), hit);
 }
 
 /* Clipping against the edge half-planes (Ericson 5.3.8): dot(n, origin + t d - v) <= 0 reads

@@ -245,7 +245,8 @@ bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit)
 	}
 	hit->fraction = fraction;
 	hit->point = cd3MulAdd(ray.origin, fraction, ray.translation);
-	hit->normal = cd3RotateVector(b.rotation, normal);
+	/* Normalized because validators accept quaternions up to 1e-4 (float) off unit length. */
+	hit->normal = cd3Normalize(cd3RotateVector(b.rotation, normal));
 	return true;
 }
 
