@@ -10,6 +10,13 @@
  * against cycling caused by round-off. */
 #define GJK_MAX_ITERATIONS 64
 
+/* Relative gap between the upper bound |v| and the support line's lower bound at which the
+ * distance is final: round-off in the support values is of this order. */
+#define GJK_GAP_TOLERANCE (CD_R(8.0) * CD_REAL_EPSILON)
+
+/* Steps in a row without getting closer before GJK settles for the closest simplex seen. */
+#define GJK_MAX_STALLS 4
+
 /* A triangle this flat (sine of its angle) gives barycentric coordinates dominated by
  * round-off; it is then treated through its edges. */
 #define GJK_DEGENERATE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
@@ -142,6 +149,25 @@ static bool SolveSimplex(GjkSimplex* simplex)
 	return enclosed;
 }
 
+/* The direction from the simplex towards the origin. For a segment it is the edge's normal
+ * (Catto's trick): -v, a sum of large, cancelling terms when the shapes are large compared with
+ * their distance, can point off by far more than its length error and make GJK stop at a tie
+ * between support points. */
+static cd2Vec SearchDirection(const GjkSimplex* simplex, cd2Vec v)
+{
+	if (simplex->count != 2)
+	{
+		return cd2Neg(v);
+	}
+	cd2Vec e = cd2Sub(simplex->v[1].w, simplex->v[0].w);
+	cd2Vec direction = cd2Cross(e, cd2Neg(simplex->v[0].w)) > CD_R(0.0) ? cd2LeftPerp(e) : cd2RightPerp(e);
+	/* The construction fails only when the origin is (nearly) on the segment's line, where -v is
+	 * as good a direction as any. */
+	cdReal length = cd2Length(direction);
+	return length > CD_R(0.0) && cdIsValidReal(length) && cd2Dot(direction, v) < CD_R(0.0) ? direction
+																						   : cd2Neg(v);
+}
+
 static GjkVertex MakeVertex(const cd2Core* a, const cd2Core* b, int indexA, int indexB)
 {
 	GjkVertex vertex;
@@ -163,8 +189,11 @@ static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec*
 	simplex.v[0] = MakeVertex(a, b, 0, 0);
 	simplex.lambda[0] = CD_R(1.0);
 
-	GjkSimplex previous = simplex;
-	cdReal previousDistanceSquared = CD_REAL_MAX;
+	/* Round-off can make a step gain nothing (or lose a little) while the next ones still gain:
+	 * keep the closest simplex seen, and stop after a few steps without progress. */
+	GjkSimplex best = simplex;
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	int stalls = 0;
 	*touching = false;
 	for (int iteration = 0; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
@@ -187,17 +216,20 @@ static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec*
 			*touching = true;
 			break;
 		}
-		if (distanceSquared >= previousDistanceSquared)
+		if (distanceSquared < bestDistanceSquared)
 		{
-			/* Round-off stalled the descent: the previous simplex was at least as close. */
-			simplex = previous;
+			best = simplex;
+			bestDistanceSquared = distanceSquared;
+			stalls = 0;
+		}
+		else if (++stalls > GJK_MAX_STALLS)
+		{
 			break;
 		}
-		previous = simplex;
-		previousDistanceSquared = distanceSquared;
 
-		int indexA = cd2CoreSupport(a, cd2Neg(v));
-		int indexB = cd2CoreSupport(b, v);
+		cd2Vec direction = SearchDirection(&simplex, v);
+		int indexA = cd2CoreSupport(a, direction);
+		int indexB = cd2CoreSupport(b, cd2Neg(direction));
 		bool duplicate = false;
 		for (int i = 0; i < simplex.count; ++i)
 		{
@@ -208,14 +240,20 @@ static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec*
 			break;
 		}
 		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
-		/* No support point lies meaningfully beyond v: v is the closest point (relative gap). */
-		if (distanceSquared - cd2Dot(v, vertex.w) <= CD_R(4.0) * CD_REAL_EPSILON * distanceSquared)
+		/* The support line bounds the distance from below: stop when it meets |v|. */
+		cdReal upper = cdSqrt(distanceSquared);
+		cdReal lower = -cd2Dot(direction, vertex.w) / cd2Length(direction);
+		if (upper - lower <= GJK_GAP_TOLERANCE * upper)
 		{
 			break;
 		}
 		simplex.v[simplex.count] = vertex;
 		simplex.lambda[simplex.count] = CD_R(0.0);
 		++simplex.count;
+	}
+	if (!*touching)
+	{
+		simplex = best;
 	}
 
 	cd2Vec pa = CD2_VEC_ZERO, pb = CD2_VEC_ZERO;

@@ -11,6 +11,13 @@
  * against cycling caused by round-off. */
 #define GJK_MAX_ITERATIONS 64
 
+/* Relative gap between the upper bound |v| and the support plane's lower bound at which the
+ * distance is final: round-off in the support values is of this order. */
+#define GJK_GAP_TOLERANCE (CD_R(8.0) * CD_REAL_EPSILON)
+
+/* Steps in a row without getting closer before GJK settles for the closest simplex seen. */
+#define GJK_MAX_STALLS 4
+
 /* A simplex this flat (sine of its angle, or volume relative to its edge lengths) gives
  * barycentric coordinates dominated by round-off; it is then treated through its faces/edges. */
 #define GJK_DEGENERATE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
@@ -216,6 +223,49 @@ static cd3Vec SimplexPoint(const GjkSimplex* simplex)
 	return v;
 }
 
+/* The direction from the simplex towards the origin. For a segment or a triangle it is built
+ * from the simplex's own edges (Catto's trick): -v, a sum of large, cancelling terms when the
+ * shapes are large compared with their distance, can point off by far more than its length error
+ * and make GJK stop at a tie between support points. */
+static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
+{
+	if (simplex->count < 2)
+	{
+		return cd3Neg(v);
+	}
+	/* On unit-scaled vertices: the products of three coordinates must not under/overflow. */
+	cd3Vec w[3];
+	cdReal largest = CD_R(0.0);
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		w[i] = simplex->v[i].w;
+		largest = cdMax(largest, cdMax(cdAbs(w[i].x), cdMax(cdAbs(w[i].y), cdAbs(w[i].z))));
+	}
+	for (int i = 0; i < simplex->count; ++i)
+	{
+		w[i] = cd3Scale(CD_R(1.0) / largest, w[i]);
+	}
+	cd3Vec direction;
+	if (simplex->count == 2)
+	{
+		cd3Vec e = cd3Sub(w[1], w[0]);
+		direction = cd3Cross(cd3Cross(e, cd3Neg(w[0])), e);
+	}
+	else
+	{
+		direction = cd3Cross(cd3Sub(w[1], w[0]), cd3Sub(w[2], w[0]));
+		if (cd3Dot(direction, w[0]) > CD_R(0.0))
+		{
+			direction = cd3Neg(direction);
+		}
+	}
+	/* The constructions vanish only when the origin is (nearly) on the simplex's line or plane,
+	 * where -v is as good a direction as any. */
+	cdReal length = cd3Length(direction);
+	return length > CD_R(0.0) && cdIsValidReal(length) && cd3Dot(direction, v) < CD_R(0.0) ? direction
+																						   : cd3Neg(v);
+}
+
 static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int indexB)
 {
 	GjkVertex vertex;
@@ -237,8 +287,11 @@ static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec*
 	simplex.v[0] = MakeVertex(a, b, 0, 0);
 	simplex.lambda[0] = CD_R(1.0);
 
-	GjkSimplex previous = simplex;
-	cdReal previousDistanceSquared = CD_REAL_MAX;
+	/* Round-off can make a step gain nothing (or lose a little) while the next ones still gain:
+	 * keep the closest simplex seen, and stop after a few steps without progress. */
+	GjkSimplex best = simplex;
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	int stalls = 0;
 	*touching = false;
 	for (int iteration = 0; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
@@ -260,17 +313,20 @@ static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec*
 			*touching = true;
 			break;
 		}
-		if (distanceSquared >= previousDistanceSquared)
+		if (distanceSquared < bestDistanceSquared)
 		{
-			/* Round-off stalled the descent: the previous simplex was at least as close. */
-			simplex = previous;
+			best = simplex;
+			bestDistanceSquared = distanceSquared;
+			stalls = 0;
+		}
+		else if (++stalls > GJK_MAX_STALLS)
+		{
 			break;
 		}
-		previous = simplex;
-		previousDistanceSquared = distanceSquared;
 
-		int indexA = cd3CoreSupport(a, cd3Neg(v));
-		int indexB = cd3CoreSupport(b, v);
+		cd3Vec direction = SearchDirection(&simplex, v);
+		int indexA = cd3CoreSupport(a, direction);
+		int indexB = cd3CoreSupport(b, cd3Neg(direction));
 		bool duplicate = false;
 		for (int i = 0; i < simplex.count; ++i)
 		{
@@ -281,14 +337,20 @@ static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec*
 			break;
 		}
 		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
-		/* No support point lies meaningfully beyond v: v is the closest point (relative gap). */
-		if (distanceSquared - cd3Dot(v, vertex.w) <= CD_R(4.0) * CD_REAL_EPSILON * distanceSquared)
+		/* The support plane bounds the distance from below: stop when it meets |v|. */
+		cdReal upper = cdSqrt(distanceSquared);
+		cdReal lower = -cd3Dot(direction, vertex.w) / cd3Length(direction);
+		if (upper - lower <= GJK_GAP_TOLERANCE * upper)
 		{
 			break;
 		}
 		simplex.v[simplex.count] = vertex;
 		simplex.lambda[simplex.count] = CD_R(0.0);
 		++simplex.count;
+	}
+	if (!*touching)
+	{
+		simplex = best;
 	}
 
 	cd3Vec pa = CD3_VEC_ZERO, pb = CD3_VEC_ZERO;
