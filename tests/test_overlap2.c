@@ -676,6 +676,71 @@ static void TestRigidInvariance(void)
 	TEST_CHECK(compared > 1000);
 }
 
+/* Support point of a shape in direction n, in double. */
+static RefVec RefSupport(const cd2Shape* s, RefVec n)
+{
+	RefShape r = RefFromShape(s);
+	int best = 0;
+	for (int i = 1; i < r.count; ++i)
+	{
+		if (RefDot(r.points[i], n) > RefDot(r.points[best], n))
+		{
+			best = i;
+		}
+	}
+	return RefMake(r.points[best].x + r.radius * n.x, r.points[best].y + r.radius * n.y);
+}
+
+/* Touching within round-off counts: b is moved so that its support point in -n meets a's support
+ * point in n (so n separates them and they meet at one point, up to the rounding of the move to
+ * cdReal). Every such pair must overlap; moved apart along n by `gap` it must not. */
+static void CheckTouching(const char* label, double center, double extent, int perPair, uint64_t seed)
+{
+	TestRng rng = TestRngMake(seed);
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int n = 0; n < perPair; ++n)
+			{
+				cd2Vec origin = V(center, center);
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta, origin, extent);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb, origin, extent);
+				double angle = TestRngRange(&rng, -3.2, 3.2);
+				RefVec normal = RefMake(cos(angle), sin(angle));
+				RefVec contactA = RefSupport(&a, normal);
+				RefVec contactB = RefSupport(&b, RefMake(-normal.x, -normal.y));
+				cd2Shape touching = Translated(&b, V(contactA.x - contactB.x, contactA.y - contactB.y));
+				/* The exact tests (circle-circle, circle-AABB, AABB-AABB) rightly see the gap the rounding
+				 * of the move leaves; their touching cases are exact cases above. */
+				bool exactPair = (ta == CD2_SHAPE_CIRCLE || ta == CD2_SHAPE_AABB) &&
+								 (tb == CD2_SHAPE_CIRCLE || tb == CD2_SHAPE_AABB);
+				TEST_CHECKF(exactPair || cd2Overlap(&a, &touching),
+							"%s: %s %s case %d: touching pair not overlapping", label, TypeName(&a),
+							TypeName(&b), n);
+				double magnitude = fmax(RefShapeScale(&a), RefShapeScale(&touching));
+				double gap = 1e-4 * extent + 64.0 * (double)CD_REAL_EPSILON * magnitude;
+				cd2Shape apart = Translated(&touching, V(gap * normal.x, gap * normal.y));
+				TEST_CHECKF(!cd2Overlap(&a, &apart), "%s: %s %s case %d: pair %.3g apart overlapping", label,
+							TypeName(&a), TypeName(&b), n, gap);
+			}
+		}
+	}
+}
+
+static void TestTouching(void)
+{
+	CheckTouching("ordinary", 0.0, 3.0, 200, 0x70C1);
+	CheckTouching("far", 1e4, 10.0, 50, 0x70C2);
+#if CD_DOUBLE
+	CheckTouching("huge", 1e30, 1e27, 50, 0x70C3);
+	CheckTouching("tiny", 0.0, 1e-30, 50, 0x70C4);
+#else
+	CheckTouching("huge", 1e9, 1e6, 50, 0x70C3);
+	CheckTouching("tiny", 0.0, 1e-9, 50, 0x70C4);
+#endif
+}
+
 /* Inside a solid by more than `band`: the reference puts p moved by band in 8 directions inside. */
 static bool ClearlyInside(const cd2Shape* s, cd2Vec p, double band)
 {
@@ -740,6 +805,7 @@ int main(void)
 	TEST_RUN(TestReferenceHuge);
 	TEST_RUN(TestReferenceTiny);
 	TEST_RUN(TestRigidInvariance);
+	TEST_RUN(TestTouching);
 	TEST_RUN(TestPointInShapeReference);
 	return TEST_SUMMARY();
 }

@@ -120,12 +120,12 @@ bool cd2PointInShape(const cd2Shape* shape, cd2Vec p)
 		case CD2_SHAPE_SEGMENT:
 		{
 			/* A segment has no inside: the point must lie on it within round-off, that is within
-			 * 16 * CD_REAL_EPSILON of the largest coordinate involved (as the overlap tests). */
+			 * 8 * CD_REAL_EPSILON of the largest coordinate involved (as the overlap tests). */
 			cd2Segment g = shape->segment;
 			cd2Vec closest = cd2ClosestPointOnSegment(g, p);
 			cdReal scale = cdMax(cdMax(cdAbs(p.x), cdAbs(p.y)), cdMax(cdMax(cdAbs(g.p1.x), cdAbs(g.p1.y)),
 																	  cdMax(cdAbs(g.p2.x), cdAbs(g.p2.y))));
-			cdReal tolerance = CD_R(16.0) * CD_REAL_EPSILON * scale;
+			cdReal tolerance = CD_R(8.0) * CD_REAL_EPSILON * scale;
 			return cd2VecDistanceSquared(closest, p) <= tolerance * tolerance;
 		}
 		default:

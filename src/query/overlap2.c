@@ -3,7 +3,7 @@
  * Shapes are closed, so touching counts as overlapping. AabbAabb, CircleCircle, CircleAabb and the
  * point tests on AABBs and circles are exact comparisons (squared distances, no square root). Every
  * other test involves a rotation, a projection or a square root, and accepts touching within
- * round-off: a gap of up to OverlapTolerance(scale) = 16 * CD_REAL_EPSILON * scale still counts as
+ * round-off: a gap of up to OverlapTolerance(scale) = 8 * CD_REAL_EPSILON * scale still counts as
  * overlap, where scale is the largest magnitude among the coordinates and radii compared.
  *
  * Box, AABB, polygon and segment pairs use the separating axis test on their vertex sets; pairs
@@ -12,7 +12,7 @@
 
 static cdReal OverlapTolerance(cdReal scale)
 {
-	return CD_R(16.0) * CD_REAL_EPSILON * scale;
+	return CD_R(8.0) * CD_REAL_EPSILON * scale;
 }
 
 static cdReal MaxAbs(cd2Vec v)
