@@ -278,6 +278,32 @@ static void TestBoxPolygon(void)
 	cd2Polygon polygon;
 	TEST_CHECK(cd2MakeBoxPolygon(small, &polygon) == CD_OK);
 	TEST_CHECK(cd2IsValidPolygon(&polygon));
+
+	/* boxes shrinking towards the round-off of a huge center: a valid polygon or DEGENERATE with the
+	 * output untouched, never a broken polygon */
+	int built = 0, rejected = 0;
+	for (double size = 1e6; size > 1e-3; size *= 0.5)
+	{
+		cd2Box far = {V(1e9, -1e9), V(size, 0.5 * size), cd2MakeRot((cdReal)0.7)};
+		cd2Polygon farPolygon = Sentinel();
+		cdResult result = cd2MakeBoxPolygon(far, &farPolygon);
+		TEST_CHECKF(result == CD_OK || result == CD_ERROR_DEGENERATE, "size %g: %s", size,
+					cdResultString(result));
+		if (result == CD_OK)
+		{
+			++built;
+			TEST_CHECKF(cd2IsValidPolygon(&farPolygon) && farPolygon.count == 4, "size %g", size);
+		}
+		else
+		{
+			++rejected;
+			TEST_CHECK(IsSentinel(&farPolygon));
+		}
+	}
+	TEST_CHECK(built > 10);
+#if !CD_DOUBLE
+	TEST_CHECK(rejected > 0); /* float cannot hold a millimetre box at 1e9 */
+#endif
 }
 
 /* Random clouds: on success every rule holds; on failure the cloud really is degenerate, that is

@@ -122,7 +122,10 @@ extern "C"
 	CD_API cdReal cd2GetPolygonWeldTolerance(cdReal maxAbsCoordinate);
 
 	/* The 4-vertex polygon of an oriented box (never fails for a valid box with non-zero area;
-	 * returns CD_ERROR_DEGENERATE for a zero-area box and the validator's errors otherwise). */
+	 * returns CD_ERROR_DEGENERATE for a zero-area box and the validator's errors otherwise). No
+	 * welding: boxes smaller than the weld tolerance work. The one exception is a box so small
+	 * against its center's coordinates that its corners round together in cdReal: that box is
+	 * CD_ERROR_DEGENERATE too, never a broken polygon. */
 	CD_API cdResult cd2MakeBoxPolygon(cd2Box box, cd2Polygon* out);
 
 	/* ---- validators ----------------------------------------------------------------------------
