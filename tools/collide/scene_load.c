@@ -177,6 +177,24 @@ static const char* jsonTypeName(const cJSON* item)
 
 /* ---- fields ---------------------------------------------------------------------------------- */
 
+/* A user's string, safe to quote in a one-line message: control characters and bytes outside
+ * ASCII become '?', and it is cut after 40 characters. */
+static const char* printable(const char* text, char* buffer, size_t size)
+{
+	size_t n = 0;
+	for (const unsigned char* p = (const unsigned char*)text; *p != 0 && n + 4 < size && n < 40; ++p)
+	{
+		buffer[n++] = (*p >= 0x20 && *p < 0x7f) ? (char)*p : '?';
+	}
+	if (text[n] != 0 && n + 4 < size)
+	{
+		memcpy(buffer + n, "...", 3);
+		n += 3;
+	}
+	buffer[n] = 0;
+	return buffer;
+}
+
 /* Rejects unknown and repeated keys (comment is always allowed). `allowed` ends with NULL. */
 static bool checkKeys(Loader* loader, const cJSON* object, const char* const* allowed)
 {
@@ -196,13 +214,16 @@ static bool checkKeys(Loader* loader, const cJSON* object, const char* const* al
 				size_t used = strlen(list);
 				snprintf(list + used, sizeof list - used, "%s\"%s\"", i > 0 ? ", " : "", allowed[i]);
 			}
-			return failAt(loader, key, "unknown field \"%.64s\" (expected %s)", key, list);
+			char shown[48];
+			return failAt(loader, key, "unknown field \"%s\" (expected %s)",
+						  printable(key, shown, sizeof shown), list);
 		}
 		for (const cJSON* other = object->child; other != child; other = other->next)
 		{
 			if (other->string != NULL && strcmp(other->string, key) == 0)
 			{
-				return failAt(loader, key, "field \"%.64s\" appears twice", key);
+				char shown[48];
+				return failAt(loader, key, "field \"%s\" appears twice", printable(key, shown, sizeof shown));
 			}
 		}
 	}
@@ -904,8 +925,9 @@ static bool readShape(Loader* loader, const cJSON* object, ToolShape* shape)
 	const ShapeTypeInfo* info = findShapeType(typeItem->valuestring, loader->dimension);
 	if (info == NULL)
 	{
-		return failAt(loader, "type", "unknown shape type \"%.32s\" in a %dD scene (expected one of %s)",
-					  typeItem->valuestring, loader->dimension, types);
+		char shown[48];
+		return failAt(loader, "type", "unknown shape type \"%s\" in a %dD scene (expected one of %s)",
+					  printable(typeItem->valuestring, shown, sizeof shown), loader->dimension, types);
 	}
 	shape->typeName = info->name;
 	const char* fields[9];

@@ -800,9 +800,9 @@ static bool drawPanel(FILE* out, const ToolSceneResult* result, int panelIndex, 
 		width = canvas.maxX - canvas.minX;
 		height = canvas.maxY - canvas.minY;
 	}
-	double areaX = x0 + PANEL_MARGIN, areaY = y0 + PANEL_TITLE + 8.0;
+	double areaX = x0 + PANEL_MARGIN, areaY = y0 + PANEL_TITLE + 22.0; /* room for labels above */
 	double areaWidth = PANEL_WIDTH - 2.0 * PANEL_MARGIN,
-		   areaHeight = PANEL_HEIGHT - PANEL_TITLE - 8.0 - PANEL_MARGIN;
+		   areaHeight = PANEL_HEIGHT - PANEL_TITLE - 22.0 - PANEL_MARGIN;
 	canvas.scale = fmin(areaWidth / width, areaHeight / height);
 	canvas.originX = areaX + 0.5 * (areaWidth - width * canvas.scale);
 	canvas.originY = areaY + areaHeight - 0.5 * (areaHeight - height * canvas.scale);
@@ -865,6 +865,16 @@ static bool drawPanel(FILE* out, const ToolSceneResult* result, int panelIndex, 
 		int i = order[k].index;
 		canvas.hasShapeRect = false;
 		drawShape(&canvas, scene, i, highlighted, &patch);
+		/* A zero-size shape (radius 0, min == max, p1 == p2) would be invisible: mark it. */
+		if (canvas.hasShapeRect && canvas.shapeRect.x1 - canvas.shapeRect.x0 < 3.0 &&
+			canvas.shapeRect.y1 - canvas.shapeRect.y0 < 3.0 && !scene->shapes[i].isPoint)
+		{
+			V2 center = {0.5 * (canvas.shapeRect.x0 + canvas.shapeRect.x1),
+						 0.5 * (canvas.shapeRect.y0 + canvas.shapeRect.y1)};
+			fprintf(out, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3\" fill=\"none\" %s/>\n", center.x, center.y,
+					canvas.stroke);
+			includeShapePixels(&canvas, center, 3.0);
+		}
 		if (shapeRects != NULL)
 		{
 			shapeRects[i] = canvas.hasShapeRect ? canvas.shapeRect : (Rect){x0, y0, x0, y0};
