@@ -186,6 +186,7 @@ static void TestCirclePairs(void)
 	TEST_CHECK(cd2OverlapCircleCapsule(Circle(2, 0, 10), capsule));	   /* capsule nested in circle */
 	TEST_CHECK(cd2OverlapCircleCapsule(Circle(1, 1, 0), Capsule(1, 1, 1, 1, 0))); /* degenerate */
 	TEST_CHECK(cd2OverlapCircleCapsule(Circle(4, 3, 4), Capsule(0, 0, 0, 0, 1))); /* 3-4-5 */
+	TEST_CHECK(cd2OverlapCircleCapsule(Circle(0, 0, 1), capsule));				  /* coincident end disks */
 	TEST_CHECK(!cd2OverlapCircleCapsule(Circle(4, 3, 3.99), Capsule(0, 0, 0, 0, 1)));
 
 	cd2Aabb b = Aabb(0, 0, 2, 2);
@@ -311,6 +312,10 @@ static void TestAabbPairs(void)
 	TEST_CHECK(!cd2OverlapAabbPolygon(Aabb(1.01, 1.01, 2, 2), &triangle));
 	TEST_CHECK(cd2OverlapAabbPolygon(Aabb(-1, -1, 0, 0), &triangle));
 	TEST_CHECK(cd2OverlapAabbPolygon(Aabb(-1, -1, 3, 3), &triangle));
+	cd2Polygon unitSquare = Square(0, 0, 1);
+	TEST_CHECK(cd2OverlapAabbPolygon(Aabb(0, 0, 1, 1), &unitSquare)); /* coincident */
+	TEST_CHECK(cd2OverlapAabbPolygon(Aabb(1, 0, 2, 1), &unitSquare)); /* sharing an edge */
+	TEST_CHECK(!cd2OverlapAabbPolygon(Aabb(1.01, 0, 2, 1), &unitSquare));
 	TEST_CHECK(cd2OverlapAabbPolygon(Aabb(0.2, 0.2, 0.2, 0.2), &triangle));
 	TEST_CHECK(!cd2OverlapAabbPolygon(Aabb(1.2, 1.2, 1.2, 1.2), &triangle));
 
@@ -354,6 +359,10 @@ static void TestBoxPairs(void)
 	TEST_CHECK(cd2OverlapBoxPolygon(Box(0.3, 0.3, 0.1, 0.1, 0.2), &triangle));
 	TEST_CHECK(cd2OverlapBoxPolygon(Box(0.3, 0.3, 9, 9, 0.2), &triangle));
 	TEST_CHECK(cd2OverlapBoxPolygon(Box(0, 0, 0, 0, 0.2), &triangle));
+	cd2Polygon square = Square(-1, -1, 2);
+	TEST_CHECK(cd2OverlapBoxPolygon(Box(0, 0, 1, 1, 0), &square));	   /* coincident */
+	TEST_CHECK(cd2OverlapBoxPolygon(QuarterBox(0, 3, 2, 1), &square)); /* touching the top edge */
+	TEST_CHECK(!cd2OverlapBoxPolygon(QuarterBox(0, 3.01, 2, 1), &square));
 
 	TEST_CHECK(cd2OverlapBoxSegment(a, Segment(-3, 0, 3, 0)));
 	TEST_CHECK(cd2OverlapBoxSegment(a, Segment(1, 1, 3, 3)));
@@ -375,6 +384,9 @@ static void TestPolygonSegmentAndSegments(void)
 	TEST_CHECK(cd2OverlapPolygonSegment(&triangle, Segment(-1, 0.5, 3, 0.5)));
 	TEST_CHECK(cd2OverlapPolygonSegment(&triangle, Segment(0.2, 0.2, 0.4, 0.3)));
 	TEST_CHECK(cd2OverlapPolygonSegment(&triangle, Segment(0.2, 0.2, 0.2, 0.2)));
+	TEST_CHECK(cd2OverlapPolygonSegment(&triangle, Segment(0, 0, 2, 0)));  /* coincident with an edge */
+	TEST_CHECK(cd2OverlapPolygonSegment(&triangle, Segment(-1, 0, 3, 0))); /* containing an edge */
+	TEST_CHECK(!cd2OverlapPolygonSegment(&triangle, Segment(-1, -0.01, 3, -0.01)));
 	TEST_CHECK(!cd2OverlapPolygonSegment(&triangle, Segment(2, 2, 2, 2)));
 
 	cd2Segment a = Segment(0, 0, 4, 0);
@@ -756,16 +768,17 @@ static bool ClearlyInside(const cd2Shape* s, cd2Vec p, double band)
 }
 
 /* Point containment through cd2PointInShape against the reference, for every type. */
-static void TestPointInShapeReference(void)
+static void CheckPointInShape(const char* label, double center, double extent, int perType, uint64_t seed)
 {
-	TestRng rng = TestRngMake(0x2D0E6);
+	TestRng rng = TestRngMake(seed);
+	cd2Vec origin = V(center, -center);
 	for (int type = 0; type < CD2_SHAPE_TYPE_COUNT; ++type)
 	{
 		int inside = 0;
-		for (int n = 0; n < 800; ++n)
+		for (int n = 0; n < perType; ++n)
 		{
-			cd2Shape s = RandomShape(&rng, (cd2ShapeType)type, CD2_VEC_ZERO, 2.0);
-			cd2Vec p = RandomVec(&rng, CD2_VEC_ZERO, 3.0);
+			cd2Shape s = RandomShape(&rng, (cd2ShapeType)type, origin, extent);
+			cd2Vec p = RandomVec(&rng, origin, 1.5 * extent);
 			bool onSegment = type == CD2_SHAPE_SEGMENT && n % 2 == 0;
 			if (onSegment)
 			{
@@ -773,20 +786,38 @@ static void TestPointInShapeReference(void)
 				p = n % 4 == 0 ? s.segment.p1
 							   : cd2Lerp(s.segment.p1, s.segment.p2, RandomReal(&rng, 0.0, 1.0));
 			}
+			double magnitude = fmax(RefShapeScale(&s), fmax(fabs((double)p.x), fabs((double)p.y)));
+			double band = 1e-3 * extent + 64.0 * (double)CD_REAL_EPSILON * magnitude;
 			double distance = RefPointShapeDistance(&s, p);
 			bool result = cd2PointInShape(&s, p);
-			if (distance > 1e-3)
+			if (distance > band)
 			{
-				TEST_CHECKF(!result, "%s: point at distance %.9g reported inside", TypeName(&s), distance);
+				TEST_CHECKF(!result, "%s %s: point at distance %.9g reported inside", label, TypeName(&s),
+							distance);
 			}
-			else if (onSegment || (type != CD2_SHAPE_SEGMENT && ClearlyInside(&s, p, 1e-3)))
+			else if (onSegment || (type != CD2_SHAPE_SEGMENT && ClearlyInside(&s, p, band)))
 			{
-				TEST_CHECKF(result, "%s: point inside reported outside (case %d)", TypeName(&s), n);
+				TEST_CHECKF(result, "%s %s: point inside reported outside (case %d)", label, TypeName(&s), n);
 				inside += result;
 			}
 		}
-		TEST_CHECKF(inside > 20, "%s: only %d points inside", cd2ShapeTypeName((cd2ShapeType)type), inside);
+		TEST_CHECKF(inside > perType / 40, "%s %s: only %d points inside", label,
+					cd2ShapeTypeName((cd2ShapeType)type), inside);
 	}
+}
+
+/* Point containment through cd2PointInShape against the reference, for every type and scale. */
+static void TestPointInShapeReference(void)
+{
+	CheckPointInShape("ordinary", 0.0, 2.0, 800, 0x2D0E6);
+	CheckPointInShape("far", 1e4, 10.0, 200, 0x2D0E7);
+#if CD_DOUBLE
+	CheckPointInShape("huge", 1e30, 1e27, 200, 0x2D0E8);
+	CheckPointInShape("tiny", 0.0, 1e-30, 200, 0x2D0E9);
+#else
+	CheckPointInShape("huge", 1e9, 1e6, 200, 0x2D0E8);
+	CheckPointInShape("tiny", 0.0, 1e-9, 200, 0x2D0E9);
+#endif
 }
 
 int main(void)
