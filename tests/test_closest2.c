@@ -196,7 +196,7 @@ static void CheckClosestPoints(const char* label, double center, double extent, 
 
 static void TestClosestPointOrdinary(void)
 {
-	CheckClosestPoints("ordinary", 0.0, 2.0, 600, 0xC105E1);
+	CheckClosestPoints("ordinary", 0.0, 2.0, 400, 0xC105E1);
 }
 
 static void TestClosestPointHugeTiny(void)
@@ -267,7 +267,7 @@ static void CheckSegmentPairs(const char* label, double extent, int count, uint6
 
 static void TestSegmentPairsSampled(void)
 {
-	CheckSegmentPairs("ordinary", 3.0, 3000, 0x5E65E1);
+	CheckSegmentPairs("ordinary", 3.0, 2000, 0x5E65E1);
 #if CD_DOUBLE
 	CheckSegmentPairs("huge", 1e30, 300, 0x5E65E2);
 	CheckSegmentPairs("tiny", 1e-30, 300, 0x5E65E3);
