@@ -298,6 +298,10 @@ static inline RVec RReferencePoint(const RShape* s)
 static inline double RShapeScale(const RShape* s)
 {
 	double scale = fabs(s->radius);
+	if (s->type == CD3_SHAPE_PLANE)
+	{
+		return scale; /* p[0] is the unit normal, not a coordinate */
+	}
 	for (int i = 0; i < 3; ++i)
 	{
 		scale = fmax(scale, RMaxAbs(s->p[i]));

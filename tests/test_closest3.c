@@ -330,7 +330,7 @@ static void TestRandomPairs(void)
 	TestRng rng = TestRngMake(0x5EED3103u);
 	const double scales[] = {1.0, 1e-6, 1e6, CD_DOUBLE ? 1e30 : 1e9, CD_DOUBLE ? 1e-30 : 1e-9};
 	int zeroCount = 0;
-	for (int i = 0; i < 6000; ++i)
+	for (int i = 0; i < 3000; ++i)
 	{
 		double scale = scales[i % 5];
 		bool triangle = (i / 5) % 2 == 0;
@@ -376,7 +376,7 @@ static void TestRandomPairs(void)
 						(double)result.distance - RDist(sa, sb));
 		}
 	}
-	TEST_CHECKF(zeroCount > 100, "only %d intersecting pairs", zeroCount);
+	TEST_CHECKF(zeroCount > 50, "only %d intersecting pairs", zeroCount);
 }
 
 /* Far from the origin: a unit-sized problem offset by 1e6 (float) or 1e12 (double) stays finite

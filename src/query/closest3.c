@@ -148,8 +148,10 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 
 	/* A (nearly) zero-area triangle has no face region, and its edge regions can be empty: it is
 	 * the segment or point it collapsed to. Same threshold as cd3IsValidTriangle. */
+	cd3Vec normal = cd3Cross(sab, sac);
+	cdReal normalSquared = cd3Dot(normal, normal);
 	cdReal limit = CD_R(4.0) * CD_REAL_EPSILON;
-	if (cd3LengthSquared(cd3Cross(sab, sac)) <= limit * limit * cd3LengthSquared(sab) * cd3LengthSquared(sac))
+	if (normalSquared <= limit * limit * cd3LengthSquared(sab) * cd3LengthSquared(sac))
 	{
 		return ClosestPointOnTriangleEdges(t, p);
 	}
@@ -169,7 +171,10 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return t.b;
 	}
 
-	cdReal vc = d1 * d4 - d3 * d2;
+	/* The barycentric weights va, vb, vc are Ericson's d3*d6 - d5*d4 and so on, written by the
+	 * Lagrange identity as n . (bp x cp) etc.: the cross products keep the relative error at
+	 * epsilon / sin(angle) instead of epsilon / sin^2 on thin triangles. */
+	cdReal vc = cd3Dot(normal, cd3Cross(sap, sbp));
 	if (vc <= CD_R(0.0) && d1 >= CD_R(0.0) && d3 <= CD_R(0.0))
 	{
 		return cd3MulAdd(t.a, ClampedRatio(d1, d1 - d3), ab);
@@ -183,13 +188,13 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return t.c;
 	}
 
-	cdReal vb = d5 * d2 - d1 * d6;
+	cdReal vb = cd3Dot(normal, cd3Cross(scp, sap));
 	if (vb <= CD_R(0.0) && d2 >= CD_R(0.0) && d6 <= CD_R(0.0))
 	{
 		return cd3MulAdd(t.a, ClampedRatio(d2, d2 - d6), ac);
 	}
 
-	cdReal va = d3 * d6 - d5 * d4;
+	cdReal va = cd3Dot(normal, cd3Cross(sbp, scp));
 	cdReal fromB = d4 - d3;
 	cdReal fromC = d5 - d6;
 	if (va <= CD_R(0.0) && fromB >= CD_R(0.0) && fromC >= CD_R(0.0))
@@ -199,10 +204,11 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 
 	if (va > CD_R(0.0) && vb > CD_R(0.0) && vc > CD_R(0.0))
 	{
-		cdReal denominator = CD_R(1.0) / (va + vb + vc);
-		cdReal v = vb * denominator;
-		cdReal w = vc * denominator;
-		return cd3Add(t.a, cd3Add(cd3Scale(v, ab), cd3Scale(w, ac)));
+		/* Project p onto the plane rather than rebuilding the point from its barycentric
+		 * coordinates: for p near the triangle the error then stays at epsilon times |ap| even
+		 * when the triangle is thin, where the weights carry epsilon / sin(angle). */
+		cdReal height = cd3Dot(normal, sap) / normalSquared;
+		return cd3MulSub(p, height * scale, normal);
 	}
 
 	/* Round-off on a nearly degenerate triangle can leave no region: fall back to the edges. */

@@ -236,10 +236,14 @@ static bool TriangleOverlapsCenteredBox(cd3Vec v0, cd3Vec v1, cd3Vec v2, cd3Vec 
 		}
 	}
 
+	/* The triangle's own interval on its normal, not just one vertex's projection: on a thin
+	 * triangle the computed normal is off, and the vertices then project apart. */
 	cd3Vec normal = cd3Cross(edges[0], edges[1]);
-	cdReal distance = cd3Dot(normal, v0);
+	cdReal p0 = cd3Dot(normal, v0), p1 = cd3Dot(normal, v1), p2 = cd3Dot(normal, v2);
 	cdReal radius = cd3Dot(h, cd3Abs(normal));
-	return cdAbs(distance) <= radius + CD_OVERLAP_TOLERANCE * AbsSum(normal) * CD_R(2.0);
+	cdReal normalTolerance = CD_OVERLAP_TOLERANCE * AbsSum(normal) * CD_R(2.0);
+	return cdMin(p0, cdMin(p1, p2)) <= radius + normalTolerance &&
+		   cdMax(p0, cdMax(p1, p2)) >= -radius - normalTolerance;
 }
 
 /* Gottschalk's 15-axis separating-axis test. rotation's columns are box B's axes in A's frame,
