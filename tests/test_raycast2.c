@@ -492,6 +492,35 @@ static void TestCircleExact(void)
 	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
 	CHECK_VEC(hit.normal, -1.0, 0.0, EXACT);
 	TEST_CHECK(!cd2RaycastCircle(point, Ray(-1, CD_R(0.001), 4, 0), &hit));
+	/* Diagonal through a zero-radius circle: round-off must not turn the normal around. */
+	cd2Circle diagonal = {cd2MakeVec(CD_R(1.0), CD_R(1.0)), CD_R(0.0)};
+	TEST_CHECK(cd2RaycastCircle(diagonal, Ray(0, 0, 2, 2), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -0.70710678, -0.70710678, EXACT);
+	/* Rays from the origin through zero-radius circles in many directions: when they hit, the
+	 * normal faces back along the ray. */
+	int hits = 0;
+	for (int a = -5; a <= 5; ++a)
+	{
+		for (int b = -5; b <= 5; ++b)
+		{
+			for (int k = 1; k <= 9; ++k)
+			{
+				cd2Circle dot = {cd2Scale(CD_R(0.1) * (cdReal)k, cd2MakeVec((cdReal)a, (cdReal)b)),
+								 CD_R(0.0)};
+				cd2Ray ray = {CD2_VEC_ZERO, cd2Scale(CD_R(3.0), dot.center)};
+				if ((a != 0 || b != 0) && cd2RaycastCircle(dot, ray, &hit))
+				{
+					++hits;
+					TEST_CHECKF(cd2Dot(hit.normal, ray.translation) < CD_R(0.0) &&
+									fabs((double)cd2Length(hit.normal) - 1.0) <= 1e-5,
+								"(%d %d) * %d: normal (%g %g)", a, b, k, (double)hit.normal.x,
+								(double)hit.normal.y);
+				}
+			}
+		}
+	}
+	TEST_CHECKF(hits > 100, "only %d of the rays through a point hit it", hits);
 }
 
 static void TestCapsuleExact(void)

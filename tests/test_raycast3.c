@@ -499,6 +499,45 @@ static void TestSphereExact(void)
 	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
 	CHECK_VEC(hit.normal, -1.0, 0.0, 0.0, EXACT);
 	TEST_CHECK(!cd3RaycastSphere(point, Ray(-1, CD_R(0.001), 0, 4, 0, 0), &hit));
+	/* Diagonal through a zero-radius sphere: round-off must not turn the normal around. */
+	cd3Sphere diagonal = {cd3MakeVec(CD_R(1.0), CD_R(1.0), CD_R(1.0)), CD_R(0.0)};
+	TEST_CHECK(cd3RaycastSphere(diagonal, Ray(0, 0, 0, 2, 2, 2), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+	CHECK_VEC(hit.normal, -0.57735027, -0.57735027, -0.57735027, EXACT);
+	/* Rays from the origin through zero-radius spheres (and zero-length, zero-radius capsules) in
+	 * many directions: when they hit, the normal faces back along the ray. */
+	int hits = 0;
+	for (int a = -3; a <= 3; ++a)
+	{
+		for (int b = -3; b <= 3; ++b)
+		{
+			for (int c = -3; c <= 3; ++c)
+			{
+				for (int k = 1; k <= 7 && (a != 0 || b != 0 || c != 0); ++k)
+				{
+					cd3Vec center =
+						cd3Scale(CD_R(0.1) * (cdReal)k, cd3MakeVec((cdReal)a, (cdReal)b, (cdReal)c));
+					cd3Sphere dot = {center, CD_R(0.0)};
+					cd3Capsule pill = {center, center, CD_R(0.0)};
+					cd3Ray ray = {CD3_VEC_ZERO, cd3Scale(CD_R(3.0), center)};
+					if (cd3RaycastSphere(dot, ray, &hit))
+					{
+						++hits;
+						TEST_CHECKF(cd3Dot(hit.normal, ray.translation) < CD_R(0.0) &&
+										fabs((double)cd3Length(hit.normal) - 1.0) <= 1e-5,
+									"(%d %d %d) * %d: normal (%g %g %g)", a, b, c, k, (double)hit.normal.x,
+									(double)hit.normal.y, (double)hit.normal.z);
+					}
+					if (cd3RaycastCapsule(pill, ray, &hit))
+					{
+						TEST_CHECKF(cd3Dot(hit.normal, ray.translation) < CD_R(0.0),
+									"capsule (%d %d %d) * %d", a, b, c, k);
+					}
+				}
+			}
+		}
+	}
+	TEST_CHECKF(hits > 500, "only %d of the rays through a point hit it", hits);
 }
 
 static void TestCapsuleExact(void)

@@ -39,18 +39,21 @@ static bool cd2HitAtFraction(cd2Ray ray, cdReal fraction, cd2Vec normal, cd2RayH
 }
 
 /* Entry into a disk whose center is `offset` = origin - center away from the ray origin, for an
- * origin outside it; the normal falls back to -direction for a zero radius. */
+ * origin outside it; the normal falls back to -direction through the center of a zero radius. */
 static bool cd2RayEntryIntoCircle(cd2Vec offset, cdReal radius, cd2Vec direction, cdReal length,
 								  cdReal* distance, cd2Vec* normal)
 {
 	cdReal outside = cd2Dot(offset, offset) - radius * radius;
 	cdReal lineOffset = cd2Cross(direction, offset);
+	cdReal halfChord;
 	if (!cdRayEntryIntoBall(cd2Dot(offset, direction), outside, radius * radius, lineOffset * lineOffset,
-							length, distance))
+							length, distance, &halfChord))
 	{
 		return false;
 	}
-	*normal = cd2Normalize(cd2MulAdd(offset, *distance, direction));
+	/* The center's foot on the line, moved back by the half chord (see the 3D sphere). */
+	cd2Vec foot = cd2Scale(lineOffset, cd2LeftPerp(direction));
+	*normal = cd2Normalize(cd2MulSub(foot, halfChord, direction));
 	if (cd2LengthSquared(*normal) == CD_R(0.0))
 	{
 		*normal = cd2Neg(direction);

@@ -45,19 +45,23 @@ static bool cd3HitAtDistance(cd3Ray ray, cdReal distance, cdReal length, cd3Vec 
 }
 
 /* Entry into a ball whose center is `offset` = origin - center away from the ray origin, for an
- * origin outside it. The normal falls back to -direction when the entry point is the center of a
- * zero-radius ball. */
+ * origin outside it. The normal is built from the center's foot on the line, (u x offset) x u, and
+ * the half chord, each accurate relative to the radius: offset + distance * u would carry a
+ * round-off of the order of |offset|, which can swamp a small radius and turn the normal around.
+ * It falls back to -direction when the ray passes through the center of a zero-radius ball. */
 static bool cd3RayEntryIntoSphere(cd3Vec offset, cdReal radius, cd3Vec direction, cdReal length,
 								  cdReal* distance, cd3Vec* normal)
 {
 	cdReal outside = cd3Dot(offset, offset) - radius * radius;
 	cd3Vec lineOffset = cd3Cross(direction, offset);
+	cdReal halfChord;
 	if (!cdRayEntryIntoBall(cd3Dot(offset, direction), outside, radius * radius, cd3LengthSquared(lineOffset),
-							length, distance))
+							length, distance, &halfChord))
 	{
 		return false;
 	}
-	*normal = cd3Normalize(cd3MulAdd(offset, *distance, direction));
+	cd3Vec foot = cd3Cross(lineOffset, direction);
+	*normal = cd3Normalize(cd3MulSub(foot, halfChord, direction));
 	if (cd3LengthSquared(*normal) == CD_R(0.0))
 	{
 		*normal = cd3Neg(direction);
@@ -147,10 +151,14 @@ bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit)
 			{
 				found = true;
 				best = t;
-				bestNormal = cd3Normalize(cd3MulAdd(offsetPerp, t, directionPerp));
+				/* As for the ball: the axis's foot on the ray's projection into the plane across
+				 * the axis, moved back by the half chord, accurate relative to the radius. */
+				cd3Vec across = cd3Normalize(directionPerp);
+				cd3Vec foot = cd3Cross(cd3Cross(across, offsetPerp), across);
+				bestNormal = cd3Normalize(cd3MulSub(foot, cdSqrt(disc / a), across));
 				if (cd3LengthSquared(bestNormal) == CD_R(0.0))
 				{
-					bestNormal = cd3Neg(cd3Normalize(directionPerp));
+					bestNormal = cd3Neg(across);
 				}
 			}
 		}

@@ -79,9 +79,12 @@ static inline cdSlabResult cdRaycastSlabs(int dimension, const cdReal* origin, c
  * The discriminant r^2 - lineDistanceSquared avoids the cancellation of the textbook
  * along^2 - outside, and the near root is outside / (-along + sqrt(disc)) (the product of the
  * roots is `outside`), which never subtracts nearly equal numbers. Returns false when the ray
- * moves away, misses the line, or the entry lies beyond maxDistance. */
+ * moves away, misses the line, or the entry lies beyond maxDistance. *halfChord is
+ * sqrt(r^2 - lineDistanceSquared): the entry point is the foot of the center on the line, moved
+ * back by it, which gives the normal without the round-off of origin + distance * direction. */
 static inline bool cdRayEntryIntoBall(cdReal along, cdReal outside, cdReal radiusSquared,
-									  cdReal lineDistanceSquared, cdReal maxDistance, cdReal* distance)
+									  cdReal lineDistanceSquared, cdReal maxDistance, cdReal* distance,
+									  cdReal* halfChord)
 {
 	if (along >= CD_R(0.0))
 	{
@@ -92,13 +95,14 @@ static inline bool cdRayEntryIntoBall(cdReal along, cdReal outside, cdReal radiu
 	{
 		return false;
 	}
-	cdReal q = -along + cdSqrt(disc);
-	cdReal t = outside / q;
+	cdReal root = cdSqrt(disc);
+	cdReal t = outside / (-along + root);
 	if (t > maxDistance)
 	{
 		return false;
 	}
 	*distance = t;
+	*halfChord = root;
 	return true;
 }
 
