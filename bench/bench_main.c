@@ -85,7 +85,7 @@ static double CalibrateSpread(BenchBatch* batch, const BenchCase* benchCase, con
 	{
 		return upper;
 	}
-	int steps = options->quick ? 6 : 12;
+	int steps = options->quick ? 4 : 12;
 	for (int step = 0; step < steps; ++step)
 	{
 		double middle = sqrt(lower * upper);
@@ -375,7 +375,7 @@ static bool ParseOptions(int argc, char** argv, BenchOptions* options)
 	}
 	if (options->quick)
 	{
-		options->batchCount = 256;
+		options->batchCount = 128;
 		options->runs = cdMinInt(options->runs, 3);
 	}
 	return true;
