@@ -123,11 +123,14 @@ bool cd2RaycastCapsule(cd2Capsule c, cd2Ray ray, cd2RayHit* hit)
 		/* Signed distance from the axis line (positive on the left) and its rate along the ray. */
 		cdReal side = cd2Cross(unitAxis, offset);
 		cdReal rate = cd2Cross(unitAxis, direction);
-		if (cdAbs(side) > c.radius && side * rate < CD_R(0.0))
+		bool approaching = (side > CD_R(0.0) && rate < CD_R(0.0)) || (side < CD_R(0.0) && rate > CD_R(0.0));
+		cdReal gap = cdAbs(side) - c.radius;
+		/* gap <= best * |rate| before dividing: a nearly parallel ray never divides by ~0. */
+		if (gap > CD_R(0.0) && approaching && gap <= best * cdAbs(rate))
 		{
-			cdReal t = (cdAbs(side) - c.radius) / cdAbs(rate);
+			cdReal t = gap / cdAbs(rate);
 			cdReal hitAlong = cd2Dot(offset, unitAxis) + t * cd2Dot(direction, unitAxis);
-			if (t <= best && CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
+			if (CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
 			{
 				found = true;
 				best = t;
