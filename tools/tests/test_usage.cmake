@@ -1,5 +1,19 @@
-# Usage errors: exit code 2, a message and the usage line on stderr.
-#   -DTOOL=path -DCASE=name -DEXAMPLES=dir
+# --help and --version exit 0 with their text on stdout; usage errors exit 2 with a message and
+# the usage line on stderr.
+#   -DTOOL=path -DCASE=name [-DEXAMPLES=dir] [-DVERSION=x.y.z]
+if(CASE STREQUAL "help" OR CASE STREQUAL "version")
+  execute_process(COMMAND ${TOOL} --${CASE} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(CASE STREQUAL "help")
+    set(expected "^usage: collide query FILE.json \\[--svg OUT.svg\\]\n")
+  else()
+    string(REPLACE "." "\\." expected "^collide ${VERSION} ")
+  endif()
+  if(NOT status STREQUAL "0" OR NOT err STREQUAL "" OR NOT out MATCHES "${expected}")
+    message(FATAL_ERROR "collide --${CASE}: expected exit 0 and stdout matching ${expected}\n"
+      "exit: ${status}\nstdout: ${out}\nstderr: ${err}")
+  endif()
+  return()
+endif()
 if(CASE STREQUAL "none")
   set(args "")
 elseif(CASE STREQUAL "unknown-command")
