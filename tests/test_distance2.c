@@ -561,6 +561,16 @@ static void TestExtremeScales(void)
 			PrintShape("a", &sa);
 			PrintShape("b", &mixed);
 		}
+
+		/* Small shapes far out: finite, and no farther apart than their centres' round-off allows. */
+		cd2Transform far = {
+			cd2Scale((cdReal)pow(10.0, TestRngRange(&rng, 0.0, exponents)), RandomVec(&rng, 1.0)),
+			CD2_ROT_IDENTITY};
+		cd2Shape fa = TransformShape(&sa, far), fb = TransformShape(&mixed, far);
+		r = cd2Distance(&fa, &fb);
+		ok = isfinite((double)r.distance) && r.distance >= CD_R(0.0) && CheckFinitePoints(r);
+		TEST_CHECKF(ok, "scales %g and %g, offset %g: distance %g", k, k2, (double)far.p.x,
+					(double)r.distance);
 	}
 }
 
