@@ -8,9 +8,10 @@
 #   C_COMPILER     the compiler the library was built with
 #   COMPILE_FLAGS  LINK_FLAGS  extra flags the library was built with (sanitizers)
 #   EXPECT_DOUBLE  1 when the build has cdReal = double
+#   VERSION        the project version the package must report
 cmake_minimum_required(VERSION 3.20)
 
-foreach(variable IN ITEMS BUILD_DIR WORK_DIR CONSUMER_DIR GENERATOR C_COMPILER EXPECT_DOUBLE)
+foreach(variable IN ITEMS BUILD_DIR WORK_DIR CONSUMER_DIR GENERATOR C_COMPILER EXPECT_DOUBLE VERSION)
   if(NOT DEFINED ${variable} OR "${${variable}}" STREQUAL "")
     message(FATAL_ERROR "package_test.cmake: ${variable} is not set")
   endif()
@@ -55,6 +56,7 @@ run_step("configure the find_package consumer" ${CMAKE_COMMAND} -S ${CONSUMER_DI
   -DCMAKE_C_COMPILER=${C_COMPILER}
   -DCMAKE_BUILD_TYPE=${CONFIG}
   -DCMAKE_PREFIX_PATH=${prefix}
+  -DEXPECTED_VERSION=${VERSION}
   -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
   "-DCMAKE_C_FLAGS=${COMPILE_FLAGS}"
   "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}")
