@@ -190,8 +190,7 @@ static void PrintHeader(const BenchOptions* options)
 		   BENCH_LIBRARY_FLAGS);
 	printf("%sCPU: %s (%d logical CPUs)\n", prefix, cpu, logicalCpus);
 	printf("%smethod: batches of %d random inputs, %d timed runs per row%s; ns/op is the median run,\n",
-		   prefix, options->batchCount, options->runs,
-		   options->quick ? " of one pass (--quick: timings meaningless)" : "");
+		   prefix, options->batchCount, options->runs, options->quick ? " of one pass" : "");
 	printf("%smin the fastest; 'true' is the fraction of overlaps, hits, points inside, zero distances or\n",
 		   prefix);
 	printf("%sbuilder successes.\n", prefix);
