@@ -547,6 +547,14 @@ static void TestCapsuleExact(void)
 	hit = UntouchedHit();
 	TEST_CHECK(!cd2RaycastCapsule(c, Ray(-5, CD_R(1.01), 10, 0), &hit));
 	TEST_CHECK(!cd2RaycastCapsule(c, Ray(2, 5, 0, CD_R(-3.99)), &hit));
+	/* Nearly parallel to the axis: into the cap at x = -sqrt(1 - 0.999^2), onto the side grazing. */
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(-5, CD_R(0.999), 10, CD_R(1e-7)), &hit));
+	TEST_CHECK(IsFiniteHit(hit));
+	TEST_CHECK_NEAR(hit.fraction, (5.0 - sqrt(1.0 - 0.999 * 0.999)) / 10.0, 1e-3);
+	TEST_CHECK(cd2RaycastCapsule(c, Ray(1, CD_R(1.001), 2, CD_R(-0.002)), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, 1e-3);
+	CHECK_VEC(hit.normal, 0.0, 1.0, 1e-5);
+	hit = UntouchedHit();
 	TEST_CHECK(!cd2RaycastCapsule(c, Ray(-2, 0, 0, 0), &hit));
 	TEST_CHECK(IsUntouched(hit));
 	TEST_CHECK(cd2RaycastCapsule(c, Ray(-5, 1, 10, 0), &hit)); /* along the flat side: touching */

@@ -589,6 +589,14 @@ static void TestCapsuleExact(void)
 	CHECK_VEC(hit.normal, 0.8, 0.6, 0.0, EXACT);
 	/* Ends just before. */
 	TEST_CHECK(!cd3RaycastCapsule(c, Ray(2, 5, 0, 0, CD_R(-3.99), 0), &hit));
+	/* Nearly parallel to the axis: into the cap ball at x = -sqrt(1 - 0.999^2), and onto the side
+	 * at a grazing angle. */
+	TEST_CHECK(cd3RaycastCapsule(c, Ray(-5, CD_R(0.999), 0, 10, CD_R(1e-7), 0), &hit));
+	TEST_CHECK(IsFiniteHit(hit));
+	TEST_CHECK_NEAR(hit.fraction, (5.0 - sqrt(1.0 - 0.999 * 0.999)) / 10.0, 1e-3);
+	TEST_CHECK(cd3RaycastCapsule(c, Ray(1, CD_R(1.001), 0, 2, CD_R(-0.002), 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, 1e-3);
+	CHECK_VEC(hit.normal, 0.0, 1.0, 0.0, 1e-5);
 
 	/* Inside, on the surface, zero-length. */
 	TEST_CHECK(cd3RaycastCapsule(c, Ray(2, CD_R(0.5), 0, 0, 3, 0), &hit));

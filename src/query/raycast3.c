@@ -143,7 +143,11 @@ bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit)
 		 * b^2 - a * outside rewritten as a * r^2 - det^2 without cancellation. */
 		cdReal det = cd3Dot(cd3Cross(direction, offset), unitAxis);
 		cdReal disc = a * radiusSquared - det * det;
-		if (outside > CD_R(0.0) && b < CD_R(0.0) && disc >= CD_R(0.0))
+		/* A ray whose sideways part is below cd3Normalize's threshold (CD_REAL_EPSILON^2) drifts
+		 * sideways by less than the round-off of its coordinates: left to the end balls. */
+		cd3Vec across = cd3Normalize(directionPerp);
+		bool sideways = cd3LengthSquared(across) > CD_R(0.0);
+		if (sideways && outside > CD_R(0.0) && b < CD_R(0.0) && disc >= CD_R(0.0))
 		{
 			cdReal t = outside / (-b + cdSqrt(disc));
 			cdReal hitAlong = offsetAlong + t * directionAlong;
@@ -153,7 +157,6 @@ bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit)
 				best = t;
 				/* As for the ball: the axis's foot on the ray's projection into the plane across
 				 * the axis, moved back by the half chord, accurate relative to the radius. */
-				cd3Vec across = cd3Normalize(directionPerp);
 				cd3Vec foot = cd3Cross(cd3Cross(across, offsetPerp), across);
 				bestNormal = cd3Normalize(cd3MulSub(foot, cdSqrt(disc / a), across));
 				if (cd3LengthSquared(bestNormal) == CD_R(0.0))
