@@ -61,85 +61,48 @@ struct Scene
 	Box WorldBounds() const;
 };
 
-// Collects the pairs of one frame. Incremental structures (collide, Box2D) report only the pairs
-// that involve a moved proxy, so they keep a persistent set of candidate pairs like a physics
-// engine's contact list: new pairs are added, pairs whose fat boxes no longer overlap are dropped.
-class PairSet
+// The complete set of overlapping pairs for structures that report, per frame, every pair that
+// involves a moved proxy (collide's and Box2D's UpdatePairs), as a physics engine keeps its
+// contact list: pairs of two unmoved proxies stay as they were (their fat boxes did not change),
+// pairs with a moved side are dropped and come back among the reported ones if they still
+// overlap. A plain array suffices, no lookups.
+class PairList
 {
   public:
-	// Returns true if the pair was new.
-	bool Insert(int a, int b);
-	template <typename StillOverlaps> void RemoveIf(StillOverlaps&& keep);
-	template <typename Fn> void ForEach(Fn&& fn) const;
-	size_t Count() const
+	void MarkMoved(int index)
 	{
-		return count_;
+		if (index >= int(moved_.size()))
+		{
+			moved_.resize(size_t(index) + 1, 0);
+		}
+		if (!moved_[size_t(index)])
+		{
+			moved_[size_t(index)] = 1;
+			movedList_.push_back(index);
+		}
 	}
+	void Add(int a, int b)
+	{
+		fresh_.push_back(Pair{a, b});
+	}
+	// Drops the pairs with a moved side, appends the reported ones and forgets the moves.
+	// Returns the number of pairs whose tight boxes overlap.
+	size_t EndFrame(const std::vector<Box>& boxes);
 	size_t Bytes() const
 	{
-		return slots_.size() * sizeof(uint64_t);
+		return (pairs_.capacity() + fresh_.capacity()) * sizeof(Pair) + moved_.capacity() +
+			   movedList_.capacity() * sizeof(int);
 	}
-	void Clear();
 
   private:
-	static constexpr uint64_t kEmpty = ~uint64_t(0);
-	static uint64_t Key(int a, int b)
+	struct Pair
 	{
-		return a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b)
-					 : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
-	}
-	static size_t Hash(uint64_t key)
-	{
-		key ^= key >> 33;
-		key *= 0xff51afd7ed558ccdULL;
-		key ^= key >> 33;
-		return size_t(key);
-	}
-	void Grow();
-	void EraseSlot(size_t slot);
-	std::vector<uint64_t> slots_;
-	size_t count_ = 0;
+		int a, b;
+	};
+	std::vector<Pair> pairs_, fresh_;
+	std::vector<uint8_t> moved_;
+	std::vector<int> movedList_;
 };
-
-template <typename Fn> void PairSet::ForEach(Fn&& fn) const
-{
-	for (uint64_t key : slots_)
-	{
-		if (key != kEmpty)
-		{
-			fn(int(key >> 32), int(key & 0xffffffffu));
-		}
-	}
-}
-
-// Linear probing with backward-shift deletion. The sweep starts just after an empty slot so that
-// no cluster wraps past the start: every element is visited exactly once even while deleting.
-template <typename StillOverlaps> void PairSet::RemoveIf(StillOverlaps&& keep)
-{
-	if (count_ == 0)
-	{
-		return;
-	}
-	size_t mask = slots_.size() - 1;
-	size_t start = 0;
-	while (slots_[start] != kEmpty)
-	{
-		++start;
-	}
-	for (size_t step = 1; step <= slots_.size(); ++step)
-	{
-		size_t slot = (start + step) & mask;
-		while (slots_[slot] != kEmpty)
-		{
-			uint64_t key = slots_[slot];
-			if (keep(int(key >> 32), int(key & 0xffffffffu)))
-			{
-				break;
-			}
-			EraseSlot(slot); // may pull a later element into this slot: look again
-		}
-	}
-}
 
 struct FrameCounts
 {

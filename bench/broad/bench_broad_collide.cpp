@@ -3,6 +3,7 @@
 
 #include <collide/broad.h>
 
+#include <chrono>
 #include <cstdio>
 
 namespace bench
@@ -60,18 +61,7 @@ cdReal Ray2(cd2Ray, cdReal maxFraction, int, uint64_t userData, void* context)
 
 void AddPair(int, int, uint64_t userDataA, uint64_t userDataB, void* context)
 {
-	static_cast<PairSet*>(context)->Insert(int(userDataA), int(userDataB));
-}
-
-bool FatOverlap3(cd3Aabb a, cd3Aabb b)
-{
-	return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
-		   a.min.z <= b.max.z && b.min.z <= a.max.z;
-}
-
-bool FatOverlap2(cd2Aabb a, cd2Aabb b)
-{
-	return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+	static_cast<PairList*>(context)->Add(int(userDataA), int(userDataB));
 }
 
 class CollideAdapter : public Adapter
@@ -144,47 +134,47 @@ class CollideAdapter : public Adapter
 	size_t UpdateAndCountPairs(const Scene& scene) override
 	{
 		size_t count = 0;
+		using Clock = std::chrono::steady_clock;
+		Clock::time_point t0 = Clock::now(), t1, t2;
 		if (dim_ == 3)
 		{
 			for (int i : scene.moved)
 			{
 				const float* d = &scene.displacement[size_t(i) * 3];
-				cd3BroadPhase_MoveProxy(bp3_, proxies_[size_t(i)], To3(scene.boxes[size_t(i)]),
-										cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])});
-			}
-			cd3BroadPhase_UpdatePairs(bp3_, AddPair, &pairs_);
-			pairs_.RemoveIf(
-				[&](int a, int b)
+				if (cd3BroadPhase_MoveProxy(bp3_, proxies_[size_t(i)], To3(scene.boxes[size_t(i)]),
+											cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])}))
 				{
-					if (!FatOverlap3(cd3BroadPhase_GetFatAabb(bp3_, proxies_[size_t(a)]),
-									 cd3BroadPhase_GetFatAabb(bp3_, proxies_[size_t(b)])))
-					{
-						return false;
-					}
-					count += Overlap(scene.boxes[size_t(a)], scene.boxes[size_t(b)]) ? 1 : 0;
-					return true;
-				});
+					pairs_.MarkMoved(i);
+				}
+			}
+			t1 = Clock::now();
+			cd3BroadPhase_UpdatePairs(bp3_, AddPair, &pairs_);
+			t2 = Clock::now();
+			count = pairs_.EndFrame(scene.boxes);
 		}
 		else
 		{
 			for (int i : scene.moved)
 			{
 				const float* d = &scene.displacement[size_t(i) * 3];
-				cd2BroadPhase_MoveProxy(bp2_, proxies_[size_t(i)], To2(scene.boxes[size_t(i)]),
-										cd2Vec{cdReal(d[0]), cdReal(d[1])});
-			}
-			cd2BroadPhase_UpdatePairs(bp2_, AddPair, &pairs_);
-			pairs_.RemoveIf(
-				[&](int a, int b)
+				if (cd2BroadPhase_MoveProxy(bp2_, proxies_[size_t(i)], To2(scene.boxes[size_t(i)]),
+											cd2Vec{cdReal(d[0]), cdReal(d[1])}))
 				{
-					if (!FatOverlap2(cd2BroadPhase_GetFatAabb(bp2_, proxies_[size_t(a)]),
-									 cd2BroadPhase_GetFatAabb(bp2_, proxies_[size_t(b)])))
-					{
-						return false;
-					}
-					count += Overlap(scene.boxes[size_t(a)], scene.boxes[size_t(b)]) ? 1 : 0;
-					return true;
-				});
+					pairs_.MarkMoved(i);
+				}
+			}
+			t1 = Clock::now();
+			cd2BroadPhase_UpdatePairs(bp2_, AddPair, &pairs_);
+			t2 = Clock::now();
+			count = pairs_.EndFrame(scene.boxes);
+		}
+		Clock::time_point t3 = Clock::now();
+		if (++frames_ > 1) // frame 0 builds the initial pair set
+		{
+			moveSeconds_ += std::chrono::duration<double>(t1 - t0).count();
+			pairSeconds_ += std::chrono::duration<double>(t2 - t1).count();
+			sweepSeconds_ += std::chrono::duration<double>(t3 - t2).count();
+			moved_ += scene.moved.size();
 		}
 		return count;
 	}
@@ -239,9 +229,14 @@ class CollideAdapter : public Adapter
 	{
 		cdBroadPhaseStats stats = dim_ == 3 ? cd3BroadPhase_GetStats(bp3_) : cd2BroadPhase_GetStats(bp2_);
 		bool valid = dim_ == 3 ? cd3BroadPhase_Validate(bp3_) : cd2BroadPhase_Validate(bp2_);
-		char text[160];
-		std::snprintf(text, sizeof text, "nodes=%d height=%d sah=%.1f valid=%s", stats.nodeCount,
-					  stats.height, stats.sahCost, valid ? "yes" : "NO");
+		char text[256];
+		double frames = frames_ > 1 ? double(frames_ - 1) : 1.0;
+		std::snprintf(
+			text, sizeof text,
+			"nodes=%d height=%d valid=%s | per frame: %.0f moved, move %.2f ms, UpdatePairs %.2f ms, "
+			"pair-set sweep %.2f ms",
+			stats.nodeCount, stats.height, valid ? "yes" : "NO", double(moved_) / frames,
+			1e3 * moveSeconds_ / frames, 1e3 * pairSeconds_ / frames, 1e3 * sweepSeconds_ / frames);
 		return text;
 	}
 
@@ -252,7 +247,10 @@ class CollideAdapter : public Adapter
 	cd3BroadPhase* bp3_ = nullptr;
 	cd2BroadPhase* bp2_ = nullptr;
 	std::vector<int> proxies_;
-	PairSet pairs_;
+	PairList pairs_;
+	int frames_ = 0;
+	size_t moved_ = 0;
+	double moveSeconds_ = 0, pairSeconds_ = 0, sweepSeconds_ = 0;
 };
 
 } // namespace

@@ -334,28 +334,25 @@ class Box2dAdapter : public Adapter
 	// b2BroadPhase::UpdatePairs calls this for each pair that involves a moved proxy.
 	void AddPair(void* a, void* b)
 	{
-		pairs_.Insert(int(reinterpret_cast<intptr_t>(a)), int(reinterpret_cast<intptr_t>(b)));
+		pairs_.Add(int(reinterpret_cast<intptr_t>(a)), int(reinterpret_cast<intptr_t>(b)));
 	}
 	size_t UpdateAndCountPairs(const Scene& scene) override
 	{
 		for (int i : scene.moved)
 		{
 			const float* d = &scene.displacement[size_t(i) * 3];
-			broadphase_.MoveProxy(proxies_[size_t(i)], ToB2(scene.boxes[size_t(i)]), b2Vec2(d[0], d[1]));
+			int32 proxy = proxies_[size_t(i)];
+			b2AABB before = broadphase_.GetFatAABB(proxy);
+			broadphase_.MoveProxy(proxy, ToB2(scene.boxes[size_t(i)]), b2Vec2(d[0], d[1]));
+			// MoveProxy says nothing; a changed fat box is what makes UpdatePairs report the proxy.
+			const b2AABB& after = broadphase_.GetFatAABB(proxy);
+			if (!(before.lowerBound == after.lowerBound && before.upperBound == after.upperBound))
+			{
+				pairs_.MarkMoved(i);
+			}
 		}
 		broadphase_.UpdatePairs(this);
-		// As b2ContactManager::Collide: drop pairs whose fat boxes stopped overlapping.
-		size_t count = 0;
-		pairs_.RemoveIf(
-			[&](int a, int b)
-			{
-				if (!broadphase_.TestOverlap(proxies_[size_t(a)], proxies_[size_t(b)]))
-				{
-					return false;
-				}
-				count += Overlap(scene.boxes[size_t(a)], scene.boxes[size_t(b)]) ? 1 : 0;
-				return true;
-			});
+		size_t count = pairs_.EndFrame(scene.boxes);
 		return count;
 	}
 	struct B2Callback
@@ -420,7 +417,7 @@ class Box2dAdapter : public Adapter
 	}
 	b2BroadPhase broadphase_;
 	std::vector<int32> proxies_;
-	PairSet pairs_;
+	PairList pairs_;
 };
 #endif
 
