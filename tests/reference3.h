@@ -425,7 +425,7 @@ static inline RDistance RComputeDistance(const RShape* a, const RShape* b)
 	d.lower = 0.0;
 	d.upper = INFINITY;
 	d.pointA = d.pointB = x;
-	for (int iteration = 0; iteration < 1000; ++iteration)
+	for (int iteration = 0; iteration < 400; ++iteration)
 	{
 		RVec pa = RProject(a, x);
 		RVec pb = RProject(b, pa);
@@ -444,7 +444,7 @@ static inline RDistance RComputeDistance(const RShape* a, const RShape* b)
 		double lowestA = RDot(w, RSupport(a, RScale(-1.0, w)));
 		double highestB = RDot(w, RSupport(b, w));
 		d.lower = fmax(d.lower, (lowestA - highestB) / RLength(w));
-		if (d.upper - d.lower <= 1e-12 * fmax(scale, 1e-300) || d.upper <= 1e-14 * scale)
+		if (d.upper - d.lower <= 1e-11 * fmax(scale, 1e-300) || d.upper <= 1e-14 * scale)
 		{
 			break;
 		}

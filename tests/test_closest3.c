@@ -276,6 +276,41 @@ static void TestNearlyParallelSegments(void)
 	}
 }
 
+/* Thin but valid triangles (smallest angle down to 1e-6): the closest point of points on and
+ * near them stays accurate, although their computed normal is poor in float. */
+static void TestThinTriangles(void)
+{
+	TestRng rng = TestRngMake(0x5EED3105u);
+	const double thickness[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+	int tested = 0;
+	for (int i = 0; i < 2000; ++i)
+	{
+		cd3Vec a = RandomVec(&rng, -2, 2), b = cd3Add(a, RandomVec(&rng, -2, 2));
+		cd3Vec side = cd3Perpendicular(cd3Normalize(cd3Sub(b, a)));
+		cdReal along = (cdReal)TestRngRange(&rng, -0.2, 1.2);
+		cdReal across = (cdReal)(thickness[i % 5] * TestRngRange(&rng, 0.5, 1.0)) * cd3Length(cd3Sub(b, a));
+		cd3Triangle t = {a, b, cd3MulAdd(cd3Lerp(a, b, along), across, side)};
+		if (!cd3IsValidTriangle(t))
+		{
+			continue;
+		}
+		++tested;
+		cd3Shape shape = cd3MakeTriangleShape(t);
+		RShape r = RFromShape(&shape);
+		RVec onTriangle = RSample(&r, &rng, RMake(0, 0, 0), 0.0);
+		RVec rp = RAdd(onTriangle, RScale(TestRngRange(&rng, -0.1, 0.1), RFromVec(RandomUnit(&rng))));
+		cd3Vec p = RToVec(rp);
+		rp = RFromVec(p);
+		RVec rq = RFromVec(cd3ClosestPointOnTriangle(t, p));
+		RVec reference = RProject(&r, rp);
+		double tolerance = REL_TOLERANCE * RShapeScale(&r);
+		TEST_CHECKF(RDist(rq, reference) <= tolerance &&
+						fabs(RDist(rp, rq) - RDist(rp, reference)) <= tolerance,
+					"thickness %g: error %g", thickness[i % 5], RDist(rq, reference));
+	}
+	TEST_CHECKF(tested > 1000, "only %d valid thin triangles", tested);
+}
+
 /* Closest point on each shape to random points, at several scales: finite, on the shape,
  * at the reference's distance, the point itself when inside, and no sampled point is closer. */
 static void TestRandomClosestPoint(void)
@@ -412,6 +447,7 @@ int main(void)
 	TEST_RUN(TestSegmentSegmentExact);
 	TEST_RUN(TestTriangleSegmentExact);
 	TEST_RUN(TestNearlyParallelSegments);
+	TEST_RUN(TestThinTriangles);
 	TEST_RUN(TestRandomClosestPoint);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestFarFromOrigin);

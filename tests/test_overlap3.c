@@ -513,7 +513,9 @@ static Verdict ReferenceVerdict(const cd3Shape* a, const cd3Shape* b, double ban
 {
 	RShape ra = RFromShape(a), rb = RFromShape(b);
 	RDistance d = RComputeDistance(&ra, &rb);
-	double zero = 1e-7 * band;
+	/* Zero up to the double reference's own resolution at the shapes' coordinates. */
+	RShape ra0 = RFromShape(a), rb0 = RFromShape(b);
+	double zero = fmax(1e-7 * band, 1e-14 * fmax(RShapeScale(&ra0), RShapeScale(&rb0)));
 	if (d.lower > band)
 	{
 		return VERDICT_APART;
@@ -546,8 +548,10 @@ static cd3Transform RandomRigid(TestRng* rng, bool translationOnly, double scale
 
 /* Every pair of types, both orders, against the reference; then the same pair under a common
  * rigid motion. Counts make sure both verdicts were exercised for every pair that can have them. */
-static void RunRandomPairs(double scale, int casesPerPair, uint64_t seed)
+/* Shapes of size `scale` around `offset`, judged `band` away from the boundary. */
+static void RunRandomPairs(double scale, double offset, double band, int casesPerPair, uint64_t seed)
 {
+	RVec shift = RMake(offset, -0.5 * offset, 0.25 * offset);
 	TestRng rng = TestRngMake(seed);
 	for (int ta = 0; ta < (int)CD3_SHAPE_TYPE_COUNT; ++ta)
 	{
@@ -566,11 +570,16 @@ static void RunRandomPairs(double scale, int casesPerPair, uint64_t seed)
 					RVec target = RSample(&ra, &rng, RMake(0, 0, 0), 2.0 * scale);
 					b = Translated(&b, RSub(target, RReferencePoint(&rb)));
 				}
+				if (offset != 0.0)
+				{
+					a = Translated(&a, shift);
+					b = Translated(&b, shift);
+				}
 				bool ab = cd3Overlap(&a, &b);
 				bool ba = cd3Overlap(&b, &a);
 				TEST_CHECKF(ab == ba, "%s-%s scale %g: order matters (%d vs %d)", cd3ShapeTypeName(a.type),
 							cd3ShapeTypeName(b.type), scale, (int)ab, (int)ba);
-				Verdict verdict = ReferenceVerdict(&a, &b, 1e-3 * scale);
+				Verdict verdict = ReferenceVerdict(&a, &b, band);
 				if (verdict == VERDICT_UNDECIDED)
 				{
 					continue;
@@ -614,15 +623,100 @@ static void RunRandomPairs(double scale, int casesPerPair, uint64_t seed)
 
 static void TestRandomPairsUnitScale(void)
 {
-	RunRandomPairs(1.0, 2000, 0x5EED3201u);
+	RunRandomPairs(1.0, 0.0, 1e-3, 500, 0x5EED3201u);
 }
 
 static void TestRandomPairsHugeAndTiny(void)
 {
-	RunRandomPairs(CD_DOUBLE ? 1e30 : 1e9, 300, 0x5EED3202u);
-	RunRandomPairs(1e6, 300, 0x5EED3203u);
-	RunRandomPairs(1e-6, 300, 0x5EED3204u);
-	RunRandomPairs(CD_DOUBLE ? 1e-30 : 1e-9, 300, 0x5EED3205u);
+	double huge = CD_DOUBLE ? 1e30 : 1e9, tiny = CD_DOUBLE ? 1e-30 : 1e-9;
+	RunRandomPairs(huge, 0.0, 1e-3 * huge, 100, 0x5EED3202u);
+	RunRandomPairs(1e6, 0.0, 1e-3 * 1e6, 100, 0x5EED3203u);
+	RunRandomPairs(1e-6, 0.0, 1e-3 * 1e-6, 100, 0x5EED3204u);
+	RunRandomPairs(tiny, 0.0, 1e-3 * tiny, 100, 0x5EED3205u);
+}
+
+/* Unit-sized shapes far from the origin: the band must cover the input's own resolution there
+ * and the tests' tolerance, a few epsilon of the coordinates (1e3 in float: 1e-4 and 2e-3). */
+static void TestRandomPairsFarFromOrigin(void)
+{
+	double offset = CD_DOUBLE ? 1e9 : 1e3;
+	double band = CD_DOUBLE ? 1e-4 : 1e-2;
+	RunRandomPairs(1.0, offset, band, 150, 0x5EED3208u);
+}
+
+/* Largest width of a bounded shape (0 for a half-space). */
+static double RExtent(const RShape* s)
+{
+	if (s->type == CD3_SHAPE_PLANE)
+	{
+		return 0.0;
+	}
+	double extent = 0.0;
+	RVec axes[3] = {RMake(1, 0, 0), RMake(0, 1, 0), RMake(0, 0, 1)};
+	for (int i = 0; i < 3; ++i)
+	{
+		extent = fmax(extent, RDot(axes[i], RSub(RSupport(s, axes[i]), RSupport(s, RScale(-1.0, axes[i])))));
+	}
+	return extent;
+}
+
+/* Pairs moved into contact along their reference closest direction must overlap (touching counts),
+ * and moved to a small gap must not. The exact source-text tests (sphere-sphere, sphere-AABB,
+ * AABB-AABB) are left out: after rounding the moved shape, touching there is a coin toss. */
+static void TestTouchingPairs(void)
+{
+	TestRng rng = TestRngMake(0x5EED3209u);
+	const double gap = CD_DOUBLE ? 1e-9 : 1e-3;
+	const double touchingSlack = 4.0 * CD_REAL_EPSILON;
+	for (int ta = 0; ta < (int)CD3_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = ta; tb < (int)CD3_SHAPE_TYPE_COUNT; ++tb)
+		{
+			bool exact = (ta == CD3_SHAPE_SPHERE && (tb == CD3_SHAPE_SPHERE || tb == CD3_SHAPE_AABB)) ||
+						 (ta == CD3_SHAPE_AABB && tb == CD3_SHAPE_AABB) ||
+						 (ta == CD3_SHAPE_PLANE && tb == CD3_SHAPE_PLANE);
+			if (exact)
+			{
+				continue;
+			}
+			int touching = 0, apart = 0;
+			for (int i = 0; i < 150; ++i)
+			{
+				cd3Shape a = RandomShape(&rng, (cd3ShapeType)ta, 1.0);
+				cd3Shape b = RandomShape(&rng, (cd3ShapeType)tb, 1.0);
+				RShape ra = RFromShape(&a), rb = RFromShape(&b);
+				RDistance d = RComputeDistance(&ra, &rb);
+				if (!(d.lower > 0.05) || d.upper - d.lower > 1e-9)
+				{
+					continue;
+				}
+				RVec move = RSub(d.pointA, d.pointB);
+				cd3Shape touch = Translated(&b, move);
+				RShape rt = RFromShape(&touch);
+				char textA[256], textB[256];
+				/* Rounding the moved shape leaves a gap of an ulp or so; the queries absorb that
+				 * relative to the shapes' size, so a pair of points must meet exactly. */
+				double slack = touchingSlack * fmax(RExtent(&ra), RExtent(&rb));
+				if (RComputeDistance(&ra, &rt).upper <= slack)
+				{
+					++touching;
+					TEST_CHECKF(cd3Overlap(&a, &touch) && cd3Overlap(&touch, &a), "touching %s and %s",
+								ShapeText(&a, textA, sizeof textA), ShapeText(&touch, textB, sizeof textB));
+				}
+				cd3Shape near = Translated(&b, RScale(1.0 - gap / d.upper, move));
+				RShape rn = RFromShape(&near);
+				if (RComputeDistance(&ra, &rn).lower > 0.5 * gap)
+				{
+					++apart;
+					TEST_CHECKF(!cd3Overlap(&a, &near) && !cd3Overlap(&near, &a), "%g apart: %s and %s", gap,
+								ShapeText(&a, textA, sizeof textA), ShapeText(&near, textB, sizeof textB));
+				}
+			}
+			TEST_CHECKF(touching >= 5 && apart >= 20, "%s-%s: %d touching, %d apart cases",
+						cd3ShapeTypeName((cd3ShapeType)ta), cd3ShapeTypeName((cd3ShapeType)tb), touching,
+						apart);
+		}
+	}
 }
 
 /* Point containment of random points against the reference projection, with the same band. */
@@ -703,6 +797,16 @@ static void TestClosestPointIsContained(void)
 		cd3Shape shape = RandomShape(&rng, type, 1.0);
 		cd3Vec p = RandomVec(&rng, -6, 6);
 		cd3Vec q = cd3ClosestPointOnShape(&shape, p);
+		if (type == CD3_SHAPE_PLANE)
+		{
+			/* The projection cancels p's normal component, so q carries an error of epsilon
+			 * times |p|, not times |q| or the offset that the containment test scales with. */
+			double height = RDot(RFromVec(shape.plane.normal), RFromVec(q)) - (double)shape.plane.offset;
+			double magnitude = fmax(RMaxAbs(RFromVec(p)), fabs((double)shape.plane.offset));
+			TEST_CHECKF(height <= 8.0 * CD_REAL_EPSILON * magnitude, "plane: closest point %g outside",
+						height);
+			continue;
+		}
 		TEST_CHECKF(cd3PointInShape(&shape, q), "%s: closest point (%g %g %g) not contained",
 					cd3ShapeTypeName(type), (double)q.x, (double)q.y, (double)q.z);
 		/* And a sphere of radius 0 there overlaps the shape. */
@@ -754,6 +858,8 @@ int main(void)
 	TEST_RUN(TestTrianglePlaneSegmentPairs);
 	TEST_RUN(TestRandomPairsUnitScale);
 	TEST_RUN(TestRandomPairsHugeAndTiny);
+	TEST_RUN(TestRandomPairsFarFromOrigin);
+	TEST_RUN(TestTouchingPairs);
 	TEST_RUN(TestRandomPointInShape);
 	TEST_RUN(TestClosestPointIsContained);
 	TEST_RUN(TestDegenerateNeverCrash);

@@ -112,61 +112,138 @@ cd3Vec cd3ClosestPointOnPlane(cd3Plane plane, cd3Vec p)
 	return cd3MulSub(p, height / normalSquared, plane.normal);
 }
 
-static cd3Vec ClosestPointOnTriangleEdges(cd3Triangle t, cd3Vec p)
+/* The triangle query runs in double even when cdReal is float. A thin triangle's normal carries
+ * a relative error of epsilon / sin(smallest angle), which in float spoils the closest point of
+ * valid slivers by far more than the tolerance of the queries built on it; the products of float
+ * inputs are exact in double, so the float build gets the answer to nearly float precision. */
+typedef struct WideVec
 {
-	cd3Segment edges[3] = {{t.a, t.b}, {t.b, t.c}, {t.c, t.a}};
-	cd3Vec best = t.a;
-	cdReal bestDistanceSquared = CD_REAL_MAX;
-	for (int i = 0; i < 3; ++i)
+	double x, y, z;
+} WideVec;
+
+static WideVec Widen(cd3Vec v)
+{
+	WideVec w = {(double)v.x, (double)v.y, (double)v.z};
+	return w;
+}
+
+static cd3Vec Narrow(WideVec w)
+{
+	return cd3MakeVec((cdReal)w.x, (cdReal)w.y, (cdReal)w.z);
+}
+
+static WideVec WideSub(WideVec a, WideVec b)
+{
+	WideVec c = {a.x - b.x, a.y - b.y, a.z - b.z};
+	return c;
+}
+
+static WideVec WideMulAdd(WideVec a, double s, WideVec b)
+{
+	WideVec c = {a.x + s * b.x, a.y + s * b.y, a.z + s * b.z};
+	return c;
+}
+
+static WideVec WideScale(double s, WideVec a)
+{
+	WideVec c = {s * a.x, s * a.y, s * a.z};
+	return c;
+}
+
+static double WideDot(WideVec a, WideVec b)
+{
+	return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+static WideVec WideCross(WideVec a, WideVec b)
+{
+	WideVec c = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+	return c;
+}
+
+static double WideMaxAbs(WideVec v)
+{
+	double x = v.x < 0.0 ? -v.x : v.x, y = v.y < 0.0 ? -v.y : v.y, z = v.z < 0.0 ? -v.z : v.z;
+	return x > y ? (x > z ? x : z) : (y > z ? y : z);
+}
+
+static double WideClampedRatio(double numerator, double denominator)
+{
+	if (!(denominator > 0.0) || numerator <= 0.0)
 	{
-		cd3Vec candidate = cd3ClosestPointOnSegment(edges[i], p);
-		cdReal distanceSquared = cd3VecDistanceSquared(candidate, p);
-		if (distanceSquared < bestDistanceSquared)
+		return 0.0;
+	}
+	return numerator >= denominator ? 1.0 : numerator / denominator;
+}
+
+/* Closest point of segment a-b to p, all relative to the same origin. */
+static WideVec WideClosestOnSegment(WideVec a, WideVec b, WideVec p)
+{
+	WideVec d = WideSub(b, a);
+	return WideMulAdd(a, WideClampedRatio(WideDot(WideSub(p, a), d), WideDot(d, d)), d);
+}
+
+/* Nearest of the three edges: what a degenerate triangle is. Relative to vertex a. */
+static cd3Vec ClosestPointOnTriangleEdges(cd3Vec origin, WideVec b, WideVec c, WideVec p)
+{
+	WideVec zero = {0.0, 0.0, 0.0};
+	WideVec candidates[3] = {WideClosestOnSegment(zero, b, p), WideClosestOnSegment(b, c, p),
+							 WideClosestOnSegment(c, zero, p)};
+	int best = 0;
+	double bestDistance = WideDot(WideSub(candidates[0], p), WideSub(candidates[0], p));
+	for (int i = 1; i < 3; ++i)
+	{
+		double distance = WideDot(WideSub(candidates[i], p), WideSub(candidates[i], p));
+		if (distance < bestDistance)
 		{
-			bestDistanceSquared = distanceSquared;
-			best = candidate;
+			bestDistance = distance;
+			best = i;
 		}
 	}
-	return best;
+	return Narrow(WideMulAdd(Widen(origin), 1.0, candidates[best]));
 }
 
 /* Voronoi regions of the vertices, then the edges, then the face (Ericson 5.1.5). */
 cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 {
-	cd3Vec ab = cd3Sub(t.b, t.a);
-	cd3Vec ac = cd3Sub(t.c, t.a);
-	cd3Vec ap = cd3Sub(p, t.a);
-	cdReal scale = cdMax(MaxAbsComponent(ab), cdMax(MaxAbsComponent(ac), MaxAbsComponent(ap)));
-	if (!(scale > CD_R(0.0)))
+	WideVec origin = Widen(t.a);
+	WideVec ab = WideSub(Widen(t.b), origin);
+	WideVec ac = WideSub(Widen(t.c), origin);
+	WideVec ap = WideSub(Widen(p), origin);
+	/* Scaled so that the products below neither overflow nor underflow. */
+	double scale = WideMaxAbs(ab);
+	scale = WideMaxAbs(ac) > scale ? WideMaxAbs(ac) : scale;
+	scale = WideMaxAbs(ap) > scale ? WideMaxAbs(ap) : scale;
+	if (!(scale > 0.0))
 	{
 		return t.a;
 	}
-	cdReal inverse = CD_R(1.0) / scale;
-	cd3Vec sab = cd3Scale(inverse, ab);
-	cd3Vec sac = cd3Scale(inverse, ac);
-	cd3Vec sap = cd3Scale(inverse, ap);
+	double inverse = 1.0 / scale;
+	WideVec sab = WideScale(inverse, ab);
+	WideVec sac = WideScale(inverse, ac);
+	WideVec sap = WideScale(inverse, ap);
 
 	/* A (nearly) zero-area triangle has no face region, and its edge regions can be empty: it is
 	 * the segment or point it collapsed to. Same threshold as cd3IsValidTriangle. */
-	cd3Vec normal = cd3Cross(sab, sac);
-	cdReal normalSquared = cd3Dot(normal, normal);
-	cdReal limit = CD_R(4.0) * CD_REAL_EPSILON;
-	if (normalSquared <= limit * limit * cd3LengthSquared(sab) * cd3LengthSquared(sac))
+	WideVec normal = WideCross(sab, sac);
+	double normalSquared = WideDot(normal, normal);
+	double limit = 4.0 * (double)CD_REAL_EPSILON;
+	if (normalSquared <= limit * limit * WideDot(sab, sab) * WideDot(sac, sac))
 	{
-		return ClosestPointOnTriangleEdges(t, p);
+		return ClosestPointOnTriangleEdges(t.a, ab, ac, ap);
 	}
 
-	cdReal d1 = cd3Dot(sab, sap);
-	cdReal d2 = cd3Dot(sac, sap);
-	if (d1 <= CD_R(0.0) && d2 <= CD_R(0.0))
+	double d1 = WideDot(sab, sap);
+	double d2 = WideDot(sac, sap);
+	if (d1 <= 0.0 && d2 <= 0.0)
 	{
 		return t.a;
 	}
 
-	cd3Vec sbp = cd3Sub(sap, sab);
-	cdReal d3 = cd3Dot(sab, sbp);
-	cdReal d4 = cd3Dot(sac, sbp);
-	if (d3 >= CD_R(0.0) && d4 <= d3)
+	WideVec sbp = WideSub(sap, sab);
+	double d3 = WideDot(sab, sbp);
+	double d4 = WideDot(sac, sbp);
+	if (d3 >= 0.0 && d4 <= d3)
 	{
 		return t.b;
 	}
@@ -174,45 +251,45 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 	/* The barycentric weights va, vb, vc are Ericson's d3*d6 - d5*d4 and so on, written by the
 	 * Lagrange identity as n . (bp x cp) etc.: the cross products keep the relative error at
 	 * epsilon / sin(angle) instead of epsilon / sin^2 on thin triangles. */
-	cdReal vc = cd3Dot(normal, cd3Cross(sap, sbp));
-	if (vc <= CD_R(0.0) && d1 >= CD_R(0.0) && d3 <= CD_R(0.0))
+	double vc = WideDot(normal, WideCross(sap, sbp));
+	if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
 	{
-		return cd3MulAdd(t.a, ClampedRatio(d1, d1 - d3), ab);
+		return Narrow(WideMulAdd(origin, WideClampedRatio(d1, d1 - d3), ab));
 	}
 
-	cd3Vec scp = cd3Sub(sap, sac);
-	cdReal d5 = cd3Dot(sab, scp);
-	cdReal d6 = cd3Dot(sac, scp);
-	if (d6 >= CD_R(0.0) && d5 <= d6)
+	WideVec scp = WideSub(sap, sac);
+	double d5 = WideDot(sab, scp);
+	double d6 = WideDot(sac, scp);
+	if (d6 >= 0.0 && d5 <= d6)
 	{
 		return t.c;
 	}
 
-	cdReal vb = cd3Dot(normal, cd3Cross(scp, sap));
-	if (vb <= CD_R(0.0) && d2 >= CD_R(0.0) && d6 <= CD_R(0.0))
+	double vb = WideDot(normal, WideCross(scp, sap));
+	if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
 	{
-		return cd3MulAdd(t.a, ClampedRatio(d2, d2 - d6), ac);
+		return Narrow(WideMulAdd(origin, WideClampedRatio(d2, d2 - d6), ac));
 	}
 
-	cdReal va = cd3Dot(normal, cd3Cross(sbp, scp));
-	cdReal fromB = d4 - d3;
-	cdReal fromC = d5 - d6;
-	if (va <= CD_R(0.0) && fromB >= CD_R(0.0) && fromC >= CD_R(0.0))
+	double va = WideDot(normal, WideCross(sbp, scp));
+	double fromB = d4 - d3;
+	double fromC = d5 - d6;
+	if (va <= 0.0 && fromB >= 0.0 && fromC >= 0.0)
 	{
-		return cd3MulAdd(t.b, ClampedRatio(fromB, fromB + fromC), cd3Sub(t.c, t.b));
+		WideVec b = Widen(t.b);
+		return Narrow(WideMulAdd(b, WideClampedRatio(fromB, fromB + fromC), WideSub(Widen(t.c), b)));
 	}
 
-	if (va > CD_R(0.0) && vb > CD_R(0.0) && vc > CD_R(0.0))
+	if (va > 0.0 && vb > 0.0 && vc > 0.0)
 	{
 		/* Project p onto the plane rather than rebuilding the point from its barycentric
-		 * coordinates: for p near the triangle the error then stays at epsilon times |ap| even
-		 * when the triangle is thin, where the weights carry epsilon / sin(angle). */
-		cdReal height = cd3Dot(normal, sap) / normalSquared;
-		return cd3MulSub(p, height * scale, normal);
+		 * coordinates: for p near the triangle the error then stays at epsilon times |ap|. */
+		double height = WideDot(normal, sap) / normalSquared;
+		return Narrow(WideMulAdd(Widen(p), -height * scale, normal));
 	}
 
 	/* Round-off on a nearly degenerate triangle can leave no region: fall back to the edges. */
-	return ClosestPointOnTriangleEdges(t, p);
+	return ClosestPointOnTriangleEdges(t.a, ab, ac, ap);
 }
 
 cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b)

@@ -12,6 +12,8 @@
  * so huge offsets from the origin cost no more precision than the input itself carries. */
 #include "collide/query3.h"
 
+#include <string.h>
+
 #define CD_OVERLAP_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
 
 static cdReal MaxAbsComponent(cd3Vec v)
@@ -27,6 +29,14 @@ static cdReal Tolerance(cdReal magnitude)
 static cdReal AbsSum(cd3Vec v)
 {
 	return cdAbs(v.x) + cdAbs(v.y) + cdAbs(v.z);
+}
+
+/* Pairs of the same type are put in one order (by their bytes) before computing, so that the
+ * answer is exactly the same for (a, b) and (b, a): the computations below are not symmetric in
+ * their round-off. */
+static bool ShouldSwap(const void* a, const void* b, size_t size)
+{
+	return memcmp(a, b, size) > 0;
 }
 
 /* ---- the source texts' tests ------------------------------------------------------------- */
@@ -102,6 +112,19 @@ static bool WithinRadius(cdReal distanceSquared, cdReal radius, cdReal magnitude
 	return distanceSquared <= limit * limit;
 }
 
+/* The AABB's center relative to `origin` (a point of the other shape) and its half extents:
+ * working relative to the other shape keeps the rounding of the center at epsilon times their
+ * separation instead of epsilon times the distance from the world origin. `magnitude` is the
+ * size that this rounding scales with. */
+static cd3Vec RelativeAabbCenter(cd3Aabb a, cd3Vec origin, cd3Vec* halfExtents, cdReal* magnitude)
+{
+	cd3Vec lower = cd3Sub(a.min, origin);
+	cd3Vec upper = cd3Sub(a.max, origin);
+	*halfExtents = cd3Scale(CD_R(0.5), cd3Sub(a.max, a.min));
+	*magnitude = cdMax(MaxAbsComponent(lower), MaxAbsComponent(upper));
+	return cd3Scale(CD_R(0.5), cd3Add(lower, upper));
+}
+
 /* ---- helpers on boxes in their local frame (centered at the origin, half extents h) -------- */
 
 /* Separating-axis test of segment p1-p2 against the centered box (Ericson 5.3.3): the three box
@@ -111,7 +134,9 @@ static bool SegmentOverlapsCenteredBox(cd3Vec p1, cd3Vec p2, cd3Vec h, cdReal ma
 	cd3Vec mid = cd3Scale(CD_R(0.5), cd3Add(p1, p2));
 	cd3Vec half = cd3Scale(CD_R(0.5), cd3Sub(p2, p1));
 	cd3Vec absHalf = cd3Abs(half);
-	cdReal scale = cdMax(magnitude, cdMax(MaxAbsComponent(mid), MaxAbsComponent(h)));
+	/* mid and half are rounded relative to the endpoints, so their magnitude counts too. */
+	cdReal scale =
+		cdMax(cdMax(magnitude, MaxAbsComponent(half)), cdMax(MaxAbsComponent(mid), MaxAbsComponent(h)));
 	cdReal tolerance = Tolerance(scale + MaxAbsComponent(half));
 	if (cdAbs(mid.x) > h.x + absHalf.x + tolerance || cdAbs(mid.y) > h.y + absHalf.y + tolerance ||
 		cdAbs(mid.z) > h.z + absHalf.z + tolerance)
@@ -373,6 +398,12 @@ bool cd3OverlapSphereSegment(cd3Sphere s, cd3Segment g)
 
 bool cd3OverlapCapsuleCapsule(cd3Capsule a, cd3Capsule b)
 {
+	if (ShouldSwap(&a, &b, sizeof(cd3Capsule)))
+	{
+		cd3Capsule swapped = a;
+		a = b;
+		b = swapped;
+	}
 	cd3Segment sa = {a.p1, a.p2};
 	cd3Segment sb = {b.p1, b.p2};
 	cdReal magnitude;
@@ -382,11 +413,11 @@ bool cd3OverlapCapsuleCapsule(cd3Capsule a, cd3Capsule b)
 
 bool cd3OverlapCapsuleAabb(cd3Capsule c, cd3Aabb b)
 {
-	cd3Vec center = cd3AabbCenter(b);
-	cd3Vec h = cd3AabbHalfExtents(b);
-	/* The center and half extents are rounded: their error scales with the corner magnitudes. */
-	cdReal magnitude = cdMax(MaxAbsComponent(b.min), MaxAbsComponent(b.max));
-	return CapsuleOverlapsCenteredBox(cd3Sub(c.p1, center), cd3Sub(c.p2, center), c.radius, h, magnitude);
+	cd3Vec h;
+	cdReal magnitude;
+	cd3Vec center = RelativeAabbCenter(b, c.p1, &h, &magnitude);
+	cd3Vec p2 = cd3Sub(c.p2, c.p1);
+	return CapsuleOverlapsCenteredBox(cd3Neg(center), cd3Sub(p2, center), c.radius, h, magnitude);
 }
 
 bool cd3OverlapCapsuleBox(cd3Capsule c, cd3Box b)
@@ -424,21 +455,23 @@ bool cd3OverlapCapsuleSegment(cd3Capsule c, cd3Segment g)
 
 bool cd3OverlapAabbBox(cd3Aabb a, cd3Box b)
 {
-	cd3Vec center = cd3AabbCenter(a);
+	cd3Vec hA;
+	cdReal magnitude;
+	cd3Vec center = RelativeAabbCenter(a, b.center, &hA, &magnitude);
 	cd3Mat33 rotation = cd3MakeMatFromQuat(cd3NormalizeQuat(b.rotation));
-	cd3Vec hA = cd3AabbHalfExtents(a);
-	cdReal magnitude = cdMax(MaxAbsComponent(a.min), MaxAbsComponent(a.max));
-	/* Pad A by the round-off of its center and half extents. */
-	hA = cd3Add(hA, cd3MakeVec(Tolerance(magnitude), Tolerance(magnitude), Tolerance(magnitude)));
-	return CenteredBoxesOverlap(hA, b.halfExtents, rotation, cd3Sub(b.center, center));
+	/* Pad A by the round-off of its relative center. */
+	cdReal pad = Tolerance(magnitude);
+	hA = cd3Add(hA, cd3MakeVec(pad, pad, pad));
+	return CenteredBoxesOverlap(hA, b.halfExtents, rotation, cd3Neg(center));
 }
 
 bool cd3OverlapAabbTriangle(cd3Aabb a, cd3Triangle t)
 {
-	cd3Vec center = cd3AabbCenter(a);
-	cdReal magnitude = cdMax(MaxAbsComponent(a.min), MaxAbsComponent(a.max));
-	return TriangleOverlapsCenteredBox(cd3Sub(t.a, center), cd3Sub(t.b, center), cd3Sub(t.c, center),
-									   cd3AabbHalfExtents(a), magnitude);
+	cd3Vec h;
+	cdReal magnitude;
+	cd3Vec center = RelativeAabbCenter(a, t.a, &h, &magnitude);
+	cd3Vec b = cd3Sub(t.b, t.a), c = cd3Sub(t.c, t.a);
+	return TriangleOverlapsCenteredBox(cd3Neg(center), cd3Sub(b, center), cd3Sub(c, center), h, magnitude);
 }
 
 /* The corner that reaches deepest against the normal decides. */
@@ -452,16 +485,22 @@ bool cd3OverlapAabbPlane(cd3Aabb a, cd3Plane p)
 
 bool cd3OverlapAabbSegment(cd3Aabb a, cd3Segment g)
 {
-	cd3Vec center = cd3AabbCenter(a);
-	cdReal magnitude = cdMax(MaxAbsComponent(a.min), MaxAbsComponent(a.max));
-	return SegmentOverlapsCenteredBox(cd3Sub(g.p1, center), cd3Sub(g.p2, center), cd3AabbHalfExtents(a),
-									  magnitude);
+	cd3Vec h;
+	cdReal magnitude;
+	cd3Vec center = RelativeAabbCenter(a, g.p1, &h, &magnitude);
+	return SegmentOverlapsCenteredBox(cd3Neg(center), cd3Sub(cd3Sub(g.p2, g.p1), center), h, magnitude);
 }
 
 /* ---- box pairs ----------------------------------------------------------------------------- */
 
 bool cd3OverlapBoxBox(cd3Box a, cd3Box b)
 {
+	if (ShouldSwap(&a, &b, sizeof(cd3Box)))
+	{
+		cd3Box swapped = a;
+		a = b;
+		b = swapped;
+	}
 	cd3Mat33 ma = cd3MakeMatFromQuat(cd3NormalizeQuat(a.rotation));
 	cd3Mat33 mb = cd3MakeMatFromQuat(cd3NormalizeQuat(b.rotation));
 	cd3Mat33 rotation = cd3MulMM(cd3Transpose(ma), mb);
@@ -545,6 +584,12 @@ static bool SeparatedOnAxis(cd3Vec axis, const cd3Vec* a, const cd3Vec* b)
  * (nearly) zero-area triangle has no usable normal; it is handled as its longest edge. */
 bool cd3OverlapTriangleTriangle(cd3Triangle ta, cd3Triangle tb)
 {
+	if (ShouldSwap(&ta, &tb, sizeof(cd3Triangle)))
+	{
+		cd3Triangle swapped = ta;
+		ta = tb;
+		tb = swapped;
+	}
 	cd3Vec origin = ta.a;
 	cd3Vec a[3] = {CD3_VEC_ZERO, cd3Sub(ta.b, origin), cd3Sub(ta.c, origin)};
 	cd3Vec b[3] = {cd3Sub(tb.a, origin), cd3Sub(tb.b, origin), cd3Sub(tb.c, origin)};
@@ -662,6 +707,12 @@ bool cd3OverlapPlaneSegment(cd3Plane p, cd3Segment g)
 
 bool cd3OverlapSegmentSegment(cd3Segment a, cd3Segment b)
 {
+	if (ShouldSwap(&a, &b, sizeof(cd3Segment)))
+	{
+		cd3Segment swapped = a;
+		a = b;
+		b = swapped;
+	}
 	cdReal magnitude;
 	cdReal distanceSquared = SegmentSegmentDistanceSquared(a, b, &magnitude);
 	return WithinRadius(distanceSquared, CD_R(0.0), magnitude);
