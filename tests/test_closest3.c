@@ -129,8 +129,15 @@ static void TestSegmentSegmentExact(void)
 	cd3Segment b = {{0, -1, 0}, {0, 1, 0}};
 	cd3ClosestPoints r = cd3ClosestPointsSegmentSegment(a, b);
 	CHECK_VEC(r.pointA, 0, 0, 0, 1e-6);
-	CHECK_VEC(r.pointB, 0, 0, 0, 1e-6);
-	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	TEST_CHECK(r.distance == 0 && cd3VecEqual(r.pointA, r.pointB));
+	/* Crossing at an inexact point: still distance 0 and one common point. */
+	cd3Segment c = {{CD_R(-0.3), CD_R(0.1), CD_R(0.7)}, {CD_R(1.9), CD_R(-1.3), CD_R(-0.2)}};
+	cd3Vec crossing = cd3Lerp(c.p1, c.p2, CD_R(0.37));
+	cd3Segment d = {cd3MulSub(crossing, CD_R(0.6), cd3MakeVec(CD_R(0.3), CD_R(1.1), CD_R(-0.4))),
+					cd3MulAdd(crossing, CD_R(0.9), cd3MakeVec(CD_R(0.3), CD_R(1.1), CD_R(-0.4)))};
+	r = cd3ClosestPointsSegmentSegment(c, d);
+	TEST_CHECK(r.distance == 0 && cd3VecEqual(r.pointA, r.pointB));
+	CHECK_VEC(r.pointA, crossing.x, crossing.y, crossing.z, 1e-5);
 	/* Skew, interior closest points. */
 	b = (cd3Segment){{CD_R(0.5), -1, 2}, {CD_R(0.5), 1, 2}};
 	r = cd3ClosestPointsSegmentSegment(a, b);
@@ -189,10 +196,14 @@ static void TestTriangleSegmentExact(void)
 	/* Piercing the face. */
 	cd3Segment g = {{1, 1, -2}, {1, 1, 2}};
 	cd3ClosestPoints r = cd3ClosestPointsTriangleSegment(t, g);
-	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
+	TEST_CHECK(r.distance == 0 && cd3VecEqual(r.pointA, r.pointB));
 	CHECK_VEC(r.pointA, 1, 1, 0, 1e-6);
 	CHECK_VEC(r.pointB, 1, 1, 0, 1e-6);
 	/* Slanted piercing. */
+	g = (cd3Segment){{CD_R(0.1), CD_R(0.3), -2}, {CD_R(2.3), CD_R(1.7), CD_R(2.9)}};
+	r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECK(r.distance == 0 && cd3VecEqual(r.pointA, r.pointB));
+	TEST_CHECK_NEAR(r.pointA.z, 0, 1e-6);
 	g = (cd3Segment){{0, 0, -2}, {2, 2, 2}};
 	r = cd3ClosestPointsTriangleSegment(t, g);
 	TEST_CHECK_NEAR(r.distance, 0, 1e-6);
@@ -402,6 +413,13 @@ static void TestRandomPairs(void)
 		if (reference.upper <= tolerance)
 		{
 			++zeroCount;
+		}
+		/* Meeting within a few epsilon of their size: one common point at distance 0. */
+		if (reference.upper <= 2.0 * CD_REAL_EPSILON * fmax(RShapeScale(&ra), RShapeScale(&rb)))
+		{
+			TEST_CHECKF(result.distance == 0 && cd3VecEqual(result.pointA, result.pointB),
+						"%s meeting: distance %g", triangle ? "triangle" : "segment",
+						(double)result.distance);
 		}
 		for (int k = 0; k < 40; ++k)
 		{

@@ -292,6 +292,18 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 	return ClosestPointOnTriangleEdges(t.a, ab, ac, ap);
 }
 
+/* Shapes that meet report distance 0 and one common point (query3.h). Crossing segments only
+ * meet within round-off, so a gap below the overlap tests' tolerance (16 epsilon relative to the
+ * pair's extent, see overlap3.c) counts as meeting. */
+static void SnapTouching(cd3ClosestPoints* pair, cdReal magnitude)
+{
+	if (pair->distance <= CD_R(16.0) * CD_REAL_EPSILON * magnitude)
+	{
+		pair->pointB = pair->pointA;
+		pair->distance = CD_R(0.0);
+	}
+}
+
 cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b)
 {
 	cd3Vec d1 = cd3Sub(a.p2, a.p1);
@@ -375,6 +387,7 @@ cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b)
 	result.pointA = cd3MulAdd(a.p1, s, d1);
 	result.pointB = cd3MulAdd(b.p1, t, d2);
 	result.distance = cd3VecDistance(result.pointA, result.pointB);
+	SnapTouching(&result, scale);
 	return result;
 }
 
@@ -432,5 +445,8 @@ cd3ClosestPoints cd3ClosestPointsTriangleSegment(cd3Triangle t, cd3Segment g)
 		KeepCloser(&best, &bestDistanceSquared, pair.pointA, pair.pointB);
 	}
 	best.distance = cd3VecDistance(best.pointA, best.pointB);
+	cdReal magnitude =
+		cdMax(scale, cdMax(MaxAbsComponent(cd3Sub(g.p1, t.a)), MaxAbsComponent(cd3Sub(g.p2, t.a))));
+	SnapTouching(&best, magnitude);
 	return best;
 }

@@ -199,6 +199,13 @@ static cdReal SegmentCenteredBoxDistanceSquared(cd3Vec p1, cd3Vec p2, cd3Vec h)
 
 static bool CapsuleOverlapsCenteredBox(cd3Vec p1, cd3Vec p2, cdReal radius, cd3Vec h, cdReal magnitude)
 {
+	/* Cheap rejection first: the box grown by the radius on every side contains every point
+	 * within the radius of the box. */
+	cd3Vec grown = cd3Add(h, cd3MakeVec(radius, radius, radius));
+	if (!SegmentOverlapsCenteredBox(p1, p2, grown, magnitude))
+	{
+		return false;
+	}
 	if (SegmentOverlapsCenteredBox(p1, p2, h, magnitude))
 	{
 		return true;
