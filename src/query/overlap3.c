@@ -9,7 +9,10 @@
  * i.e. 16 epsilon relative (about 2e-6 in float, 4e-15 in double). Projections onto unnormalized
  * separating axes scale this by the axis' 1-norm. Computations that multiply coordinates are
  * done on coordinates relative to one of the shapes (and scaled where products could overflow),
- * so huge offsets from the origin cost no more precision than the input itself carries. */
+ * so huge offsets from the origin cost no more precision than the input itself carries. The
+ * half-space tests are the exception: a plane's offset is measured from the world origin, so
+ * their magnitude is that of the offset and of the other shape's coordinates. Same-type pairs are
+ * evaluated in one fixed order, so (a, b) and (b, a) agree to the bit. */
 #include "collide/query3.h"
 
 #include <string.h>
