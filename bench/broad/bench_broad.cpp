@@ -435,6 +435,10 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 		std::vector<double> frameSeconds;
 		for (int frame = 1; frame <= options.warmup + options.frames; ++frame)
 		{
+			if (frame == options.warmup + 1)
+			{
+				adapter->StartTiming();
+			}
 			scene.Step(frame);
 			Clock::time_point a = Clock::now();
 			counts.push_back(adapter->UpdateAndCountPairs(scene));

@@ -131,6 +131,10 @@ class Adapter
 	// Number of boxes whose tight box overlaps the query box / meets the ray.
 	virtual size_t Query(const Scene& scene, const Box& box) = 0;
 	virtual size_t RayCast(const Scene& scene, const Ray& ray) = 0;
+	// Called when the timed frames start (per-phase counters restart).
+	virtual void StartTiming()
+	{
+	}
 	// Bytes held by the bench itself (pair sets), subtracted from the measured heap growth.
 	virtual size_t BenchOwnedBytes() const
 	{
