@@ -574,10 +574,26 @@ static void TestExtremeScales(void)
 	}
 }
 
+/* cd2DistanceWithStatus reports GJK's work and gives the same answer as cd2Distance. */
+static void TestDistanceStatus(void)
+{
+	cd2Box box = {{0, 0}, {1, 2}, cd2MakeRot(CD_R(0.4))};
+	cd2Circle circle = {{5, 1}, 0.5f};
+	cd2Shape a = cd2MakeBoxShape(box), b = cd2MakeCircleShape(circle);
+	cdDistanceStatus status = {-1, true};
+	cd2ClosestPoints withStatus = cd2DistanceWithStatus(&a, &b, &status);
+	cd2ClosestPoints plain = cd2Distance(&a, &b);
+	TEST_CHECK(withStatus.distance == plain.distance && withStatus.distance > CD_R(1.0));
+	TEST_CHECKF(status.iterations >= 1 && status.iterations <= 64 && !status.hitIterationCap,
+				"iterations %d, cap %d", status.iterations, (int)status.hitIterationCap);
+	TEST_CHECK(cd2DistanceWithStatus(&a, &b, NULL).distance == plain.distance);
+}
+
 int main(void)
 {
 	TEST_RUN(TestCircles);
 	TEST_RUN(TestPolygonsAndBoxes);
+	TEST_RUN(TestDistanceStatus);
 	TEST_RUN(TestCapsulesAndSegments);
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);

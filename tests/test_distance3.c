@@ -832,6 +832,32 @@ static void TestExtremeScales(void)
 	}
 }
 
+/* cd3DistanceWithStatus reports GJK's work and gives the same answer as cd3Distance. */
+static void TestDistanceStatus(void)
+{
+	cd3Box box = {{0, 0, 0}, {1, 1, 1}, cd3MakeQuatAxisAngle(cd3MakeVec(1, 2, 3), CD_R(0.7))};
+	cd3Sphere sphere = {{4, 0.5f, -0.25f}, 0.5f};
+	cd3Shape a = cd3MakeBoxShape(box), b = cd3MakeSphereShape(sphere);
+	cdDistanceStatus status = {-1, true};
+	cd3ClosestPoints withStatus = cd3DistanceWithStatus(&a, &b, &status);
+	cd3ClosestPoints plain = cd3Distance(&a, &b);
+	TEST_CHECK(withStatus.distance == plain.distance && withStatus.distance > CD_R(1.0));
+	TEST_CHECKF(status.iterations >= 1 && status.iterations <= 64 && !status.hitIterationCap,
+				"iterations %d, cap %d", status.iterations, (int)status.hitIterationCap);
+
+	/* Half-spaces need no iteration. */
+	cd3Plane ground = {{0, 1, 0}, 0};
+	cd3Shape plane = cd3MakePlaneShape(ground);
+	status.iterations = -1;
+	status.hitIterationCap = true;
+	cd3ClosestPoints toPlane = cd3DistanceWithStatus(&plane, &b, &status);
+	TEST_CHECK_NEAR(toPlane.distance, 0.0, 1e-6);
+	TEST_CHECK(status.iterations == 0 && !status.hitIterationCap);
+
+	/* A NULL status is allowed. */
+	TEST_CHECK(cd3DistanceWithStatus(&a, &b, NULL).distance == plain.distance);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSpheres);
@@ -841,5 +867,6 @@ int main(void)
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestExtremeScales);
+	TEST_RUN(TestDistanceStatus);
 	return TEST_SUMMARY();
 }

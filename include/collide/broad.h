@@ -21,175 +21,170 @@
 #include "collide/geometry3.h"
 
 #ifdef __cplusplus
-extern "C"
-{
+extern "C" {
 #endif
 
-	typedef enum cdBroadPhaseType
-	{
-		CD_BROADPHASE_TREE,
-		CD_BROADPHASE_SAP,
-		CD_BROADPHASE_GRID,
-		CD_BROADPHASE_SPATIAL_TREE,
-		CD_BROADPHASE_TYPE_COUNT
-	} cdBroadPhaseType;
+typedef enum cdBroadPhaseType
+{
+	CD_BROADPHASE_TREE,
+	CD_BROADPHASE_SAP,
+	CD_BROADPHASE_GRID,
+	CD_BROADPHASE_SPATIAL_TREE,
+	CD_BROADPHASE_TYPE_COUNT
+} cdBroadPhaseType;
 
-	/* "tree", "sap", "grid", "quadtree/octree"; "unknown" when out of range. */
-	CD_API const char* cdBroadPhaseTypeName(cdBroadPhaseType type);
+/* "tree", "sap", "grid", "quadtree/octree"; "unknown" when out of range. */
+CD_API const char* cdBroadPhaseTypeName(cdBroadPhaseType type);
 
 #define CD_NULL_PROXY (-1)
 
-	typedef struct cdBroadPhaseStats
-	{
-		int proxyCount;
-		int nodeCount;		/* tree nodes, grid cells in use, spatial-tree nodes, SAP endpoints */
-		int height;			/* tree height / spatial-tree depth; 0 for flat structures */
-		size_t memoryBytes; /* bytes allocated by the structure */
-		double
-			sahCost; /* tree: sum of internal node areas / root area (surface area heuristic); 0 otherwise */
-	} cdBroadPhaseStats;
+typedef struct cdBroadPhaseStats
+{
+	int proxyCount;
+	int nodeCount;		/* tree nodes, grid cells in use, spatial-tree nodes, SAP endpoints */
+	int height;			/* tree height / spatial-tree depth; 0 for flat structures */
+	size_t memoryBytes; /* bytes allocated by the structure */
+	double sahCost; /* tree: sum of internal node areas / root area (surface area heuristic); 0 otherwise */
+} cdBroadPhaseStats;
 
-	/* A pair of proxies with overlapping fat boxes, proxyA < proxyB. */
-	typedef struct cdProxyPair
-	{
-		int proxyA, proxyB;
-	} cdProxyPair;
+/* A pair of proxies with overlapping fat boxes, proxyA < proxyB. */
+typedef struct cdProxyPair
+{
+	int proxyA, proxyB;
+} cdProxyPair;
 
-	/* Called for each pair found by UpdatePairs. */
-	typedef void cdBroadPairFcn(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB,
+/* Called for each pair found by UpdatePairs. */
+typedef void cdBroadPairFcn(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context);
+
+/* ==== 3D ==================================================================================== */
+
+typedef struct cd3BroadPhaseDef
+{
+	cdBroadPhaseType type;
+	/* Fat-box margin added on every side (default 0.1 m, scaled by the length units). */
+	cdReal margin;
+	/* Predicted displacement is multiplied by this before stretching the fat box (default 4). */
+	cdReal displacementMultiplier;
+	/* Grid cell edge length; 0 picks one from the first proxies (about twice their mean size). */
+	cdReal cellSize;
+	/* Octree root region; proxies outside it are kept in the root (default +-1000 m). */
+	cd3Aabb bounds;
+	/* Proxies to reserve room for (default 0). */
+	int capacity;
+} cd3BroadPhaseDef;
+
+CD_API cd3BroadPhaseDef cd3DefaultBroadPhaseDef(void);
+
+typedef struct cd3BroadPhase cd3BroadPhase;
+
+/* Returns CD_ERROR_INVALID_ARGUMENT for a bad def (unknown type, negative or NaN margin, ...),
+ * CD_ERROR_OUT_OF_MEMORY, or CD_OK with *out set. */
+CD_API cdResult cd3BroadPhase_Create(const cd3BroadPhaseDef* def, cd3BroadPhase** out);
+CD_API void cd3BroadPhase_Destroy(cd3BroadPhase* broadPhase);
+
+/* Adds a proxy with the tight box `aabb`; returns its id, or CD_NULL_PROXY when the box is
+ * invalid (NaN/Inf, min > max) or memory runs out. A new proxy counts as moved. */
+CD_API int cd3BroadPhase_CreateProxy(cd3BroadPhase* broadPhase, cd3Aabb aabb, uint64_t userData);
+CD_API void cd3BroadPhase_DestroyProxy(cd3BroadPhase* broadPhase, int proxyId);
+
+/* Tells the proxy its new tight box and its predicted displacement for the next step. Returns
+ * true when the fat box had to change (the proxy then counts as moved), false when the new box
+ * still fits in the old fat box (nothing to do). An invalid box is ignored (returns false). */
+CD_API bool cd3BroadPhase_MoveProxy(cd3BroadPhase* broadPhase, int proxyId, cd3Aabb aabb,
+									cd3Vec displacement);
+
+CD_API cd3Aabb cd3BroadPhase_GetFatAabb(const cd3BroadPhase* broadPhase, int proxyId);
+CD_API uint64_t cd3BroadPhase_GetUserData(const cd3BroadPhase* broadPhase, int proxyId);
+CD_API int cd3BroadPhase_GetProxyCount(const cd3BroadPhase* broadPhase);
+
+/* Return false to stop the query early. */
+typedef bool cd3BroadQueryFcn(int proxyId, uint64_t userData, void* context);
+
+/* Calls fcn for every proxy whose fat box overlaps `aabb` (closed boxes), until it returns false. */
+CD_API void cd3BroadPhase_Query(const cd3BroadPhase* broadPhase, cd3Aabb aabb, cd3BroadQueryFcn* fcn,
 								void* context);
 
-	/* ==== 3D ==================================================================================== */
+/* Ray-cast callback: `ray` is the caller's ray and maxFraction the current clip. Return
+ *   0                     to stop the ray cast (any-hit),
+ *   f in (0, maxFraction) to clip the ray to f (closest-hit: return the exact hit fraction),
+ *   maxFraction           to go on unchanged (missed, or no clipping wanted),
+ *   a negative value      to ignore this proxy and go on. */
+typedef cdReal cd3BroadRayFcn(cd3Ray ray, cdReal maxFraction, int proxyId, uint64_t userData, void* context);
 
-	typedef struct cd3BroadPhaseDef
-	{
-		cdBroadPhaseType type;
-		/* Fat-box margin added on every side (default 0.1 m, scaled by the length units). */
-		cdReal margin;
-		/* Predicted displacement is multiplied by this before stretching the fat box (default 4). */
-		cdReal displacementMultiplier;
-		/* Grid cell edge length; 0 picks one from the first proxies (about twice their mean size). */
-		cdReal cellSize;
-		/* Octree root region; proxies outside it are kept in the root (default +-1000 m). */
-		cd3Aabb bounds;
-		/* Proxies to reserve room for (default 0). */
-		int capacity;
-	} cd3BroadPhaseDef;
-
-	CD_API cd3BroadPhaseDef cd3DefaultBroadPhaseDef(void);
-
-	typedef struct cd3BroadPhase cd3BroadPhase;
-
-	/* Returns CD_ERROR_INVALID_ARGUMENT for a bad def (unknown type, negative or NaN margin, ...),
-	 * CD_ERROR_OUT_OF_MEMORY, or CD_OK with *out set. */
-	CD_API cdResult cd3BroadPhase_Create(const cd3BroadPhaseDef* def, cd3BroadPhase** out);
-	CD_API void cd3BroadPhase_Destroy(cd3BroadPhase* broadPhase);
-
-	/* Adds a proxy with the tight box `aabb`; returns its id, or CD_NULL_PROXY when the box is
-	 * invalid (NaN/Inf, min > max) or memory runs out. A new proxy counts as moved. */
-	CD_API int cd3BroadPhase_CreateProxy(cd3BroadPhase* broadPhase, cd3Aabb aabb, uint64_t userData);
-	CD_API void cd3BroadPhase_DestroyProxy(cd3BroadPhase* broadPhase, int proxyId);
-
-	/* Tells the proxy its new tight box and its predicted displacement for the next step. Returns
-	 * true when the fat box had to change (the proxy then counts as moved), false when the new box
-	 * still fits in the old fat box (nothing to do). An invalid box is ignored (returns false). */
-	CD_API bool cd3BroadPhase_MoveProxy(cd3BroadPhase* broadPhase, int proxyId, cd3Aabb aabb,
-										cd3Vec displacement);
-
-	CD_API cd3Aabb cd3BroadPhase_GetFatAabb(const cd3BroadPhase* broadPhase, int proxyId);
-	CD_API uint64_t cd3BroadPhase_GetUserData(const cd3BroadPhase* broadPhase, int proxyId);
-	CD_API int cd3BroadPhase_GetProxyCount(const cd3BroadPhase* broadPhase);
-
-	/* Return false to stop the query early. */
-	typedef bool cd3BroadQueryFcn(int proxyId, uint64_t userData, void* context);
-
-	/* Calls fcn for every proxy whose fat box overlaps `aabb` (closed boxes), until it returns false. */
-	CD_API void cd3BroadPhase_Query(const cd3BroadPhase* broadPhase, cd3Aabb aabb, cd3BroadQueryFcn* fcn,
-									void* context);
-
-	/* Ray-cast callback: `ray` is the caller's ray and maxFraction the current clip. Return
-	 *   0                     to stop the ray cast (any-hit),
-	 *   f in (0, maxFraction) to clip the ray to f (closest-hit: return the exact hit fraction),
-	 *   maxFraction           to go on unchanged (missed, or no clipping wanted),
-	 *   a negative value      to ignore this proxy and go on. */
-	typedef cdReal cd3BroadRayFcn(cd3Ray ray, cdReal maxFraction, int proxyId, uint64_t userData,
+/* Calls fcn for the proxies whose fat box the ray (clipped to the current max fraction) meets,
+ * nearest boxes first where the structure allows. */
+CD_API void cd3BroadPhase_RayCast(const cd3BroadPhase* broadPhase, cd3Ray ray, cd3BroadRayFcn* fcn,
 								  void* context);
 
-	/* Calls fcn for the proxies whose fat box the ray (clipped to the current max fraction) meets,
-	 * nearest boxes first where the structure allows. */
-	CD_API void cd3BroadPhase_RayCast(const cd3BroadPhase* broadPhase, cd3Ray ray, cd3BroadRayFcn* fcn,
-									  void* context);
+/* Reports every pair of proxies whose fat boxes overlap and at least one of which moved (was
+ * created or had its fat box changed) since the last call; each pair once, proxyA < proxyB,
+ * sorted by (proxyA, proxyB) so that the order depends only on the operations. Then forgets
+ * the moves. Returns the number of pairs. fcn may be NULL (only count). */
+CD_API int cd3BroadPhase_UpdatePairs(cd3BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
 
-	/* Reports every pair of proxies whose fat boxes overlap and at least one of which moved (was
-	 * created or had its fat box changed) since the last call; each pair once, proxyA < proxyB,
-	 * sorted by (proxyA, proxyB) so that the order depends only on the operations. Then forgets
-	 * the moves. Returns the number of pairs. fcn may be NULL (only count). */
-	CD_API int cd3BroadPhase_UpdatePairs(cd3BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+/* Reports every pair of proxies whose fat boxes overlap, moved or not, in the same order as
+ * UpdatePairs (each pair once, proxyA < proxyB, sorted). Leaves the moves alone. Returns the
+ * number of pairs; fcn may be NULL. (For comparisons with libraries that report full sets.) */
+CD_API int cd3BroadPhase_FindAllPairs(cd3BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
 
-	/* Reports every pair of proxies whose fat boxes overlap, moved or not, in the same order as
-	 * UpdatePairs (each pair once, proxyA < proxyB, sorted). Leaves the moves alone. Returns the
-	 * number of pairs; fcn may be NULL. (For comparisons with libraries that report full sets.) */
-	CD_API int cd3BroadPhase_FindAllPairs(cd3BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+/* Adds `count` proxies at once (faster than one by one: an empty tree is bulk-built).
+ * outIds[i] receives the id of boxes[i], or CD_NULL_PROXY for an invalid box. userData may be
+ * NULL (all zero). Returns the number of proxies created. */
+CD_API int cd3BroadPhase_CreateProxies(cd3BroadPhase* broadPhase, const cd3Aabb* boxes,
+									   const uint64_t* userData, int count, int* outIds);
 
-	/* Adds `count` proxies at once (faster than one by one: an empty tree is bulk-built).
-	 * outIds[i] receives the id of boxes[i], or CD_NULL_PROXY for an invalid box. userData may be
-	 * NULL (all zero). Returns the number of proxies created. */
-	CD_API int cd3BroadPhase_CreateProxies(cd3BroadPhase* broadPhase, const cd3Aabb* boxes,
-										   const uint64_t* userData, int count, int* outIds);
+/* Rebuilds the structure from scratch for the current boxes (tree: a fast top-down SAH build,
+ * best after bulk loading or for static sets; others: re-sort/re-bin). Queries give the same
+ * answers before and after. */
+CD_API void cd3BroadPhase_Rebuild(cd3BroadPhase* broadPhase);
 
-	/* Rebuilds the structure from scratch for the current boxes (tree: a fast top-down SAH build,
-	 * best after bulk loading or for static sets; others: re-sort/re-bin). Queries give the same
-	 * answers before and after. */
-	CD_API void cd3BroadPhase_Rebuild(cd3BroadPhase* broadPhase);
+CD_API cdBroadPhaseStats cd3BroadPhase_GetStats(const cd3BroadPhase* broadPhase);
 
-	CD_API cdBroadPhaseStats cd3BroadPhase_GetStats(const cd3BroadPhase* broadPhase);
+/* Checks every invariant of the structure (parent/child links, boxes containing children,
+ * heights, free lists, sortedness, cell membership, ...); true when all hold. */
+CD_API bool cd3BroadPhase_Validate(const cd3BroadPhase* broadPhase);
 
-	/* Checks every invariant of the structure (parent/child links, boxes containing children,
-	 * heights, free lists, sortedness, cell membership, ...); true when all hold. */
-	CD_API bool cd3BroadPhase_Validate(const cd3BroadPhase* broadPhase);
+/* ==== 2D (the same contract with 2D boxes) ================================================== */
 
-	/* ==== 2D (the same contract with 2D boxes) ================================================== */
+typedef struct cd2BroadPhaseDef
+{
+	cdBroadPhaseType type;
+	cdReal margin;
+	cdReal displacementMultiplier;
+	cdReal cellSize;
+	cd2Aabb bounds; /* quadtree root region */
+	int capacity;
+} cd2BroadPhaseDef;
 
-	typedef struct cd2BroadPhaseDef
-	{
-		cdBroadPhaseType type;
-		cdReal margin;
-		cdReal displacementMultiplier;
-		cdReal cellSize;
-		cd2Aabb bounds; /* quadtree root region */
-		int capacity;
-	} cd2BroadPhaseDef;
+CD_API cd2BroadPhaseDef cd2DefaultBroadPhaseDef(void);
 
-	CD_API cd2BroadPhaseDef cd2DefaultBroadPhaseDef(void);
+typedef struct cd2BroadPhase cd2BroadPhase;
 
-	typedef struct cd2BroadPhase cd2BroadPhase;
+CD_API cdResult cd2BroadPhase_Create(const cd2BroadPhaseDef* def, cd2BroadPhase** out);
+CD_API void cd2BroadPhase_Destroy(cd2BroadPhase* broadPhase);
+CD_API int cd2BroadPhase_CreateProxy(cd2BroadPhase* broadPhase, cd2Aabb aabb, uint64_t userData);
+CD_API void cd2BroadPhase_DestroyProxy(cd2BroadPhase* broadPhase, int proxyId);
+CD_API bool cd2BroadPhase_MoveProxy(cd2BroadPhase* broadPhase, int proxyId, cd2Aabb aabb,
+									cd2Vec displacement);
+CD_API cd2Aabb cd2BroadPhase_GetFatAabb(const cd2BroadPhase* broadPhase, int proxyId);
+CD_API uint64_t cd2BroadPhase_GetUserData(const cd2BroadPhase* broadPhase, int proxyId);
+CD_API int cd2BroadPhase_GetProxyCount(const cd2BroadPhase* broadPhase);
 
-	CD_API cdResult cd2BroadPhase_Create(const cd2BroadPhaseDef* def, cd2BroadPhase** out);
-	CD_API void cd2BroadPhase_Destroy(cd2BroadPhase* broadPhase);
-	CD_API int cd2BroadPhase_CreateProxy(cd2BroadPhase* broadPhase, cd2Aabb aabb, uint64_t userData);
-	CD_API void cd2BroadPhase_DestroyProxy(cd2BroadPhase* broadPhase, int proxyId);
-	CD_API bool cd2BroadPhase_MoveProxy(cd2BroadPhase* broadPhase, int proxyId, cd2Aabb aabb,
-										cd2Vec displacement);
-	CD_API cd2Aabb cd2BroadPhase_GetFatAabb(const cd2BroadPhase* broadPhase, int proxyId);
-	CD_API uint64_t cd2BroadPhase_GetUserData(const cd2BroadPhase* broadPhase, int proxyId);
-	CD_API int cd2BroadPhase_GetProxyCount(const cd2BroadPhase* broadPhase);
+typedef bool cd2BroadQueryFcn(int proxyId, uint64_t userData, void* context);
+CD_API void cd2BroadPhase_Query(const cd2BroadPhase* broadPhase, cd2Aabb aabb, cd2BroadQueryFcn* fcn,
+								void* context);
 
-	typedef bool cd2BroadQueryFcn(int proxyId, uint64_t userData, void* context);
-	CD_API void cd2BroadPhase_Query(const cd2BroadPhase* broadPhase, cd2Aabb aabb, cd2BroadQueryFcn* fcn,
-									void* context);
-
-	typedef cdReal cd2BroadRayFcn(cd2Ray ray, cdReal maxFraction, int proxyId, uint64_t userData,
+typedef cdReal cd2BroadRayFcn(cd2Ray ray, cdReal maxFraction, int proxyId, uint64_t userData, void* context);
+CD_API void cd2BroadPhase_RayCast(const cd2BroadPhase* broadPhase, cd2Ray ray, cd2BroadRayFcn* fcn,
 								  void* context);
-	CD_API void cd2BroadPhase_RayCast(const cd2BroadPhase* broadPhase, cd2Ray ray, cd2BroadRayFcn* fcn,
-									  void* context);
 
-	CD_API int cd2BroadPhase_UpdatePairs(cd2BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
-	CD_API int cd2BroadPhase_FindAllPairs(cd2BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
-	CD_API int cd2BroadPhase_CreateProxies(cd2BroadPhase* broadPhase, const cd2Aabb* boxes,
-										   const uint64_t* userData, int count, int* outIds);
-	CD_API void cd2BroadPhase_Rebuild(cd2BroadPhase* broadPhase);
-	CD_API cdBroadPhaseStats cd2BroadPhase_GetStats(const cd2BroadPhase* broadPhase);
-	CD_API bool cd2BroadPhase_Validate(const cd2BroadPhase* broadPhase);
+CD_API int cd2BroadPhase_UpdatePairs(cd2BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+CD_API int cd2BroadPhase_FindAllPairs(cd2BroadPhase* broadPhase, cdBroadPairFcn* fcn, void* context);
+CD_API int cd2BroadPhase_CreateProxies(cd2BroadPhase* broadPhase, const cd2Aabb* boxes,
+									   const uint64_t* userData, int count, int* outIds);
+CD_API void cd2BroadPhase_Rebuild(cd2BroadPhase* broadPhase);
+CD_API cdBroadPhaseStats cd2BroadPhase_GetStats(const cd2BroadPhase* broadPhase);
+CD_API bool cd2BroadPhase_Validate(const cd2BroadPhase* broadPhase);
 
 #ifdef __cplusplus
 }

@@ -5,172 +5,171 @@
 #include "collide/math3.h"
 
 #ifdef __cplusplus
-extern "C"
-{
+extern "C" {
 #endif
 
-	/* Axis-aligned box, closed: the points with min <= p <= max. A zero-size box (min == max) is a
-	 * point and is valid. */
-	typedef struct cd3Aabb
+/* Axis-aligned box, closed: the points with min <= p <= max. A zero-size box (min == max) is a
+ * point and is valid. */
+typedef struct cd3Aabb
+{
+	cd3Vec min, max;
+} cd3Aabb;
+
+/* Solid ball. radius 0 is a point. */
+typedef struct cd3Sphere
+{
+	cd3Vec center;
+	cdReal radius;
+} cd3Sphere;
+
+/* Solid capsule: the points within `radius` of segment p1-p2. p1 == p2 is a sphere. */
+typedef struct cd3Capsule
+{
+	cd3Vec p1, p2;
+	cdReal radius;
+} cd3Capsule;
+
+/* Line segment (not solid: it has no interior). p1 == p2 is a point. */
+typedef struct cd3Segment
+{
+	cd3Vec p1, p2;
+} cd3Segment;
+
+/* Triangle: the flat, two-sided, closed surface a-b-c. Its face normal is
+ * normalize(cross(b - a, c - a)) (counter-clockwise winding faces the viewer). */
+typedef struct cd3Triangle
+{
+	cd3Vec a, b, c;
+} cd3Triangle;
+
+/* Solid half-space: the points x with dot(normal, x) <= offset. normal is unit length. */
+typedef struct cd3Plane
+{
+	cd3Vec normal;
+	cdReal offset;
+} cd3Plane;
+
+/* Solid oriented box: center + rotation * (local point with |local| <= halfExtents). */
+typedef struct cd3Box
+{
+	cd3Vec center;
+	cd3Vec halfExtents;
+	cd3Quat rotation;
+} cd3Box;
+
+/* Ray: the points origin + t * translation for t in [0, 1]. The translation's length is the
+ * ray's reach, so a ray is also a swept point. */
+typedef struct cd3Ray
+{
+	cd3Vec origin;
+	cd3Vec translation;
+} cd3Ray;
+
+/* The shape types in canonical order: pair functions name their two shapes in this order. */
+typedef enum cd3ShapeType
+{
+	CD3_SHAPE_SPHERE,
+	CD3_SHAPE_CAPSULE,
+	CD3_SHAPE_AABB,
+	CD3_SHAPE_BOX,
+	CD3_SHAPE_TRIANGLE,
+	CD3_SHAPE_PLANE,
+	CD3_SHAPE_SEGMENT,
+	CD3_SHAPE_TYPE_COUNT
+} cd3ShapeType;
+
+/* A tagged shape for the generic dispatchers (cd3Overlap, cd3Raycast, cd3Distance, ...). */
+typedef struct cd3Shape
+{
+	cd3ShapeType type;
+	union
 	{
-		cd3Vec min, max;
-	} cd3Aabb;
+		cd3Sphere sphere;
+		cd3Capsule capsule;
+		cd3Aabb aabb;
+		cd3Box box;
+		cd3Triangle triangle;
+		cd3Plane plane;
+		cd3Segment segment;
+	};
+} cd3Shape;
 
-	/* Solid ball. radius 0 is a point. */
-	typedef struct cd3Sphere
-	{
-		cd3Vec center;
-		cdReal radius;
-	} cd3Sphere;
+/* Lower-case name of a shape type ("sphere", "capsule", ...), "unknown" when out of range. */
+CD_API const char* cd3ShapeTypeName(cd3ShapeType type);
 
-	/* Solid capsule: the points within `radius` of segment p1-p2. p1 == p2 is a sphere. */
-	typedef struct cd3Capsule
-	{
-		cd3Vec p1, p2;
-		cdReal radius;
-	} cd3Capsule;
+CD_API cd3Shape cd3MakeSphereShape(cd3Sphere sphere);
+CD_API cd3Shape cd3MakeCapsuleShape(cd3Capsule capsule);
+CD_API cd3Shape cd3MakeAabbShape(cd3Aabb aabb);
+CD_API cd3Shape cd3MakeBoxShape(cd3Box box);
+CD_API cd3Shape cd3MakeTriangleShape(cd3Triangle triangle);
+CD_API cd3Shape cd3MakePlaneShape(cd3Plane plane);
+CD_API cd3Shape cd3MakeSegmentShape(cd3Segment segment);
 
-	/* Line segment (not solid: it has no interior). p1 == p2 is a point. */
-	typedef struct cd3Segment
-	{
-		cd3Vec p1, p2;
-	} cd3Segment;
+/* ---- validators ----------------------------------------------------------------------------
+ * Each rejects NaN/Inf anywhere, negative radii and sizes, non-unit quaternions and normals
+ * (tolerance as in cd3IsValidQuat). Zero sizes are valid (a point-like sphere, a flat box). */
+CD_API bool cd3IsValidAabb(cd3Aabb aabb); /* also min <= max on every axis */
+CD_API bool cd3IsValidSphere(cd3Sphere sphere);
+CD_API bool cd3IsValidCapsule(cd3Capsule capsule);
+CD_API bool cd3IsValidSegment(cd3Segment segment);
+CD_API bool cd3IsValidTriangle(cd3Triangle triangle); /* also rejects zero-area (degenerate) */
+CD_API bool cd3IsValidPlane(cd3Plane plane);
+CD_API bool cd3IsValidBox(cd3Box box);
+CD_API bool cd3IsValidRay(cd3Ray ray);
+CD_API bool cd3IsValidShape(const cd3Shape* shape);
 
-	/* Triangle: the flat, two-sided, closed surface a-b-c. Its face normal is
-	 * normalize(cross(b - a, c - a)) (counter-clockwise winding faces the viewer). */
-	typedef struct cd3Triangle
-	{
-		cd3Vec a, b, c;
-	} cd3Triangle;
+/* Like cd3IsValidShape, with the reason: CD_ERROR_NOT_FINITE, CD_ERROR_NEGATIVE_SIZE,
+ * CD_ERROR_NOT_NORMALIZED, CD_ERROR_DEGENERATE, CD_ERROR_INVALID_ARGUMENT (bad type). */
+CD_API cdResult cd3ValidateShape(const cd3Shape* shape);
 
-	/* Solid half-space: the points x with dot(normal, x) <= offset. normal is unit length. */
-	typedef struct cd3Plane
-	{
-		cd3Vec normal;
-		cdReal offset;
-	} cd3Plane;
+/* ---- bounds ------------------------------------------------------------------------------- */
+CD_API cd3Aabb cd3ComputeSphereAabb(cd3Sphere sphere);
+CD_API cd3Aabb cd3ComputeCapsuleAabb(cd3Capsule capsule);
+CD_API cd3Aabb cd3ComputeBoxAabb(cd3Box box);
+CD_API cd3Aabb cd3ComputeTriangleAabb(cd3Triangle triangle);
+CD_API cd3Aabb cd3ComputeSegmentAabb(cd3Segment segment);
+/* A half-space is unbounded: its box spans -CD_REAL_MAX..CD_REAL_MAX except along an
+ * axis-aligned normal, where the solid side is bounded by the offset. */
+CD_API cd3Aabb cd3ComputePlaneAabb(cd3Plane plane);
+CD_API cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape);
 
-	/* Solid oriented box: center + rotation * (local point with |local| <= halfExtents). */
-	typedef struct cd3Box
-	{
-		cd3Vec center;
-		cd3Vec halfExtents;
-		cd3Quat rotation;
-	} cd3Box;
+/* ---- AABB helpers (inline: the broadphase lives on them) ---------------------------------- */
+static inline cd3Aabb cd3AabbUnion(cd3Aabb a, cd3Aabb b)
+{
+	cd3Aabb c = {cd3Min(a.min, b.min), cd3Max(a.max, b.max)};
+	return c;
+}
 
-	/* Ray: the points origin + t * translation for t in [0, 1]. The translation's length is the
-	 * ray's reach, so a ray is also a swept point. */
-	typedef struct cd3Ray
-	{
-		cd3Vec origin;
-		cd3Vec translation;
-	} cd3Ray;
+static inline cd3Vec cd3AabbCenter(cd3Aabb a)
+{
+	return cd3Scale(CD_R(0.5), cd3Add(a.min, a.max));
+}
 
-	/* The shape types in canonical order: pair functions name their two shapes in this order. */
-	typedef enum cd3ShapeType
-	{
-		CD3_SHAPE_SPHERE,
-		CD3_SHAPE_CAPSULE,
-		CD3_SHAPE_AABB,
-		CD3_SHAPE_BOX,
-		CD3_SHAPE_TRIANGLE,
-		CD3_SHAPE_PLANE,
-		CD3_SHAPE_SEGMENT,
-		CD3_SHAPE_TYPE_COUNT
-	} cd3ShapeType;
+static inline cd3Vec cd3AabbHalfExtents(cd3Aabb a)
+{
+	return cd3Scale(CD_R(0.5), cd3Sub(a.max, a.min));
+}
 
-	/* A tagged shape for the generic dispatchers (cd3Overlap, cd3Raycast, cd3Distance, ...). */
-	typedef struct cd3Shape
-	{
-		cd3ShapeType type;
-		union
-		{
-			cd3Sphere sphere;
-			cd3Capsule capsule;
-			cd3Aabb aabb;
-			cd3Box box;
-			cd3Triangle triangle;
-			cd3Plane plane;
-			cd3Segment segment;
-		};
-	} cd3Shape;
+static inline cdReal cd3AabbSurfaceArea(cd3Aabb a)
+{
+	cd3Vec d = cd3Sub(a.max, a.min);
+	return CD_R(2.0) * (d.x * d.y + d.y * d.z + d.z * d.x);
+}
 
-	/* Lower-case name of a shape type ("sphere", "capsule", ...), "unknown" when out of range. */
-	CD_API const char* cd3ShapeTypeName(cd3ShapeType type);
+/* true when `outer` contains `inner` (closed). */
+static inline bool cd3AabbContains(cd3Aabb outer, cd3Aabb inner)
+{
+	return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
+		   inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+}
 
-	CD_API cd3Shape cd3MakeSphereShape(cd3Sphere sphere);
-	CD_API cd3Shape cd3MakeCapsuleShape(cd3Capsule capsule);
-	CD_API cd3Shape cd3MakeAabbShape(cd3Aabb aabb);
-	CD_API cd3Shape cd3MakeBoxShape(cd3Box box);
-	CD_API cd3Shape cd3MakeTriangleShape(cd3Triangle triangle);
-	CD_API cd3Shape cd3MakePlaneShape(cd3Plane plane);
-	CD_API cd3Shape cd3MakeSegmentShape(cd3Segment segment);
-
-	/* ---- validators ----------------------------------------------------------------------------
-	 * Each rejects NaN/Inf anywhere, negative radii and sizes, non-unit quaternions and normals
-	 * (tolerance as in cd3IsValidQuat). Zero sizes are valid (a point-like sphere, a flat box). */
-	CD_API bool cd3IsValidAabb(cd3Aabb aabb); /* also min <= max on every axis */
-	CD_API bool cd3IsValidSphere(cd3Sphere sphere);
-	CD_API bool cd3IsValidCapsule(cd3Capsule capsule);
-	CD_API bool cd3IsValidSegment(cd3Segment segment);
-	CD_API bool cd3IsValidTriangle(cd3Triangle triangle); /* also rejects zero-area (degenerate) */
-	CD_API bool cd3IsValidPlane(cd3Plane plane);
-	CD_API bool cd3IsValidBox(cd3Box box);
-	CD_API bool cd3IsValidRay(cd3Ray ray);
-	CD_API bool cd3IsValidShape(const cd3Shape* shape);
-
-	/* Like cd3IsValidShape, with the reason: CD_ERROR_NOT_FINITE, CD_ERROR_NEGATIVE_SIZE,
-	 * CD_ERROR_NOT_NORMALIZED, CD_ERROR_DEGENERATE, CD_ERROR_INVALID_ARGUMENT (bad type). */
-	CD_API cdResult cd3ValidateShape(const cd3Shape* shape);
-
-	/* ---- bounds ------------------------------------------------------------------------------- */
-	CD_API cd3Aabb cd3ComputeSphereAabb(cd3Sphere sphere);
-	CD_API cd3Aabb cd3ComputeCapsuleAabb(cd3Capsule capsule);
-	CD_API cd3Aabb cd3ComputeBoxAabb(cd3Box box);
-	CD_API cd3Aabb cd3ComputeTriangleAabb(cd3Triangle triangle);
-	CD_API cd3Aabb cd3ComputeSegmentAabb(cd3Segment segment);
-	/* A half-space is unbounded: its box spans -CD_REAL_MAX..CD_REAL_MAX except along an
-	 * axis-aligned normal, where the solid side is bounded by the offset. */
-	CD_API cd3Aabb cd3ComputePlaneAabb(cd3Plane plane);
-	CD_API cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape);
-
-	/* ---- AABB helpers (inline: the broadphase lives on them) ---------------------------------- */
-	static inline cd3Aabb cd3AabbUnion(cd3Aabb a, cd3Aabb b)
-	{
-		cd3Aabb c = {cd3Min(a.min, b.min), cd3Max(a.max, b.max)};
-		return c;
-	}
-
-	static inline cd3Vec cd3AabbCenter(cd3Aabb a)
-	{
-		return cd3Scale(CD_R(0.5), cd3Add(a.min, a.max));
-	}
-
-	static inline cd3Vec cd3AabbHalfExtents(cd3Aabb a)
-	{
-		return cd3Scale(CD_R(0.5), cd3Sub(a.max, a.min));
-	}
-
-	static inline cdReal cd3AabbSurfaceArea(cd3Aabb a)
-	{
-		cd3Vec d = cd3Sub(a.max, a.min);
-		return CD_R(2.0) * (d.x * d.y + d.y * d.z + d.z * d.x);
-	}
-
-	/* true when `outer` contains `inner` (closed). */
-	static inline bool cd3AabbContains(cd3Aabb outer, cd3Aabb inner)
-	{
-		return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
-			   inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
-	}
-
-	/* The box grown by `margin` on every side. */
-	static inline cd3Aabb cd3AabbInflate(cd3Aabb a, cdReal margin)
-	{
-		cd3Vec m = {margin, margin, margin};
-		cd3Aabb b = {cd3Sub(a.min, m), cd3Add(a.max, m)};
-		return b;
-	}
+/* The box grown by `margin` on every side. */
+static inline cd3Aabb cd3AabbInflate(cd3Aabb a, cdReal margin)
+{
+	cd3Vec m = {margin, margin, margin};
+	cd3Aabb b = {cd3Sub(a.min, m), cd3Add(a.max, m)};
+	return b;
+}
 
 #ifdef __cplusplus
 }

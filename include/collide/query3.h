@@ -19,106 +19,108 @@
 #include "collide/geometry3.h"
 
 #ifdef __cplusplus
-extern "C"
-{
+extern "C" {
 #endif
 
-	typedef struct cd3RayHit
-	{
-		cdReal fraction; /* t in [0, 1] */
-		cd3Vec point;	 /* origin + fraction * translation */
-		cd3Vec normal;	 /* outward unit normal of the surface at point */
-	} cd3RayHit;
+typedef struct cd3RayHit
+{
+	cdReal fraction; /* t in [0, 1] */
+	cd3Vec point;	 /* origin + fraction * translation */
+	cd3Vec normal;	 /* outward unit normal of the surface at point */
+} cd3RayHit;
 
-	/* Closest points between two shapes. When the shapes overlap, distance is 0 and pointA ==
-	 * pointB is a point inside both. */
-	typedef struct cd3ClosestPoints
-	{
-		cd3Vec pointA;
-		cd3Vec pointB;
-		cdReal distance;
-	} cd3ClosestPoints;
+/* Closest points between two shapes. When the shapes overlap, distance is 0 and pointA ==
+ * pointB is a point inside both. */
+typedef struct cd3ClosestPoints
+{
+	cd3Vec pointA;
+	cd3Vec pointB;
+	cdReal distance;
+} cd3ClosestPoints;
 
-	/* ---- the source texts' tests ------------------------------------------------------------- */
-	CD_API bool cd3PointInAabb(cd3Vec p, cd3Aabb b);
-	CD_API bool cd3OverlapAabbAabb(cd3Aabb a, cd3Aabb b);
-	CD_API bool cd3PointInSphere(cd3Vec p, cd3Sphere s);
-	CD_API bool cd3OverlapSphereSphere(cd3Sphere a, cd3Sphere b);
-	CD_API bool cd3OverlapSphereAabb(cd3Sphere s, cd3Aabb b);
+/* ---- the source texts' tests ------------------------------------------------------------- */
+CD_API bool cd3PointInAabb(cd3Vec p, cd3Aabb b);
+CD_API bool cd3OverlapAabbAabb(cd3Aabb a, cd3Aabb b);
+CD_API bool cd3PointInSphere(cd3Vec p, cd3Sphere s);
+CD_API bool cd3OverlapSphereSphere(cd3Sphere a, cd3Sphere b);
+CD_API bool cd3OverlapSphereAabb(cd3Sphere s, cd3Aabb b);
 
-	/* ---- point containment (solid shapes) ---------------------------------------------------- */
-	CD_API bool cd3PointInCapsule(cd3Vec p, cd3Capsule c);
-	CD_API bool cd3PointInBox(cd3Vec p, cd3Box b);
-	CD_API bool cd3PointInPlane(cd3Vec p, cd3Plane plane);
+/* ---- point containment (solid shapes) ---------------------------------------------------- */
+CD_API bool cd3PointInCapsule(cd3Vec p, cd3Capsule c);
+CD_API bool cd3PointInBox(cd3Vec p, cd3Box b);
+CD_API bool cd3PointInPlane(cd3Vec p, cd3Plane plane);
 
-	/* ---- overlap, canonical order: Sphere, Capsule, Aabb, Box, Triangle, Plane, Segment -------- */
-	CD_API bool cd3OverlapSphereCapsule(cd3Sphere s, cd3Capsule c);
-	CD_API bool cd3OverlapSphereBox(cd3Sphere s, cd3Box b);
-	CD_API bool cd3OverlapSphereTriangle(cd3Sphere s, cd3Triangle t);
-	CD_API bool cd3OverlapSpherePlane(cd3Sphere s, cd3Plane p);
-	CD_API bool cd3OverlapSphereSegment(cd3Sphere s, cd3Segment g);
+/* ---- overlap, canonical order: Sphere, Capsule, Aabb, Box, Triangle, Plane, Segment -------- */
+CD_API bool cd3OverlapSphereCapsule(cd3Sphere s, cd3Capsule c);
+CD_API bool cd3OverlapSphereBox(cd3Sphere s, cd3Box b);
+CD_API bool cd3OverlapSphereTriangle(cd3Sphere s, cd3Triangle t);
+CD_API bool cd3OverlapSpherePlane(cd3Sphere s, cd3Plane p);
+CD_API bool cd3OverlapSphereSegment(cd3Sphere s, cd3Segment g);
 
-	CD_API bool cd3OverlapCapsuleCapsule(cd3Capsule a, cd3Capsule b);
-	CD_API bool cd3OverlapCapsuleAabb(cd3Capsule c, cd3Aabb b);
-	CD_API bool cd3OverlapCapsuleBox(cd3Capsule c, cd3Box b);
-	CD_API bool cd3OverlapCapsuleTriangle(cd3Capsule c, cd3Triangle t);
-	CD_API bool cd3OverlapCapsulePlane(cd3Capsule c, cd3Plane p);
-	CD_API bool cd3OverlapCapsuleSegment(cd3Capsule c, cd3Segment g);
+CD_API bool cd3OverlapCapsuleCapsule(cd3Capsule a, cd3Capsule b);
+CD_API bool cd3OverlapCapsuleAabb(cd3Capsule c, cd3Aabb b);
+CD_API bool cd3OverlapCapsuleBox(cd3Capsule c, cd3Box b);
+CD_API bool cd3OverlapCapsuleTriangle(cd3Capsule c, cd3Triangle t);
+CD_API bool cd3OverlapCapsulePlane(cd3Capsule c, cd3Plane p);
+CD_API bool cd3OverlapCapsuleSegment(cd3Capsule c, cd3Segment g);
 
-	CD_API bool cd3OverlapAabbBox(cd3Aabb a, cd3Box b);
-	CD_API bool cd3OverlapAabbTriangle(cd3Aabb a, cd3Triangle t);
-	CD_API bool cd3OverlapAabbPlane(cd3Aabb a, cd3Plane p);
-	CD_API bool cd3OverlapAabbSegment(cd3Aabb a, cd3Segment g);
+CD_API bool cd3OverlapAabbBox(cd3Aabb a, cd3Box b);
+CD_API bool cd3OverlapAabbTriangle(cd3Aabb a, cd3Triangle t);
+CD_API bool cd3OverlapAabbPlane(cd3Aabb a, cd3Plane p);
+CD_API bool cd3OverlapAabbSegment(cd3Aabb a, cd3Segment g);
 
-	CD_API bool cd3OverlapBoxBox(cd3Box a, cd3Box b);
-	CD_API bool cd3OverlapBoxTriangle(cd3Box b, cd3Triangle t);
-	CD_API bool cd3OverlapBoxPlane(cd3Box b, cd3Plane p);
-	CD_API bool cd3OverlapBoxSegment(cd3Box b, cd3Segment g);
+CD_API bool cd3OverlapBoxBox(cd3Box a, cd3Box b);
+CD_API bool cd3OverlapBoxTriangle(cd3Box b, cd3Triangle t);
+CD_API bool cd3OverlapBoxPlane(cd3Box b, cd3Plane p);
+CD_API bool cd3OverlapBoxSegment(cd3Box b, cd3Segment g);
 
-	CD_API bool cd3OverlapTriangleTriangle(cd3Triangle a, cd3Triangle b);
-	CD_API bool cd3OverlapTrianglePlane(cd3Triangle t, cd3Plane p);
-	CD_API bool cd3OverlapTriangleSegment(cd3Triangle t, cd3Segment g);
+CD_API bool cd3OverlapTriangleTriangle(cd3Triangle a, cd3Triangle b);
+CD_API bool cd3OverlapTrianglePlane(cd3Triangle t, cd3Plane p);
+CD_API bool cd3OverlapTriangleSegment(cd3Triangle t, cd3Segment g);
 
-	/* Two half-spaces overlap unless their normals are opposite and their solid sides apart. */
-	CD_API bool cd3OverlapPlanePlane(cd3Plane a, cd3Plane b);
-	CD_API bool cd3OverlapPlaneSegment(cd3Plane p, cd3Segment g);
+/* Two half-spaces overlap unless their normals are opposite and their solid sides apart. */
+CD_API bool cd3OverlapPlanePlane(cd3Plane a, cd3Plane b);
+CD_API bool cd3OverlapPlaneSegment(cd3Plane p, cd3Segment g);
 
-	CD_API bool cd3OverlapSegmentSegment(cd3Segment a, cd3Segment b);
+CD_API bool cd3OverlapSegmentSegment(cd3Segment a, cd3Segment b);
 
-	/* ---- closest point on a shape to a point (the point itself when inside a solid) ---------- */
-	CD_API cd3Vec cd3ClosestPointOnSphere(cd3Sphere s, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnCapsule(cd3Capsule c, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnAabb(cd3Aabb b, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnBox(cd3Box b, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnPlane(cd3Plane plane, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnSegment(cd3Segment g, cd3Vec p);
+/* ---- closest point on a shape to a point (the point itself when inside a solid) ---------- */
+CD_API cd3Vec cd3ClosestPointOnSphere(cd3Sphere s, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnCapsule(cd3Capsule c, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnAabb(cd3Aabb b, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnBox(cd3Box b, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnPlane(cd3Plane plane, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnSegment(cd3Segment g, cd3Vec p);
 
-	/* Closest points between two segments, and between a triangle and a segment. */
-	CD_API cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b);
-	CD_API cd3ClosestPoints cd3ClosestPointsTriangleSegment(cd3Triangle t, cd3Segment g);
+/* Closest points between two segments, and between a triangle and a segment. */
+CD_API cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b);
+CD_API cd3ClosestPoints cd3ClosestPointsTriangleSegment(cd3Triangle t, cd3Segment g);
 
-	/* ---- ray casts: true and *hit filled on a hit; *hit untouched on a miss -------------------- */
-	CD_API bool cd3RaycastSphere(cd3Sphere s, cd3Ray ray, cd3RayHit* hit);
-	CD_API bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit);
-	CD_API bool cd3RaycastAabb(cd3Aabb b, cd3Ray ray, cd3RayHit* hit);
-	CD_API bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit);
-	CD_API bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit);
-	CD_API bool cd3RaycastPlane(cd3Plane plane, cd3Ray ray, cd3RayHit* hit);
+/* ---- ray casts: true and *hit filled on a hit; *hit untouched on a miss -------------------- */
+CD_API bool cd3RaycastSphere(cd3Sphere s, cd3Ray ray, cd3RayHit* hit);
+CD_API bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit);
+CD_API bool cd3RaycastAabb(cd3Aabb b, cd3Ray ray, cd3RayHit* hit);
+CD_API bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit);
+CD_API bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit);
+CD_API bool cd3RaycastPlane(cd3Plane plane, cd3Ray ray, cd3RayHit* hit);
 
-	/* ---- generic dispatchers on tagged shapes (either order) ---------------------------------- */
-	CD_API bool cd3Overlap(const cd3Shape* a, const cd3Shape* b);
+/* ---- generic dispatchers on tagged shapes (either order) ---------------------------------- */
+CD_API bool cd3Overlap(const cd3Shape* a, const cd3Shape* b);
 
-	/* Point containment; for the non-solid triangle and segment: distance below the tolerance. */
-	CD_API bool cd3PointInShape(const cd3Shape* shape, cd3Vec p);
-	CD_API cd3Vec cd3ClosestPointOnShape(const cd3Shape* shape, cd3Vec p);
+/* Point containment; for the non-solid triangle and segment: distance below the tolerance. */
+CD_API bool cd3PointInShape(const cd3Shape* shape, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnShape(const cd3Shape* shape, cd3Vec p);
 
-	/* Segments are hit only by rays that touch them (within tolerance); see docs/API.md. */
-	CD_API bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit);
+/* Segments are hit only by rays that touch them (within tolerance); see docs/API.md. */
+CD_API bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit);
 
-	/* Distance and closest points between any two shapes (GJK on the support functions; a
-	 * half-space is handled exactly). pointA lies on a, pointB on b. */
-	CD_API cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b);
+/* Distance and closest points between any two shapes (GJK on the support functions; a
+ * half-space is handled exactly). pointA lies on a, pointB on b. */
+CD_API cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b);
+
+/* cd3Distance, also telling how GJK went (status may be NULL). */
+CD_API cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdDistanceStatus* status);
 
 #ifdef __cplusplus
 }

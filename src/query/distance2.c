@@ -181,7 +181,8 @@ static GjkVertex MakeVertex(const cd2Core* a, const cd2Core* b, int indexA, int 
 
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). */
-static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* pointB, bool* touching)
+static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* pointB, bool* touching,
+					bool* hitIterationCap)
 {
 	GjkSimplex simplex;
 	memset(&simplex, 0, sizeof(simplex));
@@ -195,7 +196,8 @@ static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec*
 	cdReal bestDistanceSquared = CD_REAL_MAX;
 	int stalls = 0;
 	*touching = false;
-	for (int iteration = 0; iteration < GJK_MAX_ITERATIONS; ++iteration)
+	int iteration = 0;
+	for (; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
 		if (SolveSimplex(&simplex))
 		{
@@ -251,6 +253,8 @@ static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec*
 		simplex.lambda[simplex.count] = CD_R(0.0);
 		++simplex.count;
 	}
+	/* Every convergence test leaves the loop by break: running off its end is the cap. */
+	*hitIterationCap = iteration == GJK_MAX_ITERATIONS;
 	if (!*touching)
 	{
 		simplex = best;
@@ -264,6 +268,7 @@ static void GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec*
 	}
 	*pointA = pa;
 	*pointB = pb;
+	return *hitIterationCap ? iteration : iteration + 1;
 }
 
 static cd2ClosestPoints Touching(cd2Vec point)
@@ -274,6 +279,16 @@ static cd2ClosestPoints Touching(cd2Vec point)
 
 cd2ClosestPoints cd2Distance(const cd2Shape* a, const cd2Shape* b)
 {
+	return cd2DistanceWithStatus(a, b, NULL);
+}
+
+cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdDistanceStatus* status)
+{
+	if (status != NULL)
+	{
+		status->iterations = 0;
+		status->hitIterationCap = false;
+	}
 	CD_ASSERT(a != NULL && b != NULL);
 	cd2Core coreA, coreB;
 	if (!cd2MakeCore(a, &coreA) || !cd2MakeCore(b, &coreB))
@@ -284,24 +299,33 @@ cd2ClosestPoints cd2Distance(const cd2Shape* a, const cd2Shape* b)
 	}
 
 	cd2Vec pointA, pointB;
-	bool touching;
-	GjkCores(&coreA, &coreB, &pointA, &pointB, &touching);
-	if (touching)
-	{
-		return Touching(pointA);
-	}
-
+	bool touching, hitIterationCap;
+	int iterations = GjkCores(&coreA, &coreB, &pointA, &pointB, &touching, &hitIterationCap);
+	cd2ClosestPoints result;
 	cdReal radius = coreA.radius + coreB.radius;
 	cd2Vec delta = cd2Sub(pointB, pointA);
 	cdReal coreDistance = cd2Length(delta);
-	if (coreDistance <= radius)
+	if (touching)
+	{
+		result = Touching(pointA);
+	}
+	else if (coreDistance <= radius)
 	{
 		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
 		cdReal t = radius > CD_R(0.0) ? coreA.radius / radius : CD_R(0.0);
-		return Touching(cd2MulAdd(pointA, t, delta));
+		result = Touching(cd2MulAdd(pointA, t, delta));
 	}
-	cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
-	cd2ClosestPoints result = {cd2MulAdd(pointA, coreA.radius, normal),
-							   cd2MulSub(pointB, coreB.radius, normal), coreDistance - radius};
+	else
+	{
+		cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
+		result.pointA = cd2MulAdd(pointA, coreA.radius, normal);
+		result.pointB = cd2MulSub(pointB, coreB.radius, normal);
+		result.distance = coreDistance - radius;
+	}
+	if (status != NULL)
+	{
+		status->iterations = iterations;
+		status->hitIterationCap = hitIterationCap;
+	}
 	return result;
 }

@@ -279,7 +279,8 @@ static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int 
 
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). */
-static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* pointB, bool* touching)
+static int GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* pointB, bool* touching,
+					bool* hitIterationCap)
 {
 	GjkSimplex simplex;
 	memset(&simplex, 0, sizeof(simplex));
@@ -293,7 +294,8 @@ static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec*
 	cdReal bestDistanceSquared = CD_REAL_MAX;
 	int stalls = 0;
 	*touching = false;
-	for (int iteration = 0; iteration < GJK_MAX_ITERATIONS; ++iteration)
+	int iteration = 0;
+	for (; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
 		if (SolveSimplex(&simplex))
 		{
@@ -348,6 +350,8 @@ static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec*
 		simplex.lambda[simplex.count] = CD_R(0.0);
 		++simplex.count;
 	}
+	/* Every convergence test leaves the loop by break: running off its end is the cap. */
+	*hitIterationCap = iteration == GJK_MAX_ITERATIONS;
 	if (!*touching)
 	{
 		simplex = best;
@@ -361,6 +365,7 @@ static void GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec*
 	}
 	*pointA = pa;
 	*pointB = pb;
+	return *hitIterationCap ? iteration : iteration + 1;
 }
 
 static cd3ClosestPoints Touching(cd3Vec point)
@@ -425,6 +430,16 @@ static cd3ClosestPoints Swap(cd3ClosestPoints result)
 
 cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b)
 {
+	return cd3DistanceWithStatus(a, b, NULL);
+}
+
+cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdDistanceStatus* status)
+{
+	if (status != NULL)
+	{
+		status->iterations = 0;
+		status->hitIterationCap = false;
+	}
 	CD_ASSERT(a != NULL && b != NULL);
 	cd3Core coreA, coreB;
 	bool finiteA = cd3MakeCore(a, &coreA);
@@ -449,24 +464,33 @@ cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b)
 	}
 
 	cd3Vec pointA, pointB;
-	bool touching;
-	GjkCores(&coreA, &coreB, &pointA, &pointB, &touching);
-	if (touching)
-	{
-		return Touching(pointA);
-	}
-
+	bool touching, hitIterationCap;
+	int iterations = GjkCores(&coreA, &coreB, &pointA, &pointB, &touching, &hitIterationCap);
+	cd3ClosestPoints result;
 	cdReal radius = coreA.radius + coreB.radius;
 	cd3Vec delta = cd3Sub(pointB, pointA);
 	cdReal coreDistance = cd3Length(delta);
-	if (coreDistance <= radius)
+	if (touching)
+	{
+		result = Touching(pointA);
+	}
+	else if (coreDistance <= radius)
 	{
 		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
 		cdReal t = radius > CD_R(0.0) ? coreA.radius / radius : CD_R(0.0);
-		return Touching(cd3MulAdd(pointA, t, delta));
+		result = Touching(cd3MulAdd(pointA, t, delta));
 	}
-	cd3Vec normal = cd3Scale(CD_R(1.0) / coreDistance, delta);
-	cd3ClosestPoints result = {cd3MulAdd(pointA, coreA.radius, normal),
-							   cd3MulSub(pointB, coreB.radius, normal), coreDistance - radius};
+	else
+	{
+		cd3Vec normal = cd3Scale(CD_R(1.0) / coreDistance, delta);
+		result.pointA = cd3MulAdd(pointA, coreA.radius, normal);
+		result.pointB = cd3MulSub(pointB, coreB.radius, normal);
+		result.distance = coreDistance - radius;
+	}
+	if (status != NULL)
+	{
+		status->iterations = iterations;
+		status->hitIterationCap = hitIterationCap;
+	}
 	return result;
 }
