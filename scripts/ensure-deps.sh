@@ -16,6 +16,12 @@ collide_missing_packages() {
 		ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.asan-x86_64.a >/dev/null 2>&1 ||
 			missing+=(libclang-rt-14-dev)
 		command -v xmllint >/dev/null 2>&1 || missing+=(libxml2-utils)
+		command -v c++ >/dev/null 2>&1 || missing+=(g++)
+		# The peers: benchmark columns and differential tests always run against them.
+		local peer
+		for peer in libbullet-dev libfcl-dev libbox2d-dev libccd-dev; do
+			dpkg -s "$peer" >/dev/null 2>&1 || missing+=("$peer")
+		done
 	fi
 	echo "${missing[@]:-}"
 }

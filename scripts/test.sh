@@ -27,4 +27,4 @@ run_suite() {
 
 run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo
 run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON
-CC=clang run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON
+CC=clang CXX=clang++ run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON
