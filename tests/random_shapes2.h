@@ -1,6 +1,6 @@
 /* Random shapes for the property tests of the 2D queries: every shape type, with degenerate
- * sizes (exactly zero) one time in eight, a common rigid transform, and a printer for failing
- * cases. Header-only, shared by the test programs. */
+ * sizes (exactly zero) one time in eight, rounded polygons one time in three, a common rigid transform, and a
+ * printer for failing cases. Header-only, shared by the test programs. */
 #ifndef COLLIDE_TEST_RANDOM_SHAPES2_H
 #define COLLIDE_TEST_RANDOM_SHAPES2_H
 
@@ -58,6 +58,7 @@ static inline cd2Polygon RandomPolygon(TestRng* rng, cd2Vec center)
 	}
 	polygon.centroid = cd2Scale(CD_R(1.0) / (cdReal)count, sum);
 	polygon.count = count;
+	polygon.radius = TestRngInt(rng, 3) == 0 ? RandomReal(rng, 0.0, 0.5) : CD_R(0.0);
 	return polygon;
 }
 
@@ -176,6 +177,7 @@ static inline cd2Shape ScaleShape(const cd2Shape* shape, cdReal k)
 				s.polygon.vertices[i] = cd2Scale(k, shape->polygon.vertices[i]);
 			}
 			s.polygon.centroid = cd2Scale(k, shape->polygon.centroid);
+			s.polygon.radius = k * shape->polygon.radius;
 			break;
 		case CD2_SHAPE_SEGMENT:
 			s.segment.p1 = cd2Scale(k, shape->segment.p1);
@@ -222,6 +224,7 @@ static inline void PrintShape(const char* label, const cd2Shape* s)
 				fprintf(stderr, " (%.9g %.9g)", (double)s->polygon.vertices[i].x,
 						(double)s->polygon.vertices[i].y);
 			}
+			fprintf(stderr, " radius %.9g", (double)s->polygon.radius);
 			break;
 		case CD2_SHAPE_SEGMENT:
 			fprintf(stderr, " p1 (%.9g %.9g) p2 (%.9g %.9g)", (double)s->segment.p1.x,

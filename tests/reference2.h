@@ -2,7 +2,8 @@
  * reference distance between any two shapes. Header-only, test code only.
  *
  * The reference sees every shape as a convex point set (1 point for a circle, 2 for a capsule or
- * segment, the corners of an AABB or box, the vertices of a polygon) inflated by a radius. Two such
+ * segment, the corners of an AABB or box, the vertices of a polygon) inflated by a radius (a
+ * rounded polygon's rounding radius). Two such
  * cores are at distance 0 when a vertex of one lies inside the other (solid, 3+ points) or two edges
  * meet; otherwise their distance is the smallest edge-to-edge distance, computed with the
  * parametric clamping of Ericson 5.1.9 in double, unlike the library's orientation-based code. */
@@ -196,6 +197,7 @@ static inline RefShape RefFromShape(const cd2Shape* shape)
 			{
 				r.points[i] = RefFromVec(shape->polygon.vertices[i]);
 			}
+			r.radius = (double)shape->polygon.radius;
 			break;
 		case CD2_SHAPE_SEGMENT:
 			r.count = 2;
@@ -363,7 +365,9 @@ static inline cd2Shape RandomShape(TestRng* rng, cd2ShapeType type, cd2Vec cente
 		}
 		case CD2_SHAPE_POLYGON:
 		{
+			/* Rounded one time in three. */
 			cd2Polygon p = RandomPolygon(rng, RandomVec(rng, center, extent), extent);
+			p.radius = TestRngInt(rng, 3) == 0 ? RandomReal(rng, 0.0, 0.5 * extent) : (cdReal)0;
 			return cd2MakePolygonShape(&p);
 		}
 		case CD2_SHAPE_SEGMENT:

@@ -135,6 +135,7 @@ static RefShape MakeRef(const cd2Shape* shape)
 				r.vertices[i] = DFrom(shape->polygon.vertices[i]);
 			}
 			r.count = shape->polygon.count;
+			r.radius = (double)shape->polygon.radius;
 			r.solid = true;
 			break;
 		default:

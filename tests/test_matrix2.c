@@ -109,15 +109,16 @@ static void CheckPair(TestRng* rng, const cd2Shape* a, const cd2Shape* b, Matrix
 	}
 }
 
-/* Polygons as the library builds them: cd2MakePolygon on the random convex points. */
+/* Polygons as the library builds them: cd2MakeRoundedPolygon on the random convex points and radius. */
 static cd2Shape BuiltShape(TestRng* rng, cd2ShapeType type)
 {
 	cd2Shape shape = RandomShape(rng, type);
 	if (type == CD2_SHAPE_POLYGON)
 	{
 		cd2Polygon built;
-		cdResult result = cd2MakePolygon(shape.polygon.vertices, shape.polygon.count, &built);
-		TEST_CHECKF(result == CD_OK, "cd2MakePolygon failed: %d", (int)result);
+		cdResult result =
+			cd2MakeRoundedPolygon(shape.polygon.vertices, shape.polygon.count, shape.polygon.radius, &built);
+		TEST_CHECKF(result == CD_OK, "cd2MakeRoundedPolygon failed: %d", (int)result);
 		if (result == CD_OK)
 		{
 			shape.polygon = built;

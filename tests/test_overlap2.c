@@ -536,7 +536,7 @@ static cd2Shape Transformed(const cd2Shape* s, cd2Transform x)
 			{
 				points[i] = cd2TransformPoint(x, s->polygon.vertices[i]);
 			}
-			cdResult result = cd2MakePolygon(points, s->polygon.count, &r.polygon);
+			cdResult result = cd2MakeRoundedPolygon(points, s->polygon.count, s->polygon.radius, &r.polygon);
 			TEST_CHECKF(result == CD_OK, "transformed polygon rejected: %s", cdResultString(result));
 			break;
 		}

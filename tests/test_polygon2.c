@@ -2,7 +2,7 @@
  * (leaving the output untouched), random clouds checked against the rules every polygon keeps
  * (convex, counter-clockwise, unit outward normals, area centroid, vertices taken from the input,
  * every input point inside within the weld tolerance), and huge and small coordinates. */
-#include "collide/geometry2.h"
+#include "collide/query2.h"
 #include "test.h"
 
 #include <string.h>
@@ -416,6 +416,99 @@ static void TestHugeAndSmall(void)
 	cdSetLengthUnitsPerMeter((cdReal)1);
 }
 
+/* Rounded polygons: the builders' radius checks, and every 2D query on a rounded unit square
+ * [0,1]^2 with radius 0.5 (the stadium-cornered square reaching from -0.5 to 1.5). */
+static void TestRounded(void)
+{
+	cd2Vec points[4] = {V(0, 0), V(1, 0), V(1, 1), V(0, 1)};
+	cd2Polygon sentinel = Sentinel(), polygon = Sentinel();
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 4, (cdReal)-0.1, &polygon) == CD_ERROR_NEGATIVE_SIZE);
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 4, (cdReal)NAN, &polygon) == CD_ERROR_NOT_FINITE);
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 4, (cdReal)INFINITY, &polygon) == CD_ERROR_NOT_FINITE);
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 2, (cdReal)0.5, &polygon) == CD_ERROR_DEGENERATE);
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 4, (cdReal)0.5, NULL) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(memcmp(&polygon, &sentinel, sizeof polygon) == 0);
+	cd2Box box = {V(0.5, 0.5), V(0.5, 0.5), CD2_ROT_IDENTITY};
+	TEST_CHECK(cd2MakeRoundedBoxPolygon(box, (cdReal)-1, &polygon) == CD_ERROR_NEGATIVE_SIZE);
+	TEST_CHECK(memcmp(&polygon, &sentinel, sizeof polygon) == 0);
+
+	cd2Polygon sharp;
+	TEST_CHECK(cd2MakePolygon(points, 4, &sharp) == CD_OK && sharp.radius == (cdReal)0);
+	TEST_CHECK(cd2MakeRoundedBoxPolygon(box, (cdReal)0.5, &polygon) == CD_OK);
+	TEST_CHECK(polygon.radius == (cdReal)0.5 && polygon.count == 4 && cd2IsValidPolygon(&polygon));
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 4, (cdReal)0.5, &polygon) == CD_OK);
+	TEST_CHECK(polygon.radius == (cdReal)0.5 && cd2IsValidPolygon(&polygon));
+	cd2Polygon bad = polygon;
+	bad.radius = (cdReal)-0.5;
+	TEST_CHECK(!cd2IsValidPolygon(&bad));
+	bad.radius = (cdReal)NAN;
+	TEST_CHECK(!cd2IsValidPolygon(&bad));
+
+	cd2Aabb bounds = cd2ComputePolygonAabb(&polygon);
+	TEST_CHECK(bounds.min.x == (cdReal)-0.5 && bounds.min.y == (cdReal)-0.5 && bounds.max.x == (cdReal)1.5 &&
+			   bounds.max.y == (cdReal)1.5);
+
+	/* Inside the rounded edge band, outside the rounded corner, on the corner arc. */
+	TEST_CHECK(cd2PointInPolygon(V(-0.4, 0.5), &polygon));
+	TEST_CHECK(cd2PointInPolygon(V(1.5, 0.5), &polygon));
+	TEST_CHECK(!cd2PointInPolygon(V(-0.45, -0.45), &polygon));
+	TEST_CHECK(cd2PointInPolygon(V(-0.3, -0.4), &polygon)); /* at distance 0.5 from the corner */
+	TEST_CHECK(!cd2PointInPolygon(V(-0.31, -0.41), &polygon));
+
+	cd2Vec q = cd2ClosestPointOnPolygon(&polygon, V(3, 0.5));
+	TEST_CHECK_NEAR(q.x, 1.5, 1e-6);
+	TEST_CHECK_NEAR(q.y, 0.5, 1e-6);
+	q = cd2ClosestPointOnPolygon(&polygon, V(-3, -4)); /* from the corner (0,0): direction (-0.6,-0.8) */
+	TEST_CHECK_NEAR(q.x, -0.3, 1e-6);
+	TEST_CHECK_NEAR(q.y, -0.4, 1e-6);
+	q = cd2ClosestPointOnPolygon(&polygon, V(-0.2, 0.5));
+	TEST_CHECK(q.x == (cdReal)-0.2 && q.y == (cdReal)0.5);
+
+	cd2Circle touching = {V(3, 0.5), (cdReal)1.5};
+	cd2Circle apart = {V(3, 0.5), (cdReal)1.49};
+	TEST_CHECK(cd2OverlapCirclePolygon(touching, &polygon));
+	TEST_CHECK(!cd2OverlapCirclePolygon(apart, &polygon));
+	cd2Polygon other;
+	cd2Vec far[4] = {V(2.0, 0), V(3, 0), V(3, 1), V(2.0, 1)};
+	TEST_CHECK(cd2MakeRoundedPolygon(far, 4, (cdReal)0.49, &other) == CD_OK);
+	TEST_CHECK(!cd2OverlapPolygonPolygon(&polygon, &other));
+	TEST_CHECK(cd2MakeRoundedPolygon(far, 4, (cdReal)0.51, &other) == CD_OK);
+	TEST_CHECK(cd2OverlapPolygonPolygon(&polygon, &other));
+	/* Corner to corner: the cores' corners (1,1) and (2,2) are sqrt(2) apart. */
+	cd2Vec diagonal[4] = {V(2, 2), V(3, 2), V(3, 3), V(2, 3)};
+	TEST_CHECK(cd2MakeRoundedPolygon(diagonal, 4, (cdReal)0.9, &other) == CD_OK);
+	TEST_CHECK(!cd2OverlapPolygonPolygon(&polygon, &other)); /* 1.4 < 1.41421 */
+	TEST_CHECK(cd2MakeRoundedPolygon(diagonal, 4, (cdReal)0.92, &other) == CD_OK);
+	TEST_CHECK(cd2OverlapPolygonPolygon(&polygon, &other));
+	cd2Segment segment = {V(-0.6, -1), V(-0.6, 2)};
+	TEST_CHECK(!cd2OverlapPolygonSegment(&polygon, segment));
+	segment.p1.x = segment.p2.x = (cdReal)-0.49;
+	TEST_CHECK(cd2OverlapPolygonSegment(&polygon, segment));
+
+	cd2Ray ray = {V(-2, 0.5), V(4, 0)};
+	cd2RayHit hit;
+	TEST_CHECK(cd2RaycastPolygon(&polygon, ray, &hit));
+	TEST_CHECK_NEAR(hit.fraction, 1.5 / 4.0, 1e-6);
+	TEST_CHECK_NEAR(hit.normal.x, -1.0, 1e-6);
+	cd2Ray diagonalRay = {V(-2, -2), V(2, 2)}; /* meets the corner arc at (-0.5,-0.5)/sqrt(2) */
+	TEST_CHECK(cd2RaycastPolygon(&polygon, diagonalRay, &hit));
+	TEST_CHECK_NEAR(hit.point.x, -0.5 / sqrt(2.0), 1e-5);
+	TEST_CHECK_NEAR(hit.normal.x, -1.0 / sqrt(2.0), 1e-5);
+	TEST_CHECK_NEAR(hit.normal.y, -1.0 / sqrt(2.0), 1e-5);
+	cd2Ray inside = {V(-0.3, 0.5), V(0, 1)};
+	TEST_CHECK(cd2RaycastPolygon(&polygon, inside, &hit) && hit.fraction == (cdReal)0);
+	cd2Ray miss = {V(-0.45, -2), V(-0.1, 1.5)};
+	TEST_CHECK(!cd2RaycastPolygon(&polygon, miss, &hit));
+
+	cd2Shape a = cd2MakePolygonShape(&polygon);
+	cd2Circle point = {V(4, 5), (cdReal)0};
+	cd2Shape b = cd2MakeCircleShape(point);
+	cd2ClosestPoints closest = cd2Distance(&a, &b); /* corner (1,1) to (4,5): 5, minus 0.5 */
+	TEST_CHECK_NEAR(closest.distance, 4.5, 1e-5);
+	TEST_CHECK_NEAR(closest.pointA.x, 1.3, 1e-5);
+	TEST_CHECK_NEAR(closest.pointA.y, 1.4, 1e-5);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSquare);
@@ -424,5 +517,6 @@ int main(void)
 	TEST_RUN(TestBoxPolygon);
 	TEST_RUN(TestRandomClouds);
 	TEST_RUN(TestHugeAndSmall);
+	TEST_RUN(TestRounded);
 	return TEST_SUMMARY();
 }

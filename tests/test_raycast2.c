@@ -127,7 +127,19 @@ static double RefValue(const cd2Shape* s, DVec p)
 				DVec edge = DNormalize(DSub(b, a));
 				value = fmax(value, DCross(DSub(p, a), edge)); /* outward normal (edge.y, -edge.x) */
 			}
-			return value;
+			double radius = (double)s->polygon.radius;
+			if (radius > 0.0 && value > 0.0)
+			{
+				/* Outside the core: the rounded polygon's value is the true distance minus radius. */
+				double distance = INFINITY;
+				for (int i = 0; i < count; ++i)
+				{
+					distance = fmin(distance, RefDistanceToSegment(p, D(s->polygon.vertices[i]),
+																   D(s->polygon.vertices[(i + 1) % count])));
+				}
+				value = distance;
+			}
+			return value - radius;
 		}
 		default:
 			return 0.0;
@@ -161,7 +173,7 @@ static double RefSupport(const cd2Shape* s, DVec n)
 			{
 				value = fmax(value, DDot(n, D(s->polygon.vertices[i])));
 			}
-			return value;
+			return value + (double)s->polygon.radius * DLength(n);
 		}
 		default:
 			return 0.0;
@@ -249,6 +261,7 @@ static cd2Polygon MakePolygonByHand(const DVec* points, int count)
 {
 	cd2Polygon polygon;
 	polygon.count = count;
+	polygon.radius = (cdReal)0;
 	DVec centroid = DMake(0.0, 0.0);
 	for (int i = 0; i < count; ++i)
 	{
@@ -282,7 +295,10 @@ static cd2Polygon RandomPolygon(TestRng* rng)
 	{
 		points[i] = DAdd(center, DMake(rx * cos(angles[i]), ry * sin(angles[i])));
 	}
-	return MakePolygonByHand(points, count);
+	cd2Polygon polygon = MakePolygonByHand(points, count);
+	/* Rounded one time in three. */
+	polygon.radius = TestRngInt(rng, 3) == 0 ? R(rng, 0.0, 1.0) : CD_R(0.0);
+	return polygon;
 }
 
 static cd2Shape RandomSolid(TestRng* rng, cd2ShapeType type)
@@ -1127,6 +1143,7 @@ static void TestScales(void)
 					scaled.polygon.vertices[v] = cd2Scale(k, s.polygon.vertices[v]);
 				}
 				scaled.polygon.centroid = cd2Scale(k, s.polygon.centroid);
+				scaled.polygon.radius = k * s.polygon.radius;
 				break;
 			default:
 				scaled.segment.p1 = cd2Scale(k, s.segment.p1);

@@ -47,13 +47,16 @@ typedef struct cd2Box
 
 /* Solid convex polygon with counter-clockwise vertices and outward unit edge normals:
  * normals[i] belongs to the edge vertices[i] -> vertices[(i + 1) % count]. Build it with
- * cd2MakePolygon (or cd2MakeBoxPolygon); never fill it by hand unless you keep these rules. */
+ * cd2MakePolygon (or cd2MakeBoxPolygon); never fill it by hand unless you keep these rules.
+ * A rounded polygon is the set of points within `radius` of the core polygon the vertices span
+ * (radius 0: a sharp polygon; cd2MakeRoundedPolygon sets it). */
 typedef struct cd2Polygon
 {
 	cd2Vec vertices[CD2_MAX_POLYGON_VERTICES];
 	cd2Vec normals[CD2_MAX_POLYGON_VERTICES];
 	cd2Vec centroid;
 	int count;
+	cdReal radius;
 } cd2Polygon;
 
 /* Ray: the points origin + t * translation for t in [0, 1]. */
@@ -127,9 +130,18 @@ CD_API cdReal cd2GetPolygonWeldTolerance(cdReal maxAbsCoordinate);
  * CD_ERROR_DEGENERATE too, never a broken polygon. */
 CD_API cdResult cd2MakeBoxPolygon(cd2Box box, cd2Polygon* out);
 
+/* cd2MakePolygon with a rounding radius (a finite radius >= 0, else CD_ERROR_NOT_FINITE or
+ * CD_ERROR_NEGATIVE_SIZE, *out untouched). The vertices are those of the core polygon. */
+CD_API cdResult cd2MakeRoundedPolygon(const cd2Vec* points, int count, cdReal radius, cd2Polygon* out);
+
+/* cd2MakeBoxPolygon with a rounding radius: the box's corners rounded by `radius` (the core box is
+ * the given box, so the rounded box reaches `radius` beyond it). */
+CD_API cdResult cd2MakeRoundedBoxPolygon(cd2Box box, cdReal radius, cd2Polygon* out);
+
 /* ---- validators ----------------------------------------------------------------------------
  * Each rejects NaN/Inf anywhere, negative radii and sizes, non-unit rotations. Zero sizes are
- * valid. cd2IsValidPolygon also checks count, convexity, CCW order and unit normals. */
+ * valid. cd2IsValidPolygon also checks count, convexity, CCW order, unit normals and a finite
+ * radius >= 0. */
 CD_API bool cd2IsValidAabb(cd2Aabb aabb); /* also min <= max on both axes */
 CD_API bool cd2IsValidCircle(cd2Circle circle);
 CD_API bool cd2IsValidCapsule(cd2Capsule capsule);

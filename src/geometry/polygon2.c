@@ -239,3 +239,46 @@ cdResult cd2MakeBoxPolygon(cd2Box box, cd2Polygon* out)
 	}
 	return FinishPolygon(corners, 4, out);
 }
+
+static cdResult ValidateRoundingRadius(cdReal radius)
+{
+	if (!cdIsValidReal(radius))
+	{
+		return CD_ERROR_NOT_FINITE;
+	}
+	return radius < CD_R(0.0) ? CD_ERROR_NEGATIVE_SIZE : CD_OK;
+}
+
+cdResult cd2MakeRoundedPolygon(const cd2Vec* points, int count, cdReal radius, cd2Polygon* out)
+{
+	cd2Polygon polygon;
+	cdResult result = out == NULL ? CD_ERROR_INVALID_ARGUMENT : cd2MakePolygon(points, count, &polygon);
+	if (result == CD_OK)
+	{
+		result = ValidateRoundingRadius(radius);
+	}
+	if (result != CD_OK)
+	{
+		return result;
+	}
+	polygon.radius = radius;
+	*out = polygon;
+	return CD_OK;
+}
+
+cdResult cd2MakeRoundedBoxPolygon(cd2Box box, cdReal radius, cd2Polygon* out)
+{
+	cd2Polygon polygon;
+	cdResult result = out == NULL ? CD_ERROR_INVALID_ARGUMENT : cd2MakeBoxPolygon(box, &polygon);
+	if (result == CD_OK)
+	{
+		result = ValidateRoundingRadius(radius);
+	}
+	if (result != CD_OK)
+	{
+		return result;
+	}
+	polygon.radius = radius;
+	*out = polygon;
+	return CD_OK;
+}

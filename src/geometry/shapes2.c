@@ -156,6 +156,11 @@ static cdResult ValidatePolygon(const cd2Polygon* polygon)
 	{
 		return CD_ERROR_NOT_FINITE;
 	}
+	cdResult radiusResult = ValidateRadius(polygon->radius);
+	if (radiusResult != CD_OK)
+	{
+		return radiusResult;
+	}
 	for (int i = 0; i < count; ++i)
 	{
 		if (!IsUnitVec(polygon->normals[i]))
@@ -310,7 +315,7 @@ cd2Aabb cd2ComputePolygonAabb(const cd2Polygon* polygon)
 		aabb.min = cd2Min(aabb.min, polygon->vertices[i]);
 		aabb.max = cd2Max(aabb.max, polygon->vertices[i]);
 	}
-	return aabb;
+	return cd2AabbInflate(aabb, polygon->radius);
 }
 
 cd2Aabb cd2ComputeSegmentAabb(cd2Segment segment)

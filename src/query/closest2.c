@@ -61,9 +61,9 @@ cd2Vec cd2ClosestPointOnBox(cd2Box b, cd2Vec p)
 	return cd2Add(b.center, cd2RotateVector(q, clamped));
 }
 
-cd2Vec cd2ClosestPointOnPolygon(const cd2Polygon* polygon, cd2Vec p)
+/* Closest point on the core polygon (the vertices' hull, radius ignored). */
+static cd2Vec ClosestPointOnCorePolygon(const cd2Polygon* polygon, cd2Vec p)
 {
-	CD_ASSERT(polygon != NULL && polygon->count >= 1);
 	int count = polygon->count;
 	bool inside = true;
 	for (int i = 0; i < count && inside; ++i)
@@ -89,6 +89,13 @@ cd2Vec cd2ClosestPointOnPolygon(const cd2Polygon* polygon, cd2Vec p)
 		}
 	}
 	return best;
+}
+
+cd2Vec cd2ClosestPointOnPolygon(const cd2Polygon* polygon, cd2Vec p)
+{
+	CD_ASSERT(polygon != NULL && polygon->count >= 1);
+	cd2Vec core = ClosestPointOnCorePolygon(polygon, p);
+	return polygon->radius > CD_R(0.0) ? ClosestPointOnDisk(core, polygon->radius, p) : core;
 }
 
 /* Closest points between two 2D segments: either they cross (distance 0 at the crossing) or one of

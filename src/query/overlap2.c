@@ -40,10 +40,12 @@ typedef struct ConvexSet
 	int count;
 	int axisCount;
 	cdReal scale;
+	cdReal radius; /* the set grown by this radius: a rounded polygon, a capsule */
 } ConvexSet;
 
 static void UpdateScale(ConvexSet* set)
 {
+	set->radius = CD_R(0.0);
 	set->scale = CD_R(0.0);
 	for (int i = 0; i < set->count; ++i)
 	{
@@ -98,6 +100,8 @@ static ConvexSet MakePolygonSet(const cd2Polygon* polygon)
 		set.axes[i] = polygon->normals[i];
 	}
 	UpdateScale(&set);
+	set.radius = polygon->radius;
+	set.scale = cdMax(set.scale, set.radius);
 	return set;
 }
 
@@ -119,9 +123,10 @@ static ConvexSet MakeSegmentSet(cd2Segment g)
 	return set;
 }
 
-/* Projections are taken relative to a point of `a`, which keeps them small (and their round-off
+/* The gap between the projections of the two sets on the axis (negative when they overlap).
+ * Projections are taken relative to a point of `a`, which keeps them small (and their round-off
  * small) for shapes far from the origin. */
-static bool SeparatedOnAxis(const ConvexSet* a, const ConvexSet* b, cd2Vec axis, cdReal tolerance)
+static cdReal GapOnAxis(const ConvexSet* a, const ConvexSet* b, cd2Vec axis)
 {
 	cd2Vec origin = a->points[0];
 	cdReal minA = CD_R(0.0), maxA = CD_R(0.0);
@@ -138,48 +143,54 @@ static bool SeparatedOnAxis(const ConvexSet* a, const ConvexSet* b, cd2Vec axis,
 		minB = cdMin(minB, projection);
 		maxB = cdMax(maxB, projection);
 	}
-	return maxA + tolerance < minB || maxB + tolerance < minA;
+	return cdMax(minB - maxA, minA - maxB);
 }
 
+/* Whether the two sets, each grown by its radius, meet. The separating axis test decides for the
+ * cores; cores apart by less than the radii are then compared by their true distance: the closest
+ * pair of two disjoint convex polygons in the plane includes a vertex of one of them, so that
+ * distance is the smallest between the boundary edges of one and of the other. */
 static bool OverlapSets(const ConvexSet* a, const ConvexSet* b)
 {
+	cdReal radius = a->radius + b->radius;
 	cdReal tolerance = OverlapTolerance(cdMax(a->scale, b->scale));
+	cdReal largestGap = -CD_REAL_MAX;
 	for (int i = 0; i < a->axisCount; ++i)
 	{
-		if (SeparatedOnAxis(a, b, a->axes[i], tolerance))
-		{
-			return false;
-		}
+		largestGap = cdMax(largestGap, GapOnAxis(a, b, a->axes[i]));
 	}
 	for (int i = 0; i < b->axisCount; ++i)
 	{
-		if (SeparatedOnAxis(a, b, b->axes[i], tolerance))
-		{
-			return false;
-		}
+		largestGap = cdMax(largestGap, GapOnAxis(a, b, b->axes[i]));
 	}
-	return true;
-}
-
-/* Whether the segment inflated by radius (a capsule) meets the convex set. When the two do not
- * overlap, the closest pair of two disjoint convex polygons in the plane includes a vertex of one
- * of them, so the distance is the smallest between the boundary edges of one and the vertices of
- * the other. */
-static bool OverlapCapsuleSet(cd2Segment core, cdReal radius, const ConvexSet* set)
-{
-	ConvexSet segmentSet = MakeSegmentSet(core);
-	if (OverlapSets(&segmentSet, set))
+	if (largestGap <= tolerance)
 	{
 		return true;
 	}
-	cdReal best = CD_REAL_MAX;
-	for (int i = 0; i < set->count; ++i)
+	if (largestGap > radius + tolerance)
 	{
-		cd2Segment edge = {set->points[i], set->points[i + 1 < set->count ? i + 1 : 0]};
-		cd2ClosestPoints closest = cd2ClosestPointsSegmentSegment(core, edge);
-		best = cdMin(best, closest.distance);
+		return false;
 	}
-	return best <= radius + OverlapTolerance(cdMax(cdMax(segmentSet.scale, set->scale), radius));
+	cdReal best = CD_REAL_MAX;
+	for (int i = 0; i < a->count; ++i)
+	{
+		cd2Segment edgeA = {a->points[i], a->points[i + 1 < a->count ? i + 1 : 0]};
+		for (int j = 0; j < b->count; ++j)
+		{
+			cd2Segment edgeB = {b->points[j], b->points[j + 1 < b->count ? j + 1 : 0]};
+			best = cdMin(best, cd2ClosestPointsSegmentSegment(edgeA, edgeB).distance);
+		}
+	}
+	return best <= radius + tolerance;
+}
+
+/* Whether the segment inflated by radius (a capsule) meets the convex set. */
+static bool OverlapCapsuleSet(cd2Segment core, cdReal radius, const ConvexSet* set)
+{
+	ConvexSet segmentSet = MakeSegmentSet(core);
+	segmentSet.radius = radius;
+	segmentSet.scale = cdMax(segmentSet.scale, radius);
+	return OverlapSets(&segmentSet, set);
 }
 
 /* ---- the source texts' tests ------------------------------------------------------------------ */
@@ -232,6 +243,13 @@ bool cd2PointInBox(cd2Vec p, cd2Box b)
 bool cd2PointInPolygon(cd2Vec p, const cd2Polygon* polygon)
 {
 	CD_ASSERT(polygon != NULL);
+	if (polygon->radius > CD_R(0.0))
+	{
+		/* The closest point on the rounded polygon is p itself exactly when p is inside. */
+		cd2Vec closest = cd2ClosestPointOnPolygon(polygon, p);
+		cdReal tolerance = OverlapTolerance(cdMax(cdMax(MaxAbs(p), MaxAbs(closest)), polygon->radius));
+		return cd2VecDistanceSquared(closest, p) <= tolerance * tolerance;
+	}
 	for (int i = 0; i < polygon->count; ++i)
 	{
 		cd2Vec v = polygon->vertices[i];
@@ -272,6 +290,7 @@ bool cd2OverlapCircleBox(cd2Circle a, cd2Box b)
 bool cd2OverlapCirclePolygon(cd2Circle a, const cd2Polygon* b)
 {
 	ConvexSet set = MakePolygonSet(b);
+	/* The closest point on the rounded polygon: its distance is the core distance minus b's radius. */
 	cd2Vec closest = cd2ClosestPointOnPolygon(b, a.center);
 	cdReal scale = cdMax(cdMax(MaxAbs(a.center), a.radius), set.scale);
 	return WithinRadius(cd2VecDistanceSquared(a.center, closest), a.radius, scale);

@@ -228,6 +228,36 @@ bool cd2RaycastBox(cd2Box b, cd2Ray ray, cd2RayHit* hit)
 /* Clipping against the edge half-planes (Ericson 5.3.8): dot(n, origin + t d - v) <= 0 reads
  * t * dot(n, d) <= dot(n, v - origin). Fractions are compared as products before dividing, so a
  * nearly parallel edge never divides to an overflowing quotient that matters. */
+/* A rounded polygon is the union of its core polygon and the capsules around its edges. From an
+ * origin outside it, the ray crosses an edge capsule before it can reach the core, so the first
+ * entry is the earliest entry into an edge capsule, and that capsule's normal is the union's. */
+static bool RaycastRoundedPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
+{
+	if (cd2VecEqual(cd2ClosestPointOnPolygon(polygon, ray.origin), ray.origin))
+	{
+		return cd2HitFromInside(ray, hit);
+	}
+	bool found = false;
+	cd2RayHit best = {CD_R(2.0), CD2_VEC_ZERO, CD2_VEC_ZERO};
+	int count = polygon->count;
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Capsule edge = {polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0],
+						   polygon->radius};
+		cd2RayHit edgeHit;
+		if (cd2RaycastCapsule(edge, ray, &edgeHit) && edgeHit.fraction < best.fraction)
+		{
+			best = edgeHit;
+			found = true;
+		}
+	}
+	if (found)
+	{
+		*hit = best;
+	}
+	return found;
+}
+
 bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 {
 	CD_ASSERT(polygon != NULL && hit != NULL);
@@ -235,6 +265,10 @@ bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 	if (count < 1 || count > CD2_MAX_POLYGON_VERTICES)
 	{
 		return false;
+	}
+	if (polygon->radius > CD_R(0.0))
+	{
+		return RaycastRoundedPolygon(polygon, ray, hit);
 	}
 
 	bool inside = true;

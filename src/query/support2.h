@@ -1,6 +1,6 @@
 /* Internal: 2D shapes as GJK sees them. Every shape is the convex hull of at most
  * CD2_MAX_POLYGON_VERTICES "core" points grown by a radius (a circle is a point, a capsule a
- * segment, a box its four corners). */
+ * segment, a box its four corners, a rounded polygon its vertices and rounding radius). */
 #ifndef COLLIDE_SUPPORT2_H
 #define COLLIDE_SUPPORT2_H
 
@@ -63,6 +63,7 @@ static inline bool cd2MakeCore(const cd2Shape* shape, cd2Core* core)
 				core->points[i] = shape->polygon.vertices[i];
 			}
 			core->count = count;
+			core->radius = shape->polygon.radius;
 			return count > 0;
 		}
 		case CD2_SHAPE_SEGMENT:
