@@ -307,7 +307,8 @@ struct Options
 	int frames = 10;
 	int warmup = 30; // untimed frames first, so that fat boxes reach their steady state
 	double maxFrameSeconds = 20.0;
-	std::string svgPath, csvPath;
+	std::string svgPath, csvPath, markdownPath;
+	std::vector<std::string> mergePaths; // earlier --csv outputs to include in the SVG and CSV
 };
 
 std::vector<std::string> Split(const std::string& text)
@@ -335,7 +336,8 @@ void Usage()
 	std::printf("usage: collide_bench_broad [--dim 2|3|2,3] [--n N[,N...]] [--scene moving|mix|moving,mix]\n"
 				"                           [--structures a,b,...] [--frames K] [--warmup W] "
 				"[--max-frame-seconds S]\n"
-				"                           [--quick] [--svg file] [--csv file] [--list]\n"
+				"                           [--quick] [--svg file] [--csv file] [--markdown file] "
+				"[--merge-csv a.csv,b.csv]\n"
 				"structures: tree sap grid octree");
 	for (const std::string& name : PeerNames())
 	{
@@ -445,6 +447,11 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 			Clock::time_point b = Clock::now();
 			if (frame <= options.warmup)
 			{
+				if (Seconds(a, b) > options.maxFrameSeconds)
+				{
+					frameSeconds.push_back(Seconds(a, b));
+					break; // too slow even to warm up; the row says it ran 1 frame
+				}
 				continue;
 			}
 			frameSeconds.push_back(Seconds(a, b));
@@ -692,6 +699,204 @@ void WriteSvg(const std::string& path, const std::vector<Result>& results, Scene
 	std::fclose(file);
 }
 
+// Tables for docs: time per frame against N for each dimension and scene, then every figure at
+// the largest N below 1,000,000 (or the largest run).
+void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
+{
+	FILE* file = std::fopen(path.c_str(), "w");
+	if (!file)
+	{
+		std::fprintf(stderr, "cannot write %s\n", path.c_str());
+		return;
+	}
+	std::vector<int> dims, ns;
+	std::vector<std::string> names;
+	for (const Result& r : results)
+	{
+		if (std::find(dims.begin(), dims.end(), r.dim) == dims.end())
+		{
+			dims.push_back(r.dim);
+		}
+		if (std::find(ns.begin(), ns.end(), r.n) == ns.end())
+		{
+			ns.push_back(r.n);
+		}
+		if (std::find(names.begin(), names.end(), r.name) == names.end())
+		{
+			names.push_back(r.name);
+		}
+	}
+	std::sort(dims.begin(), dims.end());
+	std::sort(ns.begin(), ns.end());
+	auto find = [&](int dim, SceneKind kind, const std::string& name, int n) -> const Result* {
+		for (const Result& r : results)
+		{
+			if (r.dim == dim && r.kind == kind && r.name == name && r.n == n)
+			{
+				return &r;
+			}
+		}
+		return nullptr;
+	};
+	for (int dim : dims)
+	{
+		for (SceneKind kind : {SceneKind::Moving, SceneKind::Mix})
+		{
+			std::fprintf(file,
+						 "\n**%dD, scene %s: ms per frame (update + complete pair set)**\n\n| structure |",
+						 dim, SceneName(kind));
+			for (int n : ns)
+			{
+				std::fprintf(file, " N = %d |", n);
+			}
+			std::fprintf(file, "\n|---|");
+			for (size_t i = 0; i < ns.size(); ++i)
+			{
+				std::fprintf(file, "---:|");
+			}
+			std::fprintf(file, "\n");
+			for (const std::string& name : names)
+			{
+				bool any = false;
+				for (int n : ns)
+				{
+					any = any || find(dim, kind, name, n) != nullptr;
+				}
+				if (!any)
+				{
+					continue;
+				}
+				const Result* first = nullptr;
+				for (int n : ns)
+				{
+					first = first ? first : find(dim, kind, name, n);
+				}
+				std::fprintf(file, "| %s%s |", name.c_str(), first && first->peer ? " (peer)" : "");
+				for (int n : ns)
+				{
+					const Result* r = find(dim, kind, name, n);
+					if (r)
+					{
+						std::fprintf(file, " %.3g |", r->frameMs);
+					}
+					else
+					{
+						std::fprintf(file, " - |");
+					}
+				}
+				std::fprintf(file, "\n");
+			}
+			std::fprintf(file, "| pairs |");
+			for (int n : ns)
+			{
+				size_t pairs = 0;
+				for (const std::string& name : names)
+				{
+					const Result* r = find(dim, kind, name, n);
+					pairs = r ? r->pairs : pairs;
+				}
+				std::fprintf(file, " %zu |", pairs);
+			}
+			std::fprintf(file, "\n");
+		}
+	}
+	int detailN = 0;
+	for (int n : ns)
+	{
+		detailN = n < 1000000 || detailN == 0 ? n : detailN;
+	}
+	for (int dim : dims)
+	{
+		for (SceneKind kind : {SceneKind::Moving, SceneKind::Mix})
+		{
+			std::fprintf(
+				file,
+				"\n**%dD, scene %s, N = %d**\n\n| structure | build ms | frame ms | query us | ray us | "
+				"bytes/proxy (heap) | bytes/proxy (stats) | pairs "
+				"|\n|---|---:|---:|---:|---:|---:|---:|---:|\n",
+				dim, SceneName(kind), detailN);
+			for (const std::string& name : names)
+			{
+				const Result* r = find(dim, kind, name, detailN);
+				if (!r)
+				{
+					continue;
+				}
+				char ray[32] = "n/a", stat[32] = "-";
+				if (r->rayMeasured)
+				{
+					std::snprintf(ray, sizeof ray, "%.2f", r->rayUs);
+				}
+				if (r->reportedBytesPerProxy > 0)
+				{
+					std::snprintf(stat, sizeof stat, "%.0f", r->reportedBytesPerProxy);
+				}
+				std::fprintf(file, "| %s%s | %.1f | %.3g | %.2f | %s | %.0f | %s | %zu |\n", r->name.c_str(),
+							 r->peer ? " (peer)" : "", r->buildMs, r->frameMs, r->queryUs, ray,
+							 r->heapBytesPerProxy, stat, r->pairs);
+			}
+		}
+	}
+	std::fclose(file);
+}
+
+// Reads rows written by WriteCsv (the fields the plot and the table need).
+void ReadCsv(const std::string& path, std::vector<Result>& results)
+{
+	FILE* file = std::fopen(path.c_str(), "r");
+	if (!file)
+	{
+		std::fprintf(stderr, "cannot read %s\n", path.c_str());
+		return;
+	}
+	char line[1024];
+	bool header = true;
+	while (std::fgets(line, sizeof line, file))
+	{
+		if (header)
+		{
+			header = false;
+			continue;
+		}
+		std::vector<std::string> f;
+		std::string field;
+		for (const char* c = line; *c && *c != '\n'; ++c)
+		{
+			if (*c == ',' && f.size() < 13)
+			{
+				f.push_back(field);
+				field.clear();
+			}
+			else
+			{
+				field += *c;
+			}
+		}
+		f.push_back(field);
+		if (f.size() < 13)
+		{
+			continue;
+		}
+		Result r;
+		r.dim = std::atoi(f[0].c_str());
+		r.n = std::atoi(f[1].c_str());
+		r.kind = f[2] == "mix" ? SceneKind::Mix : SceneKind::Moving;
+		r.name = f[3];
+		r.peer = f[4] == "1";
+		r.buildMs = std::atof(f[5].c_str());
+		r.frameMs = std::atof(f[6].c_str());
+		r.queryUs = std::atof(f[7].c_str());
+		r.rayMeasured = !f[8].empty();
+		r.rayUs = std::atof(f[8].c_str());
+		r.heapBytesPerProxy = std::atof(f[9].c_str());
+		r.reportedBytesPerProxy = std::atof(f[10].c_str());
+		r.pairs = size_t(std::atoll(f[11].c_str()));
+		r.framesRun = std::atoi(f[12].c_str());
+		results.push_back(r);
+	}
+	std::fclose(file);
+}
+
 void WriteCsv(const std::string& path, const std::vector<Result>& results)
 {
 	FILE* file = std::fopen(path.c_str(), "w");
@@ -725,8 +930,7 @@ int main(int argc, char** argv)
 	for (int i = 1; i < argc; ++i)
 	{
 		std::string arg = argv[i];
-		auto value = [&]() -> std::string
-		{
+		auto value = [&]() -> std::string {
 			if (i + 1 >= argc)
 			{
 				Usage();
@@ -782,9 +986,21 @@ int main(int argc, char** argv)
 		{
 			options.csvPath = value();
 		}
+		else if (arg == "--markdown")
+		{
+			options.markdownPath = value();
+		}
+		else if (arg == "--merge-csv")
+		{
+			options.mergePaths = Split(value());
+		}
 		else if (arg == "--quick")
 		{
 			quick = true;
+		}
+		else if (arg == "--no-run")
+		{
+			options.dims.clear(); // only merge earlier CSVs into the outputs
 		}
 		else if (arg == "--list")
 		{
@@ -829,8 +1045,16 @@ int main(int argc, char** argv)
 			for (int n : options.ns)
 			{
 				ok = RunCase(options, dim, n, kind, results) && ok;
+				if (!options.csvPath.empty())
+				{
+					WriteCsv(options.csvPath, results); // after every case, so a long run keeps what it has
+				}
 			}
 		}
+	}
+	for (const std::string& path : options.mergePaths)
+	{
+		ReadCsv(path, results);
 	}
 	if (!options.svgPath.empty())
 	{
@@ -839,6 +1063,10 @@ int main(int argc, char** argv)
 	if (!options.csvPath.empty())
 	{
 		WriteCsv(options.csvPath, results);
+	}
+	if (!options.markdownPath.empty())
+	{
+		WriteMarkdown(options.markdownPath, results);
 	}
 	std::printf(ok ? "\nall pair, query and ray counts agree\n" : "\nCOUNTS DISAGREE\n");
 	return ok ? 0 : 1;
