@@ -65,6 +65,72 @@ typedef struct cd3Ray
 	cd3Vec translation;
 } cd3Ray;
 
+/* ---- convex hulls ---------------------------------------------------------------------------
+ * A convex polyhedron: vertices, faces (each with its outward plane) and half-edge adjacency.
+ * Built by cd3ComputeHull (quickhull) in one block from cdAlloc, released by cd3DestroyHull;
+ * immutable afterwards, so one hull can be shared by many shapes and threads.
+ *
+ * Tolerances, all relative to the point cloud: with E the diagonal of the points' bounding box,
+ * points closer than 16 eps E (float; 256 eps E in double; eps = CD_REAL_EPSILON) are welded,
+ * faces whose vertices lie within 4 eps E (64 eps E in double) of a common plane are merged
+ * into one polygon, and a set that is that flat (or collinear, or coincident) is
+ * CD_ERROR_DEGENERATE. The hull contains every input point within cd3GetHullTolerance. */
+
+/* At most this many input points (and so at most this many hull vertices). */
+#define CD3_MAX_HULL_POINTS 16384
+
+/* A half-edge bounds the face on its left seen from outside: next runs counter-clockwise
+ * around that face, twin is the same edge seen from the neighbouring face. */
+typedef struct cd3HullHalfEdge
+{
+	int32_t next;
+	int32_t twin;
+	int32_t origin; /* vertex the half-edge starts at */
+	int32_t face;
+} cd3HullHalfEdge;
+
+typedef struct cd3Hull
+{
+	int vertexCount;
+	int edgeCount; /* half-edges: twice the number of edges */
+	int faceCount;
+	const cd3Vec* vertices;
+	const cd3HullHalfEdge* edges;
+	const int32_t* faceEdges; /* one half-edge of each face */
+	const cd3Plane* planes;	  /* each face's plane: unit outward normal, dot(normal, x) <= offset inside */
+	cd3Vec centroid;		  /* centre of volume */
+	cdReal volume;
+	cd3Aabb bounds; /* tight bounds of the vertices */
+} cd3Hull;
+
+/* The convex hull of `count` points. On success *hull receives a new hull (free it with
+ * cd3DestroyHull); on failure *hull is NULL and the result says why: CD_ERROR_INVALID_ARGUMENT
+ * (NULL pointer, negative count), CD_ERROR_NOT_FINITE, CD_ERROR_TOO_MANY_POINTS (more than
+ * CD3_MAX_HULL_POINTS), CD_ERROR_DEGENERATE (fewer than 4 points that are not coplanar within
+ * the tolerance above), CD_ERROR_OUT_OF_MEMORY. A hull it returns always passes cd3ValidateHull. */
+CD_API cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull);
+CD_API void cd3DestroyHull(cd3Hull* hull);
+
+/* The box |x| <= halfExtents as a hull (6 faces). Zero extents are CD_ERROR_DEGENERATE. */
+CD_API cdResult cd3MakeBoxHull(cd3Vec halfExtents, cd3Hull** hull);
+
+/* A cylinder about the y axis, |y| <= halfHeight, approximated by a prism of `segments`
+ * (3..1024) sides whose vertices lie on the circle of the given radius. */
+CD_API cdResult cd3MakeCylinderHull(cdReal halfHeight, cdReal radius, int segments, cd3Hull** hull);
+
+/* A cone about the y axis: base circle (`segments` sides) at y = -halfHeight, apex at +halfHeight. */
+CD_API cdResult cd3MakeConeHull(cdReal halfHeight, cdReal radius, int segments, cd3Hull** hull);
+
+/* Distance within which the hull's vertices count as lying on its face planes. */
+CD_API cdReal cd3GetHullTolerance(const cd3Hull* hull);
+
+/* Checks a hull: finite data, indices in range, a closed 2-manifold (twins consistent, each
+ * face a cycle, V - E + F = 2), unit outward normals, planar convex faces, and every vertex
+ * below every face plane, all within cd3GetHullTolerance. CD_OK, CD_ERROR_INVALID_ARGUMENT
+ * (NULL, broken indices or topology), CD_ERROR_NOT_FINITE, CD_ERROR_NOT_NORMALIZED or
+ * CD_ERROR_DEGENERATE (not convex, not planar, inward or empty). */
+CD_API cdResult cd3ValidateHull(const cd3Hull* hull);
+
 /* The shape types in canonical order: pair functions name their two shapes in this order. */
 typedef enum cd3ShapeType
 {

@@ -1,0 +1,673 @@
+/* Tests of the 3D convex hull builder (cd3ComputeHull) and validator: exact solids, coplanar
+ * merging, welding, degenerate and bad input, scales, and thousands of random clouds whose hulls
+ * must validate, contain every input point and reach as far as the cloud in every direction. */
+#include "collide/geometry3.h"
+#include "random_shapes3.h"
+#include "test.h"
+
+#include <string.h>
+
+/* Every face plane has every point below it within the hull's tolerance. */
+static double WorstContainment(const cd3Hull* hull, const cd3Vec* points, int count)
+{
+	double worst = -INFINITY;
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Plane plane = hull->planes[f];
+		for (int i = 0; i < count; ++i)
+		{
+			double h = (double)plane.normal.x * (double)points[i].x +
+					   (double)plane.normal.y * (double)points[i].y +
+					   (double)plane.normal.z * (double)points[i].z - (double)plane.offset;
+			worst = h > worst ? h : worst;
+		}
+	}
+	return worst;
+}
+
+/* Largest gap, over random directions, between the cloud's reach and the hull's reach. */
+static double WorstSupportGap(TestRng* rng, const cd3Hull* hull, const cd3Vec* points, int count)
+{
+	double worst = 0.0;
+	for (int k = 0; k < 64; ++k)
+	{
+		cd3Vec d = RandomUnit(rng);
+		double cloud = -INFINITY, reach = -INFINITY;
+		for (int i = 0; i < count; ++i)
+		{
+			double s = (double)d.x * (double)points[i].x + (double)d.y * (double)points[i].y +
+					   (double)d.z * (double)points[i].z;
+			cloud = s > cloud ? s : cloud;
+		}
+		for (int i = 0; i < hull->vertexCount; ++i)
+		{
+			cd3Vec v = hull->vertices[i];
+			double s = (double)d.x * (double)v.x + (double)d.y * (double)v.y + (double)d.z * (double)v.z;
+			reach = s > reach ? s : reach;
+		}
+		double gap = fabs(cloud - reach);
+		worst = gap > worst ? gap : worst;
+	}
+	return worst;
+}
+
+/* Every hull vertex is one of the input points, bit for bit. */
+static bool VerticesAreInputPoints(const cd3Hull* hull, const cd3Vec* points, int count)
+{
+	for (int v = 0; v < hull->vertexCount; ++v)
+	{
+		bool found = false;
+		for (int i = 0; i < count && !found; ++i)
+		{
+			found = cd3VecEqual(hull->vertices[v], points[i]);
+		}
+		if (!found)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* Builds the hull of the cloud and runs the generic checks; returns it (or NULL) for more. */
+static cd3Hull* CheckCloud(TestRng* rng, const char* label, const cd3Vec* points, int count)
+{
+	cd3Hull* hull = NULL;
+	cdResult result = cd3ComputeHull(points, count, &hull);
+	TEST_CHECKF(result == CD_OK && hull != NULL, "%s (%d points): %s", label, count, cdResultString(result));
+	if (hull == NULL)
+	{
+		return NULL;
+	}
+	cdResult valid = cd3ValidateHull(hull);
+	TEST_CHECKF(valid == CD_OK, "%s (%d points): the hull does not validate: %s", label, count,
+				cdResultString(valid));
+	double tolerance = (double)cd3GetHullTolerance(hull);
+	double containment = WorstContainment(hull, points, count);
+	TEST_CHECKF(containment <= tolerance, "%s (%d points): a point lies %.3g above a face (tolerance %.3g)",
+				label, count, containment, tolerance);
+	double gap = WorstSupportGap(rng, hull, points, count);
+	TEST_CHECKF(gap <= tolerance, "%s (%d points): the hull falls %.3g short of the cloud (tolerance %.3g)",
+				label, count, gap, tolerance);
+	TEST_CHECKF(VerticesAreInputPoints(hull, points, count), "%s: a hull vertex is not an input point",
+				label);
+	TEST_CHECKF(hull->vertexCount - hull->edgeCount / 2 + hull->faceCount == 2, "%s: V - E + F = %d", label,
+				hull->vertexCount - hull->edgeCount / 2 + hull->faceCount);
+	return hull;
+}
+
+static cd3Vec V3(double x, double y, double z)
+{
+	return cd3MakeVec((cdReal)x, (cdReal)y, (cdReal)z);
+}
+
+static void TestCube(void)
+{
+	TestRng rng = TestRngMake(0x4e11001u);
+	cd3Vec corners[8];
+	for (int i = 0; i < 8; ++i)
+	{
+		corners[i] = V3((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
+	}
+	cd3Hull* hull = CheckCloud(&rng, "cube", corners, 8);
+	if (hull == NULL)
+	{
+		return;
+	}
+	TEST_CHECK(hull->vertexCount == 8 && hull->faceCount == 6 && hull->edgeCount == 24);
+	TEST_CHECK_NEAR(hull->volume, 8.0, 1e-5);
+	TEST_CHECK_NEAR(cd3Length(hull->centroid), 0.0, 1e-6);
+	TEST_CHECK(cd3VecEqual(hull->bounds.min, V3(-1, -1, -1)) && cd3VecEqual(hull->bounds.max, V3(1, 1, 1)));
+	int axes[6] = {0, 0, 0, 0, 0, 0};
+	for (int f = 0; f < 6; ++f)
+	{
+		cd3Vec n = hull->planes[f].normal;
+		int count = 0;
+		for (int e = hull->faceEdges[f], k = 0; k == 0 || e != hull->faceEdges[f];
+			 e = hull->edges[e].next, ++k)
+		{
+			++count;
+		}
+		TEST_CHECKF(count == 4, "face %d has %d vertices", f, count);
+		TEST_CHECK_NEAR(hull->planes[f].offset, 1.0, 1e-6);
+		for (int a = 0; a < 3; ++a)
+		{
+			double c = (double)cd3GetComponent(n, a);
+			if (fabs(c - 1.0) < 1e-6)
+			{
+				++axes[2 * a];
+			}
+			if (fabs(c + 1.0) < 1e-6)
+			{
+				++axes[2 * a + 1];
+			}
+		}
+	}
+	for (int i = 0; i < 6; ++i)
+	{
+		TEST_CHECKF(axes[i] == 1, "axis direction %d used by %d faces", i, axes[i]);
+	}
+	cd3DestroyHull(hull);
+}
+
+/* Random tetrahedra: 4 vertices, 4 faces, the volume |det| / 6 and the vertex mean as centroid. */
+static void TestTetrahedra(void)
+{
+	TestRng rng = TestRngMake(0x4e11002u);
+	for (int i = 0; i < 500; ++i)
+	{
+		cd3Vec p[4];
+		for (int k = 0; k < 4; ++k)
+		{
+			p[k] = RandomVec(&rng, 2.0);
+		}
+		double e[3][3];
+		for (int k = 0; k < 3; ++k)
+		{
+			e[k][0] = (double)p[k + 1].x - (double)p[0].x;
+			e[k][1] = (double)p[k + 1].y - (double)p[0].y;
+			e[k][2] = (double)p[k + 1].z - (double)p[0].z;
+		}
+		double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+					 e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+					 e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+		if (fabs(det) < 0.05)
+		{
+			continue; /* nearly flat: merging may rightly treat it as degenerate */
+		}
+		cd3Hull* hull = CheckCloud(&rng, "tetrahedron", p, 4);
+		if (hull == NULL)
+		{
+			continue;
+		}
+		TEST_CHECK(hull->vertexCount == 4 && hull->faceCount == 4 && hull->edgeCount == 12);
+		TEST_CHECK_NEAR(hull->volume, fabs(det) / 6.0, 1e-5 * (1.0 + fabs(det)));
+		cd3Vec mean = cd3Scale(CD_R(0.25), cd3Add(cd3Add(p[0], p[1]), cd3Add(p[2], p[3])));
+		TEST_CHECK_NEAR(cd3VecDistance(mean, hull->centroid), 0.0, 1e-5);
+		cd3DestroyHull(hull);
+	}
+}
+
+static void TestRandomClouds(void)
+{
+	TestRng rng = TestRngMake(0x4e11003u);
+	cd3Vec points[300];
+	for (int i = 0; i < 600; ++i)
+	{
+		int count = 4 + TestRngInt(&rng, 150);
+		int kind = TestRngInt(&rng, 3);
+		cd3Vec scale =
+			V3(TestRngRange(&rng, 0.1, 2.0), TestRngRange(&rng, 0.1, 2.0), TestRngRange(&rng, 0.1, 2.0));
+		for (int k = 0; k < count; ++k)
+		{
+			cd3Vec p = kind == 0 ? RandomVec(&rng, 1.0) : RandomUnit(&rng);
+			if (kind == 2)
+			{
+				/* On a grid: many exactly coplanar and collinear points. */
+				p = V3((double)TestRngInt(&rng, 4), (double)TestRngInt(&rng, 4), (double)TestRngInt(&rng, 4));
+			}
+			points[k] = cd3MulComponents(scale, p);
+		}
+		cd3Hull* hull = NULL;
+		cdResult result = cd3ComputeHull(points, count, &hull);
+		if (result == CD_ERROR_DEGENERATE)
+		{
+			/* Only small grid clouds can be flat; the others are solid with certainty. */
+			TEST_CHECKF(kind == 2 && count < 40, "random cloud kind %d of %d points called degenerate", kind,
+						count);
+			continue;
+		}
+		cd3DestroyHull(hull);
+		hull = CheckCloud(&rng, kind == 0 ? "ball cloud" : (kind == 1 ? "sphere cloud" : "grid cloud"),
+						  points, count);
+		cd3DestroyHull(hull);
+	}
+}
+
+/* Thousands of points on a sphere: every point is a vertex (none is coplanar with its
+ * neighbours at this density), the faces are triangles. */
+static void TestSphereCloud(void)
+{
+	TestRng rng = TestRngMake(0x4e11004u);
+	static cd3Vec points[4096];
+	const int counts[2] = {500, 2000};
+	for (int c = 0; c < 2; ++c)
+	{
+		int count = counts[c];
+		for (int i = 0; i < count; ++i)
+		{
+			points[i] = cd3Scale(CD_R(3.0), RandomUnit(&rng));
+		}
+		cd3Hull* hull = CheckCloud(&rng, "sphere", points, count);
+		if (hull != NULL)
+		{
+			TEST_CHECKF(hull->vertexCount >= count * 99 / 100, "%d of %d points are vertices",
+						hull->vertexCount, count);
+			double exact = 4.0 / 3.0 * CD_PI * 27.0;
+			TEST_CHECKF(hull->volume < exact && hull->volume > 0.97 * exact, "volume %g of %g",
+						(double)hull->volume, exact);
+		}
+		cd3DestroyHull(hull);
+	}
+}
+
+/* A box given by many points on each face (a grid, rotated) has 6 faces and 8 vertices. */
+static void TestCoplanarMerging(void)
+{
+	TestRng rng = TestRngMake(0x4e11005u);
+	static cd3Vec points[6 * 49];
+	for (int trial = 0; trial < 50; ++trial)
+	{
+		cd3Quat q = trial == 0 ? CD3_QUAT_IDENTITY : RandomQuat(&rng);
+		cd3Vec half =
+			V3(TestRngRange(&rng, 0.2, 2.0), TestRngRange(&rng, 0.2, 2.0), TestRngRange(&rng, 0.2, 2.0));
+		cd3Vec center = RandomVec(&rng, 3.0);
+		int count = 0;
+		for (int face = 0; face < 6; ++face)
+		{
+			int axis = face / 2;
+			double sign = (face & 1) ? -1.0 : 1.0;
+			for (int i = 0; i < 7; ++i)
+			{
+				for (int j = 0; j < 7; ++j)
+				{
+					double u = -1.0 + i / 3.0, v = -1.0 + j / 3.0;
+					double c[3];
+					c[axis] = sign;
+					c[(axis + 1) % 3] = u;
+					c[(axis + 2) % 3] = v;
+					cd3Vec local = V3(c[0] * (double)half.x, c[1] * (double)half.y, c[2] * (double)half.z);
+					points[count++] = cd3Add(center, cd3RotateVector(q, local));
+				}
+			}
+		}
+		cd3Hull* hull = CheckCloud(&rng, "box grid", points, count);
+		if (hull != NULL)
+		{
+			TEST_CHECKF(hull->faceCount == 6 && hull->vertexCount == 8 && hull->edgeCount == 24,
+						"box grid: %d faces, %d vertices, %d half-edges", hull->faceCount, hull->vertexCount,
+						hull->edgeCount);
+			double volume = 8.0 * (double)half.x * (double)half.y * (double)half.z;
+			TEST_CHECK_NEAR(hull->volume, volume, 1e-4 * volume);
+			TEST_CHECK_NEAR(cd3VecDistance(hull->centroid, center), 0.0, 1e-5);
+		}
+		cd3DestroyHull(hull);
+	}
+
+	/* Prisms and pyramids: flat caps are one face each. */
+	for (int segments = 3; segments <= 64; segments += 5)
+	{
+		cd3Hull* cylinder = NULL;
+		TEST_CHECK(cd3MakeCylinderHull(CD_R(0.5), CD_R(2.0), segments, &cylinder) == CD_OK);
+		if (cylinder != NULL)
+		{
+			TEST_CHECK(cd3ValidateHull(cylinder) == CD_OK);
+			TEST_CHECKF(cylinder->faceCount == segments + 2 && cylinder->vertexCount == 2 * segments,
+						"cylinder of %d: %d faces, %d vertices", segments, cylinder->faceCount,
+						cylinder->vertexCount);
+			double area = 0.5 * segments * 4.0 * sin(2.0 * CD_PI / segments);
+			TEST_CHECK_NEAR(cylinder->volume, area, 1e-5 * area);
+			TEST_CHECK_NEAR(cd3Length(cylinder->centroid), 0.0, 1e-5);
+		}
+		cd3DestroyHull(cylinder);
+		cd3Hull* cone = NULL;
+		TEST_CHECK(cd3MakeConeHull(CD_R(1.5), CD_R(1.0), segments, &cone) == CD_OK);
+		if (cone != NULL)
+		{
+			TEST_CHECK(cd3ValidateHull(cone) == CD_OK);
+			TEST_CHECKF(cone->faceCount == segments + 1 && cone->vertexCount == segments + 1,
+						"cone of %d: %d faces, %d vertices", segments, cone->faceCount, cone->vertexCount);
+			double area = 0.5 * segments * sin(2.0 * CD_PI / segments);
+			TEST_CHECK_NEAR(cone->volume, area * 3.0 / 3.0, 1e-5);
+			/* The centroid of a cone is a quarter of the way up from the base. */
+			TEST_CHECK_NEAR(cone->centroid.y, -1.5 + 0.75, 1e-5);
+		}
+		cd3DestroyHull(cone);
+	}
+}
+
+/* Near-duplicate points (a few epsilons of the extent apart) are welded: a cube whose corners
+ * are each given eight times with jitter still has 8 vertices and 6 faces. */
+static void TestWelding(void)
+{
+	TestRng rng = TestRngMake(0x4e11006u);
+	cd3Vec points[64];
+	double jitter = 2.0 * (double)CD_REAL_EPSILON;
+	for (int trial = 0; trial < 100; ++trial)
+	{
+		for (int i = 0; i < 64; ++i)
+		{
+			int c = i % 8;
+			cd3Vec corner = V3((c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0);
+			points[i] = i < 8 ? corner : cd3Add(corner, cd3Scale((cdReal)jitter, RandomVec(&rng, 1.0)));
+		}
+		cd3Hull* hull = CheckCloud(&rng, "jittered cube", points, 64);
+		if (hull != NULL)
+		{
+			TEST_CHECKF(hull->vertexCount == 8 && hull->faceCount == 6,
+						"jittered cube: %d vertices, %d faces", hull->vertexCount, hull->faceCount);
+		}
+		cd3DestroyHull(hull);
+	}
+	/* Exact duplicates of every point of a random cloud change nothing. */
+	for (int trial = 0; trial < 100; ++trial)
+	{
+		for (int i = 0; i < 32; ++i)
+		{
+			points[i] = RandomVec(&rng, 1.0);
+			points[i + 32] = points[i];
+		}
+		cd3Hull* once = NULL;
+		cd3Hull* twice = NULL;
+		TEST_CHECK(cd3ComputeHull(points, 32, &once) == CD_OK);
+		TEST_CHECK(cd3ComputeHull(points, 64, &twice) == CD_OK);
+		if (once != NULL && twice != NULL)
+		{
+			TEST_CHECK(once->vertexCount == twice->vertexCount && once->faceCount == twice->faceCount);
+			TEST_CHECK_NEAR(once->volume, twice->volume, 1e-6);
+		}
+		cd3DestroyHull(once);
+		cd3DestroyHull(twice);
+	}
+}
+
+static void ExpectResult(const char* label, const cd3Vec* points, int count, cdResult expected)
+{
+	cd3Hull* hull = (cd3Hull*)(uintptr_t)1;
+	cdResult result = cd3ComputeHull(points, count, &hull);
+	TEST_CHECKF(result == expected && hull == NULL, "%s: %s, expected %s", label, cdResultString(result),
+				cdResultString(expected));
+	if (result == CD_OK)
+	{
+		cd3DestroyHull(hull);
+	}
+}
+
+static void TestDegenerateAndBadInput(void)
+{
+	TestRng rng = TestRngMake(0x4e11007u);
+	static cd3Vec points[CD3_MAX_HULL_POINTS + 1];
+	for (int trial = 0; trial < 200; ++trial)
+	{
+		int count = 4 + TestRngInt(&rng, 60);
+		cd3Quat q = RandomQuat(&rng);
+		cd3Vec center = RandomVec(&rng, 5.0);
+		cd3Vec axis = RandomUnit(&rng);
+		cd3Vec point = RandomVec(&rng, 5.0);
+		for (int i = 0; i < count; ++i)
+		{
+			cd3Vec flat = V3(TestRngRange(&rng, -2.0, 2.0), TestRngRange(&rng, -2.0, 2.0), 0.0);
+			points[i] = cd3Add(center, cd3RotateVector(q, flat));
+		}
+		ExpectResult("flat", points, count, CD_ERROR_DEGENERATE);
+		for (int i = 0; i < count; ++i)
+		{
+			points[i] = cd3MulAdd(center, RandomReal(&rng, -3.0, 3.0), axis);
+		}
+		ExpectResult("collinear (needle)", points, count, CD_ERROR_DEGENERATE);
+		for (int i = 0; i < count; ++i)
+		{
+			points[i] = point;
+		}
+		ExpectResult("coincident", points, count, CD_ERROR_DEGENERATE);
+		for (int i = 0; i < 3; ++i)
+		{
+			points[i] = RandomVec(&rng, 2.0);
+		}
+		ExpectResult("three points", points, 3, CD_ERROR_DEGENERATE);
+	}
+	/* Axis-aligned flat sets, and a square with its centre. */
+	cd3Vec square[5] = {V3(0, 0, 0), V3(1, 0, 0), V3(1, 1, 0), V3(0, 1, 0), V3(0.5, 0.5, 0)};
+	ExpectResult("square", square, 5, CD_ERROR_DEGENERATE);
+	ExpectResult("no points", square, 0, CD_ERROR_DEGENERATE);
+	ExpectResult("NULL points", NULL, 5, CD_ERROR_INVALID_ARGUMENT);
+	ExpectResult("negative count", square, -1, CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd3ComputeHull(square, 5, NULL) == CD_ERROR_INVALID_ARGUMENT);
+
+	cd3Vec bad[5] = {V3(0, 0, 0), V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1), V3(1, 1, 1)};
+	bad[3].y = (cdReal)NAN;
+	ExpectResult("NaN", bad, 5, CD_ERROR_NOT_FINITE);
+	bad[3].y = (cdReal)INFINITY;
+	ExpectResult("infinity", bad, 5, CD_ERROR_NOT_FINITE);
+
+	for (int i = 0; i <= CD3_MAX_HULL_POINTS; ++i)
+	{
+		points[i] = RandomVec(&rng, 1.0);
+	}
+	ExpectResult("too many points", points, CD3_MAX_HULL_POINTS + 1, CD_ERROR_TOO_MANY_POINTS);
+
+	/* Builders check their sizes. */
+	cd3Hull* hull = NULL;
+	TEST_CHECK(cd3MakeBoxHull(V3(1, 0, 1), &hull) == CD_ERROR_DEGENERATE && hull == NULL);
+	TEST_CHECK(cd3MakeBoxHull(V3(1, -1, 1), &hull) == CD_ERROR_NEGATIVE_SIZE && hull == NULL);
+	TEST_CHECK(cd3MakeBoxHull(V3(1, NAN, 1), &hull) == CD_ERROR_NOT_FINITE && hull == NULL);
+	TEST_CHECK(cd3MakeCylinderHull(CD_R(1.0), CD_R(1.0), 2, &hull) == CD_ERROR_INVALID_ARGUMENT &&
+			   hull == NULL);
+	TEST_CHECK(cd3MakeCylinderHull(CD_R(0.0), CD_R(1.0), 8, &hull) == CD_ERROR_DEGENERATE && hull == NULL);
+	TEST_CHECK(cd3MakeConeHull(CD_R(1.0), CD_R(-1.0), 8, &hull) == CD_ERROR_NEGATIVE_SIZE && hull == NULL);
+	TEST_CHECK(cd3MakeBoxHull(V3(1, 2, 3), &hull) == CD_OK && hull != NULL);
+	if (hull != NULL)
+	{
+		TEST_CHECK(hull->faceCount == 6 && hull->vertexCount == 8);
+		TEST_CHECK_NEAR(hull->volume, 48.0, 1e-4);
+	}
+	cd3DestroyHull(hull);
+	cd3DestroyHull(NULL);
+}
+
+/* Huge, tiny and far-away clouds: the same checks, tolerances relative to the cloud. */
+static void TestScalesAndOffsets(void)
+{
+	TestRng rng = TestRngMake(0x4e11008u);
+	cd3Vec points[200];
+	const double scales[4] = {1e6, 1e-3, 1.0, 1.0};
+	const double offsets[4] = {0.0, 0.0, 1e5, -1e3};
+	for (int s = 0; s < 4; ++s)
+	{
+		for (int trial = 0; trial < 100; ++trial)
+		{
+			int count = 8 + TestRngInt(&rng, 150);
+			cd3Vec offset = cd3Scale((cdReal)offsets[s], cd3Normalize(V3(1.0, -0.6, 0.3)));
+			for (int i = 0; i < count; ++i)
+			{
+				cd3Vec p = trial % 2 ? RandomUnit(&rng) : RandomVec(&rng, 1.0);
+				points[i] = cd3Add(offset, cd3Scale((cdReal)scales[s], p));
+			}
+			char label[64];
+			snprintf(label, sizeof(label), "scale %g offset %g", scales[s], offsets[s]);
+			cd3Hull* hull = CheckCloud(&rng, label, points, count);
+			if (hull != NULL)
+			{
+				double unit = scales[s] * scales[s] * scales[s];
+				TEST_CHECKF(hull->volume > CD_R(0.0) && (double)hull->volume < 8.0 * unit * 1.001,
+							"%s: volume %g", label, (double)hull->volume);
+			}
+			cd3DestroyHull(hull);
+		}
+	}
+}
+
+/* The hard cases for merging: points on the faces of a box jittered off their planes by a few
+ * epsilons (right around the merge tolerance), thin slabs and needles that are still solid. The
+ * builder must succeed and the hull validate and contain every point. */
+static void TestNearlyCoplanar(void)
+{
+	TestRng rng = TestRngMake(0x4e1100au);
+	static cd3Vec points[400];
+	int refused = 0;
+	for (int trial = 0; trial < 150; ++trial)
+	{
+		int count = 20 + TestRngInt(&rng, 300);
+		cd3Quat q = RandomQuat(&rng);
+		double jitter = pow(10.0, TestRngRange(&rng, 0.0, 3.0)) * (double)CD_REAL_EPSILON;
+		for (int i = 0; i < count; ++i)
+		{
+			double c[3] = {TestRngRange(&rng, -1.0, 1.0), TestRngRange(&rng, -1.0, 1.0),
+						   TestRngRange(&rng, -1.0, 1.0)};
+			int axis = TestRngInt(&rng, 3);
+			c[axis] = (TestRngInt(&rng, 2) ? 1.0 : -1.0) * (1.0 + TestRngRange(&rng, -jitter, jitter));
+			points[i] = cd3RotateVector(q, V3(c[0], c[1], c[2]));
+		}
+		char label[64];
+		snprintf(label, sizeof(label), "box faces jittered by %.3g", jitter);
+		cd3Hull* hull = NULL;
+		cdResult result = cd3ComputeHull(points, count, &hull);
+		cd3DestroyHull(hull);
+		if (result == CD_ERROR_DEGENERATE)
+		{
+			/* Documented: points coplanar to within the build tolerance may be refused (never
+			 * turned into a broken hull); it must stay rare. */
+			++refused;
+		}
+		else
+		{
+			hull = CheckCloud(&rng, label, points, count);
+			cd3DestroyHull(hull);
+		}
+
+		/* A slab 1e-3 thick, and a needle 1e-3 wide. */
+		double thin = 1e-3;
+		for (int i = 0; i < count; ++i)
+		{
+			cd3Vec p = V3(TestRngRange(&rng, -1.0, 1.0), TestRngRange(&rng, -1.0, 1.0),
+						  TestRngRange(&rng, -thin, thin));
+			if (trial % 2)
+			{
+				p.y = (cdReal)(TestRngRange(&rng, -thin, thin));
+			}
+			points[i] = cd3RotateVector(q, p);
+		}
+		hull = CheckCloud(&rng, trial % 2 ? "needle" : "slab", points, count);
+		cd3DestroyHull(hull);
+	}
+	TEST_CHECKF(refused <= 2, "%d of 150 jittered boxes refused as degenerate", refused);
+}
+
+/* ---- the validator rejects broken hulls ---------------------------------------------------------- */
+typedef struct MutableHull
+{
+	cd3Hull hull;
+	cd3Vec vertices[8];
+	cd3HullHalfEdge edges[24];
+	int32_t faceEdges[6];
+	cd3Plane planes[6];
+} MutableHull;
+
+static void CopyHull(MutableHull* m, const cd3Hull* source)
+{
+	m->hull = *source;
+	memcpy(m->vertices, source->vertices, 8 * sizeof(cd3Vec));
+	memcpy(m->edges, source->edges, 24 * sizeof(cd3HullHalfEdge));
+	memcpy(m->faceEdges, source->faceEdges, 6 * sizeof(int32_t));
+	memcpy(m->planes, source->planes, 6 * sizeof(cd3Plane));
+	m->hull.vertices = m->vertices;
+	m->hull.edges = m->edges;
+	m->hull.faceEdges = m->faceEdges;
+	m->hull.planes = m->planes;
+}
+
+static void TestValidator(void)
+{
+	cd3Hull* box = NULL;
+	TEST_CHECK(cd3MakeBoxHull(V3(1, 1, 1), &box) == CD_OK);
+	if (box == NULL)
+	{
+		return;
+	}
+	TEST_CHECK(cd3ValidateHull(NULL) == CD_ERROR_INVALID_ARGUMENT);
+	MutableHull m;
+	CopyHull(&m, box);
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_OK);
+
+	m.vertices[3].x = (cdReal)NAN;
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_NOT_FINITE);
+	CopyHull(&m, box);
+	m.planes[2].normal = cd3Scale(CD_R(1.1), m.planes[2].normal);
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_NOT_NORMALIZED);
+	CopyHull(&m, box);
+	m.planes[2].normal = cd3Neg(m.planes[2].normal);
+	m.planes[2].offset = -m.planes[2].offset;
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_DEGENERATE); /* inward */
+	CopyHull(&m, box);
+	m.vertices[5] = cd3Scale(CD_R(1.01), m.vertices[5]); /* pokes out of its three faces */
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_DEGENERATE);
+	CopyHull(&m, box);
+	m.planes[4].offset += CD_R(0.01); /* off its vertices: not planar */
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_DEGENERATE);
+	CopyHull(&m, box);
+	m.edges[0].twin = m.edges[1].twin == 0 ? 2 : 1;
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_INVALID_ARGUMENT);
+	CopyHull(&m, box);
+	m.edges[7].origin = 99;
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_INVALID_ARGUMENT);
+	CopyHull(&m, box);
+	m.hull.faceCount = 5; /* open surface */
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_INVALID_ARGUMENT);
+	cd3DestroyHull(box);
+}
+
+/* ---- allocation failures ------------------------------------------------------------------------- */
+static int g_allocationsLeft = 0;
+static int g_liveAllocations = 0;
+
+static void* FailingAlloc(size_t size, size_t alignment)
+{
+	if (g_allocationsLeft-- <= 0)
+	{
+		return NULL;
+	}
+	++g_liveAllocations;
+	(void)alignment;
+	return aligned_alloc(32, (size + 31u) & ~(size_t)31u);
+}
+
+static void CountingFree(void* memory)
+{
+	if (memory != NULL)
+	{
+		--g_liveAllocations;
+	}
+	free(memory);
+}
+
+static void TestOutOfMemory(void)
+{
+	TestRng rng = TestRngMake(0x4e11009u);
+	cd3Vec points[100];
+	for (int i = 0; i < 100; ++i)
+	{
+		points[i] = RandomUnit(&rng);
+	}
+	bool succeeded = false;
+	for (int budget = 0; budget < 200 && !succeeded; ++budget)
+	{
+		g_allocationsLeft = budget;
+		g_liveAllocations = 0;
+		cdSetAllocator(FailingAlloc, CountingFree);
+		cd3Hull* hull = NULL;
+		cdResult result = cd3ComputeHull(points, 100, &hull);
+		succeeded = result == CD_OK;
+		TEST_CHECKF(result == CD_OK || (result == CD_ERROR_OUT_OF_MEMORY && hull == NULL), "budget %d: %s",
+					budget, cdResultString(result));
+		cd3DestroyHull(hull);
+		TEST_CHECKF(g_liveAllocations == 0, "budget %d: %d allocations leaked", budget, g_liveAllocations);
+		cdSetAllocator(NULL, NULL);
+	}
+	TEST_CHECK(succeeded);
+}
+
+int main(void)
+{
+	TEST_RUN(TestCube);
+	TEST_RUN(TestTetrahedra);
+	TEST_RUN(TestRandomClouds);
+	TEST_RUN(TestSphereCloud);
+	TEST_RUN(TestCoplanarMerging);
+	TEST_RUN(TestWelding);
+	TEST_RUN(TestNearlyCoplanar);
+	TEST_RUN(TestDegenerateAndBadInput);
+	TEST_RUN(TestScalesAndOffsets);
+	TEST_RUN(TestValidator);
+	TEST_RUN(TestOutOfMemory);
+	return TEST_SUMMARY();
+}
