@@ -10,6 +10,7 @@
 #include "collide/geometry3.h"
 #include "collide/query2.h"
 #include "collide/query3.h"
+#include "collide/manifold2.h"
 #include "collide/broad.h"
 
 #endif

@@ -1,0 +1,678 @@
+/* collide: 2D contact manifolds.
+ *
+ * Every shape becomes a rounded convex core: a point (circle), a two-sided segment (capsule,
+ * segment, zero-width box) or a polygon, grown by a radius. Three routines cover all pairs:
+ * - point against core: the closest feature of the core, one point;
+ * - core against core: the separating axis test over both cores' edge normals finds the
+ *   reference edge (A's unless B's separates by more than a tolerance, so the choice does not
+ *   flicker); the incident edge of the other core, the one facing it most, is clipped to the
+ *   reference edge's side lines and its points below the speculative distance are kept. When the
+ *   cores are apart, the closest points of the two max-separation edges decide between a face
+ *   contact (clip as above) and a vertex-vertex contact (one point, normal along the gap): the
+ *   separation along a direction is unimodal around the closest direction, so the closest
+ *   features of two disjoint convex cores lie on their max-separation edges.
+ * - chain segment: the two-sided segment's manifold, with its normal checked against the
+ *   directions the chain allows (see cd2ChainSegment).
+ * Points are reported midway between the surfaces; the normal points from A to B. */
+#include "collide/manifold2.h"
+
+/* Cores apart by more than this take the closest-feature path (and vertex-vertex normals are
+ * then safe to normalize); below it the separating axis answer is used as is. */
+#define SEPARATED_TOLERANCE (CD_R(0.1) * CD_LINEAR_SLOP)
+
+/* B's reference edge is preferred over A's only when it separates by this much more: a stable
+ * choice from frame to frame (the same rule as Box2D's). */
+#define FLIP_TOLERANCE (CD_R(0.1) * CD_LINEAR_SLOP)
+
+/* Sine of the turn at a chain vertex below which it counts as flat. */
+#define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
+
+#define VERTEX_FEATURE 0x100u
+#define CODE_VERTEX_VERTEX 4u
+
+typedef struct Core
+{
+	cd2Vec vertices[CD2_MAX_POLYGON_VERTICES];
+	cd2Vec normals[CD2_MAX_POLYGON_VERTICES];
+	int count; /* 1: point, 2: two-sided segment (normals[1] = -normals[0]), 3+: polygon */
+	cdReal radius;
+} Core;
+
+static cd2Manifold EmptyManifold(void)
+{
+	cd2Manifold manifold = {{CD_R(0.0), CD_R(0.0)}, {{{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u}}, 0};
+	return manifold;
+}
+
+static void AddPoint(cd2Manifold* manifold, cd2Vec point, cdReal separation, uint32_t id)
+{
+	cd2ManifoldPoint* p = &manifold->points[manifold->pointCount++];
+	p->point = point;
+	p->separation = separation;
+	p->id = id;
+}
+
+static cd2Manifold Flipped(cd2Manifold manifold)
+{
+	manifold.normal = cd2Neg(manifold.normal);
+	return manifold;
+}
+
+/* ---- cores ------------------------------------------------------------------------------------ */
+
+static Core MakePointCore(cd2Vec point, cdReal radius)
+{
+	Core core;
+	core.vertices[0] = point;
+	core.normals[0] = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	core.count = 1;
+	core.radius = radius;
+	return core;
+}
+
+/* A segment core; a zero-length (or underflowing) one is a point. */
+static Core MakeSegmentCore(cd2Vec p1, cd2Vec p2, cdReal radius)
+{
+	cd2Vec direction = cd2Normalize(cd2Sub(p2, p1));
+	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
+	{
+		return MakePointCore(p1, radius);
+	}
+	Core core;
+	core.vertices[0] = p1;
+	core.vertices[1] = p2;
+	core.normals[0] = cd2RightPerp(direction);
+	core.normals[1] = cd2LeftPerp(direction);
+	core.count = 2;
+	core.radius = radius;
+	return core;
+}
+
+static Core MakePolygonCore(const cd2Polygon* polygon)
+{
+	CD_ASSERT(polygon != NULL && polygon->count >= 3 && polygon->count <= CD2_MAX_POLYGON_VERTICES);
+	Core core;
+	core.count = polygon->count;
+	for (int i = 0; i < core.count; ++i)
+	{
+		core.vertices[i] = polygon->vertices[i];
+		core.normals[i] = polygon->normals[i];
+	}
+	core.radius = polygon->radius;
+	return core;
+}
+
+/* An oriented rectangle center +- axisX * hx +- axisY * hy; zero sizes give a segment or a point. */
+static Core MakeRectangleCore(cd2Vec center, cd2Vec axisX, cd2Vec axisY, cdReal hx, cdReal hy)
+{
+	cd2Vec ex = cd2Scale(hx, axisX), ey = cd2Scale(hy, axisY);
+	if (hx == CD_R(0.0) || hy == CD_R(0.0))
+	{
+		cd2Vec e = hx == CD_R(0.0) ? ey : ex;
+		return MakeSegmentCore(cd2Sub(center, e), cd2Add(center, e), CD_R(0.0));
+	}
+	Core core;
+	core.count = 4;
+	core.radius = CD_R(0.0);
+	core.vertices[0] = cd2Sub(cd2Sub(center, ex), ey);
+	core.vertices[1] = cd2Sub(cd2Add(center, ex), ey);
+	core.vertices[2] = cd2Add(cd2Add(center, ex), ey);
+	core.vertices[3] = cd2Add(cd2Sub(center, ex), ey);
+	core.normals[0] = cd2Neg(axisY);
+	core.normals[1] = axisX;
+	core.normals[2] = axisY;
+	core.normals[3] = cd2Neg(axisX);
+	return core;
+}
+
+/* ---- point against core ----------------------------------------------------------------------- */
+
+static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativeDistance)
+{
+	cd2Manifold manifold = EmptyManifold();
+	cd2Vec delta = cd2Sub(b->vertices[0], a->vertices[0]);
+	cdReal distance;
+	cd2Vec normal = cd2GetLengthAndNormalize(&distance, delta);
+	if (normal.x == CD_R(0.0) && normal.y == CD_R(0.0))
+	{
+		normal = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+		distance = CD_R(0.0);
+	}
+	cdReal separation = distance - a->radius - b->radius;
+	if (separation > speculativeDistance)
+	{
+		return manifold;
+	}
+	cd2Vec onA = cd2MulAdd(a->vertices[0], a->radius, normal);
+	cd2Vec onB = cd2MulSub(b->vertices[0], b->radius, normal);
+	manifold.normal = normal;
+	AddPoint(&manifold, cd2Scale(CD_R(0.5), cd2Add(onA, onB)), separation, 0u);
+	return manifold;
+}
+
+/* The point core p against the segment or polygon core k; the normal points from k to p. */
+static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal speculativeDistance)
+{
+	cd2Manifold manifold = EmptyManifold();
+	cd2Vec center = p->vertices[0];
+	cdReal total = k->radius + p->radius;
+
+	/* The edge whose line the point stands farthest outside of; for a point outside the core the
+	 * closest feature is on it (or at one of its ends). */
+	int edge = 0;
+	cdReal edgeSeparation = -CD_REAL_MAX;
+	for (int i = 0; i < k->count; ++i)
+	{
+		cdReal s = cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i]));
+		if (s > edgeSeparation)
+		{
+			edgeSeparation = s;
+			edge = i;
+		}
+	}
+	if (edgeSeparation > total + speculativeDistance)
+	{
+		return manifold;
+	}
+	cd2Vec v1 = k->vertices[edge];
+	int next = edge + 1 < k->count ? edge + 1 : 0;
+	cd2Vec v2 = k->vertices[next];
+	cd2Segment segment = {v1, v2};
+	cd2Vec closest = cd2ClosestPointOnSegment(segment, center);
+	cd2Vec normal = k->normals[edge];
+	cdReal coreSeparation = edgeSeparation;
+	uint32_t id = (uint32_t)edge;
+	bool atVertex = cd2VecEqual(closest, v1) || cd2VecEqual(closest, v2);
+	/* Inside a polygon core the face is the answer; a segment core has no inside. */
+	if (atVertex && (edgeSeparation > CD_R(0.0) || k->count == 2))
+	{
+		cdReal distance;
+		cd2Vec direction = cd2GetLengthAndNormalize(&distance, cd2Sub(center, closest));
+		if (direction.x != CD_R(0.0) || direction.y != CD_R(0.0))
+		{
+			normal = direction;
+			coreSeparation = distance;
+			id = VERTEX_FEATURE | (uint32_t)(cd2VecEqual(closest, v1) ? edge : next);
+		}
+	}
+	cdReal separation = coreSeparation - total;
+	if (separation > speculativeDistance)
+	{
+		return manifold;
+	}
+	manifold.normal = normal;
+	AddPoint(&manifold, cd2MulAdd(center, CD_R(0.5) * (k->radius - p->radius - coreSeparation), normal),
+			 separation, id);
+	return manifold;
+}
+
+/* ---- core against core ------------------------------------------------------------------------ */
+
+/* The largest separation of b from a over a's edge normals, and its edge. */
+static cdReal MaxSeparation(const Core* a, const Core* b, int* edge)
+{
+	cdReal best = -CD_REAL_MAX;
+	int bestEdge = 0;
+	for (int i = 0; i < a->count; ++i)
+	{
+		cd2Vec n = a->normals[i];
+		cd2Vec v = a->vertices[i];
+		cdReal lowest = CD_REAL_MAX;
+		for (int j = 0; j < b->count; ++j)
+		{
+			lowest = cdMin(lowest, cd2Dot(n, cd2Sub(b->vertices[j], v)));
+		}
+		if (lowest > best)
+		{
+			best = lowest;
+			bestEdge = i;
+		}
+	}
+	*edge = bestEdge;
+	return best;
+}
+
+/* Clips the incident edge of `incident` (the one facing the reference normal most) to the side
+ * lines of the reference edge and keeps the points within the speculative distance. `flip` says
+ * that the reference is B. Without `keepOutside`, an incident edge entirely beyond one side line
+ * gives no contact; with it, its nearer end is kept.
+ *
+ * Points lie on both surfaces: the incident surface is its core edge moved out by the incident
+ * radius along the edge's normal, and that segment is what gets clipped; the reference surface
+ * point is the incident one's projection on the reference edge moved out by its radius. The one
+ * exception is the incident core's deepest vertex (its support against the normal), whose surface
+ * point is taken straight against the normal: there the separation is exactly the separating-axis
+ * value, rounded incident shapes included. */
+static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* incident, bool flip,
+						cdReal speculativeDistance, bool keepOutside)
+{
+	cd2Manifold manifold = EmptyManifold();
+	cd2Vec n = reference->normals[referenceEdge];
+	cd2Vec v1 = reference->vertices[referenceEdge];
+	cd2Vec v2 = reference->vertices[referenceEdge + 1 < reference->count ? referenceEdge + 1 : 0];
+
+	int incidentEdge = 0;
+	cdReal lowest = CD_REAL_MAX;
+	for (int i = 0; i < incident->count; ++i)
+	{
+		cdReal d = cd2Dot(n, incident->normals[i]);
+		if (d < lowest)
+		{
+			lowest = d;
+			incidentEdge = i;
+		}
+	}
+	cd2Vec core[2] = {incident->vertices[incidentEdge],
+					  incident->vertices[incidentEdge + 1 < incident->count ? incidentEdge + 1 : 0]};
+	cd2Vec offset = cd2Scale(incident->radius, incident->normals[incidentEdge]);
+	cd2Vec w[2] = {cd2Add(core[0], offset), cd2Add(core[1], offset)};
+	uint32_t code[2] = {0u, 1u};
+
+	cd2Vec tangent = cd2LeftPerp(n);
+	cdReal upper = cd2Dot(tangent, cd2Sub(v2, v1));
+	cdReal along[2] = {cd2Dot(tangent, cd2Sub(w[0], v1)), cd2Dot(tangent, cd2Sub(w[1], v1))};
+	int pointCount = 2;
+	if ((along[0] < CD_R(0.0) && along[1] < CD_R(0.0)) || (along[0] > upper && along[1] > upper))
+	{
+		if (!keepOutside)
+		{
+			return manifold;
+		}
+		/* Beyond one side line: keep the end nearer to the reference edge's extent. */
+		bool below = along[0] < CD_R(0.0);
+		int keep = (below ? along[0] > along[1] : along[0] < along[1]) ? 0 : 1;
+		w[0] = w[keep];
+		core[0] = core[keep];
+		code[0] = code[keep];
+		pointCount = 1;
+	}
+	else
+	{
+		cd2Vec clipped[2] = {w[0], w[1]};
+		for (int i = 0; i < 2; ++i)
+		{
+			/* along[0] != along[1] here: one end is inside the extent, the other outside it. */
+			if (along[i] < CD_R(0.0))
+			{
+				clipped[i] = cd2Lerp(w[i], w[1 - i], (CD_R(0.0) - along[i]) / (along[1 - i] - along[i]));
+				code[i] = 2u;
+			}
+			else if (along[i] > upper)
+			{
+				clipped[i] = cd2Lerp(w[i], w[1 - i], (upper - along[i]) / (along[1 - i] - along[i]));
+				code[i] = 3u;
+			}
+		}
+		w[0] = clipped[0];
+		w[1] = clipped[1];
+	}
+
+	if (incident->radius > CD_R(0.0))
+	{
+		/* The deepest unclipped core vertex: its surface point straight against n, if that stays
+		 * over the reference edge. */
+		int deepest = -1;
+		if (pointCount == 1)
+		{
+			deepest = 0;
+		}
+		else if (code[0] < 2u || code[1] < 2u)
+		{
+			int i = cd2Dot(n, core[0]) <= cd2Dot(n, core[1]) ? 0 : 1;
+			deepest = code[i] < 2u ? i : -1;
+		}
+		if (deepest >= 0)
+		{
+			cd2Vec straight = cd2MulSub(core[deepest], incident->radius, n);
+			cdReal t = cd2Dot(tangent, cd2Sub(straight, v1));
+			if (pointCount == 1 || (CD_R(0.0) <= t && t <= upper))
+			{
+				w[deepest] = straight;
+			}
+		}
+	}
+
+	uint32_t base = (uint32_t)referenceEdge | (uint32_t)incidentEdge << 8 | (flip ? CD2_FEATURE_FLIP : 0u);
+	for (int i = 0; i < pointCount; ++i)
+	{
+		cdReal separation = cd2Dot(n, cd2Sub(w[i], v1)) - reference->radius;
+		if (separation <= speculativeDistance)
+		{
+			AddPoint(&manifold, cd2MulSub(w[i], CD_R(0.5) * separation, n), separation, base | code[i] << 16);
+		}
+	}
+	if (manifold.pointCount > 0)
+	{
+		manifold.normal = flip ? cd2Neg(n) : n;
+	}
+	return manifold;
+}
+
+/* Index of the endpoint of edge (i, i + 1) that p is exactly, or -1. */
+static int EndpointIndex(const Core* core, int edge, cd2Vec p)
+{
+	int next = edge + 1 < core->count ? edge + 1 : 0;
+	if (cd2VecEqual(p, core->vertices[edge]))
+	{
+		return edge;
+	}
+	return cd2VecEqual(p, core->vertices[next]) ? next : -1;
+}
+
+/* The edge of a two-sided segment core facing direction u, or `edge` for a polygon. */
+static int FacingEdge(const Core* core, int edge, cd2Vec u)
+{
+	if (core->count == 2)
+	{
+		return cd2Dot(core->normals[0], u) >= CD_R(0.0) ? 0 : 1;
+	}
+	return edge;
+}
+
+static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
+{
+	cdReal total = a->radius + b->radius;
+	int edgeA, edgeB;
+	cdReal separationA = MaxSeparation(a, b, &edgeA);
+	if (separationA > total + speculativeDistance)
+	{
+		return EmptyManifold();
+	}
+	cdReal separationB = MaxSeparation(b, a, &edgeB);
+	if (separationB > total + speculativeDistance)
+	{
+		return EmptyManifold();
+	}
+
+	/* Two segments need the closest-feature path even when their normals see no gap: collinear
+	 * segments are separated along their common direction, which is neither one's normal. */
+	if ((a->count == 2 && b->count == 2) || cdMax(separationA, separationB) > SEPARATED_TOLERANCE)
+	{
+		cd2Segment segmentA = {a->vertices[edgeA], a->vertices[edgeA + 1 < a->count ? edgeA + 1 : 0]};
+		cd2Segment segmentB = {b->vertices[edgeB], b->vertices[edgeB + 1 < b->count ? edgeB + 1 : 0]};
+		cd2ClosestPoints closest = cd2ClosestPointsSegmentSegment(segmentA, segmentB);
+		if (closest.distance > SEPARATED_TOLERANCE)
+		{
+			if (closest.distance - total > speculativeDistance)
+			{
+				return EmptyManifold();
+			}
+			cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
+			int vertexA = EndpointIndex(a, edgeA, closest.pointA);
+			int vertexB = EndpointIndex(b, edgeB, closest.pointB);
+			if (vertexA >= 0 && vertexB >= 0)
+			{
+				cd2Manifold manifold = EmptyManifold();
+				cd2Vec onA = cd2MulAdd(closest.pointA, a->radius, u);
+				cd2Vec onB = cd2MulSub(closest.pointB, b->radius, u);
+				manifold.normal = u;
+				AddPoint(&manifold, cd2Scale(CD_R(0.5), cd2Add(onA, onB)), closest.distance - total,
+						 (uint32_t)vertexA | (uint32_t)vertexB << 8 | CODE_VERTEX_VERTEX << 16);
+				return manifold;
+			}
+			if (vertexA < 0)
+			{
+				return Clip(a, FacingEdge(a, edgeA, u), b, false, speculativeDistance, true);
+			}
+			return Clip(b, FacingEdge(b, edgeB, cd2Neg(u)), a, true, speculativeDistance, true);
+		}
+	}
+
+	if (separationB > separationA + FLIP_TOLERANCE)
+	{
+		return Clip(b, edgeB, a, true, speculativeDistance, true);
+	}
+	return Clip(a, edgeA, b, false, speculativeDistance, true);
+}
+
+/* Any two cores, normal from a to b. */
+static cd2Manifold CollideAny(const Core* a, const Core* b, cdReal speculativeDistance)
+{
+	if (a->count == 1 && b->count == 1)
+	{
+		return CollidePoints(a, b, speculativeDistance);
+	}
+	if (a->count == 1)
+	{
+		return Flipped(CollideCorePoint(b, a, speculativeDistance));
+	}
+	if (b->count == 1)
+	{
+		return CollideCorePoint(a, b, speculativeDistance);
+	}
+	return CollideCores(a, b, speculativeDistance);
+}
+
+/* ---- pair functions --------------------------------------------------------------------------- */
+
+cd2Manifold cd2CollideCircleCircle(cd2Circle a, cd2Circle b, cdReal speculativeDistance)
+{
+	Core coreA = MakePointCore(a.center, a.radius), coreB = MakePointCore(b.center, b.radius);
+	return CollidePoints(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideCircleCapsule(cd2Circle a, cd2Capsule b, cdReal speculativeDistance)
+{
+	Core coreA = MakePointCore(a.center, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, b.radius);
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideCirclePolygon(cd2Circle a, const cd2Polygon* b, cdReal speculativeDistance)
+{
+	Core coreA = MakePointCore(a.center, a.radius), coreB = MakePolygonCore(b);
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideCircleSegment(cd2Circle a, cd2Segment b, cdReal speculativeDistance)
+{
+	Core coreA = MakePointCore(a.center, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideCapsuleCapsule(cd2Capsule a, cd2Capsule b, cdReal speculativeDistance)
+{
+	Core coreA = MakeSegmentCore(a.p1, a.p2, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, b.radius);
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideCapsulePolygon(cd2Capsule a, const cd2Polygon* b, cdReal speculativeDistance)
+{
+	Core coreA = MakeSegmentCore(a.p1, a.p2, a.radius), coreB = MakePolygonCore(b);
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideCapsuleSegment(cd2Capsule a, cd2Segment b, cdReal speculativeDistance)
+{
+	Core coreA = MakeSegmentCore(a.p1, a.p2, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollidePolygonPolygon(const cd2Polygon* a, const cd2Polygon* b, cdReal speculativeDistance)
+{
+	Core coreA = MakePolygonCore(a), coreB = MakePolygonCore(b);
+	return CollideCores(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollidePolygonSegment(const cd2Polygon* a, cd2Segment b, cdReal speculativeDistance)
+{
+	Core coreA = MakePolygonCore(a), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+cd2Manifold cd2CollideSegmentSegment(cd2Segment a, cd2Segment b, cdReal speculativeDistance)
+{
+	Core coreA = MakeSegmentCore(a.p1, a.p2, CD_R(0.0)), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	return CollideAny(&coreA, &coreB, speculativeDistance);
+}
+
+/* ---- chain segments --------------------------------------------------------------------------- */
+
+/* Whether the chain turns left (a convex corner, seen from the free side) from edge e1 to e2. */
+static bool IsConvexTurn(cd2Vec e1, cd2Vec e2)
+{
+	return cd2Cross(cd2Normalize(e1), cd2Normalize(e2)) > CHAIN_FLAT_TOLERANCE;
+}
+
+static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape, cd2Vec shapeCenter,
+								cdReal speculativeDistance)
+{
+	cd2Vec edge = cd2Sub(chain->p2, chain->p1);
+	Core segment = MakeSegmentCore(chain->p1, chain->p2, CD_R(0.0));
+	if (segment.count != 2)
+	{
+		return EmptyManifold(); /* a zero-length chain segment has no side */
+	}
+	cd2Vec n = segment.normals[0];
+	if (cd2Dot(n, cd2Sub(shapeCenter, chain->p1)) < CD_R(0.0))
+	{
+		return EmptyManifold(); /* behind the one-sided segment */
+	}
+	cd2Manifold manifold = CollideAny(&segment, shape, speculativeDistance);
+	if (manifold.pointCount == 0)
+	{
+		return manifold;
+	}
+
+	cd2Vec m = manifold.normal;
+	cdReal side = cd2Cross(n, m); /* > 0: tilted towards p2, < 0: towards p1 */
+	bool admissible;
+	if (cd2Dot(m, n) < CD_R(0.0))
+	{
+		admissible = false;
+	}
+	else if (side > CD_R(0.0))
+	{
+		cd2Vec next = cd2Sub(chain->ghost2, chain->p2);
+		admissible = IsConvexTurn(edge, next) && cd2Cross(m, cd2RightPerp(cd2Normalize(next))) >= CD_R(0.0);
+		/* Past the next segment's normal at a convex corner: that segment reports the contact. */
+		if (IsConvexTurn(edge, next) && !admissible)
+		{
+			return EmptyManifold();
+		}
+	}
+	else if (side < CD_R(0.0))
+	{
+		cd2Vec previous = cd2Sub(chain->p1, chain->ghost1);
+		admissible =
+			IsConvexTurn(previous, edge) && cd2Cross(cd2RightPerp(cd2Normalize(previous)), m) >= CD_R(0.0);
+		if (IsConvexTurn(previous, edge) && !admissible)
+		{
+			return EmptyManifold();
+		}
+	}
+	else
+	{
+		admissible = true;
+	}
+	if (admissible)
+	{
+		return manifold;
+	}
+
+	/* Only the segment's own normal is allowed here: the contact seen from its face, within its
+	 * extent (beyond an end, a flat or concave neighbour's face takes over). */
+	if (shape->count == 1)
+	{
+		cd2Vec center = shape->vertices[0];
+		cdReal along = cd2Dot(cd2Sub(center, chain->p1), edge);
+		if (along < CD_R(0.0) || along > cd2Dot(edge, edge))
+		{
+			return EmptyManifold();
+		}
+		cdReal coreSeparation = cd2Dot(n, cd2Sub(center, chain->p1));
+		cdReal separation = coreSeparation - shape->radius;
+		cd2Manifold faceManifold = EmptyManifold();
+		if (separation <= speculativeDistance)
+		{
+			faceManifold.normal = n;
+			AddPoint(&faceManifold, cd2MulSub(center, CD_R(0.5) * (shape->radius + coreSeparation), n),
+					 separation, 0u);
+		}
+		return faceManifold;
+	}
+	return Clip(&segment, 0, shape, false, speculativeDistance, false);
+}
+
+cd2Manifold cd2CollideChainSegmentCircle(const cd2ChainSegment* a, cd2Circle b, cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL);
+	Core core = MakePointCore(b.center, b.radius);
+	return CollideChain(a, &core, b.center, speculativeDistance);
+}
+
+cd2Manifold cd2CollideChainSegmentCapsule(const cd2ChainSegment* a, cd2Capsule b, cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL);
+	Core core = MakeSegmentCore(b.p1, b.p2, b.radius);
+	return CollideChain(a, &core, cd2Lerp(b.p1, b.p2, CD_R(0.5)), speculativeDistance);
+}
+
+cd2Manifold cd2CollideChainSegmentPolygon(const cd2ChainSegment* a, const cd2Polygon* b,
+										  cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	Core core = MakePolygonCore(b);
+	return CollideChain(a, &core, b->centroid, speculativeDistance);
+}
+
+/* ---- dispatcher ------------------------------------------------------------------------------- */
+
+/* Rank in the canonical order of the pair functions: Circle, Capsule, Polygon (AABB, box), Segment. */
+static int CanonicalRank(cd2ShapeType type)
+{
+	switch (type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return 0;
+		case CD2_SHAPE_CAPSULE:
+			return 1;
+		case CD2_SHAPE_AABB:
+		case CD2_SHAPE_BOX:
+		case CD2_SHAPE_POLYGON:
+			return 2;
+		default:
+			return 3;
+	}
+}
+
+static Core MakeShapeCore(const cd2Shape* shape)
+{
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return MakePointCore(shape->circle.center, shape->circle.radius);
+		case CD2_SHAPE_CAPSULE:
+			return MakeSegmentCore(shape->capsule.p1, shape->capsule.p2, shape->capsule.radius);
+		case CD2_SHAPE_AABB:
+			return MakeRectangleCore(cd2AabbCenter(shape->aabb), cd2MakeVec(CD_R(1.0), CD_R(0.0)),
+									 cd2MakeVec(CD_R(0.0), CD_R(1.0)),
+									 CD_R(0.5) * (shape->aabb.max.x - shape->aabb.min.x),
+									 CD_R(0.5) * (shape->aabb.max.y - shape->aabb.min.y));
+		case CD2_SHAPE_BOX:
+		{
+			/* Normalized because validators accept rotations slightly off unit length. */
+			cd2Rot q = cd2NormalizeRot(shape->box.rotation);
+			return MakeRectangleCore(shape->box.center, cd2MakeVec(q.c, q.s), cd2MakeVec(-q.s, q.c),
+									 shape->box.halfExtents.x, shape->box.halfExtents.y);
+		}
+		case CD2_SHAPE_POLYGON:
+			return MakePolygonCore(&shape->polygon);
+		default:
+			return MakeSegmentCore(shape->segment.p1, shape->segment.p2, CD_R(0.0));
+	}
+}
+
+cd2Manifold cd2Collide(const cd2Shape* a, const cd2Shape* b, cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	bool swap = CanonicalRank(a->type) > CanonicalRank(b->type);
+	if (swap)
+	{
+		const cd2Shape* t = a;
+		a = b;
+		b = t;
+	}
+	Core coreA = MakeShapeCore(a), coreB = MakeShapeCore(b);
+	cd2Manifold manifold = CollideAny(&coreA, &coreB, speculativeDistance);
+	return swap ? Flipped(manifold) : manifold;
+}

@@ -1,0 +1,843 @@
+/* Tests of the 2D contact manifolds (manifold2.h): exact cases for every pair family, then
+ * properties over thousands of random pairs of every type (rounded polygons included):
+ * - each point lies midway between the surfaces: point -+ separation/2 * normal is on A's and on
+ *   B's surface (within TOL of the shape, and leaving the shape when moved on along the normal);
+ * - the normal is a unit vector from A to B;
+ * - the smallest separation is the distance (cd2Distance) for separated pairs and minus the
+ *   penetration depth (an independent double-precision search over directions) for overlapping
+ *   ones; no points beyond the speculative distance, points for every pair within it;
+ * - symmetry of the dispatcher, invariance under a rigid motion, feature ids stable under tiny
+ *   motions;
+ * - a box, a circle and a capsule sliding along a chain of collinear segments only ever get the
+ *   straight-up normal (and plain two-sided segments do show the ghost normals the chain avoids).
+ * Pairs within BAND of a decision boundary (touching, the speculative distance) are skipped for
+ * the checks that depend on that decision. */
+#include "collide/manifold2.h"
+#include "random_shapes2.h"
+#include "test.h"
+
+#include <math.h>
+#include <string.h>
+
+#if CD_DOUBLE
+#define TOL 1e-6
+#else
+#define TOL 2e-4
+#endif
+
+/* The reference-edge choice may favour A's edge by up to the flip tolerance (0.1 linear slop). */
+#define FLIP_SLACK (0.1 * 0.005 + TOL)
+#define BAND 1e-3
+#define SPECULATIVE 0.1
+
+static cd2Vec V(double x, double y)
+{
+	return cd2MakeVec((cdReal)x, (cdReal)y);
+}
+
+static cd2Polygon BoxPolygon(double cx, double cy, double hx, double hy, double angle)
+{
+	cd2Box box = {V(cx, cy), V(hx, hy), cd2MakeRot((cdReal)angle)};
+	cd2Polygon polygon;
+	cdResult result = cd2MakeBoxPolygon(box, &polygon);
+	TEST_CHECK(result == CD_OK);
+	return polygon;
+}
+
+static double MinSeparation(const cd2Manifold* m)
+{
+	double s = INFINITY;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		s = fmin(s, (double)m->points[i].separation);
+	}
+	return s;
+}
+
+static void PrintManifold(const cd2Manifold* m)
+{
+	fprintf(stderr, "  manifold: normal (%.9g %.9g) count %d\n", (double)m->normal.x, (double)m->normal.y,
+			m->pointCount);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		fprintf(stderr, "    point (%.9g %.9g) separation %.9g id 0x%x\n", (double)m->points[i].point.x,
+				(double)m->points[i].point.y, (double)m->points[i].separation, (unsigned)m->points[i].id);
+	}
+}
+
+/* ---- exact cases ------------------------------------------------------------------------------ */
+
+static void CheckPoint(const cd2Manifold* m, int i, double x, double y, double separation)
+{
+	TEST_CHECKF(i < m->pointCount, "point %d missing", i);
+	if (i >= m->pointCount)
+	{
+		return;
+	}
+	TEST_CHECKF(fabs((double)m->points[i].point.x - x) <= TOL &&
+					fabs((double)m->points[i].point.y - y) <= TOL &&
+					fabs((double)m->points[i].separation - separation) <= TOL,
+				"point %d: (%.9g %.9g) separation %.9g, expected (%g %g) %g", i, (double)m->points[i].point.x,
+				(double)m->points[i].point.y, (double)m->points[i].separation, x, y, separation);
+}
+
+static void CheckNormal(const cd2Manifold* m, double x, double y)
+{
+	TEST_CHECKF(fabs((double)m->normal.x - x) <= TOL && fabs((double)m->normal.y - y) <= TOL,
+				"normal (%.9g %.9g), expected (%g %g)", (double)m->normal.x, (double)m->normal.y, x, y);
+}
+
+/* Points sorted by x for the exact checks (the order of the two points is not part of the API). */
+static cd2Manifold SortedByX(cd2Manifold m)
+{
+	if (m.pointCount == 2 && m.points[1].point.x < m.points[0].point.x)
+	{
+		cd2ManifoldPoint t = m.points[0];
+		m.points[0] = m.points[1];
+		m.points[1] = t;
+	}
+	return m;
+}
+
+static void TestBoxes(void)
+{
+	cd2Polygon ground = BoxPolygon(0, -1, 3, 1, 0); /* top face y = 0 */
+
+	/* resting, penetrating by 0.01: two points at the bottom corners, midway at y = -0.005 */
+	cd2Polygon box = BoxPolygon(0, 0.49, 0.5, 0.5, 0);
+	cd2Manifold m = SortedByX(cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, -0.5, -0.005, -0.01);
+	CheckPoint(&m, 1, 0.5, -0.005, -0.01);
+	TEST_CHECK(m.points[0].id != m.points[1].id);
+
+	/* the same pair the other way round: normal down, same points */
+	cd2Manifold r = SortedByX(cd2CollidePolygonPolygon(&box, &ground, CD_R(0.0)));
+	TEST_CHECK(r.pointCount == 2);
+	CheckNormal(&r, 0, -1);
+	CheckPoint(&r, 0, -0.5, -0.005, -0.01);
+	CheckPoint(&r, 1, 0.5, -0.005, -0.01);
+
+	/* touching exactly, then apart by 0.01: reported only within the speculative distance */
+	box = BoxPolygon(0, 0.5, 0.5, 0.5, 0);
+	m = cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 2);
+	CheckPoint(&m, 0, m.points[0].point.x > 0 ? 0.5 : -0.5, 0, 0);
+	box = BoxPolygon(0, 0.51, 0.5, 0.5, 0);
+	m = cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 0);
+	m = SortedByX(cd2CollidePolygonPolygon(&ground, &box, CD_R(0.02)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, -0.5, 0.005, 0.01);
+	CheckPoint(&m, 1, 0.5, 0.005, 0.01);
+	m = cd2CollidePolygonPolygon(&ground, &box, CD_R(0.005));
+	TEST_CHECK(m.pointCount == 0);
+
+	/* deep: sunk by 0.3 */
+	box = BoxPolygon(0, 0.2, 0.5, 0.5, 0);
+	m = SortedByX(cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, -0.5, -0.15, -0.3);
+
+	/* overhanging the ground's right end: clipped at x = 3 */
+	box = BoxPolygon(3.2, 0.49, 0.5, 0.5, 0);
+	m = SortedByX(cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, 2.7, -0.005, -0.01);
+	CheckPoint(&m, 1, 3.0, -0.005, -0.01);
+
+	/* a box turned 45 degrees, corner down 0.02 into the ground: one point */
+	double h = 0.5 * sqrt(2.0);
+	box = BoxPolygon(0.25, h - 0.02, 0.5, 0.5, 0.25 * 3.14159265358979);
+	m = cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, 0.25, -0.01, -0.02);
+
+	/* corner to corner, apart along the diagonal: one point, normal along the gap */
+	cd2Polygon a = BoxPolygon(0, 0, 0.5, 0.5, 0), b = BoxPolygon(1.03, 1.04, 0.5, 0.5, 0);
+	m = cd2CollidePolygonPolygon(&a, &b, CD_R(0.1));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0.6, 0.8);
+	CheckPoint(&m, 0, 0.515, 0.52, 0.05);
+
+	/* the dispatcher takes AABBs and boxes as polygons */
+	cd2Aabb aabb = {V(-3, -2), V(3, 0)};
+	cd2Box obox = {V(0, 0.49), V(0.5, 0.5), CD2_ROT_IDENTITY};
+	cd2Shape sa = cd2MakeAabbShape(aabb), sb = cd2MakeBoxShape(obox);
+	m = SortedByX(cd2Collide(&sa, &sb, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, -0.5, -0.005, -0.01);
+}
+
+static void TestRoundedPolygons(void)
+{
+	/* A rounded box (core [-1,1]x[-1,0], radius 0.1) under a rounded box (radius 0.05), cores apart
+	 * by 0.1: the surfaces overlap by 0.05. */
+	cd2Box core = {V(0, -0.5), V(1, 0.5), CD2_ROT_IDENTITY};
+	cd2Polygon ground, box;
+	TEST_CHECK(cd2MakeRoundedBoxPolygon(core, CD_R(0.1), &ground) == CD_OK);
+	cd2Box top = {V(0, 0.6), V(0.5, 0.5), CD2_ROT_IDENTITY};
+	TEST_CHECK(cd2MakeRoundedBoxPolygon(top, CD_R(0.05), &box) == CD_OK);
+	cd2Manifold m = SortedByX(cd2CollidePolygonPolygon(&ground, &box, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, -0.5, 0.075, -0.05);
+	CheckPoint(&m, 1, 0.5, 0.075, -0.05);
+
+	/* a circle against the rounded corner (1,0): center at distance 1 along (0.6, 0.8), surfaces
+	 * apart by 0.05 */
+	cd2Circle circle = {V(1.6, 0.8), CD_R(0.85)};
+	m = cd2CollideCirclePolygon(circle, &ground, CD_R(0.1));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, -0.6, -0.8); /* from the circle to the polygon */
+	CheckPoint(&m, 0, 1.0 + 0.6 * 0.125, 0.8 * 0.125, 0.05);
+	TEST_CHECK(cd2CollideCirclePolygon(circle, &ground, CD_R(0.0)).pointCount == 0);
+	circle.radius = CD_R(0.8);
+	TEST_CHECK(cd2CollideCirclePolygon(circle, &ground, CD_R(0.05)).pointCount == 0);
+	TEST_CHECK(cd2CollideCirclePolygon(circle, &ground, CD_R(0.11)).pointCount == 1);
+}
+
+static void TestCircles(void)
+{
+	cd2Polygon ground = BoxPolygon(0, -1, 3, 1, 0);
+	cd2Circle a = {V(0, 0.9), CD_R(1.0)};
+	cd2Manifold m = cd2CollideCirclePolygon(a, &ground, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0, -1);
+	CheckPoint(&m, 0, 0, -0.05, -0.1);
+
+	/* center inside the polygon, nearest the top face */
+	a.center = V(1, -0.2);
+	a.radius = CD_R(0.1);
+	m = cd2CollideCirclePolygon(a, &ground, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0, -1);
+	CheckPoint(&m, 0, 1, -0.15, -0.3);
+
+	/* against the corner (3, 0) */
+	a.center = V(3.6, 0.8);
+	a.radius = CD_R(1.1);
+	m = cd2CollideCirclePolygon(a, &ground, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, -0.6, -0.8);
+	CheckPoint(&m, 0, 3.0 - 0.03, -0.04, -0.1);
+
+	/* circles: touching, apart, coincident */
+	cd2Circle b = {V(3, 4), CD_R(2.0)}, c = {V(0, 0), CD_R(3.0)};
+	m = cd2CollideCircleCircle(c, b, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0.6, 0.8);
+	CheckPoint(&m, 0, 1.8, 2.4, 0);
+	c.radius = CD_R(2.9);
+	TEST_CHECK(cd2CollideCircleCircle(c, b, CD_R(0.0)).pointCount == 0);
+	m = cd2CollideCircleCircle(c, b, CD_R(0.2));
+	TEST_CHECK(m.pointCount == 1 && fabs((double)m.points[0].separation - 0.1) <= TOL);
+	m = cd2CollideCircleCircle(b, b, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1 && fabs((double)m.points[0].separation + 4.0) <= TOL);
+	TEST_CHECK(fabs((double)cd2Length(m.normal) - 1.0) <= TOL);
+
+	/* circle and capsule side, circle and segment end */
+	cd2Capsule capsule = {V(-2, 0), V(2, 0), CD_R(0.5)};
+	cd2Circle d = {V(1, 1.2), CD_R(0.8)};
+	m = cd2CollideCircleCapsule(d, capsule, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0, -1);
+	CheckPoint(&m, 0, 1, 0.45, -0.1);
+	cd2Segment segment = {V(-2, 0), V(2, 0)};
+	cd2Circle e = {V(2.3, 0.4), CD_R(0.6)};
+	m = cd2CollideCircleSegment(e, segment, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, -0.6, -0.8);
+	CheckPoint(&m, 0, 2.0 - 0.6 * 0.05, -0.8 * 0.05, -0.1);
+	/* on the segment's line beyond its end: the normal runs along it */
+	e.center = V(2.5, 0);
+	m = cd2CollideCircleSegment(e, segment, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, -1, 0);
+}
+
+static void TestCapsulesAndSegments(void)
+{
+	cd2Polygon ground = BoxPolygon(0, -1, 3, 1, 0);
+	cd2Capsule capsule = {V(-1, 0.4), V(1, 0.4), CD_R(0.5)};
+	cd2Manifold m = SortedByX(cd2CollideCapsulePolygon(capsule, &ground, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, -1);
+	CheckPoint(&m, 0, -1, -0.05, -0.1);
+	CheckPoint(&m, 1, 1, -0.05, -0.1);
+
+	/* capsules parallel, overlapping by 0.1 over x in [0, 1] */
+	cd2Capsule a = {V(-2, 0), V(1, 0), CD_R(0.5)}, b = {V(0, 0.9), V(3, 0.9), CD_R(0.5)};
+	m = SortedByX(cd2CollideCapsuleCapsule(a, b, CD_R(0.0)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, 0, 0.45, -0.1);
+	CheckPoint(&m, 1, 1, 0.45, -0.1);
+
+	/* collinear capsules end to end, 0.2 apart at the cores: overlapping by 0.8 along the axis */
+	cd2Capsule c = {V(1.2, 0), V(4, 0), CD_R(0.5)};
+	m = cd2CollideCapsuleCapsule(a, c, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 1, 0);
+	CheckPoint(&m, 0, 1.1, 0, -0.8);
+
+	/* zero-length capsule is a circle, apart by 0.4 */
+	cd2Capsule dot = {V(0, 1.3), V(0, 1.3), CD_R(0.4)};
+	m = cd2CollideCapsuleCapsule(a, dot, CD_R(0.5));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, 0, 0.7, 0.4);
+	TEST_CHECK(cd2CollideCapsuleCapsule(a, dot, CD_R(0.3)).pointCount == 0);
+
+	/* segments: crossing (distance 0), apart, collinear within the speculative distance */
+	cd2Segment s1 = {V(-1, 0), V(1, 0)}, s2 = {V(0, -1), V(0, 1)}, s3 = {V(0, 0.5), V(2, 0.5)},
+			   s4 = {V(1.05, 0), V(3, 0)};
+	m = cd2CollideSegmentSegment(s1, s2, CD_R(0.0));
+	TEST_CHECK(m.pointCount >= 1 && MinSeparation(&m) <= 0.0);
+	TEST_CHECK(cd2CollideSegmentSegment(s1, s3, CD_R(0.0)).pointCount == 0);
+	m = SortedByX(cd2CollideSegmentSegment(s1, s3, CD_R(0.6)));
+	TEST_CHECK(m.pointCount == 2);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, 0, 0.25, 0.5);
+	CheckPoint(&m, 1, 1, 0.25, 0.5);
+	TEST_CHECK(cd2CollideSegmentSegment(s1, s4, CD_R(0.0)).pointCount == 0);
+	m = cd2CollideSegmentSegment(s1, s4, CD_R(0.1));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 1, 0);
+	CheckPoint(&m, 0, 1.025, 0, 0.05);
+
+	/* a segment across the top of the ground polygon */
+	cd2Segment across = {V(-1, 0.01), V(1, -0.01)};
+	m = cd2CollidePolygonSegment(&ground, across, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 0, 1);
+	CheckPoint(&m, 0, 1, -0.005, -0.01);
+}
+
+/* ---- random properties ------------------------------------------------------------------------ */
+
+static cd2Shape PointShape(cd2Vec p)
+{
+	cd2Circle c = {p, CD_R(0.0)};
+	return cd2MakeCircleShape(c);
+}
+
+static double DistanceToShape(const cd2Shape* s, cd2Vec p)
+{
+	cd2Shape point = PointShape(p);
+	return (double)cd2Distance(s, &point).distance;
+}
+
+/* Whether the shape has an inside (zero-area shapes are segments or points). */
+static bool HasArea(const cd2Shape* s)
+{
+	switch (s->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return s->circle.radius > CD_R(0.0);
+		case CD2_SHAPE_CAPSULE:
+			return s->capsule.radius > CD_R(0.0);
+		case CD2_SHAPE_AABB:
+			return s->aabb.max.x > s->aabb.min.x && s->aabb.max.y > s->aabb.min.y;
+		case CD2_SHAPE_BOX:
+			return s->box.halfExtents.x > CD_R(0.0) && s->box.halfExtents.y > CD_R(0.0);
+		case CD2_SHAPE_POLYGON:
+			return true;
+		default:
+			return false;
+	}
+}
+
+/* p is on the surface of s: within TOL of it, and out of it once moved by 20 TOL along `outward`
+ * (for shapes with an inside; a zero-area shape is all surface). */
+static bool OnSurface(const cd2Shape* s, cd2Vec p, cd2Vec outward, double scale)
+{
+	double tolerance = TOL * scale;
+	if (DistanceToShape(s, p) > tolerance)
+	{
+		return false;
+	}
+	if (!HasArea(s))
+	{
+		return true;
+	}
+	return DistanceToShape(s, cd2MulAdd(p, (cdReal)(20.0 * tolerance), outward)) > 0.0;
+}
+
+/* Support of a shape in direction u, in double: core vertices plus the radius. */
+static double Support(const cd2Shape* s, double ux, double uy)
+{
+	cd2Vec pts[CD2_MAX_POLYGON_VERTICES];
+	int count = 0;
+	double radius = 0.0;
+	switch (s->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			pts[count++] = s->circle.center;
+			radius = (double)s->circle.radius;
+			break;
+		case CD2_SHAPE_CAPSULE:
+			pts[count++] = s->capsule.p1;
+			pts[count++] = s->capsule.p2;
+			radius = (double)s->capsule.radius;
+			break;
+		case CD2_SHAPE_AABB:
+			pts[count++] = s->aabb.min;
+			pts[count++] = s->aabb.max;
+			pts[count++] = V((double)s->aabb.min.x, (double)s->aabb.max.y);
+			pts[count++] = V((double)s->aabb.max.x, (double)s->aabb.min.y);
+			break;
+		case CD2_SHAPE_BOX:
+		{
+			double c = (double)s->box.rotation.c, sn = (double)s->box.rotation.s;
+			double hx = (double)s->box.halfExtents.x, hy = (double)s->box.halfExtents.y;
+			double best = -INFINITY;
+			for (int i = 0; i < 4; ++i)
+			{
+				double lx = (i & 1) ? hx : -hx, ly = (i & 2) ? hy : -hy;
+				double x = (double)s->box.center.x + c * lx - sn * ly;
+				double y = (double)s->box.center.y + sn * lx + c * ly;
+				best = fmax(best, x * ux + y * uy);
+			}
+			return best;
+		}
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < s->polygon.count; ++i)
+			{
+				pts[count++] = s->polygon.vertices[i];
+			}
+			radius = (double)s->polygon.radius;
+			break;
+		default:
+			pts[count++] = s->segment.p1;
+			pts[count++] = s->segment.p2;
+			break;
+	}
+	double best = -INFINITY;
+	for (int i = 0; i < count; ++i)
+	{
+		best = fmax(best, (double)pts[i].x * ux + (double)pts[i].y * uy);
+	}
+	return best + radius;
+}
+
+/* Separation of b from a along the unit direction (angle): negative when they overlap along it. */
+static double SeparationAlong(const cd2Shape* a, const cd2Shape* b, double angle)
+{
+	double ux = cos(angle), uy = sin(angle);
+	return -Support(b, -ux, -uy) - Support(a, ux, uy);
+}
+
+/* The largest separation over all directions (minus the penetration depth when overlapping):
+ * a dense scan, then golden-section refinement around the best few samples. */
+static double ReferenceSeparation(const cd2Shape* a, const cd2Shape* b)
+{
+	const int samples = 720;
+	const double step = 2.0 * 3.14159265358979323846 / samples;
+	double values[720];
+	for (int i = 0; i < samples; ++i)
+	{
+		values[i] = SeparationAlong(a, b, i * step);
+	}
+	double best = -INFINITY;
+	for (int i = 0; i < samples; ++i)
+	{
+		double previous = values[(i + samples - 1) % samples], next = values[(i + 1) % samples];
+		if (values[i] < previous || values[i] < next)
+		{
+			continue; /* not a local maximum */
+		}
+		double lo = (i - 1) * step, hi = (i + 1) * step;
+		for (int k = 0; k < 60; ++k)
+		{
+			double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
+			if (SeparationAlong(a, b, m1) < SeparationAlong(a, b, m2))
+			{
+				lo = m1;
+			}
+			else
+			{
+				hi = m2;
+			}
+		}
+		best = fmax(best, fmax(values[i], SeparationAlong(a, b, 0.5 * (lo + hi))));
+	}
+	return best;
+}
+
+static bool IsSolid(const cd2Shape* s)
+{
+	return s->type != CD2_SHAPE_SEGMENT;
+}
+
+typedef struct Counts
+{
+	int separated, penetrating, empty, skipped;
+} Counts;
+
+static void ReportPair(const cd2Shape* a, const cd2Shape* b, const cd2Manifold* m)
+{
+	PrintShape("a", a);
+	PrintShape("b", b);
+	PrintManifold(m);
+}
+
+static void CheckManifold(const cd2Shape* a, const cd2Shape* b, cdReal speculative, Counts* counts)
+{
+	cd2Manifold m = cd2Collide(a, b, speculative);
+	bool ok = m.pointCount >= 0 && m.pointCount <= 2;
+	TEST_CHECKF(ok, "%s/%s: point count %d", TypeName(a->type), TypeName(b->type), m.pointCount);
+	if (!ok)
+	{
+		return;
+	}
+	double distance = (double)cd2Distance(a, b).distance;
+	double spec = (double)speculative;
+
+	/* Separated beyond the speculative distance: nothing; within it: something. */
+	if (distance > spec + BAND)
+	{
+		TEST_CHECKF(m.pointCount == 0, "%s/%s: distance %.6g > speculative %.3g but %d points",
+					TypeName(a->type), TypeName(b->type), distance, spec, m.pointCount);
+		++counts->empty;
+		return;
+	}
+	if (distance > spec - BAND)
+	{
+		++counts->skipped;
+		return;
+	}
+	ok = m.pointCount >= 1;
+	TEST_CHECKF(ok, "%s/%s: distance %.6g within the speculative distance but no point", TypeName(a->type),
+				TypeName(b->type), distance);
+	if (!ok)
+	{
+		ReportPair(a, b, &m);
+		return;
+	}
+	bool allOk = true;
+	ok = fabs((double)cd2Length(m.normal) - 1.0) <= TOL;
+	TEST_CHECKF(ok, "normal not unit");
+	allOk = allOk && ok;
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		const cd2ManifoldPoint* p = &m.points[i];
+		ok = (double)p->separation <= spec + TOL;
+		TEST_CHECKF(ok, "%s/%s: separation %.6g beyond speculative", TypeName(a->type), TypeName(b->type),
+					(double)p->separation);
+		allOk = allOk && ok;
+		cd2Vec onA = cd2MulSub(p->point, CD_R(0.5) * p->separation, m.normal);
+		cd2Vec onB = cd2MulAdd(p->point, CD_R(0.5) * p->separation, m.normal);
+		ok = OnSurface(a, onA, m.normal, 1.0) && OnSurface(b, onB, cd2Neg(m.normal), 1.0);
+		TEST_CHECKF(ok, "%s/%s: point %d not on both surfaces (off A by %.3g, off B by %.3g)",
+					TypeName(a->type), TypeName(b->type), i, DistanceToShape(a, onA),
+					DistanceToShape(b, onB));
+		allOk = allOk && ok;
+	}
+
+	/* Normal from A to B: B lies farther along it than A. */
+	double along = SeparationAlong(a, b, atan2((double)m.normal.y, (double)m.normal.x));
+	double minSeparation = MinSeparation(&m);
+	if (distance > BAND)
+	{
+		++counts->separated;
+		ok = fabs(minSeparation - distance) <= FLIP_SLACK && minSeparation > 0.0 && !cd2Overlap(a, b);
+		TEST_CHECKF(ok, "%s/%s: smallest separation %.9g, distance %.9g", TypeName(a->type),
+					TypeName(b->type), minSeparation, distance);
+		allOk = allOk && ok;
+		ok = along >= distance - FLIP_SLACK;
+		TEST_CHECKF(ok, "%s/%s: along the normal the gap is %.6g, distance %.6g", TypeName(a->type),
+					TypeName(b->type), along, distance);
+		allOk = allOk && ok;
+	}
+	else if (distance == 0.0 && IsSolid(a) && IsSolid(b))
+	{
+		double reference = ReferenceSeparation(a, b);
+		if (reference < -BAND)
+		{
+			++counts->penetrating;
+			/* Never deeper than the penetration depth, and the chosen axis is (nearly) the best. */
+			ok = minSeparation >= reference - FLIP_SLACK && along >= reference - FLIP_SLACK &&
+				 minSeparation < 0.0 && cd2Overlap(a, b);
+			TEST_CHECKF(ok, "%s/%s: smallest separation %.9g, along normal %.9g, reference %.9g",
+						TypeName(a->type), TypeName(b->type), minSeparation, along, reference);
+			allOk = allOk && ok;
+		}
+		else
+		{
+			++counts->skipped;
+		}
+	}
+	else
+	{
+		++counts->skipped;
+	}
+	if (!allOk)
+	{
+		ReportPair(a, b, &m);
+	}
+}
+
+/* Moves b so that it is apart from a by `gap` along their closest direction (if separated). */
+static cd2Shape Pushed(const cd2Shape* a, const cd2Shape* b, double gap)
+{
+	cd2ClosestPoints r = cd2Distance(a, b);
+	if (r.distance <= CD_R(0.0))
+	{
+		return *b;
+	}
+	cd2Vec n = cd2Normalize(cd2Sub(r.pointB, r.pointA));
+	cd2Transform t = {cd2Scale((cdReal)(gap - (double)r.distance), n), CD2_ROT_IDENTITY};
+	return TransformShape(b, t);
+}
+
+static void TestRandomPairs(void)
+{
+	TestRng rng = TestRngMake(0x3A7F01);
+	Counts counts = {0, 0, 0, 0};
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int n = 0; n < 90; ++n)
+			{
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb);
+				if (n % 3 == 0)
+				{
+					b = Pushed(&a, &b, TestRngRange(&rng, 0.0, 1.5 * SPECULATIVE));
+				}
+				CheckManifold(&a, &b, (cdReal)SPECULATIVE, &counts);
+			}
+		}
+	}
+	printf("random pairs: %d separated, %d penetrating, %d empty, %d skipped\n", counts.separated,
+		   counts.penetrating, counts.empty, counts.skipped);
+	TEST_CHECK(counts.separated > 400 && counts.penetrating > 400 && counts.empty > 1000);
+}
+
+static bool SameIds(const cd2Manifold* m1, const cd2Manifold* m2)
+{
+	if (m1->pointCount != m2->pointCount)
+	{
+		return false;
+	}
+	for (int i = 0; i < m1->pointCount; ++i)
+	{
+		bool found = false;
+		for (int j = 0; j < m2->pointCount; ++j)
+		{
+			found = found || m1->points[i].id == m2->points[j].id;
+		}
+		if (!found)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* Separations away from the speculative cut, so that both manifolds keep the same points. */
+static bool ClearOfCut(const cd2Manifold* m, double spec)
+{
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		if (fabs((double)m->points[i].separation - spec) < BAND)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static void TestSymmetryAndInvariance(void)
+{
+	TestRng rng = TestRngMake(0x3A7F02);
+	int symmetric = 0, invariant = 0, stable = 0;
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int n = 0; n < 50; ++n)
+			{
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb);
+				if (n % 2 == 0)
+				{
+					b = Pushed(&a, &b, TestRngRange(&rng, 0.0, SPECULATIVE));
+				}
+				cdReal spec = (cdReal)SPECULATIVE;
+				cd2Manifold ab = cd2Collide(&a, &b, spec);
+				if (!ClearOfCut(&ab, SPECULATIVE))
+				{
+					continue;
+				}
+
+				/* Symmetry: exact for different types (the same pair function runs); shapes of the
+				 * same type may pick the other reference edge on a near tie. */
+				cd2Manifold ba = cd2Collide(&b, &a, spec);
+				bool ok;
+				if (ta != tb && !((ta == CD2_SHAPE_AABB || ta == CD2_SHAPE_BOX || ta == CD2_SHAPE_POLYGON) &&
+								  (tb == CD2_SHAPE_AABB || tb == CD2_SHAPE_BOX || tb == CD2_SHAPE_POLYGON)))
+				{
+					ok = ba.pointCount == ab.pointCount && cd2VecEqual(ba.normal, cd2Neg(ab.normal));
+					for (int i = 0; ok && i < ab.pointCount; ++i)
+					{
+						ok = cd2VecEqual(ab.points[i].point, ba.points[i].point) &&
+							 ab.points[i].separation == ba.points[i].separation &&
+							 ab.points[i].id == ba.points[i].id;
+					}
+				}
+				else
+				{
+					ok = (ab.pointCount == 0) == (ba.pointCount == 0) &&
+						 (ab.pointCount == 0 || fabs(MinSeparation(&ab) - MinSeparation(&ba)) <= FLIP_SLACK);
+				}
+				TEST_CHECKF(ok, "%s/%s: cd2Collide(b, a) is not the flipped cd2Collide(a, b)",
+							TypeName(a.type), TypeName(b.type));
+				if (!ok)
+				{
+					ReportPair(&a, &b, &ab);
+					PrintManifold(&ba);
+				}
+				++symmetric;
+
+				/* Rigid motion (translation only with an AABB). */
+				bool hasAabb = ta == CD2_SHAPE_AABB || tb == CD2_SHAPE_AABB;
+				cd2Transform x = {RandomVec(&rng, 20.0), hasAabb ? CD2_ROT_IDENTITY : RandomRot(&rng)};
+				cd2Shape xa = TransformShape(&a, x), xb = TransformShape(&b, x);
+				cd2Manifold moved = cd2Collide(&xa, &xb, spec);
+				ok = moved.pointCount == ab.pointCount;
+				if (ok && ab.pointCount > 0)
+				{
+					cd2Vec turned = cd2RotateVector(x.q, ab.normal);
+					ok = fabs(MinSeparation(&moved) - MinSeparation(&ab)) <= 20 * TOL + FLIP_SLACK &&
+						 (cd2VecDistance(turned, moved.normal) <= 1e-2 ||
+						  fabs(MinSeparation(&moved) - MinSeparation(&ab)) <= FLIP_SLACK);
+				}
+				TEST_CHECKF(ok, "%s/%s: a rigid motion changed the manifold", TypeName(a.type),
+							TypeName(b.type));
+				if (!ok)
+				{
+					ReportPair(&a, &b, &ab);
+					PrintManifold(&moved);
+				}
+				++invariant;
+
+				/* Tiny motion: the same features, so the same ids (when the normal stays put). */
+				cd2Transform nudge = {cd2Scale(CD_R(1e-4), cd2Normalize(RandomVec(&rng, 1.0))),
+									  CD2_ROT_IDENTITY};
+				cd2Shape nb = TransformShape(&b, nudge);
+				cd2Manifold nudged = cd2Collide(&a, &nb, spec);
+				if (ClearOfCut(&nudged, SPECULATIVE) && nudged.pointCount == ab.pointCount &&
+					ab.pointCount > 0 && cd2VecDistance(nudged.normal, ab.normal) <= 1e-6 &&
+					fabs(MinSeparation(&ab)) > BAND)
+				{
+					ok = SameIds(&ab, &nudged);
+					TEST_CHECKF(ok, "%s/%s: ids changed under a tiny motion", TypeName(a.type),
+								TypeName(b.type));
+					if (!ok)
+					{
+						ReportPair(&a, &b, &ab);
+						PrintManifold(&nudged);
+					}
+					++stable;
+				}
+			}
+		}
+	}
+	printf("symmetry %d, invariance %d, id stability %d pairs\n", symmetric, invariant, stable);
+	TEST_CHECK(symmetric > 1000 && invariant > 1000 && stable > 300);
+}
+
+/* ---- chains ----------------------------------------------------------------------------------- */
+
+/* A flat floor at y = 0 from x = 10 to x = -10 (right to left: the free side is up), in unit
+ * segments; segment i runs from x = 10 - i to x = 9 - i. */
+static cd2ChainSegment FloorSegment(int i)
+{
+	cd2ChainSegment s = {V(11 - i, 0), V(10 - i, 0), V(9 - i, 0), V(8 - i, 0)};
+	return s;
+}
+
+static void TestChainNoGhosts(void)
+{
+	int contacts = 0, ghostsWithoutChain = 0;
+	for (int step = 0; step < 700; ++step)
+	{
+		double x = -4.0 + step * 0.0117;
+		double sink = 0.005 + 0.01 * (step % 3);
+		cd2Polygon box = BoxPolygon(x, 0.5 - sink, 0.5, 0.5, 0);
+		cd2Circle circle = {V(x, 0.3 - sink), CD_R(0.3)};
+		cd2Capsule capsule = {V(x - 0.7, 0.2 - sink), V(x + 0.7, 0.2 - sink), CD_R(0.2)};
+		int boxPoints = 0;
+		for (int i = 0; i < 20; ++i)
+		{
+			cd2ChainSegment s = FloorSegment(i);
+			cd2Manifold ms[3] = {cd2CollideChainSegmentPolygon(&s, &box, CD_R(0.02)),
+								 cd2CollideChainSegmentCircle(&s, circle, CD_R(0.02)),
+								 cd2CollideChainSegmentCapsule(&s, capsule, CD_R(0.02))};
+			for (int k = 0; k < 3; ++k)
+			{
+				bool ok = ms[k].pointCount == 0 ||
+						  (ms[k].normal.x == CD_R(0.0) && fabs((double)ms[k].normal.y - 1.0) <= 1e-6);
+				TEST_CHECKF(ok, "x %.4f segment %d shape %d: normal (%.9g %.9g)", x, i, k,
+							(double)ms[k].normal.x, (double)ms[k].normal.y);
+				for (int p = 0; p < ms[k].pointCount; ++p)
+				{
+					TEST_CHECKF(fabs((double)ms[k].points[p].separation + sink) <= TOL,
+								"x %.4f segment %d shape %d: separation %.9g, sunk %.3g", x, i, k,
+								(double)ms[k].points[p].separation, sink);
+				}
+				contacts += ms[k].pointCount;
+			}
+			boxPoints += ms[0].pointCount;
+
+			cd2Segment plain = {s.p1, s.p2};
+			cd2Manifold two = cd2CollidePolygonSegment(&box, plain, CD_R(0.02));
+			if (two.pointCount > 0 && fabs((double)two.normal.y) < 0.99)
+			{
+				++ghostsWithoutChain;
+			}
+		}
+		TEST_CHECKF(boxPoints >= 2, "x %.4f: the box gets %d points from the floor", x, boxPoints);
+	}
+	printf("chain: %d contacts, plain segments give %d ghost normals\n", contacts, ghostsWithoutChain);
+	TEST_CHECK(contacts > 2000 && ghostsWithoutChain > 10);
+
+	/* One-sided: a box below the floor gets nothing; a convex corner allows tilted normals. */
+	cd2ChainSegment s = FloorSegment(5);
+	cd2Polygon below = BoxPolygon(5.5, -0.49, 0.5, 0.5, 0);
+	TEST_CHECK(cd2CollideChainSegmentPolygon(&s, &below, CD_R(0.0)).pointCount == 0);
+	cd2ChainSegment corner = {V(6, 0), V(5, 0), V(4, 0), V(4, -1)}; /* drops at x = 4 */
+	cd2Circle ball = {V(3.7, 0.4), CD_R(0.55)};
+	cd2Manifold m = cd2CollideChainSegmentCircle(&corner, ball, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, -0.6, 0.8);
+	CheckPoint(&m, 0, 4 + 0.6 * 0.025, -0.8 * 0.025, -0.05);
+	/* past the next segment's normal at a 45-degree drop: that segment's business */
+	cd2ChainSegment slope = {V(6, 0), V(5, 0), V(4, 0), V(3, -1)};
+	ball.center = V(3.5, 0.1);
+	ball.radius = CD_R(0.6);
+	TEST_CHECK(cd2CollideChainSegmentCircle(&slope, ball, CD_R(0.0)).pointCount == 0);
+	cd2Segment twoSided = {slope.p1, slope.p2};
+	TEST_CHECK(cd2CollideCircleSegment(ball, twoSided, CD_R(0.0)).pointCount == 1);
+}
+
+int main(void)
+{
+	TEST_RUN(TestBoxes);
+	TEST_RUN(TestRoundedPolygons);
+	TEST_RUN(TestCircles);
+	TEST_RUN(TestCapsulesAndSegments);
+	TEST_RUN(TestRandomPairs);
+	TEST_RUN(TestSymmetryAndInvariance);
+	TEST_RUN(TestChainNoGhosts);
+	return TEST_SUMMARY();
+}
