@@ -320,6 +320,26 @@ static void TestCapsulesAndSegments(void)
 	CheckPoint(&m, 0, 1, -0.005, -0.01);
 }
 
+/* A triangle's vertex near the long edge of a thin triangle whose other edges wrap around it: A's
+ * max-separation edge is not at its closest vertex (A's separations are all negative), so the
+ * closest features must be searched beyond it. */
+static void TestWrappedVertex(void)
+{
+	cd2Vec pa[3] = {V(-0.228804588, -0.136747122), V(0.0212139077, 0.233639941),
+					V(-0.138902396, 0.286263257)};
+	cd2Vec pb[3] = {V(0.0100767612, -0.370180339), V(0.273660183, 1.59275758), V(0.0614802837, 1.22982275)};
+	cd2Polygon a, b;
+	TEST_CHECK(cd2MakePolygon(pa, 3, &a) == CD_OK && cd2MakePolygon(pb, 3, &b) == CD_OK);
+	cd2Shape sa = cd2MakePolygonShape(&a), sb = cd2MakePolygonShape(&b);
+	cd2ClosestPoints closest = cd2Distance(&sa, &sb);
+	TEST_CHECK(closest.distance > CD_R(0.005) && closest.distance < CD_R(0.01));
+	cd2Manifold m = cd2CollidePolygonPolygon(&a, &b, CD_R(0.02));
+	TEST_CHECK(m.pointCount >= 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), (double)closest.distance, TOL);
+	cd2Vec gap = cd2Normalize(cd2Sub(closest.pointB, closest.pointA));
+	CheckNormal(&m, (double)gap.x, (double)gap.y);
+}
+
 /* ---- random properties ------------------------------------------------------------------------ */
 
 static cd2Shape PointShape(cd2Vec p)
@@ -836,6 +856,7 @@ int main(void)
 	TEST_RUN(TestRoundedPolygons);
 	TEST_RUN(TestCircles);
 	TEST_RUN(TestCapsulesAndSegments);
+	TEST_RUN(TestWrappedVertex);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestSymmetryAndInvariance);
 	TEST_RUN(TestChainNoGhosts);

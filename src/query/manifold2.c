@@ -9,8 +9,9 @@
  *   reference edge's side lines and its points below the speculative distance are kept. When the
  *   cores are apart, the closest points of the two max-separation edges decide between a face
  *   contact (clip as above) and a vertex-vertex contact (one point, normal along the gap): the
- *   separation along a direction is unimodal around the closest direction, so the closest
- *   features of two disjoint convex cores lie on their max-separation edges.
+ *   separation along a direction is unimodal where it is positive, so a core whose max
+ *   separation is positive has its closest feature on its max-separation edge; the other core's
+ *   edges are all searched when its own max separation is not positive.
  * - chain segment: the two-sided segment's manifold, with its normal checked against the
  *   directions the chain allows (see cd2ChainSegment).
  * Points are reported midway between the surfaces; the normal points from A to B. */
@@ -369,6 +370,29 @@ static int FacingEdge(const Core* core, int edge, cd2Vec u)
 	return edge;
 }
 
+static cd2Segment EdgeSegment(const Core* core, int edge)
+{
+	cd2Segment segment = {core->vertices[edge], core->vertices[edge + 1 < core->count ? edge + 1 : 0]};
+	return segment;
+}
+
+/* The edge of `core` closest to the segment; pointA on the segment, pointB on that edge. */
+static cd2ClosestPoints ClosestEdge(cd2Segment segment, const Core* core, int* edge)
+{
+	cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(segment, EdgeSegment(core, 0));
+	*edge = 0;
+	for (int i = 1; i < core->count; ++i)
+	{
+		cd2ClosestPoints candidate = cd2ClosestPointsSegmentSegment(segment, EdgeSegment(core, i));
+		if (candidate.distance < best.distance)
+		{
+			best = candidate;
+			*edge = i;
+		}
+	}
+	return best;
+}
+
 static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
 {
 	cdReal total = a->radius + b->radius;
@@ -388,9 +412,24 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	 * segments are separated along their common direction, which is neither one's normal. */
 	if ((a->count == 2 && b->count == 2) || cdMax(separationA, separationB) > SEPARATED_TOLERANCE)
 	{
-		cd2Segment segmentA = {a->vertices[edgeA], a->vertices[edgeA + 1 < a->count ? edgeA + 1 : 0]};
-		cd2Segment segmentB = {b->vertices[edgeB], b->vertices[edgeB + 1 < b->count ? edgeB + 1 : 0]};
-		cd2ClosestPoints closest = cd2ClosestPointsSegmentSegment(segmentA, segmentB);
+		/* With both separations positive, each max-separation edge holds its core's closest
+		 * feature (the unimodality above). When only one is, the other core's edges are searched. */
+		cd2ClosestPoints closest;
+		if (separationA > CD_R(0.0) && separationB > CD_R(0.0))
+		{
+			closest = cd2ClosestPointsSegmentSegment(EdgeSegment(a, edgeA), EdgeSegment(b, edgeB));
+		}
+		else if (separationA >= separationB)
+		{
+			closest = ClosestEdge(EdgeSegment(a, edgeA), b, &edgeB);
+		}
+		else
+		{
+			closest = ClosestEdge(EdgeSegment(b, edgeB), a, &edgeA);
+			cd2Vec swap = closest.pointA;
+			closest.pointA = closest.pointB;
+			closest.pointB = swap;
+		}
 		if (closest.distance > SEPARATED_TOLERANCE)
 		{
 			if (closest.distance - total > speculativeDistance)
