@@ -40,6 +40,88 @@ static inline cd3Vec RandomUnit(TestRng* rng)
 	return cd3RotateVector(q, cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0)));
 }
 
+/* Hulls for random hull shapes: a fixed pool built once from its own seed (boxes, cylinders,
+ * cones and random clouds of 4 to 64 points), so that every program sees the same hulls. The
+ * pool and the scaled copies stay allocated until exit (reachable, so no leak is reported). */
+#define RANDOM_HULL_POOL 32
+
+static inline const cd3Hull* RandomHull(TestRng* rng)
+{
+	static cd3Hull* pool[RANDOM_HULL_POOL];
+	static bool built = false;
+	if (!built)
+	{
+		TestRng own = {0x5eed4a11u};
+		for (int i = 0; i < RANDOM_HULL_POOL; ++i)
+		{
+			cdResult result = CD_ERROR_DEGENERATE;
+			while (result != CD_OK)
+			{
+				double a = TestRngRange(&own, 0.15, 1.2), b = TestRngRange(&own, 0.15, 1.2);
+				double c = TestRngRange(&own, 0.15, 1.2);
+				int segments = 3 + TestRngInt(&own, 22);
+				switch (i % 4)
+				{
+					case 0:
+						result = cd3MakeBoxHull(cd3MakeVec((cdReal)a, (cdReal)b, (cdReal)c), &pool[i]);
+						break;
+					case 1:
+						result = cd3MakeCylinderHull((cdReal)a, (cdReal)b, segments, &pool[i]);
+						break;
+					case 2:
+						result = cd3MakeConeHull((cdReal)a, (cdReal)b, segments, &pool[i]);
+						break;
+					default:
+					{
+						cd3Vec points[64];
+						int count = 4 + TestRngInt(&own, 61);
+						bool onSphere = TestRngInt(&own, 2) == 0;
+						for (int k = 0; k < count; ++k)
+						{
+							cd3Vec p = cd3MakeVec((cdReal)TestRngRange(&own, -1.0, 1.0),
+												  (cdReal)TestRngRange(&own, -1.0, 1.0),
+												  (cdReal)TestRngRange(&own, -1.0, 1.0));
+							p = onSphere ? cd3Normalize(p) : p;
+							points[k] = cd3MulComponents(cd3MakeVec((cdReal)a, (cdReal)b, (cdReal)c), p);
+						}
+						result = cd3ComputeHull(points, count, &pool[i]);
+						break;
+					}
+				}
+			}
+		}
+		built = true;
+	}
+	return pool[TestRngInt(rng, RANDOM_HULL_POOL)];
+}
+
+/* The hull scaled by k about its origin: a new hull, kept until exit. */
+static inline const cd3Hull* ScaledHull(const cd3Hull* hull, cdReal k)
+{
+	static cd3Hull** kept = NULL;
+	static int keptCount = 0, keptCapacity = 0;
+	cd3Vec* points = (cd3Vec*)malloc((size_t)hull->vertexCount * sizeof(cd3Vec));
+	for (int i = 0; i < hull->vertexCount; ++i)
+	{
+		points[i] = cd3Scale(k, hull->vertices[i]);
+	}
+	cd3Hull* scaled = NULL;
+	cdResult result = cd3ComputeHull(points, hull->vertexCount, &scaled);
+	free(points);
+	if (result != CD_OK)
+	{
+		fprintf(stderr, "ScaledHull: scaling by %g failed: %s\n", (double)k, cdResultString(result));
+		return hull;
+	}
+	if (keptCount == keptCapacity)
+	{
+		keptCapacity = keptCapacity ? 2 * keptCapacity : 256;
+		kept = (cd3Hull**)realloc(kept, (size_t)keptCapacity * sizeof(cd3Hull*));
+	}
+	kept[keptCount++] = scaled;
+	return scaled;
+}
+
 /* A size in [0, upper), exactly zero one time in eight (degenerate shapes must work too). */
 static inline cdReal RandomSize(TestRng* rng, double upper)
 {
@@ -96,6 +178,11 @@ static inline cd3Shape RandomShape(TestRng* rng, cd3ShapeType type)
 			s.segment.p2 = cd3Add(center, half);
 			break;
 		}
+		case CD3_SHAPE_HULL:
+			s.hull.hull = RandomHull(rng);
+			s.hull.transform.p = center;
+			s.hull.transform.q = RandomQuat(rng);
+			break;
 		default:
 			break;
 	}
@@ -134,6 +221,10 @@ static inline cd3Shape TransformShape(const cd3Shape* shape, cd3Transform t)
 		case CD3_SHAPE_SEGMENT:
 			s.segment.p1 = cd3TransformPoint(t, shape->segment.p1);
 			s.segment.p2 = cd3TransformPoint(t, shape->segment.p2);
+			break;
+		case CD3_SHAPE_HULL:
+			s.hull.transform = cd3MulTransforms(t, shape->hull.transform);
+			s.hull.transform.q = cd3NormalizeQuat(s.hull.transform.q);
 			break;
 		default:
 			break;
@@ -176,6 +267,10 @@ static inline cd3Shape ScaleShape(const cd3Shape* shape, cdReal k)
 			s.segment.p1 = cd3Scale(k, shape->segment.p1);
 			s.segment.p2 = cd3Scale(k, shape->segment.p2);
 			break;
+		case CD3_SHAPE_HULL:
+			s.hull.hull = ScaledHull(shape->hull.hull, k);
+			s.hull.transform.p = cd3Scale(k, shape->hull.transform.p);
+			break;
 		default:
 			break;
 	}
@@ -184,7 +279,7 @@ static inline cd3Shape ScaleShape(const cd3Shape* shape, cdReal k)
 
 static inline const char* TypeName(cd3ShapeType type)
 {
-	static const char* names[] = {"sphere", "capsule", "aabb", "box", "triangle", "plane", "segment"};
+	static const char* names[] = {"sphere", "capsule", "aabb", "box", "triangle", "plane", "segment", "hull"};
 	return (int)type >= 0 && type < CD3_SHAPE_TYPE_COUNT ? names[type] : "?";
 }
 
@@ -229,6 +324,19 @@ static inline void PrintShape(const char* label, const cd3Shape* s)
 					(double)s->segment.p1.y, (double)s->segment.p1.z, (double)s->segment.p2.x,
 					(double)s->segment.p2.y, (double)s->segment.p2.z);
 			break;
+		case CD3_SHAPE_HULL:
+		{
+			cd3Transform t = s->hull.transform;
+			fprintf(stderr, "p (%.9g %.9g %.9g) q (%.9g %.9g %.9g %.9g), %d local vertices:\n", (double)t.p.x,
+					(double)t.p.y, (double)t.p.z, (double)t.q.x, (double)t.q.y, (double)t.q.z, (double)t.q.w,
+					s->hull.hull->vertexCount);
+			for (int i = 0; i < s->hull.hull->vertexCount; ++i)
+			{
+				cd3Vec v = s->hull.hull->vertices[i];
+				fprintf(stderr, "    (%.9g %.9g %.9g)\n", (double)v.x, (double)v.y, (double)v.z);
+			}
+			break;
+		}
 		default:
 			break;
 	}

@@ -5,6 +5,7 @@
 #include "random_shapes3.h"
 #include "test.h"
 
+#include <stddef.h>
 #include <string.h>
 
 /* ---- double-precision reference ------------------------------------------------------------ */
@@ -129,12 +130,13 @@ static bool SegmentPiercesTriangle(DVec p, DVec q, DVec a, DVec b, DVec c)
 }
 
 /* A finite shape as vertices, edges and triangles (its core) grown by a radius; solid boxes also
- * keep their frame for point containment. */
+ * keep their frame, and solid hulls their face planes, for point containment. */
+#define REF_MAX_VERTICES 64
+#define REF_MAX_EDGES (3 * REF_MAX_VERTICES)
+#define REF_MAX_TRIANGLES (2 * REF_MAX_VERTICES)
+
 typedef struct RefShape
 {
-	DVec vertices[8];
-	int edges[12][2];
-	int triangles[12][3];
 	int vertexCount, edgeCount, triangleCount;
 	double radius;
 	bool solidBox;
@@ -142,6 +144,14 @@ typedef struct RefShape
 	bool isPlane;
 	DVec normal;
 	double offset;
+	bool solidHull;
+	int planeCount;
+	/* Arrays last: only the fields above are cleared (the arrays are read up to their counts). */
+	DVec vertices[REF_MAX_VERTICES];
+	int edges[REF_MAX_EDGES][2];
+	int triangles[REF_MAX_TRIANGLES][3];
+	DVec planeNormals[REF_MAX_TRIANGLES];
+	double planeOffsets[REF_MAX_TRIANGLES];
 } RefShape;
 
 static const int g_boxEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
@@ -153,7 +163,7 @@ static const int g_boxTriangles[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7
 static RefShape MakeRef(const cd3Shape* shape)
 {
 	RefShape r;
-	memset(&r, 0, sizeof(r));
+	memset(&r, 0, offsetof(RefShape, vertices));
 	switch (shape->type)
 	{
 		case CD3_SHAPE_SPHERE:
@@ -233,6 +243,51 @@ static RefShape MakeRef(const cd3Shape* shape)
 			r.normal = DFrom(shape->plane.normal);
 			r.offset = (double)shape->plane.offset;
 			break;
+		case CD3_SHAPE_HULL:
+		{
+			/* World vertices in double; every edge once; each face as a fan of triangles, and its
+			 * plane through its first vertex. */
+			const cd3Hull* hull = shape->hull.hull;
+			cd3Transform t = shape->hull.transform;
+			if (hull->vertexCount > REF_MAX_VERTICES)
+			{
+				fprintf(stderr, "reference: hull of %d vertices is too large\n", hull->vertexCount);
+				break;
+			}
+			r.solidHull = true;
+			r.vertexCount = hull->vertexCount;
+			for (int i = 0; i < hull->vertexCount; ++i)
+			{
+				r.vertices[i] = DAdd(DRotate(t.q, DFrom(hull->vertices[i])), DFrom(t.p));
+			}
+			for (int e = 0; e < hull->edgeCount; ++e)
+			{
+				if (e < hull->edges[e].twin)
+				{
+					r.edges[r.edgeCount][0] = hull->edges[e].origin;
+					r.edges[r.edgeCount][1] = hull->edges[hull->edges[e].next].origin;
+					++r.edgeCount;
+				}
+			}
+			for (int f = 0; f < hull->faceCount; ++f)
+			{
+				int e0 = hull->faceEdges[f];
+				int first = hull->edges[e0].origin;
+				for (int e = hull->edges[e0].next; hull->edges[e].next != e0; e = hull->edges[e].next)
+				{
+					r.triangles[r.triangleCount][0] = first;
+					r.triangles[r.triangleCount][1] = hull->edges[e].origin;
+					r.triangles[r.triangleCount][2] = hull->edges[hull->edges[e].next].origin;
+					++r.triangleCount;
+				}
+				DVec n = DRotate(t.q, DFrom(hull->planes[f].normal));
+				n = DScale(1.0 / DLength(n), n);
+				r.planeNormals[r.planeCount] = n;
+				r.planeOffsets[r.planeCount] = DDot(n, r.vertices[first]);
+				++r.planeCount;
+			}
+			break;
+		}
 		default:
 			break;
 	}
@@ -241,6 +296,19 @@ static RefShape MakeRef(const cd3Shape* shape)
 
 static bool RefPointInBox(const RefShape* r, DVec p)
 {
+	if (r->solidHull)
+	{
+		/* Below every face plane; a relative slack for round-off, as for boxes. */
+		for (int i = 0; i < r->planeCount; ++i)
+		{
+			double h = DDot(r->planeNormals[i], p);
+			if (h - r->planeOffsets[i] > 1e-12 * (fabs(h) + fabs(r->planeOffsets[i])))
+			{
+				return false;
+			}
+		}
+		return true;
+	}
 	if (!r->solidBox)
 	{
 		return false;
@@ -512,7 +580,9 @@ static void TestRandomPairs(void)
 	{
 		for (int tb = ta; tb < CD3_SHAPE_TYPE_COUNT; ++tb)
 		{
-			for (int i = 0; i < pairsPerCombination; ++i)
+			/* The brute-force reference on hulls (up to 64 vertices) costs most: fewer pairs. */
+			bool hull = ta == CD3_SHAPE_HULL || tb == CD3_SHAPE_HULL;
+			for (int i = 0; i < (hull ? pairsPerCombination / 7 : pairsPerCombination); ++i)
 			{
 				cd3Shape a = RandomShape(&rng, (cd3ShapeType)ta);
 				cd3Shape b = RandomShape(&rng, (cd3ShapeType)tb);

@@ -2,6 +2,7 @@
  * merging, welding, degenerate and bad input, scales, and thousands of random clouds whose hulls
  * must validate, contain every input point and reach as far as the cloud in every direction. */
 #include "collide/geometry3.h"
+#include "collide/query3.h"
 #include "random_shapes3.h"
 #include "test.h"
 
@@ -543,6 +544,196 @@ static void TestNearlyCoplanar(void)
 	TEST_CHECKF(refused <= 2, "%d of 150 jittered boxes refused as degenerate", refused);
 }
 
+/* ---- hulls as shapes -------------------------------------------------------------------------- */
+
+/* Largest signed height of p over the world face planes, in double (> 0 outside). */
+static double HullHeight(const cd3Shape* s, cd3Vec p, int* face)
+{
+	const cd3Hull* hull = s->hull.hull;
+	cd3Vec local = cd3InvTransformPoint(s->hull.transform, p);
+	double worst = -INFINITY;
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Plane plane = hull->planes[f];
+		double h = (double)plane.normal.x * (double)local.x + (double)plane.normal.y * (double)local.y +
+				   (double)plane.normal.z * (double)local.z - (double)plane.offset;
+		if (h > worst)
+		{
+			worst = h;
+			if (face != NULL)
+			{
+				*face = f;
+			}
+		}
+	}
+	return worst;
+}
+
+static void TestHullShapeBasics(void)
+{
+	cd3Hull* box = NULL;
+	TEST_CHECK(cd3MakeBoxHull(V3(1, 1, 1), &box) == CD_OK);
+	if (box == NULL)
+	{
+		return;
+	}
+	TEST_CHECK(strcmp(cd3ShapeTypeName(CD3_SHAPE_HULL), "hull") == 0);
+	cd3Transform t = {V3(0, 2, 0), cd3MakeQuatAxisAngle(V3(0, 1, 0), CD_R(0.25) * CD_PI)};
+	cd3Shape shape = cd3MakeHullShape(box, t);
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_OK && cd3IsValidHullShape(shape.hull));
+	cd3Aabb aabb = cd3ComputeShapeAabb(&shape);
+	TEST_CHECK_NEAR(aabb.max.x, sqrt(2.0), 1e-5);
+	TEST_CHECK_NEAR(aabb.min.y, 1.0, 1e-6);
+	TEST_CHECK_NEAR(aabb.max.y, 3.0, 1e-6);
+
+	/* Resting on the ground y <= 1 (touching), then lifted off it. */
+	cd3Shape ground = cd3MakePlaneShape((cd3Plane){V3(0, 1, 0), CD_R(1.0)});
+	TEST_CHECK(cd3Overlap(&shape, &ground) && cd3Overlap(&ground, &shape));
+	ground.plane.offset = CD_R(0.99);
+	TEST_CHECK(!cd3Overlap(&shape, &ground) && !cd3Overlap(&ground, &shape));
+	TEST_CHECK_NEAR(cd3Distance(&shape, &ground).distance, 0.01, 1e-5);
+
+	/* Against a sphere beside a face, and a box hull beside an edge. */
+	cd3Shape ball = cd3MakeSphereShape((cd3Sphere){V3(0, 2, 3), CD_R(0.5)});
+	TEST_CHECK_NEAR(cd3Distance(&shape, &ball).distance, 3.0 - sqrt(2.0) - 0.5, 1e-5);
+	cd3Shape other = cd3MakeHullShape(box, (cd3Transform){V3(4, 2, 0), CD3_QUAT_IDENTITY});
+	TEST_CHECK_NEAR(cd3Distance(&shape, &other).distance, 3.0 - sqrt(2.0), 1e-5);
+	TEST_CHECK(!cd3Overlap(&shape, &other));
+	other.hull.transform.p.x = CD_R(1.0) + (cdReal)sqrt(2.0);
+	TEST_CHECK(cd3Overlap(&shape, &other) && cd3Overlap(&other, &shape));
+
+	/* Containment, closest point, ray. */
+	TEST_CHECK(cd3PointInShape(&shape, V3(0, 2, 0)) && cd3PointInShape(&shape, V3(1.4, 2, 0)));
+	TEST_CHECK(!cd3PointInShape(&shape, V3(1.42, 2, 0)));
+	cd3Vec q = cd3ClosestPointOnShape(&shape, V3(5, 2.5, 0));
+	TEST_CHECK_NEAR(q.x, sqrt(2.0), 1e-5);
+	TEST_CHECK_NEAR(q.y, 2.5, 1e-5);
+	TEST_CHECK(cd3VecEqual(cd3ClosestPointOnShape(&shape, V3(0.1, 2.2, 0.3)), V3(0.1, 2.2, 0.3)));
+	cd3RayHit hit = {CD_R(-1.0), CD3_VEC_ZERO, CD3_VEC_ZERO};
+	cd3Ray ray = {V3(0, 5, 0), V3(0, -10, 0)};
+	TEST_CHECK(cd3Raycast(&shape, ray, &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.2, 1e-6);
+	TEST_CHECK_NEAR(hit.normal.y, 1.0, 1e-6);
+	ray.origin = V3(0, 2, 0);
+	TEST_CHECK(cd3Raycast(&shape, ray, &hit) && hit.fraction == CD_R(0.0) && hit.normal.y == CD_R(1.0));
+	ray.origin = V3(3, 5, 0);
+	hit.fraction = CD_R(-1.0);
+	TEST_CHECK(!cd3Raycast(&shape, ray, &hit) && hit.fraction == CD_R(-1.0));
+
+	/* Validation of the shape. */
+	cd3Shape bad = shape;
+	bad.hull.hull = NULL;
+	TEST_CHECK(cd3ValidateShape(&bad) == CD_ERROR_INVALID_ARGUMENT);
+	bad = shape;
+	bad.hull.transform.q.w = CD_R(2.0);
+	TEST_CHECK(cd3ValidateShape(&bad) == CD_ERROR_NOT_NORMALIZED);
+	bad = shape;
+	bad.hull.transform.p.z = (cdReal)NAN;
+	TEST_CHECK(cd3ValidateShape(&bad) == CD_ERROR_NOT_FINITE);
+	cd3DestroyHull(box);
+}
+
+/* Random hull shapes: bounds are tight, containment and closest points agree with the face
+ * planes in double, ray hits lie on the surface and misses pass no point inside. */
+static void TestHullShapeProperties(void)
+{
+	TestRng rng = TestRngMake(0x4e1100bu);
+	int hits = 0, misses = 0, inside = 0, outside = 0;
+	for (int i = 0; i < 3000; ++i)
+	{
+		cd3Shape s = RandomShape(&rng, CD3_SHAPE_HULL);
+		const cd3Hull* hull = s.hull.hull;
+		if (i < 64)
+		{
+			TEST_CHECK(cd3ValidateShape(&s) == CD_OK);
+		}
+		cd3Aabb aabb = cd3ComputeShapeAabb(&s);
+		cd3Vec lo = aabb.max, hi = aabb.min;
+		for (int v = 0; v < hull->vertexCount; ++v)
+		{
+			cd3Vec w = cd3TransformPoint(s.hull.transform, hull->vertices[v]);
+			lo = cd3Min(lo, w);
+			hi = cd3Max(hi, w);
+		}
+		TEST_CHECKF(cd3VecDistance(lo, aabb.min) <= 1e-5 && cd3VecDistance(hi, aabb.max) <= 1e-5,
+					"bounds not tight");
+
+		cd3Vec p = cd3Add(s.hull.transform.p, RandomVec(&rng, 1.0));
+		double height = HullHeight(&s, p, NULL);
+		if (fabs(height) > 1e-4)
+		{
+			bool in = cd3PointInShape(&s, p);
+			TEST_CHECKF(in == (height < 0.0), "point in hull %d, height %.9g", (int)in, height);
+			inside += height < 0.0;
+			outside += height > 0.0;
+			cd3Vec q = cd3ClosestPointOnShape(&s, p);
+			if (height < 0.0)
+			{
+				TEST_CHECK(cd3VecEqual(p, q));
+			}
+			else
+			{
+				/* On the surface, no farther than the nearest plane allows, and closer than any
+				 * vertex. */
+				double onSurface = HullHeight(&s, q, NULL);
+				double d = (double)cd3VecDistance(p, q);
+				double nearestVertex = INFINITY;
+				for (int v = 0; v < hull->vertexCount; ++v)
+				{
+					double dv =
+						(double)cd3VecDistance(p, cd3TransformPoint(s.hull.transform, hull->vertices[v]));
+					nearestVertex = dv < nearestVertex ? dv : nearestVertex;
+				}
+				TEST_CHECKF(fabs(onSurface) <= 1e-5 && d >= height - 1e-5 && d <= nearestVertex + 1e-5,
+							"closest point: height %.3g, distance %.9g, plane bound %.9g, vertex bound %.9g",
+							onSurface, d, height, nearestVertex);
+			}
+		}
+
+		cd3Vec start = cd3Add(s.hull.transform.p, RandomVec(&rng, 2.5));
+		cd3Ray ray = {start,
+					  cd3Add(cd3Scale(CD_R(2.0), cd3Sub(s.hull.transform.p, start)), RandomVec(&rng, 2.0))};
+		cd3RayHit hit = {CD_R(-1.0), CD3_VEC_ZERO, CD3_VEC_ZERO};
+		if (cd3Raycast(&s, ray, &hit))
+		{
+			++hits;
+			int face = -1;
+			double h = HullHeight(&s, hit.point, &face);
+			bool ok = hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0) &&
+					  (hit.fraction == CD_R(0.0) ? h <= 1e-5 : fabs(h) <= 1e-5) &&
+					  fabs((double)cd3Length(hit.normal) - 1.0) <= 1e-5;
+			TEST_CHECKF(ok, "ray hit: fraction %.9g, height %.3g", (double)hit.fraction, h);
+			if (hit.fraction > CD_R(0.0))
+			{
+				/* Just before the hit the ray is outside, and the normal faces the ray. */
+				cd3Vec before = cd3MulAdd(ray.origin, hit.fraction - CD_R(1e-3), ray.translation);
+				TEST_CHECK(HullHeight(&s, before, NULL) > 0.0 &&
+						   cd3Dot(hit.normal, ray.translation) < CD_R(0.0));
+			}
+			else
+			{
+				TEST_CHECK(HullHeight(&s, ray.origin, NULL) <= 1e-5);
+			}
+		}
+		else
+		{
+			++misses;
+			for (int k = 0; k <= 64; ++k)
+			{
+				cd3Vec x = cd3MulAdd(ray.origin, (cdReal)k / CD_R(64.0), ray.translation);
+				double h = HullHeight(&s, x, NULL);
+				TEST_CHECKF(h > -1e-4, "missed ray passes %.3g inside", -h);
+				if (h <= -1e-4)
+				{
+					break;
+				}
+			}
+		}
+	}
+	TEST_CHECKF(hits > 300 && misses > 300 && inside > 300 && outside > 300,
+				"%d hits, %d misses, %d in, %d out", hits, misses, inside, outside);
+}
+
 /* ---- the validator rejects broken hulls ---------------------------------------------------------- */
 typedef struct MutableHull
 {
@@ -668,6 +859,8 @@ int main(void)
 	TEST_RUN(TestDegenerateAndBadInput);
 	TEST_RUN(TestScalesAndOffsets);
 	TEST_RUN(TestValidator);
+	TEST_RUN(TestHullShapeBasics);
+	TEST_RUN(TestHullShapeProperties);
 	TEST_RUN(TestOutOfMemory);
 	return TEST_SUMMARY();
 }

@@ -141,8 +141,17 @@ typedef enum cd3ShapeType
 	CD3_SHAPE_TRIANGLE,
 	CD3_SHAPE_PLANE,
 	CD3_SHAPE_SEGMENT,
+	CD3_SHAPE_HULL,
 	CD3_SHAPE_TYPE_COUNT
 } cd3ShapeType;
+
+/* A solid convex hull placed in the world: the points transform * x for x in *hull. The hull
+ * is not owned: it must outlive every shape that refers to it. */
+typedef struct cd3HullShape
+{
+	const cd3Hull* hull;
+	cd3Transform transform;
+} cd3HullShape;
 
 /* A tagged shape for the generic dispatchers (cd3Overlap, cd3Raycast, cd3Distance, ...). */
 typedef struct cd3Shape
@@ -157,6 +166,7 @@ typedef struct cd3Shape
 		cd3Triangle triangle;
 		cd3Plane plane;
 		cd3Segment segment;
+		cd3HullShape hull;
 	};
 } cd3Shape;
 
@@ -170,6 +180,7 @@ CD_API cd3Shape cd3MakeBoxShape(cd3Box box);
 CD_API cd3Shape cd3MakeTriangleShape(cd3Triangle triangle);
 CD_API cd3Shape cd3MakePlaneShape(cd3Plane plane);
 CD_API cd3Shape cd3MakeSegmentShape(cd3Segment segment);
+CD_API cd3Shape cd3MakeHullShape(const cd3Hull* hull, cd3Transform transform);
 
 /* ---- validators ----------------------------------------------------------------------------
  * Each rejects NaN/Inf anywhere, negative radii and sizes, non-unit quaternions and normals
@@ -183,9 +194,13 @@ CD_API bool cd3IsValidPlane(cd3Plane plane);
 CD_API bool cd3IsValidBox(cd3Box box);
 CD_API bool cd3IsValidRay(cd3Ray ray);
 CD_API bool cd3IsValidShape(const cd3Shape* shape);
+/* A non-NULL hull that passes cd3ValidateHull (O(V F): validate once, not per query), a finite
+ * transform with a unit quaternion. */
+CD_API bool cd3IsValidHullShape(cd3HullShape hull);
 
 /* Like cd3IsValidShape, with the reason: CD_ERROR_NOT_FINITE, CD_ERROR_NEGATIVE_SIZE,
- * CD_ERROR_NOT_NORMALIZED, CD_ERROR_DEGENERATE, CD_ERROR_INVALID_ARGUMENT (bad type). */
+ * CD_ERROR_NOT_NORMALIZED, CD_ERROR_DEGENERATE, CD_ERROR_INVALID_ARGUMENT (bad type, NULL hull,
+ * or a hull whose topology is broken). */
 CD_API cdResult cd3ValidateShape(const cd3Shape* shape);
 
 /* ---- bounds ------------------------------------------------------------------------------- */
@@ -197,6 +212,7 @@ CD_API cd3Aabb cd3ComputeSegmentAabb(cd3Segment segment);
 /* A half-space is unbounded: its box spans -CD_REAL_MAX..CD_REAL_MAX except along an
  * axis-aligned normal, where the solid side is bounded by the offset. */
 CD_API cd3Aabb cd3ComputePlaneAabb(cd3Plane plane);
+CD_API cd3Aabb cd3ComputeHullShapeAabb(cd3HullShape hull); /* tight: O(vertices) */
 CD_API cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape);
 
 /* ---- AABB helpers (inline: the broadphase lives on them) ---------------------------------- */

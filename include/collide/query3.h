@@ -49,6 +49,8 @@ CD_API bool cd3OverlapSphereAabb(cd3Sphere s, cd3Aabb b);
 CD_API bool cd3PointInCapsule(cd3Vec p, cd3Capsule c);
 CD_API bool cd3PointInBox(cd3Vec p, cd3Box b);
 CD_API bool cd3PointInPlane(cd3Vec p, cd3Plane plane);
+/* Below every face plane, within cd3GetHullTolerance (the hull's planes are rounded). */
+CD_API bool cd3PointInHull(cd3Vec p, cd3HullShape hull);
 
 /* ---- overlap, canonical order: Sphere, Capsule, Aabb, Box, Triangle, Plane, Segment -------- */
 CD_API bool cd3OverlapSphereCapsule(cd3Sphere s, cd3Capsule c);
@@ -92,6 +94,7 @@ CD_API cd3Vec cd3ClosestPointOnBox(cd3Box b, cd3Vec p);
 CD_API cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p);
 CD_API cd3Vec cd3ClosestPointOnPlane(cd3Plane plane, cd3Vec p);
 CD_API cd3Vec cd3ClosestPointOnSegment(cd3Segment g, cd3Vec p);
+CD_API cd3Vec cd3ClosestPointOnHull(cd3HullShape hull, cd3Vec p); /* GJK point against the hull */
 
 /* Closest points between two segments, and between a triangle and a segment. */
 CD_API cd3ClosestPoints cd3ClosestPointsSegmentSegment(cd3Segment a, cd3Segment b);
@@ -104,8 +107,12 @@ CD_API bool cd3RaycastAabb(cd3Aabb b, cd3Ray ray, cd3RayHit* hit);
 CD_API bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit);
 CD_API bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit);
 CD_API bool cd3RaycastPlane(cd3Plane plane, cd3Ray ray, cd3RayHit* hit);
+/* Cyrus-Beck clipping against the face planes, in the hull's frame. */
+CD_API bool cd3RaycastHull(cd3HullShape hull, cd3Ray ray, cd3RayHit* hit);
 
 /* ---- generic dispatchers on tagged shapes (either order) ---------------------------------- */
+/* Pairs with a hull are decided by GJK (distance within a few epsilons of the shapes' size
+ * counts as touching); hull against half-space by the hull's deepest vertex. */
 CD_API bool cd3Overlap(const cd3Shape* a, const cd3Shape* b);
 
 /* Point containment; for the non-solid triangle and segment: distance below the tolerance. */

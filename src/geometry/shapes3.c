@@ -19,6 +19,8 @@ const char* cd3ShapeTypeName(cd3ShapeType type)
 			return "plane";
 		case CD3_SHAPE_SEGMENT:
 			return "segment";
+		case CD3_SHAPE_HULL:
+			return "hull";
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -70,6 +72,15 @@ cd3Shape cd3MakePlaneShape(cd3Plane plane)
 	cd3Shape shape;
 	shape.type = CD3_SHAPE_PLANE;
 	shape.plane = plane;
+	return shape;
+}
+
+cd3Shape cd3MakeHullShape(const cd3Hull* hull, cd3Transform transform)
+{
+	cd3Shape shape;
+	shape.type = CD3_SHAPE_HULL;
+	shape.hull.hull = hull;
+	shape.hull.transform = transform;
 	return shape;
 }
 
@@ -229,6 +240,33 @@ bool cd3IsValidRay(cd3Ray ray)
 	return cd3IsValidVec(ray.origin) && cd3IsValidVec(ray.translation);
 }
 
+static cdResult ValidateHullShape(cd3HullShape hull)
+{
+	if (hull.hull == NULL)
+	{
+		return CD_ERROR_INVALID_ARGUMENT;
+	}
+	if (!cd3IsValidVec(hull.transform.p))
+	{
+		return CD_ERROR_NOT_FINITE;
+	}
+	cd3Quat q = hull.transform.q;
+	if (!cdIsValidReal(q.x) || !cdIsValidReal(q.y) || !cdIsValidReal(q.z) || !cdIsValidReal(q.w))
+	{
+		return CD_ERROR_NOT_FINITE;
+	}
+	if (!cd3IsValidQuat(q))
+	{
+		return CD_ERROR_NOT_NORMALIZED;
+	}
+	return cd3ValidateHull(hull.hull);
+}
+
+bool cd3IsValidHullShape(cd3HullShape hull)
+{
+	return ValidateHullShape(hull) == CD_OK;
+}
+
 cdResult cd3ValidateShape(const cd3Shape* shape)
 {
 	if (shape == NULL)
@@ -251,6 +289,8 @@ cdResult cd3ValidateShape(const cd3Shape* shape)
 			return ValidatePlane(shape->plane);
 		case CD3_SHAPE_SEGMENT:
 			return ValidateSegment(shape->segment);
+		case CD3_SHAPE_HULL:
+			return ValidateHullShape(shape->hull);
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -339,6 +379,22 @@ cd3Aabb cd3ComputePlaneAabb(cd3Plane plane)
 	return aabb;
 }
 
+/* Every vertex moved into place: exact, and cheap next to any query on the hull. */
+cd3Aabb cd3ComputeHullShapeAabb(cd3HullShape hull)
+{
+	CD_ASSERT(hull.hull != NULL);
+	cd3Mat33 m = cd3MakeMatFromQuat(hull.transform.q);
+	cd3Vec first = cd3Add(cd3MulMV(m, hull.hull->vertices[0]), hull.transform.p);
+	cd3Aabb aabb = {first, first};
+	for (int i = 1; i < hull.hull->vertexCount; ++i)
+	{
+		cd3Vec p = cd3Add(cd3MulMV(m, hull.hull->vertices[i]), hull.transform.p);
+		aabb.min = cd3Min(aabb.min, p);
+		aabb.max = cd3Max(aabb.max, p);
+	}
+	return aabb;
+}
+
 cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape)
 {
 	CD_ASSERT(shape != NULL);
@@ -358,6 +414,8 @@ cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape)
 			return cd3ComputePlaneAabb(shape->plane);
 		case CD3_SHAPE_SEGMENT:
 			return cd3ComputeSegmentAabb(shape->segment);
+		case CD3_SHAPE_HULL:
+			return cd3ComputeHullShapeAabb(shape->hull);
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}

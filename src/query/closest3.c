@@ -450,3 +450,43 @@ cd3ClosestPoints cd3ClosestPointsTriangleSegment(cd3Triangle t, cd3Segment g)
 	SnapTouching(&best, magnitude);
 	return best;
 }
+
+/* ---- hulls ----------------------------------------------------------------------------------- */
+
+/* Each plane's offset was rounded once and the test rounds again: 16 epsilons of the magnitudes
+ * compared, as in the other rotated tests (docs/API.md). */
+#define CD_HULL_PLANE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+bool cd3PointInHull(cd3Vec p, cd3HullShape shape)
+{
+	CD_ASSERT(shape.hull != NULL);
+	const cd3Hull* hull = shape.hull;
+	cd3Vec local = cd3InvTransformPoint(shape.transform, p);
+	cdReal magnitude = cdMax(cdAbs(local.x), cdMax(cdAbs(local.y), cdAbs(local.z)));
+	for (int i = 0; i < hull->faceCount; ++i)
+	{
+		cd3Plane plane = hull->planes[i];
+		cdReal tolerance = CD_HULL_PLANE_TOLERANCE * (cdAbs(plane.offset) + magnitude);
+		if (cd3Dot(plane.normal, local) - plane.offset > tolerance)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+cd3Vec cd3ClosestPointOnHull(cd3HullShape shape, cd3Vec p)
+{
+	if (cd3PointInHull(p, shape))
+	{
+		return p;
+	}
+	cd3Shape hull;
+	hull.type = CD3_SHAPE_HULL;
+	hull.hull = shape;
+	cd3Shape point;
+	point.type = CD3_SHAPE_SPHERE;
+	point.sphere.center = p;
+	point.sphere.radius = CD_R(0.0);
+	return cd3Distance(&hull, &point).pointA;
+}

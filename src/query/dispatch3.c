@@ -2,6 +2,8 @@
  * and closest point. */
 #include "collide/query3.h"
 
+#include <string.h>
+
 /* Relative tolerance of cd3PointInShape for the non-solid triangle and segment, the same as the
  * overlap tests use (see overlap3.c). */
 #define CD_POINT_IN_SHAPE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
@@ -125,6 +127,23 @@ static bool OverlapOrdered(const cd3Shape* a, const cd3Shape* b)
 	return false;
 }
 
+/* Relative gap below which GJK's distance counts as touching for pairs with a hull: the
+ * round-off of the support points, as in the other rotated tests (docs/API.md). */
+#define CD_HULL_OVERLAP_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+/* Pairs with a hull, in canonical order (the hull second; two hulls by their bytes, so that
+ * either argument order runs the very same computation). */
+static bool OverlapWithHull(const cd3Shape* a, const cd3Shape* b)
+{
+	cd3ClosestPoints r = cd3Distance(a, b);
+	if (r.distance <= CD_R(0.0))
+	{
+		return true;
+	}
+	cdReal magnitude = cdMax(MaxAbsComponent(r.pointA), MaxAbsComponent(r.pointB));
+	return r.distance <= CD_HULL_OVERLAP_TOLERANCE * magnitude;
+}
+
 bool cd3Overlap(const cd3Shape* a, const cd3Shape* b)
 {
 	CD_ASSERT(a != NULL && b != NULL);
@@ -133,6 +152,11 @@ bool cd3Overlap(const cd3Shape* a, const cd3Shape* b)
 	{
 		CD_ASSERT(false && "invalid shape type");
 		return false;
+	}
+	if (a->type == CD3_SHAPE_HULL || b->type == CD3_SHAPE_HULL)
+	{
+		bool inOrder = a->type != b->type ? a->type < b->type : memcmp(a, b, sizeof(cd3Shape)) <= 0;
+		return inOrder ? OverlapWithHull(a, b) : OverlapWithHull(b, a);
 	}
 	return a->type <= b->type ? OverlapOrdered(a, b) : OverlapOrdered(b, a);
 }
@@ -152,6 +176,8 @@ bool cd3PointInShape(const cd3Shape* shape, cd3Vec p)
 			return cd3PointInBox(p, shape->box);
 		case CD3_SHAPE_PLANE:
 			return cd3PointInPlane(p, shape->plane);
+		case CD3_SHAPE_HULL:
+			return cd3PointInHull(p, shape->hull);
 		case CD3_SHAPE_TRIANGLE:
 		{
 			/* Relative to p, so the tolerance follows the triangle's extent around p. */
@@ -197,6 +223,8 @@ cd3Vec cd3ClosestPointOnShape(const cd3Shape* shape, cd3Vec p)
 			return cd3ClosestPointOnPlane(shape->plane, p);
 		case CD3_SHAPE_SEGMENT:
 			return cd3ClosestPointOnSegment(shape->segment, p);
+		case CD3_SHAPE_HULL:
+			return cd3ClosestPointOnHull(shape->hull, p);
 		default:
 			break;
 	}

@@ -271,8 +271,8 @@ static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int 
 	GjkVertex vertex;
 	vertex.indexA = indexA;
 	vertex.indexB = indexB;
-	vertex.a = a->points[indexA];
-	vertex.b = b->points[indexB];
+	vertex.a = cd3CorePoint(a, indexA);
+	vertex.b = cd3CorePoint(b, indexB);
 	vertex.w = cd3Sub(vertex.a, vertex.b);
 	return vertex;
 }
@@ -378,7 +378,7 @@ static cd3ClosestPoints Touching(cd3Vec point)
 static cd3ClosestPoints DistancePlaneCore(cd3Plane plane, const cd3Core* core)
 {
 	cd3Vec n = plane.normal;
-	cd3Vec deepest = cd3MulSub(core->points[cd3CoreSupport(core, cd3Neg(n))], core->radius, n);
+	cd3Vec deepest = cd3MulSub(cd3CorePoint(core, cd3CoreSupport(core, cd3Neg(n))), core->radius, n);
 	cdReal separation = cd3Dot(n, deepest) - plane.offset;
 	if (separation <= CD_R(0.0))
 	{

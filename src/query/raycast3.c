@@ -414,6 +414,62 @@ static bool cd3RaycastSegment(cd3Segment g, cd3Ray ray, cd3RayHit* hit)
 	return cd3HitAtDistance(ray, best, length, normal, hit);
 }
 
+/* Cyrus-Beck: the ray in the hull's frame is clipped by each face's half-space; the last entry
+ * is the hit. The origin test is cd3PointInHull's, so a ray starting on the boundary (within the
+ * planes' round-off) hits at fraction 0 like every solid shape. */
+bool cd3RaycastHull(cd3HullShape shape, cd3Ray ray, cd3RayHit* hit)
+{
+	CD_ASSERT(shape.hull != NULL && hit != NULL);
+	if (cd3PointInHull(ray.origin, shape))
+	{
+		return cd3HitFromInside(ray, hit);
+	}
+	const cd3Hull* hull = shape.hull;
+	cd3Vec origin = cd3InvTransformPoint(shape.transform, ray.origin);
+	cd3Vec translation = cd3InvRotateVector(shape.transform.q, ray.translation);
+	cdReal enter = CD_R(0.0), leave = CD_R(1.0);
+	int enterFace = -1;
+	for (int i = 0; i < hull->faceCount; ++i)
+	{
+		cd3Plane plane = hull->planes[i];
+		cdReal inside = plane.offset - cd3Dot(plane.normal, origin); /* >= 0 below the plane */
+		cdReal speed = cd3Dot(plane.normal, translation);
+		if (speed == CD_R(0.0))
+		{
+			if (inside < CD_R(0.0))
+			{
+				return false; /* parallel to the face and outside it */
+			}
+			continue;
+		}
+		cdReal t = inside / speed;
+		if (speed < CD_R(0.0))
+		{
+			if (t > enter)
+			{
+				enter = t;
+				enterFace = i;
+			}
+		}
+		else if (t < leave)
+		{
+			leave = t;
+		}
+		if (enter > leave)
+		{
+			return false;
+		}
+	}
+	if (enterFace < 0)
+	{
+		return cd3HitFromInside(ray, hit); /* below every plane: inside after all */
+	}
+	hit->fraction = enter;
+	hit->point = cd3MulAdd(ray.origin, enter, ray.translation);
+	hit->normal = cd3RotateVector(shape.transform.q, hull->planes[enterFace].normal);
+	return true;
+}
+
 bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit)
 {
 	CD_ASSERT(shape != NULL && hit != NULL);
@@ -433,6 +489,8 @@ bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit)
 			return cd3RaycastPlane(shape->plane, ray, hit);
 		case CD3_SHAPE_SEGMENT:
 			return cd3RaycastSegment(shape->segment, ray, hit);
+		case CD3_SHAPE_HULL:
+			return cd3RaycastHull(shape->hull, ray, hit);
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}

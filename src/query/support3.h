@@ -1,6 +1,8 @@
-/* Internal: 3D shapes as GJK sees them. Every finite shape is the convex hull of at most eight
- * "core" points grown by a radius (a sphere is a point, a capsule a segment, a box its eight
- * corners). The half-space has no finite core and is handled separately by its users. */
+/* Internal: 3D shapes as GJK sees them. Every finite shape is the convex hull of "core" points
+ * grown by a radius (a sphere is a point, a capsule a segment, a box its eight corners). A
+ * convex hull's vertices (any number up to CD3_MAX_HULL_POINTS) stay in the hull's own frame:
+ * the support search rotates the direction instead of moving every vertex. The half-space has
+ * no finite core and is handled separately by its users. */
 #ifndef COLLIDE_SUPPORT3_H
 #define COLLIDE_SUPPORT3_H
 
@@ -13,6 +15,9 @@ typedef struct cd3Core
 	cd3Vec points[CD3_CORE_MAX_POINTS];
 	int count;
 	cdReal radius;
+	const cd3Vec* localPoints; /* a hull's vertices (count of them), or NULL */
+	cd3Mat33 rotation;		   /* world = rotation * local + translation, for localPoints */
+	cd3Vec translation;
 } cd3Core;
 
 /* Fills *core for every shape type except the half-space (returns false for it and for an
@@ -20,6 +25,7 @@ typedef struct cd3Core
 static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 {
 	core->radius = CD_R(0.0);
+	core->localPoints = NULL;
 	switch (shape->type)
 	{
 		case CD3_SHAPE_SPHERE:
@@ -75,15 +81,47 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 			core->points[1] = shape->segment.p2;
 			core->count = 2;
 			return true;
+		case CD3_SHAPE_HULL:
+			core->localPoints = shape->hull.hull->vertices;
+			core->count = shape->hull.hull->vertexCount;
+			core->rotation = cd3MakeMatFromQuat(shape->hull.transform.q);
+			core->translation = shape->hull.transform.p;
+			return true;
 		default:
 			core->count = 0;
 			return false;
 	}
 }
 
+/* Core point i in world space. */
+static inline cd3Vec cd3CorePoint(const cd3Core* core, int i)
+{
+	if (core->localPoints != NULL)
+	{
+		return cd3Add(cd3MulMV(core->rotation, core->localPoints[i]), core->translation);
+	}
+	return core->points[i];
+}
+
 /* Index of the core point farthest along `direction` (the first one on ties). */
 static inline int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
 {
+	if (core->localPoints != NULL)
+	{
+		cd3Vec local = cd3MulMTV(core->rotation, direction);
+		int best = 0;
+		cdReal bestValue = cd3Dot(core->localPoints[0], local);
+		for (int i = 1; i < core->count; ++i)
+		{
+			cdReal value = cd3Dot(core->localPoints[i], local);
+			if (value > bestValue)
+			{
+				best = i;
+				bestValue = value;
+			}
+		}
+		return best;
+	}
 	int best = 0;
 	cdReal bestValue = cd3Dot(core->points[0], direction);
 	for (int i = 1; i < core->count; ++i)
