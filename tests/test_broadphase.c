@@ -212,6 +212,11 @@ static void TestRandomOperations(void)
 			}
 		}
 	}
+	for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+	{
+		printf("%s: %s\n", cdBroadPhaseTypeName((cdBroadPhaseType)type),
+			   s_typesTested[0][type] && s_typesTested[1][type] ? "tested in 2D and 3D" : "not available");
+	}
 	TEST_CHECK(s_typesTested[0][CD_BROADPHASE_TREE] && s_typesTested[1][CD_BROADPHASE_TREE]);
 	TEST_CHECK(s_typesTested[0][CD_BROADPHASE_SAP] && s_typesTested[1][CD_BROADPHASE_SAP]);
 }

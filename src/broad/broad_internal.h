@@ -112,19 +112,11 @@ extern const cd3BroadBackend cd3BroadTreeBackend;
 extern const cd2BroadBackend cd2BroadSapBackend;
 extern const cd3BroadBackend cd3BroadSapBackend;
 
-/* The hash grid and the quadtree/octree live in their own files. Each announces itself with a
- * header that defines CD_BROAD_HAVE_GRID / CD_BROAD_HAVE_SPATIAL_TREE and declares
- * cd2BroadGridBackend, cd3BroadGridBackend / cd2BroadSpatialTreeBackend,
- * cd3BroadSpatialTreeBackend; until a header exists, creating that type returns
- * CD_ERROR_INVALID_ARGUMENT. (__has_include is C23 and supported by gcc, clang and MSVC.) */
-#if defined(__has_include)
-#if __has_include("broad/broad_grid.h")
+/* The hash grid and the quadtree/octree live in their own files; their headers define
+ * CD_BROAD_HAVE_GRID / CD_BROAD_HAVE_SPATIAL_TREE and declare cd2BroadGridBackend,
+ * cd3BroadGridBackend / cd2BroadSpatialTreeBackend, cd3BroadSpatialTreeBackend. */
 #include "broad/broad_grid.h"
-#endif
-#if __has_include("broad/broad_spatial.h")
 #include "broad/broad_spatial.h"
-#endif
-#endif
 
 /* ---- small shared helpers --------------------------------------------------------------------- */
 
