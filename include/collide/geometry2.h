@@ -197,6 +197,25 @@ static inline cd2Aabb cd2AabbInflate(cd2Aabb a, cdReal margin)
 	return b;
 }
 
+/* ---- mass properties (src/geometry/mass2.c) ------------------------------------------------
+ * Mass, centre of mass and rotational inertia about the centre of mass, for a uniform density
+ * (kg per square length unit). A segment has no area: mass 0 at its midpoint. */
+typedef struct cd2MassData
+{
+	cdReal mass;
+	cd2Vec center;
+	cdReal rotationalInertia; /* about center */
+} cd2MassData;
+
+CD_API cd2MassData cd2ComputeCircleMass(cd2Circle circle, cdReal density);
+/* A rectangle plus two half disks (each placed with the parallel-axis theorem). */
+CD_API cd2MassData cd2ComputeCapsuleMass(cd2Capsule capsule, cdReal density);
+CD_API cd2MassData cd2ComputeAabbMass(cd2Aabb aabb, cdReal density);
+CD_API cd2MassData cd2ComputeBoxMass(cd2Box box, cdReal density);
+/* Triangle fan; a rounding radius adds the exact rounded rim (edge strips and corner sectors). */
+CD_API cd2MassData cd2ComputePolygonMass(const cd2Polygon* polygon, cdReal density);
+CD_API cd2MassData cd2ComputeShapeMass(const cd2Shape* shape, cdReal density);
+
 #ifdef __cplusplus
 }
 #endif
