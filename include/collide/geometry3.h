@@ -215,6 +215,28 @@ CD_API cd3Aabb cd3ComputePlaneAabb(cd3Plane plane);
 CD_API cd3Aabb cd3ComputeHullShapeAabb(cd3HullShape hull); /* tight: O(vertices) */
 CD_API cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape);
 
+/* ---- mass properties ----------------------------------------------------------------------
+ * Mass, centre of mass and inertia tensor about the centre of mass in world axes, for a uniform
+ * density (kg per cubic length unit). Non-solid shapes (triangle, segment) and the unbounded
+ * half-space have no volume: mass 0, zero inertia, centre at their centroid (the origin for a
+ * half-space). */
+typedef struct cd3MassData
+{
+	cdReal mass;
+	cd3Vec center;
+	cd3Mat33 inertia; /* about center, world axes */
+} cd3MassData;
+
+CD_API cd3MassData cd3ComputeSphereMass(cd3Sphere sphere, cdReal density);
+/* A cylinder plus two hemispheres (each placed with the parallel-axis theorem). */
+CD_API cd3MassData cd3ComputeCapsuleMass(cd3Capsule capsule, cdReal density);
+CD_API cd3MassData cd3ComputeAabbMass(cd3Aabb aabb, cdReal density);
+CD_API cd3MassData cd3ComputeBoxMass(cd3Box box, cdReal density);
+/* Polyhedral mass properties: the hull as tetrahedra from an inner point, integrated exactly
+ * (in double). */
+CD_API cd3MassData cd3ComputeHullMass(cd3HullShape hull, cdReal density);
+CD_API cd3MassData cd3ComputeShapeMass(const cd3Shape* shape, cdReal density);
+
 /* ---- AABB helpers (inline: the broadphase lives on them) ---------------------------------- */
 static inline cd3Aabb cd3AabbUnion(cd3Aabb a, cd3Aabb b)
 {
