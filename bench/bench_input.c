@@ -115,6 +115,39 @@ static cd3Vec RandomHalfExtents3(BenchRng* rng)
 	return cd3MakeVec(R(Uniform(rng, 0.1, 1.0)), R(Uniform(rng, 0.1, 1.0)), R(Uniform(rng, 0.1, 1.0)));
 }
 
+/* Hulls are built once (cd3ComputeHull allocates) and shared by the shapes that place them. */
+#define BENCH_HULL_POOL 32
+static cd3Hull* g_hullPool[BENCH_HULL_POOL];
+
+static void CreateHullPool(void)
+{
+	BenchRng rng = {0x4855115EEDull};
+	for (int h = 0; h < BENCH_HULL_POOL; ++h)
+	{
+		cd3Vec points[32];
+		int count = UniformInt(&rng, 8, 32);
+		double radius = Uniform(&rng, 0.3, 1.0);
+		for (int i = 0; i < count; ++i)
+		{
+			points[i] = ToVec3(Scale3(radius, UnitVector3(&rng)));
+		}
+		if (cd3ComputeHull(points, count, &g_hullPool[h]) != CD_OK)
+		{
+			fprintf(stderr, "collide_bench: cd3ComputeHull failed on random points\n");
+			exit(1);
+		}
+	}
+}
+
+static void DestroyHullPool(void)
+{
+	for (int h = 0; h < BENCH_HULL_POOL; ++h)
+	{
+		cd3DestroyHull(g_hullPool[h]);
+		g_hullPool[h] = NULL;
+	}
+}
+
 static cd3Shape RandomShape3(BenchRng* rng, cd3ShapeType type, Dvec3 center)
 {
 	cd3Shape shape;
@@ -179,6 +212,11 @@ static cd3Shape RandomShape3(BenchRng* rng, cd3ShapeType type, Dvec3 center)
 			shape.segment.p2 = ToVec3(Add3(center, Scale3(-1.0, half)));
 			break;
 		}
+		case CD3_SHAPE_HULL:
+			shape.hull.hull = g_hullPool[UniformInt(rng, 0, BENCH_HULL_POOL - 1)];
+			shape.hull.transform.p = ToVec3(center);
+			shape.hull.transform.q = RandomQuat(rng);
+			break;
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -212,6 +250,9 @@ static void Pack3(void* destination, const cd3Shape* shapes, int count)
 				break;
 			case CD3_SHAPE_SEGMENT:
 				((cd3Segment*)destination)[i] = shapes[i].segment;
+				break;
+			case CD3_SHAPE_HULL:
+				((cd3HullShape*)destination)[i] = shapes[i].hull;
 				break;
 			case CD3_SHAPE_TYPE_COUNT:
 				break;
@@ -513,7 +554,9 @@ static void* AllocateOrDie(size_t size)
 BenchBatch* BenchCreateBatch(void)
 {
 	size_t n = BENCH_BATCH_MAX;
-	size_t largest = sizeof(cd2Polygon) > sizeof(cd3Box) ? sizeof(cd2Polygon) : sizeof(cd3Box);
+	size_t largest = sizeof(cd2Polygon);
+	largest = sizeof(cd3Box) > largest ? sizeof(cd3Box) : largest;
+	largest = sizeof(cd3HullShape) > largest ? sizeof(cd3HullShape) : largest;
 	BenchBatch* batch = AllocateOrDie(sizeof(BenchBatch));
 	batch->shapeA3 = AllocateOrDie(n * sizeof(cd3Shape));
 	batch->shapeB3 = AllocateOrDie(n * sizeof(cd3Shape));
@@ -528,6 +571,7 @@ BenchBatch* BenchCreateBatch(void)
 	batch->box2 = AllocateOrDie(n * sizeof(cd2Box));
 	batch->packA = AllocateOrDie(n * largest);
 	batch->packB = AllocateOrDie(n * largest);
+	CreateHullPool();
 	return batch;
 }
 
@@ -547,4 +591,5 @@ void BenchDestroyBatch(BenchBatch* batch)
 	free(batch->packA);
 	free(batch->packB);
 	free(batch);
+	DestroyHullPool();
 }

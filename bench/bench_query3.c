@@ -9,6 +9,7 @@
 #define TRIANGLE CD3_SHAPE_TRIANGLE
 #define PLANE CD3_SHAPE_PLANE
 #define SEGMENT CD3_SHAPE_SEGMENT
+#define HULL CD3_SHAPE_HULL
 
 /* X(function, type of A, type of B, shape enum of A, shape enum of B) */
 #define OVERLAP3_LIST(X)                                                                                     \
@@ -47,7 +48,8 @@
 	X(cd3PointInSphere, cd3Sphere, SPHERE)                                                                   \
 	X(cd3PointInCapsule, cd3Capsule, CAPSULE)                                                                \
 	X(cd3PointInBox, cd3Box, BOX)                                                                            \
-	X(cd3PointInPlane, cd3Plane, PLANE)
+	X(cd3PointInPlane, cd3Plane, PLANE)                                                                      \
+	X(cd3PointInHull, cd3HullShape, HULL)
 
 /* X(function, shape type, shape enum): cd3Vec function(shape, cd3Vec p) */
 #define CLOSEST3_LIST(X)                                                                                     \
@@ -57,7 +59,8 @@
 	X(cd3ClosestPointOnBox, cd3Box, BOX)                                                                     \
 	X(cd3ClosestPointOnTriangle, cd3Triangle, TRIANGLE)                                                      \
 	X(cd3ClosestPointOnPlane, cd3Plane, PLANE)                                                               \
-	X(cd3ClosestPointOnSegment, cd3Segment, SEGMENT)
+	X(cd3ClosestPointOnSegment, cd3Segment, SEGMENT)                                                         \
+	X(cd3ClosestPointOnHull, cd3HullShape, HULL)
 
 /* X(function, type of A, type of B, enum of A, enum of B): cd3ClosestPoints function(a, b) */
 #define CLOSEST_PAIR3_LIST(X)                                                                                \
@@ -71,7 +74,8 @@
 	X(cd3RaycastAabb, cd3Aabb, AABB)                                                                         \
 	X(cd3RaycastBox, cd3Box, BOX)                                                                            \
 	X(cd3RaycastTriangle, cd3Triangle, TRIANGLE)                                                             \
-	X(cd3RaycastPlane, cd3Plane, PLANE)
+	X(cd3RaycastPlane, cd3Plane, PLANE)                                                                      \
+	X(cd3RaycastHull, cd3HullShape, HULL)
 
 /* X(enum of A, name of A, enum of B, name of B): every unordered pair of shape types. */
 #define DISTANCE3_LIST(X)                                                                                    \
@@ -102,7 +106,15 @@
 	X(TRIANGLE, triangle, SEGMENT, segment)                                                                  \
 	X(PLANE, plane, PLANE, plane)                                                                            \
 	X(PLANE, plane, SEGMENT, segment)                                                                        \
-	X(SEGMENT, segment, SEGMENT, segment)
+	X(SEGMENT, segment, SEGMENT, segment)                                                                    \
+	X(SPHERE, sphere, HULL, hull)                                                                            \
+	X(CAPSULE, capsule, HULL, hull)                                                                          \
+	X(AABB, aabb, HULL, hull)                                                                                \
+	X(BOX, box, HULL, hull)                                                                                  \
+	X(TRIANGLE, triangle, HULL, hull)                                                                        \
+	X(PLANE, plane, HULL, hull)                                                                              \
+	X(SEGMENT, segment, HULL, hull)                                                                          \
+	X(HULL, hull, HULL, hull)
 
 /* ---- run functions -------------------------------------------------------------------------- */
 
