@@ -69,17 +69,20 @@ static bool SolveTriangle(const cd2Vec* w, cdReal* l)
 	cd2Vec e1 = cd2Sub(w[1], w[0]);
 	cd2Vec e2 = cd2Sub(w[2], w[0]);
 	cdReal area = cd2Cross(e1, e2);
-	if (cdAbs(area) > GJK_DEGENERATE_TOLERANCE * cd2Length(e1) * cd2Length(e2))
+	/* |area| > tolerance * |e1| |e2|, squared (the vertices are scaled to unit size). */
+	if (area * area >
+		GJK_DEGENERATE_TOLERANCE * GJK_DEGENERATE_TOLERANCE * cd2LengthSquared(e1) * cd2LengthSquared(e2))
 	{
-		cdReal l0 = cd2Cross(w[1], w[2]) / area;
-		cdReal l1 = cd2Cross(w[2], w[0]) / area;
-		cdReal l2 = cd2Cross(w[0], w[1]) / area;
-		if (l0 >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0))
+		/* The weights are the sub-areas over the area: inside when all share its sign. */
+		cdReal c0 = cd2Cross(w[1], w[2]);
+		cdReal c1 = cd2Cross(w[2], w[0]);
+		cdReal c2 = cd2Cross(w[0], w[1]);
+		if (c0 * area >= CD_R(0.0) && c1 * area >= CD_R(0.0) && c2 * area >= CD_R(0.0))
 		{
-			cdReal sum = l0 + l1 + l2;
-			l[0] = l0 / sum;
-			l[1] = l1 / sum;
-			l[2] = l2 / sum;
+			cdReal inverse = CD_R(1.0) / (c0 + c1 + c2);
+			l[0] = c0 * inverse;
+			l[1] = c1 * inverse;
+			l[2] = c2 * inverse;
 			return true;
 		}
 	}
@@ -117,7 +120,14 @@ static bool SolveSimplex(GjkSimplex* simplex)
 		w[i] = simplex->v[i].w;
 		largest = cdMax(largest, cdMax(cdAbs(w[i].x), cdAbs(w[i].y)));
 	}
-	if (largest > CD_R(0.0))
+	/* Within these bounds the products (up to the eighth power of a coordinate times the small
+	 * tolerances) neither overflow nor underflow: no scaling needed. */
+#if CD_DOUBLE
+	const cdReal safeLow = 0x1p-100, safeHigh = 0x1p100;
+#else
+	const cdReal safeLow = 0x1p-16f, safeHigh = 0x1p16f;
+#endif
+	if (largest > CD_R(0.0) && (largest < safeLow || largest > safeHigh))
 	{
 		cdReal inverse = CD_R(1.0) / largest;
 		for (int i = 0; i < simplex->count; ++i)
@@ -153,19 +163,26 @@ static bool SolveSimplex(GjkSimplex* simplex)
  * (Catto's trick): -v, a sum of large, cancelling terms when the shapes are large compared with
  * their distance, can point off by far more than its length error and make GJK stop at a tie
  * between support points. */
-static cd2Vec SearchDirection(const GjkSimplex* simplex, cd2Vec v)
+static cd2Vec SearchDirection(const GjkSimplex* simplex, cd2Vec v, cdReal vLengthSquared,
+							  cdReal* lengthSquared)
 {
-	if (simplex->count != 2)
+	if (simplex->count == 2)
 	{
-		return cd2Neg(v);
+		cd2Vec e = cd2Sub(simplex->v[1].w, simplex->v[0].w);
+		cd2Vec direction =
+			cd2Cross(e, cd2Neg(simplex->v[0].w)) > CD_R(0.0) ? cd2LeftPerp(e) : cd2RightPerp(e);
+		/* The construction fails only when the origin is (nearly) on the segment's line, where -v
+		 * is as good a direction as any. */
+		cdReal directionLengthSquared = cd2LengthSquared(direction);
+		if (directionLengthSquared > CD_R(0.0) && cdIsValidReal(directionLengthSquared) &&
+			cd2Dot(direction, v) < CD_R(0.0))
+		{
+			*lengthSquared = directionLengthSquared;
+			return direction;
+		}
 	}
-	cd2Vec e = cd2Sub(simplex->v[1].w, simplex->v[0].w);
-	cd2Vec direction = cd2Cross(e, cd2Neg(simplex->v[0].w)) > CD_R(0.0) ? cd2LeftPerp(e) : cd2RightPerp(e);
-	/* The construction fails only when the origin is (nearly) on the segment's line, where -v is
-	 * as good a direction as any. */
-	cdReal length = cd2Length(direction);
-	return length > CD_R(0.0) && cdIsValidReal(length) && cd2Dot(direction, v) < CD_R(0.0) ? direction
-																						   : cd2Neg(v);
+	*lengthSquared = vLengthSquared;
+	return cd2Neg(v);
 }
 
 static GjkVertex MakeVertex(const cd2Core* a, const cd2Core* b, int indexA, int indexB)
@@ -205,14 +222,14 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* 
 			break;
 		}
 		cd2Vec v = CD2_VEC_ZERO;
-		cdReal size = CD_R(0.0);
+		cdReal size = CD_R(0.0); /* sqrt(2) * the largest |coordinate|: at least the largest |w| */
 		for (int i = 0; i < simplex.count; ++i)
 		{
 			v = cd2MulAdd(v, simplex.lambda[i], simplex.v[i].w);
-			size = cdMax(size, cd2Length(simplex.v[i].w));
+			size = cdMax(size, cdMax(cdAbs(simplex.v[i].w.x), cdAbs(simplex.v[i].w.y)));
 		}
 		cdReal distanceSquared = cd2LengthSquared(v);
-		cdReal touch = GJK_TOUCH_TOLERANCE * size;
+		cdReal touch = GJK_TOUCH_TOLERANCE * CD_R(1.4142136) * size;
 		if (distanceSquared <= touch * touch)
 		{
 			*touching = true;
@@ -229,9 +246,11 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* 
 			break;
 		}
 
-		cd2Vec direction = SearchDirection(&simplex, v);
-		int indexA = cd2CoreSupport(a, direction);
-		int indexB = cd2CoreSupport(b, cd2Neg(direction));
+		cdReal directionLengthSquared;
+		cd2Vec direction = SearchDirection(&simplex, v, distanceSquared, &directionLengthSquared);
+		/* Start from the last support: the next one is usually a step or two away. */
+		int indexA = cd2CoreSupportFrom(a, direction, simplex.v[simplex.count - 1].indexA);
+		int indexB = cd2CoreSupportFrom(b, cd2Neg(direction), simplex.v[simplex.count - 1].indexB);
 		bool duplicate = false;
 		for (int i = 0; i < simplex.count; ++i)
 		{
@@ -243,9 +262,12 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* 
 		}
 		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
 		/* The support line bounds the distance from below: stop when it meets |v|. */
-		cdReal upper = cdSqrt(distanceSquared);
-		cdReal lower = -cd2Dot(direction, vertex.w) / cd2Length(direction);
-		if (upper - lower <= GJK_GAP_TOLERANCE * upper)
+		/* lower = -dot(direction, w) / |direction| >= (1 - tolerance) * upper, squared and in double
+		 * (no square root per iteration; the fourth powers overflow no float range). */
+		double lowerTimesLength = -(double)cd2Dot(direction, vertex.w);
+		double enough = (1.0 - (double)GJK_GAP_TOLERANCE) * (1.0 - (double)GJK_GAP_TOLERANCE) *
+						(double)distanceSquared * (double)directionLengthSquared;
+		if (lowerTimesLength > 0.0 && lowerTimesLength * lowerTimesLength >= enough)
 		{
 			break;
 		}

@@ -17,13 +17,12 @@
  * Points are reported midway between the surfaces; the normal points from A to B. */
 #include "collide/manifold2.h"
 
-/* Cores apart by more than this take the closest-feature path (and vertex-vertex normals are
- * then safe to normalize); below it the separating axis answer is used as is. */
-#define SEPARATED_TOLERANCE (CD_R(0.1) * CD_LINEAR_SLOP)
-
-/* B's reference edge is preferred over A's only when it separates by this much more: a stable
- * choice from frame to frame (the same rule as Box2D's). */
-#define FLIP_TOLERANCE (CD_R(0.1) * CD_LINEAR_SLOP)
+/* Cores apart by more than this many linear slops take the closest-feature path (and
+ * vertex-vertex normals are then safe to normalize); below it the separating axis answer is used
+ * as is. B's reference edge is preferred over A's only when it separates by this many slops more:
+ * a stable choice from frame to frame (the same rule as Box2D's). */
+#define SEPARATED_SLOPS CD_R(0.1)
+#define FLIP_SLOPS CD_R(0.1)
 
 /* Sine of the turn at a chain vertex below which it counts as flat. */
 #define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
@@ -33,10 +32,11 @@
 
 typedef struct Core
 {
-	cd2Vec vertices[CD2_MAX_POLYGON_VERTICES];
-	cd2Vec normals[CD2_MAX_POLYGON_VERTICES];
+	const cd2Vec* vertices;
+	const cd2Vec* normals;
 	int count; /* 1: point, 2: two-sided segment (normals[1] = -normals[0]), 3+: polygon */
 	cdReal radius;
+	cd2Vec storage[2 * 4]; /* vertices and normals of the cores that are not polygons */
 } Core;
 
 static cd2Manifold EmptyManifold(void)
@@ -59,71 +59,68 @@ static cd2Manifold Flipped(cd2Manifold manifold)
 	return manifold;
 }
 
-/* ---- cores ------------------------------------------------------------------------------------ */
+/* ---- cores (set up in place: a polygon's core points into the polygon) ------------------------ */
 
-static Core MakePointCore(cd2Vec point, cdReal radius)
+static void InitPointCore(Core* core, cd2Vec point, cdReal radius)
 {
-	Core core;
-	core.vertices[0] = point;
-	core.normals[0] = cd2MakeVec(CD_R(0.0), CD_R(1.0));
-	core.count = 1;
-	core.radius = radius;
-	return core;
+	core->storage[0] = point;
+	core->storage[1] = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	core->vertices = core->storage;
+	core->normals = core->storage + 1;
+	core->count = 1;
+	core->radius = radius;
 }
 
 /* A segment core; a zero-length (or underflowing) one is a point. */
-static Core MakeSegmentCore(cd2Vec p1, cd2Vec p2, cdReal radius)
+static void InitSegmentCore(Core* core, cd2Vec p1, cd2Vec p2, cdReal radius)
 {
 	cd2Vec direction = cd2Normalize(cd2Sub(p2, p1));
 	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
 	{
-		return MakePointCore(p1, radius);
+		InitPointCore(core, p1, radius);
+		return;
 	}
-	Core core;
-	core.vertices[0] = p1;
-	core.vertices[1] = p2;
-	core.normals[0] = cd2RightPerp(direction);
-	core.normals[1] = cd2LeftPerp(direction);
-	core.count = 2;
-	core.radius = radius;
-	return core;
+	core->storage[0] = p1;
+	core->storage[1] = p2;
+	core->storage[2] = cd2RightPerp(direction);
+	core->storage[3] = cd2LeftPerp(direction);
+	core->vertices = core->storage;
+	core->normals = core->storage + 2;
+	core->count = 2;
+	core->radius = radius;
 }
 
-static Core MakePolygonCore(const cd2Polygon* polygon)
+static void InitPolygonCore(Core* core, const cd2Polygon* polygon)
 {
 	CD_ASSERT(polygon != NULL && polygon->count >= 3 && polygon->count <= CD2_MAX_POLYGON_VERTICES);
-	Core core;
-	core.count = polygon->count;
-	for (int i = 0; i < core.count; ++i)
-	{
-		core.vertices[i] = polygon->vertices[i];
-		core.normals[i] = polygon->normals[i];
-	}
-	core.radius = polygon->radius;
-	return core;
+	core->vertices = polygon->vertices;
+	core->normals = polygon->normals;
+	core->count = polygon->count;
+	core->radius = polygon->radius;
 }
 
 /* An oriented rectangle center +- axisX * hx +- axisY * hy; zero sizes give a segment or a point. */
-static Core MakeRectangleCore(cd2Vec center, cd2Vec axisX, cd2Vec axisY, cdReal hx, cdReal hy)
+static void InitRectangleCore(Core* core, cd2Vec center, cd2Vec axisX, cd2Vec axisY, cdReal hx, cdReal hy)
 {
 	cd2Vec ex = cd2Scale(hx, axisX), ey = cd2Scale(hy, axisY);
 	if (hx == CD_R(0.0) || hy == CD_R(0.0))
 	{
 		cd2Vec e = hx == CD_R(0.0) ? ey : ex;
-		return MakeSegmentCore(cd2Sub(center, e), cd2Add(center, e), CD_R(0.0));
+		InitSegmentCore(core, cd2Sub(center, e), cd2Add(center, e), CD_R(0.0));
+		return;
 	}
-	Core core;
-	core.count = 4;
-	core.radius = CD_R(0.0);
-	core.vertices[0] = cd2Sub(cd2Sub(center, ex), ey);
-	core.vertices[1] = cd2Sub(cd2Add(center, ex), ey);
-	core.vertices[2] = cd2Add(cd2Add(center, ex), ey);
-	core.vertices[3] = cd2Add(cd2Sub(center, ex), ey);
-	core.normals[0] = cd2Neg(axisY);
-	core.normals[1] = axisX;
-	core.normals[2] = axisY;
-	core.normals[3] = cd2Neg(axisX);
-	return core;
+	core->storage[0] = cd2Sub(cd2Sub(center, ex), ey);
+	core->storage[1] = cd2Sub(cd2Add(center, ex), ey);
+	core->storage[2] = cd2Add(cd2Add(center, ex), ey);
+	core->storage[3] = cd2Add(cd2Sub(center, ex), ey);
+	core->storage[4] = cd2Neg(axisY);
+	core->storage[5] = axisX;
+	core->storage[6] = axisY;
+	core->storage[7] = cd2Neg(axisX);
+	core->vertices = core->storage;
+	core->normals = core->storage + 4;
+	core->count = 4;
+	core->radius = CD_R(0.0);
 }
 
 /* ---- point against core ----------------------------------------------------------------------- */
@@ -152,11 +149,12 @@ static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativ
 }
 
 /* The point core p against the segment or polygon core k; the normal points from k to p. */
-static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal speculativeDistance)
+static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal speculativeDistance, bool flip)
 {
 	cd2Manifold manifold = EmptyManifold();
 	cd2Vec center = p->vertices[0];
 	cdReal total = k->radius + p->radius;
+	cdReal limit = total + speculativeDistance;
 
 	/* The edge whose line the point stands farthest outside of; for a point outside the core the
 	 * closest feature is on it (or at one of its ends). */
@@ -167,33 +165,38 @@ static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal specula
 		cdReal s = cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i]));
 		if (s > edgeSeparation)
 		{
+			if (s > limit)
+			{
+				return manifold;
+			}
 			edgeSeparation = s;
 			edge = i;
 		}
 	}
-	if (edgeSeparation > total + speculativeDistance)
-	{
-		return manifold;
-	}
-	cd2Vec v1 = k->vertices[edge];
 	int next = edge + 1 < k->count ? edge + 1 : 0;
+	cd2Vec v1 = k->vertices[edge];
 	cd2Vec v2 = k->vertices[next];
-	cd2Segment segment = {v1, v2};
-	cd2Vec closest = cd2ClosestPointOnSegment(segment, center);
 	cd2Vec normal = k->normals[edge];
 	cdReal coreSeparation = edgeSeparation;
 	uint32_t id = (uint32_t)edge;
-	bool atVertex = cd2VecEqual(closest, v1) || cd2VecEqual(closest, v2);
-	/* Inside a polygon core the face is the answer; a segment core has no inside. */
-	if (atVertex && (edgeSeparation > CD_R(0.0) || k->count == 2))
+	/* Inside a polygon core the face is the answer; a segment core has no inside. Outside, the
+	 * point is in the region of v1 or v2 when it projects beyond that end of the edge. */
+	if (edgeSeparation > CD_R(0.0) || k->count == 2)
 	{
-		cdReal distance;
-		cd2Vec direction = cd2GetLengthAndNormalize(&distance, cd2Sub(center, closest));
-		if (direction.x != CD_R(0.0) || direction.y != CD_R(0.0))
+		cd2Vec e = cd2Sub(v2, v1);
+		int vertex = cd2Dot(cd2Sub(center, v1), e) <= CD_R(0.0)	  ? edge
+					 : cd2Dot(cd2Sub(center, v2), e) >= CD_R(0.0) ? next
+																  : -1;
+		if (vertex >= 0)
 		{
-			normal = direction;
-			coreSeparation = distance;
-			id = VERTEX_FEATURE | (uint32_t)(cd2VecEqual(closest, v1) ? edge : next);
+			cdReal distance;
+			cd2Vec direction = cd2GetLengthAndNormalize(&distance, cd2Sub(center, k->vertices[vertex]));
+			if (direction.x != CD_R(0.0) || direction.y != CD_R(0.0))
+			{
+				normal = direction;
+				coreSeparation = distance;
+				id = VERTEX_FEATURE | (uint32_t)vertex;
+			}
 		}
 	}
 	cdReal separation = coreSeparation - total;
@@ -201,7 +204,7 @@ static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal specula
 	{
 		return manifold;
 	}
-	manifold.normal = normal;
+	manifold.normal = flip ? cd2Neg(normal) : normal;
 	AddPoint(&manifold, cd2MulAdd(center, CD_R(0.5) * (k->radius - p->radius - coreSeparation), normal),
 			 separation, id);
 	return manifold;
@@ -210,7 +213,7 @@ static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal specula
 /* ---- core against core ------------------------------------------------------------------------ */
 
 /* The largest separation of b from a over a's edge normals, and its edge. */
-static cdReal MaxSeparation(const Core* a, const Core* b, int* edge)
+static cdReal MaxSeparation(const Core* a, const Core* b, int* edge, cdReal limit)
 {
 	cdReal best = -CD_REAL_MAX;
 	int bestEdge = 0;
@@ -219,7 +222,8 @@ static cdReal MaxSeparation(const Core* a, const Core* b, int* edge)
 		cd2Vec n = a->normals[i];
 		cd2Vec v = a->vertices[i];
 		cdReal lowest = CD_REAL_MAX;
-		for (int j = 0; j < b->count; ++j)
+		/* An edge whose running minimum falls to the best so far cannot win: stop early. */
+		for (int j = 0; j < b->count && lowest > best; ++j)
 		{
 			lowest = cdMin(lowest, cd2Dot(n, cd2Sub(b->vertices[j], v)));
 		}
@@ -227,6 +231,10 @@ static cdReal MaxSeparation(const Core* a, const Core* b, int* edge)
 		{
 			best = lowest;
 			bestEdge = i;
+			if (best > limit)
+			{
+				break; /* separated beyond the limit: the caller stops here */
+			}
 		}
 	}
 	*edge = bestEdge;
@@ -397,20 +405,23 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 {
 	cdReal total = a->radius + b->radius;
 	int edgeA, edgeB;
-	cdReal separationA = MaxSeparation(a, b, &edgeA);
-	if (separationA > total + speculativeDistance)
+	cdReal limit = total + speculativeDistance;
+	cdReal separationA = MaxSeparation(a, b, &edgeA, limit);
+	if (separationA > limit)
 	{
 		return EmptyManifold();
 	}
-	cdReal separationB = MaxSeparation(b, a, &edgeB);
-	if (separationB > total + speculativeDistance)
+	cdReal separationB = MaxSeparation(b, a, &edgeB, limit);
+	if (separationB > limit)
 	{
 		return EmptyManifold();
 	}
 
 	/* Two segments need the closest-feature path even when their normals see no gap: collinear
 	 * segments are separated along their common direction, which is neither one's normal. */
-	if ((a->count == 2 && b->count == 2) || cdMax(separationA, separationB) > SEPARATED_TOLERANCE)
+	cdReal slop = CD_LINEAR_SLOP;
+	cdReal separatedTolerance = SEPARATED_SLOPS * slop;
+	if ((a->count == 2 && b->count == 2) || cdMax(separationA, separationB) > separatedTolerance)
 	{
 		/* With both separations positive, each max-separation edge holds its core's closest
 		 * feature (the unimodality above). When only one is, the other core's edges are searched. */
@@ -430,7 +441,7 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			closest.pointA = closest.pointB;
 			closest.pointB = swap;
 		}
-		if (closest.distance > SEPARATED_TOLERANCE)
+		if (closest.distance > separatedTolerance)
 		{
 			if (closest.distance - total > speculativeDistance)
 			{
@@ -457,7 +468,7 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 		}
 	}
 
-	if (separationB > separationA + FLIP_TOLERANCE)
+	if (separationB > separationA + FLIP_SLOPS * slop)
 	{
 		return Clip(b, edgeB, a, true, speculativeDistance, true);
 	}
@@ -473,11 +484,11 @@ static cd2Manifold CollideAny(const Core* a, const Core* b, cdReal speculativeDi
 	}
 	if (a->count == 1)
 	{
-		return Flipped(CollideCorePoint(b, a, speculativeDistance));
+		return CollideCorePoint(b, a, speculativeDistance, true);
 	}
 	if (b->count == 1)
 	{
-		return CollideCorePoint(a, b, speculativeDistance);
+		return CollideCorePoint(a, b, speculativeDistance, false);
 	}
 	return CollideCores(a, b, speculativeDistance);
 }
@@ -486,61 +497,81 @@ static cd2Manifold CollideAny(const Core* a, const Core* b, cdReal speculativeDi
 
 cd2Manifold cd2CollideCircleCircle(cd2Circle a, cd2Circle b, cdReal speculativeDistance)
 {
-	Core coreA = MakePointCore(a.center, a.radius), coreB = MakePointCore(b.center, b.radius);
+	Core coreA, coreB;
+	InitPointCore(&coreA, a.center, a.radius);
+	InitPointCore(&coreB, b.center, b.radius);
 	return CollidePoints(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideCircleCapsule(cd2Circle a, cd2Capsule b, cdReal speculativeDistance)
 {
-	Core coreA = MakePointCore(a.center, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, b.radius);
+	Core coreA, coreB;
+	InitPointCore(&coreA, a.center, a.radius);
+	InitSegmentCore(&coreB, b.p1, b.p2, b.radius);
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideCirclePolygon(cd2Circle a, const cd2Polygon* b, cdReal speculativeDistance)
 {
-	Core coreA = MakePointCore(a.center, a.radius), coreB = MakePolygonCore(b);
+	Core coreA, coreB;
+	InitPointCore(&coreA, a.center, a.radius);
+	InitPolygonCore(&coreB, b);
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideCircleSegment(cd2Circle a, cd2Segment b, cdReal speculativeDistance)
 {
-	Core coreA = MakePointCore(a.center, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	Core coreA, coreB;
+	InitPointCore(&coreA, a.center, a.radius);
+	InitSegmentCore(&coreB, b.p1, b.p2, CD_R(0.0));
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideCapsuleCapsule(cd2Capsule a, cd2Capsule b, cdReal speculativeDistance)
 {
-	Core coreA = MakeSegmentCore(a.p1, a.p2, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, b.radius);
+	Core coreA, coreB;
+	InitSegmentCore(&coreA, a.p1, a.p2, a.radius);
+	InitSegmentCore(&coreB, b.p1, b.p2, b.radius);
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideCapsulePolygon(cd2Capsule a, const cd2Polygon* b, cdReal speculativeDistance)
 {
-	Core coreA = MakeSegmentCore(a.p1, a.p2, a.radius), coreB = MakePolygonCore(b);
+	Core coreA, coreB;
+	InitSegmentCore(&coreA, a.p1, a.p2, a.radius);
+	InitPolygonCore(&coreB, b);
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideCapsuleSegment(cd2Capsule a, cd2Segment b, cdReal speculativeDistance)
 {
-	Core coreA = MakeSegmentCore(a.p1, a.p2, a.radius), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	Core coreA, coreB;
+	InitSegmentCore(&coreA, a.p1, a.p2, a.radius);
+	InitSegmentCore(&coreB, b.p1, b.p2, CD_R(0.0));
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollidePolygonPolygon(const cd2Polygon* a, const cd2Polygon* b, cdReal speculativeDistance)
 {
-	Core coreA = MakePolygonCore(a), coreB = MakePolygonCore(b);
+	Core coreA, coreB;
+	InitPolygonCore(&coreA, a);
+	InitPolygonCore(&coreB, b);
 	return CollideCores(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollidePolygonSegment(const cd2Polygon* a, cd2Segment b, cdReal speculativeDistance)
 {
-	Core coreA = MakePolygonCore(a), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	Core coreA, coreB;
+	InitPolygonCore(&coreA, a);
+	InitSegmentCore(&coreB, b.p1, b.p2, CD_R(0.0));
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
 cd2Manifold cd2CollideSegmentSegment(cd2Segment a, cd2Segment b, cdReal speculativeDistance)
 {
-	Core coreA = MakeSegmentCore(a.p1, a.p2, CD_R(0.0)), coreB = MakeSegmentCore(b.p1, b.p2, CD_R(0.0));
+	Core coreA, coreB;
+	InitSegmentCore(&coreA, a.p1, a.p2, CD_R(0.0));
+	InitSegmentCore(&coreB, b.p1, b.p2, CD_R(0.0));
 	return CollideAny(&coreA, &coreB, speculativeDistance);
 }
 
@@ -556,7 +587,8 @@ static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape,
 								cdReal speculativeDistance)
 {
 	cd2Vec edge = cd2Sub(chain->p2, chain->p1);
-	Core segment = MakeSegmentCore(chain->p1, chain->p2, CD_R(0.0));
+	Core segment;
+	InitSegmentCore(&segment, chain->p1, chain->p2, CD_R(0.0));
 	if (segment.count != 2)
 	{
 		return EmptyManifold(); /* a zero-length chain segment has no side */
@@ -635,14 +667,16 @@ static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape,
 cd2Manifold cd2CollideChainSegmentCircle(const cd2ChainSegment* a, cd2Circle b, cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL);
-	Core core = MakePointCore(b.center, b.radius);
+	Core core;
+	InitPointCore(&core, b.center, b.radius);
 	return CollideChain(a, &core, b.center, speculativeDistance);
 }
 
 cd2Manifold cd2CollideChainSegmentCapsule(const cd2ChainSegment* a, cd2Capsule b, cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL);
-	Core core = MakeSegmentCore(b.p1, b.p2, b.radius);
+	Core core;
+	InitSegmentCore(&core, b.p1, b.p2, b.radius);
 	return CollideChain(a, &core, cd2Lerp(b.p1, b.p2, CD_R(0.5)), speculativeDistance);
 }
 
@@ -650,7 +684,8 @@ cd2Manifold cd2CollideChainSegmentPolygon(const cd2ChainSegment* a, const cd2Pol
 										  cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
-	Core core = MakePolygonCore(b);
+	Core core;
+	InitPolygonCore(&core, b);
 	return CollideChain(a, &core, b->centroid, speculativeDistance);
 }
 
@@ -674,30 +709,36 @@ static int CanonicalRank(cd2ShapeType type)
 	}
 }
 
-static Core MakeShapeCore(const cd2Shape* shape)
+static void InitShapeCore(Core* core, const cd2Shape* shape)
 {
 	switch (shape->type)
 	{
 		case CD2_SHAPE_CIRCLE:
-			return MakePointCore(shape->circle.center, shape->circle.radius);
+			InitPointCore(core, shape->circle.center, shape->circle.radius);
+			break;
 		case CD2_SHAPE_CAPSULE:
-			return MakeSegmentCore(shape->capsule.p1, shape->capsule.p2, shape->capsule.radius);
+			InitSegmentCore(core, shape->capsule.p1, shape->capsule.p2, shape->capsule.radius);
+			break;
 		case CD2_SHAPE_AABB:
-			return MakeRectangleCore(cd2AabbCenter(shape->aabb), cd2MakeVec(CD_R(1.0), CD_R(0.0)),
-									 cd2MakeVec(CD_R(0.0), CD_R(1.0)),
-									 CD_R(0.5) * (shape->aabb.max.x - shape->aabb.min.x),
-									 CD_R(0.5) * (shape->aabb.max.y - shape->aabb.min.y));
+			InitRectangleCore(core, cd2AabbCenter(shape->aabb), cd2MakeVec(CD_R(1.0), CD_R(0.0)),
+							  cd2MakeVec(CD_R(0.0), CD_R(1.0)),
+							  CD_R(0.5) * (shape->aabb.max.x - shape->aabb.min.x),
+							  CD_R(0.5) * (shape->aabb.max.y - shape->aabb.min.y));
+			break;
 		case CD2_SHAPE_BOX:
 		{
 			/* Normalized because validators accept rotations slightly off unit length. */
 			cd2Rot q = cd2NormalizeRot(shape->box.rotation);
-			return MakeRectangleCore(shape->box.center, cd2MakeVec(q.c, q.s), cd2MakeVec(-q.s, q.c),
-									 shape->box.halfExtents.x, shape->box.halfExtents.y);
+			InitRectangleCore(core, shape->box.center, cd2MakeVec(q.c, q.s), cd2MakeVec(-q.s, q.c),
+							  shape->box.halfExtents.x, shape->box.halfExtents.y);
+			break;
 		}
 		case CD2_SHAPE_POLYGON:
-			return MakePolygonCore(&shape->polygon);
+			InitPolygonCore(core, &shape->polygon);
+			break;
 		default:
-			return MakeSegmentCore(shape->segment.p1, shape->segment.p2, CD_R(0.0));
+			InitSegmentCore(core, shape->segment.p1, shape->segment.p2, CD_R(0.0));
+			break;
 	}
 }
 
@@ -711,7 +752,9 @@ cd2Manifold cd2Collide(const cd2Shape* a, const cd2Shape* b, cdReal speculativeD
 		a = b;
 		b = t;
 	}
-	Core coreA = MakeShapeCore(a), coreB = MakeShapeCore(b);
+	Core coreA, coreB;
+	InitShapeCore(&coreA, a);
+	InitShapeCore(&coreB, b);
 	cd2Manifold manifold = CollideAny(&coreA, &coreB, speculativeDistance);
 	return swap ? Flipped(manifold) : manifold;
 }

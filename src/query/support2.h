@@ -10,36 +10,40 @@
 
 typedef struct cd2Core
 {
-	cd2Vec points[CD2_CORE_MAX_POINTS];
+	const cd2Vec* points; /* a polygon's own vertices, or storage */
+	cd2Vec storage[4];
 	int count;
 	cdReal radius;
 } cd2Core;
 
-/* Fills *core; returns false for an unknown type or an empty polygon. */
+/* Fills *core (pointing into the shape for a polygon: the shape must outlive it); returns false
+ * for an unknown type or an empty polygon. */
 static inline bool cd2MakeCore(const cd2Shape* shape, cd2Core* core)
 {
 	core->radius = CD_R(0.0);
 	core->count = 0;
+	core->points = core->storage;
+	cd2Vec* storage = core->storage;
 	switch (shape->type)
 	{
 		case CD2_SHAPE_CIRCLE:
-			core->points[0] = shape->circle.center;
+			storage[0] = shape->circle.center;
 			core->count = 1;
 			core->radius = shape->circle.radius;
 			return true;
 		case CD2_SHAPE_CAPSULE:
-			core->points[0] = shape->capsule.p1;
-			core->points[1] = shape->capsule.p2;
+			storage[0] = shape->capsule.p1;
+			storage[1] = shape->capsule.p2;
 			core->count = 2;
 			core->radius = shape->capsule.radius;
 			return true;
 		case CD2_SHAPE_AABB:
 		{
 			cd2Vec lo = shape->aabb.min, hi = shape->aabb.max;
-			core->points[0] = lo;
-			core->points[1] = cd2MakeVec(hi.x, lo.y);
-			core->points[2] = hi;
-			core->points[3] = cd2MakeVec(lo.x, hi.y);
+			storage[0] = lo;
+			storage[1] = cd2MakeVec(hi.x, lo.y);
+			storage[2] = hi;
+			storage[3] = cd2MakeVec(lo.x, hi.y);
 			core->count = 4;
 			return true;
 		}
@@ -48,27 +52,24 @@ static inline bool cd2MakeCore(const cd2Shape* shape, cd2Core* core)
 			const cd2Box* box = &shape->box;
 			cd2Vec axisX = cd2RotateVector(box->rotation, cd2MakeVec(box->halfExtents.x, CD_R(0.0)));
 			cd2Vec axisY = cd2RotateVector(box->rotation, cd2MakeVec(CD_R(0.0), box->halfExtents.y));
-			core->points[0] = cd2Sub(cd2Sub(box->center, axisX), axisY);
-			core->points[1] = cd2Sub(cd2Add(box->center, axisX), axisY);
-			core->points[2] = cd2Add(cd2Add(box->center, axisX), axisY);
-			core->points[3] = cd2Add(cd2Sub(box->center, axisX), axisY);
+			storage[0] = cd2Sub(cd2Sub(box->center, axisX), axisY);
+			storage[1] = cd2Sub(cd2Add(box->center, axisX), axisY);
+			storage[2] = cd2Add(cd2Add(box->center, axisX), axisY);
+			storage[3] = cd2Add(cd2Sub(box->center, axisX), axisY);
 			core->count = 4;
 			return true;
 		}
 		case CD2_SHAPE_POLYGON:
 		{
 			int count = cdMinInt(shape->polygon.count, CD2_CORE_MAX_POINTS);
-			for (int i = 0; i < count; ++i)
-			{
-				core->points[i] = shape->polygon.vertices[i];
-			}
+			core->points = shape->polygon.vertices;
 			core->count = count;
 			core->radius = shape->polygon.radius;
 			return count > 0;
 		}
 		case CD2_SHAPE_SEGMENT:
-			core->points[0] = shape->segment.p1;
-			core->points[1] = shape->segment.p2;
+			storage[0] = shape->segment.p1;
+			storage[1] = shape->segment.p2;
 			core->count = 2;
 			return true;
 		default:
@@ -88,6 +89,44 @@ static inline int cd2CoreSupport(const cd2Core* core, cd2Vec direction)
 		{
 			best = i;
 			bestValue = value;
+		}
+	}
+	return best;
+}
+
+/* Support by hill climbing from `start` along the counter-clockwise ring of core points: on a
+ * convex ring the projections rise to one maximum (plateaus only at an edge perpendicular to the
+ * direction, which is the top or the bottom), so a vertex neither of whose neighbours projects
+ * farther is the support. Faster than the scan for larger rings when the start is close, as in
+ * GJK where the previous support is. Small rings are scanned. */
+static inline int cd2CoreSupportFrom(const cd2Core* core, cd2Vec direction, int start)
+{
+	int count = core->count;
+	if (count < 6)
+	{
+		return cd2CoreSupport(core, direction);
+	}
+	int best = start;
+	cdReal bestValue = cd2Dot(core->points[best], direction);
+	for (int step = 0; step < count; ++step)
+	{
+		int next = best + 1 < count ? best + 1 : 0;
+		int previous = best > 0 ? best - 1 : count - 1;
+		cdReal nextValue = cd2Dot(core->points[next], direction);
+		cdReal previousValue = cd2Dot(core->points[previous], direction);
+		if (nextValue > bestValue && nextValue >= previousValue)
+		{
+			best = next;
+			bestValue = nextValue;
+		}
+		else if (previousValue > bestValue)
+		{
+			best = previous;
+			bestValue = previousValue;
+		}
+		else
+		{
+			break;
 		}
 	}
 	return best;
