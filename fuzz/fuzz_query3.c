@@ -1,5 +1,6 @@
-/* libFuzzer target for the 3D queries. The input decodes into two shapes of any type, a point and
- * a ray (fuzz_common.h). The validators see the raw shapes (NaN, infinities, negative sizes and
+/* libFuzzer target for the 3D queries. The input decodes into two shapes of any type (hulls
+ * through cd3ComputeHull from 4 to 12 decoded points, placed by a decoded transform), a point
+ * and a ray (fuzz_common.h). The validators see the raw shapes (NaN, infinities, negative sizes and
  * all) and must agree with each other; the queries see the copies clamped into the documented
  * range (sizes made non-negative, quaternions and normals normalized) that the validator accepts,
  * plus zero-area triangles, which the validator rejects but the queries must still handle.
@@ -20,15 +21,42 @@ static struct
 	cd3Ray ray;
 } s_case;
 
+/* Hulls of the two shapes (built per input from 4 to 12 decoded points, freed at its end). */
+enum
+{
+	FUZZ_MAX_HULL_POINTS = 12
+};
+static struct
+{
+	cd3Hull* hull;
+	cd3Vec points[FUZZ_MAX_HULL_POINTS];
+	int count;
+} s_hulls[2];
+
+/* The reals of a shape, in memory order: for a hull, those of its transform (p, then q). */
 static int RealCount(cd3ShapeType type)
 {
-	static const int counts[CD3_SHAPE_TYPE_COUNT] = {4, 7, 6, 10, 9, 4, 6};
+	static const int counts[] = {4, 7, 6, 10, 9, 4, 6, 7};
+	_Static_assert(sizeof counts / sizeof counts[0] == CD3_SHAPE_TYPE_COUNT, "one count per shape type");
 	return (unsigned)type < (unsigned)CD3_SHAPE_TYPE_COUNT ? counts[type] : 0;
+}
+
+static const cdReal* Reals(const cd3Shape* s)
+{
+	return s->type == CD3_SHAPE_HULL ? &s->hull.transform.p.x : &s->sphere.center.x;
 }
 
 static void PrintShape(const char* label, const cd3Shape* s)
 {
-	FuzzPrintReals(label, cd3ShapeTypeName(s->type), (const cdReal*)&s->sphere, RealCount(s->type));
+	FuzzPrintReals(label, cd3ShapeTypeName(s->type), Reals(s), RealCount(s->type));
+	for (int i = 0; i < 2 && s->type == CD3_SHAPE_HULL; ++i)
+	{
+		if (s->hull.hull != NULL && s->hull.hull == s_hulls[i].hull)
+		{
+			FuzzPrintReals("  hull of the points", "(x y z ...)", &s_hulls[i].points[0].x,
+						   3 * s_hulls[i].count);
+		}
+	}
 }
 
 /* Reports a failed check (named, so that FUZZ_SKIP can pass over it) and aborts. */
@@ -69,15 +97,54 @@ static cd3Vec ClampSizes(cd3Vec v)
 	return cd3MakeVec(FuzzClampSize(v.x), FuzzClampSize(v.y), FuzzClampSize(v.z));
 }
 
+/* The hull of 4 to 12 decoded points (clamped into the range), or NULL when cd3ComputeHull
+ * refuses them. The raw points (NaN and all) go to cd3ComputeHull first, which must refuse any
+ * non-finite one. */
+static cd3Hull* DecodeHull(FuzzReader* r, int slot)
+{
+	int count = 4 + FuzzByte(r) % (FUZZ_MAX_HULL_POINTS - 3);
+	cd3Vec raw[FUZZ_MAX_HULL_POINTS];
+	bool finite = true;
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal x = FuzzRawReal(r), y = FuzzRawReal(r), z = FuzzRawReal(r);
+		raw[i] = cd3MakeVec(x, y, z);
+		finite = finite && cd3IsValidVec(raw[i]);
+		s_hulls[slot].points[i] = cd3MakeVec(FuzzClampReal(x), FuzzClampReal(y), FuzzClampReal(z));
+	}
+	s_hulls[slot].count = count;
+	cd3Hull* hull = NULL;
+	cdResult result = cd3ComputeHull(raw, count, &hull);
+	if ((result == CD_OK) != (hull != NULL) || (result == CD_OK && !finite))
+	{
+		Fail("validators", "cd3ComputeHull on raw points: %s, hull %p", cdResultString(result),
+			 (const void*)hull);
+	}
+	cd3DestroyHull(hull);
+	hull = NULL;
+	result = cd3ComputeHull(s_hulls[slot].points, count, &hull);
+	if ((result == CD_OK) != (hull != NULL) || (result == CD_OK && cd3ValidateHull(hull) != CD_OK))
+	{
+		Fail("validators", "cd3ComputeHull: %s, but the hull is %s", cdResultString(result),
+			 hull == NULL ? "NULL" : "invalid");
+	}
+	s_hulls[slot].hull = hull;
+	return hull;
+}
+
 /* Reads one shape as written (raw) and its usable copy (clean). */
-static void DecodeShape(FuzzReader* r, cd3Shape* raw, cd3Shape* clean)
+static void DecodeShape(FuzzReader* r, int slot, cd3Shape* raw, cd3Shape* clean)
 {
 	memset(raw, 0, sizeof *raw);
 	raw->type = (cd3ShapeType)(FuzzByte(r) % CD3_SHAPE_TYPE_COUNT);
-	cdReal* values = (cdReal*)&raw->sphere;
+	cdReal* values = (cdReal*)Reals(raw);
 	for (int i = 0; i < RealCount(raw->type); ++i)
 	{
 		values[i] = FuzzRawReal(r);
+	}
+	if (raw->type == CD3_SHAPE_HULL)
+	{
+		raw->hull.hull = DecodeHull(r, slot);
 	}
 	*clean = *raw;
 	switch (raw->type)
@@ -120,6 +187,14 @@ static void DecodeShape(FuzzReader* r, cd3Shape* raw, cd3Shape* clean)
 			clean->plane.offset = FuzzClampReal(raw->plane.offset);
 			break;
 		}
+		case CD3_SHAPE_HULL:
+		{
+			cd3Quat q = raw->hull.transform.q;
+			clean->hull.transform.p = ClampVec(raw->hull.transform.p);
+			clean->hull.transform.q = cd3NormalizeQuat(
+				cd3MakeQuat(FuzzClampReal(q.x), FuzzClampReal(q.y), FuzzClampReal(q.z), FuzzClampReal(q.w)));
+			break;
+		}
 		default:
 			clean->segment.p1 = ClampVec(raw->segment.p1);
 			clean->segment.p2 = ClampVec(raw->segment.p2);
@@ -154,10 +229,18 @@ static double ShapeScale(const cd3Shape* s)
 			return VecMaxAbs(VecMaxAbs(0.0, s->box.center), s->box.halfExtents);
 		case CD3_SHAPE_PLANE:
 			return fabs((double)s->plane.offset);
+		case CD3_SHAPE_HULL:
+		{
+			/* Every vertex lies within |p| + the largest local coordinate (a rotation keeps lengths). */
+			double local = s->hull.hull == NULL ? 0.0
+												: VecMaxAbs(VecMaxAbs(0.0, s->hull.hull->bounds.min),
+															s->hull.hull->bounds.max);
+			return VecMaxAbs(0.0, s->hull.transform.p) + sqrt(3.0) * local;
+		}
 		default:
 		{
 			double m = 0.0;
-			const cdReal* values = (const cdReal*)&s->sphere;
+			const cdReal* values = Reals(s);
 			for (int i = 0; i < RealCount(s->type); ++i)
 			{
 				m = FuzzMaxAbs(m, values[i]);
@@ -198,6 +281,9 @@ static cd3Shape Translated(const cd3Shape* shape, cd3Vec d)
 			break;
 		case CD3_SHAPE_PLANE:
 			s.plane.offset += cd3Dot(s.plane.normal, d);
+			break;
+		case CD3_SHAPE_HULL:
+			s.hull.transform.p = cd3Add(s.hull.transform.p, d);
 			break;
 		default:
 			s.segment.p1 = cd3Add(s.segment.p1, d);
@@ -285,6 +371,9 @@ static void CheckValidators(const cd3Shape* s, const char* label)
 		case CD3_SHAPE_PLANE:
 			typed = cd3IsValidPlane(s->plane);
 			break;
+		case CD3_SHAPE_HULL:
+			typed = cd3IsValidHullShape(s->hull);
+			break;
 		default:
 			typed = cd3IsValidSegment(s->segment);
 			break;
@@ -294,7 +383,7 @@ static void CheckValidators(const cd3Shape* s, const char* label)
 		Fail("validators", "%s: the %s validator says %d, cd3IsValidShape %d", label,
 			 cd3ShapeTypeName(s->type), (int)typed, (int)valid);
 	}
-	const cdReal* values = (const cdReal*)&s->sphere;
+	const cdReal* values = Reals(s);
 	for (int i = 0; i < RealCount(s->type); ++i)
 	{
 		if (!FuzzFinite(values[i]) && valid)
@@ -506,8 +595,8 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
 	FuzzReader r = FuzzBegin(data, size);
 	cd3Shape rawA, rawB;
-	DecodeShape(&r, &rawA, &s_case.a);
-	DecodeShape(&r, &rawB, &s_case.b);
+	DecodeShape(&r, 0, &rawA, &s_case.a);
+	DecodeShape(&r, 1, &rawB, &s_case.b);
 	cd3Vec rawPoint = RawVec(&r);
 	cd3Ray rawRay = {RawVec(&r), RawVec(&r)};
 	s_case.point = ClampVec(rawPoint);
@@ -553,6 +642,12 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	if (usable[0] && usable[1])
 	{
 		CheckPair(&s_case.a, &s_case.b);
+	}
+	for (int i = 0; i < 2; ++i)
+	{
+		cd3DestroyHull(s_hulls[i].hull);
+		s_hulls[i].hull = NULL;
+		s_hulls[i].count = 0;
 	}
 	return 0;
 }
