@@ -486,18 +486,6 @@ static cdResult RunQuickhull(Builder* b, double weld)
 
 /* ---- merging triangles into faces and building the half-edge hull ---------------------------- */
 
-typedef struct EdgeKey
-{
-	int64_t key;
-	int index;
-} EdgeKey;
-
-static int CompareEdgeKeys(const void* a, const void* b)
-{
-	int64_t ka = ((const EdgeKey*)a)->key, kb = ((const EdgeKey*)b)->key;
-	return ka < kb ? -1 : (ka > kb ? 1 : 0);
-}
-
 typedef struct AreaOrder
 {
 	double area;
@@ -773,11 +761,15 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	size_t faceEdgesSize = AlignUp((size_t)faceCount * sizeof(int32_t));
 	size_t planesSize = AlignUp((size_t)faceCount * sizeof(cd3Plane));
 	char* memory = (char*)cdAlloc(headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize);
-	EdgeKey* keys = (EdgeKey*)AllocArray((size_t)halfEdgeCount, sizeof(EdgeKey));
-	if (memory == NULL || keys == NULL)
+	/* Each half-edge covers a chain of boundary slots (the dropped vertices in between); its
+	 * twin is the half-edge covering the twin of its chain's last slot. */
+	int* slotEdge = (int*)AllocArray((size_t)total * 3, sizeof(int));
+	int* lastSlot = (int*)AllocArray((size_t)halfEdgeCount, sizeof(int));
+	if (memory == NULL || slotEdge == NULL || lastSlot == NULL)
 	{
 		cdFree(memory);
-		cdFree(keys);
+		cdFree(slotEdge);
+		cdFree(lastSlot);
 		cdFree(vertexMap);
 		return CD_ERROR_OUT_OF_MEMORY;
 	}
@@ -825,6 +817,11 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 				++edgeIndex;
 				++count;
 			}
+			slotEdge[slot] = previous;
+			if (previous >= 0)
+			{
+				lastSlot[previous] = slot;
+			}
 			slot = m->loopNext[slot];
 		} while (slot != start);
 		if (count < 3)
@@ -832,33 +829,32 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 			ok = false;
 			break;
 		}
+		/* Slots before the first kept vertex end the last half-edge's chain. */
+		for (slot = start; slotEdge[slot] < 0; slot = m->loopNext[slot])
+		{
+			slotEdge[slot] = previous;
+			lastSlot[previous] = slot;
+		}
 		edges[previous].next = first;
 		faceEdges[g] = first;
 	}
 	if (ok)
 	{
-		/* Twins: the half-edge a -> b pairs with b -> a. */
-		for (int e = 0; e < halfEdgeCount; ++e)
-		{
-			int64_t from = edges[e].origin, to = edges[edges[e].next].origin;
-			keys[e].key = from * (int64_t)vertexCount + to;
-			keys[e].index = e;
-		}
-		qsort(keys, (size_t)halfEdgeCount, sizeof(EdgeKey), CompareEdgeKeys);
 		for (int e = 0; e < halfEdgeCount && ok; ++e)
 		{
-			int64_t from = edges[e].origin, to = edges[edges[e].next].origin;
-			EdgeKey probe = {to * (int64_t)vertexCount + from, 0};
-			const EdgeKey* found = (const EdgeKey*)bsearch(&probe, keys, (size_t)halfEdgeCount,
-														   sizeof(EdgeKey), CompareEdgeKeys);
-			ok = found != NULL;
+			int slot = lastSlot[e];
+			const HFace* f = &b->faces[slot / 3];
+			int other = f->adj[slot % 3];
+			int j = EdgeIndex(&b->faces[other], f->v[(slot % 3 + 1) % 3], f->v[slot % 3]);
+			ok = j >= 0 && slotEdge[3 * other + j] >= 0;
 			if (ok)
 			{
-				edges[e].twin = found->index;
+				edges[e].twin = slotEdge[3 * other + j];
 			}
 		}
 	}
-	cdFree(keys);
+	cdFree(slotEdge);
+	cdFree(lastSlot);
 	cdFree(vertexMap);
 	if (!ok)
 	{
