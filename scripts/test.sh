@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs the whole test suite three times: the float build, the double build
 # (COLLIDE_DOUBLE) and the sanitizer build (clang, AddressSanitizer + UBSan, Debug so that
-# CD_ASSERT is live). Warnings are errors in all three. Ends with CTest's summary.
+# CD_ASSERT is live, plus short deterministic fuzzer runs). Warnings are errors in all three. Ends with CTest's summary.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 # shellcheck source=ensure-deps.sh
@@ -27,4 +27,6 @@ run_suite() {
 
 run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo
 run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON
-CC=clang CXX=clang++ run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON
+# The sanitizer build also builds the libFuzzer targets and runs each for a fixed number of
+# inputs (fuzz/CMakeLists.txt).
+CC=clang CXX=clang++ run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON -DCOLLIDE_BUILD_FUZZ=ON
