@@ -121,7 +121,8 @@ CD_API cdResult cd3MakeCylinderHull(cdReal halfHeight, cdReal radius, int segmen
 /* A cone about the y axis: base circle (`segments` sides) at y = -halfHeight, apex at +halfHeight. */
 CD_API cdResult cd3MakeConeHull(cdReal halfHeight, cdReal radius, int segments, cd3Hull** hull);
 
-/* Distance within which the hull's vertices count as lying on its face planes. */
+/* Distance within which the hull's vertices count as lying on its face planes: 64 eps E (65536
+ * eps E in double) plus 16 eps times the largest coordinate (E: the diagonal of the bounds). */
 CD_API cdReal cd3GetHullTolerance(const cd3Hull* hull);
 
 /* Checks a hull: finite data, indices in range, a closed 2-manifold (twins consistent, each

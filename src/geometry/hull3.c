@@ -1165,7 +1165,9 @@ cdReal cd3GetHullTolerance(const cd3Hull* hull)
 	double extent = (double)cd3Length(cd3Sub(hi, lo));
 	cd3Vec far = cd3Max(cd3Abs(lo), cd3Abs(hi));
 	double magnitude = (double)cdMax(far.x, cdMax(far.y, far.z));
-	return (cdReal)(HULL_VALID_REL * (extent + magnitude));
+	/* The merged faces' flatness scales with the extent; the rounding of planes and of the test
+	 * itself with the coordinates' magnitude. */
+	return (cdReal)(HULL_VALID_REL * extent + 16.0 * (double)CD_REAL_EPSILON * magnitude);
 }
 
 static bool ValidIndex(int32_t index, int count)
