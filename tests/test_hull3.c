@@ -734,6 +734,29 @@ static void TestHullShapeProperties(void)
 				"%d hits, %d misses, %d in, %d out", hits, misses, inside, outside);
 }
 
+/* Found by fuzz_query3 (fuzz/crashes/query3-hull-sliver-weld): a sliver 7e-10 thick at the 1e-4
+ * scale whose two nearly parallel back faces were both within the merge tolerance of the corner
+ * (-1.25e-4, -1.25e-4, -1.25e-4); merging them dropped that corner although it is no point of
+ * their common edge. The corner must stay a vertex. */
+static void TestSliverCorner(void)
+{
+	TestRng rng = TestRngMake(0x4e1100cu);
+	cdReal s = (cdReal)-0.000125000006;
+	cd3Vec points[7] = {V3(0, 0, 0),
+						V3(0, 0, -0.000123749996),
+						cd3MakeVec(s, s, (cdReal)-0.000119999997),
+						V3(-9.99999972e-10, 0, -9.99999972e-10),
+						cd3MakeVec(s, s, s),
+						cd3MakeVec(s, s, s),
+						cd3MakeVec(s, s, s)};
+	cd3Hull* hull = CheckCloud(&rng, "sliver corner", points, 7);
+	if (hull != NULL)
+	{
+		TEST_CHECKF(hull->vertexCount == 5, "%d vertices", hull->vertexCount);
+	}
+	cd3DestroyHull(hull);
+}
+
 /* ---- the validator rejects broken hulls ---------------------------------------------------------- */
 typedef struct MutableHull
 {
@@ -856,6 +879,7 @@ int main(void)
 	TEST_RUN(TestCoplanarMerging);
 	TEST_RUN(TestWelding);
 	TEST_RUN(TestNearlyCoplanar);
+	TEST_RUN(TestSliverCorner);
 	TEST_RUN(TestDegenerateAndBadInput);
 	TEST_RUN(TestScalesAndOffsets);
 	TEST_RUN(TestValidator);

@@ -725,8 +725,20 @@ static size_t AlignUp(size_t size)
 	return (size + 31u) & ~(size_t)31u;
 }
 
+/* Distance from p to the line through a and b (to a when they coincide). */
+static double LineDistance(HVec p, HVec a, HVec b)
+{
+	HVec d = HSub(b, a), q = HSub(p, a);
+	double dd = HDot(d, d);
+	return dd > 0.0 ? HLength(HSub(q, HScale(HDot(q, d) / dd, d))) : HLength(q);
+}
+
+/* `collinearTolerance`: how far a dropped vertex may lie from the edge that replaces it. Two
+ * nearly parallel faces are both within the merge tolerance of points far from their common
+ * edge; such a merge is refused (and retried with a smaller tolerance), not allowed to cut a
+ * corner off the hull. */
 static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input, const int* inputIndex,
-						  cd3Hull** out)
+						  double collinearTolerance, cd3Hull** out)
 {
 	int total = b->faceCount;
 	/* Kept vertices: those where at least three merged faces meet. A vertex between only two
@@ -765,11 +777,13 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	 * twin is the half-edge covering the twin of its chain's last slot. */
 	int* slotEdge = (int*)AllocArray((size_t)total * 3, sizeof(int));
 	int* lastSlot = (int*)AllocArray((size_t)halfEdgeCount, sizeof(int));
-	if (memory == NULL || slotEdge == NULL || lastSlot == NULL)
+	int* firstSlot = (int*)AllocArray((size_t)halfEdgeCount, sizeof(int));
+	if (memory == NULL || slotEdge == NULL || lastSlot == NULL || firstSlot == NULL)
 	{
 		cdFree(memory);
 		cdFree(slotEdge);
 		cdFree(lastSlot);
+		cdFree(firstSlot);
 		cdFree(vertexMap);
 		return CD_ERROR_OUT_OF_MEMORY;
 	}
@@ -801,6 +815,7 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 			if (v >= 0)
 			{
 				cd3HullHalfEdge* edge = &edges[edgeIndex];
+				firstSlot[edgeIndex] = slot;
 				edge->origin = v;
 				edge->face = g;
 				edge->twin = -1;
@@ -838,6 +853,18 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 		edges[previous].next = first;
 		faceEdges[g] = first;
 	}
+	for (int e = 0; e < halfEdgeCount && ok; ++e)
+	{
+		/* The dropped vertices of this half-edge's chain lie on it. */
+		int slot = firstSlot[e], last = lastSlot[e];
+		const HFace* lastFace = &b->faces[last / 3];
+		HVec from = b->p[b->faces[slot / 3].v[slot % 3]], to = b->p[lastFace->v[(last % 3 + 1) % 3]];
+		for (; slot != last && ok; slot = m->loopNext[slot])
+		{
+			const HFace* f = &b->faces[slot / 3];
+			ok = LineDistance(b->p[f->v[(slot % 3 + 1) % 3]], from, to) <= collinearTolerance;
+		}
+	}
 	if (ok)
 	{
 		for (int e = 0; e < halfEdgeCount && ok; ++e)
@@ -855,6 +882,7 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	}
 	cdFree(slotEdge);
 	cdFree(lastSlot);
+	cdFree(firstSlot);
 	cdFree(vertexMap);
 	if (!ok)
 	{
@@ -1112,7 +1140,7 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		}
 		if (result == CD_OK)
 		{
-			result = BuildHull(&b, &m, points, kept, hull);
+			result = BuildHull(&b, &m, points, kept, cdMaxDouble(mergeTolerance, 4.0 * b.tol), hull);
 		}
 		if (result == CD_OK)
 		{
