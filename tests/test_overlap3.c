@@ -553,9 +553,9 @@ static void RunRandomPairs(double scale, double offset, double band, int casesPe
 {
 	RVec shift = RMake(offset, -0.5 * offset, 0.25 * offset);
 	TestRng rng = TestRngMake(seed);
-	for (int ta = 0; ta < (int)CD3_SHAPE_TYPE_COUNT; ++ta)
+	for (int ta = 0; ta < (int)CD3_SHAPE_HULL; ++ta) /* hulls: test_matrix3, test_hull3 */
 	{
-		for (int tb = ta; tb < (int)CD3_SHAPE_TYPE_COUNT; ++tb)
+		for (int tb = ta; tb < (int)CD3_SHAPE_HULL; ++tb)
 		{
 			int apart = 0, overlapping = 0;
 			for (int i = 0; i < casesPerPair; ++i)
@@ -668,9 +668,9 @@ static void TestTouchingPairs(void)
 	TestRng rng = TestRngMake(0x5EED3209u);
 	const double gap = CD_DOUBLE ? 1e-9 : 1e-3;
 	const double touchingSlack = 4.0 * CD_REAL_EPSILON;
-	for (int ta = 0; ta < (int)CD3_SHAPE_TYPE_COUNT; ++ta)
+	for (int ta = 0; ta < (int)CD3_SHAPE_HULL; ++ta) /* hulls: test_matrix3, test_hull3 */
 	{
-		for (int tb = ta; tb < (int)CD3_SHAPE_TYPE_COUNT; ++tb)
+		for (int tb = ta; tb < (int)CD3_SHAPE_HULL; ++tb)
 		{
 			bool exact = (ta == CD3_SHAPE_SPHERE && (tb == CD3_SHAPE_SPHERE || tb == CD3_SHAPE_AABB)) ||
 						 (ta == CD3_SHAPE_AABB && tb == CD3_SHAPE_AABB) ||
@@ -726,7 +726,7 @@ static void TestRandomPointInShape(void)
 	int inside = 0, outside = 0;
 	for (int i = 0; i < 7000; ++i)
 	{
-		cd3ShapeType type = (cd3ShapeType)(i % (int)CD3_SHAPE_TYPE_COUNT);
+		cd3ShapeType type = (cd3ShapeType)(i % (int)CD3_SHAPE_HULL);
 		cd3Shape shape = RandomShape(&rng, type, 1.0);
 		RShape r = RFromShape(&shape);
 		RVec rp;
@@ -789,7 +789,7 @@ static void TestClosestPointIsContained(void)
 	TestRng rng = TestRngMake(0x5EED3207u);
 	for (int i = 0; i < 3000; ++i)
 	{
-		cd3ShapeType type = (cd3ShapeType)(i % (int)CD3_SHAPE_TYPE_COUNT);
+		cd3ShapeType type = (cd3ShapeType)(i % (int)CD3_SHAPE_HULL);
 		if (type == CD3_SHAPE_SPHERE)
 		{
 			continue; /* point-in-sphere is exact by contract; its boundary points round either way */

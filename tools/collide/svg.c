@@ -541,6 +541,7 @@ static void drawShape3(Canvas* canvas, const ToolShape* shape, bool highlighted,
 			drawSegment(canvas, project3(canvas, s->segment.p1), project3(canvas, s->segment.p2),
 						highlighted);
 			break;
+		case CD3_SHAPE_HULL: /* not drawn yet */
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
