@@ -575,6 +575,173 @@ static void TestExtremeScales(void)
 	}
 }
 
+/* ---- ill-conditioned pairs against the reference, tolerance relative to the pair's scale ------- */
+
+/* The largest coordinate or size of a shape (its extent from the origin). */
+static double ShapeScale(const cd2Shape* shape)
+{
+	RefShape r = MakeRef(shape);
+	double scale = r.radius;
+	for (int i = 0; i < r.count; ++i)
+	{
+		scale = fmax(scale, fmax(fabs(r.vertices[i].x), fabs(r.vertices[i].y)));
+	}
+	return scale;
+}
+
+/* GJK's distance and witnesses carry round-off of a few epsilons of the largest coordinate
+ * (support values, the stopping gap, the weights): 128 epsilons of the scale leaves room for that
+ * and still catches the failures these cases pin down (errors of 1e-4 to 1e-1 of the scale). */
+#define SCALED_TOLERANCE(scale) (128.0 * (double)CD_REAL_EPSILON * (scale))
+
+static double g_maxScaledError = 0.0;
+
+/* cd2Distance(a, b) and (b, a) against the reference: distance, witnesses on their shapes, the
+ * gap between them, one common point at distance 0. Returns the first result. */
+static cd2ClosestPoints CheckScaledPair(const cd2Shape* a, const cd2Shape* b, const char* what)
+{
+	double scale = fmax(ShapeScale(a), ShapeScale(b));
+	double tolerance = SCALED_TOLERANCE(scale);
+	double expected = RefDistance(a, b);
+	RefShape ra = MakeRef(a), rb = MakeRef(b);
+	cd2ClosestPoints first = {CD2_VEC_ZERO, CD2_VEC_ZERO, CD_R(0.0)};
+	for (int order = 0; order < 2; ++order)
+	{
+		const cd2Shape* x = order == 0 ? a : b;
+		const cd2Shape* y = order == 0 ? b : a;
+		cd2ClosestPoints r = cd2Distance(x, y);
+		first = order == 0 ? r : first;
+		const RefShape* rx = order == 0 ? &ra : &rb;
+		const RefShape* ry = order == 0 ? &rb : &ra;
+		double offX = RefPointShapeDistance(rx, DFrom(r.pointA));
+		double offY = RefPointShapeDistance(ry, DFrom(r.pointB));
+		double gap = DLength(DSub(DFrom(r.pointB), DFrom(r.pointA)));
+		double error = fabs((double)r.distance - expected);
+		double worst = fmax(fmax(error, fabs(gap - (double)r.distance)), fmax(offX, offY));
+		g_maxScaledError = fmax(g_maxScaledError, worst / scale);
+		bool ok = isfinite((double)r.distance) && CheckFinitePoints(r) && worst <= tolerance &&
+				  (r.distance > CD_R(0.0) || cd2VecEqual(r.pointA, r.pointB));
+		TEST_CHECKF(
+			ok,
+			"%s, order %d: distance %.9g, reference %.9g, witnesses off their shapes by %.3g and %.3g, "
+			"|pB - pA| = %.9g (tolerance %.3g)",
+			what, order, (double)r.distance, expected, offX, offY, gap, tolerance);
+		if (!ok)
+		{
+			PrintShape("a", a);
+			PrintShape("b", b);
+		}
+	}
+	return first;
+}
+
+/* The fuzzers' findings, with the values they printed (float values, exact in double too). */
+static void TestGjkFuzzFindings(void)
+{
+	/* Segments sharing the end point (0, -125000), one of them 1e9 long: touching. GJK stalled
+	 * between two nearly equidistant edges of the sliver Minkowski difference at 116250. */
+	cd2Vec shared = V(0.0, -125000.0);
+	cd2Shape a = Segment(V(-1e9, 0.0), shared);
+	cd2Shape b = Segment(V(0.0, -8750.0), shared);
+	cd2ClosestPoints r = CheckScaledPair(&a, &b, "segments sharing an end point");
+	TEST_CHECKF(r.distance == CD_R(0.0) && cd2Length(cd2Sub(r.pointA, shared)) <= SCALED_TOLERANCE(1e9),
+				"distance %.9g, common point (%.9g %.9g)", (double)r.distance, (double)r.pointA.x,
+				(double)r.pointA.y);
+
+	/* A point inside a box of half extents 1 and 2.6e-5: distance 0, and the common point is the
+	 * point itself (the only point of the circle of radius 0); the sliver triangle's weights put it
+	 * 2.2e-4 away. */
+	cd2Vec point = cd2MakeVec(CD_R(-0.000125), CD_R(-0.000125));
+	cd2Shape thin = Box(cd2MakeVec(CD_R(-8.375e-5), CD_R(-7.125e-5)), cd2MakeVec(CD_R(1.0), CD_R(2.625e-5)),
+						cd2NormalizeRot((cd2Rot){CD_R(-0.00012375), CD_R(-0.000125)}));
+	cd2Shape dot = Circle(point.x, point.y, CD_R(0.0));
+	TEST_CHECK(cd2PointInBox(point, thin.box));
+	r = CheckScaledPair(&thin, &dot, "point in a thin box");
+	TEST_CHECKF(r.distance == CD_R(0.0) && cd2Length(cd2Sub(r.pointB, point)) <= SCALED_TOLERANCE(1.0),
+				"distance %.9g, common point %.3g from the point", (double)r.distance,
+				(double)cd2Length(cd2Sub(r.pointB, point)));
+
+	/* A box 2.1e-4 thin and 1.9e7 long at 45 degrees through a flat AABB (a vertical segment of
+	 * length 7.5e-6 inside the box's slab): overlapping; the double build put the common point
+	 * 17.9 away from the AABB. */
+	cdReal diagonal = -CD_R(0.70710678118654752);
+	cd2Shape slab = Box(cd2MakeVec(CD_R(1e-30), CD_R(5e-6)), cd2MakeVec(CD_R(1.0625e-4), CD_R(9568256.0)),
+						(cd2Rot){diagonal, diagonal});
+	cd2Shape flat = Aabb(cd2MakeVec(CD_R(-1e-5), CD_R(-1.225e-4)), cd2MakeVec(CD_R(-1e-5), CD_R(-1.15e-4)));
+	r = CheckScaledPair(&slab, &flat, "flat AABB in a long thin box");
+	TEST_CHECK(r.distance == CD_R(0.0));
+}
+
+/* Thin boxes (aspect ratios up to 1e6 in float, 1e12 in double) against random shapes and points
+ * inside them; long segments that share an end point or nearly do (lengths up to 1e9 / 1e30);
+ * random pairs scaled up to 1e9 / 1e30. */
+static void TestIllConditionedPairs(void)
+{
+	TestRng rng = TestRngMake(0x6a6b3d07u);
+#if CD_DOUBLE
+	const double thinnest = 12.0, largest = 30.0;
+#else
+	const double thinnest = 6.0, largest = 9.0;
+#endif
+	for (int i = 0; i < 3000; ++i)
+	{
+		/* A thin box and a random shape or a point inside the box. */
+		cdReal length = RandomReal(&rng, 0.5, 3.0);
+		cdReal width = (cdReal)pow(10.0, -TestRngRange(&rng, 1.0, thinnest));
+		cd2Vec half = TestRngInt(&rng, 2) == 0 ? cd2MakeVec(length, width) : cd2MakeVec(width, length);
+		cd2Shape box = Box(RandomVec(&rng, 1.0), half, RandomRot(&rng));
+		cd2Shape other;
+		if (TestRngInt(&rng, 2) == 0)
+		{
+			other = RandomShape(&rng, (cd2ShapeType)TestRngInt(&rng, CD2_SHAPE_TYPE_COUNT));
+		}
+		else
+		{
+			cd2Vec local =
+				cd2MakeVec(RandomReal(&rng, -1.0, 1.0) * half.x, RandomReal(&rng, -1.0, 1.0) * half.y);
+			cd2Vec inside = cd2Add(box.box.center, cd2RotateVector(box.box.rotation, local));
+			other = Circle(inside.x, inside.y, CD_R(0.0));
+		}
+		cd2ClosestPoints r = CheckScaledPair(&box, &other, "thin box");
+		if (other.type == CD2_SHAPE_CIRCLE && other.circle.radius == CD_R(0.0) &&
+			RefDistance(&box, &other) == 0.0)
+		{
+			double off = (double)cd2Length(cd2Sub(r.pointB, other.circle.center));
+			TEST_CHECKF(off <= SCALED_TOLERANCE(ShapeScale(&box)),
+						"common point %.3g from the point inside the thin box", off);
+		}
+
+		/* Two long segments from one end point, or with their end points a small gap apart. */
+		double k = pow(10.0, TestRngRange(&rng, 0.0, largest));
+		cd2Vec end = cd2Scale((cdReal)(1e-3 * k), RandomVec(&rng, 1.0));
+		cd2Vec endB = end;
+		if (TestRngInt(&rng, 2) == 0)
+		{
+			endB = cd2Add(
+				end, cd2Scale((cdReal)(k * pow(10.0, -TestRngRange(&rng, 1.0, 5.0))), RandomVec(&rng, 1.0)));
+		}
+		cd2Vec farA = cd2Add(end, cd2Scale((cdReal)(k * TestRngRange(&rng, 0.1, 1.0)),
+										   cd2RotateVector(RandomRot(&rng), V(1.0, 0.0))));
+		cd2Vec farB = cd2Add(endB, cd2Scale((cdReal)(k * pow(10.0, -TestRngRange(&rng, 0.0, 5.0))),
+											cd2RotateVector(RandomRot(&rng), V(1.0, 0.0))));
+		cd2Shape sa = Segment(TestRngInt(&rng, 2) == 0 ? farA : end, TestRngInt(&rng, 2) == 0 ? end : farA);
+		if (cd2VecEqual(sa.segment.p1, sa.segment.p2))
+		{
+			sa.segment.p1 = farA;
+		}
+		cd2Shape sb = Segment(farB, endB);
+		CheckScaledPair(&sa, &sb, "long segments");
+
+		/* A random pair scaled as a whole. */
+		cd2Shape pa = RandomShape(&rng, (cd2ShapeType)TestRngInt(&rng, CD2_SHAPE_TYPE_COUNT));
+		cd2Shape pb = RandomShape(&rng, (cd2ShapeType)TestRngInt(&rng, CD2_SHAPE_TYPE_COUNT));
+		cd2Shape ka = ScaleShape(&pa, (cdReal)k), kb = ScaleShape(&pb, (cdReal)k);
+		CheckScaledPair(&ka, &kb, "scaled pair");
+	}
+	printf("largest error relative to the scale in ill-conditioned pairs: %.3g epsilon\n",
+		   g_maxScaledError / (double)CD_REAL_EPSILON);
+}
+
 /* cd2DistanceWithStatus reports GJK's work and gives the same answer as cd2Distance. */
 static void TestDistanceStatus(void)
 {
@@ -599,5 +766,7 @@ int main(void)
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestExtremeScales);
+	TEST_RUN(TestGjkFuzzFindings);
+	TEST_RUN(TestIllConditionedPairs);
 	return TEST_SUMMARY();
 }

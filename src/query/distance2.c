@@ -62,8 +62,60 @@ static void SolveSegment(cd2Vec w0, cd2Vec w1, cdReal* l0, cdReal* l1)
 	}
 }
 
+/* Most steps of iterative refinement of the weights of a triangle enclosing the origin (see
+ * RefineEnclosedWeights): each step shrinks the residual by about eps |e1| |e2| / area, which the
+ * flatness tolerance keeps below 1/16, down to round-off of the vertices themselves. */
+#define GJK_REFINE_STEPS 4
+
+static cdReal ResidualLengthSquared(const cd2Vec* w, const cdReal* l, cd2Vec* residual)
+{
+	*residual = cd2Add(cd2Add(cd2Scale(l[0], w[0]), cd2Scale(l[1], w[1])), cd2Scale(l[2], w[2]));
+	return cd2LengthSquared(*residual);
+}
+
+/* The weights of the origin in a thin triangle are ill-conditioned: the sub-areas, cross products
+ * of vertices of size |w|, carry round-off eps |w|^2 while the area may be small, so the weights
+ * can be off by eps |w|^2 / area. The shapes' common point, the same weights applied to the
+ * support points of each shape, then lies off the other shape by the residual sum l_i w_i
+ * (2.2e-4 for a point in a box 5e-5 thin; 18 in double with |w| ~ 1e7). Iterative refinement
+ * removes it: the correction solves the same system for the residual, whose own round-off is
+ * relative to the (small) residual. Returns false when the refined weights put the origin outside
+ * the triangle after all (the sign test was decided by round-off). */
+static bool RefineEnclosedWeights(const cd2Vec* w, cdReal area, cdReal* l)
+{
+	cd2Vec e1 = cd2Sub(w[1], w[0]), e2 = cd2Sub(w[2], w[0]);
+	cdReal inverseArea = CD_R(1.0) / area;
+	cd2Vec residual;
+	cdReal residualSquared = ResidualLengthSquared(w, l, &residual);
+	for (int step = 0; step < GJK_REFINE_STEPS && residualSquared > CD_R(0.0); ++step)
+	{
+		/* d1 e1 + d2 e2 = -residual, keeping the sum of the weights. */
+		cdReal d1 = cd2Cross(e2, residual) * inverseArea;
+		cdReal d2 = cd2Cross(residual, e1) * inverseArea;
+		cdReal refined[3] = {l[0] - d1 - d2, l[1] + d1, l[2] + d2};
+		cd2Vec refinedResidual;
+		cdReal refinedSquared = ResidualLengthSquared(w, refined, &refinedResidual);
+		if (!(refinedSquared < residualSquared))
+		{
+			break;
+		}
+		for (int i = 0; i < 3; ++i)
+		{
+			l[i] = refined[i];
+		}
+		residual = refinedResidual;
+		residualSquared = refinedSquared;
+	}
+	return l[0] >= CD_R(0.0) && l[1] >= CD_R(0.0) && l[2] >= CD_R(0.0);
+}
+
 /* Barycentric coordinates of the point of triangle w[0..2] closest to the origin; returns true
- * when the origin lies inside it. */
+ * when the origin lies inside it. w[2] is the support point just added: when the origin is
+ * outside, the closest point lies on an edge through it. In exact arithmetic the closest point of
+ * the old edge w0-w1 (which GJK only extends when the support line shows it can get closer) is
+ * beaten by a point of the new edges; in round-off the two can tie, and choosing the old edge
+ * again dropped the new support point, found it again, and stalled (two long segments sharing an
+ * end point at distance 116250 instead of 0). */
 static bool SolveTriangle(const cd2Vec* w, cdReal* l)
 {
 	cd2Vec e1 = cd2Sub(w[1], w[0]);
@@ -83,13 +135,16 @@ static bool SolveTriangle(const cd2Vec* w, cdReal* l)
 			l[0] = c0 * inverse;
 			l[1] = c1 * inverse;
 			l[2] = c2 * inverse;
-			return true;
+			if (RefineEnclosedWeights(w, area, l))
+			{
+				return true;
+			}
 		}
 	}
 
-	/* Outside (or flat): the closest point lies on an edge. */
+	/* Outside (or flat): the closest point lies on an edge through w[2]. */
 	cdReal bestDistanceSquared = CD_REAL_MAX;
-	for (int i = 0; i < 3; ++i)
+	for (int i = 1; i < 3; ++i)
 	{
 		int j = (i + 1) % 3, k = (i + 2) % 3;
 		cdReal li, lj;
