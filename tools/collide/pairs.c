@@ -1,6 +1,7 @@
 /* collide tool: every pairwise query of a scene. Library shapes go through the generic
- * dispatchers (cdNOverlap for the yes/no answer, cdNDistance for the closest points); points are
- * not library shapes, so the tool asks cdNPointInShape and cdNClosestPointOnShape for them. */
+ * dispatchers (cdNOverlap for the yes/no answer, cdNDistance for the closest points, and in 2D
+ * cd2Collide for the contact manifold); points are not library shapes, so the tool asks
+ * cdNPointInShape and cdNClosestPointOnShape for them. */
 #include "scene.h"
 
 #include <math.h>
@@ -24,6 +25,28 @@ static double distanceBetween(const double a[3], const double b[3])
 {
 	double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
 	return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* The contact manifold of two library shapes (every 2D shape type has one). */
+static void collidePair2(const ToolShape* a, const ToolShape* b, ToolPairResult* pair)
+{
+	cd2Manifold manifold = cd2Collide(&a->shape2, &b->shape2, (cdReal)TOOL_CONTACT_SPECULATIVE_DISTANCE);
+	int count = cdMinInt(cdMaxInt(manifold.pointCount, 0), 2);
+	pair->hasContact = count > 0;
+	pair->contactCount = count;
+	if (count == 0)
+	{
+		return;
+	}
+	pair->contactNormal[0] = (double)manifold.normal.x;
+	pair->contactNormal[1] = (double)manifold.normal.y;
+	pair->deepestSeparation = (double)manifold.points[0].separation;
+	for (int i = 0; i < count; ++i)
+	{
+		pair->contactPoints[i][0] = (double)manifold.points[i].point.x;
+		pair->contactPoints[i][1] = (double)manifold.points[i].point.y;
+		pair->deepestSeparation = fmin(pair->deepestSeparation, (double)manifold.points[i].separation);
+	}
 }
 
 static void queryPair2(const ToolShape* a, const ToolShape* b, ToolPairResult* pair)
@@ -50,6 +73,7 @@ static void queryPair2(const ToolShape* a, const ToolShape* b, ToolPairResult* p
 		store2(pair->pointA, closest.pointA);
 		store2(pair->pointB, closest.pointB);
 		pair->distance = (double)closest.distance;
+		collidePair2(a, b, pair);
 		return;
 	}
 	pair->distance = distanceBetween(pair->pointA, pair->pointB);

@@ -1,5 +1,5 @@
-/* collide tool: the text report. One table row per pair with fixed-width columns, then one
- * summary line per scene. */
+/* collide tool: the text report. One table row per pair with fixed-width columns, one summary
+ * line per scene, then a table of the contact manifolds of the 2D pairs that have one. */
 #include "scene.h"
 
 #include <math.h>
@@ -119,6 +119,115 @@ static void printRow(FILE* out, const Row* row, const int* widths)
 	fputc('\n', out);
 }
 
+/* ---- contacts: a second table of the 2D pairs with a contact manifold ---- */
+
+enum
+{
+	CONTACT_SCENE,
+	CONTACT_A,
+	CONTACT_B,
+	CONTACT_COUNT_COLUMN,
+	CONTACT_NORMAL,
+	CONTACT_POINTS,
+	CONTACT_DEEPEST,
+	CONTACT_COLUMN_COUNT
+};
+
+typedef struct ContactRow
+{
+	char cells[CONTACT_COLUMN_COUNT][128];
+} ContactRow;
+
+static void fillContactRow(const ToolSceneResult* result, const ToolPairResult* pair, ContactRow* row)
+{
+	const ToolScene* scene = result->scene;
+	snprintf(row->cells[CONTACT_SCENE], sizeof row->cells[0], "%s", scene->name);
+	snprintf(row->cells[CONTACT_A], sizeof row->cells[0], "%s", scene->shapes[pair->a].name);
+	snprintf(row->cells[CONTACT_B], sizeof row->cells[0], "%s", scene->shapes[pair->b].name);
+	snprintf(row->cells[CONTACT_COUNT_COLUMN], sizeof row->cells[0], "%d", pair->contactCount);
+	double normal[3] = {pair->contactNormal[0], pair->contactNormal[1], 0.0};
+	formatPoint(normal, 2, row->cells[CONTACT_NORMAL], sizeof row->cells[0]);
+	char first[48], second[48];
+	double p0[3] = {pair->contactPoints[0][0], pair->contactPoints[0][1], 0.0};
+	double p1[3] = {pair->contactPoints[1][0], pair->contactPoints[1][1], 0.0};
+	formatPoint(p0, 2, first, sizeof first);
+	formatPoint(p1, 2, second, sizeof second);
+	snprintf(row->cells[CONTACT_POINTS], sizeof row->cells[0], "%s%s%s", first,
+			 pair->contactCount > 1 ? " " : "", pair->contactCount > 1 ? second : "");
+	toolFormatNumber(pair->deepestSeparation, row->cells[CONTACT_DEEPEST], sizeof row->cells[0]);
+}
+
+static void printContactRow(FILE* out, const ContactRow* row, const int* widths)
+{
+	for (int c = 0; c < CONTACT_COLUMN_COUNT; ++c)
+	{
+		printCell(out, row->cells[c], widths[c], c == CONTACT_COLUMN_COUNT - 1);
+	}
+	fputc('\n', out);
+}
+
+/* The rows end with a number, never with a point: scripts tell the pair rows of the first table
+ * by their closing parenthesis. */
+static void printContacts(FILE* out, const ToolSceneResult* results, int sceneCount)
+{
+	ContactRow header = {
+		{"scene", "A", "B", "points", "normal (A to B)", "contact points", "deepest separation"}};
+	int widths[CONTACT_COLUMN_COUNT];
+	for (int c = 0; c < CONTACT_COLUMN_COUNT; ++c)
+	{
+		widths[c] = displayWidth(header.cells[c]);
+	}
+	int rows = 0;
+	for (int s = 0; s < sceneCount; ++s)
+	{
+		for (int p = 0; p < results[s].pairCount; ++p)
+		{
+			if (!results[s].pairs[p].hasContact)
+			{
+				continue;
+			}
+			ContactRow row;
+			fillContactRow(&results[s], &results[s].pairs[p], &row);
+			for (int c = 0; c < CONTACT_COLUMN_COUNT; ++c)
+			{
+				int width = displayWidth(row.cells[c]);
+				widths[c] = width > widths[c] ? width : widths[c];
+			}
+			++rows;
+		}
+	}
+	if (rows == 0)
+	{
+		return;
+	}
+	char distance[32];
+	fprintf(out,
+			"\ncontacts of the 2D pairs that touch or are apart by at most %s (cd2Collide; separation < 0 "
+			"is depth):\n",
+			toolFormatNumber(TOOL_CONTACT_SPECULATIVE_DISTANCE, distance, sizeof distance));
+	printContactRow(out, &header, widths);
+	ContactRow rule;
+	for (int c = 0; c < CONTACT_COLUMN_COUNT; ++c)
+	{
+		int width = widths[c] < (int)sizeof rule.cells[c] - 1 ? widths[c] : (int)sizeof rule.cells[c] - 1;
+		memset(rule.cells[c], '-', (size_t)width);
+		rule.cells[c][width] = 0;
+	}
+	printContactRow(out, &rule, widths);
+	for (int s = 0; s < sceneCount; ++s)
+	{
+		for (int p = 0; p < results[s].pairCount; ++p)
+		{
+			if (results[s].pairs[p].hasContact)
+			{
+				ContactRow row;
+				fillContactRow(&results[s], &results[s].pairs[p], &row);
+				printContactRow(out, &row, widths);
+			}
+		}
+	}
+}
+
 void toolPrintReport(FILE* out, const ToolSceneResult* results, int sceneCount)
 {
 	Row header = {{"scene", "A", "B", "overlap", "distance", "closest point on A", "closest point on B"}};
@@ -167,4 +276,5 @@ void toolPrintReport(FILE* out, const ToolSceneResult* results, int sceneCount)
 				scene->shapeCount, scene->shapeCount == 1 ? "" : "s", results[s].pairCount,
 				results[s].pairCount == 1 ? "" : "s", results[s].overlapCount);
 	}
+	printContacts(out, results, sceneCount);
 }

@@ -16,6 +16,7 @@
 #define TOOL_MAX_SCENES 256
 #define TOOL_MAX_SHAPES_PER_SCENE 1000
 #define TOOL_MAX_POLYGON_INPUT_POINTS 256
+#define TOOL_MAX_HULL_INPUT_POINTS 1024
 #define TOOL_MAX_FILE_BYTES (64u * 1024u * 1024u)
 #define TOOL_MAX_NESTING 32
 
@@ -37,6 +38,7 @@ typedef struct ToolShape
 	cd3Vec point3;
 	cd2Shape shape2;
 	cd3Shape shape3;
+	cd3Hull* hull; /* owned: the hull shape3 refers to (NULL for other shapes) */
 } ToolShape;
 
 typedef struct ToolScene
@@ -60,9 +62,14 @@ typedef struct ToolError
 	char message[512];
 } ToolError;
 
-/* Reads and validates a scene file. On failure fills *error and leaves *document empty. */
+/* Reads and validates a scene file. On failure fills *error and leaves *document empty. The
+ * document owns the hulls of its hull shapes: toolFreeDocument destroys them. */
 bool toolLoadDocument(const char* path, ToolDocument* document, ToolError* error);
 void toolFreeDocument(ToolDocument* document);
+
+/* Shapes apart by up to this much (world units) still get a contact row: the speculative
+ * distance passed to cd2Collide. */
+#define TOOL_CONTACT_SPECULATIVE_DISTANCE 0.1
 
 /* The answer for one pair of shapes (indices into the scene's shapes, a < b). Points are stored
  * with three coordinates; z is 0 in 2D scenes. */
@@ -73,6 +80,13 @@ typedef struct ToolPairResult
 	double distance;
 	double pointA[3];
 	double pointB[3];
+	/* 2D pairs of library shapes only: the contact manifold (cd2Collide with
+	 * TOOL_CONTACT_SPECULATIVE_DISTANCE); hasContact is false when it has no points. */
+	bool hasContact;
+	int contactCount;
+	double contactNormal[2];
+	double contactPoints[2][2];
+	double deepestSeparation;
 } ToolPairResult;
 
 typedef struct ToolSceneResult

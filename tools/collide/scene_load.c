@@ -19,13 +19,19 @@
  *   sphere    3          "center": V, "radius": r
  *   capsule   2, 3       "p1": V, "p2": V, "radius": r      (the points within r of segment p1-p2)
  *   aabb      2, 3       "min": V, "max": V
- *   box       2          "center": V, "halfExtents": V, optional "angle" (radians, CCW) or "degrees"
+ *   box       2          "center": V, "halfExtents": V, optional "angle" (radians, CCW) or "degrees",
+ *                        optional "radius" r (rounded corners: the points within r of the box;
+ *                        needs a non-zero area)
  *   box       3          "center": V, "halfExtents": V, optional "rotation": [x, y, z, w] (unit
  *                        quaternion) or "axis": V with "angle" (radians) or "degrees"
- *   polygon   2          "points": [V, V, V, ...] convex, 3 to 8 corners in order (CCW or CW)
+ *   polygon   2          "points": [V, V, V, ...] convex, 3 to 8 corners in order (CCW or CW),
+ *                        optional "radius" r (rounded: the points within r of the polygon)
  *   triangle  3          "points": [V, V, V]
  *   plane     3          "normal": V (unit length), "offset": d   (the solid half-space n.x <= d)
  *   segment   2, 3       "p1": V, "p2": V
+ *   hull      3          "points": [V, V, V, V, ...] 4 to 1024 points, not all in one plane; the
+ *                        solid convex hull of them (cd3ComputeHull), placed by optional
+ *                        "position": V and "rotation" or "axis" with "angle"/"degrees" (as boxes)
  *
  * Any object may also hold a "comment" (ignored). Unknown fields are errors (they are usually
  * typos). Numbers must be finite and within the library's documented range (|x| <= 1e9 in the
@@ -393,7 +399,8 @@ typedef enum ShapeKind
 	KIND_POLYGON,
 	KIND_TRIANGLE,
 	KIND_PLANE,
-	KIND_SEGMENT
+	KIND_SEGMENT,
+	KIND_HULL
 } ShapeKind;
 
 typedef struct ShapeTypeInfo
@@ -401,7 +408,7 @@ typedef struct ShapeTypeInfo
 	const char* name;
 	int dimensions; /* bit 2: 2D, bit 3: 3D */
 	ShapeKind kind;
-	const char* fields[8];
+	const char* fields[10]; /* ends with NULL */
 } ShapeTypeInfo;
 
 #define DIM2 (1 << 2)
@@ -413,15 +420,19 @@ static const ShapeTypeInfo s_shapeTypes[] = {
 	{"sphere", DIM3, KIND_CIRCLE, {"name", "type", "center", "radius", NULL}},
 	{"capsule", DIM2 | DIM3, KIND_CAPSULE, {"name", "type", "p1", "p2", "radius", NULL}},
 	{"aabb", DIM2 | DIM3, KIND_AABB, {"name", "type", "min", "max", NULL}},
-	{"box", DIM2, KIND_BOX, {"name", "type", "center", "halfExtents", "angle", "degrees", NULL}},
+	{"box", DIM2, KIND_BOX, {"name", "type", "center", "halfExtents", "angle", "degrees", "radius", NULL}},
 	{"box",
 	 DIM3,
 	 KIND_BOX,
-	 {"name", "type", "center", "halfExtents", "rotation", "axis", "angle", "degrees"}},
-	{"polygon", DIM2, KIND_POLYGON, {"name", "type", "points", NULL}},
+	 {"name", "type", "center", "halfExtents", "rotation", "axis", "angle", "degrees", NULL}},
+	{"polygon", DIM2, KIND_POLYGON, {"name", "type", "points", "radius", NULL}},
 	{"triangle", DIM3, KIND_TRIANGLE, {"name", "type", "points", NULL}},
 	{"plane", DIM3, KIND_PLANE, {"name", "type", "normal", "offset", NULL}},
 	{"segment", DIM2 | DIM3, KIND_SEGMENT, {"name", "type", "p1", "p2", NULL}},
+	{"hull",
+	 DIM3,
+	 KIND_HULL,
+	 {"name", "type", "points", "position", "rotation", "axis", "angle", "degrees", NULL}},
 };
 
 #define SHAPE_TYPE_COUNT ((int)(sizeof s_shapeTypes / sizeof s_shapeTypes[0]))
@@ -451,23 +462,35 @@ static void listShapeTypes(int dimension, char* buffer, size_t size)
 	}
 }
 
-/* The 8-field list of the 3D box is full, so it ends without NULL; copy into a terminated list. */
-static void allowedFields(const ShapeTypeInfo* info, const char* out[9])
-{
-	int n = 0;
-	for (; n < 8 && info->fields[n] != NULL; ++n)
-	{
-		out[n] = info->fields[n];
-	}
-	out[n] = NULL;
-}
-
 static bool readRadius(Loader* loader, const cJSON* object, cdReal* radius)
 {
 	double value;
 	if (!readNumber(loader, object, "radius", &value))
 	{
 		return false;
+	}
+	*radius = (cdReal)value;
+	return true;
+}
+
+/* Optional rounding "radius" of polygons and 2D boxes; 0 when absent. A negative one is reported
+ * at its own line, in the words the library's validators use. */
+static bool readRoundingRadius(Loader* loader, const cJSON* object, const char* typeName, cdReal* radius)
+{
+	*radius = CD_R(0.0);
+	if (cJSON_GetObjectItemCaseSensitive(object, "radius") == NULL)
+	{
+		return true;
+	}
+	double value;
+	if (!readNumber(loader, object, "radius", &value))
+	{
+		return false;
+	}
+	if (value < 0.0)
+	{
+		return failAt(loader, "radius", "invalid %s: %s (\"radius\" = %g)", typeName,
+					  cdResultString(CD_ERROR_NEGATIVE_SIZE), value);
 	}
 	*radius = (cdReal)value;
 	return true;
@@ -577,6 +600,11 @@ static bool checkConvexOrder(Loader* loader, const double (*points)[3], int coun
 
 static bool readPolygon(Loader* loader, const cJSON* object, cd2Polygon* polygon)
 {
+	cdReal radius;
+	if (!readRoundingRadius(loader, object, "polygon", &radius))
+	{
+		return false;
+	}
 	const cJSON* item = cJSON_GetObjectItemCaseSensitive(object, "points");
 	if (item == NULL)
 	{
@@ -622,7 +650,7 @@ static bool readPolygon(Loader* loader, const cJSON* object, cd2Polygon* polygon
 	ok = ok && checkConvexOrder(loader, (const double(*)[3])points, count);
 	if (ok)
 	{
-		cdResult result = cd2MakePolygon(vertices, count, polygon);
+		cdResult result = cd2MakeRoundedPolygon(vertices, count, radius, polygon);
 		if (result != CD_OK)
 		{
 			char limit[48] = "";
@@ -713,6 +741,78 @@ static bool readBox3Rotation(Loader* loader, const cJSON* object, cd3Quat* rotat
 	return true;
 }
 
+/* The hull is built here and owned by the shape from then on (also when a later check fails:
+ * readScene and toolFreeDocument destroy it). */
+static bool readHull(Loader* loader, const cJSON* object, ToolShape* shape)
+{
+	const cJSON* item = cJSON_GetObjectItemCaseSensitive(object, "points");
+	if (item == NULL)
+	{
+		return failAt(loader, NULL, "missing field \"points\"");
+	}
+	if (!cJSON_IsArray(item))
+	{
+		return failAt(loader, "points", "\"points\" must be an array of [x, y, z] points, not %s",
+					  jsonTypeName(item));
+	}
+	int count = 0;
+	for (const cJSON* element = item->child; element != NULL; element = element->next)
+	{
+		if (++count > TOOL_MAX_HULL_INPUT_POINTS)
+		{
+			return failAt(loader, "points", "\"points\" has more than %d points", TOOL_MAX_HULL_INPUT_POINTS);
+		}
+	}
+	if (count < 4)
+	{
+		return failAt(loader, "points", "a hull needs at least 4 points (not all in one plane), not %d",
+					  count);
+	}
+	double position[3] = {0.0, 0.0, 0.0};
+	cd3Quat rotation;
+	if ((cJSON_GetObjectItemCaseSensitive(object, "position") != NULL &&
+		 !readVector(loader, object, "position", position)) ||
+		!readBox3Rotation(loader, object, &rotation))
+	{
+		return false;
+	}
+	cd3Vec* points = malloc((size_t)count * sizeof *points);
+	if (points == NULL)
+	{
+		return failAt(loader, NULL, "out of memory");
+	}
+	bool ok = true;
+	int n = 0;
+	for (const cJSON* element = item->child; ok && element != NULL; element = element->next, ++n)
+	{
+		char what[48];
+		double p[3];
+		snprintf(what, sizeof what, "point %d of \"points\"", n + 1);
+		ok = readNumbers(loader, element, "points", what, 3, p);
+		if (ok)
+		{
+			points[n] = toVec3(p);
+		}
+	}
+	if (ok)
+	{
+		cdResult result = cd3ComputeHull(points, count, &shape->hull);
+		if (result != CD_OK)
+		{
+			const char* why =
+				result == CD_ERROR_DEGENERATE ? " (the points must not all lie in one plane)" : "";
+			ok = failAt(loader, "points", "invalid hull: %s%s", cdResultString(result), why);
+		}
+	}
+	free(points);
+	if (ok)
+	{
+		cd3Transform transform = {toVec3(position), rotation};
+		shape->shape3 = cd3MakeHullShape(shape->hull, transform);
+	}
+	return ok;
+}
+
 static bool readShape2(Loader* loader, const cJSON* object, ShapeKind kind, ToolShape* shape)
 {
 	double a[3], b[3];
@@ -764,13 +864,28 @@ static bool readShape2(Loader* loader, const cJSON* object, ShapeKind kind, Tool
 		{
 			bool hasAngle;
 			double radians;
+			cdReal radius;
 			if (!readVector(loader, object, "center", a) || !readVector(loader, object, "halfExtents", b) ||
-				!readAngle(loader, object, &hasAngle, &radians))
+				!readAngle(loader, object, &hasAngle, &radians) ||
+				!readRoundingRadius(loader, object, "box", &radius))
 			{
 				return false;
 			}
 			cd2Box box = {toVec2(a), toVec2(b), cd2MakeRot((cdReal)radians)};
 			shape->shape2 = cd2MakeBoxShape(box);
+			if (radius > CD_R(0.0))
+			{
+				/* A rounded box is a rounded polygon for the library. */
+				cd2Polygon polygon;
+				cdResult result = cd2MakeRoundedBoxPolygon(box, radius, &polygon);
+				if (result != CD_OK)
+				{
+					const char* why =
+						result == CD_ERROR_DEGENERATE ? " (a rounded box needs a non-zero area)" : "";
+					return failAt(loader, NULL, "invalid box: %s%s", cdResultString(result), why);
+				}
+				shape->shape2 = cd2MakePolygonShape(&polygon);
+			}
 			return true;
 		}
 		case KIND_POLYGON:
@@ -795,6 +910,7 @@ static bool readShape2(Loader* loader, const cJSON* object, ShapeKind kind, Tool
 		}
 		case KIND_TRIANGLE:
 		case KIND_PLANE:
+		case KIND_HULL:
 			break;
 	}
 	return failAt(loader, "type", "shape type not available in 2D");
@@ -891,6 +1007,8 @@ static bool readShape3(Loader* loader, const cJSON* object, ShapeKind kind, Tool
 			shape->shape3 = cd3MakeSegmentShape(segment);
 			return true;
 		}
+		case KIND_HULL:
+			return readHull(loader, object, shape);
 		case KIND_POLYGON:
 			break;
 	}
@@ -930,9 +1048,7 @@ static bool readShape(Loader* loader, const cJSON* object, ToolShape* shape)
 					  printable(typeItem->valuestring, shown, sizeof shown), loader->dimension, types);
 	}
 	shape->typeName = info->name;
-	const char* fields[9];
-	allowedFields(info, fields);
-	if (!checkKeys(loader, object, fields))
+	if (!checkKeys(loader, object, info->fields))
 	{
 		return false;
 	}
@@ -1032,6 +1148,9 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 		pop(loader);
 		if (!ok)
 		{
+			/* Not counted in shapeCount, so toolFreeDocument would not see its hull. */
+			cd3DestroyHull(scene->shapes[index].hull);
+			scene->shapes[index].hull = NULL;
 			pop(loader);
 			return false;
 		}
@@ -1306,7 +1425,12 @@ void toolFreeDocument(ToolDocument* document)
 {
 	for (int i = 0; i < document->sceneCount; ++i)
 	{
-		free(document->scenes[i].shapes);
+		ToolScene* scene = &document->scenes[i];
+		for (int k = 0; k < scene->shapeCount; ++k)
+		{
+			cd3DestroyHull(scene->shapes[k].hull);
+		}
+		free(scene->shapes);
 	}
 	free(document->scenes);
 	document->scenes = NULL;

@@ -241,6 +241,45 @@ static void drawDot(Canvas* canvas, V2 center, double pixels, const char* fill)
 			px.x, px.y, pixels, fill);
 }
 
+/* A rounded convex polygon (counter-clockwise corners, outward edge normals): each edge pushed out
+ * by the radius, joined by arcs around the corners, with the core polygon dashed inside. */
+static void drawRoundedPolygon(Canvas* canvas, const V2* corners, const V2* normals, int count, double radius)
+{
+	if (canvas->out == NULL)
+	{
+		for (int i = 0; i < count; ++i)
+		{
+			V2 lo = {corners[i].x - radius, corners[i].y - radius};
+			V2 hi = {corners[i].x + radius, corners[i].y + radius};
+			includeWorld(canvas, lo);
+			includeWorld(canvas, hi);
+		}
+		return;
+	}
+	double r = finiteOr0(radius * canvas->scale);
+	fputs("<path d=\"", canvas->out);
+	for (int i = 0; i < count; ++i)
+	{
+		int next = (i + 1) % count;
+		V2 start = {corners[i].x + radius * normals[i].x, corners[i].y + radius * normals[i].y};
+		V2 end = {corners[next].x + radius * normals[i].x, corners[next].y + radius * normals[i].y};
+		V2 arcEnd = {corners[next].x + radius * normals[next].x, corners[next].y + radius * normals[next].y};
+		V2 ps = toPixels(canvas, start), pe = toPixels(canvas, end), pa = toPixels(canvas, arcEnd);
+		if (i == 0)
+		{
+			fprintf(canvas->out, "M%.2f,%.2f ", ps.x, ps.y);
+		}
+		/* counter-clockwise in the world is clockwise on the y-down page: sweep flag 1 */
+		fprintf(canvas->out, "L%.2f,%.2f A%.2f,%.2f 0 0 1 %.2f,%.2f ", pe.x, pe.y, r, r, pa.x, pa.y);
+		includeShapePixels(canvas, toPixels(canvas, corners[i]), r);
+	}
+	fprintf(canvas->out, "Z\" %s %s stroke-linejoin=\"round\"/>\n", canvas->fill, canvas->stroke);
+	const char* stroke = canvas->stroke;
+	canvas->stroke = "stroke=\"" STROKE_COLOR "\" stroke-width=\"0.8\" stroke-dasharray=\"3 3\"";
+	drawPolyline(canvas, corners, count, true, false, NULL);
+	canvas->stroke = stroke;
+}
+
 /* Convex hull (Andrew's monotone chain), counter-clockwise; returns the count written to hull
  * (room for count + 1 points). */
 static int compareV2(const void* a, const void* b)
@@ -373,13 +412,21 @@ static void drawShape2(Canvas* canvas, const ToolShape* shape, bool highlighted)
 		}
 		case CD2_SHAPE_POLYGON:
 		{
-			V2 corners[CD2_MAX_POLYGON_VERTICES];
+			V2 corners[CD2_MAX_POLYGON_VERTICES], normals[CD2_MAX_POLYGON_VERTICES];
 			int count = cdMinInt(cdMaxInt(s->polygon.count, 0), CD2_MAX_POLYGON_VERTICES);
 			for (int i = 0; i < count; ++i)
 			{
 				corners[i] = project2(s->polygon.vertices[i]);
+				normals[i] = project2(s->polygon.normals[i]);
 			}
-			drawPolyline(canvas, corners, count, true, true, NULL);
+			if (s->polygon.radius > CD_R(0.0))
+			{
+				drawRoundedPolygon(canvas, corners, normals, count, (double)s->polygon.radius);
+			}
+			else
+			{
+				drawPolyline(canvas, corners, count, true, true, NULL);
+			}
 			break;
 		}
 		case CD2_SHAPE_SEGMENT:
@@ -478,6 +525,80 @@ static void drawPlane(Canvas* canvas, cd3Plane plane, const PlanePatch* patch)
 			 "stroke=\"" STROKE_COLOR "\" stroke-width=\"1.5\" marker-end=\"url(#arrow)\"");
 }
 
+/* A convex hull: the faces turned toward the viewer filled (they tile the outline, so the fill
+ * reads like the other shapes'), then every edge of the half-edge structure: solid when it
+ * borders a visible face, dashed and faint when it is hidden behind the hull. */
+static void drawHull3(Canvas* canvas, const cd3HullShape* shape, bool highlighted)
+{
+	const cd3Hull* hull = shape->hull;
+	if (hull == NULL)
+	{
+		return;
+	}
+	bool* facing = calloc((size_t)cdMaxInt(hull->faceCount, 1), sizeof(bool));
+	V2* projected = malloc((size_t)cdMaxInt(hull->vertexCount, 1) * sizeof(V2));
+	V2* face = malloc((size_t)cdMaxInt(hull->edgeCount, 1) * sizeof(V2));
+	if (facing == NULL || projected == NULL || face == NULL)
+	{
+		free(facing);
+		free(projected);
+		free(face);
+		return;
+	}
+	for (int v = 0; v < hull->vertexCount; ++v)
+	{
+		projected[v] = project3(canvas, cd3TransformPoint(shape->transform, hull->vertices[v]));
+	}
+	const char* stroke = canvas->stroke;
+	canvas->stroke = "stroke=\"none\"";
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Vec normal = cd3RotateVector(shape->transform.q, hull->planes[f].normal);
+		double n[3] = {(double)normal.x, (double)normal.y, (double)normal.z};
+		facing[f] = dot3(n, canvas->toward) > 0.0;
+		if (!facing[f])
+		{
+			continue;
+		}
+		/* walk the face's loop; the bound keeps a broken loop from running forever */
+		int count = 0;
+		int e = hull->faceEdges[f];
+		do
+		{
+			face[count++] = projected[hull->edges[e].origin];
+			e = hull->edges[e].next;
+		} while (e != hull->faceEdges[f] && count < hull->edgeCount);
+		drawPolyline(canvas, face, count, true, true, NULL);
+	}
+	canvas->stroke = stroke;
+	for (int e = 0; e < hull->edgeCount; ++e)
+	{
+		const cd3HullHalfEdge* edge = &hull->edges[e];
+		if (edge->twin < e)
+		{
+			continue; /* each edge once */
+		}
+		const cd3HullHalfEdge* twin = &hull->edges[edge->twin];
+		bool visible = facing[edge->face] || facing[twin->face];
+		const char* attributes =
+			visible
+				? (highlighted ? "stroke=\"#b71c1c\" stroke-width=\"1.6\" stroke-linecap=\"round\""
+							   : "stroke=\"" STROKE_COLOR "\" stroke-width=\"1.2\" stroke-linecap=\"round\"")
+				: "stroke=\"" STROKE_COLOR "\" stroke-width=\"0.7\" stroke-opacity=\"0.45\" "
+				  "stroke-dasharray=\"3 3\"";
+		V2 a = projected[edge->origin], b = projected[twin->origin];
+		drawLine(canvas, a, b, attributes);
+		if (canvas->out != NULL)
+		{
+			includeShapePixels(canvas, toPixels(canvas, a), 0.0);
+			includeShapePixels(canvas, toPixels(canvas, b), 0.0);
+		}
+	}
+	free(facing);
+	free(projected);
+	free(face);
+}
+
 static void drawShape3(Canvas* canvas, const ToolShape* shape, bool highlighted, const PlanePatch* patch)
 {
 	if (shape->isPoint)
@@ -541,7 +662,9 @@ static void drawShape3(Canvas* canvas, const ToolShape* shape, bool highlighted,
 			drawSegment(canvas, project3(canvas, s->segment.p1), project3(canvas, s->segment.p2),
 						highlighted);
 			break;
-		case CD3_SHAPE_HULL: /* not drawn yet */
+		case CD3_SHAPE_HULL:
+			drawHull3(canvas, &s->hull, highlighted);
+			break;
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
