@@ -18,221 +18,42 @@
 namespace bench
 {
 
-// ---- scene -----------------------------------------------------------------------------------
-
-namespace
-{
-
-uint64_t NextRandom(uint64_t& state)
-{
-	uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-	return z ^ (z >> 31);
-}
-
-float Uniform(uint64_t& state, float lo, float hi)
-{
-	return lo + (hi - lo) * float(double(NextRandom(state) >> 11) * (1.0 / 9007199254740992.0));
-}
-
-enum class Motion : uint8_t
-{
-	Still,
-	Moving,
-	Teleporting
-};
-
-struct SceneState
-{
-	std::vector<float> center, half; // 3 per box
-	std::vector<Motion> motion;
-};
-
-std::map<const Scene*, SceneState> gStates;
-
-void SetBox(Box& box, const float* center, const float* half, int dim)
-{
-	for (int axis = 0; axis < 3; ++axis)
-	{
-		box.min[axis] = center[axis] - half[axis];
-		box.max[axis] = center[axis] + half[axis];
-	}
-	if (dim == 2)
-	{
-		box.min[2] = 0.0f;
-		box.max[2] = 1.0f;
-	}
-}
-
-} // namespace
+// ---- scene and pair list (the shared C module) -------------------------------------------------
 
 void Scene::Init(int dimension, int count, SceneKind sceneKind, uint64_t seed)
 {
-	dim = dimension;
-	n = count;
+	broadSceneFree(&scene_);
+	if (!broadSceneInit(&scene_, dimension, count,
+						sceneKind == SceneKind::Mix ? BROAD_SCENE_MIX : BROAD_SCENE_MOVING, seed))
+	{
+		std::fprintf(stderr, "cannot build a %dD scene of %d boxes\n", dimension, count);
+		std::exit(2);
+	}
+	dim = scene_.dim;
+	n = scene_.n;
 	kind = sceneKind;
-	rngState = seed;
-	// Mean edge 1 m; about 1/8 (3D) or 1/4 (2D) box per unit volume gives about one overlap per box.
-	worldSize = dim == 3 ? 2.0f * std::cbrt(float(n)) : 2.0f * std::sqrt(float(n));
-	worldSize = std::max(worldSize, 8.0f);
-	SceneState& state = gStates[this];
-	state.center.assign(size_t(n) * 3, 0.0f);
-	state.half.assign(size_t(n) * 3, 0.0f);
-	state.motion.assign(size_t(n), Motion::Moving);
-	velocity.assign(size_t(n) * 3, 0.0f);
-	displacement.assign(size_t(n) * 3, 0.0f);
-	boxes.resize(size_t(n));
-	for (size_t i = 0; i < size_t(n); ++i)
-	{
-		for (int axis = 0; axis < dim; ++axis)
-		{
-			state.half[i * 3 + size_t(axis)] = Uniform(rngState, 0.25f, 0.75f);
-			state.center[i * 3 + size_t(axis)] = Uniform(rngState, 0.75f, worldSize - 0.75f);
-			velocity[i * 3 + size_t(axis)] = Uniform(rngState, -1.0f, 1.0f);
-		}
-		if (kind == SceneKind::Mix)
-		{
-			float r = Uniform(rngState, 0.0f, 1.0f);
-			state.motion[i] = r < 0.90f ? Motion::Still : (r < 0.99f ? Motion::Moving : Motion::Teleporting);
-		}
-		SetBox(boxes[i], &state.center[i * 3], &state.half[i * 3], dim);
-	}
-	int queryCount = std::min(1000, std::max(50, n));
-	queries.resize(size_t(queryCount));
-	rays.resize(size_t(queryCount));
-	for (int q = 0; q < queryCount; ++q)
-	{
-		float center[3] = {0.0f, 0.0f, 0.5f}, half[3] = {0.0f, 0.0f, 0.5f};
-		Ray& ray = rays[size_t(q)];
-		float length = std::min(worldSize, 20.0f);
-		float direction[3] = {0.0f, 0.0f, 0.0f}, norm = 0.0f;
-		for (int axis = 0; axis < dim; ++axis)
-		{
-			center[axis] = Uniform(rngState, 0.0f, worldSize);
-			half[axis] = Uniform(rngState, 1.0f, 3.0f);
-			ray.origin[axis] = Uniform(rngState, 0.0f, worldSize);
-			direction[axis] = Uniform(rngState, -1.0f, 1.0f);
-			norm += direction[axis] * direction[axis];
-		}
-		norm = std::sqrt(std::max(norm, 1e-12f));
-		ray.origin[2] = dim == 2 ? 0.5f : ray.origin[2];
-		for (int axis = 0; axis < 3; ++axis)
-		{
-			ray.translation[axis] = direction[axis] * length / norm;
-		}
-		SetBox(queries[size_t(q)], center, half, 3);
-	}
+	worldSize = scene_.worldSize;
+	boxes = View<Box>{scene_.boxes, size_t(scene_.n)};
+	displacement = View<float>{scene_.displacement, size_t(scene_.n) * 3};
+	moved = View<int>{scene_.moved, 0};
+	queries = View<Box>{scene_.queries, size_t(scene_.queryCount)};
+	rays = View<Ray>{scene_.rays, size_t(scene_.queryCount)};
 }
 
 void Scene::Step(int)
 {
-	SceneState& state = gStates[this];
-	moved.clear();
-	for (size_t i = 0; i < size_t(n); ++i)
-	{
-		float* c = &state.center[i * 3];
-		const float* h = &state.half[i * 3];
-		float* v = &velocity[i * 3];
-		float* d = &displacement[i * 3];
-		switch (state.motion[i])
-		{
-			case Motion::Still:
-				continue;
-			case Motion::Moving:
-				for (int axis = 0; axis < dim; ++axis)
-				{
-					float next = c[axis] + v[axis] * timeStep;
-					if (next - h[axis] < 0.0f || next + h[axis] > worldSize)
-					{
-						v[axis] = -v[axis]; // bounce off the walls
-						next = c[axis] + v[axis] * timeStep;
-					}
-					c[axis] = next;
-					d[axis] = v[axis] * timeStep;
-				}
-				break;
-			case Motion::Teleporting:
-				for (int axis = 0; axis < dim; ++axis)
-				{
-					c[axis] = Uniform(rngState, 0.75f, worldSize - 0.75f);
-					d[axis] = 0.0f;
-				}
-				break;
-		}
-		SetBox(boxes[i], c, h, dim);
-		moved.push_back(int(i));
-	}
+	broadSceneStep(&scene_);
+	moved.count = size_t(scene_.movedCount);
 }
 
-Box Scene::WorldBounds() const
+void PairList::Reset(int boxCount)
 {
-	Box world;
-	for (int axis = 0; axis < 3; ++axis)
+	broadPairListFree(&list_);
+	if (!broadPairListInit(&list_, boxCount))
 	{
-		world.min[axis] = 0.0f;
-		world.max[axis] = axis < dim ? worldSize : 1.0f;
+		std::fprintf(stderr, "out of memory for the pair list of %d boxes\n", boxCount);
+		std::exit(2);
 	}
-	return world;
-}
-
-bool RayHitsBox(const Ray& ray, const Box& box)
-{
-	float tmin = 0.0f, tmax = 1.0f;
-	for (int axis = 0; axis < 3; ++axis)
-	{
-		float o = ray.origin[axis], d = ray.translation[axis];
-		if (d == 0.0f)
-		{
-			if (o < box.min[axis] || o > box.max[axis])
-			{
-				return false;
-			}
-			continue;
-		}
-		float t1 = (box.min[axis] - o) / d, t2 = (box.max[axis] - o) / d;
-		if (t1 > t2)
-		{
-			std::swap(t1, t2);
-		}
-		tmin = std::max(tmin, t1);
-		tmax = std::min(tmax, t2);
-		if (tmin > tmax)
-		{
-			return false;
-		}
-	}
-	return true;
-}
-
-// ---- pair list -------------------------------------------------------------------------------
-
-size_t PairList::EndFrame(const std::vector<Box>& boxes)
-{
-	size_t count = 0, kept = 0;
-	for (const Pair& pair : pairs_)
-	{
-		if (moved_.size() > 0 && ((size_t(pair.a) < moved_.size() && moved_[size_t(pair.a)]) ||
-								  (size_t(pair.b) < moved_.size() && moved_[size_t(pair.b)])))
-		{
-			continue;
-		}
-		count += Overlap(boxes[size_t(pair.a)], boxes[size_t(pair.b)]) ? 1 : 0;
-		pairs_[kept++] = pair;
-	}
-	pairs_.resize(kept);
-	for (const Pair& pair : fresh_)
-	{
-		count += Overlap(boxes[size_t(pair.a)], boxes[size_t(pair.b)]) ? 1 : 0;
-		pairs_.push_back(pair);
-	}
-	fresh_.clear();
-	for (int index : movedList_)
-	{
-		moved_[size_t(index)] = 0;
-	}
-	movedList_.clear();
-	return count;
 }
 
 } // namespace bench
@@ -254,33 +75,6 @@ size_t HeapBytes()
 {
 	struct mallinfo2 info = mallinfo2();
 	return info.uordblks + info.hblkhd;
-}
-
-// Reference: sort by min x and sweep; counts pairs of tight boxes that overlap.
-size_t ReferencePairCount(const Scene& scene)
-{
-	std::vector<int> order(size_t(scene.n));
-	for (int i = 0; i < scene.n; ++i)
-	{
-		order[size_t(i)] = i;
-	}
-	std::sort(order.begin(), order.end(),
-			  [&](int a, int b) { return scene.boxes[size_t(a)].min[0] < scene.boxes[size_t(b)].min[0]; });
-	size_t count = 0;
-	for (size_t i = 0; i < order.size(); ++i)
-	{
-		const Box& a = scene.boxes[size_t(order[i])];
-		for (size_t j = i + 1; j < order.size(); ++j)
-		{
-			const Box& b = scene.boxes[size_t(order[j])];
-			if (b.min[0] > a.max[0])
-			{
-				break;
-			}
-			count += Overlap(a, b) ? 1 : 0;
-		}
-	}
-	return count;
 }
 
 struct Result
@@ -410,7 +204,7 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 			continue;
 		}
 		Scene scene;
-		scene.Init(dim, n, kind, 0xC011DEULL + uint64_t(n) * 31u + uint64_t(dim));
+		scene.Init(dim, n, kind, broadSceneSeed(dim, n));
 		adapter->Prepare(scene);
 
 		Result result;
@@ -469,7 +263,7 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 
 		if (checkReference && (name == options.structures.front() || firstName.empty()))
 		{
-			size_t reference = ReferencePairCount(scene);
+			size_t reference = scene.ReferencePairCount();
 			if (reference != counts.back())
 			{
 				std::printf("MISMATCH: %s reports %zu pairs in the last frame, reference sweep %zu\n",
@@ -557,7 +351,6 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 					result.pairs, result.extra.c_str());
 		std::fflush(stdout);
 		adapter.reset();
-		gStates.erase(&scene);
 		results.push_back(result);
 	}
 	return ok;

@@ -8,30 +8,27 @@
 #include <string>
 #include <vector>
 
+#include "broad_scene.h"
+
 namespace bench
 {
 
-struct Box
-{
-	float min[3];
-	float max[3];
-};
+// The boxes, rays and scene are the shared C scene (scenes/broad_scene.h), which the `collide
+// broad` tool command runs too.
+using Box = BroadBox;
+using Ray = BroadRay;
 
 // Closed boxes: touching counts, as in collide. In 2D the z range is the same for every box.
 inline bool Overlap(const Box& a, const Box& b)
 {
-	return a.min[0] <= b.max[0] && b.min[0] <= a.max[0] && a.min[1] <= b.max[1] && b.min[1] <= a.max[1] &&
-		   a.min[2] <= b.max[2] && b.min[2] <= a.max[2];
+	return broadBoxesOverlap(&a, &b);
 }
 
-struct Ray
-{
-	float origin[3];
-	float translation[3];
-};
-
 // Slab test of the segment origin + t * translation, t in [0, 1], against a closed box.
-bool RayHitsBox(const Ray& ray, const Box& box);
+inline bool RayHitsBox(const Ray& ray, const Box& box)
+{
+	return broadRayHitsBox(&ray, &box);
+}
 
 enum class SceneKind
 {
@@ -39,69 +36,102 @@ enum class SceneKind
 	Mix		// 90% still, 9% moving, 1% teleporting every frame
 };
 
-// Deterministic scene: boxes of edge 0.5..1.5 m in a cube (square in 2D) sized so that each box
-// overlaps about one other on average, whatever N.
-struct Scene
+// A read-only view of one of the scene's arrays.
+template <typename T> struct View
 {
+	const T* data = nullptr;
+	size_t count = 0;
+	const T& operator[](size_t i) const
+	{
+		return data[i];
+	}
+	const T* begin() const
+	{
+		return data;
+	}
+	const T* end() const
+	{
+		return data + count;
+	}
+	size_t size() const
+	{
+		return count;
+	}
+};
+
+// The deterministic scene of scenes/broad_scene.h: boxes of edge 0.5..1.5 m in a cube (square in
+// 2D) sized so that each box overlaps about one other on average, whatever N.
+class Scene
+{
+  public:
 	int dim = 3;
 	int n = 0;
 	SceneKind kind = SceneKind::Moving;
 	float worldSize = 0.0f;
-	float timeStep = 1.0f / 60.0f;
-	std::vector<Box> boxes;
-	std::vector<float> velocity;	 // 3 per box
-	std::vector<float> displacement; // 3 per box: predicted displacement for the next frame
-	std::vector<int> moved;			 // boxes moved by the last Step
-	std::vector<Box> queries;
-	std::vector<Ray> rays;
-	uint64_t rngState = 0;
+	View<Box> boxes;
+	View<float> displacement; // 3 per box: predicted displacement for the next frame
+	View<int> moved;		  // boxes moved by the last Step
+	View<Box> queries;
+	View<Ray> rays;
 
+	Scene() = default;
+	Scene(const Scene&) = delete;
+	Scene& operator=(const Scene&) = delete;
+	~Scene()
+	{
+		broadSceneFree(&scene_);
+	}
 	void Init(int dimension, int count, SceneKind sceneKind, uint64_t seed);
 	void Step(int frame);
-	Box WorldBounds() const;
+	Box WorldBounds() const
+	{
+		return broadSceneWorldBounds(&scene_);
+	}
+	size_t ReferencePairCount() const
+	{
+		return broadSceneCountPairs(&scene_);
+	}
+
+  private:
+	BroadScene scene_ = {};
 };
 
 // The complete set of overlapping pairs for structures that report, per frame, every pair that
 // involves a moved proxy (collide's and Box2D's UpdatePairs), as a physics engine keeps its
-// contact list: pairs of two unmoved proxies stay as they were (their fat boxes did not change),
-// pairs with a moved side are dropped and come back among the reported ones if they still
-// overlap. A plain array suffices, no lookups.
+// contact list: the shared C pair list (scenes/broad_scene.h), which the tool uses too.
 class PairList
 {
   public:
+	PairList() = default;
+	PairList(const PairList&) = delete;
+	PairList& operator=(const PairList&) = delete;
+	~PairList()
+	{
+		broadPairListFree(&list_);
+	}
+	// Starts an empty list for the boxes of a scene.
+	void Reset(int boxCount);
 	void MarkMoved(int index)
 	{
-		if (index >= int(moved_.size()))
-		{
-			moved_.resize(size_t(index) + 1, 0);
-		}
-		if (!moved_[size_t(index)])
-		{
-			moved_[size_t(index)] = 1;
-			movedList_.push_back(index);
-		}
+		broadPairListMarkMoved(&list_, index);
 	}
 	void Add(int a, int b)
 	{
-		fresh_.push_back(Pair{a, b});
+		broadPairListAdd(&list_, a, b);
 	}
 	// Drops the pairs with a moved side, appends the reported ones and forgets the moves.
 	// Returns the number of pairs whose tight boxes overlap.
-	size_t EndFrame(const std::vector<Box>& boxes);
+	size_t EndFrame(const View<Box>& boxes)
+	{
+		return broadPairListEndFrame(&list_, boxes.data);
+	}
 	size_t Bytes() const
 	{
-		return (pairs_.capacity() + fresh_.capacity()) * sizeof(Pair) + moved_.capacity() +
-			   movedList_.capacity() * sizeof(int);
+		return broadPairListBytes(&list_);
 	}
 
   private:
-	struct Pair
-	{
-		int a, b;
-	};
-	std::vector<Pair> pairs_, fresh_;
-	std::vector<uint8_t> moved_;
-	std::vector<int> movedList_;
+	BroadPairList list_ = {};
 };
 
 struct FrameCounts

@@ -95,6 +95,7 @@ class CollideAdapter : public Adapter
 		dim_ = scene.dim;
 		Box world = scene.WorldBounds();
 		proxies_.resize(size_t(scene.n));
+		pairs_.Reset(scene.n);
 		if (dim_ == 3)
 		{
 			cd3BroadPhaseDef def = cd3DefaultBroadPhaseDef();

@@ -330,6 +330,7 @@ class Box2dAdapter : public Adapter
 	void Build(const Scene& scene) override
 	{
 		proxies_.resize(size_t(scene.n));
+		pairs_.Reset(scene.n);
 		for (int i = 0; i < scene.n; ++i)
 		{
 			proxies_[size_t(i)] =
