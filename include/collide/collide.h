@@ -12,5 +12,6 @@
 #include "collide/query3.h"
 #include "collide/manifold2.h"
 #include "collide/broad.h"
+#include "collide/cast.h"
 
 #endif

@@ -1,0 +1,147 @@
+/* 2D shape cast and time of impact: the shape moves of cast.inc. */
+#include "collide/cast.h"
+
+#include "support2.h"
+
+#include <string.h>
+
+#define CD_DIM(name) cd2##name
+#define CAST_VEC cd2Vec
+#define CAST_SHAPE cd2Shape
+#define CAST_SWEEP cd2Sweep
+#define CAST_TRANSFORM cd2Transform
+#define CAST_OUTPUT cd2CastOutput
+
+static cdReal MaxAbs(cd2Vec v)
+{
+	return cdMax(cdAbs(v.x), cdAbs(v.y));
+}
+
+static cd2Shape TranslateShape(const cd2Shape* shape, cd2Vec d)
+{
+	cd2Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = cd2Add(s.circle.center, d);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			s.capsule.p1 = cd2Add(s.capsule.p1, d);
+			s.capsule.p2 = cd2Add(s.capsule.p2, d);
+			break;
+		case CD2_SHAPE_AABB:
+			s.aabb.min = cd2Add(s.aabb.min, d);
+			s.aabb.max = cd2Add(s.aabb.max, d);
+			break;
+		case CD2_SHAPE_BOX:
+			s.box.center = cd2Add(s.box.center, d);
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < s.polygon.count; ++i)
+			{
+				s.polygon.vertices[i] = cd2Add(s.polygon.vertices[i], d);
+			}
+			s.polygon.centroid = cd2Add(s.polygon.centroid, d);
+			break;
+		case CD2_SHAPE_SEGMENT:
+			s.segment.p1 = cd2Add(s.segment.p1, d);
+			s.segment.p2 = cd2Add(s.segment.p2, d);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+/* A turned AABB is a box. */
+static cd2Shape PlaceShape(const cd2Shape* shape, cd2Transform xf)
+{
+	cd2Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = cd2TransformPoint(xf, s.circle.center);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			s.capsule.p1 = cd2TransformPoint(xf, s.capsule.p1);
+			s.capsule.p2 = cd2TransformPoint(xf, s.capsule.p2);
+			break;
+		case CD2_SHAPE_AABB:
+		{
+			cd2Box box = {cd2TransformPoint(xf, cd2AabbCenter(shape->aabb)), cd2AabbHalfExtents(shape->aabb),
+						  xf.q};
+			s = cd2MakeBoxShape(box);
+			break;
+		}
+		case CD2_SHAPE_BOX:
+			s.box.center = cd2TransformPoint(xf, s.box.center);
+			s.box.rotation = cd2MulRot(xf.q, s.box.rotation);
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < s.polygon.count; ++i)
+			{
+				s.polygon.vertices[i] = cd2TransformPoint(xf, s.polygon.vertices[i]);
+				s.polygon.normals[i] = cd2RotateVector(xf.q, s.polygon.normals[i]);
+			}
+			s.polygon.centroid = cd2TransformPoint(xf, s.polygon.centroid);
+			break;
+		case CD2_SHAPE_SEGMENT:
+			s.segment.p1 = cd2TransformPoint(xf, s.segment.p1);
+			s.segment.p2 = cd2TransformPoint(xf, s.segment.p2);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+static bool ShapeExtent(const cd2Shape* shape, cd2Vec center, cdReal* extent)
+{
+	cd2Core core;
+	*extent = CD_R(0.0);
+	if (!cd2MakeCore(shape, &core))
+	{
+		return true; /* unknown type: cd2Distance asserts on it */
+	}
+	cdReal farthestSquared = CD_R(0.0);
+	for (int i = 0; i < core.count; ++i)
+	{
+		farthestSquared = cdMax(farthestSquared, cd2VecDistanceSquared(core.points[i], center));
+	}
+	*extent = cdSqrt(farthestSquared) + core.radius;
+	return true;
+}
+
+typedef struct SweepMotion
+{
+	cd2Vec localCenter, center0, velocity;
+	cdReal angle0, angularVelocity, angularSpeed;
+} SweepMotion;
+
+static SweepMotion MakeMotion(const cd2Sweep* sweep)
+{
+	SweepMotion m;
+	m.localCenter = sweep->localCenter;
+	m.center0 = sweep->center0;
+	m.velocity = cd2Sub(sweep->center1, sweep->center0);
+	m.angle0 = sweep->angle0;
+	m.angularVelocity = sweep->angle1 - sweep->angle0;
+	m.angularSpeed = cdAbs(m.angularVelocity);
+	return m;
+}
+
+static cd2Transform MotionTransform(const SweepMotion* m, cdReal t)
+{
+	cd2Transform xf;
+	xf.q = cd2MakeRot(m->angle0 + t * m->angularVelocity);
+	xf.p = cd2Sub(cd2MulAdd(m->center0, t, m->velocity), cd2RotateVector(xf.q, m->localCenter));
+	return xf;
+}
+
+cd2Transform cd2GetSweepTransform(const cd2Sweep* sweep, cdReal t)
+{
+	SweepMotion m = MakeMotion(sweep);
+	return MotionTransform(&m, t);
+}
+
+#include "cast.inc"

@@ -1,0 +1,193 @@
+/* 3D shape cast and time of impact: the shape moves of cast.inc. */
+#include "collide/cast.h"
+
+#include "support3.h"
+
+#include <string.h>
+
+#define CD_DIM(name) cd3##name
+#define CAST_VEC cd3Vec
+#define CAST_SHAPE cd3Shape
+#define CAST_SWEEP cd3Sweep
+#define CAST_TRANSFORM cd3Transform
+#define CAST_OUTPUT cd3CastOutput
+
+static cdReal MaxAbs(cd3Vec v)
+{
+	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+}
+
+static cd3Shape TranslateShape(const cd3Shape* shape, cd3Vec d)
+{
+	cd3Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			s.sphere.center = cd3Add(s.sphere.center, d);
+			break;
+		case CD3_SHAPE_CAPSULE:
+			s.capsule.p1 = cd3Add(s.capsule.p1, d);
+			s.capsule.p2 = cd3Add(s.capsule.p2, d);
+			break;
+		case CD3_SHAPE_AABB:
+			s.aabb.min = cd3Add(s.aabb.min, d);
+			s.aabb.max = cd3Add(s.aabb.max, d);
+			break;
+		case CD3_SHAPE_BOX:
+			s.box.center = cd3Add(s.box.center, d);
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			s.triangle.a = cd3Add(s.triangle.a, d);
+			s.triangle.b = cd3Add(s.triangle.b, d);
+			s.triangle.c = cd3Add(s.triangle.c, d);
+			break;
+		case CD3_SHAPE_PLANE:
+			s.plane.offset += cd3Dot(s.plane.normal, d);
+			break;
+		case CD3_SHAPE_SEGMENT:
+			s.segment.p1 = cd3Add(s.segment.p1, d);
+			s.segment.p2 = cd3Add(s.segment.p2, d);
+			break;
+		case CD3_SHAPE_HULL:
+			s.hull.transform.p = cd3Add(s.hull.transform.p, d);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+/* A turned AABB is a box. */
+static cd3Shape PlaceShape(const cd3Shape* shape, cd3Transform xf)
+{
+	cd3Shape s = *shape;
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			s.sphere.center = cd3TransformPoint(xf, s.sphere.center);
+			break;
+		case CD3_SHAPE_CAPSULE:
+			s.capsule.p1 = cd3TransformPoint(xf, s.capsule.p1);
+			s.capsule.p2 = cd3TransformPoint(xf, s.capsule.p2);
+			break;
+		case CD3_SHAPE_AABB:
+		{
+			cd3Box box = {cd3TransformPoint(xf, cd3AabbCenter(shape->aabb)), cd3AabbHalfExtents(shape->aabb),
+						  xf.q};
+			s = cd3MakeBoxShape(box);
+			break;
+		}
+		case CD3_SHAPE_BOX:
+			s.box.center = cd3TransformPoint(xf, s.box.center);
+			s.box.rotation = cd3NormalizeQuat(cd3MulQuat(xf.q, s.box.rotation));
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			s.triangle.a = cd3TransformPoint(xf, s.triangle.a);
+			s.triangle.b = cd3TransformPoint(xf, s.triangle.b);
+			s.triangle.c = cd3TransformPoint(xf, s.triangle.c);
+			break;
+		case CD3_SHAPE_PLANE:
+			s.plane.normal = cd3RotateVector(xf.q, s.plane.normal);
+			s.plane.offset += cd3Dot(s.plane.normal, xf.p);
+			break;
+		case CD3_SHAPE_SEGMENT:
+			s.segment.p1 = cd3TransformPoint(xf, s.segment.p1);
+			s.segment.p2 = cd3TransformPoint(xf, s.segment.p2);
+			break;
+		case CD3_SHAPE_HULL:
+			s.hull.transform = cd3MulTransforms(xf, s.hull.transform);
+			s.hull.transform.q = cd3NormalizeQuat(s.hull.transform.q);
+			break;
+		default:
+			break;
+	}
+	return s;
+}
+
+static bool ShapeExtent(const cd3Shape* shape, cd3Vec center, cdReal* extent)
+{
+	*extent = CD_R(0.0);
+	if (shape->type == CD3_SHAPE_PLANE)
+	{
+		return false;
+	}
+	cd3Core core;
+	if (!cd3MakeCore(shape, &core))
+	{
+		return true; /* unknown type: cd3Distance asserts on it */
+	}
+	cdReal farthestSquared = CD_R(0.0);
+	for (int i = 0; i < core.count; ++i)
+	{
+		farthestSquared = cdMax(farthestSquared, cd3VecDistanceSquared(cd3CorePoint(&core, i), center));
+	}
+	*extent = cdSqrt(farthestSquared) + core.radius;
+	return true;
+}
+
+/* The rotation q(t) = rotation0 * exp(t * angle * axis / 2): constant angular speed `angle`. */
+typedef struct SweepMotion
+{
+	cd3Vec localCenter, center0, velocity;
+	cd3Quat rotation0;
+	cd3Vec axis; /* in the body frame */
+	cdReal angle, angularSpeed;
+} SweepMotion;
+
+static SweepMotion MakeMotion(const cd3Sweep* sweep)
+{
+	SweepMotion m;
+	m.localCenter = sweep->localCenter;
+	m.center0 = sweep->center0;
+	m.velocity = cd3Sub(sweep->center1, sweep->center0);
+	m.rotation0 = sweep->rotation0;
+	cd3Quat relative = cd3InvMulQuat(sweep->rotation0, sweep->rotation1);
+	if (relative.w < CD_R(0.0)) /* the shorter arc */
+	{
+		relative = cd3MakeQuat(-relative.x, -relative.y, -relative.z, -relative.w);
+	}
+	cd3Vec v = cd3MakeVec(relative.x, relative.y, relative.z);
+	cdReal sine;
+	m.axis = cd3GetLengthAndNormalize(&sine, v);
+#if CD_DOUBLE
+	m.angle = 2.0 * atan2(sine, relative.w);
+#else
+	m.angle = 2.0f * atan2f(sine, relative.w);
+#endif
+	if (cd3LengthSquared(m.axis) == CD_R(0.0))
+	{
+		m.angle = CD_R(0.0);
+	}
+	m.angularSpeed = m.angle;
+	return m;
+}
+
+static cd3Transform MotionTransform(const SweepMotion* m, cdReal t)
+{
+	cd3Transform xf;
+	if (m->angle > CD_R(0.0))
+	{
+		cdReal half = CD_R(0.5) * t * m->angle;
+#if CD_DOUBLE
+		cdReal s = sin(half), c = cos(half);
+#else
+		cdReal s = sinf(half), c = cosf(half);
+#endif
+		cd3Quat step = cd3MakeQuat(s * m->axis.x, s * m->axis.y, s * m->axis.z, c);
+		xf.q = cd3NormalizeQuat(cd3MulQuat(m->rotation0, step));
+	}
+	else
+	{
+		xf.q = m->rotation0;
+	}
+	xf.p = cd3Sub(cd3MulAdd(m->center0, t, m->velocity), cd3RotateVector(xf.q, m->localCenter));
+	return xf;
+}
+
+cd3Transform cd3GetSweepTransform(const cd3Sweep* sweep, cdReal t)
+{
+	SweepMotion m = MakeMotion(sweep);
+	return MotionTransform(&m, t);
+}
+
+#include "cast.inc"
