@@ -902,6 +902,109 @@ static void TestExtremeScales(void)
 	}
 }
 
+/* GJK once dropped a support point whose gain was below the resolution of the squared distances
+ * (a far vertex, or a face-normal direction on which a thin box's four far corners tie): the
+ * simplex came back unchanged and the search stalled far from the answer. Exact cases from the
+ * fuzzer (fuzz_query3), then random thin boxes against points just off their thin side and long
+ * segments at the 1e9 scale, all against the brute-force double reference. */
+static void CheckAgainstReference(const cd3Shape* a, const cd3Shape* b, double tolerance, const char* what)
+{
+	double expected = RefDistance(a, b);
+	cd3ClosestPoints r = cd3Distance(a, b);
+	cd3ClosestPoints s = cd3Distance(b, a);
+	bool ok =
+		fabs((double)r.distance - expected) <= tolerance && fabs((double)s.distance - expected) <= tolerance;
+	TEST_CHECKF(ok, "%s: distance %.9g and %.9g (swapped), reference %.9g, tolerance %.3g", what,
+				(double)r.distance, (double)s.distance, expected, tolerance);
+	if (!ok)
+	{
+		PrintShape("a", a);
+		PrintShape("b", b);
+	}
+}
+
+static void TestThinBoxesAndLongSegments(void)
+{
+	/* The box is 2.4e-4 thick and 2 wide; the point is 9.88e-5 off its thin side (GJK said 3.4e-4,
+	 * the distance to the far side). */
+	cd3Quat tilted = cd3NormalizeQuat(
+		cd3MakeQuat(CD_R(-1.0), CD_R(-0.0001175), CD_R(-0.000115000003), CD_R(-0.000125000006)));
+	cd3Shape thin = Box(V(-0.000103749997, -0.0001175, -1.0), V(0.000121249999, 1.0, 1.0), tilted);
+	cd3Shape point = Sphere(CD_R(-0.00011375), CD_R(7.37500013e-05), CD_R(0.0), CD_R(0.0));
+	double expected = RefDistance(&thin, &point);
+	TEST_CHECKF(expected > 9.8e-5 && expected < 9.95e-5, "reference %.9g", expected);
+	CheckAgainstReference(&thin, &point, 64.0 * (double)CD_REAL_EPSILON, "fuzzer's thin box and point");
+
+	/* Two segments, one reaching 1e9 away: the closest points are the near end of the long one
+	 * and a point of the short one, 147765 apart (GJK said 248470). The documented accuracy is
+	 * 16 epsilon of the coordinates. */
+	cd3Shape longSegment = Segment(V(-107500.0, 1e9, 1e9), V(-112500.0, -125000.0, 22500.0));
+	cd3Shape shortSegment = Segment(V(22500.0, 22500.0, -125000.0), V(-125000.0, -125000.0, -125000.0));
+	expected = RefDistance(&longSegment, &shortSegment);
+	TEST_CHECKF(expected > 147000.0 && expected < 148500.0, "reference %.9g", expected);
+	CheckAgainstReference(&longSegment, &shortSegment, 16.0 * (double)CD_REAL_EPSILON * 1e9,
+						  "fuzzer's long segments");
+
+	TestRng rng = TestRngMake(0x6a6b3d07u);
+	for (int i = 0; i < 2000; ++i)
+	{
+		/* A box 1e-4..1e-3 thick and about 1 wide, turned at random, and a point or small sphere
+		 * up to 1e-3 beyond one of its thin sides, anywhere across it. */
+		double thickness = pow(10.0, TestRngRange(&rng, -4.0, -3.0));
+		/* Turned at random, or (half the time) by a quarter or half turn tilted by up to 1e-3:
+		 * the search direction is then close to the axes, where corners tie. */
+		cd3Quat q = RandomQuat(&rng);
+		if (TestRngInt(&rng, 2) == 0)
+		{
+			static const cdReal turns[6][4] = {{1, 0, 0, 0},
+											   {0, 1, 0, 0},
+											   {0, 0, 1, 0},
+											   {0, 0, 0, 1},
+											   {CD_R(0.70710678), 0, 0, CD_R(0.70710678)},
+											   {0, CD_R(0.70710678), 0, CD_R(0.70710678)}};
+			const cdReal* turn = turns[TestRngInt(&rng, 6)];
+			q = cd3NormalizeQuat(cd3MakeQuat(
+				turn[0] + RandomReal(&rng, -1e-3, 1e-3), turn[1] + RandomReal(&rng, -1e-3, 1e-3),
+				turn[2] + RandomReal(&rng, -1e-3, 1e-3), turn[3] + RandomReal(&rng, -1e-3, 1e-3)));
+		}
+		cd3Vec half = cd3MakeVec((cdReal)thickness, RandomReal(&rng, 0.5, 1.5), RandomReal(&rng, 0.5, 1.5));
+		cd3Shape box = Box(RandomVec(&rng, 1.0), half, q);
+		double side = TestRngInt(&rng, 2) == 0 ? -1.0 : 1.0;
+		/* Across the side, and half the time level with one of its edges (where the search
+		 * approached from the far side and stalled). */
+		double across = TestRngInt(&rng, 2) == 0 ? TestRngRange(&rng, -1.0, 1.0)
+												 : (TestRngInt(&rng, 2) == 0 ? -1.0 : 1.0);
+		cd3Vec local = cd3MakeVec((cdReal)(side * (thickness + TestRngRange(&rng, 0.0, 1e-3))),
+								  (cdReal)(across * (double)half.y),
+								  (cdReal)(TestRngRange(&rng, -1.2, 1.2) * (double)half.z));
+		cd3Vec p = cd3Add(box.box.center, cd3RotateVector(q, local));
+		cdReal radius = TestRngInt(&rng, 2) == 0 ? CD_R(0.0) : (cdReal)TestRngRange(&rng, 0.0, 1e-4);
+		cd3Shape ball = Sphere(p.x, p.y, p.z, radius);
+		CheckAgainstReference(&box, &ball, 64.0 * (double)CD_REAL_EPSILON * 4.0, "thin box and ball");
+
+		/* A segment from near the origin to about 1e9 away (on the axes or diagonals, as the
+		 * fuzzer's lattice puts it), against one nearby, all on a lattice of step 2500. The
+		 * documented accuracy: 16 epsilon of the largest coordinate. */
+		cdReal lattice[9];
+		for (int k = 0; k < 9; ++k)
+		{
+			lattice[k] = (cdReal)(2500 * (TestRngInt(&rng, 101) - 50));
+		}
+		cdReal far[3];
+		for (int k = 0; k < 3; ++k)
+		{
+			int choice = TestRngInt(&rng, 3);
+			far[k] = choice == 0 ? CD_R(0.0) : (choice == 1 ? CD_R(1e9) : CD_R(-1e9));
+		}
+		far[0] = far[0] == CD_R(0.0) && far[1] == CD_R(0.0) && far[2] == CD_R(0.0) ? CD_R(1e9) : far[0];
+		cd3Shape reaching = Segment(cd3MakeVec(far[0] + lattice[0], far[1] + lattice[1], far[2]),
+									cd3MakeVec(lattice[2], lattice[3], lattice[4]));
+		cd3Shape nearby = Segment(cd3MakeVec(lattice[5], lattice[6], lattice[7]),
+								  cd3MakeVec(lattice[8], lattice[0], lattice[3]));
+		CheckAgainstReference(&reaching, &nearby, 16.0 * (double)CD_REAL_EPSILON * 1.0002e9, "long segments");
+	}
+}
+
 /* cd3DistanceWithStatus reports GJK's work and gives the same answer as cd3Distance. */
 static void TestDistanceStatus(void)
 {
@@ -937,6 +1040,7 @@ int main(void)
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestExtremeScales);
+	TEST_RUN(TestThinBoxesAndLongSegments);
 	TEST_RUN(TestDistanceStatus);
 	return TEST_SUMMARY();
 }

@@ -23,8 +23,13 @@
 #define GJK_DEGENERATE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
 
 /* The origin counts as touching the simplex when the closest point is within this many
- * epsilons of the simplex's own size: below it the distance is round-off. */
+ * epsilons of the largest coordinate of its support points: below it the distance is round-off. */
 #define GJK_TOUCH_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+static cdReal MaxAbsComponent(cd3Vec v)
+{
+	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+}
 
 typedef struct GjkVertex
 {
@@ -73,7 +78,41 @@ static cd3Vec Combine(const cd3Vec* w, const cdReal* l, int count)
 	return v;
 }
 
-/* Barycentric coordinates of the point of triangle w[0..2] closest to the origin. */
+/* Among candidate sub-simplices, the one whose closest point to the origin is taken. In exact
+ * arithmetic a support point that passed the progress test (its support plane below |v|) always
+ * belongs to the next reduced simplex: the old simplex's closest point is v, so any closer point
+ * needs the new vertex. In floating point the gain can be below the resolution of the distances
+ * (a far new vertex, a thin shape whose face-normal support ties between corners), and a plain
+ * "smallest distance" choice then falls back to the old sub-simplex: GJK sees the same simplex
+ * and the same direction again and stalls far from the answer. So a candidate that gives the
+ * newest vertex (the last one) a positive weight wins unless it is farther by more than the
+ * round-off of these distances, GJK_TIE_TOLERANCE on the unit-scaled vertices. */
+#define GJK_TIE_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+
+typedef struct SubSimplexChoice
+{
+	cdReal distanceSquared;
+	bool keepsNewest;
+	bool found;
+} SubSimplexChoice;
+
+static bool IsBetterSubSimplex(const SubSimplexChoice* best, cdReal distanceSquared, bool keepsNewest)
+{
+	if (!best->found)
+	{
+		return true;
+	}
+	if (keepsNewest == best->keepsNewest)
+	{
+		return distanceSquared < best->distanceSquared;
+	}
+	cdReal distance = cdSqrt(distanceSquared), bestDistance = cdSqrt(best->distanceSquared);
+	return keepsNewest ? distance <= bestDistance + GJK_TIE_TOLERANCE
+					   : distance + GJK_TIE_TOLERANCE < bestDistance;
+}
+
+/* Barycentric coordinates of the point of triangle w[0..2] closest to the origin; w[2] is the
+ * newest vertex. */
 static void SolveTriangle(const cd3Vec* w, cdReal* l)
 {
 	cd3Vec e1 = cd3Sub(w[1], w[0]);
@@ -94,17 +133,22 @@ static void SolveTriangle(const cd3Vec* w, cdReal* l)
 		}
 	}
 
-	/* Outside the face (or a flat triangle): the closest point lies on an edge. */
-	cdReal bestDistanceSquared = CD_REAL_MAX;
-	for (int i = 0; i < 3; ++i)
+	/* Outside the face (or a flat triangle): the closest point lies on an edge. The edges with
+	 * the newest vertex come first, so that they also win exact ties. */
+	static const int edges[3][2] = {{1, 2}, {2, 0}, {0, 1}};
+	SubSimplexChoice best = {CD_REAL_MAX, false, false};
+	for (int e = 0; e < 3; ++e)
 	{
-		int j = (i + 1) % 3, k = (i + 2) % 3;
+		int i = edges[e][0], j = edges[e][1], k = 3 - i - j;
 		cdReal li, lj;
 		SolveSegment(w[i], w[j], &li, &lj);
 		cdReal distanceSquared = cd3LengthSquared(cd3Add(cd3Scale(li, w[i]), cd3Scale(lj, w[j])));
-		if (distanceSquared < bestDistanceSquared)
+		bool keepsNewest = (i == 2 && li > CD_R(0.0)) || (j == 2 && lj > CD_R(0.0));
+		if (IsBetterSubSimplex(&best, distanceSquared, keepsNewest))
 		{
-			bestDistanceSquared = distanceSquared;
+			best.distanceSquared = distanceSquared;
+			best.keepsNewest = keepsNewest;
+			best.found = true;
 			l[i] = li;
 			l[j] = lj;
 			l[k] = CD_R(0.0);
@@ -138,18 +182,22 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 		}
 	}
 
-	/* Outside (or flat): the closest point lies on a face. */
-	static const int faces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
-	cdReal bestDistanceSquared = CD_REAL_MAX;
+	/* Outside (or flat): the closest point lies on a face. The faces list the newest vertex, 3,
+	 * last (SolveTriangle's newest) and come before the old face {0, 1, 2}. */
+	static const int faces[4][3] = {{1, 2, 3}, {2, 0, 3}, {0, 1, 3}, {0, 1, 2}};
+	SubSimplexChoice best = {CD_REAL_MAX, false, false};
 	for (int f = 0; f < 4; ++f)
 	{
 		cd3Vec face[3] = {w[faces[f][0]], w[faces[f][1]], w[faces[f][2]]};
 		cdReal faceLambda[3];
 		SolveTriangle(face, faceLambda);
 		cdReal distanceSquared = cd3LengthSquared(Combine(face, faceLambda, 3));
-		if (distanceSquared < bestDistanceSquared)
+		bool keepsNewest = faces[f][2] == 3 && faceLambda[2] > CD_R(0.0);
+		if (IsBetterSubSimplex(&best, distanceSquared, keepsNewest))
 		{
-			bestDistanceSquared = distanceSquared;
+			best.distanceSquared = distanceSquared;
+			best.keepsNewest = keepsNewest;
+			best.found = true;
 			for (int i = 0; i < 4; ++i)
 			{
 				l[i] = CD_R(0.0);
@@ -304,10 +352,13 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* 
 		}
 		cd3Vec v = SimplexPoint(&simplex);
 		cdReal distanceSquared = cd3LengthSquared(v);
+		/* The largest coordinate of the support points, as the documented tolerance reads (16
+		 * epsilon of the largest coordinate involved): |w| = |a - b| can be 2 sqrt(3) times
+		 * larger and would call shapes that far apart touching. */
 		cdReal size = CD_R(0.0);
 		for (int i = 0; i < simplex.count; ++i)
 		{
-			size = cdMax(size, cd3Length(simplex.v[i].w));
+			size = cdMax(size, cdMax(MaxAbsComponent(simplex.v[i].a), MaxAbsComponent(simplex.v[i].b)));
 		}
 		cdReal touch = GJK_TOUCH_TOLERANCE * size;
 		if (distanceSquared <= touch * touch)
