@@ -11,6 +11,7 @@
 #include "collide/query2.h"
 #include "collide/query3.h"
 #include "collide/manifold2.h"
+#include "collide/manifold3.h"
 #include "collide/broad.h"
 #include "collide/cast.h"
 

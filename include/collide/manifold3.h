@@ -1,0 +1,81 @@
+/* collide: 3D contact manifolds between spheres, capsules, boxes, convex hulls and triangles.
+ *
+ * Every function takes its shapes in world space (like the rest of the query API) and a
+ * speculative distance (>= 0): contact points whose surfaces are still apart by up to that
+ * distance are reported with a positive separation; points farther apart are dropped. The
+ * manifold's normal is a unit vector pointing from shape A (the first argument) to shape B. Each
+ * point lies midway between the two surfaces: point - separation/2 * normal is on A's surface and
+ * point + separation/2 * normal on B's. A pair with pointCount 0 has no contact (its normal is
+ * zero). At most 4 points: a larger clipped polygon is reduced to its deepest point and the points
+ * that keep the most area.
+ *
+ * Depth: for penetrating pairs the smallest separation is minus the penetration depth, found by
+ * the separating axis test (face normals and the edge pairs that form faces of the Minkowski
+ * difference), which is exact for polytopes. The reference face is chosen with a small bias for
+ * stability from frame to frame (A's face over B's, faces over edges) within 1e-3 of the shapes'
+ * size, so the reported depth may exceed the exact one by that much at a tie. For separated pairs
+ * the smallest separation is the distance (cd3Distance).
+ *
+ * Triangles are the two-sided surface of cd3Triangle (not solid). Triangle against triangle is
+ * not provided (two flat shapes have no interior to resolve). Functions name their shapes in the
+ * order Sphere, Capsule, Box, Hull, Triangle; cd3Collide takes tagged shapes in either order. */
+#ifndef COLLIDE_MANIFOLD3_H
+#define COLLIDE_MANIFOLD3_H
+
+#include "collide/query3.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct cd3ManifoldPoint
+{
+	cd3Vec point;	   /* world, midway between the surfaces */
+	cdReal separation; /* negative when penetrating */
+	uint32_t id;	   /* feature id: the same while the same features touch (for warm starting) */
+} cd3ManifoldPoint;
+
+typedef struct cd3Manifold
+{
+	cd3Vec normal; /* from A to B, unit (zero when pointCount is 0) */
+	cd3ManifoldPoint points[4];
+	int pointCount;
+} cd3Manifold;
+
+/* Feature ids of face contacts between polytopes pack (reference face & 0xff) | (incident face &
+ * 0xff) << 8 | (the two clip lines through the point, 7 bits each) << 16, with CD3_FEATURE_FLIP
+ * when the reference face belongs to B. Edge-edge contacts are CD3_FEATURE_EDGES | (edge of A &
+ * 0x7fff) | (edge of B & 0x7fff) << 15. Contacts of spheres and capsules use the face or edge of
+ * the other shape and the capsule end. */
+#define CD3_FEATURE_FLIP (1u << 31)
+#define CD3_FEATURE_EDGES (1u << 30)
+
+CD_API cd3Manifold cd3CollideSphereSphere(cd3Sphere a, cd3Sphere b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereCapsule(cd3Sphere a, cd3Capsule b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereBox(cd3Sphere a, cd3Box b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereHull(cd3Sphere a, cd3HullShape b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereTriangle(cd3Sphere a, cd3Triangle b, cdReal speculativeDistance);
+/* Up to 2 points when the capsules are parallel and their segments overlap along the axis. */
+CD_API cd3Manifold cd3CollideCapsuleCapsule(cd3Capsule a, cd3Capsule b, cdReal speculativeDistance);
+/* 2 points when the capsule lies on a face (its segment clipped to the face's side planes). */
+CD_API cd3Manifold cd3CollideCapsuleBox(cd3Capsule a, cd3Box b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleHull(cd3Capsule a, cd3HullShape b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleTriangle(cd3Capsule a, cd3Triangle b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxTriangle(cd3Box a, cd3Triangle b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideHullHull(cd3HullShape a, cd3HullShape b, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance);
+
+/* Any two tagged shapes among sphere, capsule, AABB (as a box), box, hull and triangle, in either
+ * order. Shapes of different kinds run the pair function in the order above and flip the normal
+ * when a and b were swapped, so cd3Collide(b, a) reports the same points, separations and ids with
+ * the opposite normal. Two shapes of the same kind run in the given order. Unsupported pairs
+ * (planes, segments, triangle-triangle) return an empty manifold. */
+CD_API cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeDistance);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

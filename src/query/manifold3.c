@@ -1,0 +1,818 @@
+/* collide: 3D contact manifolds.
+ *
+ * Two routines cover the pairs:
+ * - polytope against polytope (boxes, hulls, triangles): the separating axis test picks the
+ *   reference face (A's unless B's separates noticeably more) or an edge pair (only when it
+ *   separates noticeably more than both faces, so the choice does not flicker). A face contact
+ *   clips the incident face (the other polytope's face most anti-parallel to the reference
+ *   normal) against the reference face's side planes (Sutherland-Hodgman), keeps the points below
+ *   the reference face plus the speculative distance and reduces them to 4; an edge contact is
+ *   one point at the closest points of the two edges. When the polytopes are apart and no SAT
+ *   axis realizes their distance (closest features vertex-vertex or vertex-edge), the GJK closest
+ *   points give one point along the gap.
+ * - rounded core (sphere: a point, capsule: a segment) against a polytope: GJK between the core
+ *   and the polytope when the core is outside (normal along the closest points); when the core
+ *   touches or enters the polytope, the separating axis test over the polytope's faces and the
+ *   segment-edge crosses. A capsule parallel to the contact face gets 2 points: its segment
+ *   clipped to the face's side planes.
+ * Sphere and capsule pairs among themselves are closed-form. Points are reported midway between
+ * the surfaces; the normal points from A to B. */
+#include "collide/manifold3.h"
+
+#include "sat3.h"
+
+/* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
+ * pair over the faces, only when it separates by this much more. */
+#define FACE_BIAS CD_R(1.0e-3)
+#define EDGE_BIAS CD_R(1.0e-3)
+/* A separated pair whose best SAT separation is within this fraction of the size of the GJK
+ * distance is a face or edge contact; otherwise the closest features are vertices. */
+#define REALIZED_TOLERANCE CD_R(1.0e-4)
+/* A capsule counts as lying on a face when the sine of its tilt is below this: the clipped
+ * points are then on the capsule's surface within 5e-5 of its radius. */
+#define PARALLEL_CAPSULE CD_R(1.0e-2)
+/* The closest-point normal is aligned with a face when their cosine exceeds this. */
+#define FACE_ALIGNED CD_R(0.9999)
+
+/* Clip buffers: the incident face's vertices plus one per reference side. Faces of more vertices
+ * (cylinder caps of hundreds of segments) lose the vertices beyond the buffer. */
+#define MAX_CLIP 128
+#define SIDE_TAG 64u
+
+#define ID_VERTEX_PAIR 0x3fffffffu
+
+typedef struct ClipVertex
+{
+	cd3Vec p;
+	uint32_t tag; /* the line the polygon follows from this vertex to the next */
+} ClipVertex;
+
+static cd3Manifold EmptyManifold(void)
+{
+	cd3Manifold m;
+	m.normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	for (int i = 0; i < 4; ++i)
+	{
+		m.points[i].point = m.normal;
+		m.points[i].separation = CD_R(0.0);
+		m.points[i].id = 0u;
+	}
+	m.pointCount = 0;
+	return m;
+}
+
+static void AddPoint(cd3Manifold* m, cd3Vec point, cdReal separation, uint32_t id)
+{
+	cd3ManifoldPoint* p = &m->points[m->pointCount++];
+	p->point = point;
+	p->separation = separation;
+	p->id = id;
+}
+
+static cd3Manifold Flipped(cd3Manifold m)
+{
+	m.normal = cd3Neg(m.normal);
+	return m;
+}
+
+/* A unit vector for coincident centres: up. */
+static cd3Vec DefaultNormal(void)
+{
+	return cd3MakeVec(CD_R(0.0), CD_R(1.0), CD_R(0.0));
+}
+
+/* ---- reduction to 4 points ------------------------------------------------------------------ */
+
+typedef struct Candidate
+{
+	cd3Vec point;
+	cdReal separation;
+	uint32_t id;
+} Candidate;
+
+/* Keeps the deepest point, the point farthest from it, the point that makes the largest triangle
+ * with those two, and the point that adds the most area on the other side of the triangle. */
+static int ReducePoints(Candidate* c, int count, cd3Vec normal, Candidate* out)
+{
+	if (count <= 4)
+	{
+		for (int i = 0; i < count; ++i)
+		{
+			out[i] = c[i];
+		}
+		return count;
+	}
+	int i0 = 0;
+	for (int i = 1; i < count; ++i)
+	{
+		if (c[i].separation < c[i0].separation)
+		{
+			i0 = i;
+		}
+	}
+	int i1 = -1;
+	cdReal best = -CD_R(1.0);
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal d = cd3LengthSquared(cd3Sub(c[i].point, c[i0].point));
+		if (i != i0 && d > best)
+		{
+			best = d;
+			i1 = i;
+		}
+	}
+	int i2 = -1;
+	best = -CD_REAL_MAX;
+	cdReal bestSigned = CD_R(0.0);
+	cd3Vec e01 = cd3Sub(c[i1].point, c[i0].point);
+	for (int i = 0; i < count; ++i)
+	{
+		if (i == i0 || i == i1)
+		{
+			continue;
+		}
+		cdReal area = cd3Dot(normal, cd3Cross(e01, cd3Sub(c[i].point, c[i0].point)));
+		if (cdAbs(area) > best)
+		{
+			best = cdAbs(area);
+			bestSigned = area;
+			i2 = i;
+		}
+	}
+	/* The fourth point lies on the other side: it adds the most area to the edges of the
+	 * triangle i0-i1-i2 it faces. */
+	cdReal orientation = bestSigned >= CD_R(0.0) ? CD_R(1.0) : -CD_R(1.0);
+	int i3 = -1;
+	best = -CD_REAL_MAX;
+	int tri[3] = {i0, i1, i2};
+	for (int i = 0; i < count; ++i)
+	{
+		if (i == i0 || i == i1 || i == i2)
+		{
+			continue;
+		}
+		cdReal gain = -CD_REAL_MAX;
+		for (int k = 0; k < 3; ++k)
+		{
+			cd3Vec p = c[tri[k]].point;
+			cd3Vec q = c[tri[(k + 1) % 3]].point;
+			cdReal area = -orientation * cd3Dot(normal, cd3Cross(cd3Sub(q, p), cd3Sub(c[i].point, p)));
+			gain = cdMax(gain, area);
+		}
+		if (gain > best)
+		{
+			best = gain;
+			i3 = i;
+		}
+	}
+	out[0] = c[i0];
+	out[1] = c[i1];
+	out[2] = c[i2];
+	out[3] = c[i3];
+	return 4;
+}
+
+/* ---- polytope against polytope --------------------------------------------------------------- */
+
+static cd3Vec WorldVertex(const cd3Polytope* p, int vertex)
+{
+	return cd3TransformPoint(p->transform, p->vertices[vertex]);
+}
+
+static int IncidentFace(const cd3Polytope* p, cd3Vec worldNormal)
+{
+	cd3Vec local = cd3InvRotateVector(p->transform.q, worldNormal);
+	int best = 0;
+	cdReal lowest = CD_REAL_MAX;
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cdReal d = cd3Dot(p->planes[f].normal, local);
+		if (d < lowest)
+		{
+			lowest = d;
+			best = f;
+		}
+	}
+	return best;
+}
+
+static int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec origin, uint32_t tag,
+					   ClipVertex* out)
+{
+	int n = 0;
+	for (int i = 0; i < count && n + 2 <= MAX_CLIP; ++i)
+	{
+		ClipVertex p = in[i];
+		ClipVertex q = in[(i + 1) % count];
+		cdReal dp = cd3Dot(normal, cd3Sub(p.p, origin));
+		cdReal dq = cd3Dot(normal, cd3Sub(q.p, origin));
+		if (dp <= CD_R(0.0))
+		{
+			out[n++] = p;
+		}
+		if ((dp <= CD_R(0.0)) != (dq <= CD_R(0.0)))
+		{
+			cdReal t = dp / (dp - dq);
+			ClipVertex x;
+			x.p = cd3Lerp(p.p, q.p, t);
+			/* Going out, the polygon follows the side line; coming back in, the rest of p-q. */
+			x.tag = dp <= CD_R(0.0) ? tag : p.tag;
+			out[n++] = x;
+		}
+	}
+	return n;
+}
+
+static uint32_t PackFaceId(int reference, int incident, uint32_t inTag, uint32_t outTag, bool flip)
+{
+	uint32_t id = ((uint32_t)reference & 0xffu) | (((uint32_t)incident & 0xffu) << 8) |
+				  ((inTag & 0x7fu) << 16) | ((outTag & 0x7fu) << 23);
+	return flip ? id | CD3_FEATURE_FLIP : id;
+}
+
+/* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
+static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polytope* inc, bool flip,
+							   cdReal speculativeDistance)
+{
+	cd3Manifold m = EmptyManifold();
+	cd3Plane local = ref->planes[face];
+	cd3Vec n = cd3RotateVector(ref->transform.q, local.normal);
+	cdReal offset = local.offset + cd3Dot(n, ref->transform.p);
+	int incident = IncidentFace(inc, n);
+
+	ClipVertex bufferA[MAX_CLIP], bufferB[MAX_CLIP];
+	int count = 0;
+	int e = inc->faceEdges[incident];
+	do
+	{
+		bufferA[count].p = WorldVertex(inc, inc->edges[e].origin);
+		bufferA[count].tag = (uint32_t)(count < (int)SIDE_TAG - 1 ? count : (int)SIDE_TAG - 1);
+		++count;
+		e = inc->edges[e].next;
+	} while (e != inc->faceEdges[incident] && count < MAX_CLIP / 2);
+
+	ClipVertex* in = bufferA;
+	ClipVertex* out = bufferB;
+	int side = 0;
+	e = ref->faceEdges[face];
+	do
+	{
+		cd3Vec v0 = WorldVertex(ref, ref->edges[e].origin);
+		cd3Vec v1 = WorldVertex(ref, ref->edges[ref->edges[e].next].origin);
+		cd3Vec sideNormal = cd3Cross(cd3Sub(v1, v0), n);
+		uint32_t tag = SIDE_TAG + (uint32_t)(side < (int)SIDE_TAG - 1 ? side : (int)SIDE_TAG - 1);
+		count = ClipToPlane(in, count, sideNormal, v0, tag, out);
+		ClipVertex* t = in;
+		in = out;
+		out = t;
+		++side;
+		e = ref->edges[e].next;
+	} while (e != ref->faceEdges[face] && count > 0);
+
+	Candidate candidates[MAX_CLIP];
+	int kept = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal separation = cd3Dot(n, in[i].p) - offset;
+		if (separation <= speculativeDistance)
+		{
+			candidates[kept].point = cd3MulSub(in[i].p, CD_R(0.5) * separation, n);
+			candidates[kept].separation = separation;
+			candidates[kept].id =
+				PackFaceId(face, incident, in[(i + count - 1) % count].tag, in[i].tag, flip);
+			++kept;
+		}
+	}
+	if (kept == 0)
+	{
+		/* Clipping lost everything (the incident face lies beside the reference face): the
+		 * incident polytope's deepest vertex stands for the contact. */
+		cd3Vec localN = cd3InvRotateVector(inc->transform.q, n);
+		int deepest = 0;
+		for (int i = 1; i < inc->vertexCount; ++i)
+		{
+			if (cd3Dot(localN, inc->vertices[i]) < cd3Dot(localN, inc->vertices[deepest]))
+			{
+				deepest = i;
+			}
+		}
+		cd3Vec q = WorldVertex(inc, deepest);
+		cdReal separation = cd3Dot(n, q) - offset;
+		if (separation > speculativeDistance)
+		{
+			return m;
+		}
+		candidates[0].point = cd3MulSub(q, CD_R(0.5) * separation, n);
+		candidates[0].separation = separation;
+		candidates[0].id = PackFaceId(face, incident, 0x7fu, (uint32_t)deepest, flip);
+		kept = 1;
+	}
+	Candidate reduced[4];
+	int reducedCount = ReducePoints(candidates, kept, n, reduced);
+	for (int i = 0; i < reducedCount; ++i)
+	{
+		AddPoint(&m, reduced[i].point, reduced[i].separation, reduced[i].id);
+	}
+	m.normal = flip ? cd3Neg(n) : n;
+	return m;
+}
+
+static cd3Segment WorldEdge(const cd3Polytope* p, int edge)
+{
+	cd3Segment s;
+	s.p1 = WorldVertex(p, p->edges[edge].origin);
+	s.p2 = WorldVertex(p, p->edges[p->edges[edge].twin].origin);
+	return s;
+}
+
+static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
+{
+	cd3SatResult sat = cd3SatPolytopes(a, b);
+	cdReal separation = cd3SatSeparation(&sat);
+	if (!(separation <= speculativeDistance))
+	{
+		return EmptyManifold();
+	}
+	cdReal size = a->size + b->size;
+	if (separation > CD_R(0.0))
+	{
+		/* The SAT separation only bounds the distance from below: the closest features decide. */
+		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
+		if (cp.distance > speculativeDistance)
+		{
+			return EmptyManifold();
+		}
+		if (cp.distance > separation + REALIZED_TOLERANCE * size)
+		{
+			cd3Manifold m = EmptyManifold();
+			m.normal = cd3Normalize(cd3Sub(cp.pointB, cp.pointA));
+			AddPoint(&m, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5)), cp.distance, ID_VERTEX_PAIR);
+			return m;
+		}
+	}
+	cdReal faceSeparation = sat.faceSeparationA;
+	bool useB =
+		sat.faceA < 0 || (sat.faceB >= 0 && sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size);
+	if (useB)
+	{
+		faceSeparation = sat.faceSeparationB;
+	}
+	if (sat.edgeA >= 0 &&
+		((sat.faceA < 0 && sat.faceB < 0) || sat.edgeSeparation > faceSeparation + EDGE_BIAS * size))
+	{
+		cd3Segment ea = WorldEdge(a, sat.edgeA);
+		cd3Segment eb = WorldEdge(b, sat.edgeB);
+		cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(ea, eb);
+		cd3Manifold m = EmptyManifold();
+		m.normal = cd3Normalize(sat.edgeNormal);
+		uint32_t id =
+			CD3_FEATURE_EDGES | ((uint32_t)sat.edgeA & 0x7fffu) | (((uint32_t)sat.edgeB & 0x7fffu) << 15);
+		AddPoint(&m, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5)), sat.edgeSeparation, id);
+		return m;
+	}
+	if (useB)
+	{
+		return FaceContact(b, sat.faceB, a, true, speculativeDistance);
+	}
+	if (sat.faceA < 0)
+	{
+		return EmptyManifold();
+	}
+	return FaceContact(a, sat.faceA, b, false, speculativeDistance);
+}
+
+/* ---- rounded core against polytope ------------------------------------------------------------ */
+
+/* Clips segment p1-p2 to the side planes of polytope face `face` (world). */
+static bool ClipSegmentToFace(const cd3Polytope* p, int face, cd3Vec n, cd3Vec* p1, cd3Vec* p2)
+{
+	cdReal t0 = CD_R(0.0), t1 = CD_R(1.0);
+	cd3Vec d = cd3Sub(*p2, *p1);
+	int e = p->faceEdges[face];
+	do
+	{
+		cd3Vec v0 = WorldVertex(p, p->edges[e].origin);
+		cd3Vec v1 = WorldVertex(p, p->edges[p->edges[e].next].origin);
+		cd3Vec side = cd3Cross(cd3Sub(v1, v0), n);
+		cdReal start = cd3Dot(side, cd3Sub(*p1, v0));
+		cdReal rate = cd3Dot(side, d);
+		if (rate == CD_R(0.0))
+		{
+			if (start > CD_R(0.0))
+			{
+				return false;
+			}
+		}
+		else
+		{
+			cdReal t = -start / rate;
+			if (rate > CD_R(0.0))
+			{
+				t1 = cdMin(t1, t);
+			}
+			else
+			{
+				t0 = cdMax(t0, t);
+			}
+		}
+		e = p->edges[e].next;
+	} while (e != p->faceEdges[face]);
+	if (t0 > t1)
+	{
+		return false;
+	}
+	cd3Vec start = *p1;
+	*p1 = cd3MulAdd(start, t0, d);
+	*p2 = cd3MulAdd(start, t1, d);
+	return true;
+}
+
+/* Face contact of the core segment p1-p2 (radius r) with face `face` of b; normal -n (world) from
+ * the core to b. Returns false when the segment clips away. */
+static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b, int face,
+							cdReal speculativeDistance, bool twoPoints, cd3Manifold* m)
+{
+	cd3Plane local = b->planes[face];
+	cd3Vec n = cd3RotateVector(b->transform.q, local.normal);
+	cdReal offset = local.offset + cd3Dot(n, b->transform.p);
+	cd3Vec q[2] = {p1, p2};
+	int count = 2;
+	if (twoPoints)
+	{
+		if (!ClipSegmentToFace(b, face, n, &q[0], &q[1]))
+		{
+			return false;
+		}
+	}
+	else
+	{
+		count = 1;
+		if (cd3Dot(n, p2) < cd3Dot(n, p1))
+		{
+			q[0] = p2;
+		}
+	}
+	*m = EmptyManifold();
+	m->normal = cd3Neg(n);
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal separation = cd3Dot(n, q[i]) - offset - r;
+		if (separation <= speculativeDistance)
+		{
+			uint32_t id = ((uint32_t)face & 0xffffu) | ((uint32_t)i << 16);
+			AddPoint(m, cd3MulSub(q[i], r + CD_R(0.5) * separation, n), separation, id);
+		}
+	}
+	return true;
+}
+
+static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b,
+									   cdReal speculativeDistance)
+{
+	cd3Capsule coreCapsule = {p1, p2, CD_R(0.0)};
+	cd3Shape core = cd3MakeCapsuleShape(coreCapsule);
+	cd3ClosestPoints cp = cd3Distance(&core, &b->shape);
+	if (!(cp.distance <= r + speculativeDistance))
+	{
+		return EmptyManifold();
+	}
+	cd3Vec axis = cd3Sub(p2, p1);
+	cdReal axisLength = cd3Length(axis);
+	bool capsule = axisLength > CD_R(0.0);
+	cd3Vec gap = cd3Sub(cp.pointB, cp.pointA);
+	cdReal size = b->size + axisLength + r;
+	cd3Manifold m = EmptyManifold();
+	if (cp.distance > REALIZED_TOLERANCE * size && cd3LengthSquared(gap) > CD_R(0.0))
+	{
+		cd3Vec u = cd3Normalize(gap);
+		if (capsule)
+		{
+			int face = IncidentFace(b, u); /* the face whose normal is closest to -u */
+			cd3Vec n = cd3RotateVector(b->transform.q, b->planes[face].normal);
+			if (cd3Dot(n, u) <= -FACE_ALIGNED && cdAbs(cd3Dot(n, axis)) <= PARALLEL_CAPSULE * axisLength &&
+				CoreFaceContact(p1, p2, r, b, face, speculativeDistance, true, &m) && m.pointCount == 2)
+			{
+				return m;
+			}
+			m = EmptyManifold();
+		}
+		m.normal = u;
+		cdReal separation = cp.distance - r;
+		AddPoint(&m, cd3MulAdd(cp.pointA, CD_R(0.5) * (cp.distance + r), u), separation, ID_VERTEX_PAIR);
+		return m;
+	}
+
+	cd3SatResult sat;
+	cd3SatFeature feature = cd3SatSegmentPolytope(p1, p2, b, &sat);
+	if (feature == CD3_SAT_EDGES && sat.edgeB >= 0 &&
+		(sat.faceB < 0 || sat.edgeSeparation > sat.faceSeparationB + EDGE_BIAS * size))
+	{
+		cd3Segment segment = {p1, p2};
+		cd3ClosestPoints ecp = cd3ClosestPointsSegmentSegment(segment, WorldEdge(b, sat.edgeB));
+		cdReal separation = sat.edgeSeparation - r;
+		if (separation > speculativeDistance)
+		{
+			return m;
+		}
+		m.normal = cd3Normalize(sat.edgeNormal);
+		AddPoint(&m, cd3MulAdd(ecp.pointA, r + CD_R(0.5) * separation, m.normal), separation,
+				 CD3_FEATURE_EDGES | ((uint32_t)sat.edgeB & 0x7fffu));
+		return m;
+	}
+	if (sat.faceB < 0)
+	{
+		/* A degenerate triangle with no axis: the closest points are all there is. */
+		m.normal = DefaultNormal();
+		AddPoint(&m, cp.pointA, -r, ID_VERTEX_PAIR);
+		return m;
+	}
+	cd3Vec n = cd3RotateVector(b->transform.q, b->planes[sat.faceB].normal);
+	bool parallel = capsule && cdAbs(cd3Dot(n, axis)) <= PARALLEL_CAPSULE * axisLength;
+	if (parallel && CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, true, &m) &&
+		m.pointCount > 0)
+	{
+		return m;
+	}
+	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, &m);
+	return m;
+}
+
+/* ---- spheres and capsules ---------------------------------------------------------------------- */
+
+static cd3Manifold CollidePoints(cd3Vec a, cdReal ra, cd3Vec b, cdReal rb, cdReal speculativeDistance,
+								 uint32_t id)
+{
+	cd3Manifold m = EmptyManifold();
+	cdReal reach = ra + rb + speculativeDistance;
+	cd3Vec d = cd3Sub(b, a);
+	if (!(cd3LengthSquared(d) <= reach * reach))
+	{
+		return m;
+	}
+	cdReal distance;
+	cd3Vec n = cd3GetLengthAndNormalize(&distance, d);
+	if (cd3LengthSquared(n) == CD_R(0.0))
+	{
+		n = DefaultNormal();
+		distance = CD_R(0.0);
+	}
+	cdReal separation = distance - ra - rb;
+	m.normal = n;
+	AddPoint(&m, cd3MulAdd(a, ra + CD_R(0.5) * separation, n), separation, id);
+	return m;
+}
+
+cd3Manifold cd3CollideSphereSphere(cd3Sphere a, cd3Sphere b, cdReal speculativeDistance)
+{
+	return CollidePoints(a.center, a.radius, b.center, b.radius, speculativeDistance, 0u);
+}
+
+cd3Manifold cd3CollideSphereCapsule(cd3Sphere a, cd3Capsule b, cdReal speculativeDistance)
+{
+	cd3Segment s = {b.p1, b.p2};
+	return CollidePoints(a.center, a.radius, cd3ClosestPointOnSegment(s, a.center), b.radius,
+						 speculativeDistance, 0u);
+}
+
+cd3Manifold cd3CollideCapsuleCapsule(cd3Capsule a, cd3Capsule b, cdReal speculativeDistance)
+{
+	cd3Segment sa = {a.p1, a.p2};
+	cd3Segment sb = {b.p1, b.p2};
+	cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(sa, sb);
+	cd3Manifold m = CollidePoints(cp.pointA, a.radius, cp.pointB, b.radius, speculativeDistance, 0u);
+	if (m.pointCount == 0)
+	{
+		return m;
+	}
+	cd3Vec da = cd3Sub(a.p2, a.p1);
+	cd3Vec db = cd3Sub(b.p2, b.p1);
+	cdReal la2 = cd3LengthSquared(da), lb2 = cd3LengthSquared(db);
+	cdReal sin2 = cd3LengthSquared(cd3Cross(da, db));
+	if (!(la2 > CD_R(0.0) && lb2 > CD_R(0.0) && sin2 <= CD_R(1.0e-6) * la2 * lb2))
+	{
+		return m;
+	}
+	if (cp.distance == CD_R(0.0))
+	{
+		/* Coincident axes: any direction across them. */
+		m.normal = cd3Normalize(cd3Perpendicular(da));
+	}
+	/* Parallel: B's extent along A's axis, clipped to A's segment. */
+	cdReal t1 = cd3Dot(cd3Sub(b.p1, a.p1), da) / la2;
+	cdReal t2 = cd3Dot(cd3Sub(b.p2, a.p1), da) / la2;
+	cdReal lo = cdMax(CD_R(0.0), cdMin(t1, t2));
+	cdReal hi = cdMin(CD_R(1.0), cdMax(t1, t2));
+	if (!(hi - lo > CD_R(1.0e-3)))
+	{
+		return m;
+	}
+	cd3Manifold two = EmptyManifold();
+	two.normal = m.normal;
+	cdReal ts[2] = {lo, hi};
+	for (int i = 0; i < 2; ++i)
+	{
+		cd3Vec pa = cd3MulAdd(a.p1, ts[i], da);
+		cd3Vec pb = cd3ClosestPointOnSegment(sb, pa);
+		cdReal separation = cd3Dot(two.normal, cd3Sub(pb, pa)) - a.radius - b.radius;
+		if (separation <= speculativeDistance)
+		{
+			AddPoint(&two, cd3MulAdd(pa, a.radius + CD_R(0.5) * separation, two.normal), separation,
+					 (uint32_t)i + 1u);
+		}
+	}
+	return two.pointCount > 0 ? two : m;
+}
+
+/* ---- pair functions --------------------------------------------------------------------------- */
+
+cd3Manifold cd3CollideSphereBox(cd3Sphere a, cd3Box b, cdReal speculativeDistance)
+{
+	cd3Polytope pb;
+	cd3InitBoxPolytope(&pb, b);
+	return CollideCorePolytope(a.center, a.center, a.radius, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideSphereHull(cd3Sphere a, cd3HullShape b, cdReal speculativeDistance)
+{
+	cd3Polytope pb;
+	cd3InitHullPolytope(&pb, b);
+	return CollideCorePolytope(a.center, a.center, a.radius, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideSphereTriangle(cd3Sphere a, cd3Triangle b, cdReal speculativeDistance)
+{
+	cd3Polytope pb;
+	cd3InitTrianglePolytope(&pb, b);
+	return CollideCorePolytope(a.center, a.center, a.radius, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideCapsuleBox(cd3Capsule a, cd3Box b, cdReal speculativeDistance)
+{
+	cd3Polytope pb;
+	cd3InitBoxPolytope(&pb, b);
+	return CollideCorePolytope(a.p1, a.p2, a.radius, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideCapsuleHull(cd3Capsule a, cd3HullShape b, cdReal speculativeDistance)
+{
+	cd3Polytope pb;
+	cd3InitHullPolytope(&pb, b);
+	return CollideCorePolytope(a.p1, a.p2, a.radius, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideCapsuleTriangle(cd3Capsule a, cd3Triangle b, cdReal speculativeDistance)
+{
+	cd3Polytope pb;
+	cd3InitTrianglePolytope(&pb, b);
+	return CollideCorePolytope(a.p1, a.p2, a.radius, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
+{
+	cd3Polytope pa, pb;
+	cd3InitBoxPolytope(&pa, a);
+	cd3InitBoxPolytope(&pb, b);
+	return CollidePolytopes(&pa, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance)
+{
+	cd3Polytope pa, pb;
+	cd3InitBoxPolytope(&pa, a);
+	cd3InitHullPolytope(&pb, b);
+	return CollidePolytopes(&pa, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideBoxTriangle(cd3Box a, cd3Triangle b, cdReal speculativeDistance)
+{
+	cd3Polytope pa, pb;
+	cd3InitBoxPolytope(&pa, a);
+	cd3InitTrianglePolytope(&pb, b);
+	return CollidePolytopes(&pa, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideHullHull(cd3HullShape a, cd3HullShape b, cdReal speculativeDistance)
+{
+	cd3Polytope pa, pb;
+	cd3InitHullPolytope(&pa, a);
+	cd3InitHullPolytope(&pb, b);
+	return CollidePolytopes(&pa, &pb, speculativeDistance);
+}
+
+cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance)
+{
+	cd3Polytope pa, pb;
+	cd3InitHullPolytope(&pa, a);
+	cd3InitTrianglePolytope(&pb, b);
+	return CollidePolytopes(&pa, &pb, speculativeDistance);
+}
+
+/* ---- dispatch --------------------------------------------------------------------------------- */
+
+/* Rank in the manifold order Sphere, Capsule, Box (and AABB), Hull, Triangle; -1: unsupported. */
+static int Rank(cd3ShapeType type)
+{
+	switch (type)
+	{
+		case CD3_SHAPE_SPHERE:
+			return 0;
+		case CD3_SHAPE_CAPSULE:
+			return 1;
+		case CD3_SHAPE_AABB:
+		case CD3_SHAPE_BOX:
+			return 2;
+		case CD3_SHAPE_HULL:
+			return 3;
+		case CD3_SHAPE_TRIANGLE:
+			return 4;
+		default:
+			return -1;
+	}
+}
+
+static cd3Box ShapeBox(const cd3Shape* s)
+{
+	if (s->type == CD3_SHAPE_BOX)
+	{
+		return s->box;
+	}
+	cd3Box box;
+	box.center = cd3AabbCenter(s->aabb);
+	box.halfExtents = cd3AabbHalfExtents(s->aabb);
+	box.rotation = CD3_QUAT_IDENTITY;
+	return box;
+}
+
+static void InitPolytope(cd3Polytope* p, const cd3Shape* s)
+{
+	if (s->type == CD3_SHAPE_HULL)
+	{
+		cd3InitHullPolytope(p, s->hull);
+	}
+	else if (s->type == CD3_SHAPE_TRIANGLE)
+	{
+		cd3InitTrianglePolytope(p, s->triangle);
+	}
+	else
+	{
+		cd3InitBoxPolytope(p, ShapeBox(s));
+	}
+}
+
+cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	int rankA = Rank(a->type), rankB = Rank(b->type);
+	if (rankA < 0 || rankB < 0 || (rankA == 4 && rankB == 4))
+	{
+		return EmptyManifold();
+	}
+	bool swap = rankA > rankB;
+	if (swap)
+	{
+		const cd3Shape* t = a;
+		a = b;
+		b = t;
+		int r = rankA;
+		rankA = rankB;
+		rankB = r;
+	}
+	cd3Manifold m;
+	if (rankB <= 1)
+	{
+		if (rankB == 0)
+		{
+			m = cd3CollideSphereSphere(a->sphere, b->sphere, speculativeDistance);
+		}
+		else if (rankA == 0)
+		{
+			m = cd3CollideSphereCapsule(a->sphere, b->capsule, speculativeDistance);
+		}
+		else
+		{
+			m = cd3CollideCapsuleCapsule(a->capsule, b->capsule, speculativeDistance);
+		}
+	}
+	else
+	{
+		cd3Polytope pb;
+		InitPolytope(&pb, b);
+		if (rankA == 0)
+		{
+			m = CollideCorePolytope(a->sphere.center, a->sphere.center, a->sphere.radius, &pb,
+									speculativeDistance);
+		}
+		else if (rankA == 1)
+		{
+			m = CollideCorePolytope(a->capsule.p1, a->capsule.p2, a->capsule.radius, &pb,
+									speculativeDistance);
+		}
+		else
+		{
+			cd3Polytope pa;
+			InitPolytope(&pa, a);
+			m = CollidePolytopes(&pa, &pb, speculativeDistance);
+		}
+	}
+	return swap ? Flipped(m) : m;
+}

@@ -1,0 +1,333 @@
+/* collide: the separating axis test between polytopes (Gregorius, "The Separating Axis Test
+ * between Convex Polyhedra", GDC 2013). Everything runs in A's local frame: B's vertices are
+ * carried there by the relative transform. Face axes take the support vertex of the other
+ * polytope; edge axes are kept only for the edge pairs whose arcs cross on the Gauss map (the
+ * pairs that build a face of the Minkowski difference), so a pair's separation is simply the
+ * distance between its two edges along the cross product. Flat polytopes (triangles) have
+ * half-circle arcs, so their edge pairs are tested by projecting both polytopes instead. */
+#include "sat3.h"
+
+/* Edge pairs whose cross product is shorter than this fraction of |eA| |eB| are parallel: their
+ * axis is a face normal (or does not exist) and is covered by the face queries. */
+#define PARALLEL_SINE CD_R(1.0e-5)
+
+/* The box's half-edge topology: vertex i is (+-x, +-y, +-z) with bit 0, 1, 2 of i set for +;
+ * faces -x, +x, -y, +y, -z, +z, each with 4 half-edges counter-clockwise from outside. */
+static const cd3HullHalfEdge BOX_EDGES[24] = {
+	{1, 17, 2, 0},	{2, 8, 0, 0},  {3, 20, 4, 0},  {0, 13, 6, 0},  {5, 10, 5, 1}, {6, 19, 1, 1},
+	{7, 15, 3, 1},	{4, 22, 7, 1}, {9, 1, 4, 2},   {10, 16, 0, 2}, {11, 4, 1, 2}, {8, 21, 5, 2},
+	{13, 18, 3, 3}, {14, 3, 2, 3}, {15, 23, 6, 3}, {12, 6, 7, 3},  {17, 9, 1, 4}, {18, 0, 0, 4},
+	{19, 12, 2, 4}, {16, 5, 3, 4}, {21, 2, 6, 5},  {22, 11, 4, 5}, {23, 7, 5, 5}, {20, 14, 7, 5}};
+static const int32_t BOX_FACE_EDGES[6] = {0, 4, 8, 12, 16, 20};
+
+/* Front face a-b-c and back face a-c-b. */
+static const cd3HullHalfEdge TRIANGLE_EDGES[6] = {{1, 3, 0, 0}, {2, 4, 1, 0}, {0, 5, 2, 0},
+												  {5, 0, 1, 1}, {3, 1, 2, 1}, {4, 2, 0, 1}};
+static const int32_t TRIANGLE_FACE_EDGES[2] = {0, 3};
+
+void cd3InitBoxPolytope(cd3Polytope* p, cd3Box box)
+{
+	cd3Vec h = box.halfExtents;
+	for (int i = 0; i < 8; ++i)
+	{
+		p->vertexStorage[i] = cd3MakeVec((i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z);
+	}
+	for (int axis = 0; axis < 3; ++axis)
+	{
+		cd3Vec n = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+		if (axis == 0)
+		{
+			n.x = CD_R(1.0);
+		}
+		else if (axis == 1)
+		{
+			n.y = CD_R(1.0);
+		}
+		else
+		{
+			n.z = CD_R(1.0);
+		}
+		cdReal extent = cd3GetComponent(h, axis);
+		p->planeStorage[2 * axis].normal = cd3Neg(n);
+		p->planeStorage[2 * axis].offset = extent;
+		p->planeStorage[2 * axis + 1].normal = n;
+		p->planeStorage[2 * axis + 1].offset = extent;
+	}
+	p->vertices = p->vertexStorage;
+	p->edges = BOX_EDGES;
+	p->faceEdges = BOX_FACE_EDGES;
+	p->planes = p->planeStorage;
+	p->vertexCount = 8;
+	p->edgeCount = 24;
+	p->faceCount = 6;
+	p->centroid = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	p->transform.p = box.center;
+	p->transform.q = box.rotation;
+	p->flat = false;
+	p->size = CD_R(2.0) * cd3Length(h);
+	p->shape = cd3MakeBoxShape(box);
+}
+
+void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
+{
+	const cd3Hull* h = hull.hull;
+	p->vertices = h->vertices;
+	p->edges = h->edges;
+	p->faceEdges = h->faceEdges;
+	p->planes = h->planes;
+	p->vertexCount = h->vertexCount;
+	p->edgeCount = h->edgeCount;
+	p->faceCount = h->faceCount;
+	p->centroid = h->centroid;
+	p->transform = hull.transform;
+	p->flat = false;
+	p->size = cd3Length(cd3Sub(h->bounds.max, h->bounds.min));
+	p->shape = cd3MakeHullShape(hull.hull, hull.transform);
+}
+
+void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
+{
+	p->vertexStorage[0] = t.a;
+	p->vertexStorage[1] = t.b;
+	p->vertexStorage[2] = t.c;
+	/* A degenerate triangle gets zero normals: its face axes are skipped. */
+	cd3Vec n = cd3Normalize(cd3Cross(cd3Sub(t.b, t.a), cd3Sub(t.c, t.a)));
+	p->planeStorage[0].normal = n;
+	p->planeStorage[0].offset = cd3Dot(n, t.a);
+	p->planeStorage[1].normal = cd3Neg(n);
+	p->planeStorage[1].offset = -cd3Dot(n, t.a);
+	p->vertices = p->vertexStorage;
+	p->edges = TRIANGLE_EDGES;
+	p->faceEdges = TRIANGLE_FACE_EDGES;
+	p->planes = p->planeStorage;
+	p->vertexCount = 3;
+	p->edgeCount = 6;
+	p->faceCount = 2;
+	p->centroid = cd3Scale(CD_R(1.0) / CD_R(3.0), cd3Add(t.a, cd3Add(t.b, t.c)));
+	p->transform = CD3_TRANSFORM_IDENTITY;
+	p->flat = true;
+	p->size =
+		cdMax(cd3Length(cd3Sub(t.b, t.a)), cdMax(cd3Length(cd3Sub(t.c, t.b)), cd3Length(cd3Sub(t.a, t.c))));
+	p->shape = cd3MakeTriangleShape(t);
+}
+
+static bool IsZero(cd3Vec v)
+{
+	return v.x == CD_R(0.0) && v.y == CD_R(0.0) && v.z == CD_R(0.0);
+}
+
+/* Largest separation over p's face normals against q, whose local points map into p's frame by
+ * `rel`. */
+static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace)
+{
+	cdReal best = -CD_REAL_MAX;
+	*bestFace = -1;
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cd3Plane plane = p->planes[f];
+		if (IsZero(plane.normal))
+		{
+			continue;
+		}
+		cd3Vec inQ = cd3InvRotateVector(rel.q, plane.normal);
+		int support = 0;
+		cdReal lowest = cd3Dot(inQ, q->vertices[0]);
+		for (int i = 1; i < q->vertexCount; ++i)
+		{
+			cdReal d = cd3Dot(inQ, q->vertices[i]);
+			if (d < lowest)
+			{
+				lowest = d;
+				support = i;
+			}
+		}
+		cdReal separation = cd3Dot(plane.normal, cd3TransformPoint(rel, q->vertices[support])) - plane.offset;
+		if (separation > best)
+		{
+			best = separation;
+			*bestFace = f;
+		}
+	}
+	return best;
+}
+
+/* Arcs a-b (A's edge) and c-d (B's edge, normals already negated) cross on the unit sphere. */
+static bool IsMinkowskiFace(cd3Vec a, cd3Vec b, cd3Vec bxa, cd3Vec c, cd3Vec d, cd3Vec dxc)
+{
+	cdReal cba = cd3Dot(c, bxa);
+	cdReal dba = cd3Dot(d, bxa);
+	cdReal adc = cd3Dot(a, dxc);
+	cdReal bdc = cd3Dot(b, dxc);
+	return cba * dba < CD_R(0.0) && adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0);
+}
+
+static void Project(const cd3Polytope* p, cd3Transform rel, cd3Vec axis, cdReal* lo, cdReal* hi)
+{
+	cd3Vec local = cd3InvRotateVector(rel.q, axis);
+	cdReal offset = cd3Dot(axis, rel.p);
+	cdReal mn = cd3Dot(local, p->vertices[0]);
+	cdReal mx = mn;
+	for (int i = 1; i < p->vertexCount; ++i)
+	{
+		cdReal d = cd3Dot(local, p->vertices[i]);
+		mn = cdMin(mn, d);
+		mx = cdMax(mx, d);
+	}
+	*lo = mn + offset;
+	*hi = mx + offset;
+}
+
+cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
+{
+	cd3SatResult r;
+	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
+	cd3Transform relA = cd3InvMulTransforms(b->transform, a->transform);
+	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA);
+	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
+	r.edgeSeparation = -CD_REAL_MAX;
+	r.edgeA = -1;
+	r.edgeB = -1;
+	r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	cd3Vec bestAxis = r.edgeNormal;
+	bool flat = a->flat || b->flat;
+	cd3Transform identity = CD3_TRANSFORM_IDENTITY;
+
+	for (int j = 0; j < b->edgeCount; ++j)
+	{
+		const cd3HullHalfEdge* eb = &b->edges[j];
+		if (eb->twin < j)
+		{
+			continue;
+		}
+		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
+		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]);
+		cd3Vec edgeB = cd3Sub(qb1, qb0);
+		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
+		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[b->edges[eb->twin].face].normal));
+		cd3Vec dxc = cd3Cross(d, c);
+		for (int i = 0; i < a->edgeCount; ++i)
+		{
+			const cd3HullHalfEdge* ea = &a->edges[i];
+			if (ea->twin < i)
+			{
+				continue;
+			}
+			cd3Vec pa0 = a->vertices[ea->origin];
+			cd3Vec edgeA = cd3Sub(a->vertices[a->edges[ea->twin].origin], pa0);
+			cd3Vec axis = cd3Cross(edgeA, edgeB);
+			cdReal axisLength = cd3Length(axis);
+			if (!(axisLength > PARALLEL_SINE * cd3Length(edgeA) * cd3Length(edgeB)))
+			{
+				continue;
+			}
+			axis = cd3Scale(CD_R(1.0) / axisLength, axis);
+			cdReal separation;
+			if (flat)
+			{
+				cdReal loA, hiA, loB, hiB;
+				Project(a, identity, axis, &loA, &hiA);
+				Project(b, relB, axis, &loB, &hiB);
+				separation = loB - hiA;
+				if (loA - hiB > separation)
+				{
+					separation = loA - hiB;
+					axis = cd3Neg(axis);
+				}
+			}
+			else
+			{
+				cd3Vec na = a->planes[ea->face].normal;
+				cd3Vec nb = a->planes[a->edges[ea->twin].face].normal;
+				if (!IsMinkowskiFace(na, nb, cd3Cross(nb, na), c, d, dxc))
+				{
+					continue;
+				}
+				if (cd3Dot(axis, cd3Sub(pa0, a->centroid)) < CD_R(0.0))
+				{
+					axis = cd3Neg(axis);
+				}
+				separation = cd3Dot(axis, cd3Sub(qb0, pa0));
+			}
+			if (separation > r.edgeSeparation)
+			{
+				r.edgeSeparation = separation;
+				r.edgeA = i;
+				r.edgeB = j;
+				bestAxis = axis;
+			}
+		}
+	}
+	r.edgeNormal = cd3RotateVector(a->transform.q, bestAxis);
+	return r;
+}
+
+cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, cd3SatResult* r)
+{
+	/* Work in B's local frame. */
+	cd3Vec s1 = cd3InvTransformPoint(b->transform, p1);
+	cd3Vec s2 = cd3InvTransformPoint(b->transform, p2);
+	cd3Vec segment = cd3Sub(s2, s1);
+	r->faceSeparationA = -CD_REAL_MAX;
+	r->faceA = -1;
+	r->faceSeparationB = -CD_REAL_MAX;
+	r->faceB = -1;
+	for (int f = 0; f < b->faceCount; ++f)
+	{
+		cd3Plane plane = b->planes[f];
+		if (IsZero(plane.normal))
+		{
+			continue;
+		}
+		/* Axis -n from the segment to B: B's lowest point is -offset, the segment's highest is
+		 * -min(n.s). */
+		cdReal separation = cdMin(cd3Dot(plane.normal, s1), cd3Dot(plane.normal, s2)) - plane.offset;
+		if (separation > r->faceSeparationB)
+		{
+			r->faceSeparationB = separation;
+			r->faceB = f;
+		}
+	}
+	r->edgeSeparation = -CD_REAL_MAX;
+	r->edgeA = -1;
+	r->edgeB = -1;
+	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	cdReal segmentLength = cd3Length(segment);
+	if (segmentLength > CD_R(0.0))
+	{
+		cd3Transform identity = CD3_TRANSFORM_IDENTITY;
+		for (int j = 0; j < b->edgeCount; ++j)
+		{
+			const cd3HullHalfEdge* eb = &b->edges[j];
+			if (eb->twin < j)
+			{
+				continue;
+			}
+			cd3Vec edgeB = cd3Sub(b->vertices[b->edges[eb->twin].origin], b->vertices[eb->origin]);
+			cd3Vec axis = cd3Cross(segment, edgeB);
+			cdReal axisLength = cd3Length(axis);
+			if (!(axisLength > PARALLEL_SINE * segmentLength * cd3Length(edgeB)))
+			{
+				continue;
+			}
+			axis = cd3Scale(CD_R(1.0) / axisLength, axis);
+			cdReal loB, hiB;
+			Project(b, identity, axis, &loB, &hiB);
+			cdReal d1 = cd3Dot(axis, s1), d2 = cd3Dot(axis, s2);
+			cdReal loS = cdMin(d1, d2), hiS = cdMax(d1, d2);
+			cdReal separation = loB - hiS;
+			if (loS - hiB > separation)
+			{
+				separation = loS - hiB;
+				axis = cd3Neg(axis);
+			}
+			if (separation > r->edgeSeparation)
+			{
+				r->edgeSeparation = separation;
+				r->edgeB = j;
+				bestAxis = axis;
+			}
+		}
+	}
+	r->edgeNormal = cd3RotateVector(b->transform.q, bestAxis);
+	return r->edgeSeparation > r->faceSeparationB ? CD3_SAT_EDGES : CD3_SAT_FACE_B;
+}

@@ -1,0 +1,65 @@
+/* collide (internal): polytopes (boxes, hulls, triangles) in one form, and the separating axis test
+ * between two of them or between a point/segment core and one. Not installed. */
+#ifndef COLLIDE_SAT3_H
+#define COLLIDE_SAT3_H
+
+#include "collide/geometry3.h"
+
+/* A polytope placed in the world: the half-edge data of a hull in its local frame plus the
+ * transform. Boxes and triangles keep their vertices and planes in the storage arrays, so a
+ * polytope must not be copied after it is initialized. A triangle is flat: two faces (front and
+ * back) sharing three edges; its edge axes are tested by projection, not by Gauss-map pruning. */
+typedef struct cd3Polytope
+{
+	const cd3Vec* vertices;
+	const cd3HullHalfEdge* edges;
+	const int32_t* faceEdges;
+	const cd3Plane* planes;
+	int vertexCount, edgeCount, faceCount;
+	cd3Vec centroid; /* local, strictly inside unless flat */
+	cd3Transform transform;
+	bool flat;
+	cdReal size; /* diagonal of the local bounds: the scale of tolerances */
+	cd3Shape shape;
+	cd3Vec vertexStorage[8];
+	cd3Plane planeStorage[6];
+} cd3Polytope;
+
+void cd3InitBoxPolytope(cd3Polytope* polytope, cd3Box box);
+void cd3InitHullPolytope(cd3Polytope* polytope, cd3HullShape hull);
+void cd3InitTrianglePolytope(cd3Polytope* polytope, cd3Triangle triangle);
+
+typedef enum cd3SatFeature
+{
+	CD3_SAT_FACE_A,
+	CD3_SAT_FACE_B,
+	CD3_SAT_EDGES
+} cd3SatFeature;
+
+/* Best axis of each kind. separation is the largest over face normals of A, of B and over edge
+ * pairs (the exact signed depth is the largest of the three; -CD_REAL_MAX when a kind has no valid
+ * axis). Face indices and half-edge indices refer to the polytopes; edgeNormal is in world space,
+ * pointing from A to B. */
+typedef struct cd3SatResult
+{
+	cdReal faceSeparationA, faceSeparationB, edgeSeparation;
+	int faceA, faceB;
+	int edgeA, edgeB;
+	cd3Vec edgeNormal;
+} cd3SatResult;
+
+cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
+
+/* The exact signed separation of the SAT result (the largest of its three). */
+static inline cdReal cd3SatSeparation(const cd3SatResult* r)
+{
+	return cdMax(r->edgeSeparation, cdMax(r->faceSeparationA, r->faceSeparationB));
+}
+
+/* The separating axis test between the segment p1-p2 (a point when p1 == p2; world space) and a
+ * polytope: the polytope's faces and the crosses of the segment with its edges. Separation of the
+ * bare segment (no radius). Feature: CD3_SAT_FACE_B with faceB, or CD3_SAT_EDGES with edgeB and
+ * edgeNormal (world, from the segment to the polytope). Returns the feature kind. */
+cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, cd3SatResult* result);
+
+#endif
