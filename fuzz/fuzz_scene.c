@@ -7,7 +7,9 @@
  * document empty and gives a NUL-terminated message with a line >= 0; a loaded document holds
  * only what the format allows (dimension 2 or 3, names within the limit, at most
  * TOOL_MAX_SCENES scenes and TOOL_MAX_SHAPES_PER_SCENE shapes each, finite points, shapes the
- * library's validator accepts); every pair's answer is finite with a non-negative distance. */
+ * library's validator accepts, each hull shape with the hull the document owns); every pair's
+ * answer is finite with a non-negative distance, and a 2D contact has 1 or 2 points, a unit
+ * normal and finite separations. */
 #define _POSIX_C_SOURCE 200809L /* mkstemp */
 
 #include "scene.h"
@@ -105,6 +107,14 @@ static void CheckDocument(const ToolDocument* document)
 			{
 				Fail("the loader accepted a shape the library's validator rejects", s, i);
 			}
+			/* The document owns exactly the hulls its hull shapes use (freed with it: the
+			 * sanitizer's leak check sees any that is not). */
+			bool isHull = scene->dimension == 3 && !shape->isPoint && shape->shape3.type == CD3_SHAPE_HULL;
+			if (isHull ? (shape->hull == NULL || shape->shape3.hull.hull != shape->hull)
+					   : shape->hull != NULL)
+			{
+				Fail("a hull shape without its own hull, or a hull on another shape", s, i);
+			}
 		}
 	}
 }
@@ -118,6 +128,16 @@ static void CheckResult(const ToolSceneResult* result, int s)
 		for (int j = 0; j < 3; ++j)
 		{
 			finite = finite && isfinite(pair->pointA[j]) && isfinite(pair->pointB[j]);
+		}
+		if (pair->hasContact)
+		{
+			double normalLength = hypot(pair->contactNormal[0], pair->contactNormal[1]);
+			finite = finite && (pair->contactCount == 1 || pair->contactCount == 2) &&
+					 fabs(normalLength - 1.0) < 1e-3 && isfinite(pair->deepestSeparation);
+			for (int j = 0; j < pair->contactCount * 2; ++j)
+			{
+				finite = finite && isfinite(pair->contactPoints[j / 2][j % 2]);
+			}
 		}
 		if (!finite)
 		{

@@ -82,6 +82,24 @@ expect_pair(more-2d beam marker no "1\\.5")
 expect_pair(more-2d worm laser no "1\\.5")
 expect_pair(more-2d worm marker yes "0")
 expect_pair(more-2d laser marker no "2")
+# hulls: tetra is x, y, z >= 0, x + y + z <= 2. drum is the octagonal prism of radius 1 about the
+# line x = 1.5, z = 0 (y from 0 to 2; turning it 45 degrees about y maps it onto itself): its
+# left edge x = 0.5, z = 0 dips into tetra (e.g. (0.6, 0.5, 0.05) is inside both). pebble r 0.5
+# at (-2, 0.5, 0): tetra's face x = 0 is 2 away, drum's left edge 2.5.
+expect_pair(hulls tetra drum yes "0")
+expect_pair(hulls tetra pebble no "1\\.5")
+expect_pair(hulls drum pebble no "2")
+# rounded: pad is the box |x| <= 1, |y| <= 0.5 rounded by 0.25 (reaching x = 1.25); ball r 0.85
+# at (2,0) reaches x = 1.15 (0.1 deep). corner-ball r 0.1 at (1.3,0.8) lies in the square
+# corner the rounding cuts away: 0.3 sqrt(2) - 0.25 - 0.1 = 0.0743 from pad. rounded-tri is
+# (3,-1),(5,-1),(4,1) rounded by 0.2; its left edge lies 3/sqrt(5) from ball's centre and
+# 5.2/sqrt(5) from corner-ball's; its corner (3,-1) is sqrt(4.25) from pad's corner (1,-0.5).
+expect_pair(rounded pad ball yes "0")
+expect_pair(rounded pad corner-ball no "0\\.074[23]")
+expect_pair(rounded pad rounded-tri no "1\\.611[56]") # sqrt(4.25) - 0.45
+expect_pair(rounded ball corner-ball no "0\\.113[01]?") # sqrt(1.13) - 0.95
+expect_pair(rounded ball rounded-tri no "0\\.291[67]") # 3 / sqrt(5) - 1.05
+expect_pair(rounded corner-ball rounded-tri no "2\\.025[56]") # 5.2 / sqrt(5) - 0.3
 
 expect_line("point-in-box \\(3D\\): 4 shapes, 6 pairs, 2 overlapping")
 expect_line("two-boxes \\(3D\\): 4 shapes, 6 pairs, 3 overlapping")
@@ -91,7 +109,15 @@ expect_line("side-scroller \\(2D\\): 5 shapes, 10 pairs, 5 overlapping")
 expect_line("convex-polygons \\(2D\\): 4 shapes, 6 pairs, 1 overlapping")
 expect_line("more-3d \\(3D\\): 4 shapes, 6 pairs, 2 overlapping")
 expect_line("more-2d \\(2D\\): 4 shapes, 6 pairs, 2 overlapping")
-table_check_end(52)
+expect_line("hulls \\(3D\\): 3 shapes, 3 pairs, 1 overlapping")
+expect_line("rounded \\(2D\\): 4 shapes, 6 pairs, 1 overlapping")
+# The contacts table (cd2Collide within 0.1): pad pushes ball along +x, 0.1 deep, the point midway
+# between the surfaces x = 1.25 and 1.15; corner-ball gets a speculative contact along the
+# diagonal; the player's box stands on the platform with its two bottom corners.
+expect_line("rounded +pad +ball +1 +\\(1, 0\\) +\\(1\\.2, 0\\) +-0\\.1")
+expect_line("rounded +pad +corner-ball +1 +\\(0\\.7071, 0\\.7071\\) +\\([0-9.]+, [0-9.]+\\) +0\\.074[23]")
+expect_line("side-scroller +player +platform +2 +\\(0, -1\\) +\\(3, 1\\) \\(2, 1\\) +0")
+table_check_end(61)
 
 # The picture: one panel per scene, every name as a label, well-formed XML.
 if(NOT EXISTS ${svg})
@@ -103,14 +129,19 @@ if(NOT picture MATCHES "^<svg " OR NOT picture MATCHES "</svg>\n$")
 endif()
 string(REGEX MATCHALL "<g id=\"scene-[0-9]+\">" panels "${picture}")
 list(LENGTH panels panelCount)
-if(NOT panelCount EQUAL 8)
-  message(FATAL_ERROR "expected 8 scene panels in the SVG, found ${panelCount}")
+if(NOT panelCount EQUAL 10)
+  message(FATAL_ERROR "expected 10 scene panels in the SVG, found ${panelCount}")
 endif()
-foreach(name IN ITEMS crate on-face box-touch tilted comet player-circle coin-2 hexagon ground rod marker)
+foreach(name IN ITEMS crate on-face box-touch tilted comet player-circle coin-2 hexagon ground rod marker
+    tetra drum pebble pad corner-ball rounded-tri)
   if(NOT picture MATCHES ">${name}</text>")
     message(FATAL_ERROR "the SVG has no label \"${name}\"")
   endif()
 endforeach()
+# Rounded shapes are drawn as paths with arcs; hull edges as lines.
+if(NOT picture MATCHES "<path d=\"M[^\"]* A[0-9.]+,[0-9.]+ 0 0 1 ")
+  message(FATAL_ERROR "the SVG has no rounded outline (a path with arcs)")
+endif()
 if(XMLLINT)
   execute_process(COMMAND ${XMLLINT} --noout ${svg} RESULT_VARIABLE lint ERROR_VARIABLE lintErr)
   if(NOT lint EQUAL 0)
