@@ -1,11 +1,13 @@
 /* collide: the command-line tool.
  *
  *   collide query FILE.json [--svg OUT.svg]
+ *   collide broad [options]      (broad.c: the broadphase benchmark scene)
  *
  * Reads a scene file (format: scene_load.c, examples/README.md), runs the overlap test and the
  * closest-point query of every pair of shapes within each scene, prints a table, and optionally
  * draws the scenes into an SVG picture. Exit codes: 0 success, 2 any error (usage, unreadable or
  * invalid file, unwritable picture). Errors go to stderr as "FILE:LINE: reason". */
+#include "broad.h"
 #include "scene.h"
 
 #include <errno.h>
@@ -15,8 +17,11 @@
 
 #define TOOL_EXIT_ERROR 2
 
-static const char* const s_usage = "usage: collide query FILE.json [--svg OUT.svg]\n"
-								   "       collide --help | --version\n";
+static const char* const s_usage =
+	"usage: collide query FILE.json [--svg OUT.svg]\n"
+	"       collide broad [--dim 2|3] [--n N] [--structure NAME|all] [--scene moving|mix]\n"
+	"                     [--frames K] [--warmup W]\n"
+	"       collide --help | --version\n";
 
 static void printHelp(void)
 {
@@ -31,6 +36,9 @@ static void printHelp(void)
 		  "                  joined by a thin line\n"
 		  "  --help          show this help\n"
 		  "  --version       show the version of the tool and of the collide library\n"
+		  "\n"
+		  "`collide broad` runs the broadphase benchmark scene on the chosen structures and prints\n"
+		  "their figures (`collide broad --help`).\n"
 		  "\n"
 		  "The file format is described in examples/README.md. Exit status: 0 on success, 2 on a\n"
 		  "usage error or an invalid file (reported as FILE:LINE: reason).\n",
@@ -120,6 +128,10 @@ int main(int argc, char** argv)
 			   CD_VERSION_PATCH, version.major, version.minor, version.patch,
 			   cdGetRealIsDouble() ? "double" : "float");
 		return 0;
+	}
+	if (strcmp(command, "broad") == 0)
+	{
+		return toolBroadMain(argc - 1, argv + 1);
 	}
 	if (strcmp(command, "query") != 0)
 	{
