@@ -269,8 +269,10 @@ static void drawRoundedPolygon(Canvas* canvas, const V2* corners, const V2* norm
 		{
 			fprintf(canvas->out, "M%.2f,%.2f ", ps.x, ps.y);
 		}
-		/* counter-clockwise in the world is clockwise on the y-down page: sweep flag 1 */
-		fprintf(canvas->out, "L%.2f,%.2f A%.2f,%.2f 0 0 1 %.2f,%.2f ", pe.x, pe.y, r, r, pa.x, pa.y);
+		/* the picture shows y up, so the world's counter-clockwise turn stays counter-clockwise
+		 * on the page, which is the negative-angle direction of SVG's y-down coordinates:
+		 * sweep flag 0 */
+		fprintf(canvas->out, "L%.2f,%.2f A%.2f,%.2f 0 0 0 %.2f,%.2f ", pe.x, pe.y, r, r, pa.x, pa.y);
 		includeShapePixels(canvas, toPixels(canvas, corners[i]), r);
 	}
 	fprintf(canvas->out, "Z\" %s %s stroke-linejoin=\"round\"/>\n", canvas->fill, canvas->stroke);

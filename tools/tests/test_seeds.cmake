@@ -139,7 +139,7 @@ foreach(name IN ITEMS crate on-face box-touch tilted comet player-circle coin-2 
   endif()
 endforeach()
 # Rounded shapes are drawn as paths with arcs; hull edges as lines.
-if(NOT picture MATCHES "<path d=\"M[^\"]* A[0-9.]+,[0-9.]+ 0 0 1 ")
+if(NOT picture MATCHES "<path d=\"M[^\"]* A[0-9.]+,[0-9.]+ 0 0 0 ")
   message(FATAL_ERROR "the SVG has no rounded outline (a path with arcs)")
 endif()
 if(XMLLINT)
