@@ -17,6 +17,29 @@ static cdReal MaxAbs(cd2Vec v)
 	return cdMax(cdAbs(v.x), cdAbs(v.y));
 }
 
+static cdReal StripRadius(cd2Shape* shape)
+{
+	cdReal radius = CD_R(0.0);
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			radius = shape->circle.radius;
+			shape->circle.radius = CD_R(0.0);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			radius = shape->capsule.radius;
+			shape->capsule.radius = CD_R(0.0);
+			break;
+		case CD2_SHAPE_POLYGON:
+			radius = shape->polygon.radius;
+			shape->polygon.radius = CD_R(0.0);
+			break;
+		default:
+			break;
+	}
+	return radius;
+}
+
 static cd2Shape TranslateShape(const cd2Shape* shape, cd2Vec d)
 {
 	cd2Shape s = *shape;

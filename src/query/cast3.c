@@ -17,6 +17,25 @@ static cdReal MaxAbs(cd3Vec v)
 	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
 }
 
+static cdReal StripRadius(cd3Shape* shape)
+{
+	cdReal radius = CD_R(0.0);
+	switch (shape->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			radius = shape->sphere.radius;
+			shape->sphere.radius = CD_R(0.0);
+			break;
+		case CD3_SHAPE_CAPSULE:
+			radius = shape->capsule.radius;
+			shape->capsule.radius = CD_R(0.0);
+			break;
+		default:
+			break;
+	}
+	return radius;
+}
+
 static cd3Shape TranslateShape(const cd3Shape* shape, cd3Vec d)
 {
 	cd3Shape s = *shape;
