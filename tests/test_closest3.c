@@ -322,6 +322,77 @@ static void TestThinTriangles(void)
 	TEST_CHECKF(tested > 1000, "only %d valid thin triangles", tested);
 }
 
+/* Needles: one edge shorter than the round-off of the others (the fuzzer's triangle has edges
+ * 1.4e-9 and 1.08e8, with a right angle at a, and the validator accepts it). With p at vertex c,
+ * p - a and p - b round to the same vector, and the point c itself fell into the region of the
+ * short edge: (0, 0, 1e-9) came back, 1.08e8 away. Every vertex order, points on the triangle
+ * and off its plane, then random needles against the double reference. */
+static void TestNeedleTriangles(void)
+{
+	cd3Vec a = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1e-9)), b = cd3MakeVec(CD_R(1e-9), CD_R(0.0), CD_R(0.0));
+	cd3Vec c = cd3MakeVec(CD_R(6.25e7), CD_R(6.25e7), CD_R(6.25e7));
+	/* The face normal is ab x ac, along (1, -2, 1); points off the plane project back. */
+	cd3Vec up = cd3Scale(CD_R(1000.0), cd3Normalize(cd3MakeVec(CD_R(1.0), CD_R(-2.0), CD_R(1.0))));
+	cd3Vec midAc = cd3Lerp(a, c, CD_R(0.5)), midBc = cd3Lerp(b, c, CD_R(0.5));
+	cd3Vec queries[6][2] = {
+		{c, c},
+		{midAc, midAc},
+		{midBc, midBc},
+		{cd3Add(c, up), c},
+		{cd3Sub(midAc, up), midAc},
+		{cd3Add(c, cd3MakeVec(CD_R(1e7), CD_R(1e7), CD_R(1e7))), c},
+	};
+	cd3Vec corners[3] = {a, b, c};
+	static const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+	double tolerance = REL_TOLERANCE * 6.25e7;
+	for (int o = 0; o < 6; ++o)
+	{
+		cd3Triangle t = {corners[orders[o][0]], corners[orders[o][1]], corners[orders[o][2]]};
+		for (int q = 0; q < 6; ++q)
+		{
+			cd3Vec closest = cd3ClosestPointOnTriangle(t, queries[q][0]);
+			double error = RDist(RFromVec(closest), RFromVec(queries[q][1]));
+			TEST_CHECKF(error <= tolerance, "order %d, query %d: closest (%.9g %.9g %.9g), %.3g off", o, q,
+						(double)closest.x, (double)closest.y, (double)closest.z, error);
+		}
+	}
+
+	TestRng rng = TestRngMake(0x5EED3106u);
+	for (int i = 0; i < 3000; ++i)
+	{
+		/* A long edge of length up to 1e8, a short one 1e-17..1e-9 of it, at a random angle. */
+		double length = pow(10.0, TestRngRange(&rng, 0.0, CD_DOUBLE ? 20.0 : 8.0));
+		double shortLength = length * pow(10.0, TestRngRange(&rng, -17.0, -9.0));
+		cd3Vec p0 = RandomVec(&rng, -1, 1);
+		cd3Vec p1 = cd3MulAdd(p0, (cdReal)shortLength, RandomUnit(&rng));
+		cd3Vec p2 = cd3MulAdd(p0, (cdReal)length, RandomUnit(&rng));
+		cd3Vec points[3] = {p0, p1, p2};
+		const int* order = orders[TestRngInt(&rng, 6)];
+		cd3Triangle t = {points[order[0]], points[order[1]], points[order[2]]};
+		/* Expectations from the construction (the double reference is no more accurate than the
+		 * double build on needles): vertex c itself (distance 0), or a point of a long edge moved
+		 * off it along the face normal (computed in double from the vertices) by `height`. */
+		RVec ra = RFromVec(p0), rb = RFromVec(p1), rc = RFromVec(p2);
+		RVec normal = RCross(RSub(rb, ra), RSub(rc, ra));
+		double normalLength = RLength(normal);
+		normal = normalLength > 0.0 ? RScale(1.0 / normalLength, normal) : RMake(0, 0, 0);
+		RVec start = TestRngInt(&rng, 2) == 0 ? ra : rb;
+		RVec onEdge = RAdd(start, RScale(TestRngRange(&rng, 0.0, 1.0), RSub(rc, start)));
+		double height = TestRngInt(&rng, 2) == 0 ? 0.0 : length * TestRngRange(&rng, -0.1, 0.1);
+		bool atVertex = TestRngInt(&rng, 4) == 0;
+		RVec rp = atVertex ? rc : RAdd(onEdge, RScale(height, normal));
+		double built = atVertex || normalLength == 0.0 ? 0.0 : fabs(height);
+		RVec rq = RFromVec(cd3ClosestPointOnTriangle(t, RToVec(rp)));
+		double distance = RDist(RFromVec(RToVec(rp)), rq);
+		TEST_CHECKF(
+			fabs(distance - built) <= REL_TOLERANCE * fmax(length, RMaxAbs(rp)),
+			"needle of length %g and %g: %.9g from the point, built %.9g away; triangle (%.17g %.17g %.17g) "
+			"(%.17g %.17g %.17g) (%.17g %.17g %.17g), point (%.17g %.17g %.17g)",
+			length, shortLength, distance, built, (double)t.a.x, (double)t.a.y, (double)t.a.z, (double)t.b.x,
+			(double)t.b.y, (double)t.b.z, (double)t.c.x, (double)t.c.y, (double)t.c.z, rp.x, rp.y, rp.z);
+	}
+}
+
 /* Closest point on each shape to random points, at several scales: finite, on the shape,
  * at the reference's distance, the point itself when inside, and no sampled point is closer. */
 static void TestRandomClosestPoint(void)
@@ -466,6 +537,7 @@ int main(void)
 	TEST_RUN(TestTriangleSegmentExact);
 	TEST_RUN(TestNearlyParallelSegments);
 	TEST_RUN(TestThinTriangles);
+	TEST_RUN(TestNeedleTriangles);
 	TEST_RUN(TestRandomClosestPoint);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestFarFromOrigin);

@@ -203,6 +203,22 @@ static cd3Vec ClosestPointOnTriangleEdges(cd3Vec origin, WideVec b, WideVec c, W
 	return Narrow(WideMulAdd(Widen(origin), 1.0, candidates[best]));
 }
 
+/* The face normal ab x ac, computed as the cross product of the two shorter edges (ab x ac =
+ * ab x bc = ac x bc): they meet at the largest angle, so the product does not cancel. On a needle,
+ * ab x ac of its two long, nearly parallel edges keeps only epsilon / sin(angle) of relative
+ * accuracy, which in the double build tilted the plane enough to move the projection of points
+ * on a long edge by 6e-9 of the triangle's size. A short edge's vector is exact (its end points
+ * are close), and so is its product with a long edge, up to one rounding. */
+static WideVec AccurateNormal(WideVec ab, WideVec ac, WideVec bc)
+{
+	double abab = WideDot(ab, ab), acac = WideDot(ac, ac), bcbc = WideDot(bc, bc);
+	if (bcbc >= abab && bcbc >= acac)
+	{
+		return WideCross(ab, ac);
+	}
+	return acac >= abab ? WideCross(ab, bc) : WideCross(ac, bc);
+}
+
 /* Voronoi regions of the vertices, then the edges, then the face (Ericson 5.1.5). */
 cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 {
@@ -225,7 +241,7 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 
 	/* A (nearly) zero-area triangle has no face region, and its edge regions can be empty: it is
 	 * the segment or point it collapsed to. Same threshold as cd3IsValidTriangle. */
-	WideVec normal = WideCross(sab, sac);
+	WideVec normal = AccurateNormal(sab, sac, WideScale(inverse, WideSub(Widen(t.c), Widen(t.b))));
 	double normalSquared = WideDot(normal, normal);
 	double limit = 4.0 * (double)CD_REAL_EPSILON;
 	if (normalSquared <= limit * limit * WideDot(sab, sab) * WideDot(sac, sac))
@@ -233,6 +249,12 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return ClosestPointOnTriangleEdges(t.a, ab, ac, ap);
 	}
 
+	/* Every quantity below comes from the edges ab, ac and the one offset ap (plus bc and bp for
+	 * the weight of a): bp = ap - ab and cp = ap - ac, formed as rounded vectors, lose the short
+	 * edge of a needle entirely when p is far from it (bp == ap), which made the point at vertex c
+	 * of a needle fall into the region of its short edge ab. Ericson's d3..d6 are the same dot
+	 * products expanded (ab.bp = ab.ap - ab.ab and so on), and the weights of c and b are
+	 * n.(ap x bp) = n.(ab x ap) and n.(cp x ap) = n.(ap x ac). */
 	double d1 = WideDot(sab, sap);
 	double d2 = WideDot(sac, sap);
 	if (d1 <= 0.0 && d2 <= 0.0)
@@ -240,9 +262,9 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return t.a;
 	}
 
-	WideVec sbp = WideSub(sap, sab);
-	double d3 = WideDot(sab, sbp);
-	double d4 = WideDot(sac, sbp);
+	double abab = WideDot(sab, sab), abac = WideDot(sab, sac), acac = WideDot(sac, sac);
+	double d3 = d1 - abab;
+	double d4 = d2 - abac;
 	if (d3 >= 0.0 && d4 <= d3)
 	{
 		return t.b;
@@ -251,29 +273,31 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 	/* The barycentric weights va, vb, vc are Ericson's d3*d6 - d5*d4 and so on, written by the
 	 * Lagrange identity as n . (bp x cp) etc.: the cross products keep the relative error at
 	 * epsilon / sin(angle) instead of epsilon / sin^2 on thin triangles. */
-	double vc = WideDot(normal, WideCross(sap, sbp));
+	double vc = WideDot(normal, WideCross(sab, sap));
 	if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
 	{
 		return Narrow(WideMulAdd(origin, WideClampedRatio(d1, d1 - d3), ab));
 	}
 
-	WideVec scp = WideSub(sap, sac);
-	double d5 = WideDot(sab, scp);
-	double d6 = WideDot(sac, scp);
+	double d5 = d1 - abac;
+	double d6 = d2 - acac;
 	if (d6 >= 0.0 && d5 <= d6)
 	{
 		return t.c;
 	}
 
-	double vb = WideDot(normal, WideCross(scp, sap));
+	double vb = WideDot(normal, WideCross(sap, sac));
 	if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
 	{
 		return Narrow(WideMulAdd(origin, WideClampedRatio(d2, d2 - d6), ac));
 	}
 
-	double va = WideDot(normal, WideCross(sbp, scp));
-	double fromB = d4 - d3;
-	double fromC = d5 - d6;
+	/* Relative to b, from the inputs: accurate when p is near the edge bc. */
+	WideVec sbc = WideScale(inverse, WideSub(Widen(t.c), Widen(t.b)));
+	WideVec sbp = WideScale(inverse, WideSub(Widen(p), Widen(t.b)));
+	double va = WideDot(normal, WideCross(sbc, sbp));
+	double fromB = WideDot(sbc, sbp);
+	double fromC = WideDot(sbc, sbc) - fromB;
 	if (va <= 0.0 && fromB >= 0.0 && fromC >= 0.0)
 	{
 		WideVec b = Widen(t.b);
