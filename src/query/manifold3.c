@@ -23,8 +23,8 @@
 
 /* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
  * pair over the faces, only when it separates by this much more. */
-#define FACE_BIAS CD_R(1.0e-3)
-#define EDGE_BIAS CD_R(1.0e-3)
+#define FACE_BIAS CD_R(1.0e-4)
+#define EDGE_BIAS CD_R(1.0e-4)
 /* A separated pair whose best SAT separation is within this fraction of the size of the GJK
  * distance is a face or edge contact; otherwise the closest features are vertices. */
 #define REALIZED_TOLERANCE CD_R(1.0e-4)
@@ -196,6 +196,55 @@ static int IncidentFace(const cd3Polytope* p, cd3Vec worldNormal)
 	return best;
 }
 
+/* The incident face for a reference normal: among the faces around the polytope's deepest vertex
+ * along -normal, the most anti-parallel. The deepest vertex then belongs to the incident polygon,
+ * and when the reference face is the axis of least penetration it projects inside the reference
+ * face, so the clipped manifold keeps the exact depth. */
+static int IncidentFaceAtSupport(const cd3Polytope* p, cd3Vec worldNormal)
+{
+	cd3Vec local = cd3InvRotateVector(p->transform.q, worldNormal);
+	int deepest = 0;
+	cdReal lowest = cd3Dot(local, p->vertices[0]);
+	for (int i = 1; i < p->vertexCount; ++i)
+	{
+		cdReal d = cd3Dot(local, p->vertices[i]);
+		if (d < lowest)
+		{
+			lowest = d;
+			deepest = i;
+		}
+	}
+	int start = -1;
+	for (int e = 0; e < p->edgeCount; ++e)
+	{
+		if (p->edges[e].origin == deepest)
+		{
+			start = e;
+			break;
+		}
+	}
+	if (start < 0)
+	{
+		return IncidentFace(p, worldNormal);
+	}
+	int best = p->edges[start].face;
+	cdReal bestDot = CD_REAL_MAX;
+	int e = start;
+	int guard = 0;
+	do
+	{
+		int f = p->edges[e].face;
+		cdReal d = cd3Dot(p->planes[f].normal, local);
+		if (d < bestDot)
+		{
+			bestDot = d;
+			best = f;
+		}
+		e = p->edges[p->edges[e].twin].next;
+	} while (e != start && ++guard < p->edgeCount);
+	return best;
+}
+
 static int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec origin, uint32_t tag,
 					   ClipVertex* out)
 {
@@ -238,7 +287,7 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	cd3Plane local = ref->planes[face];
 	cd3Vec n = cd3RotateVector(ref->transform.q, local.normal);
 	cdReal offset = local.offset + cd3Dot(n, ref->transform.p);
-	int incident = IncidentFace(inc, n);
+	int incident = IncidentFaceAtSupport(inc, n);
 
 	ClipVertex bufferA[MAX_CLIP], bufferB[MAX_CLIP];
 	int count = 0;
@@ -285,27 +334,7 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	}
 	if (kept == 0)
 	{
-		/* Clipping lost everything (the incident face lies beside the reference face): the
-		 * incident polytope's deepest vertex stands for the contact. */
-		cd3Vec localN = cd3InvRotateVector(inc->transform.q, n);
-		int deepest = 0;
-		for (int i = 1; i < inc->vertexCount; ++i)
-		{
-			if (cd3Dot(localN, inc->vertices[i]) < cd3Dot(localN, inc->vertices[deepest]))
-			{
-				deepest = i;
-			}
-		}
-		cd3Vec q = WorldVertex(inc, deepest);
-		cdReal separation = cd3Dot(n, q) - offset;
-		if (separation > speculativeDistance)
-		{
-			return m;
-		}
-		candidates[0].point = cd3MulSub(q, CD_R(0.5) * separation, n);
-		candidates[0].separation = separation;
-		candidates[0].id = PackFaceId(face, incident, 0x7fu, (uint32_t)deepest, flip);
-		kept = 1;
+		return m;
 	}
 	Candidate reduced[4];
 	int reducedCount = ReducePoints(candidates, kept, n, reduced);
@@ -325,6 +354,66 @@ static cd3Segment WorldEdge(const cd3Polytope* p, int edge)
 	return s;
 }
 
+static cd3Manifold VertexContact(cd3ClosestPoints cp)
+{
+	cd3Manifold m = EmptyManifold();
+	m.normal = cd3Normalize(cd3Sub(cp.pointB, cp.pointA));
+	if (cd3LengthSquared(m.normal) == CD_R(0.0))
+	{
+		m.normal = DefaultNormal();
+	}
+	AddPoint(&m, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5)), cp.distance, ID_VERTEX_PAIR);
+	return m;
+}
+
+static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat)
+{
+	cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(WorldEdge(a, sat->edgeA), WorldEdge(b, sat->edgeB));
+	cd3Manifold m = EmptyManifold();
+	m.normal = cd3Normalize(sat->edgeNormal);
+	uint32_t id =
+		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
+	AddPoint(&m, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5)), sat->edgeSeparation, id);
+	return m;
+}
+
+/* The manifold the separating axis test picks: a face contact, or an edge contact when an edge
+ * pair separates noticeably more (or the face's incident polygon clips away). */
+static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat,
+							  cdReal speculativeDistance)
+{
+	cdReal size = a->size + b->size;
+	bool useB =
+		sat->faceA < 0 || (sat->faceB >= 0 && sat->faceSeparationB > sat->faceSeparationA + FACE_BIAS * size);
+	int face = useB ? sat->faceB : sat->faceA;
+	cdReal faceSeparation = useB ? sat->faceSeparationB : sat->faceSeparationA;
+	bool useEdges = sat->edgeA >= 0 && (face < 0 || sat->edgeSeparation > faceSeparation + EDGE_BIAS * size);
+	if (!useEdges && face >= 0)
+	{
+		cd3Manifold m = useB ? FaceContact(b, face, a, true, speculativeDistance)
+							 : FaceContact(a, face, b, false, speculativeDistance);
+		if (m.pointCount > 0 || sat->edgeA < 0)
+		{
+			return m;
+		}
+	}
+	if (sat->edgeA < 0 || sat->edgeSeparation > speculativeDistance)
+	{
+		return EmptyManifold();
+	}
+	return EdgeContact(a, b, sat);
+}
+
+static cdReal ManifoldMinSeparation(const cd3Manifold* m)
+{
+	cdReal s = CD_REAL_MAX;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		s = cdMin(s, m->points[i].separation);
+	}
+	return s;
+}
+
 static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
 {
 	cd3SatResult sat = cd3SatPolytopes(a, b);
@@ -333,52 +422,28 @@ static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, 
 	{
 		return EmptyManifold();
 	}
-	cdReal size = a->size + b->size;
-	if (separation > CD_R(0.0))
+	if (separation <= CD_R(0.0))
 	{
-		/* The SAT separation only bounds the distance from below: the closest features decide. */
-		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
-		if (cp.distance > speculativeDistance)
-		{
-			return EmptyManifold();
-		}
-		if (cp.distance > separation + REALIZED_TOLERANCE * size)
-		{
-			cd3Manifold m = EmptyManifold();
-			m.normal = cd3Normalize(cd3Sub(cp.pointB, cp.pointA));
-			AddPoint(&m, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5)), cp.distance, ID_VERTEX_PAIR);
-			return m;
-		}
+		return SatContact(a, b, &sat, speculativeDistance);
 	}
-	cdReal faceSeparation = sat.faceSeparationA;
-	bool useB =
-		sat.faceA < 0 || (sat.faceB >= 0 && sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size);
-	if (useB)
-	{
-		faceSeparation = sat.faceSeparationB;
-	}
-	if (sat.edgeA >= 0 &&
-		((sat.faceA < 0 && sat.faceB < 0) || sat.edgeSeparation > faceSeparation + EDGE_BIAS * size))
-	{
-		cd3Segment ea = WorldEdge(a, sat.edgeA);
-		cd3Segment eb = WorldEdge(b, sat.edgeB);
-		cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(ea, eb);
-		cd3Manifold m = EmptyManifold();
-		m.normal = cd3Normalize(sat.edgeNormal);
-		uint32_t id =
-			CD3_FEATURE_EDGES | ((uint32_t)sat.edgeA & 0x7fffu) | (((uint32_t)sat.edgeB & 0x7fffu) << 15);
-		AddPoint(&m, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5)), sat.edgeSeparation, id);
-		return m;
-	}
-	if (useB)
-	{
-		return FaceContact(b, sat.faceB, a, true, speculativeDistance);
-	}
-	if (sat.faceA < 0)
+	/* Apart: the SAT separation only bounds the distance from below. The SAT manifold stands when
+	 * its deepest point realizes the distance (closest features face-vertex or edge-edge);
+	 * otherwise the closest points (vertex-vertex, vertex-edge) give one point along the gap. */
+	cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
+	if (cp.distance > speculativeDistance)
 	{
 		return EmptyManifold();
 	}
-	return FaceContact(a, sat.faceA, b, false, speculativeDistance);
+	cdReal tolerance = REALIZED_TOLERANCE * (a->size + b->size);
+	if (cp.distance <= separation + tolerance)
+	{
+		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance);
+		if (m.pointCount > 0 && cdAbs(ManifoldMinSeparation(&m) - cp.distance) <= tolerance)
+		{
+			return m;
+		}
+	}
+	return VertexContact(cp);
 }
 
 /* ---- rounded core against polytope ------------------------------------------------------------ */
@@ -570,8 +635,20 @@ cd3Manifold cd3CollideSphereSphere(cd3Sphere a, cd3Sphere b, cdReal speculativeD
 cd3Manifold cd3CollideSphereCapsule(cd3Sphere a, cd3Capsule b, cdReal speculativeDistance)
 {
 	cd3Segment s = {b.p1, b.p2};
-	return CollidePoints(a.center, a.radius, cd3ClosestPointOnSegment(s, a.center), b.radius,
-						 speculativeDistance, 0u);
+	cd3Vec closest = cd3ClosestPointOnSegment(s, a.center);
+	cd3Manifold m = CollidePoints(a.center, a.radius, closest, b.radius, speculativeDistance, 0u);
+	cdReal scale = cdMax(cd3Length(cd3Abs(a.center)), cd3Length(cd3Sub(b.p2, b.p1)));
+	if (m.pointCount > 0 && cd3VecDistance(closest, a.center) <= CD_R(16.0) * CD_REAL_EPSILON * scale)
+	{
+		/* Centre on the axis: any direction across the axis. */
+		cd3Vec n = cd3Perpendicular(cd3Sub(b.p2, b.p1));
+		if (cd3LengthSquared(n) > CD_R(0.0))
+		{
+			m.normal = n;
+			m.points[0].point = cd3MulAdd(a.center, a.radius + CD_R(0.5) * m.points[0].separation, n);
+		}
+	}
+	return m;
 }
 
 cd3Manifold cd3CollideCapsuleCapsule(cd3Capsule a, cd3Capsule b, cdReal speculativeDistance)
@@ -587,15 +664,26 @@ cd3Manifold cd3CollideCapsuleCapsule(cd3Capsule a, cd3Capsule b, cdReal speculat
 	cd3Vec da = cd3Sub(a.p2, a.p1);
 	cd3Vec db = cd3Sub(b.p2, b.p1);
 	cdReal la2 = cd3LengthSquared(da), lb2 = cd3LengthSquared(db);
-	cdReal sin2 = cd3LengthSquared(cd3Cross(da, db));
+	cd3Vec crossAxes = cd3Cross(da, db);
+	cdReal sin2 = cd3LengthSquared(crossAxes);
+	if (cp.distance == CD_R(0.0))
+	{
+		/* Crossing axes: the common perpendicular separates them by the two radii. */
+		cd3Vec n = cd3Normalize(crossAxes);
+		if (cd3LengthSquared(n) == CD_R(0.0))
+		{
+			n = cd3Perpendicular(la2 > CD_R(0.0) ? da : db);
+		}
+		if (cd3LengthSquared(n) > CD_R(0.0))
+		{
+			cd3Vec towardB = cd3Sub(cd3Lerp(b.p1, b.p2, CD_R(0.5)), cd3Lerp(a.p1, a.p2, CD_R(0.5)));
+			m.normal = cd3Dot(n, towardB) < CD_R(0.0) ? cd3Neg(n) : n;
+			m.points[0].point = cd3MulAdd(cp.pointA, a.radius + CD_R(0.5) * m.points[0].separation, m.normal);
+		}
+	}
 	if (!(la2 > CD_R(0.0) && lb2 > CD_R(0.0) && sin2 <= CD_R(1.0e-6) * la2 * lb2))
 	{
 		return m;
-	}
-	if (cp.distance == CD_R(0.0))
-	{
-		/* Coincident axes: any direction across them. */
-		m.normal = cd3Normalize(cd3Perpendicular(da));
 	}
 	/* Parallel: B's extent along A's axis, clipped to A's segment. */
 	cdReal t1 = cd3Dot(cd3Sub(b.p1, a.p1), da) / la2;

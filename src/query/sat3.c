@@ -11,6 +11,14 @@
  * axis is a face normal (or does not exist) and is covered by the face queries. */
 #define PARALLEL_SINE CD_R(1.0e-5)
 
+/* An edge supports its polytope along an axis when its projection is this close (relative to the
+ * sizes) to the extreme. */
+#define SUPPORT_TOLERANCE (CD_R(64.0) * CD_REAL_EPSILON)
+
+/* A triangle whose |cross(b - a, c - a)| is below this fraction of its longest edge squared is
+ * collinear. */
+#define DEGENERATE_SINE (CD_R(256.0) * CD_REAL_EPSILON)
+
 /* The box's half-edge topology: vertex i is (+-x, +-y, +-z) with bit 0, 1, 2 of i set for +;
  * faces -x, +x, -y, +y, -z, +z, each with 4 half-edges counter-clockwise from outside. */
 static const cd3HullHalfEdge BOX_EDGES[24] = {
@@ -59,6 +67,7 @@ void cd3InitBoxPolytope(cd3Polytope* p, cd3Box box)
 	p->planes = p->planeStorage;
 	p->vertexCount = 8;
 	p->edgeCount = 24;
+	p->edgeAxisCount = 24;
 	p->faceCount = 6;
 	p->centroid = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	p->transform.p = box.center;
@@ -77,6 +86,7 @@ void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
 	p->planes = h->planes;
 	p->vertexCount = h->vertexCount;
 	p->edgeCount = h->edgeCount;
+	p->edgeAxisCount = h->edgeCount;
 	p->faceCount = h->faceCount;
 	p->centroid = h->centroid;
 	p->transform = hull.transform;
@@ -87,11 +97,33 @@ void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
 
 void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 {
+	cd3Vec ab = cd3Sub(t.b, t.a), bc = cd3Sub(t.c, t.b), ca = cd3Sub(t.a, t.c);
+	cdReal lab = cd3LengthSquared(ab), lbc = cd3LengthSquared(bc), lca = cd3LengthSquared(ca);
+	cd3Vec cross = cd3Cross(ab, cd3Neg(ca));
+	/* A collinear triangle (within round-off) is the segment of its longest edge: its normal
+	 * would be noise, so it gets zero normals (face axes skipped) and one edge axis, with the
+	 * longest edge moved to a-b. */
+	cdReal longest = cdMax(lab, cdMax(lbc, lca));
+	bool collinear = !(cd3Length(cross) > DEGENERATE_SINE * longest);
+	if (collinear && lbc == longest)
+	{
+		cd3Vec a = t.a;
+		t.a = t.b;
+		t.b = t.c;
+		t.c = a;
+	}
+	else if (collinear && lca == longest)
+	{
+		cd3Vec a = t.a;
+		t.a = t.c;
+		t.c = t.b;
+		t.b = a;
+	}
 	p->vertexStorage[0] = t.a;
 	p->vertexStorage[1] = t.b;
 	p->vertexStorage[2] = t.c;
-	/* A degenerate triangle gets zero normals: its face axes are skipped. */
-	cd3Vec n = cd3Normalize(cd3Cross(cd3Sub(t.b, t.a), cd3Sub(t.c, t.a)));
+	cd3Vec n = collinear ? cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)) : cd3Normalize(cross);
+	p->edgeAxisCount = collinear ? 1 : 6;
 	p->planeStorage[0].normal = n;
 	p->planeStorage[0].offset = cd3Dot(n, t.a);
 	p->planeStorage[1].normal = cd3Neg(n);
@@ -192,7 +224,7 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 	bool flat = a->flat || b->flat;
 	cd3Transform identity = CD3_TRANSFORM_IDENTITY;
 
-	for (int j = 0; j < b->edgeCount; ++j)
+	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
 		const cd3HullHalfEdge* eb = &b->edges[j];
 		if (eb->twin < j)
@@ -205,7 +237,7 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
 		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[b->edges[eb->twin].face].normal));
 		cd3Vec dxc = cd3Cross(d, c);
-		for (int i = 0; i < a->edgeCount; ++i)
+		for (int i = 0; i < a->edgeAxisCount; ++i)
 		{
 			const cd3HullHalfEdge* ea = &a->edges[i];
 			if (ea->twin < i)
@@ -228,10 +260,20 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 				Project(a, identity, axis, &loA, &hiA);
 				Project(b, relB, axis, &loB, &hiB);
 				separation = loB - hiA;
+				cdReal extremeA = hiA, extremeB = loB;
 				if (loA - hiB > separation)
 				{
 					separation = loA - hiB;
 					axis = cd3Neg(axis);
+					extremeA = -loA;
+					extremeB = -hiB;
+				}
+				/* Projection does not tell parallel edges apart: keep the pair only when both
+				 * edges support their polytopes along the axis, so the contact lies on them. */
+				cdReal slack = SUPPORT_TOLERANCE * (a->size + b->size + cdAbs(extremeA) + cdAbs(extremeB));
+				if (cd3Dot(axis, pa0) < extremeA - slack || cd3Dot(axis, qb0) > extremeB + slack)
+				{
+					continue;
 				}
 			}
 			else
@@ -242,7 +284,10 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 				{
 					continue;
 				}
-				if (cd3Dot(axis, cd3Sub(pa0, a->centroid)) < CD_R(0.0))
+				/* The axis is a normal of the Minkowski face, so it lies within A's arc na-nb:
+				 * on the side of its bisector (robust for flat and needle-like boxes, where the
+				 * centroid test is ambiguous). */
+				if (cd3Dot(axis, cd3Add(na, nb)) < CD_R(0.0))
 				{
 					axis = cd3Neg(axis);
 				}
@@ -295,7 +340,7 @@ cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, 
 	if (segmentLength > CD_R(0.0))
 	{
 		cd3Transform identity = CD3_TRANSFORM_IDENTITY;
-		for (int j = 0; j < b->edgeCount; ++j)
+		for (int j = 0; j < b->edgeAxisCount; ++j)
 		{
 			const cd3HullHalfEdge* eb = &b->edges[j];
 			if (eb->twin < j)
@@ -315,10 +360,17 @@ cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, 
 			cdReal d1 = cd3Dot(axis, s1), d2 = cd3Dot(axis, s2);
 			cdReal loS = cdMin(d1, d2), hiS = cdMax(d1, d2);
 			cdReal separation = loB - hiS;
+			cdReal extremeB = loB;
 			if (loS - hiB > separation)
 			{
 				separation = loS - hiB;
 				axis = cd3Neg(axis);
+				extremeB = -hiB;
+			}
+			cdReal slack = SUPPORT_TOLERANCE * (b->size + segmentLength + cdAbs(extremeB));
+			if (cd3Dot(axis, b->vertices[eb->origin]) > extremeB + slack)
+			{
+				continue; /* a parallel edge of B supports it along this axis */
 			}
 			if (separation > r->edgeSeparation)
 			{

@@ -16,7 +16,8 @@ typedef struct cd3Polytope
 	const int32_t* faceEdges;
 	const cd3Plane* planes;
 	int vertexCount, edgeCount, faceCount;
-	cd3Vec centroid; /* local, strictly inside unless flat */
+	int edgeAxisCount; /* half-edges the edge axes come from: 1 for a collinear triangle */
+	cd3Vec centroid;   /* local, strictly inside unless flat */
 	cd3Transform transform;
 	bool flat;
 	cdReal size; /* diagonal of the local bounds: the scale of tolerances */

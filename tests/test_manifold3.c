@@ -1,0 +1,666 @@
+/* Tests of the 3D contact manifolds: exact cases (resting boxes, edges and corners, spheres and
+ * capsules on boxes, stacked cylinders) and properties over thousands of random pairs against an
+ * independent reference: the separating axis test over every face normal and every edge-pair
+ * cross product, in double, for penetrating pairs; cd3Distance for separated ones. */
+#include "collide/collide.h"
+#include "random_shapes3.h"
+#include "test.h"
+
+#define SPECULATIVE CD_R(0.1)
+
+#if defined(COLLIDE_DOUBLE)
+#define TOL 1e-9
+#else
+#define TOL 1e-5
+#endif
+
+static double MinSeparation(const cd3Manifold* m)
+{
+	double s = INFINITY;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		s = fmin(s, (double)m->points[i].separation);
+	}
+	return s;
+}
+
+static cd3Box MakeBox(double cx, double cy, double cz, double hx, double hy, double hz, cd3Quat q)
+{
+	cd3Box b;
+	b.center = cd3MakeVec((cdReal)cx, (cdReal)cy, (cdReal)cz);
+	b.halfExtents = cd3MakeVec((cdReal)hx, (cdReal)hy, (cdReal)hz);
+	b.rotation = q;
+	return b;
+}
+
+static bool HasId(const cd3Manifold* m, uint32_t id)
+{
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		if (m->points[i].id == id)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+static bool SameIds(const cd3Manifold* a, const cd3Manifold* b)
+{
+	if (a->pointCount != b->pointCount)
+	{
+		return false;
+	}
+	for (int i = 0; i < a->pointCount; ++i)
+	{
+		if (!HasId(b, a->points[i].id))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* The manifold of the pair, and again after tiny motions of B: same ids. */
+static void CheckIdsStable(cd3Box a, cd3Box b)
+{
+	cd3Manifold m = cd3CollideBoxBox(a, b, SPECULATIVE);
+	TestRng rng = {77u};
+	for (int i = 0; i < 20; ++i)
+	{
+		cd3Box moved = b;
+		moved.center = cd3Add(b.center, RandomVec(&rng, 1.0e-4));
+		moved.rotation =
+			cd3NormalizeQuat(cd3MulQuat(cd3MakeQuatAxisAngle(RandomUnit(&rng), CD_R(1.0e-4)), b.rotation));
+		cd3Manifold n = cd3CollideBoxBox(a, moved, SPECULATIVE);
+		TEST_CHECKF(SameIds(&m, &n), "motion %d: %d vs %d points", i, m.pointCount, n.pointCount);
+	}
+}
+
+static void TestBoxResting(void)
+{
+	cd3Quat id = CD3_QUAT_IDENTITY;
+	cd3Box ground = MakeBox(0, 0, 0, 1, 1, 1, id);
+	cd3Box top = MakeBox(0, 1.4, 0, 0.5, 0.5, 0.5, id);
+	cd3Manifold m = cd3CollideBoxBox(ground, top, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 4);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, TOL);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECK_NEAR(m.points[i].separation, -0.1, TOL);
+		TEST_CHECK_NEAR(m.points[i].point.y, 0.95, TOL);
+		TEST_CHECK_NEAR(fabs((double)m.points[i].point.x), 0.5, TOL);
+		TEST_CHECK_NEAR(fabs((double)m.points[i].point.z), 0.5, TOL);
+	}
+	/* Reversed: B's face is the reference (or A's, the small box's bottom): same depth, normal down. */
+	cd3Manifold r = cd3CollideBoxBox(top, ground, SPECULATIVE);
+	TEST_CHECK(r.pointCount == 4);
+	TEST_CHECK_NEAR(r.normal.y, -1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&r), -0.1, TOL);
+	CheckIdsStable(ground, top);
+
+	/* Speculative: a gap of 0.05 is reported within 0.1, dropped within 0.01. */
+	cd3Box above = MakeBox(0, 1.55, 0, 0.5, 0.5, 0.5, id);
+	m = cd3CollideBoxBox(ground, above, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 4);
+	TEST_CHECK_NEAR(MinSeparation(&m), 0.05, TOL);
+	m = cd3CollideBoxBox(ground, above, CD_R(0.01));
+	TEST_CHECK(m.pointCount == 0);
+
+	/* Same size, exactly touching: 4 points at separation 0. */
+	cd3Box twin = MakeBox(0.3, 2, 0, 1, 1, 1, id);
+	m = cd3CollideBoxBox(ground, twin, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 4);
+	TEST_CHECK_NEAR(MinSeparation(&m), 0.0, TOL);
+}
+
+static void TestBoxEdgeAndCorner(void)
+{
+	cd3Quat id = CD3_QUAT_IDENTITY;
+	cd3Box ground = MakeBox(0, 0, 0, 1, 1, 1, id);
+	/* Turned 40 degrees about z (not 45: a tie between two incident faces): an edge down. */
+	cd3Quat edgeDown = cd3MakeQuatAxisAngle(cd3MakeVec(0, 0, 1), CD_PI * CD_R(40.0) / CD_R(180.0));
+	cd3Vec lowCorner = cd3RotateVector(edgeDown, cd3MakeVec(-0.5f, -0.5f, 0.5f));
+	for (int k = 0; k < 4; ++k)
+	{
+		cd3Vec c =
+			cd3RotateVector(edgeDown, cd3MakeVec((k & 1) ? 0.5f : -0.5f, (k & 2) ? 0.5f : -0.5f, 0.5f));
+		lowCorner = c.y < lowCorner.y ? c : lowCorner;
+	}
+	cd3Box edge = MakeBox(0, 1 - (double)lowCorner.y - 0.1, 0, 0.5, 0.5, 0.5, edgeDown);
+	cd3Manifold m = cd3CollideBoxBox(ground, edge, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 2);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, TOL);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECK_NEAR(m.points[i].separation, -0.1, 10 * TOL);
+		TEST_CHECK_NEAR(m.points[i].point.x, lowCorner.x, 10 * TOL);
+		TEST_CHECK_NEAR(fabs((double)m.points[i].point.z), 0.5, 10 * TOL);
+	}
+	CheckIdsStable(ground, edge);
+
+	/* Corner down: the diagonal (1,1,1) turned onto -y. */
+	cd3Vec diagonal = cd3Normalize(cd3MakeVec(1, 1, 1));
+	cd3Vec down = cd3MakeVec(0, -1, 0);
+	cd3Vec axis = cd3Normalize(cd3Cross(diagonal, down));
+	cdReal angle = (cdReal)acos((double)cd3Dot(diagonal, down));
+	cd3Box corner =
+		MakeBox(0, 1 + 0.5 * sqrt(3.0) - 0.1, 0, 0.5, 0.5, 0.5, cd3MakeQuatAxisAngle(axis, angle));
+	m = cd3CollideBoxBox(ground, corner, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, 10 * TOL);
+	TEST_CHECK_NEAR(m.points[0].point.x, 0.0, 10 * TOL);
+	TEST_CHECK_NEAR(m.points[0].point.y, 0.95, 10 * TOL);
+
+	/* Two edges crossing: box B turned 45 degrees about z and about y, over A's edge. */
+	cd3Quat edge45 = cd3MakeQuatAxisAngle(cd3MakeVec(0, 0, 1), CD_PI / CD_R(4.0));
+	cd3Quat crossQ = cd3MulQuat(cd3MakeQuatAxisAngle(cd3MakeVec(0, 1, 0), CD_PI / CD_R(2.0)), edge45);
+	cd3Box a = MakeBox(0, 0, 0, 0.5, 0.5, 0.5, cd3MakeQuatAxisAngle(cd3MakeVec(0, 0, 1), CD_PI / CD_R(4.0)));
+	cd3Box b = MakeBox(0, 2 * sqrt(0.5) - 0.1, 0, 0.5, 0.5, 0.5, crossQ);
+	m = cd3CollideBoxBox(a, b, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, 10 * TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, 10 * TOL);
+	TEST_CHECK(m.pointCount == 1 && (m.points[0].id & CD3_FEATURE_EDGES) != 0);
+	TEST_CHECK_NEAR(m.points[0].point.y, sqrt(0.5) - 0.05, 10 * TOL);
+}
+
+static void TestSphereBox(void)
+{
+	cd3Box box = MakeBox(0, 0, 0, 1, 1, 1, CD3_QUAT_IDENTITY);
+	double k = 0.4 / sqrt(2.0), c = 0.4 / sqrt(3.0);
+	struct
+	{
+		double x, y, z, nx, ny, nz;
+	} cases[] = {{0, 1.4, 0, 0, -1, 0},
+				 {1 + k, 1 + k, 0.2, -sqrt(0.5), -sqrt(0.5), 0},
+				 {1 + c, 1 + c, 1 + c, -1 / sqrt(3.0), -1 / sqrt(3.0), -1 / sqrt(3.0)},
+				 {0.2, 0.7, 0.1, 0, -1, 0}}; /* centre inside: the top face is nearest */
+	double expected[] = {-0.1, -0.1, -0.1, -0.8};
+	for (int i = 0; i < 4; ++i)
+	{
+		cd3Sphere s = {cd3MakeVec((cdReal)cases[i].x, (cdReal)cases[i].y, (cdReal)cases[i].z), CD_R(0.5)};
+		cd3Manifold m = cd3CollideSphereBox(s, box, SPECULATIVE);
+		TEST_CHECKF(m.pointCount == 1, "case %d", i);
+		TEST_CHECK_NEAR(m.normal.x, cases[i].nx, 10 * TOL);
+		TEST_CHECK_NEAR(m.normal.y, cases[i].ny, 10 * TOL);
+		TEST_CHECK_NEAR(m.normal.z, cases[i].nz, 10 * TOL);
+		TEST_CHECK_NEAR(MinSeparation(&m), expected[i], 10 * TOL);
+		cd3Shape sa = cd3MakeSphereShape(s), sb = cd3MakeBoxShape(box);
+		cd3Manifold r = cd3Collide(&sb, &sa, SPECULATIVE);
+		TEST_CHECK(r.pointCount == 1);
+		TEST_CHECK_NEAR(r.normal.y, -cases[i].ny, 10 * TOL);
+	}
+	/* Zero radius: a point on the surface touches. */
+	cd3Sphere point = {cd3MakeVec(0.3f, 1.0f, 0.2f), CD_R(0.0)};
+	cd3Manifold m = cd3CollideSphereBox(point, box, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), 0.0, TOL);
+}
+
+static void TestCapsuleBox(void)
+{
+	cd3Box box = MakeBox(0, 0, 0, 1, 1, 1, CD3_QUAT_IDENTITY);
+	cd3Capsule lying = {cd3MakeVec(-0.5f, 1.3f, 0.0f), cd3MakeVec(0.5f, 1.3f, 0.0f), CD_R(0.4)};
+	cd3Manifold m = cd3CollideCapsuleBox(lying, box, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 2);
+	TEST_CHECK_NEAR(m.normal.y, -1.0, TOL);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECK_NEAR(m.points[i].separation, -0.1, 10 * TOL);
+		TEST_CHECK_NEAR(fabs((double)m.points[i].point.x), 0.5, 10 * TOL);
+		TEST_CHECK_NEAR(m.points[i].point.y, 0.95, 10 * TOL);
+	}
+	/* Longer than the box: clipped to the face's sides. */
+	cd3Capsule longer = {cd3MakeVec(-3.0f, 1.3f, 0.5f), cd3MakeVec(3.0f, 1.3f, 0.5f), CD_R(0.4)};
+	m = cd3CollideCapsuleBox(longer, box, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 2);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECK_NEAR(fabs((double)m.points[i].point.x), 1.0, 10 * TOL);
+		TEST_CHECK_NEAR(m.points[i].separation, -0.1, 10 * TOL);
+	}
+	/* Core inside the box: the face's separating axis, still 2 points. */
+	cd3Capsule sunk = {cd3MakeVec(-0.5f, 0.8f, 0.0f), cd3MakeVec(0.5f, 0.8f, 0.0f), CD_R(0.4)};
+	m = cd3CollideCapsuleBox(sunk, box, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 2);
+	TEST_CHECK_NEAR(m.normal.y, -1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.6, 10 * TOL);
+	/* Standing up: one point. */
+	cd3Capsule standing = {cd3MakeVec(0.0f, 1.3f, 0.0f), cd3MakeVec(0.0f, 2.3f, 0.0f), CD_R(0.4)};
+	m = cd3CollideCapsuleBox(standing, box, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, 10 * TOL);
+	/* Zero length: a sphere. */
+	cd3Capsule ball = {cd3MakeVec(0.0f, 1.3f, 0.0f), cd3MakeVec(0.0f, 1.3f, 0.0f), CD_R(0.4)};
+	m = cd3CollideCapsuleBox(ball, box, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, 10 * TOL);
+}
+
+static void TestRoundPairs(void)
+{
+	cd3Sphere a = {cd3MakeVec(0, 0, 0), CD_R(1.0)};
+	cd3Sphere b = {cd3MakeVec(1.5f, 0, 0), CD_R(0.6)};
+	cd3Manifold m = cd3CollideSphereSphere(a, b, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(m.normal.x, 1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, TOL);
+	TEST_CHECK_NEAR(m.points[0].point.x, 0.95, TOL);
+	/* Coincident: a unit normal anyway. */
+	m = cd3CollideSphereSphere(a, a, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(cd3Length(m.normal), 1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -2.0, TOL);
+
+	cd3Capsule c1 = {cd3MakeVec(-1, 0, 0), cd3MakeVec(1, 0, 0), CD_R(0.5)};
+	cd3Capsule c2 = {cd3MakeVec(0, 0.9f, 0), cd3MakeVec(2, 0.9f, 0), CD_R(0.5)};
+	m = cd3CollideCapsuleCapsule(c1, c2, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 2);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, TOL);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECK_NEAR(m.points[i].separation, -0.1, TOL);
+	}
+	cd3Capsule c3 = {cd3MakeVec(0, 0.9f, -1), cd3MakeVec(0, 0.9f, 1), CD_R(0.5)};
+	m = cd3CollideCapsuleCapsule(c1, c3, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, TOL);
+	/* Crossing axes: the common perpendicular. */
+	cd3Capsule c4 = {cd3MakeVec(0, 0, -1), cd3MakeVec(0, 0, 1), CD_R(0.5)};
+	m = cd3CollideCapsuleCapsule(c1, c4, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(fabs((double)m.normal.y), 1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -1.0, TOL);
+	cd3Sphere onAxis = {cd3MakeVec(0.3f, 0, 0), CD_R(0.2)};
+	m = cd3CollideSphereCapsule(onAxis, c1, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(cd3Dot(m.normal, cd3MakeVec(1, 0, 0)), 0.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.7, TOL);
+}
+
+static void TestCylinders(void)
+{
+	cd3Hull* cylinder = NULL;
+	TEST_CHECK(cd3MakeCylinderHull(CD_R(0.5), CD_R(1.0), 16, &cylinder) == CD_OK);
+	if (cylinder == NULL)
+	{
+		return;
+	}
+	cd3HullShape a = {cylinder, CD3_TRANSFORM_IDENTITY};
+	cd3HullShape b = {cylinder,
+					  {cd3MakeVec(0.2f, 0.9f, 0.1f), cd3MakeQuatAxisAngle(cd3MakeVec(0, 1, 0), 0.3f)}};
+	cd3Manifold m = cd3CollideHullHull(a, b, SPECULATIVE);
+	TEST_CHECK(m.pointCount == 4);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, TOL);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECK_NEAR(m.points[i].separation, -0.1, 10 * TOL);
+		TEST_CHECK_NEAR(m.points[i].point.y, 0.45, 10 * TOL);
+	}
+	/* Lying on its side on a box hull: a line contact. */
+	cd3Hull* slab = NULL;
+	TEST_CHECK(cd3MakeBoxHull(cd3MakeVec(2, 0.5f, 2), &slab) == CD_OK);
+	if (slab != NULL)
+	{
+		cd3HullShape ground = {slab, CD3_TRANSFORM_IDENTITY};
+		/* 16 segments: a vertex at angle 0 points down after a quarter turn about x. */
+		cd3Quat side = cd3MulQuat(cd3MakeQuatAxisAngle(cd3MakeVec(1, 0, 0), CD_PI / CD_R(2.0)),
+								  cd3MakeQuatAxisAngle(cd3MakeVec(0, 1, 0), CD_PI / CD_R(16.0)));
+		cd3HullShape rolled = {cylinder, {cd3MakeVec(0, 1.45f, 0), side}};
+		m = cd3CollideHullHull(ground, rolled, SPECULATIVE);
+		TEST_CHECK(m.pointCount >= 2);
+		TEST_CHECK_NEAR(m.normal.y, 1.0, 10 * TOL);
+		cd3DestroyHull(slab);
+	}
+	cd3DestroyHull(cylinder);
+}
+
+static void TestDegenerate(void)
+{
+	cd3Box box = MakeBox(0, 0, 0, 1, 1, 1, CD3_QUAT_IDENTITY);
+	cd3Box point = MakeBox(0.5, 1.0, 0.2, 0, 0, 0, CD3_QUAT_IDENTITY);
+	cd3Manifold m = cd3CollideBoxBox(box, point, CD_R(0.0));
+	TEST_CHECK(m.pointCount >= 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), 0.0, TOL);
+	cd3Box flat = MakeBox(0.2, 0.95, 0.1, 0.3, 0, 0.3, CD3_QUAT_IDENTITY);
+	m = cd3CollideBoxBox(box, flat, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 4);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.05, 10 * TOL);
+	cd3Triangle sliver = {cd3MakeVec(-2, 0.9f, 0), cd3MakeVec(2, 0.9f, 0), cd3MakeVec(0, 0.9f, 0)};
+	m = cd3CollideBoxTriangle(box, sliver, CD_R(0.0));
+	TEST_CHECK(m.pointCount >= 1);
+	TEST_CHECK(isfinite((double)m.normal.x) && isfinite((double)m.normal.y) && isfinite((double)m.normal.z));
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, 10 * TOL);
+	cd3Triangle dot = {cd3MakeVec(0, 1.5f, 0), cd3MakeVec(0, 1.5f, 0), cd3MakeVec(0, 1.5f, 0)};
+	cd3Sphere s = {cd3MakeVec(0, 1.0f, 0), CD_R(0.6)};
+	m = cd3CollideSphereTriangle(s, dot, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), -0.1, 10 * TOL);
+	TEST_CHECK_NEAR(m.normal.y, 1.0, 10 * TOL);
+}
+
+/* ---- the reference: SAT in double over every candidate axis --------------------------------- */
+
+typedef struct Brute
+{
+	double v[64][3];
+	int vertexCount;
+	double e[256][3];
+	int edgeCount;
+	double n[256][3];
+	int faceCount;
+	double radius;
+} Brute;
+
+static void BAdd(double (*list)[3], int* count, cd3Vec v)
+{
+	list[*count][0] = (double)v.x;
+	list[*count][1] = (double)v.y;
+	list[*count][2] = (double)v.z;
+	++*count;
+}
+
+/* The core (vertices, edge directions, face normals) and radius of a shape in world space. */
+static void BruteFromShape(Brute* b, const cd3Shape* s)
+{
+	b->vertexCount = b->edgeCount = b->faceCount = 0;
+	b->radius = 0.0;
+	switch (s->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			BAdd(b->v, &b->vertexCount, s->sphere.center);
+			b->radius = (double)s->sphere.radius;
+			break;
+		case CD3_SHAPE_CAPSULE:
+			BAdd(b->v, &b->vertexCount, s->capsule.p1);
+			BAdd(b->v, &b->vertexCount, s->capsule.p2);
+			BAdd(b->e, &b->edgeCount, cd3Sub(s->capsule.p2, s->capsule.p1));
+			b->radius = (double)s->capsule.radius;
+			break;
+		case CD3_SHAPE_BOX:
+		{
+			cd3Vec h = s->box.halfExtents;
+			for (int i = 0; i < 8; ++i)
+			{
+				cd3Vec corner = cd3MakeVec((i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z);
+				BAdd(b->v, &b->vertexCount, cd3Add(s->box.center, cd3RotateVector(s->box.rotation, corner)));
+			}
+			cd3Vec axes[3] = {cd3MakeVec(1, 0, 0), cd3MakeVec(0, 1, 0), cd3MakeVec(0, 0, 1)};
+			for (int k = 0; k < 3; ++k)
+			{
+				BAdd(b->e, &b->edgeCount, cd3RotateVector(s->box.rotation, axes[k]));
+				BAdd(b->n, &b->faceCount, cd3RotateVector(s->box.rotation, axes[k]));
+			}
+			break;
+		}
+		case CD3_SHAPE_HULL:
+		{
+			const cd3Hull* h = s->hull.hull;
+			cd3Transform t = s->hull.transform;
+			for (int i = 0; i < h->vertexCount && i < 64; ++i)
+			{
+				BAdd(b->v, &b->vertexCount, cd3TransformPoint(t, h->vertices[i]));
+			}
+			for (int i = 0; i < h->edgeCount && b->edgeCount < 256; ++i)
+			{
+				if (h->edges[i].twin > i)
+				{
+					cd3Vec d = cd3Sub(h->vertices[h->edges[h->edges[i].twin].origin],
+									  h->vertices[h->edges[i].origin]);
+					BAdd(b->e, &b->edgeCount, cd3RotateVector(t.q, d));
+				}
+			}
+			for (int i = 0; i < h->faceCount && b->faceCount < 256; ++i)
+			{
+				BAdd(b->n, &b->faceCount, cd3RotateVector(t.q, h->planes[i].normal));
+			}
+			break;
+		}
+		case CD3_SHAPE_TRIANGLE:
+			BAdd(b->v, &b->vertexCount, s->triangle.a);
+			BAdd(b->v, &b->vertexCount, s->triangle.b);
+			BAdd(b->v, &b->vertexCount, s->triangle.c);
+			BAdd(b->e, &b->edgeCount, cd3Sub(s->triangle.b, s->triangle.a));
+			BAdd(b->e, &b->edgeCount, cd3Sub(s->triangle.c, s->triangle.b));
+			BAdd(b->e, &b->edgeCount, cd3Sub(s->triangle.a, s->triangle.c));
+			{
+				double u[3] = {b->e[0][0], b->e[0][1], b->e[0][2]};
+				double w[3] = {-b->e[2][0], -b->e[2][1], -b->e[2][2]};
+				b->n[0][0] = u[1] * w[2] - u[2] * w[1];
+				b->n[0][1] = u[2] * w[0] - u[0] * w[2];
+				b->n[0][2] = u[0] * w[1] - u[1] * w[0];
+				b->faceCount = 1;
+			}
+			break;
+		default:
+			break;
+	}
+}
+
+static double AxisSeparation(const Brute* a, const Brute* b, const double* axis)
+{
+	double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+	if (!(len > 1e-9))
+	{
+		return -INFINITY;
+	}
+	double loA = INFINITY, hiA = -INFINITY, loB = INFINITY, hiB = -INFINITY;
+	for (int i = 0; i < a->vertexCount; ++i)
+	{
+		double d = (a->v[i][0] * axis[0] + a->v[i][1] * axis[1] + a->v[i][2] * axis[2]) / len;
+		loA = fmin(loA, d);
+		hiA = fmax(hiA, d);
+	}
+	for (int i = 0; i < b->vertexCount; ++i)
+	{
+		double d = (b->v[i][0] * axis[0] + b->v[i][1] * axis[1] + b->v[i][2] * axis[2]) / len;
+		loB = fmin(loB, d);
+		hiB = fmax(hiB, d);
+	}
+	return fmax(loB - hiA, loA - hiB);
+}
+
+/* The largest separation of the two cores over every face normal and edge-pair cross product (0
+ * when there is no axis: two points or collinear segments that meet). */
+static double BruteSat(const Brute* a, const Brute* b)
+{
+	double best = -INFINITY;
+	for (int i = 0; i < a->faceCount; ++i)
+	{
+		best = fmax(best, AxisSeparation(a, b, a->n[i]));
+	}
+	for (int i = 0; i < b->faceCount; ++i)
+	{
+		best = fmax(best, AxisSeparation(a, b, b->n[i]));
+	}
+	for (int i = 0; i < a->edgeCount; ++i)
+	{
+		for (int j = 0; j < b->edgeCount; ++j)
+		{
+			const double* u = a->e[i];
+			const double* w = b->e[j];
+			double lu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+			double lw = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+			double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+			double lc = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+			if (lc > 1e-6 * lu * lw)
+			{
+				best = fmax(best, AxisSeparation(a, b, c));
+			}
+		}
+	}
+	return best == -INFINITY ? 0.0 : best;
+}
+
+static cd3Shape CoreShape(const cd3Shape* s)
+{
+	cd3Shape c = *s;
+	if (s->type == CD3_SHAPE_SPHERE)
+	{
+		c.sphere.radius = CD_R(0.0);
+	}
+	else if (s->type == CD3_SHAPE_CAPSULE)
+	{
+		c.capsule.radius = CD_R(0.0);
+	}
+	return c;
+}
+
+/* Signed separation of the pair: distance when apart, minus the penetration depth when not. */
+static double ReferenceSeparation(const cd3Shape* a, const cd3Shape* b)
+{
+	Brute ba, bb;
+	BruteFromShape(&ba, a);
+	BruteFromShape(&bb, b);
+	cd3Shape ca = CoreShape(a), cb = CoreShape(b);
+	double core = (double)cd3Distance(&ca, &cb).distance;
+	if (core > 1e-4)
+	{
+		return core - ba.radius - bb.radius;
+	}
+	double sat = BruteSat(&ba, &bb);
+	if (core > 0.0)
+	{
+		sat = fmax(sat, 0.0);
+	}
+	return fmin(sat, core) - ba.radius - bb.radius;
+}
+
+static double ShapeSize(const cd3Shape* s)
+{
+	cd3Aabb box = cd3ComputeShapeAabb(s);
+	return (double)cd3Length(cd3Sub(box.max, box.min));
+}
+
+static cd3Shape Translated(const cd3Shape* s, cd3Vec d)
+{
+	cd3Transform t = {d, CD3_QUAT_IDENTITY};
+	return TransformShape(s, t);
+}
+
+static const cd3ShapeType TYPES[5] = {CD3_SHAPE_SPHERE, CD3_SHAPE_CAPSULE, CD3_SHAPE_BOX, CD3_SHAPE_HULL,
+									  CD3_SHAPE_TRIANGLE};
+
+static void TestRandomPairs(void)
+{
+	TestRng rng = {0x3a11f01du};
+	int compared = 0;
+	for (int ta = 0; ta < 5; ++ta)
+	{
+		for (int tb = ta; tb < 5; ++tb)
+		{
+			if (ta == 4 && tb == 4)
+			{
+				continue;
+			}
+			for (int n = 0; n < 400; ++n)
+			{
+				cd3Shape a = RandomShape(&rng, TYPES[ta]);
+				cd3Shape b = RandomShape(&rng, TYPES[tb]);
+				double size = ShapeSize(&a) + ShapeSize(&b);
+				/* Depth: the reference-face bias is 1e-4 of the size. Surfaces: float round-off. */
+				double depthTol = 2e-4 * size + 1e-5;
+				double tol = 1e-3 * size + 1e-4;
+				double ref = ReferenceSeparation(&a, &b);
+				cd3Manifold m = cd3Collide(&a, &b, SPECULATIVE);
+				double band = 1e-3 * size + 1e-4;
+				bool nearBoundary = fabs(ref) < band || fabs(ref - (double)SPECULATIVE) < band;
+				TEST_CHECK(m.pointCount >= 0 && m.pointCount <= 4);
+				if (nearBoundary)
+				{
+					continue;
+				}
+				++compared;
+				TEST_CHECKF((m.pointCount > 0) == (ref <= (double)SPECULATIVE),
+							"%s-%s #%d: %d points, reference %.9g", TypeName(a.type), TypeName(b.type), n,
+							m.pointCount, ref);
+				bool overlap = cd3Overlap(&a, &b);
+				TEST_CHECKF(overlap == (ref <= 0.0), "%s-%s #%d: overlap %d, reference %.9g",
+							TypeName(a.type), TypeName(b.type), n, overlap, ref);
+				if (m.pointCount == 0)
+				{
+					continue;
+				}
+				double minSep = MinSeparation(&m);
+				TEST_CHECKF(fabs((double)cd3Length(m.normal) - 1.0) < 1e-4, "%s-%s #%d: normal length %.9g",
+							TypeName(a.type), TypeName(b.type), n, (double)cd3Length(m.normal));
+				TEST_CHECKF(fabs(minSep - ref) <= depthTol, "%s-%s #%d: min separation %.9g, reference %.9g",
+							TypeName(a.type), TypeName(b.type), n, minSep, ref);
+				if (fabs(minSep - ref) > depthTol && getenv("M3DEBUG"))
+				{
+					PrintShape("a", &a);
+					PrintShape("b", &b);
+				}
+				/* The points lie on both surfaces. */
+				for (int i = 0; i < m.pointCount; ++i)
+				{
+					cd3ManifoldPoint p = m.points[i];
+					cd3Vec onA = cd3MulSub(p.point, CD_R(0.5) * p.separation, m.normal);
+					cd3Vec onB = cd3MulAdd(p.point, CD_R(0.5) * p.separation, m.normal);
+					double da = (double)cd3VecDistance(cd3ClosestPointOnShape(&a, onA), onA);
+					double db = (double)cd3VecDistance(cd3ClosestPointOnShape(&b, onB), onB);
+					TEST_CHECKF(da <= tol && db <= tol, "%s-%s #%d point %d: %.3g off A, %.3g off B",
+								TypeName(a.type), TypeName(b.type), n, i, da, db);
+					if (!(da <= tol && db <= tol) && getenv("M3DEBUG"))
+					{
+						PrintShape("a", &a);
+						PrintShape("b", &b);
+						fprintf(stderr, "  normal %g %g %g, %d points, id %x sep %g point %g %g %g ref %g\n",
+								(double)m.normal.x, (double)m.normal.y, (double)m.normal.z, m.pointCount,
+								p.id, (double)p.separation, (double)p.point.x, (double)p.point.y,
+								(double)p.point.z, ref);
+					}
+				}
+				/* Moving B by the separation along the normal makes the pair just touch. */
+				cd3Shape moved = Translated(&b, cd3Scale((cdReal)-minSep, m.normal));
+				double touching = (double)cd3Distance(&a, &moved).distance;
+				TEST_CHECKF(touching <= tol, "%s-%s #%d: %.9g apart after moving by %.9g", TypeName(a.type),
+							TypeName(b.type), n, touching, -minSep);
+				cd3Shape apart = Translated(&moved, cd3Scale((cdReal)(0.02 * size), m.normal));
+				double gap = (double)cd3Distance(&a, &apart).distance;
+				TEST_CHECKF(gap > 0.0, "%s-%s #%d: still touching after moving past the depth",
+							TypeName(a.type), TypeName(b.type), n);
+				/* Symmetry: swapped shapes give the opposite normal and the same separations. */
+				cd3Manifold s = cd3Collide(&b, &a, SPECULATIVE);
+				if (ta != tb)
+				{
+					TEST_CHECKF(s.pointCount == m.pointCount &&
+									(double)cd3VecDistance(s.normal, cd3Neg(m.normal)) <= 1e-5,
+								"%s-%s #%d: swapped %d points", TypeName(a.type), TypeName(b.type), n,
+								s.pointCount);
+					TEST_CHECK_NEAR(MinSeparation(&s), minSep, 1e-6 * size + TOL);
+				}
+				else
+				{
+					TEST_CHECKF(s.pointCount > 0 && fabs(MinSeparation(&s) - minSep) <= tol,
+								"%s-%s #%d: swapped %.9g vs %.9g", TypeName(a.type), TypeName(b.type), n,
+								MinSeparation(&s), minSep);
+				}
+				/* Invariance under a common rigid motion. */
+				cd3Transform t = {RandomVec(&rng, 3.0), RandomQuat(&rng)};
+				cd3Shape ta2 = TransformShape(&a, t), tb2 = TransformShape(&b, t);
+				cd3Manifold tm = cd3Collide(&ta2, &tb2, SPECULATIVE);
+				TEST_CHECKF(tm.pointCount > 0 && fabs(MinSeparation(&tm) - minSep) <= tol,
+							"%s-%s #%d: moved %.9g vs %.9g", TypeName(a.type), TypeName(b.type), n,
+							MinSeparation(&tm), minSep);
+			}
+		}
+	}
+	TEST_CHECK(compared > 3000);
+	printf("random pairs compared: %d\n", compared);
+}
+
+int main(void)
+{
+	TEST_RUN(TestBoxResting);
+	TEST_RUN(TestBoxEdgeAndCorner);
+	TEST_RUN(TestSphereBox);
+	TEST_RUN(TestCapsuleBox);
+	TEST_RUN(TestRoundPairs);
+	TEST_RUN(TestCylinders);
+	TEST_RUN(TestDegenerate);
+	TEST_RUN(TestRandomPairs);
+	return TEST_SUMMARY();
+}
