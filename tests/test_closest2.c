@@ -211,6 +211,59 @@ static void TestClosestPointHugeTiny(void)
 	CheckClosestPoints("far", 1e4, 10.0, 100, 0xC105E4);
 }
 
+/* Slivers (tip angles down to 1e-5, up to 1e9 / 1e30 long): a point beyond the sharp tip, on an
+ * edge's extension or behind the tip, has the tip as its closest point, however close it stays to
+ * both edge lines; the fuzzer's sliver first. */
+static void TestSliverPolygons(void)
+{
+	cd2Vec points[3] = {V(32500, -125000), V(1e9, -125000), V(1e9, -43750)};
+	cd2Polygon sliver;
+	TEST_CHECK(cd2MakePolygon(points, 3, &sliver) == CD_OK);
+	CHECK_VEC(cd2ClosestPointOnPolygon(&sliver, V(-125000, -125000)), 32500, -125000, 0);
+
+	TestRng rng = TestRngMake(0xC105E5);
+#if CD_DOUBLE
+	const double largest = 30.0;
+#else
+	const double largest = 9.0;
+#endif
+	int checked = 0;
+	for (int n = 0; n < 3000; ++n)
+	{
+		double k = pow(10.0, TestRngRange(&rng, -largest, largest));
+		double angle = pow(10.0, TestRngRange(&rng, -5.0, -1.0));
+		double heading = TestRngRange(&rng, -3.2, 3.2);
+		double ux = cos(heading - 0.5 * angle), uy = sin(heading - 0.5 * angle);
+		double wx = cos(heading + 0.5 * angle), wy = sin(heading + 0.5 * angle);
+		double tipX = k * TestRngRange(&rng, -1.0, 1.0), tipY = k * TestRngRange(&rng, -1.0, 1.0);
+		double l1 = k * TestRngRange(&rng, 0.5, 2.0), l2 = k * TestRngRange(&rng, 0.5, 2.0);
+		cd2Vec corners[3] = {V(tipX, tipY), V(tipX + l1 * ux, tipY + l1 * uy),
+							 V(tipX + l2 * wx, tipY + l2 * wy)};
+		cd2Polygon polygon;
+		if (cd2MakePolygon(corners, 3, &polygon) != CD_OK)
+		{
+			continue;
+		}
+		double d = k * pow(10.0, TestRngRange(&rng, -6.0, 0.0));
+		double bx = TestRngInt(&rng, 2) == 0 ? ux : cos(heading),
+			   by = TestRngInt(&rng, 2) == 0 ? uy : sin(heading);
+		cd2Vec p = V(tipX - d * bx, tipY - d * by);
+		RefVec tip = RefFromVec(corners[0]);
+		double offset = sqrt(RefDistance2(RefFromVec(p), tip));
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * fmax(offset, fmax(fabs(tip.x), fabs(tip.y)));
+		if (offset <= 2.0 * tolerance)
+		{
+			continue; /* p rounded onto the tip */
+		}
+		++checked;
+		double moved = sqrt(RefDistance2(RefFromVec(cd2ClosestPointOnPolygon(&polygon, p)), tip));
+		TEST_CHECKF(moved <= tolerance,
+					"case %d: angle %.3g, point %.3g beyond the tip: closest point %.3g from the tip", n,
+					angle, offset, moved);
+	}
+	TEST_CHECKF(checked > 1000, "only %d cases", checked);
+}
+
 static void CheckSegmentPairs(const char* label, double extent, int count, uint64_t seed)
 {
 	TestRng rng = TestRngMake(seed);
@@ -285,5 +338,6 @@ int main(void)
 	TEST_RUN(TestClosestPointOrdinary);
 	TEST_RUN(TestClosestPointHugeTiny);
 	TEST_RUN(TestSegmentPairsSampled);
+	TEST_RUN(TestSliverPolygons);
 	return TEST_SUMMARY();
 }

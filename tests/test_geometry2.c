@@ -169,6 +169,27 @@ static void TestPolygonValidator(void)
 	p = good;
 	p.centroid = V(5, 5);
 	TEST_CHECK(!cd2IsValidPolygon(&p));
+
+	/* A dent 100 deep near the origin next to a vertex at 1e9: within 64 epsilons of the largest
+	 * coordinate (7600 in float), but a dent all the same (cd2PointInPolygon, whose tolerance is
+	 * relative to the offsets it compares, finds vertices 0 and 2 outside the edges around it). */
+	cd2Vec dent[4] = {V(0, 0), V(1e9, 0), V(0, 2000), V(100, 1000)};
+	p.count = 4;
+	for (int i = 0; i < 4; ++i)
+	{
+		p.vertices[i] = dent[i];
+		p.normals[i] = cd2Normalize(cd2RightPerp(cd2Sub(dent[(i + 1) % 4], dent[i])));
+	}
+	p.centroid = V(3e8, 600);
+	TEST_CHECK(!cd2IsValidPolygon(&p));
+	/* Without the dent it is a valid triangle, its vertices inside it. */
+	p.count = 3;
+	p.normals[2] = cd2Normalize(cd2RightPerp(cd2Sub(dent[0], dent[2])));
+	TEST_CHECK(cd2IsValidPolygon(&p));
+	for (int i = 0; i < 3; ++i)
+	{
+		TEST_CHECK(cd2PointInPolygon(p.vertices[i], &p));
+	}
 }
 
 static void CheckAabb(cd2Aabb b, double minX, double minY, double maxX, double maxY, double tolerance)

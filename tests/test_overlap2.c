@@ -820,6 +820,96 @@ static void TestPointInShapeReference(void)
 #endif
 }
 
+/* Slivers: triangles with a sharp tip (angles down to 1e-5), up to 1e9 (float) / 1e30 (double)
+ * long and far from the origin. Containment's tolerance is relative to the offsets compared: a
+ * point beyond the tip, on an edge's extension or behind the tip, is outside once its distance
+ * exceeds a few hundred epsilons of its offset from the tip; points inside near the tip and the
+ * vertices are inside. */
+static void TestSliverPolygons(void)
+{
+	/* The fuzzer's sliver (tip angle 8.1e-5): the point lies on the extension of the bottom edge,
+	 * 157500 beyond the tip (32500, -125000). */
+	cd2Vec points[3] = {V(32500, -125000), V(1e9, -125000), V(1e9, -43750)};
+	cd2Polygon sliver;
+	TEST_CHECK(cd2MakePolygon(points, 3, &sliver) == CD_OK);
+	TEST_CHECK(!cd2PointInPolygon(V(-125000, -125000), &sliver));
+	TEST_CHECK(!cd2PointInPolygon(V(32499, -125000), &sliver));
+	TEST_CHECK(cd2PointInPolygon(V(32500, -125000), &sliver));
+	/* At x = 5e8 the sliver spans y from -125000 to -84376.3 (round-off there: 8 eps of 5e8 = 477 in
+	 * float). */
+	TEST_CHECK(cd2PointInPolygon(V(5e8, -100000), &sliver));
+	TEST_CHECK(cd2PointInPolygon(V(5e8, -125000), &sliver));
+	TEST_CHECK(!cd2PointInPolygon(V(5e8, -82000), &sliver));
+	TEST_CHECK(!cd2PointInPolygon(V(5e8, -127000), &sliver));
+
+	TestRng rng = TestRngMake(0x511BE5);
+#if CD_DOUBLE
+	const double largest = 30.0;
+#else
+	const double largest = 9.0;
+#endif
+	int built = 0, outsideChecked = 0, insideChecked = 0;
+	for (int n = 0; n < 3000; ++n)
+	{
+		double k = pow(10.0, TestRngRange(&rng, -largest, largest));
+		double angle = pow(10.0, TestRngRange(&rng, -5.0, -1.0));
+		double heading = TestRngRange(&rng, -3.2, 3.2);
+		double ux = cos(heading - 0.5 * angle), uy = sin(heading - 0.5 * angle);
+		double wx = cos(heading + 0.5 * angle), wy = sin(heading + 0.5 * angle);
+		double bx = cos(heading), by = sin(heading);
+		double tipX = k * TestRngRange(&rng, -1.0, 1.0), tipY = k * TestRngRange(&rng, -1.0, 1.0);
+		double l1 = k * TestRngRange(&rng, 0.5, 2.0), l2 = k * TestRngRange(&rng, 0.5, 2.0);
+		cd2Vec corners[3] = {V(tipX, tipY), V(tipX + l1 * ux, tipY + l1 * uy),
+							 V(tipX + l2 * wx, tipY + l2 * wy)};
+		cd2Polygon polygon;
+		if (cd2MakePolygon(corners, 3, &polygon) != CD_OK)
+		{
+			continue;
+		}
+		++built;
+		cd2Shape shape = cd2MakePolygonShape(&polygon);
+		for (int i = 0; i < polygon.count; ++i)
+		{
+			TEST_CHECKF(cd2PointInPolygon(polygon.vertices[i], &polygon), "case %d: vertex %d outside", n, i);
+		}
+		RefVec tip = RefFromVec(corners[0]);
+		/* Beyond the tip: on the extension of an edge, or behind it along the bisector. */
+		double d = k * pow(10.0, TestRngRange(&rng, -6.0, 0.0));
+		cd2Vec beyond[2] = {V(tipX - d * ux, tipY - d * uy), V(tipX - d * bx, tipY - d * by)};
+		for (int i = 0; i < 2; ++i)
+		{
+			double distance = RefPointShapeDistance(&shape, beyond[i]);
+			double offset = sqrt(RefDistance2(RefFromVec(beyond[i]), tip));
+			if (distance > 256.0 * (double)CD_REAL_EPSILON * offset)
+			{
+				++outsideChecked;
+				TEST_CHECKF(!cd2PointInPolygon(beyond[i], &polygon),
+							"case %d: point %.3g beyond the tip (angle %.3g), %.3g from the polygon, inside",
+							n, offset, angle, distance);
+			}
+		}
+		/* Inside near the tip, along the bisector: its distance to the edge lines is d sin(angle / 2). */
+		cd2Vec in = V(tipX + d * bx, tipY + d * by);
+		RefVec p = RefFromVec(in);
+		double margin = INFINITY;
+		for (int i = 0; i < 3; ++i)
+		{
+			RefVec a = RefFromVec(polygon.vertices[i]), b = RefFromVec(polygon.vertices[(i + 1) % 3]);
+			RefVec e = RefSub(b, a);
+			margin = fmin(margin, RefCross(e, RefSub(p, a)) / sqrt(RefDot(e, e)));
+		}
+		if (margin > 256.0 * (double)CD_REAL_EPSILON * sqrt(RefDistance2(p, tip)))
+		{
+			++insideChecked;
+			TEST_CHECKF(cd2PointInPolygon(in, &polygon),
+						"case %d: point %.3g inside from every edge line, outside", n, margin);
+		}
+	}
+	TEST_CHECKF(built > 1000 && outsideChecked > 1000 && insideChecked > 500,
+				"built %d slivers, checked %d points outside, %d inside", built, outsideChecked,
+				insideChecked);
+}
+
 int main(void)
 {
 	TEST_RUN(TestPointIn);
@@ -838,5 +928,6 @@ int main(void)
 	TEST_RUN(TestRigidInvariance);
 	TEST_RUN(TestTouching);
 	TEST_RUN(TestPointInShapeReference);
+	TEST_RUN(TestSliverPolygons);
 	return TEST_SUMMARY();
 }

@@ -711,6 +711,71 @@ static void TestPolygonExact(void)
 	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0);
 }
 
+/* Slivers (tip angles down to 1e-5, up to 1e9 / 1e30 long): a ray from beyond the sharp tip, on
+ * an edge's extension or behind the tip, starts outside however close it stays to both edge lines:
+ * moving away it misses, moving through the tip it enters there. The fuzzer's sliver first. */
+static void TestSliverPolygon(void)
+{
+	cd2Vec points[3] = {cd2MakeVec(CD_R(32500.0), CD_R(-125000.0)), cd2MakeVec(CD_R(1e9), CD_R(-125000.0)),
+						cd2MakeVec(CD_R(1e9), CD_R(-43750.0))};
+	cd2Polygon sliver;
+	TEST_CHECK(cd2MakePolygon(points, 3, &sliver) == CD_OK);
+	cd2RayHit hit = UntouchedHit();
+	TEST_CHECK(
+		!cd2RaycastPolygon(&sliver, Ray(CD_R(-125000.0), CD_R(-125000.0), CD_R(-1000.0), CD_R(0.0)), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(
+		cd2RaycastPolygon(&sliver, Ray(CD_R(-125000.0), CD_R(-125000.0), CD_R(315000.0), CD_R(0.0)), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, EXACT);
+
+	TestRng rng = TestRngMake(0x511BE6);
+#if CD_DOUBLE
+	const double largest = 30.0;
+#else
+	const double largest = 9.0;
+#endif
+	int checked = 0;
+	for (int n = 0; n < 3000; ++n)
+	{
+		double k = pow(10.0, TestRngRange(&rng, -largest, largest));
+		double angle = pow(10.0, TestRngRange(&rng, -5.0, -1.0));
+		double heading = TestRngRange(&rng, -3.2, 3.2);
+		DVec u = DMake(cos(heading - 0.5 * angle), sin(heading - 0.5 * angle));
+		DVec w = DMake(cos(heading + 0.5 * angle), sin(heading + 0.5 * angle));
+		DVec tip = DMake(k * TestRngRange(&rng, -1.0, 1.0), k * TestRngRange(&rng, -1.0, 1.0));
+		cd2Vec corners[3] = {V(tip), V(DAdd(tip, DScale(k * TestRngRange(&rng, 0.5, 2.0), u))),
+							 V(DAdd(tip, DScale(k * TestRngRange(&rng, 0.5, 2.0), w)))};
+		cd2Polygon polygon;
+		if (cd2MakePolygon(corners, 3, &polygon) != CD_OK)
+		{
+			continue;
+		}
+		tip = D(corners[0]);
+		DVec back = TestRngInt(&rng, 2) == 0 ? u : DMake(cos(heading), sin(heading));
+		double d = k * pow(10.0, TestRngRange(&rng, -6.0, 0.0));
+		cd2Vec origin = V(DSub(tip, DScale(d, back)));
+		DVec offset = DSub(D(origin), tip);
+		double distance = sqrt(DDot(offset, offset));
+		if (distance <= 64.0 * (double)CD_REAL_EPSILON * fmax(fabs(tip.x), fabs(tip.y)))
+		{
+			continue; /* the origin rounded onto the tip */
+		}
+		++checked;
+		hit = UntouchedHit();
+		bool away =
+			cd2RaycastPolygon(&polygon, Ray(origin.x, origin.y, (cdReal)offset.x, (cdReal)offset.y), &hit);
+		TEST_CHECKF(!away && IsUntouched(hit),
+					"case %d: angle %.3g, ray from %.3g beyond the tip moving away hits at %.9g", n, angle,
+					distance, (double)hit.fraction);
+		bool through = cd2RaycastPolygon(
+			&polygon, Ray(origin.x, origin.y, (cdReal)(-2.0 * offset.x), (cdReal)(-2.0 * offset.y)), &hit);
+		TEST_CHECKF(through && fabs((double)hit.fraction - 0.5) <= 1e-3,
+					"case %d: angle %.3g, ray from %.3g beyond the tip through it: hit %d at %.9g", n, angle,
+					distance, (int)through, (double)hit.fraction);
+	}
+	TEST_CHECKF(checked > 1000, "only %d cases", checked);
+}
+
 static void TestSegmentExact(void)
 {
 	cd2Segment g = {cd2MakeVec(CD_R(0.0), CD_R(-1.0)), cd2MakeVec(CD_R(0.0), CD_R(3.0))};
@@ -1191,6 +1256,7 @@ int main(void)
 	TEST_RUN(TestBoxExact);
 	TEST_RUN(TestPolygonExact);
 	TEST_RUN(TestSegmentExact);
+	TEST_RUN(TestSliverPolygon);
 	TEST_RUN(TestDispatcher);
 	TEST_RUN(TestSolidsAgainstReference);
 	TEST_RUN(TestSolidsNearTangent);

@@ -125,8 +125,11 @@ static bool IsUnitVec(cd2Vec v)
 }
 
 /* Checks in double. Convexity allows a vertex to stand up to 64 * CD_REAL_EPSILON * (largest
- * |coordinate|) outside an edge's line (the round-off of storing the vertices), and each normal may
- * deviate from its edge's outward unit perpendicular by the unit-length tolerance. */
+ * |coordinate|) outside an edge's line (the round-off of storing the vertices), and no more than
+ * 4 * CD_REAL_EPSILON of its offset from the edge's nearer end (so that cd2PointInPolygon, whose
+ * tolerance is relative to that offset, finds every vertex inside: an absolute tolerance alone
+ * lets a vertex near a sharp tip stand far out in relative terms). Each normal may deviate from
+ * its edge's outward unit perpendicular by the unit-length tolerance. */
 static cdResult ValidatePolygon(const cd2Polygon* polygon)
 {
 	if (polygon == NULL)
@@ -196,6 +199,22 @@ static cdResult ValidatePolygon(const cd2Polygon* polygon)
 			double dx = (double)polygon->vertices[j].x - (double)v1.x;
 			double dy = (double)polygon->vertices[j].y - (double)v1.y;
 			if (nx * dx + ny * dy > tolerance)
+			{
+				return CD_ERROR_DEGENERATE;
+			}
+			/* Every vertex must pass cd2PointInPolygon's test of this edge: measured from the edge's
+			 * nearer end, within a tolerance relative to that offset (half of the query's, which
+			 * leaves room for the query's own round-off). */
+			double fx = (double)polygon->vertices[j].x - (double)v2.x;
+			double fy = (double)polygon->vertices[j].y - (double)v2.y;
+			double offset = fmax(fabs(dx), fabs(dy)), offsetFromEnd = fmax(fabs(fx), fabs(fy));
+			if (offsetFromEnd < offset)
+			{
+				dx = fx;
+				dy = fy;
+				offset = offsetFromEnd;
+			}
+			if (nx * dx + ny * dy > 4.0 * (double)CD_REAL_EPSILON * offset)
 			{
 				return CD_ERROR_DEGENERATE;
 			}

@@ -61,16 +61,39 @@ cd2Vec cd2ClosestPointOnBox(cd2Box b, cd2Vec p)
 	return cd2Add(b.center, cd2RotateVector(q, clamped));
 }
 
-/* Closest point on the core polygon (the vertices' hull, radius ignored). */
+static cdReal MaxAbs(cd2Vec v)
+{
+	return cdMax(cdAbs(v.x), cdAbs(v.y));
+}
+
+/* Closest point on the core polygon (the vertices' hull, radius ignored). The side of each edge
+ * line is measured from the edge's end point nearer to p, so that its round-off is relative to
+ * p's offset from it. A point within round-off (8 epsilons of that offset) of an edge line is
+ * inside only if it is that close to the boundary too: beyond a sharp vertex a point stays
+ * within round-off of both edge lines however far it is (see cd2PointInPolygon). */
 static cd2Vec ClosestPointOnCorePolygon(const cd2Polygon* polygon, cd2Vec p)
 {
 	int count = polygon->count;
-	bool inside = true;
-	for (int i = 0; i < count && inside; ++i)
+	bool inside = true, nearEdgeLine = false;
+	cdReal nearTolerance = CD_REAL_MAX;
+	for (int i = 0; i < count; ++i)
 	{
-		inside = cd2Dot(polygon->normals[i], cd2Sub(p, polygon->vertices[i])) <= CD_R(0.0);
+		cd2Vec offset = cd2Sub(p, polygon->vertices[i]);
+		cd2Vec offsetFromEnd = cd2Sub(p, polygon->vertices[i + 1 < count ? i + 1 : 0]);
+		if (MaxAbs(offsetFromEnd) < MaxAbs(offset))
+		{
+			offset = offsetFromEnd;
+		}
+		cdReal separation = cd2Dot(polygon->normals[i], offset);
+		cdReal tolerance = CD_R(8.0) * CD_REAL_EPSILON * MaxAbs(offset);
+		inside = inside && separation <= CD_R(0.0);
+		if (cdAbs(separation) <= tolerance)
+		{
+			nearEdgeLine = true;
+			nearTolerance = cdMin(nearTolerance, tolerance);
+		}
 	}
-	if (inside)
+	if (inside && !nearEdgeLine)
 	{
 		return p;
 	}
@@ -88,7 +111,9 @@ static cd2Vec ClosestPointOnCorePolygon(const cd2Polygon* polygon, cd2Vec p)
 			bestDistanceSquared = distanceSquared;
 		}
 	}
-	return best;
+	/* An inside point is no farther from the boundary than from any edge line. */
+	cdReal limit = CD_R(2.0) * nearTolerance;
+	return inside && bestDistanceSquared <= limit * limit ? p : best;
 }
 
 cd2Vec cd2ClosestPointOnPolygon(const cd2Polygon* polygon, cd2Vec p)

@@ -240,6 +240,14 @@ bool cd2PointInBox(cd2Vec p, cd2Box b)
 	return cdAbs(local.x) <= b.halfExtents.x + tolerance && cdAbs(local.y) <= b.halfExtents.y + tolerance;
 }
 
+/* Containment in a sharp (radius 0) polygon. Each edge's half-plane is tested from the edge's end
+ * point nearer to p with a tolerance relative to p's offset from it (the magnitude compared: the
+ * round-off of the normal and of the offset is of that order), never to the largest coordinate.
+ * An absolute tolerance gets out of hand at a sharp vertex: there a point far beyond the vertex
+ * stays within it of both edge lines (a sliver polygon 1e9 long, angle 8e-5, took in a point
+ * 157500 beyond its tip). A point within round-off of an edge line is either near the boundary
+ * (inside or touching) or beyond the end of that edge, so its distance to the polygon decides:
+ * an inside point lies no farther from the boundary than from that line. */
 bool cd2PointInPolygon(cd2Vec p, const cd2Polygon* polygon)
 {
 	CD_ASSERT(polygon != NULL);
@@ -250,16 +258,39 @@ bool cd2PointInPolygon(cd2Vec p, const cd2Polygon* polygon)
 		cdReal tolerance = OverlapTolerance(cdMax(cdMax(MaxAbs(p), MaxAbs(closest)), polygon->radius));
 		return cd2VecDistanceSquared(closest, p) <= tolerance * tolerance;
 	}
-	for (int i = 0; i < polygon->count; ++i)
+	int count = polygon->count;
+	bool nearEdgeLine = false;
+	cdReal nearTolerance = CD_REAL_MAX;
+	for (int i = 0; i < count; ++i)
 	{
-		cd2Vec v = polygon->vertices[i];
-		cdReal tolerance = OverlapTolerance(cdMax(MaxAbs(p), MaxAbs(v)));
-		if (cd2Dot(polygon->normals[i], cd2Sub(p, v)) > tolerance)
+		cd2Vec offset = cd2Sub(p, polygon->vertices[i]);
+		cd2Vec offsetFromEnd = cd2Sub(p, polygon->vertices[i + 1 < count ? i + 1 : 0]);
+		cdReal scale = MaxAbs(offset), scaleFromEnd = MaxAbs(offsetFromEnd);
+		if (scaleFromEnd < scale)
+		{
+			offset = offsetFromEnd;
+			scale = scaleFromEnd;
+		}
+		cdReal tolerance = OverlapTolerance(scale);
+		cdReal separation = cd2Dot(polygon->normals[i], offset);
+		if (separation > tolerance)
 		{
 			return false;
 		}
+		if (separation > -tolerance)
+		{
+			nearEdgeLine = true;
+			nearTolerance = cdMin(nearTolerance, tolerance);
+		}
 	}
-	return true;
+	if (!nearEdgeLine)
+	{
+		return true;
+	}
+	/* Inside, p would be within the tolerance of that line, plus the line test's own round-off
+	 * (below the tolerance). */
+	cdReal limit = CD_R(2.0) * nearTolerance;
+	return cd2VecDistanceSquared(cd2ClosestPointOnPolygon(polygon, p), p) <= limit * limit;
 }
 
 /* ---- circle pairs ---------------------------------------------------------------------------- */

@@ -271,12 +271,9 @@ bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 		return RaycastRoundedPolygon(polygon, ray, hit);
 	}
 
-	bool inside = true;
-	for (int i = 0; i < count && inside; ++i)
-	{
-		inside = cd2Dot(polygon->normals[i], cd2Sub(polygon->vertices[i], ray.origin)) >= CD_R(0.0);
-	}
-	if (inside)
+	/* The closest point decides containment robustly (also beyond a sharp vertex, where the origin
+	 * can be within round-off of both edge lines far from the polygon). */
+	if (cd2VecEqual(cd2ClosestPointOnPolygon(polygon, ray.origin), ray.origin))
 	{
 		return cd2HitFromInside(ray, hit);
 	}
@@ -285,7 +282,12 @@ bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 	int index = -1;
 	for (int i = 0; i < count; ++i)
 	{
-		cdReal numerator = cd2Dot(polygon->normals[i], cd2Sub(polygon->vertices[i], ray.origin));
+		/* The origin's side of the edge line, measured from the nearer end of the edge: the round-off
+		 * of the normal then grows with the origin's offset from the edge, not from its far end. */
+		cd2Vec toStart = cd2Sub(polygon->vertices[i], ray.origin);
+		cd2Vec toEnd = cd2Sub(polygon->vertices[i + 1 < count ? i + 1 : 0], ray.origin);
+		cd2Vec toEdge = cd2LengthSquared(toEnd) < cd2LengthSquared(toStart) ? toEnd : toStart;
+		cdReal numerator = cd2Dot(polygon->normals[i], toEdge);
 		cdReal denominator = cd2Dot(polygon->normals[i], ray.translation);
 		if (denominator == CD_R(0.0))
 		{
