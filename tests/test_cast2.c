@@ -242,8 +242,10 @@ static void TestCastRandomPairs(void)
 		}
 		else
 		{
-			TEST_CHECKF(RefMinimumBefore(&a, &sa, &b, &sb, 1.0, 256) > 1e-5 || atFraction > 0.0,
-						"case %d: missed a contact", i);
+			/* No sampled time along the whole translation (end included) may touch. */
+			double along =
+				fmin(RefMinimumBefore(&a, &sa, &b, &sb, 1.0, 96), RefDistanceAt(&a, &sa, &b, &sb, 1.0));
+			TEST_CHECKF(along > 0.0, "case %d: missed a contact", i);
 		}
 	}
 	TEST_CHECK(hits > 300);
@@ -314,7 +316,7 @@ static void TestToiBullet(void)
 	spin.angle1 = CD_R(40.0);
 	cdToiOutput spun = cd2TimeOfImpact(&needle, &spin, &wall, &sb, target, tolerance);
 	TEST_CHECK(spun.state == CD_TOI_HIT);
-	TEST_CHECK(RefMinimumBefore(&needle, &spin, &wall, &sb, (double)spun.t, 20000) >= SLOP - 1e-4);
+	TEST_CHECK(RefMinimumBefore(&needle, &spin, &wall, &sb, (double)spun.t, 5000) >= SLOP - 1e-4);
 }
 
 static void TestToiSpinningLongBox(void)
@@ -335,7 +337,7 @@ static void TestToiSpinningLongBox(void)
 		double distance = RefDistanceAt(&stick, &sa, &small, &sb, (double)out.t);
 		TEST_CHECKF(distance >= SLOP - 1e-4 && distance <= 1.25 * SLOP + 1e-4, "spin %g: distance %.9g",
 					spins[k], distance);
-		double before = RefMinimumBefore(&stick, &sa, &small, &sb, (double)out.t, 20000);
+		double before = RefMinimumBefore(&stick, &sa, &small, &sb, (double)out.t, 5000);
 		TEST_CHECKF(before >= SLOP - 1e-4, "spin %g: %.9g before t", spins[k], before);
 		/* Swapped: the same time. */
 		cdToiOutput swapped = cd2TimeOfImpact(&small, &sb, &stick, &sa, target, tolerance);
@@ -394,7 +396,7 @@ static void TestToiRandomPairs(void)
 			continue;
 		}
 		double end = out.state == CD_TOI_SEPARATED ? 1.0 : (double)out.t;
-		double before = RefMinimumBefore(&a, &sa, &b, &sb, end, 128);
+		double before = RefMinimumBefore(&a, &sa, &b, &sb, end, 64);
 		TEST_CHECKF(before >= SLOP - 1e-4, "case %d: distance %.9g before t = %.9g (state %d)", i, before,
 					end, (int)out.state);
 		if (out.state == CD_TOI_HIT)
