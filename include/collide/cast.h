@@ -38,9 +38,8 @@ extern "C" {
  * (pointing from B towards A, opposite to the direction A moves in). Shapes that already touch
  * or overlap at fraction 0 hit at fraction 0 with point = a common point and normal =
  * -normalize(translation) (zero for a zero translation), like a ray starting inside a shape.
- * No hit: hit false, fraction the safe fraction reached (1 or where A moved away), point and
- * normal zero. hitIterationCap: the cap stopped the cast first (hit false, fraction = the
- * fraction reached, which is free of contact). */
+ * No hit: hit false, fraction 1, point and normal zero. hitIterationCap: the cap stopped the
+ * cast first (hit false, fraction = the fraction reached, which is free of contact). */
 typedef struct cd2CastOutput
 {
 	bool hit;
