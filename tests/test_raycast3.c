@@ -5,6 +5,8 @@
 #include "collide/query3.h"
 #include "test.h"
 
+#include <float.h>
+
 #if CD_DOUBLE
 /* Relative tolerances for round-off, and the band around the surface where the reference and the
  * library may disagree about hit or miss. */
@@ -1166,6 +1168,143 @@ static void TestTrianglesAgainstReference(void)
 	TEST_CHECKF(hits > 1000, "only %d hits: the random rays do not exercise the hit path", hits);
 }
 
+/* Distance in double from p to the triangle: the nearest of the three edges and, when p projects
+ * inside, the face (barycentric signs), independent of the library. */
+static double RefDistanceToTriangle(DVec p, DVec a, DVec b, DVec c)
+{
+	double best = RefDistanceToSegment(p, a, b);
+	best = fmin(best, RefDistanceToSegment(p, b, c));
+	best = fmin(best, RefDistanceToSegment(p, c, a));
+	DVec n = DCross(DSub(b, a), DSub(c, a));
+	double nn = DDot(n, n);
+	if (nn > 0.0)
+	{
+		double u = DDot(n, DCross(DSub(b, p), DSub(c, p))), v = DDot(n, DCross(DSub(c, p), DSub(a, p))),
+			   w = DDot(n, DCross(DSub(a, p), DSub(b, p)));
+		if (u >= 0.0 && v >= 0.0 && w >= 0.0)
+		{
+			best = fmin(best, fabs(DDot(n, DSub(p, a))) / sqrt(nn));
+		}
+	}
+	return best;
+}
+
+/* A triangle hit's point lies on the triangle: within `tolerance` of it. */
+static bool HitOnTriangle(cd3Triangle t, cd3RayHit hit, double tolerance)
+{
+	return RefDistanceToTriangle(D(hit.point), D(t.a), D(t.b), D(t.c)) <= tolerance;
+}
+
+/* The fuzzer's triangle rays (fuzz_query3): the inside test and the plane fraction were computed
+ * apart, so a ray could "pass inside" and still get a point far from the triangle. */
+static void TestTriangleRobustness(void)
+{
+	/* From vertex c, nearly parallel to the plane (which it crosses only at c): fraction 0 at c.
+	 * The float computation gave fraction 0.0909, a point 2e-4 off a triangle of size 1.25e-3. */
+	cdReal k = CD_R(0.00124999997);
+	cd3Triangle grazed = {cd3MakeVec(0, 0, CD_R(-1e-9)), cd3MakeVec(CD_R(-1e-9), -k, -k),
+						  cd3MakeVec(-k, -k, -k)};
+	cd3RayHit hit = UntouchedHit();
+	bool got = cd3RaycastTriangle(grazed, Ray(-k, -k, -k, -k, -k, -k), &hit);
+	TEST_CHECKF(got && hit.fraction <= CD_R(1e-6) && DLength(DSub(D(hit.point), D(grazed.c))) <= 1e-9,
+				"grazing ray from vertex c: hit %d, fraction %.9g, point %.9g from c", (int)got,
+				(double)hit.fraction, DLength(DSub(D(hit.point), D(grazed.c))));
+
+	/* From 1e9 away, starting in the plane y = 0 of a triangle of size 10 at the origin and
+	 * leaving it: a miss (it reported a hit 1e9 away). Then rays from 1e9 away that do cross it. */
+	cd3Triangle small = {cd3MakeVec(CD_R(-7.625), 0, 0), cd3MakeVec(CD_R(2.25), 0, CD_R(1e-9)),
+						 cd3MakeVec(0, 0, 0)};
+	hit = UntouchedHit();
+	TEST_CHECK(!cd3RaycastTriangle(
+		small, Ray(CD_R(1e9), 0, CD_R(-12.5), CD_R(-12.5), CD_R(-12.5), CD_R(-12.5)), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	cd3Triangle wide = {cd3MakeVec(-10, 0, -10), cd3MakeVec(10, 0, -10), cd3MakeVec(0, 0, 10)};
+	TEST_CHECK(cd3RaycastTriangle(wide, Ray(1, CD_R(1e9), 1, 0, CD_R(-2e9), 0), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.5, 1e-6);
+	TEST_CHECKF(HitOnTriangle(wide, hit, 16.0 * (double)CD_REAL_EPSILON * 1e9), "point (%g %g %g)",
+				(double)hit.point.x, (double)hit.point.y, (double)hit.point.z);
+	TEST_CHECK(!cd3RaycastTriangle(wide, Ray(1, CD_R(1e9), 2000, 0, CD_R(-2e9), 0), &hit));
+
+	/* Lying in the plane (through a and c, along the line of the origin, a and c), from c: a miss
+	 * (docs/API.md), or at most a hit at c. It reported the ray's end, 21.65 away. */
+	cd3Triangle flat = {cd3MakeVec(-1, -1, -1), cd3MakeVec(0, CD_R(-10.25), CD_R(-12.5)),
+						cd3MakeVec(CD_R(-12.5), CD_R(-12.5), CD_R(-12.5))};
+	hit = UntouchedHit();
+	got = cd3RaycastTriangle(
+		flat, Ray(CD_R(-12.5), CD_R(-12.5), CD_R(-12.5), CD_R(-12.5), CD_R(-12.5), CD_R(-12.5)), &hit);
+	TEST_CHECKF(!got || (hit.fraction <= CD_R(1e-6) && HitOnTriangle(flat, hit, 1e-5)),
+				"in-plane ray: fraction %.9g, point %.3g off", (double)hit.fraction,
+				RefDistanceToTriangle(D(hit.point), D(flat.a), D(flat.b), D(flat.c)));
+
+	/* Random: triangles of size 1e-3..10 near the origin; rays from up to the end of the range
+	 * aimed at them, and rays from a point of the triangle at a grazing angle (1e-7..1e-2 rad off
+	 * the plane). Every hit lies on the triangle within a few epsilon of the coordinates, and the
+	 * rays aimed well inside hit. */
+	TestRng rng = TestRngMake(0x5eed3009);
+	double range = CD_DOUBLE ? 1e30 : 1e9;
+	int hits = 0;
+	for (int i = 0; i < 4000; ++i)
+	{
+		double size = pow(10.0, TestRngRange(&rng, -3.0, 1.0));
+		cd3Triangle t = {RandomVec(&rng, size), RandomVec(&rng, size), RandomVec(&rng, size)};
+		DVec a = D(t.a), b = D(t.b), c = D(t.c);
+		DVec n = DCross(DSub(b, a), DSub(c, a));
+		if (DLength(n) < 1e-2 * DDot(DSub(b, a), DSub(b, a)) ||
+			DLength(n) < 1e-2 * DDot(DSub(c, a), DSub(c, a)))
+		{
+			continue; /* slivers: their own tests */
+		}
+		double u = TestRngRange(&rng, 0.0, 1.0), v = TestRngRange(&rng, 0.0, 1.0 - u);
+		DVec on = DAdd(a, DAdd(DScale(u, DSub(b, a)), DScale(v, DSub(c, a))));
+		bool inner = u > 0.05 && v > 0.05 && u + v < 0.95;
+		cd3Ray ray;
+		double magnitude;
+		if (i % 2 == 0)
+		{
+			double distance = range * pow(10.0, TestRngRange(&rng, -6.0, 0.0));
+			DVec from = DAdd(on, DScale(distance, D(RandomUnit(&rng))));
+			ray.origin = V(from);
+			ray.translation = V(DScale(TestRngRange(&rng, 1.0, 2.0), DSub(on, D(ray.origin))));
+			magnitude = distance * 2.0;
+			/* Only where double precision (the library's and this check's) resolves the triangle
+			 * from that far. */
+			inner = inner && 1e4 * DBL_EPSILON * distance < size;
+		}
+		else
+		{
+			DVec unitNormal = DScale(1.0 / DLength(n), n);
+			DVec along = DNormalize(DCross(unitNormal, D(RandomUnit(&rng))));
+			double tilt = pow(10.0, TestRngRange(&rng, -7.0, -2.0)) * (TestRngInt(&rng, 2) == 0 ? -1.0 : 1.0);
+			ray.origin = V(on);
+			ray.translation = V(DScale(size, DAdd(along, DScale(tilt, unitNormal))));
+			magnitude = 4.0 * size;
+			inner = false;
+		}
+		if (inner)
+		{
+			/* The rounded ray need not aim at `on` any more: where does it cross the plane? */
+			DVec o = D(ray.origin), d = D(ray.translation);
+			double speed = DDot(n, d);
+			double fraction = speed != 0.0 ? DDot(n, DSub(a, o)) / speed : -1.0;
+			DVec x = DAdd(o, DScale(fraction, d));
+			double nn = DDot(n, n);
+			double wa = DDot(n, DCross(DSub(b, x), DSub(c, x))) / nn,
+				   wb = DDot(n, DCross(DSub(c, x), DSub(a, x))) / nn;
+			inner = fraction > 0.01 && fraction < 0.99 && wa > 0.01 && wb > 0.01 && 1.0 - wa - wb > 0.01;
+		}
+		hit = UntouchedHit();
+		got = cd3RaycastTriangle(t, ray, &hit);
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * magnitude;
+		hits += got ? 1 : 0;
+		TEST_CHECKF(!got || HitOnTriangle(t, hit, tolerance),
+					"case %d: the hit point is %.3g off the triangle (tolerance %.3g)", i,
+					RefDistanceToTriangle(D(hit.point), a, b, c), tolerance);
+		TEST_CHECKF(!inner || got, "case %d: a ray aimed inside the triangle from %.3g away misses", i,
+					DLength(DSub(D(ray.origin), on)));
+	}
+	TEST_CHECKF(hits > 1000, "only %d hits", hits);
+}
+
 /* Segments: rays aimed at a random point of the segment hit there; rays aimed beside it miss. */
 static void TestSegmentsAimed(void)
 {
@@ -1318,6 +1457,7 @@ int main(void)
 	TEST_RUN(TestAabbExact);
 	TEST_RUN(TestBoxExact);
 	TEST_RUN(TestTriangleExact);
+	TEST_RUN(TestTriangleRobustness);
 	TEST_RUN(TestPlaneExact);
 	TEST_RUN(TestSegmentExact);
 	TEST_RUN(TestDispatcher);

@@ -7,6 +7,8 @@
  * zero-area triangles) take explicit branches instead of dividing by zero. */
 #include "collide/query3.h"
 
+#include "wide3.h"
+
 static cdReal MaxAbsComponent(cd3Vec v)
 {
 	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
@@ -112,61 +114,11 @@ cd3Vec cd3ClosestPointOnPlane(cd3Plane plane, cd3Vec p)
 	return cd3MulSub(p, height / normalSquared, plane.normal);
 }
 
-/* The triangle query runs in double even when cdReal is float. A thin triangle's normal carries
- * a relative error of epsilon / sin(smallest angle), which in float spoils the closest point of
- * valid slivers by far more than the tolerance of the queries built on it; the products of float
- * inputs are exact in double, so the float build gets the answer to nearly float precision. */
-typedef struct WideVec
-{
-	double x, y, z;
-} WideVec;
-
-static WideVec Widen(cd3Vec v)
-{
-	WideVec w = {(double)v.x, (double)v.y, (double)v.z};
-	return w;
-}
-
-static cd3Vec Narrow(WideVec w)
-{
-	return cd3MakeVec((cdReal)w.x, (cdReal)w.y, (cdReal)w.z);
-}
-
-static WideVec WideSub(WideVec a, WideVec b)
-{
-	WideVec c = {a.x - b.x, a.y - b.y, a.z - b.z};
-	return c;
-}
-
-static WideVec WideMulAdd(WideVec a, double s, WideVec b)
-{
-	WideVec c = {a.x + s * b.x, a.y + s * b.y, a.z + s * b.z};
-	return c;
-}
-
-static WideVec WideScale(double s, WideVec a)
-{
-	WideVec c = {s * a.x, s * a.y, s * a.z};
-	return c;
-}
-
-static double WideDot(WideVec a, WideVec b)
-{
-	return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-static WideVec WideCross(WideVec a, WideVec b)
-{
-	WideVec c = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-	return c;
-}
-
-static double WideMaxAbs(WideVec v)
-{
-	double x = v.x < 0.0 ? -v.x : v.x, y = v.y < 0.0 ? -v.y : v.y, z = v.z < 0.0 ? -v.z : v.z;
-	return x > y ? (x > z ? x : z) : (y > z ? y : z);
-}
-
+/* The triangle query runs in double even when cdReal is float (wide3.h). A thin triangle's
+ * normal carries a relative error of epsilon / sin(smallest angle), which in float spoils the
+ * closest point of valid slivers by far more than the tolerance of the queries built on it; the
+ * products of float inputs are exact in double, so the float build gets the answer to nearly
+ * float precision. */
 static double WideClampedRatio(double numerator, double denominator)
 {
 	if (!(denominator > 0.0) || numerator <= 0.0)
@@ -203,22 +155,6 @@ static cd3Vec ClosestPointOnTriangleEdges(cd3Vec origin, WideVec b, WideVec c, W
 	return Narrow(WideMulAdd(Widen(origin), 1.0, candidates[best]));
 }
 
-/* The face normal ab x ac, computed as the cross product of the two shorter edges (ab x ac =
- * ab x bc = ac x bc): they meet at the largest angle, so the product does not cancel. On a needle,
- * ab x ac of its two long, nearly parallel edges keeps only epsilon / sin(angle) of relative
- * accuracy, which in the double build tilted the plane enough to move the projection of points
- * on a long edge by 6e-9 of the triangle's size. A short edge's vector is exact (its end points
- * are close), and so is its product with a long edge, up to one rounding. */
-static WideVec AccurateNormal(WideVec ab, WideVec ac, WideVec bc)
-{
-	double abab = WideDot(ab, ab), acac = WideDot(ac, ac), bcbc = WideDot(bc, bc);
-	if (bcbc >= abab && bcbc >= acac)
-	{
-		return WideCross(ab, ac);
-	}
-	return acac >= abab ? WideCross(ab, bc) : WideCross(ac, bc);
-}
-
 /* Voronoi regions of the vertices, then the edges, then the face (Ericson 5.1.5). */
 cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 {
@@ -241,7 +177,7 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 
 	/* A (nearly) zero-area triangle has no face region, and its edge regions can be empty: it is
 	 * the segment or point it collapsed to. Same threshold as cd3IsValidTriangle. */
-	WideVec normal = AccurateNormal(sab, sac, WideScale(inverse, WideSub(Widen(t.c), Widen(t.b))));
+	WideVec normal = WideTriangleNormal(sab, sac, WideScale(inverse, WideSub(Widen(t.c), Widen(t.b))));
 	double normalSquared = WideDot(normal, normal);
 	double limit = 4.0 * (double)CD_REAL_EPSILON;
 	if (normalSquared <= limit * limit * WideDot(sab, sab) * WideDot(sac, sac))

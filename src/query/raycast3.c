@@ -12,6 +12,15 @@
 #include "collide/query3.h"
 
 #include "query/raycast_common.h"
+#include "query/wide3.h"
+
+#include <float.h>
+#include <math.h>
+
+static cdReal MaxAbsComponent(cd3Vec v)
+{
+	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+}
 
 /* Unit direction and length of the translation; false for a zero (or non-finite) length. */
 static bool cd3GetRayDirection(cd3Vec translation, cd3Vec* direction, cdReal* length)
@@ -261,62 +270,72 @@ bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit)
 	return true;
 }
 
-/* Two-sided triangle (Ericson 5.3.4): the line through the ray meets the closed triangle when the
- * three scalar triple products of the translation with the vertices relative to the origin share a
- * sign; the fraction then comes from the plane. Working relative to the origin keeps the products
- * small for far-away rays. A ray in the triangle's plane and a zero-area triangle never hit. */
+/* Two-sided triangle: the fraction comes from the plane, then the hit point's barycentric
+ * coordinates decide, everything relative to vertex a and in double (wide3.h) when cdReal is
+ * float. Deciding "inside" apart from the fraction (by triple products relative to the ray
+ * origin) was inconsistent: relative to a far origin the vertices round to one vector and every
+ * ray "passed inside", and a ray grazing the plane got a fraction spoiled by float round-off
+ * while its line did pass through the triangle. Testing the very point reported keeps both
+ * honest: a hit point lies on the closed triangle, inflated by 4 double epsilons of the largest
+ * coordinate involved (the round-off of that point before it is rounded to cdReal). A ray
+ * parallel to the plane, in it or not, and a zero-area triangle never hit (docs/API.md). */
 bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
 {
-	cd3Vec d = ray.translation;
-	cd3Vec pa = cd3Sub(t.a, ray.origin);
-	cd3Vec pb = cd3Sub(t.b, ray.origin);
-	cd3Vec pc = cd3Sub(t.c, ray.origin);
-
-	cd3Vec m = cd3Cross(d, pc);
-	cdReal u = cd3Dot(pb, m);
-	cdReal v = -cd3Dot(pa, m);
-	cdReal w = cd3Dot(d, cd3Cross(pb, pa));
-	bool allNonNegative = u >= CD_R(0.0) && v >= CD_R(0.0) && w >= CD_R(0.0);
-	bool allNonPositive = u <= CD_R(0.0) && v <= CD_R(0.0) && w <= CD_R(0.0);
-	if (!allNonNegative && !allNonPositive)
+	WideVec a = Widen(t.a);
+	WideVec ab = WideSub(Widen(t.b), a);
+	WideVec ac = WideSub(Widen(t.c), a);
+	WideVec bc = WideSub(Widen(t.c), Widen(t.b));
+	/* Scaled to the triangle's size, so that products of up to four lengths stay in range. */
+	double size = WideMaxAbs(ab) > WideMaxAbs(ac) ? WideMaxAbs(ab) : WideMaxAbs(ac);
+	if (!(size > 0.0))
 	{
 		return false;
 	}
-
-	/* The face normal from unit edges: their cross product has length sin(angle) whatever the
-	 * triangle's size, so neither overflow (1e9 coordinates in float) nor a tiny triangle trips the
-	 * zero-length test of cd3Normalize, which then means a zero area. */
-	cd3Vec edge1 = cd3Normalize(cd3Sub(t.b, t.a));
-	cd3Vec edge2 = cd3Normalize(cd3Sub(t.c, t.a));
-	cd3Vec unitNormal = cd3Normalize(cd3Cross(edge1, edge2));
-	if (cd3LengthSquared(unitNormal) == CD_R(0.0))
+	double inverse = 1.0 / size;
+	ab = WideScale(inverse, ab);
+	ac = WideScale(inverse, ac);
+	bc = WideScale(inverse, bc);
+	WideVec n = WideTriangleNormal(ab, ac, bc);
+	double nn = WideDot(n, n);
+	double abab = WideDot(ab, ab), acac = WideDot(ac, ac);
+	double limit = 4.0 * (double)CD_REAL_EPSILON;
+	if (!(nn > limit * limit * abab * acac))
 	{
 		return false; /* zero area: a segment or a point, which a ray meets with probability zero */
 	}
-	/* fraction = dot(n, a - origin) / dot(n, translation), tested in [0, 1] before dividing. */
-	cdReal numerator = cd3Dot(unitNormal, pa);
-	cdReal denominator = cd3Dot(unitNormal, d);
-	if (denominator == CD_R(0.0))
+	WideVec start = WideScale(inverse, WideSub(Widen(ray.origin), a));
+	WideVec d = WideScale(inverse, Widen(ray.translation));
+	double height = WideDot(n, start); /* times |n|: positive on the side n points to */
+	double speed = WideDot(n, d);
+	/* fraction = -height / speed in [0, 1], tested before dividing. */
+	if (speed == 0.0 || (speed < 0.0 ? (height < 0.0 || height > -speed) : (height > 0.0 || -height > speed)))
 	{
 		return false;
 	}
-	cd3Vec normal = unitNormal;
-	if (denominator > CD_R(0.0))
-	{
-		/* The ray moves along the face normal, so it comes from the back side. */
-		normal = cd3Neg(unitNormal);
-		numerator = -numerator;
-		denominator = -denominator;
-	}
-	/* Now denominator < 0: need denominator <= numerator <= 0. */
-	if (numerator > CD_R(0.0) || numerator < denominator)
+	double fraction = -height / speed;
+	fraction = fraction < 0.0 ? 0.0 : (fraction > 1.0 ? 1.0 : fraction);
+	WideVec q = WideMulAdd(start, fraction, d); /* the hit point relative to a */
+
+	/* Distances of q inside the three edges, times |n|: n.(q x ac) / |ac| from edge ac, and so on. */
+	cd3Vec end = cd3Add(ray.origin, ray.translation);
+	cdReal magnitude =
+		cdMax(cdMax(MaxAbsComponent(t.a), MaxAbsComponent(t.b)),
+			  cdMax(MaxAbsComponent(t.c), cdMax(MaxAbsComponent(ray.origin), MaxAbsComponent(end))));
+	/* The round-off of q: 4 epsilon of the arithmetic used here (double, also in the float build). */
+	double tolerance = 4.0 * DBL_EPSILON * (double)magnitude * inverse * sqrt(nn);
+	double fromAc = WideDot(n, WideCross(q, ac)) / sqrt(acac);
+	double fromAb = WideDot(n, WideCross(ab, q)) / sqrt(abab);
+	double fromBc = WideDot(n, WideCross(bc, WideSub(q, ab))) / sqrt(WideDot(bc, bc));
+	if (fromAc < -tolerance || fromAb < -tolerance || !(fromBc >= -tolerance))
 	{
 		return false;
 	}
-	cdReal fraction = cdClamp(numerator / denominator, CD_R(0.0), CD_R(1.0));
-	hit->fraction = fraction;
-	hit->point = cd3MulAdd(ray.origin, fraction, d);
-	hit->normal = normal;
+
+	cd3Vec unitNormal = Narrow(WideScale(1.0 / sqrt(nn), n));
+	hit->fraction = (cdReal)fraction;
+	hit->point = cd3MulAdd(ray.origin, hit->fraction, ray.translation);
+	/* Two-sided: the normal faces the ray origin. */
+	hit->normal = cd3Normalize(speed > 0.0 ? cd3Neg(unitNormal) : unitNormal);
 	return true;
 }
 
