@@ -820,6 +820,80 @@ static void TestPointInShapeReference(void)
 #endif
 }
 
+/* The typed pair function on two shapes of the same type, in the order given. */
+static bool SameTypeOverlap(const cd2Shape* a, const cd2Shape* b)
+{
+	switch (a->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			return cd2OverlapCircleCircle(a->circle, b->circle);
+		case CD2_SHAPE_CAPSULE:
+			return cd2OverlapCapsuleCapsule(a->capsule, b->capsule);
+		case CD2_SHAPE_AABB:
+			return cd2OverlapAabbAabb(a->aabb, b->aabb);
+		case CD2_SHAPE_BOX:
+			return cd2OverlapBoxBox(a->box, b->box);
+		case CD2_SHAPE_POLYGON:
+			return cd2OverlapPolygonPolygon(&a->polygon, &b->polygon);
+		default:
+			return cd2OverlapSegmentSegment(a->segment, b->segment);
+	}
+}
+
+/* Same-type pairs answer the same in either order (docs/API.md), also where round-off decides:
+ * pairs made touching (support points meeting), then nudged by a few ulps of their coordinates,
+ * at every scale; the fuzzer's polygon pair first. */
+static void TestSameTypeSymmetry(void)
+{
+	cd2Vec pa[3] = {V(-1e9, -1e9), V(-787.5, 825), V(-1e9, -1237.5)};
+	cd2Vec pb[3] = {V(-1250, -1250), V(-475, -1250), V(-287.5, 0)};
+	cd2Polygon a, b;
+	TEST_CHECK(cd2MakePolygon(pa, 3, &a) == CD_OK && cd2MakePolygon(pb, 3, &b) == CD_OK);
+	TEST_CHECK(cd2OverlapPolygonPolygon(&a, &b) == cd2OverlapPolygonPolygon(&b, &a));
+
+	TestRng rng = TestRngMake(0x5E1F);
+	const double scales[][2] = {
+		{0.0, 3.0},
+		{1e4, 10.0},
+#if CD_DOUBLE
+		{1e30, 1e27},
+		{1e30, 1e3},
+		{0.0, 1e-30}
+#else
+		{1e9, 1e6},
+		{1e9, 1e3},
+		{0.0, 1e-9}
+#endif
+	};
+	int overlapping = 0, apart = 0;
+	for (int type = 0; type < CD2_SHAPE_TYPE_COUNT; ++type)
+	{
+		for (int n = 0; n < 2000; ++n)
+		{
+			const double* scale = scales[n % 5];
+			cd2Vec origin = V(scale[0], -scale[0]);
+			cd2Shape sa = RandomShape(&rng, (cd2ShapeType)type, origin, scale[1]);
+			cd2Shape sb = RandomShape(&rng, (cd2ShapeType)type, origin, scale[1]);
+			double angle = TestRngRange(&rng, -3.2, 3.2);
+			RefVec normal = RefMake(cos(angle), sin(angle));
+			RefVec contactA = RefSupport(&sa, normal);
+			RefVec contactB = RefSupport(&sb, RefMake(-normal.x, -normal.y));
+			double magnitude = fmax(RefShapeScale(&sa), RefShapeScale(&sb));
+			double nudge = TestRngRange(&rng, -64.0, 64.0) * (double)CD_REAL_EPSILON * magnitude;
+			cd2Shape touching = Translated(&sb, V(contactA.x - contactB.x + nudge * normal.x,
+												  contactA.y - contactB.y + nudge * normal.y));
+			bool ab = SameTypeOverlap(&sa, &touching), ba = SameTypeOverlap(&touching, &sa);
+			TEST_CHECKF(ab == ba && cd2Overlap(&sa, &touching) == ab && cd2Overlap(&touching, &sa) == ab,
+						"%s pair %d (scale %g): overlap(a, b) = %d, overlap(b, a) = %d", TypeName(&sa), n,
+						scale[1], (int)ab, (int)ba);
+			overlapping += ab;
+			apart += !ab;
+		}
+	}
+	/* The nudges fall on both sides of touching. */
+	TEST_CHECKF(overlapping > 1000 && apart > 1000, "%d pairs overlapping, %d apart", overlapping, apart);
+}
+
 /* Slivers: triangles with a sharp tip (angles down to 1e-5), up to 1e9 (float) / 1e30 (double)
  * long and far from the origin. Containment's tolerance is relative to the offsets compared: a
  * point beyond the tip, on an edge's extension or behind the tip, is outside once its distance
@@ -928,6 +1002,7 @@ int main(void)
 	TEST_RUN(TestRigidInvariance);
 	TEST_RUN(TestTouching);
 	TEST_RUN(TestPointInShapeReference);
+	TEST_RUN(TestSameTypeSymmetry);
 	TEST_RUN(TestSliverPolygons);
 	return TEST_SUMMARY();
 }

@@ -10,6 +10,8 @@
  * with a circle or a capsule compare the distance to the core point or segment with the radius. */
 #include "collide/query2.h"
 
+#include <string.h>
+
 static cdReal OverlapTolerance(cdReal scale)
 {
 	return CD_R(8.0) * CD_REAL_EPSILON * scale;
@@ -25,6 +27,16 @@ static bool WithinRadius(cdReal distanceSquared, cdReal radius, cdReal scale)
 {
 	cdReal limit = radius + OverlapTolerance(scale);
 	return distanceSquared <= limit * limit;
+}
+
+/* Pairs of the same type are put in one order (by their bytes) before computing, so that the
+ * answer is exactly the same for (a, b) and (b, a) (docs/API.md): the separating axis test and the
+ * segment distance are not symmetric in their round-off (projections are taken relative to a point
+ * of the first shape), and near touching that decided the answer. Circle and AABB pairs are
+ * symmetric as written. */
+static bool ShouldSwap(const void* a, const void* b, size_t size)
+{
+	return memcmp(a, b, size) > 0;
 }
 
 /* ---- convex vertex sets for the separating axis test ------------------------------------------ */
@@ -213,6 +225,12 @@ bool cd2OverlapCircleCircle(cd2Circle a, cd2Circle b)
 
 bool cd2OverlapPolygonPolygon(const cd2Polygon* a, const cd2Polygon* b)
 {
+	if (ShouldSwap(a, b, sizeof(cd2Polygon)))
+	{
+		const cd2Polygon* swapped = a;
+		a = b;
+		b = swapped;
+	}
 	ConvexSet setA = MakePolygonSet(a);
 	ConvexSet setB = MakePolygonSet(b);
 	return OverlapSets(&setA, &setB);
@@ -338,6 +356,12 @@ bool cd2OverlapCircleSegment(cd2Circle a, cd2Segment b)
 
 bool cd2OverlapCapsuleCapsule(cd2Capsule a, cd2Capsule b)
 {
+	if (ShouldSwap(&a, &b, sizeof(cd2Capsule)))
+	{
+		cd2Capsule swapped = a;
+		a = b;
+		b = swapped;
+	}
 	cd2Segment coreA = {a.p1, a.p2};
 	cd2Segment coreB = {b.p1, b.p2};
 	cd2ClosestPoints closest = cd2ClosestPointsSegmentSegment(coreA, coreB);
@@ -401,6 +425,12 @@ bool cd2OverlapAabbSegment(cd2Aabb a, cd2Segment b)
 
 bool cd2OverlapBoxBox(cd2Box a, cd2Box b)
 {
+	if (ShouldSwap(&a, &b, sizeof(cd2Box)))
+	{
+		cd2Box swapped = a;
+		a = b;
+		b = swapped;
+	}
 	ConvexSet setA = MakeBoxSet(a);
 	ConvexSet setB = MakeBoxSet(b);
 	return OverlapSets(&setA, &setB);
@@ -429,6 +459,12 @@ bool cd2OverlapPolygonSegment(const cd2Polygon* a, cd2Segment b)
 
 bool cd2OverlapSegmentSegment(cd2Segment a, cd2Segment b)
 {
+	if (ShouldSwap(&a, &b, sizeof(cd2Segment)))
+	{
+		cd2Segment swapped = a;
+		a = b;
+		b = swapped;
+	}
 	ConvexSet setA = MakeSegmentSet(a);
 	ConvexSet setB = MakeSegmentSet(b);
 	if (setA.axisCount == 0 && setB.axisCount == 0)
