@@ -252,13 +252,14 @@ int main(int argc, char** argv)
 	double seconds = quick ? 0.002 : 0.02;
 	std::vector<Pair2> pairs = MakePairs2(42);
 
-	int hits = 0, box2dHits = 0, castHits = 0;
+	int hits = 0, box2dHits = 0, castHits = 0, failed = 0, box2dFailed = 0;
 	long long toiIterations = 0, castIterations = 0;
 	for (const Pair2& p : pairs)
 	{
 		cdToiOutput ours =
 			cd2TimeOfImpact(&p.coreA, &p.sweepA, &p.coreB, &p.sweepB, (cdReal)kSlop, (cdReal)(0.25 * kSlop));
 		hits += ours.state == CD_TOI_HIT;
+		failed += ours.state == CD_TOI_FAILED;
 		toiIterations += ours.iterations;
 		b2TOIInput input;
 		input.proxyA.Set(&p.polygonA, 0);
@@ -269,6 +270,7 @@ int main(int argc, char** argv)
 		b2TOIOutput output;
 		b2TimeOfImpact(&output, &input);
 		box2dHits += output.state == b2TOIOutput::e_touching;
+		box2dFailed += output.state == b2TOIOutput::e_failed;
 		cd2CastOutput castOut = cd2ShapeCast(&p.worldA, &p.worldB, p.translation);
 		castHits += castOut.hit;
 		castIterations += castOut.iterations;
@@ -333,9 +335,10 @@ int main(int argc, char** argv)
 
 	std::printf("collide_bench_cast (%s, %d pairs, median of %d runs)\n",
 				sizeof(cdReal) == 8 ? "double" : "float", kPairs, runs);
-	std::printf("2D TOI hits: collide %d, Box2D %d (mean iterations %.1f); 2D shape cast hits: %d (mean "
-				"iterations %.1f)\n",
-				hits, box2dHits, (double)toiIterations / kPairs, castHits, (double)castIterations / kPairs);
+	std::printf(
+		"2D TOI hits: collide %d, Box2D %d; failed: collide %d, Box2D %d; collide's mean iterations %.1f\n",
+		hits, box2dHits, failed, box2dFailed, (double)toiIterations / kPairs);
+	std::printf("2D shape cast hits: %d (mean iterations %.1f)\n", castHits, (double)castIterations / kPairs);
 	std::printf("%-36s %10s %10s %8s\n", "query", "collide", "Box2D", "ratio");
 	std::printf("%-36s %10.1f %10.1f %8.2f\n", "2D time of impact (polygons)", toi.ours, toi.peer,
 				toi.ours / toi.peer);

@@ -146,6 +146,25 @@ double ReferenceDistance(const Body& a, const Body& b, double t)
 	return best;
 }
 
+void SetCenters(Body* body, double x0, double y0, double x1, double y1)
+{
+	body->b2sweep.c0.Set((float)x0, (float)y0);
+	body->b2sweep.c.Set((float)x1, (float)y1);
+	body->sweep.center0 = cd2MakeVec((cdReal)body->b2sweep.c0.x, (cdReal)body->b2sweep.c0.y);
+	body->sweep.center1 = cd2MakeVec((cdReal)body->b2sweep.c.x, (cdReal)body->b2sweep.c.y);
+}
+
+// Smallest reference distance over `samples` times spread evenly over [0, 1].
+double ReferenceMinimum(const Body& a, const Body& b, int samples)
+{
+	double smallest = INFINITY;
+	for (int i = 0; i <= samples; ++i)
+	{
+		smallest = std::fmin(smallest, ReferenceDistance(a, b, (double)i / samples));
+	}
+	return smallest;
+}
+
 int MapState(b2TOIOutput::State state)
 {
 	switch (state)
@@ -161,14 +180,24 @@ int MapState(b2TOIOutput::State state)
 	}
 }
 
-void TestAgainstBox2D()
+// approach: the bodies start 4 apart and each moves 3 towards the other (with a sideways miss)
+// while turning, as in bench/cast; otherwise random centres.
+void Compare(uint64_t seed, bool approach)
 {
-	TestRng rng = TestRngMake(0xB2D701u);
-	int compared = 0, sameTime = 0, skippedFailed = 0, skippedBoundary = 0;
+	TestRng rng = TestRngMake(seed);
+	int compared = 0, sameTime = 0, skippedFailed = 0, skippedBoundary = 0, peerMissed = 0,
+		peerPassedThrough = 0;
 	int states[4] = {0, 0, 0, 0};
 	for (int i = 0; i < 5000; ++i)
 	{
 		Body a = RandomBody(&rng), b = RandomBody(&rng);
+		if (approach)
+		{
+			double angle = TestRngRange(&rng, 0.0, 2.0 * M_PI), miss = TestRngRange(&rng, -0.8, 0.8);
+			double dx = std::cos(angle), dy = std::sin(angle);
+			SetCenters(&a, -2.0 * dx, -2.0 * dy, dx - miss * dy, dy + miss * dx);
+			SetCenters(&b, 2.0 * dx, 2.0 * dy, -dx, -dy);
+		}
 		if (a.core.type != CD2_SHAPE_POLYGON || b.core.type != CD2_SHAPE_POLYGON)
 		{
 			continue;
@@ -216,23 +245,51 @@ void TestAgainstBox2D()
 		bool graze = (peerState == CD_TOI_HIT && ours.state == CD_TOI_SEPARATED && atPeer >= lowBand &&
 					  atPeer <= highBand) ||
 					 (ours.state == CD_TOI_HIT && peerState == CD_TOI_SEPARATED && atOurs <= highBand);
+		// Box2D 2.4 decides "separated" from the deepest points along one axis at the end of the
+		// step, which a turning body can pass through: count it when the reference (sampled)
+		// shows the shapes coming closer than Box2D's own band.
+		if (peerState == CD_TOI_SEPARATED && ours.state == CD_TOI_HIT)
+		{
+			double smallest = ReferenceMinimum(a, b, 4000);
+			if (smallest < kTarget - kTolerance - 1e-4)
+			{
+				++peerMissed;
+				peerPassedThrough += smallest == 0.0;
+				continue;
+			}
+		}
 		TEST_CHECKF((sameState && inBand) || graze,
 					"pair %d: Box2D state %d t %.9g (distance %.9g), collide state %d t %.9g (distance %.9g)",
 					i, peerState, (double)peer.t, atPeer, (int)ours.state, (double)ours.t, atOurs);
 	}
 	std::printf(
-		"b2TimeOfImpact vs cd2TimeOfImpact: %d compared (%d hit, %d separated, %d overlapped), %d with the "
-		"same state and time, %d skipped at an iteration cap, %d starting at a state boundary\n",
-		compared, states[CD_TOI_HIT], states[CD_TOI_SEPARATED], states[CD_TOI_OVERLAPPED], sameTime,
+		"b2TimeOfImpact vs cd2TimeOfImpact (%s): %d compared (%d hit, %d separated, %d overlapped), %d "
+		"with the same state and time, %d where Box2D misses a sampled contact (%d of them overlapping), %d "
+		"skipped at an iteration "
+		"cap, %d starting at a state boundary\n",
+		approach ? "approaching and turning" : "random sweeps", compared, states[CD_TOI_HIT],
+		states[CD_TOI_SEPARATED], states[CD_TOI_OVERLAPPED], sameTime, peerMissed, peerPassedThrough,
 		skippedFailed, skippedBoundary);
 	TEST_CHECK(compared > 4000);
-	TEST_CHECK(states[CD_TOI_HIT] > 500 && states[CD_TOI_SEPARATED] > 500);
+	TEST_CHECK(states[CD_TOI_HIT] > 500 && states[CD_TOI_SEPARATED] > 100);
 	TEST_CHECK(skippedFailed < 100);
+	TEST_CHECK(peerMissed < compared / 20);
+}
+
+void TestRandomSweeps()
+{
+	Compare(0xB2D701u, false);
+}
+
+void TestApproachingAndTurning()
+{
+	Compare(0xB2D702u, true);
 }
 } // namespace
 
 int main()
 {
-	TEST_RUN(TestAgainstBox2D);
+	TEST_RUN(TestRandomSweeps);
+	TEST_RUN(TestApproachingAndTurning);
 	return TEST_SUMMARY();
 }
