@@ -183,16 +183,6 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 	return best;
 }
 
-/* Arcs a-b (A's edge) and c-d (B's edge, normals already negated) cross on the unit sphere. */
-static bool IsMinkowskiFace(cd3Vec a, cd3Vec b, cd3Vec bxa, cd3Vec c, cd3Vec d, cd3Vec dxc)
-{
-	cdReal cba = cd3Dot(c, bxa);
-	cdReal dba = cd3Dot(d, bxa);
-	cdReal adc = cd3Dot(a, dxc);
-	cdReal bdc = cd3Dot(b, dxc);
-	return cba * dba < CD_R(0.0) && adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0);
-}
-
 static void Project(const cd3Polytope* p, cd3Transform rel, cd3Vec axis, cdReal* lo, cdReal* hi)
 {
 	cd3Vec local = cd3InvRotateVector(rel.q, axis);
@@ -209,21 +199,52 @@ static void Project(const cd3Polytope* p, cd3Transform rel, cd3Vec axis, cdReal*
 	*hi = mx + offset;
 }
 
-cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
+/* A's edge data for the Gauss-map test, in A's frame. */
+typedef struct EdgeData
 {
-	cd3SatResult r;
-	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
-	cd3Transform relA = cd3InvMulTransforms(b->transform, a->transform);
-	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA);
-	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
-	r.edgeSeparation = -CD_REAL_MAX;
-	r.edgeA = -1;
-	r.edgeB = -1;
-	r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
-	cd3Vec bestAxis = r.edgeNormal;
-	bool flat = a->flat || b->flat;
-	cd3Transform identity = CD3_TRANSFORM_IDENTITY;
+	cd3Vec na, nb, bxa; /* the adjacent face normals and cross(nb, na) */
+	cd3Vec origin, direction;
+	cdReal lengthSquared;
+	int index;
+} EdgeData;
 
+/* Edges of A cached on the stack for the inner loop; larger polytopes recompute them. */
+#define EDGE_CACHE 192
+
+static EdgeData MakeEdgeData(const cd3Polytope* a, int i)
+{
+	const cd3HullHalfEdge* ea = &a->edges[i];
+	EdgeData e;
+	e.na = a->planes[ea->face].normal;
+	e.nb = a->planes[a->edges[ea->twin].face].normal;
+	e.bxa = cd3Cross(e.nb, e.na);
+	e.origin = a->vertices[ea->origin];
+	e.direction = cd3Sub(a->vertices[a->edges[ea->twin].origin], e.origin);
+	e.lengthSquared = cd3LengthSquared(e.direction);
+	e.index = i;
+	return e;
+}
+
+/* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
+ * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
+ * difference, whose normal is the cross of the edges oriented within A's arc. */
+static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cd3SatResult* r,
+							cd3Vec* bestAxis)
+{
+	EdgeData cache[EDGE_CACHE];
+	int cached = 0;
+	bool useCache = a->edgeAxisCount / 2 <= EDGE_CACHE;
+	if (useCache)
+	{
+		for (int i = 0; i < a->edgeAxisCount; ++i)
+		{
+			if (a->edges[i].twin > i && cached < EDGE_CACHE)
+			{
+				cache[cached++] = MakeEdgeData(a, i);
+			}
+		}
+	}
+	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
 	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
 		const cd3HullHalfEdge* eb = &b->edges[j];
@@ -234,9 +255,81 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
 		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]);
 		cd3Vec edgeB = cd3Sub(qb1, qb0);
+		cdReal edgeB2 = cd3LengthSquared(edgeB);
 		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
 		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[b->edges[eb->twin].face].normal));
 		cd3Vec dxc = cd3Cross(d, c);
+		int count = useCache ? cached : a->edgeAxisCount;
+		for (int k = 0; k < count; ++k)
+		{
+			EdgeData onTheFly;
+			const EdgeData* e;
+			if (useCache)
+			{
+				e = &cache[k];
+			}
+			else
+			{
+				if (a->edges[k].twin < k)
+				{
+					continue;
+				}
+				onTheFly = MakeEdgeData(a, k);
+				e = &onTheFly;
+			}
+			cdReal cba = cd3Dot(c, e->bxa);
+			cdReal dba = cd3Dot(d, e->bxa);
+			if (!(cba * dba < CD_R(0.0)))
+			{
+				continue;
+			}
+			cdReal adc = cd3Dot(e->na, dxc);
+			cdReal bdc = cd3Dot(e->nb, dxc);
+			if (!(adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0)))
+			{
+				continue;
+			}
+			cd3Vec axis = cd3Cross(e->direction, edgeB);
+			cdReal axis2 = cd3LengthSquared(axis);
+			if (!(axis2 > parallel2 * e->lengthSquared * edgeB2))
+			{
+				continue;
+			}
+			axis = cd3Scale(CD_R(1.0) / cdSqrt(axis2), axis);
+			/* The axis lies within A's arc na-nb: on the side of its bisector (robust for flat and
+			 * needle-like boxes, where a centroid test is ambiguous). */
+			if (cd3Dot(axis, cd3Add(e->na, e->nb)) < CD_R(0.0))
+			{
+				axis = cd3Neg(axis);
+			}
+			cdReal separation = cd3Dot(axis, cd3Sub(qb0, e->origin));
+			if (separation > r->edgeSeparation)
+			{
+				r->edgeSeparation = separation;
+				r->edgeA = e->index;
+				r->edgeB = j;
+				*bestAxis = axis;
+			}
+		}
+	}
+}
+
+/* Edge pairs when a polytope is flat (a triangle's arcs are half circles): every pair, by
+ * projecting both polytopes on the cross product. */
+static void QueryEdgesProjected(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB,
+								cd3SatResult* r, cd3Vec* bestAxis)
+{
+	cd3Transform identity = CD3_TRANSFORM_IDENTITY;
+	for (int j = 0; j < b->edgeAxisCount; ++j)
+	{
+		const cd3HullHalfEdge* eb = &b->edges[j];
+		if (eb->twin < j)
+		{
+			continue;
+		}
+		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
+		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]);
+		cd3Vec edgeB = cd3Sub(qb1, qb0);
 		for (int i = 0; i < a->edgeAxisCount; ++i)
 		{
 			const cd3HullHalfEdge* ea = &a->edges[i];
@@ -253,54 +346,54 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 				continue;
 			}
 			axis = cd3Scale(CD_R(1.0) / axisLength, axis);
-			cdReal separation;
-			if (flat)
+			cdReal loA, hiA, loB, hiB;
+			Project(a, identity, axis, &loA, &hiA);
+			Project(b, relB, axis, &loB, &hiB);
+			cdReal separation = loB - hiA;
+			cdReal extremeA = hiA, extremeB = loB;
+			if (loA - hiB > separation)
 			{
-				cdReal loA, hiA, loB, hiB;
-				Project(a, identity, axis, &loA, &hiA);
-				Project(b, relB, axis, &loB, &hiB);
-				separation = loB - hiA;
-				cdReal extremeA = hiA, extremeB = loB;
-				if (loA - hiB > separation)
-				{
-					separation = loA - hiB;
-					axis = cd3Neg(axis);
-					extremeA = -loA;
-					extremeB = -hiB;
-				}
-				/* Projection does not tell parallel edges apart: keep the pair only when both
-				 * edges support their polytopes along the axis, so the contact lies on them. */
-				cdReal slack = SUPPORT_TOLERANCE * (a->size + b->size + cdAbs(extremeA) + cdAbs(extremeB));
-				if (cd3Dot(axis, pa0) < extremeA - slack || cd3Dot(axis, qb0) > extremeB + slack)
-				{
-					continue;
-				}
+				separation = loA - hiB;
+				axis = cd3Neg(axis);
+				extremeA = -loA;
+				extremeB = -hiB;
 			}
-			else
+			/* Projection does not tell parallel edges apart: keep the pair only when both edges
+			 * support their polytopes along the axis, so the contact lies on them. */
+			cdReal slack = SUPPORT_TOLERANCE * (a->size + b->size + cdAbs(extremeA) + cdAbs(extremeB));
+			if (cd3Dot(axis, pa0) < extremeA - slack || cd3Dot(axis, qb0) > extremeB + slack)
 			{
-				cd3Vec na = a->planes[ea->face].normal;
-				cd3Vec nb = a->planes[a->edges[ea->twin].face].normal;
-				if (!IsMinkowskiFace(na, nb, cd3Cross(nb, na), c, d, dxc))
-				{
-					continue;
-				}
-				/* The axis is a normal of the Minkowski face, so it lies within A's arc na-nb:
-				 * on the side of its bisector (robust for flat and needle-like boxes, where the
-				 * centroid test is ambiguous). */
-				if (cd3Dot(axis, cd3Add(na, nb)) < CD_R(0.0))
-				{
-					axis = cd3Neg(axis);
-				}
-				separation = cd3Dot(axis, cd3Sub(qb0, pa0));
+				continue;
 			}
-			if (separation > r.edgeSeparation)
+			if (separation > r->edgeSeparation)
 			{
-				r.edgeSeparation = separation;
-				r.edgeA = i;
-				r.edgeB = j;
-				bestAxis = axis;
+				r->edgeSeparation = separation;
+				r->edgeA = i;
+				r->edgeB = j;
+				*bestAxis = axis;
 			}
 		}
+	}
+}
+
+cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
+{
+	cd3SatResult r;
+	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
+	cd3Transform relA = cd3InvMulTransforms(b->transform, a->transform);
+	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA);
+	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
+	r.edgeSeparation = -CD_REAL_MAX;
+	r.edgeA = -1;
+	r.edgeB = -1;
+	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	if (a->flat || b->flat)
+	{
+		QueryEdgesProjected(a, b, relB, &r, &bestAxis);
+	}
+	else
+	{
+		QueryEdgesGauss(a, b, relB, &r, &bestAxis);
 	}
 	r.edgeNormal = cd3RotateVector(a->transform.q, bestAxis);
 	return r;
