@@ -135,6 +135,16 @@ static bool ShapeExtent(const cd2Shape* shape, cd2Vec center, cdReal* extent)
 	return true;
 }
 
+static cdReal SupportValue(const cd2Shape* shape, cd2Vec direction)
+{
+	cd2Core core;
+	if (!cd2MakeCore(shape, &core))
+	{
+		return CD_R(0.0);
+	}
+	return cd2Dot(core.points[cd2CoreSupport(&core, direction)], direction);
+}
+
 typedef struct SweepMotion
 {
 	cd2Vec localCenter, center0, velocity;

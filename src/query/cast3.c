@@ -144,6 +144,16 @@ static bool ShapeExtent(const cd3Shape* shape, cd3Vec center, cdReal* extent)
 	return true;
 }
 
+static cdReal SupportValue(const cd3Shape* shape, cd3Vec direction)
+{
+	cd3Core core;
+	if (!cd3MakeCore(shape, &core))
+	{
+		return CD_R(0.0);
+	}
+	return cd3Dot(cd3CorePoint(&core, cd3CoreSupport(&core, direction)), direction);
+}
+
 /* The rotation q(t) = rotation0 * exp(t * angle * axis / 2): constant angular speed `angle`. */
 typedef struct SweepMotion
 {
