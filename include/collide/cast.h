@@ -13,7 +13,10 @@
  * rotation at constant angular speed about it). Conservative advancement (Mirtich): each step
  * advances t by (distance - target) over a bound on the approach speed, the relative speed along
  * the closest-point normal plus |angular speed| times each shape's largest distance from its
- * sweep centre. It never steps past a time where the distance falls below the target. */
+ * sweep centre. It never steps past a time where the distance falls below the target. The
+ * bounding circles (spheres) about the sweep centres skip the far part of the step, and between
+ * GJK calls a few cheap steps advance on the separation along the last closest-point axis (a
+ * lower bound on the distance): both keep the guarantee. */
 #ifndef COLLIDE_CAST_H
 #define COLLIDE_CAST_H
 
@@ -104,7 +107,7 @@ typedef struct cdToiOutput
 {
 	cdToiState state;
 	cdReal t;		/* time fraction in [0, 1] */
-	int iterations; /* GJK distance evaluations */
+	int iterations; /* GJK distance evaluations (0 when the bounding circles never get close) */
 } cdToiOutput;
 
 /* First time in [0, 1] at which the distance between the moving shapes falls to
