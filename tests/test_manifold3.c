@@ -3,6 +3,7 @@
  * independent reference: the separating axis test over every face normal and every edge-pair
  * cross product, in double, for penetrating pairs; cd3Distance for separated ones. */
 #include "collide/collide.h"
+#include "../src/query/epa3.h" /* internal: EPA and the polytope SAT, tested against each other */
 #include "random_shapes3.h"
 #include "test.h"
 
@@ -652,6 +653,62 @@ static void TestRandomPairs(void)
 	printf("random pairs compared: %d\n", compared);
 }
 
+/* EPA (internal) against the polytope SAT on random box and hull pairs: the same depth within
+ * 1e-4 relative (plus float round-off of the coordinates), the same overlap answer away from the
+ * boundary, and B moved by the EPA depth along its normal just touches A. */
+static void TestEpaAgreesWithSat(void)
+{
+	TestRng rng = {0xe9a3u};
+	int compared = 0, capped = 0;
+	for (int n = 0; n < 3000; ++n)
+	{
+		cd3Shape a = RandomShape(&rng, TestRngInt(&rng, 2) ? CD3_SHAPE_BOX : CD3_SHAPE_HULL);
+		cd3Shape b = RandomShape(&rng, TestRngInt(&rng, 2) ? CD3_SHAPE_BOX : CD3_SHAPE_HULL);
+		cd3Polytope pa, pb;
+		if (a.type == CD3_SHAPE_BOX)
+		{
+			cd3InitBoxPolytope(&pa, a.box);
+		}
+		else
+		{
+			cd3InitHullPolytope(&pa, a.hull);
+		}
+		if (b.type == CD3_SHAPE_BOX)
+		{
+			cd3InitBoxPolytope(&pb, b.box);
+		}
+		else
+		{
+			cd3InitHullPolytope(&pb, b.hull);
+		}
+		cd3SatResult sat = cd3SatPolytopes(&pa, &pb);
+		double separation = (double)cd3SatSeparation(&sat);
+		double size = (double)(pa.size + pb.size);
+		cd3Penetration epa = cd3Epa(&pa, cd3PolytopeSupport, &pb, cd3PolytopeSupport);
+		capped += epa.hitIterationCap;
+		if (fabs(separation) < 1e-3 * size)
+		{
+			continue;
+		}
+		++compared;
+		TEST_CHECKF(epa.overlapping == (separation < 0.0), "#%d: EPA overlapping %d, SAT %.9g", n,
+					epa.overlapping, separation);
+		if (!(epa.overlapping && separation < 0.0))
+		{
+			continue;
+		}
+		TEST_CHECKF(fabs((double)epa.depth + separation) <= 1e-4 * -separation + 1e-5 * size,
+					"#%d: EPA depth %.9g, SAT %.9g (%d iterations)", n, (double)epa.depth, -separation,
+					epa.iterations);
+		cd3Shape moved = Translated(&b, cd3Scale(epa.depth, epa.normal));
+		double gap = (double)cd3Distance(&a, &moved).distance;
+		TEST_CHECKF(gap <= 1e-4 * size, "#%d: %.9g apart after moving by the EPA depth", n, gap);
+	}
+	printf("EPA against SAT: %d pairs compared, %d hit the iteration cap\n", compared, capped);
+	TEST_CHECK(compared > 2000);
+	TEST_CHECK(capped * 100 < compared);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -662,5 +719,6 @@ int main(void)
 	TEST_RUN(TestCylinders);
 	TEST_RUN(TestDegenerate);
 	TEST_RUN(TestRandomPairs);
+	TEST_RUN(TestEpaAgreesWithSat);
 	return TEST_SUMMARY();
 }

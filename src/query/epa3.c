@@ -1,0 +1,412 @@
+/* collide: GJK (boolean) followed by the expanding polytope algorithm. The EPA polytope lives in
+ * fixed arrays; its horizon is found by collecting the edges of the faces the new support point
+ * sees that belong to only one of them. */
+#include "epa3.h"
+
+#define MAX_VERTICES (CD3_EPA_MAX_ITERATIONS + 8)
+#define MAX_FACES (2 * MAX_VERTICES)
+#define MAX_HORIZON (3 * MAX_FACES)
+
+typedef struct Vertex
+{
+	cd3Vec w, a, b; /* w = a - b */
+} Vertex;
+
+typedef struct Face
+{
+	int v[3];
+	cd3Vec normal;
+	cdReal distance;
+} Face;
+
+cd3Vec cd3PolytopeSupport(const void* polytope, cd3Vec direction)
+{
+	const cd3Polytope* p = (const cd3Polytope*)polytope;
+	cd3Vec local = cd3InvRotateVector(p->transform.q, direction);
+	int best = 0;
+	cdReal highest = cd3Dot(local, p->vertices[0]);
+	for (int i = 1; i < p->vertexCount; ++i)
+	{
+		cdReal d = cd3Dot(local, p->vertices[i]);
+		if (d > highest)
+		{
+			highest = d;
+			best = i;
+		}
+	}
+	return cd3TransformPoint(p->transform, p->vertices[best]);
+}
+
+typedef struct Context
+{
+	const void* a;
+	const void* b;
+	cd3SupportFcn* supportA;
+	cd3SupportFcn* supportB;
+} Context;
+
+static Vertex Support(const Context* c, cd3Vec d)
+{
+	Vertex v;
+	v.a = c->supportA(c->a, d);
+	v.b = c->supportB(c->b, cd3Neg(d));
+	v.w = cd3Sub(v.a, v.b);
+	return v;
+}
+
+/* ---- GJK for intersection: the simplex nearest the origin, the search direction toward it ---- */
+
+static bool SameDirection(cd3Vec a, cd3Vec b)
+{
+	return cd3Dot(a, b) > CD_R(0.0);
+}
+
+/* Reduces the simplex to the feature nearest the origin and sets the next direction; true when the
+ * tetrahedron contains the origin. */
+static bool DoSimplex(Vertex* s, int* count, cd3Vec* d)
+{
+	if (*count == 2)
+	{
+		cd3Vec ab = cd3Sub(s[0].w, s[1].w), ao = cd3Neg(s[1].w);
+		if (SameDirection(ab, ao))
+		{
+			*d = cd3Cross(cd3Cross(ab, ao), ab);
+		}
+		else
+		{
+			s[0] = s[1];
+			*count = 1;
+			*d = ao;
+		}
+		return false;
+	}
+	if (*count == 3)
+	{
+		Vertex A = s[2], B = s[1], C = s[0];
+		cd3Vec ab = cd3Sub(B.w, A.w), ac = cd3Sub(C.w, A.w), ao = cd3Neg(A.w);
+		cd3Vec abc = cd3Cross(ab, ac);
+		if (SameDirection(cd3Cross(abc, ac), ao))
+		{
+			if (SameDirection(ac, ao))
+			{
+				s[0] = C;
+				s[1] = A;
+				*count = 2;
+				*d = cd3Cross(cd3Cross(ac, ao), ac);
+			}
+			else
+			{
+				s[0] = B;
+				s[1] = A;
+				*count = 2;
+				return DoSimplex(s, count, d);
+			}
+		}
+		else if (SameDirection(cd3Cross(ab, abc), ao))
+		{
+			s[0] = B;
+			s[1] = A;
+			*count = 2;
+			return DoSimplex(s, count, d);
+		}
+		else if (SameDirection(abc, ao))
+		{
+			*d = abc;
+		}
+		else
+		{
+			s[0] = B;
+			s[1] = C;
+			s[2] = A;
+			*d = cd3Neg(abc);
+		}
+		return false;
+	}
+	/* Tetrahedron: s[3] is the newest point. */
+	Vertex A = s[3], B = s[2], C = s[1], D = s[0];
+	cd3Vec ao = cd3Neg(A.w);
+	cd3Vec ab = cd3Sub(B.w, A.w), ac = cd3Sub(C.w, A.w), ad = cd3Sub(D.w, A.w);
+	cd3Vec abc = cd3Cross(ab, ac), acd = cd3Cross(ac, ad), adb = cd3Cross(ad, ab);
+	/* Orient each face normal away from the opposite vertex. */
+	if (SameDirection(abc, ad))
+	{
+		abc = cd3Neg(abc);
+	}
+	if (SameDirection(acd, ab))
+	{
+		acd = cd3Neg(acd);
+	}
+	if (SameDirection(adb, ac))
+	{
+		adb = cd3Neg(adb);
+	}
+	if (SameDirection(abc, ao))
+	{
+		s[0] = C;
+		s[1] = B;
+		s[2] = A;
+		*count = 3;
+		return DoSimplex(s, count, d);
+	}
+	if (SameDirection(acd, ao))
+	{
+		s[0] = D;
+		s[1] = C;
+		s[2] = A;
+		*count = 3;
+		return DoSimplex(s, count, d);
+	}
+	if (SameDirection(adb, ao))
+	{
+		s[0] = B;
+		s[1] = D;
+		s[2] = A;
+		*count = 3;
+		return DoSimplex(s, count, d);
+	}
+	return true;
+}
+
+/* ---- EPA ------------------------------------------------------------------------------------- */
+
+static bool MakeFace(const Vertex* v, int i, int j, int k, Face* f)
+{
+	cd3Vec n = cd3Cross(cd3Sub(v[j].w, v[i].w), cd3Sub(v[k].w, v[i].w));
+	cdReal length = cd3Length(n);
+	if (!(length > CD_R(0.0)))
+	{
+		return false;
+	}
+	n = cd3Scale(CD_R(1.0) / length, n);
+	cdReal distance = cd3Dot(n, v[i].w);
+	f->v[0] = i;
+	f->v[1] = j;
+	f->v[2] = k;
+	if (distance < CD_R(0.0))
+	{
+		/* The origin is inside, so every face of the hull faces away from it: flip. */
+		f->v[1] = k;
+		f->v[2] = j;
+		n = cd3Neg(n);
+		distance = -distance;
+	}
+	f->normal = n;
+	f->distance = distance;
+	return true;
+}
+
+/* Barycentric coordinates of p's projection on triangle a-b-c (clamped to the triangle's plane
+ * solve; falls back to the nearest vertex when degenerate). */
+static void Barycentric(cd3Vec a, cd3Vec b, cd3Vec c, cd3Vec p, cdReal* u, cdReal* v, cdReal* w)
+{
+	cd3Vec v0 = cd3Sub(b, a), v1 = cd3Sub(c, a), v2 = cd3Sub(p, a);
+	cdReal d00 = cd3Dot(v0, v0), d01 = cd3Dot(v0, v1), d11 = cd3Dot(v1, v1);
+	cdReal d20 = cd3Dot(v2, v0), d21 = cd3Dot(v2, v1);
+	cdReal denom = d00 * d11 - d01 * d01;
+	if (!(denom > CD_R(0.0)))
+	{
+		*u = CD_R(1.0);
+		*v = CD_R(0.0);
+		*w = CD_R(0.0);
+		return;
+	}
+	*v = (d11 * d20 - d01 * d21) / denom;
+	*w = (d00 * d21 - d01 * d20) / denom;
+	*u = CD_R(1.0) - *v - *w;
+}
+
+cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3SupportFcn* supportB)
+{
+	cd3Penetration out;
+	out.overlapping = false;
+	out.depth = CD_R(0.0);
+	out.normal = cd3MakeVec(CD_R(0.0), CD_R(1.0), CD_R(0.0));
+	out.pointA = out.pointB = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	out.iterations = 0;
+	out.hitIterationCap = false;
+	Context c = {a, b, supportA, supportB};
+
+	Vertex simplex[4];
+	int count = 1;
+	cd3Vec d = cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.0));
+	simplex[0] = Support(&c, d);
+	d = cd3Neg(simplex[0].w);
+	bool enclosed = false;
+	for (int iteration = 0; iteration < CD3_EPA_MAX_ITERATIONS; ++iteration)
+	{
+		++out.iterations;
+		if (cd3LengthSquared(d) == CD_R(0.0))
+		{
+			break; /* the origin is on the simplex: touching, or inside a flat simplex */
+		}
+		Vertex v = Support(&c, d);
+		if (cd3Dot(v.w, d) < CD_R(0.0))
+		{
+			return out; /* separated along d */
+		}
+		simplex[count++] = v;
+		if (DoSimplex(simplex, &count, &d))
+		{
+			enclosed = true;
+			break;
+		}
+	}
+	out.overlapping = true;
+
+	/* Blow a smaller simplex up to a tetrahedron with support points along the missing
+	 * directions (the origin lies on the smaller simplex: the shapes touch or nearly so). */
+	Vertex vertices[MAX_VERTICES];
+	int vertexCount = count;
+	for (int i = 0; i < count; ++i)
+	{
+		vertices[i] = simplex[i];
+	}
+	if (!enclosed || vertexCount < 4)
+	{
+		static const cdReal axes[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+										  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+		for (int k = 0; k < 6 && vertexCount < 4; ++k)
+		{
+			Vertex v = Support(&c, cd3MakeVec(axes[k][0], axes[k][1], axes[k][2]));
+			bool fresh = true;
+			for (int i = 0; i < vertexCount; ++i)
+			{
+				fresh = fresh && cd3VecDistance(vertices[i].w, v.w) > CD_R(0.0);
+			}
+			if (vertexCount >= 2)
+			{
+				cd3Vec e = cd3Sub(vertices[1].w, vertices[0].w);
+				cd3Vec n = cd3Cross(e, cd3Sub(v.w, vertices[0].w));
+				fresh = fresh && cd3LengthSquared(n) > CD_R(0.0);
+				if (vertexCount == 3)
+				{
+					cd3Vec plane = cd3Cross(e, cd3Sub(vertices[2].w, vertices[0].w));
+					fresh = fresh && cd3Dot(plane, cd3Sub(v.w, vertices[0].w)) != CD_R(0.0);
+				}
+			}
+			if (fresh)
+			{
+				vertices[vertexCount++] = v;
+			}
+		}
+		if (vertexCount < 4)
+		{
+			/* A flat Minkowski difference: no depth. */
+			out.pointA = vertices[0].a;
+			out.pointB = vertices[0].b;
+			return out;
+		}
+	}
+
+	Face faces[MAX_FACES];
+	int faceCount = 0;
+	static const int tetra[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+	for (int i = 0; i < 4; ++i)
+	{
+		if (MakeFace(vertices, tetra[i][0], tetra[i][1], tetra[i][2], &faces[faceCount]))
+		{
+			++faceCount;
+		}
+	}
+	if (faceCount < 4)
+	{
+		out.pointA = vertices[0].a;
+		out.pointB = vertices[0].b;
+		return out;
+	}
+	/* A tetrahedron whose origin lies outside (a blown-up simplex) still converges: EPA expands
+	 * toward the closest face either way. */
+	int best = 0;
+	for (int iteration = 0;; ++iteration)
+	{
+		best = 0;
+		for (int i = 1; i < faceCount; ++i)
+		{
+			if (faces[i].distance < faces[best].distance)
+			{
+				best = i;
+			}
+		}
+		if (iteration >= CD3_EPA_MAX_ITERATIONS || vertexCount >= MAX_VERTICES)
+		{
+			out.hitIterationCap = true;
+			break;
+		}
+		++out.iterations;
+		Face f = faces[best];
+		Vertex w = Support(&c, f.normal);
+		cdReal gain = cd3Dot(f.normal, w.w) - f.distance;
+		cdReal scale = cdMax(cd3Length(cd3Abs(w.w)), f.distance);
+		if (gain <= CD_R(64.0) * CD_REAL_EPSILON * scale)
+		{
+			break; /* the face is a face of the Minkowski difference */
+		}
+		/* Remove the faces w sees; keep their edges that only one of them has (the horizon). */
+		int horizon[MAX_HORIZON][2];
+		int horizonCount = 0;
+		int kept = 0;
+		for (int i = 0; i < faceCount; ++i)
+		{
+			Face g = faces[i];
+			if (cd3Dot(g.normal, cd3Sub(w.w, vertices[g.v[0]].w)) > CD_R(0.0))
+			{
+				for (int e = 0; e < 3; ++e)
+				{
+					int p = g.v[e], q = g.v[(e + 1) % 3];
+					int found = -1;
+					for (int h = 0; h < horizonCount; ++h)
+					{
+						if (horizon[h][0] == q && horizon[h][1] == p)
+						{
+							found = h;
+							break;
+						}
+					}
+					if (found >= 0)
+					{
+						horizon[found][0] = horizon[horizonCount - 1][0];
+						horizon[found][1] = horizon[horizonCount - 1][1];
+						--horizonCount;
+					}
+					else if (horizonCount < MAX_HORIZON)
+					{
+						horizon[horizonCount][0] = p;
+						horizon[horizonCount][1] = q;
+						++horizonCount;
+					}
+				}
+			}
+			else
+			{
+				faces[kept++] = g;
+			}
+		}
+		faceCount = kept;
+		int index = vertexCount++;
+		vertices[index] = w;
+		for (int h = 0; h < horizonCount && faceCount < MAX_FACES; ++h)
+		{
+			if (MakeFace(vertices, horizon[h][0], horizon[h][1], index, &faces[faceCount]))
+			{
+				++faceCount;
+			}
+		}
+		if (faceCount == 0)
+		{
+			faces[0] = f;
+			faceCount = 1;
+			break;
+		}
+	}
+	Face f = faces[best < faceCount ? best : 0];
+	out.depth = f.distance;
+	out.normal = f.normal;
+	cd3Vec p = cd3Scale(f.distance, f.normal);
+	cdReal u, v, t;
+	Barycentric(vertices[f.v[0]].w, vertices[f.v[1]].w, vertices[f.v[2]].w, p, &u, &v, &t);
+	out.pointA = cd3Add(cd3Add(cd3Scale(u, vertices[f.v[0]].a), cd3Scale(v, vertices[f.v[1]].a)),
+						cd3Scale(t, vertices[f.v[2]].a));
+	out.pointB = cd3Add(cd3Add(cd3Scale(u, vertices[f.v[0]].b), cd3Scale(v, vertices[f.v[1]].b)),
+						cd3Scale(t, vertices[f.v[2]].b));
+	return out;
+}
