@@ -345,6 +345,49 @@ static void TestHullActsAsBox(void)
 	cd3DestroyHull(hull);
 }
 
+/* Translation only, target 0: the time of impact is the shape cast's fraction (both within their
+ * tolerances over the approach speed). */
+static void TestToiTranslationEqualsCast(void)
+{
+	TestRng rng = TestRngMake(0x70C3u);
+	const cd3ShapeType types[7] = {CD3_SHAPE_SPHERE,   CD3_SHAPE_CAPSULE, CD3_SHAPE_AABB, CD3_SHAPE_BOX,
+								   CD3_SHAPE_TRIANGLE, CD3_SHAPE_SEGMENT, CD3_SHAPE_PLANE};
+	int compared = 0;
+	for (int i = 0; i < 3000; ++i)
+	{
+		cd3Shape a = RandomShape(&rng, types[TestRngInt(&rng, 6)], 0.7);
+		cd3Shape b = RandomShape(&rng, types[TestRngInt(&rng, 7)], 0.7);
+		cd3Vec translation = RandomVec(&rng, -4.0, 4.0);
+		cd3Sweep sa = LinearSweep(CD3_VEC_ZERO, translation), sb = StillSweep();
+		cdToiOutput toi = cd3TimeOfImpact(&a, &sa, &b, &sb, CD_R(0.0), CD_R(1e-5));
+		cd3CastOutput cast = cd3ShapeCast(&a, &b, translation);
+		if (toi.state == CD_TOI_OVERLAPPED)
+		{
+			TEST_CHECKF(cast.hit && cast.fraction == CD_R(0.0), "case %d", i);
+			continue;
+		}
+		if (!cast.hit || toi.state != CD_TOI_HIT)
+		{
+			TEST_CHECKF(cast.hit == (toi.state == CD_TOI_HIT) ||
+							RefDistanceAt(&a, &sa, &b, &sb, 1.0) < 1e-4 ||
+							RefMinimumBefore(&a, &sa, &b, &sb, 1.0, 64) < 1e-4,
+						"case %d: cast %d toi %d", i, cast.hit, (int)toi.state);
+			continue;
+		}
+		double approach = -(double)cd3Dot(cast.normal, translation);
+		if (cast.fraction == CD_R(0.0) || approach < 0.1 * (double)cd3Length(translation))
+		{
+			continue;
+		}
+		++compared;
+		double toiTolerance = fmax(1e-5, 64.0 * CD_REAL_EPSILON * 8.0);
+		TEST_CHECKF(fabs((double)toi.t - (double)cast.fraction) <= (toiTolerance + 1e-5) / approach + 1e-6,
+					"case %d %s %s: toi %.9g cast %.9g", i, cd3ShapeTypeName(a.type),
+					cd3ShapeTypeName(b.type), (double)toi.t, (double)cast.fraction);
+	}
+	TEST_CHECKF(compared > 200, "%d compared", compared);
+}
+
 int main(void)
 {
 	TEST_RUN(TestCastSphereAtBoxAndPlane);
@@ -353,5 +396,6 @@ int main(void)
 	TEST_RUN(TestToiTurningLongBox);
 	TEST_RUN(TestToiRandomPairs);
 	TEST_RUN(TestHullActsAsBox);
+	TEST_RUN(TestToiTranslationEqualsCast);
 	return TEST_SUMMARY();
 }
