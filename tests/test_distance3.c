@@ -824,6 +824,55 @@ static void TestPlanes(void)
 	TEST_CHECK(r.distance == CD_R(0.0) && r.pointA.y <= CD_R(-3.0));
 }
 
+/* The common point of two meeting half-spaces lies in both. For nearly parallel normals (the
+ * fuzzer's cosine 1 - 1.5e-8, below float resolution) the solve for the line where the
+ * boundaries meet put it 1.2e-4 outside both. Exact case, then random pairs from nearly parallel
+ * to nearly opposite normals (sine from 1e-9 to 1 either way) and offsets of every size. */
+static bool InHalfSpace(cd3Plane p, cd3Vec x, double tolerance)
+{
+	return DDot(DFrom(p.normal), DFrom(x)) - (double)p.offset <= tolerance;
+}
+
+static void TestHalfSpaceWitnesses(void)
+{
+	cd3Plane a = {V(-1.0, 0.0, 0.0), CD_R(-0.000121249999)};
+	cd3Plane b = {cd3Normalize(V(-1.0, -0.000125000006, -0.000125000006)), CD_R(-0.000125000006)};
+	TestRng rng = TestRngMake(0x6a6b3d08u);
+	for (int i = 0; i <= 4000; ++i)
+	{
+		if (i > 0)
+		{
+			cd3Vec n = RandomUnit(&rng);
+			cd3Vec side = cd3Normalize(cd3Cross(n, RandomUnit(&rng)));
+			double sine = pow(10.0, TestRngRange(&rng, -9.0, 0.0));
+			double cosine = sqrt(1.0 - sine * sine) * (TestRngInt(&rng, 2) == 0 ? -1.0 : 1.0);
+			double scale = pow(10.0, TestRngRange(&rng, -6.0, 6.0));
+			a.normal = n;
+			b.normal = cd3Normalize(cd3Add(cd3Scale((cdReal)cosine, n), cd3Scale((cdReal)sine, side)));
+			a.offset = (cdReal)(scale * TestRngRange(&rng, -1.0, 1.0));
+			b.offset = (cdReal)(scale * TestRngRange(&rng, -1.0, 1.0));
+		}
+		cd3Shape sa = cd3MakePlaneShape(a), sb = cd3MakePlaneShape(b);
+		cd3ClosestPoints r = cd3Distance(&sa, &sb);
+		if (r.distance > CD_R(0.0))
+		{
+			continue; /* apart: opposite normals, checked in TestPlanes and test_overlap3 */
+		}
+		double magnitude =
+			fmax(fmax(fabs((double)a.offset), fabs((double)b.offset)), DLength(DFrom(r.pointA)));
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * magnitude;
+		TEST_CHECKF(
+			CheckFinitePoints(r) && cd3VecEqual(r.pointA, r.pointB) && InHalfSpace(a, r.pointA, tolerance) &&
+				InHalfSpace(b, r.pointA, tolerance),
+			"case %d: normals (%.9g %.9g %.9g) and (%.9g %.9g %.9g), offsets %.9g and %.9g: the common "
+			"point is %.3g and %.3g outside (tolerance %.3g)",
+			i, (double)a.normal.x, (double)a.normal.y, (double)a.normal.z, (double)b.normal.x,
+			(double)b.normal.y, (double)b.normal.z, (double)a.offset, (double)b.offset,
+			DDot(DFrom(a.normal), DFrom(r.pointA)) - (double)a.offset,
+			DDot(DFrom(b.normal), DFrom(r.pointA)) - (double)b.offset, tolerance);
+	}
+}
+
 /* Far from the origin and very small or very large: finite answers, right to round-off. */
 static void TestScales(void)
 {
@@ -1037,6 +1086,7 @@ int main(void)
 	TEST_RUN(TestBoxesAndAabbs);
 	TEST_RUN(TestCapsulesSegmentsTriangles);
 	TEST_RUN(TestPlanes);
+	TEST_RUN(TestHalfSpaceWitnesses);
 	TEST_RUN(TestScales);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestExtremeScales);

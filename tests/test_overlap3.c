@@ -847,6 +847,45 @@ static void TestDegenerateNeverCrash(void)
 	}
 }
 
+/* Two half-spaces with nearly opposite normals: cd3OverlapPlanePlane and cd3Distance decide
+ * together (the overlap test called normals with sine 5.1e-7 crossing while the distance called
+ * them opposite and 1.2e7 apart). Exact case from the fuzzer, then sines from 0.1 to 1000
+ * epsilon, across both former thresholds (4 and 16 epsilon): overlap holds exactly when the
+ * distance is 0, in both orders, and a positive distance is the gap between the offsets. */
+static void TestNearlyOppositeHalfSpaces(void)
+{
+	cd3Shape a = cd3MakePlaneShape((cd3Plane){V(8.51063831e-17, 0, -1), (cdReal)-12125000.0});
+	cd3Shape b = Pln(-3.6363636e-07, -3.6363636e-07, 1, 0);
+	TestRng rng = TestRngMake(0x5EED3209u);
+	for (int i = 0; i <= 4000; ++i)
+	{
+		if (i > 0)
+		{
+			/* n_b = -n_a tilted by `sine` towards a random perpendicular direction. */
+			double sine = (double)CD_REAL_EPSILON * pow(10.0, TestRngRange(&rng, -1.0, 3.0));
+			RVec n = RFromVec(RandomUnit(&rng)), side = RCross(n, RFromVec(RandomUnit(&rng)));
+			side = RScale(1.0 / RLength(side), side);
+			RVec m = RAdd(RScale(-sqrt(1.0 - sine * sine), n), RScale(sine, side));
+			double scale = pow(10.0, TestRngRange(&rng, -6.0, 6.0));
+			a = Pln(n.x, n.y, n.z, scale * TestRngRange(&rng, -1.0, 1.0));
+			b = Pln(m.x, m.y, m.z, scale * TestRngRange(&rng, -1.0, 1.0));
+		}
+		bool ab = cd3Overlap(&a, &b), ba = cd3Overlap(&b, &a);
+		cd3ClosestPoints dab = cd3Distance(&a, &b), dba = cd3Distance(&b, &a);
+		double gap = -((double)a.plane.offset + (double)b.plane.offset);
+		bool consistent = ab == ba && ab == (dab.distance == CD_R(0.0)) && ba == (dba.distance == CD_R(0.0));
+		bool gapRight = dab.distance == CD_R(0.0) || fabs((double)dab.distance - gap) <= 1e-5 * fabs(gap);
+		TEST_CHECKF(
+			consistent && gapRight,
+			"case %d: normals (%.9g %.9g %.9g) and (%.9g %.9g %.9g), offsets %.9g and %.9g: overlap %d/%d, "
+			"distance %.9g/%.9g (gap %.9g)",
+			i, (double)a.plane.normal.x, (double)a.plane.normal.y, (double)a.plane.normal.z,
+			(double)b.plane.normal.x, (double)b.plane.normal.y, (double)b.plane.normal.z,
+			(double)a.plane.offset, (double)b.plane.offset, (int)ab, (int)ba, (double)dab.distance,
+			(double)dba.distance, gap);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestSourceTexts);
@@ -863,5 +902,6 @@ int main(void)
 	TEST_RUN(TestRandomPointInShape);
 	TEST_RUN(TestClosestPointIsContained);
 	TEST_RUN(TestDegenerateNeverCrash);
+	TEST_RUN(TestNearlyOppositeHalfSpaces);
 	return TEST_SUMMARY();
 }

@@ -439,38 +439,55 @@ static cd3ClosestPoints DistancePlaneCore(cd3Plane plane, const cd3Core* core)
 	return result;
 }
 
-/* Two half-spaces meet unless their normals are opposite and their solid sides apart. */
+/* Two half-spaces meet unless cd3HalfSpacesApart (support3.h, shared with the overlap test) says
+ * otherwise; then a common point, built so that its residuals stay at the round-off of its own
+ * coordinates. Nearly parallel normals (cosine >= 1/2) take t * a.normal with t = min(a.offset,
+ * b.offset / cosine), in both by construction; nearly opposite ones the middle of the slab
+ * between them on the line of a.normal when there is one. Otherwise the point a.offset *
+ * a.normal of a's boundary moves along that boundary, in the direction w perpendicular to
+ * a.normal that b.normal points against, until it reaches b's boundary. The former 2x2 solve
+ * for the line where the boundaries meet cancelled terms of size gap / sine^2 and, for nearly
+ * parallel or opposite normals, landed far outside both. */
 static cd3ClosestPoints DistancePlanePlane(cd3Plane a, cd3Plane b)
 {
-	cdReal c = cd3Dot(a.normal, b.normal);
-	cd3Vec axis = cd3Cross(a.normal, b.normal);
-	cdReal sineSquared = cd3LengthSquared(axis);
-	if (sineSquared > GJK_DEGENERATE_TOLERANCE * GJK_DEGENERATE_TOLERANCE)
+	cdReal gap;
+	if (cd3HalfSpacesApart(a, b, &gap))
 	{
-		/* The point of the line where both boundaries meet closest to the origin. */
-		cdReal alpha = (a.offset - c * b.offset) / sineSquared;
-		cdReal beta = (b.offset - c * a.offset) / sineSquared;
-		cd3Vec point = cd3Add(cd3Scale(alpha, a.normal), cd3Scale(beta, b.normal));
-		/* One refinement step: the residuals of the 2x2 solve shrink by the conditioning. */
-		cdReal residualA = cd3Dot(a.normal, point) - a.offset;
-		cdReal residualB = cd3Dot(b.normal, point) - b.offset;
-		alpha = (residualA - c * residualB) / sineSquared;
-		beta = (residualB - c * residualA) / sineSquared;
-		return Touching(cd3Sub(point, cd3Add(cd3Scale(alpha, a.normal), cd3Scale(beta, b.normal))));
+		cd3ClosestPoints result = {cd3Scale(a.offset, a.normal), cd3Scale(a.offset + gap, a.normal), gap};
+		return result;
 	}
-	if (c > CD_R(0.0))
+	cdReal c = cd3Dot(a.normal, b.normal);
+	if (c >= CD_R(0.5))
 	{
-		/* Nested: a point t * a.normal with t <= a.offset and t * c <= b.offset. */
 		return Touching(cd3Scale(cdMin(a.offset, b.offset / c), a.normal));
 	}
-	/* Opposite: x = t * a.normal is in both when -b.offset / |c| <= t <= a.offset. */
-	cdReal lower = b.offset / c;
-	if (lower <= a.offset)
+	cdReal sineSquared = cd3LengthSquared(cd3Cross(a.normal, b.normal));
+	if (c <= CD_R(-0.5))
 	{
-		return Touching(cd3Scale(CD_R(0.5) * (lower + a.offset), a.normal));
+		/* x = t * a.normal is in both when b.offset / c <= t <= a.offset; opposite normals that
+		 * touch within the tolerance take the middle of their gap. */
+		cdReal lower = b.offset / c;
+		if (lower <= a.offset || sineSquared <= CD3_OPPOSITE_SINE_LIMIT * CD3_OPPOSITE_SINE_LIMIT)
+		{
+			return Touching(cd3Scale(CD_R(0.5) * (lower + a.offset), a.normal));
+		}
 	}
-	cd3ClosestPoints result = {cd3Scale(a.offset, a.normal), cd3Scale(lower, a.normal), lower - a.offset};
-	return result;
+	cd3Vec start = cd3Scale(a.offset, a.normal);
+	cdReal needed = cd3Dot(b.normal, start) - b.offset;
+	if (needed <= CD_R(0.0))
+	{
+		return Touching(start);
+	}
+	/* w: made perpendicular to a.normal once more after normalizing, so that moving along it
+	 * leaves a's boundary by round-off only; b.normal . w is about -sine, below -16 epsilon. */
+	cd3Vec w = cd3Normalize(cd3MulSub(cd3Scale(c, a.normal), CD_R(1.0), b.normal));
+	w = cd3Normalize(cd3MulSub(w, cd3Dot(a.normal, w), a.normal));
+	cdReal approach = -cd3Dot(b.normal, w);
+	if (!(approach > CD_R(0.0)))
+	{
+		return Touching(start); /* unreachable for normals that are not opposite */
+	}
+	return Touching(cd3MulAdd(start, needed / approach, w));
 }
 
 static cd3ClosestPoints Swap(cd3ClosestPoints result)

@@ -15,6 +15,8 @@
  * evaluated in one fixed order, so (a, b) and (b, a) agree to the bit. */
 #include "collide/query3.h"
 
+#include "support3.h"
+
 #include <string.h>
 
 #define CD_OVERLAP_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
@@ -690,22 +692,12 @@ bool cd3OverlapTriangleSegment(cd3Triangle t, cd3Segment g)
 
 /* ---- plane and segment pairs --------------------------------------------------------------- */
 
-/* Half-spaces whose normals are not opposite always meet somewhere. Normals count as opposite
- * when the sine of their angle is below a few epsilon: such planes meet only at distances
- * around offset / epsilon, beyond any coordinate the library supports. */
+/* Shared with cd3Distance (support3.h): opposite normals within 16 epsilon, a gap beyond the
+ * tolerance. */
 bool cd3OverlapPlanePlane(cd3Plane a, cd3Plane b)
 {
-	cdReal cosine = cd3Dot(a.normal, b.normal);
-	cdReal sineSquared = cd3LengthSquared(cd3Cross(a.normal, b.normal));
-	cdReal limit = CD_R(4.0) * CD_REAL_EPSILON;
-	if (cosine >= CD_R(0.0) || sineSquared > limit * limit)
-	{
-		return true;
-	}
-	/* b is the set n_a . x >= -offset_b (normals unit length): it meets n_a . x <= offset_a when
-	 * -offset_b <= offset_a. */
-	cdReal gap = -(a.offset + b.offset);
-	return gap <= Tolerance(cdMax(cdAbs(a.offset), cdAbs(b.offset)));
+	cdReal gap;
+	return !cd3HalfSpacesApart(a, b, &gap);
 }
 
 bool cd3OverlapPlaneSegment(cd3Plane p, cd3Segment g)

@@ -136,4 +136,27 @@ static inline int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
 	return best;
 }
 
+/* Two half-spaces dot(n, x) <= offset (unit normals) are apart exactly when their normals are
+ * opposite and -offset_b > offset_a; *gap = -(offset_a + offset_b) is then their distance. The
+ * one decision that cd3OverlapPlanePlane and cd3Distance share, so that overlap holds exactly when
+ * the distance is zero. Normals count as opposite when the sine of their angle is at most 16
+ * epsilon (the tolerance of the rotated tests, docs/API.md): boundaries that close to antiparallel
+ * meet only around gap / sine >= gap / (16 epsilon) from the origin, where the spacing of the
+ * coordinates exceeds the gap itself. A gap up to 16 epsilon of the offsets is touching. Symmetric
+ * in its arguments to the bit. */
+#define CD3_OPPOSITE_SINE_LIMIT (CD_R(16.0) * CD_REAL_EPSILON)
+
+static inline bool cd3HalfSpacesApart(cd3Plane a, cd3Plane b, cdReal* gap)
+{
+	const cdReal limit = CD3_OPPOSITE_SINE_LIMIT;
+	cdReal cosine = cd3Dot(a.normal, b.normal);
+	cdReal sineSquared = cd3LengthSquared(cd3Cross(a.normal, b.normal));
+	*gap = -(a.offset + b.offset);
+	if (cosine >= CD_R(0.0) || sineSquared > limit * limit)
+	{
+		return false;
+	}
+	return *gap > limit * cdMax(cdAbs(a.offset), cdAbs(b.offset));
+}
+
 #endif
