@@ -890,6 +890,126 @@ static void TestSolidsNearTangent(void)
 	}
 }
 
+/* Distance between the segments a1-a2 and b1-b2 in double (0 when they cross). */
+static double RefSegmentSegmentDistance(DVec a1, DVec a2, DVec b1, DVec b2)
+{
+	double o1 = DCross(DSub(a2, a1), DSub(b1, a1)), o2 = DCross(DSub(a2, a1), DSub(b2, a1));
+	double o3 = DCross(DSub(b2, b1), DSub(a1, b1)), o4 = DCross(DSub(b2, b1), DSub(a2, b1));
+	if (((o1 < 0.0 && o2 > 0.0) || (o1 > 0.0 && o2 < 0.0)) &&
+		((o3 < 0.0 && o4 > 0.0) || (o3 > 0.0 && o4 < 0.0)))
+	{
+		return 0.0;
+	}
+	return fmin(fmin(RefDistanceToSegment(a1, b1, b2), RefDistanceToSegment(a2, b1, b2)),
+				fmin(RefDistanceToSegment(b1, a1, a2), RefDistanceToSegment(b2, a1, a2)));
+}
+
+/* Rays along a segment's line (nearly: the rounding of the points, and offsets of up to 1e-6 of
+ * its length), from beyond one end: moving away they miss, and any hit lies on the segment; on
+ * exactly collinear lattice cases the fraction is the one at which the ray reaches the end. The
+ * crossing of two lines that round-off cannot tell apart decided these before. The fuzzer's case first: the
+ * segment's end (-0.010375, -0.010375) lies on the ray's line y = x, behind the origin. */
+static void TestGrazingSegments(void)
+{
+	cd2Segment g = {cd2MakeVec(CD_R(0.0), CD_R(1e-9)), cd2MakeVec(CD_R(-0.010375), CD_R(-0.010375))};
+	cd2RayHit hit = UntouchedHit();
+	TEST_CHECK(!cd2RaycastSegment(g, Ray(CD_R(-0.0125), CD_R(-0.0125), CD_R(-0.0125), CD_R(-0.0125)), &hit));
+	TEST_CHECK(IsUntouched(hit));
+	TEST_CHECK(cd2RaycastSegment(g, Ray(CD_R(-0.0125), CD_R(-0.0125), CD_R(0.0125), CD_R(0.0125)), &hit));
+	TEST_CHECK_NEAR(hit.fraction, 0.17, 1e-4);
+	TEST_CHECK(RefDistanceToSegment(D(hit.point), D(g.p1), D(g.p2)) <= 1e-9);
+
+	TestRng rng = TestRngMake(0x6A2E5);
+#if CD_DOUBLE
+	const double largest = 30.0;
+#else
+	const double largest = 9.0;
+#endif
+	int misses = 0, hits = 0;
+	for (int n = 0; n < 20000; ++n)
+	{
+		double k = pow(10.0, TestRngRange(&rng, -largest, largest));
+		DVec p1 = DMake(k * TestRngRange(&rng, -1.0, 1.0), k * TestRngRange(&rng, -1.0, 1.0));
+		double heading = TestRngRange(&rng, -3.2, 3.2);
+		DVec u = DMake(cos(heading), sin(heading)), normal = DMake(-sin(heading), cos(heading));
+		double length = k * TestRngRange(&rng, 0.01, 2.0);
+		cd2Segment segment = {V(p1), V(DAdd(p1, DScale(length, u)))};
+		DVec a = D(segment.p1), b = D(segment.p2);
+		double beyond = length * pow(10.0, TestRngRange(&rng, -6.0, 0.0));
+		double offset = n % 2 == 0 ? 0.0 : length * TestRngRange(&rng, -1e-6, 1e-6);
+		DVec origin = DAdd(DAdd(b, DScale(beyond, u)), DScale(offset, normal));
+		double reach =
+			n % 4 < 2 ? TestRngRange(&rng, 0.1, 2.0) * length : -TestRngRange(&rng, 0.1, 2.0) * length;
+		cd2Ray ray = {V(origin), V(DScale(-reach, u))};
+		DVec o = D(ray.origin), d = D(ray.translation);
+		double scale =
+			fmax(fmax(fabs(o.x), fabs(o.y)), fmax(fmax(fabs(a.x), fabs(a.y)), fmax(fabs(b.x), fabs(b.y))));
+		scale = fmax(scale, fmax(fabs(o.x + d.x), fabs(o.y + d.y)));
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * scale;
+		double distance = RefSegmentSegmentDistance(o, DAdd(o, d), a, b);
+		hit = UntouchedHit();
+		bool got = cd2RaycastSegment(segment, ray, &hit);
+		if (!got)
+		{
+			++misses;
+			TEST_CHECKF(IsUntouched(hit), "case %d: miss changed *hit", n);
+			/* A miss must not cross clearly: both ends of the segment farther than the tolerance from
+			 * the ray's line, on opposite sides, the crossing within the ray. */
+			double side1 = DCross(d, DSub(a, o)) / sqrt(DDot(d, d)),
+				   side2 = DCross(d, DSub(b, o)) / sqrt(DDot(d, d));
+			bool clearCrossing = false;
+			if (fabs(side1) > tolerance && fabs(side2) > tolerance && (side1 > 0.0) != (side2 > 0.0))
+			{
+				DVec crossing = DAdd(a, DScale(side1 / (side1 - side2), DSub(b, a)));
+				double t = DDot(DSub(crossing, o), d) / DDot(d, d);
+				clearCrossing = t > 1e-3 && t < 1.0 - 1e-3;
+			}
+			TEST_CHECKF(!clearCrossing, "case %d: the ray crosses the segment but misses", n);
+			continue;
+		}
+		++hits;
+		double off = RefDistanceToSegment(D(hit.point), a, b);
+		TEST_CHECKF(
+			off <= tolerance && distance <= tolerance,
+			"case %d: hit %.3g off the segment (ray %.3g from it, tolerance %.3g, reach %.3g, beyond %.3g)",
+			n, off, distance, tolerance, reach, beyond);
+		/* Moving away, only a ray starting on the segment (within round-off) hits. */
+		TEST_CHECKF(reach > 0.0 || distance <= tolerance,
+					"case %d: a ray moving away from the segment hits at %.9g", n, (double)hit.fraction);
+	}
+	TEST_CHECKF(hits > 2000 && misses > 9000, "%d hits, %d misses", hits, misses);
+
+	/* Exactly collinear (lattice points along the axes and diagonals, scaled by powers of two): a ray
+	 * from beyond the end at distance c along the line with reach r enters at fraction c / r. */
+	for (int n = 0; n < 4000; ++n)
+	{
+		static const int directions[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+		const int* u = directions[n % 4];
+		double unit = ldexp(1.0, TestRngInt(&rng, 40) - 20);
+		double x = unit * (TestRngInt(&rng, 2001) - 1000), y = unit * (TestRngInt(&rng, 2001) - 1000);
+		double length = unit * (1 + TestRngInt(&rng, 100)), beyond = unit * (1 + TestRngInt(&rng, 100));
+		double reach = unit * (1 + TestRngInt(&rng, 300));
+		cd2Segment segment = {cd2MakeVec((cdReal)x, (cdReal)y),
+							  cd2MakeVec((cdReal)(x + length * u[0]), (cdReal)(y + length * u[1]))};
+		cd2Vec origin =
+			cd2MakeVec((cdReal)(x + (length + beyond) * u[0]), (cdReal)(y + (length + beyond) * u[1]));
+		cd2Ray toward = {origin, cd2MakeVec((cdReal)(-reach * u[0]), (cdReal)(-reach * u[1]))};
+		cd2Ray away = {origin, cd2MakeVec((cdReal)(reach * u[0]), (cdReal)(reach * u[1]))};
+		hit = UntouchedHit();
+		TEST_CHECKF(!cd2RaycastSegment(segment, away, &hit) && IsUntouched(hit),
+					"lattice case %d: moving away hits", n);
+		bool got = cd2RaycastSegment(segment, toward, &hit);
+		TEST_CHECKF(got == (beyond <= reach), "lattice case %d: hit %d, beyond %g, reach %g", n, (int)got,
+					beyond, reach);
+		if (got)
+		{
+			TEST_CHECKF(fabs((double)hit.fraction - beyond / reach) <= 4.0 * (double)CD_REAL_EPSILON,
+						"lattice case %d: fraction %.9g, expected %.9g", n, (double)hit.fraction,
+						beyond / reach);
+		}
+	}
+}
+
 /* Segments against Cramer's rule in double. */
 static void TestSegmentsAgainstReference(void)
 {
@@ -1261,6 +1381,7 @@ int main(void)
 	TEST_RUN(TestSolidsAgainstReference);
 	TEST_RUN(TestSolidsNearTangent);
 	TEST_RUN(TestSegmentsAgainstReference);
+	TEST_RUN(TestGrazingSegments);
 	TEST_RUN(TestRigidTransformInvariance);
 	TEST_RUN(TestAgreesWith3D);
 	TEST_RUN(TestBoxPolygonAgreesWithBox);

@@ -318,9 +318,19 @@ bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 	return cd2HitAtFraction(ray, lower, polygon->normals[index], hit);
 }
 
-/* Two-sided: solves origin + t d = p1 + s e with t, s in [0, 1], comparing the numerators with the
- * denominator before dividing. A ray along the segment's line hits at the first point it shares
- * with it, with normal -normalize(translation) (the segment as a zero-radius capsule). */
+static cdReal RayMaxAbs(cd2Vec v)
+{
+	return cdMax(cdAbs(v.x), cdAbs(v.y));
+}
+
+/* Two-sided. The segment p1 + s e meets the ray's line where the end points' sides of that line,
+ * h = cross(d, p - origin), change sign: s = h1 / (h1 - h2). Each side is decided only beyond its
+ * round-off (8 epsilons of |d| times the offset |p - origin|); within it the end point counts as
+ * on the line. A segment with both ends on the line is collinear with the ray and is hit at the
+ * first point it shares with it, with normal -normalize(translation) (a zero-radius capsule). So a
+ * nearly collinear ray is never decided by the crossing of two lines that round-off cannot tell
+ * apart (a ray moving away from a segment's end reported a hit 3e-3 off the segment). The crossing
+ * point, origin + (start + s e), gives the fraction by projection on the ray. */
 bool cd2RaycastSegment(cd2Segment g, cd2Ray ray, cd2RayHit* hit)
 {
 	cd2Vec d = ray.translation;
@@ -330,43 +340,52 @@ bool cd2RaycastSegment(cd2Segment g, cd2Ray ray, cd2RayHit* hit)
 	}
 	cd2Vec e = cd2Sub(g.p2, g.p1);
 	cd2Vec start = cd2Sub(g.p1, ray.origin);
-	cdReal denominator = cd2Cross(d, e);
-	if (denominator != CD_R(0.0))
+	cd2Vec finish = cd2Sub(g.p2, ray.origin);
+	cdReal lengthSquared = cd2Dot(d, d);
+	cdReal roundOff = CD_R(8.0) * CD_REAL_EPSILON * RayMaxAbs(d);
+	cdReal side1 = cd2Cross(d, start), side2 = cd2Cross(d, finish);
+	bool onLine1 = cdAbs(side1) <= roundOff * RayMaxAbs(start);
+	bool onLine2 = cdAbs(side2) <= roundOff * RayMaxAbs(finish);
+	if (onLine1 && onLine2)
 	{
-		cdReal fractionNumerator = cd2Cross(start, e);
-		cdReal segmentNumerator = cd2Cross(start, d);
-		if (denominator < CD_R(0.0))
-		{
-			denominator = -denominator;
-			fractionNumerator = -fractionNumerator;
-			segmentNumerator = -segmentNumerator;
-		}
-		if (fractionNumerator < CD_R(0.0) || fractionNumerator > denominator ||
-			segmentNumerator < CD_R(0.0) || segmentNumerator > denominator)
+		cdReal startAlong = cd2Dot(start, d), finishAlong = cd2Dot(finish, d);
+		cdReal first = cdMin(startAlong, finishAlong), last = cdMax(startAlong, finishAlong);
+		if (last < CD_R(0.0) || first > lengthSquared)
 		{
 			return false;
 		}
-		cd2Vec normal = cd2LeftPerp(cd2Normalize(e));
-		if (cd2Dot(normal, d) > CD_R(0.0))
-		{
-			normal = cd2Neg(normal);
-		}
-		return cd2HitAtFraction(ray, fractionNumerator / denominator, normal, hit);
+		return cd2HitAtFraction(ray, cdMax(first, CD_R(0.0)) / lengthSquared, cd2Neg(cd2Normalize(d)), hit);
 	}
-
-	cd2Vec finish = cd2Add(start, e);
-	if (cd2Cross(d, start) != CD_R(0.0) || cd2Cross(d, finish) != CD_R(0.0))
+	/* Ends on opposite sides (as computed) cross the line in between; on one side, the segment
+	 * touches it only at an end within round-off of it. */
+	bool oneSide = (side1 > CD_R(0.0) && side2 > CD_R(0.0)) || (side1 < CD_R(0.0) && side2 < CD_R(0.0));
+	cd2Vec crossing;
+	if (!oneSide)
 	{
-		return false; /* parallel, off the ray's line */
+		/* Not both 0 (both would be on the line), so side1 - side2 is not 0. */
+		crossing = cd2MulAdd(start, side1 / (side1 - side2), e);
 	}
-	cdReal lengthSquared = cd2Dot(d, d);
-	cdReal startAlong = cd2Dot(start, d), finishAlong = cd2Dot(finish, d);
-	cdReal first = cdMin(startAlong, finishAlong), last = cdMax(startAlong, finishAlong);
-	if (last < CD_R(0.0) || first > lengthSquared)
+	else if (onLine1 || onLine2)
+	{
+		crossing = onLine1 ? start : finish;
+	}
+	else
 	{
 		return false;
 	}
-	return cd2HitAtFraction(ray, cdMax(first, CD_R(0.0)) / lengthSquared, cd2Neg(cd2Normalize(d)), hit);
+	cdReal along = cd2Dot(crossing, d);
+	/* Within round-off of the ray's ends counts (closed sets). */
+	cdReal alongRoundOff = roundOff * RayMaxAbs(crossing);
+	if (along < -alongRoundOff || along > lengthSquared + alongRoundOff)
+	{
+		return false;
+	}
+	cd2Vec normal = cd2LeftPerp(cd2Normalize(e));
+	if (cd2Dot(normal, d) > CD_R(0.0))
+	{
+		normal = cd2Neg(normal);
+	}
+	return cd2HitAtFraction(ray, along / lengthSquared, normal, hit);
 }
 
 bool cd2Raycast(const cd2Shape* shape, cd2Ray ray, cd2RayHit* hit)
