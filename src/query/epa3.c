@@ -232,7 +232,8 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 	simplex[0] = Support(&c, d);
 	d = cd3Neg(simplex[0].w);
 	bool enclosed = false;
-	for (int iteration = 0; iteration < CD3_EPA_MAX_ITERATIONS; ++iteration)
+	int gjkIteration = 0;
+	for (; gjkIteration < CD3_EPA_MAX_ITERATIONS; ++gjkIteration)
 	{
 		++out.iterations;
 		if (cd3LengthSquared(d) == CD_R(0.0))
@@ -252,6 +253,12 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 		}
 	}
 	out.overlapping = true;
+	if (gjkIteration == CD3_EPA_MAX_ITERATIONS)
+	{
+		/* GJK cycled (round-off near a face of the Minkowski difference): the overlap answer is
+		 * uncertain, said by the cap flag; the caller checks with a distance query. */
+		out.hitIterationCap = true;
+	}
 
 	/* Blow a smaller simplex up to a tetrahedron with support points along the missing
 	 * directions (the origin lies on the smaller simplex: the shapes touch or nearly so). */

@@ -12,13 +12,14 @@ typedef cd3Vec cd3SupportFcn(const void* shape, cd3Vec direction);
 
 typedef struct cd3Penetration
 {
-	bool overlapping; /* false: GJK found a separating direction; the rest is unset */
-	cdReal depth;	  /* >= 0: translating B by depth * normal makes the shapes touch */
-	cd3Vec normal;	  /* unit, from A to B */
-	cd3Vec pointA;	  /* deepest point of A inside B (world) */
-	cd3Vec pointB;	  /* pointA + ... : pointB - pointA = -depth * normal */
-	int iterations;	  /* GJK and EPA iterations used */
-	bool hitIterationCap;
+	bool overlapping;	  /* false: GJK found a separating direction; the rest is unset */
+	cdReal depth;		  /* >= 0: translating B by depth * normal makes the shapes touch */
+	cd3Vec normal;		  /* unit, from A to B */
+	cd3Vec pointA;		  /* deepest point of A inside B (world) */
+	cd3Vec pointB;		  /* pointA + ... : pointB - pointA = -depth * normal */
+	int iterations;		  /* GJK and EPA iterations used */
+	bool hitIterationCap; /* GJK or EPA stopped at the cap: the answer is the best so far (after a
+							 GJK cap, overlapping may be wrong: check with cd3Distance) */
 } cd3Penetration;
 
 #define CD3_EPA_MAX_ITERATIONS 64

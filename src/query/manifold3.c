@@ -19,6 +19,7 @@
  * the surfaces; the normal points from A to B. */
 #include "collide/manifold3.h"
 
+#include "epa3.h"
 #include "sat3.h"
 
 /* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
@@ -414,9 +415,102 @@ static cdReal ManifoldMinSeparation(const cd3Manifold* m)
 	return s;
 }
 
+/* Polytopes with more edge pairs than this take the GJK/EPA path: the SAT edge query costs
+ * O(edges of A x edges of B), EPA a few dozen support calls. */
+#define SAT_EDGE_PAIR_LIMIT 1024
+
+/* The face of p whose world normal is most aligned with `direction`, and that cosine. */
+static int AlignedFace(const cd3Polytope* p, cd3Vec direction, cdReal* cosine)
+{
+	cd3Vec local = cd3InvRotateVector(p->transform.q, direction);
+	int best = -1;
+	*cosine = -CD_REAL_MAX;
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cdReal d = cd3Dot(p->planes[f].normal, local);
+		if (d > *cosine)
+		{
+			*cosine = d;
+			best = f;
+		}
+	}
+	return best;
+}
+
+/* Large polytopes: the depth and normal from GJK (apart) or EPA (overlapping, exact on polytopes
+ * up to round-off), then a face contact on the face aligned with that normal (A's preferred), or
+ * one point at the witnesses when no face is (an edge or vertex contact). */
+static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytope* b,
+										  cdReal speculativeDistance)
+{
+	cdReal size = a->size + b->size;
+	cdReal tolerance = REALIZED_TOLERANCE * size;
+	cd3Vec normal;
+	cdReal separation;
+	cd3Vec pointA, pointB;
+	/* EPA's own GJK answers overlap first, so overlapping pairs run GJK once. */
+	cd3Penetration epa = cd3Epa(a, cd3PolytopeSupport, b, cd3PolytopeSupport);
+	if (epa.overlapping && epa.hitIterationCap && cd3Distance(&a->shape, &b->shape).distance > tolerance)
+	{
+		epa.overlapping = false;
+	}
+	if (epa.overlapping)
+	{
+		normal = epa.normal;
+		separation = -epa.depth;
+		pointA = epa.pointA;
+		pointB = epa.pointB;
+	}
+	else
+	{
+		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
+		if (!(cp.distance <= speculativeDistance))
+		{
+			return EmptyManifold();
+		}
+		normal = cd3Normalize(cd3Sub(cp.pointB, cp.pointA));
+		if (cd3LengthSquared(normal) == CD_R(0.0))
+		{
+			normal = epa.normal;
+		}
+		separation = cp.distance;
+		pointA = cp.pointA;
+		pointB = cp.pointB;
+	}
+	cdReal alignA, alignB;
+	int faceA = AlignedFace(a, normal, &alignA);
+	int faceB = AlignedFace(b, cd3Neg(normal), &alignB);
+	if (faceA >= 0 && faceB >= 0 && cdMax(alignA, alignB) >= FACE_ALIGNED)
+	{
+		bool useB = alignB > alignA + CD_R(1.0e-6);
+		cd3Manifold m = useB ? FaceContact(b, faceB, a, true, speculativeDistance)
+							 : FaceContact(a, faceA, b, false, speculativeDistance);
+		if (m.pointCount > 0 && cdAbs(ManifoldMinSeparation(&m) - separation) <= tolerance)
+		{
+			return m;
+		}
+	}
+	cd3Manifold m = EmptyManifold();
+	m.normal = normal;
+	AddPoint(&m, cd3Lerp(pointA, pointB, CD_R(0.5)), separation, ID_VERTEX_PAIR);
+	return m;
+}
+
+static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b, cd3SatResult sat,
+									   cdReal speculativeDistance);
+
 static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
 {
-	cd3SatResult sat = cd3SatPolytopes(a, b);
+	if (!a->flat && !b->flat && (a->edgeAxisCount / 2) * (b->edgeAxisCount / 2) > SAT_EDGE_PAIR_LIMIT)
+	{
+		return CollidePolytopesGjkEpa(a, b, speculativeDistance);
+	}
+	return CollidePolytopesSat(a, b, cd3SatPolytopes(a, b), speculativeDistance);
+}
+
+static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b, cd3SatResult sat,
+									   cdReal speculativeDistance)
+{
 	cdReal separation = cd3SatSeparation(&sat);
 	if (!(separation <= speculativeDistance))
 	{
@@ -757,10 +851,15 @@ cd3Manifold cd3CollideCapsuleTriangle(cd3Capsule a, cd3Triangle b, cdReal specul
 
 cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 {
+	cd3SatResult sat = cd3SatBoxes(a, b);
+	if (!(cd3SatSeparation(&sat) <= speculativeDistance))
+	{
+		return EmptyManifold();
+	}
 	cd3Polytope pa, pb;
 	cd3InitBoxPolytope(&pa, a);
 	cd3InitBoxPolytope(&pb, b);
-	return CollidePolytopes(&pa, &pb, speculativeDistance);
+	return CollidePolytopesSat(&pa, &pb, sat, speculativeDistance);
 }
 
 cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance)
@@ -894,6 +993,10 @@ cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeD
 		{
 			m = CollideCorePolytope(a->capsule.p1, a->capsule.p2, a->capsule.radius, &pb,
 									speculativeDistance);
+		}
+		else if (rankA == 2 && rankB == 2)
+		{
+			m = cd3CollideBoxBox(ShapeBox(a), ShapeBox(b), speculativeDistance);
 		}
 		else
 		{

@@ -476,3 +476,125 @@ cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, 
 	r->edgeNormal = cd3RotateVector(b->transform.q, bestAxis);
 	return r->edgeSeparation > r->faceSeparationB ? CD3_SAT_EDGES : CD3_SAT_FACE_B;
 }
+
+/* The half-edge of the box from vertex `from` to vertex `to`. */
+static int BoxHalfEdge(int from, int to)
+{
+	for (int e = 0; e < 24; ++e)
+	{
+		if (BOX_EDGES[e].origin == from && BOX_EDGES[BOX_EDGES[e].twin].origin == to)
+		{
+			return e;
+		}
+	}
+	return 0;
+}
+
+/* The box edge parallel to axis `axis` that supports the box along `direction` (box frame). */
+static int SupportingBoxEdge(int axis, cd3Vec direction)
+{
+	int vertex = 0;
+	for (int k = 0; k < 3; ++k)
+	{
+		if (k != axis && cd3GetComponent(direction, k) > CD_R(0.0))
+		{
+			vertex |= 1 << k;
+		}
+	}
+	return BoxHalfEdge(vertex, vertex | (1 << axis));
+}
+
+cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b)
+{
+	cd3SatResult r;
+	cd3Quat q = cd3InvMulQuat(a.rotation, b.rotation); /* B's axes in A's frame */
+	cd3Vec t = cd3InvRotateVector(a.rotation, cd3Sub(b.center, a.center));
+	cd3Vec axisB[3] = {cd3RotateVector(q, cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.0))),
+					   cd3RotateVector(q, cd3MakeVec(CD_R(0.0), CD_R(1.0), CD_R(0.0))),
+					   cd3RotateVector(q, cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0)))};
+	cdReal ha[3] = {a.halfExtents.x, a.halfExtents.y, a.halfExtents.z};
+	cdReal hb[3] = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
+	/* rot[i][j] = A's axis i . B's axis j */
+	cdReal rot[3][3], absRot[3][3];
+	for (int j = 0; j < 3; ++j)
+	{
+		rot[0][j] = axisB[j].x;
+		rot[1][j] = axisB[j].y;
+		rot[2][j] = axisB[j].z;
+	}
+	for (int i = 0; i < 3; ++i)
+	{
+		for (int j = 0; j < 3; ++j)
+		{
+			absRot[i][j] = cdAbs(rot[i][j]);
+		}
+	}
+	cdReal tA[3] = {t.x, t.y, t.z};
+
+	r.faceSeparationA = -CD_REAL_MAX;
+	r.faceA = 0;
+	for (int i = 0; i < 3; ++i)
+	{
+		cdReal radiusB = hb[0] * absRot[i][0] + hb[1] * absRot[i][1] + hb[2] * absRot[i][2];
+		cdReal separation = cdAbs(tA[i]) - ha[i] - radiusB;
+		if (separation > r.faceSeparationA)
+		{
+			r.faceSeparationA = separation;
+			r.faceA = 2 * i + (tA[i] > CD_R(0.0) ? 1 : 0);
+		}
+	}
+	r.faceSeparationB = -CD_REAL_MAX;
+	r.faceB = 0;
+	for (int j = 0; j < 3; ++j)
+	{
+		cdReal tB = cd3Dot(t, axisB[j]);
+		cdReal radiusA = ha[0] * absRot[0][j] + ha[1] * absRot[1][j] + ha[2] * absRot[2][j];
+		cdReal separation = cdAbs(tB) - hb[j] - radiusA;
+		if (separation > r.faceSeparationB)
+		{
+			r.faceSeparationB = separation;
+			/* B's face toward A: A lies on B's negative side when tB > 0. */
+			r.faceB = 2 * j + (tB > CD_R(0.0) ? 0 : 1);
+		}
+	}
+	r.edgeSeparation = -CD_REAL_MAX;
+	r.edgeA = -1;
+	r.edgeB = -1;
+	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	int bestI = 0, bestJ = 0;
+	for (int i = 0; i < 3; ++i)
+	{
+		cd3Vec e = {i == 0 ? CD_R(1.0) : CD_R(0.0), i == 1 ? CD_R(1.0) : CD_R(0.0),
+					i == 2 ? CD_R(1.0) : CD_R(0.0)};
+		for (int j = 0; j < 3; ++j)
+		{
+			cd3Vec axis = cd3Cross(e, axisB[j]);
+			cdReal length2 = cd3LengthSquared(axis);
+			if (!(length2 > PARALLEL_SINE * PARALLEL_SINE))
+			{
+				continue;
+			}
+			cdReal inv = CD_R(1.0) / cdSqrt(length2);
+			axis = cd3Scale(inv, axis);
+			cdReal radiusA = ha[0] * cdAbs(axis.x) + ha[1] * cdAbs(axis.y) + ha[2] * cdAbs(axis.z);
+			cdReal radiusB = hb[0] * cdAbs(cd3Dot(axis, axisB[0])) + hb[1] * cdAbs(cd3Dot(axis, axisB[1])) +
+							 hb[2] * cdAbs(cd3Dot(axis, axisB[2]));
+			cdReal centre = cd3Dot(axis, t);
+			cdReal separation = cdAbs(centre) - radiusA - radiusB;
+			if (separation > r.edgeSeparation)
+			{
+				r.edgeSeparation = separation;
+				bestAxis = centre < CD_R(0.0) ? cd3Neg(axis) : axis;
+				bestI = i;
+				bestJ = j;
+			}
+		}
+	}
+	if (r.edgeSeparation > -CD_REAL_MAX)
+	{
+		r.edgeA = SupportingBoxEdge(bestI, bestAxis);
+		r.edgeB = SupportingBoxEdge(bestJ, cd3InvRotateVector(q, cd3Neg(bestAxis)));
+	}
+	r.edgeNormal = cd3RotateVector(a.rotation, bestAxis);
+	return r;
+}

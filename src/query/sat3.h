@@ -51,6 +51,10 @@ typedef struct cd3SatResult
 
 cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
 
+/* The same for two boxes, with the fifteen axes in closed form (the polytopes must be the boxes'
+ * cd3InitBoxPolytope, whose face and half-edge indices it reports). */
+cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b);
+
 /* The exact signed separation of the SAT result (the largest of its three). */
 static inline cdReal cd3SatSeparation(const cd3SatResult* r)
 {
