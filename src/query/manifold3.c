@@ -305,10 +305,13 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	ClipVertex* out = bufferB;
 	int side = 0;
 	e = ref->faceEdges[face];
+	cd3Vec first = WorldVertex(ref, ref->edges[e].origin);
+	cd3Vec v1 = first;
 	do
 	{
-		cd3Vec v0 = WorldVertex(ref, ref->edges[e].origin);
-		cd3Vec v1 = WorldVertex(ref, ref->edges[ref->edges[e].next].origin);
+		cd3Vec v0 = v1;
+		int next = ref->edges[e].next;
+		v1 = next == ref->faceEdges[face] ? first : WorldVertex(ref, ref->edges[next].origin);
 		cd3Vec sideNormal = cd3Cross(cd3Sub(v1, v0), n);
 		uint32_t tag = SIDE_TAG + (uint32_t)(side < (int)SIDE_TAG - 1 ? side : (int)SIDE_TAG - 1);
 		count = ClipToPlane(in, count, sideNormal, v0, tag, out);

@@ -562,28 +562,30 @@ cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b)
 	r.edgeB = -1;
 	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	int bestI = 0, bestJ = 0;
+	/* Edge axes A_i x B_j in A's frame: (0, -rot[2][j], rot[1][j]) for i = 0 and its cyclic
+	 * shifts, so the projections are sums of the matrix entries. */
 	for (int i = 0; i < 3; ++i)
 	{
-		cd3Vec e = {i == 0 ? CD_R(1.0) : CD_R(0.0), i == 1 ? CD_R(1.0) : CD_R(0.0),
-					i == 2 ? CD_R(1.0) : CD_R(0.0)};
+		int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
 		for (int j = 0; j < 3; ++j)
 		{
-			cd3Vec axis = cd3Cross(e, axisB[j]);
-			cdReal length2 = cd3LengthSquared(axis);
+			int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+			cdReal length2 = rot[i1][j] * rot[i1][j] + rot[i2][j] * rot[i2][j];
 			if (!(length2 > PARALLEL_SINE * PARALLEL_SINE))
 			{
 				continue;
 			}
-			cdReal inv = CD_R(1.0) / cdSqrt(length2);
-			axis = cd3Scale(inv, axis);
-			cdReal radiusA = ha[0] * cdAbs(axis.x) + ha[1] * cdAbs(axis.y) + ha[2] * cdAbs(axis.z);
-			cdReal radiusB = hb[0] * cdAbs(cd3Dot(axis, axisB[0])) + hb[1] * cdAbs(cd3Dot(axis, axisB[1])) +
-							 hb[2] * cdAbs(cd3Dot(axis, axisB[2]));
-			cdReal centre = cd3Dot(axis, t);
-			cdReal separation = cdAbs(centre) - radiusA - radiusB;
+			cdReal radiusA = ha[i1] * absRot[i2][j] + ha[i2] * absRot[i1][j];
+			cdReal radiusB = hb[j1] * absRot[i][j2] + hb[j2] * absRot[i][j1];
+			cdReal centre = tA[i2] * rot[i1][j] - tA[i1] * rot[i2][j];
+			cdReal separation = (cdAbs(centre) - radiusA - radiusB) / cdSqrt(length2);
 			if (separation > r.edgeSeparation)
 			{
 				r.edgeSeparation = separation;
+				cdReal components[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+				components[i1] = -rot[i2][j];
+				components[i2] = rot[i1][j];
+				cd3Vec axis = cd3Normalize(cd3MakeVec(components[0], components[1], components[2]));
 				bestAxis = centre < CD_R(0.0) ? cd3Neg(axis) : axis;
 				bestI = i;
 				bestJ = j;
