@@ -253,7 +253,7 @@ static int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec or
 	for (int i = 0; i < count && n + 2 <= MAX_CLIP; ++i)
 	{
 		ClipVertex p = in[i];
-		ClipVertex q = in[(i + 1) % count];
+		ClipVertex q = in[i + 1 < count ? i + 1 : 0];
 		cdReal dp = cd3Dot(normal, cd3Sub(p.p, origin));
 		cdReal dq = cd3Dot(normal, cd3Sub(q.p, origin));
 		if (dp <= CD_R(0.0))
@@ -332,7 +332,7 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 			candidates[kept].point = cd3MulSub(in[i].p, CD_R(0.5) * separation, n);
 			candidates[kept].separation = separation;
 			candidates[kept].id =
-				PackFaceId(face, incident, in[(i + count - 1) % count].tag, in[i].tag, flip);
+				PackFaceId(face, incident, in[i > 0 ? i - 1 : count - 1].tag, in[i].tag, flip);
 			++kept;
 		}
 	}

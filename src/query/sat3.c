@@ -74,7 +74,8 @@ void cd3InitBoxPolytope(cd3Polytope* p, cd3Box box)
 	p->transform.q = box.rotation;
 	p->flat = false;
 	p->size = CD_R(2.0) * cd3Length(h);
-	p->shape = cd3MakeBoxShape(box);
+	p->shape.type = CD3_SHAPE_BOX;
+	p->shape.box = box;
 }
 
 void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
@@ -92,7 +93,8 @@ void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
 	p->transform = hull.transform;
 	p->flat = false;
 	p->size = cd3Length(cd3Sub(h->bounds.max, h->bounds.min));
-	p->shape = cd3MakeHullShape(hull.hull, hull.transform);
+	p->shape.type = CD3_SHAPE_HULL;
+	p->shape.hull = hull;
 }
 
 void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
@@ -140,7 +142,8 @@ void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 	p->flat = true;
 	p->size =
 		cdMax(cd3Length(cd3Sub(t.b, t.a)), cdMax(cd3Length(cd3Sub(t.c, t.b)), cd3Length(cd3Sub(t.a, t.c))));
-	p->shape = cd3MakeTriangleShape(t);
+	p->shape.type = CD3_SHAPE_TRIANGLE;
+	p->shape.triangle = t;
 }
 
 static bool IsZero(cd3Vec v)
