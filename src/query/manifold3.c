@@ -852,12 +852,128 @@ cd3Manifold cd3CollideCapsuleTriangle(cd3Capsule a, cd3Triangle b, cdReal specul
 	return CollideCorePolytope(a.p1, a.p2, a.radius, &pb, speculativeDistance);
 }
 
+/* The vertices of each box face in the order of the box polytope's half-edge loops (so the ids
+ * match the polytope path's). */
+static const int BOX_FACE_VERTICES[6][4] = {{2, 0, 4, 6}, {5, 1, 3, 7}, {4, 0, 1, 5},
+											{3, 2, 6, 7}, {1, 0, 2, 3}, {6, 4, 5, 7}};
+
+static cdReal Component(cd3Vec v, int axis)
+{
+	return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
+
+static cd3Vec AxisVector(int axis, cdReal value)
+{
+	return cd3MakeVec(axis == 0 ? value : CD_R(0.0), axis == 1 ? value : CD_R(0.0),
+					  axis == 2 ? value : CD_R(0.0));
+}
+
+/* FaceContact for two boxes, in the reference box's frame: its side planes are axis-aligned and
+ * the incident box's corners come from one rotation matrix. */
+static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, bool flip, cdReal speculativeDistance)
+{
+	cd3Manifold m = EmptyManifold();
+	int k = face / 2;
+	cdReal sign = (face & 1) ? CD_R(1.0) : -CD_R(1.0);
+	cdReal hr[3] = {ref.halfExtents.x, ref.halfExtents.y, ref.halfExtents.z};
+	cdReal hi[3] = {inc.halfExtents.x, inc.halfExtents.y, inc.halfExtents.z};
+	cd3Mat33 rot = cd3MakeMatFromQuat(cd3InvMulQuat(ref.rotation, inc.rotation));
+	cd3Vec t = cd3InvRotateVector(ref.rotation, cd3Sub(inc.center, ref.center));
+	cd3Vec n = AxisVector(k, sign);
+	cd3Vec columns[3] = {rot.cx, rot.cy, rot.cz};
+	int j = 0;
+	for (int axis = 1; axis < 3; ++axis)
+	{
+		if (cdAbs(Component(columns[axis], k)) > cdAbs(Component(columns[j], k)))
+		{
+			j = axis;
+		}
+	}
+	/* The incident face's outward normal +-column j points against n. */
+	int incident = 2 * j + (sign * Component(columns[j], k) > CD_R(0.0) ? 0 : 1);
+
+	ClipVertex bufferA[8], bufferB[8];
+	ClipVertex* in = bufferA;
+	ClipVertex* out = bufferB;
+	int count = 4;
+	for (int v = 0; v < 4; ++v)
+	{
+		int corner = BOX_FACE_VERTICES[incident][v];
+		cd3Vec c = cd3MakeVec((corner & 1) ? hi[0] : -hi[0], (corner & 2) ? hi[1] : -hi[1],
+							  (corner & 4) ? hi[2] : -hi[2]);
+		in[v].p = cd3Add(t, cd3MulMV(rot, c));
+		in[v].tag = (uint32_t)v;
+	}
+	for (int side = 0; side < 4 && count > 0; ++side)
+	{
+		int v0 = BOX_FACE_VERTICES[face][side], v1 = BOX_FACE_VERTICES[face][(side + 1) & 3];
+		/* The side's plane: the axis other than k on which both corners agree. */
+		int axis = (k + 1) % 3;
+		if (((v0 ^ v1) >> axis) & 1)
+		{
+			axis = (k + 2) % 3;
+		}
+		cdReal sideSign = ((v0 >> axis) & 1) ? CD_R(1.0) : -CD_R(1.0);
+		count = ClipToPlane(in, count, AxisVector(axis, sideSign), AxisVector(axis, sideSign * hr[axis]),
+							SIDE_TAG + (uint32_t)side, out);
+		ClipVertex* swap = in;
+		in = out;
+		out = swap;
+	}
+	Candidate candidates[8];
+	int kept = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal separation = sign * Component(in[i].p, k) - hr[k];
+		if (separation <= speculativeDistance)
+		{
+			candidates[kept].point = cd3MulSub(in[i].p, CD_R(0.5) * separation, n);
+			candidates[kept].separation = separation;
+			candidates[kept].id =
+				PackFaceId(face, incident, in[i > 0 ? i - 1 : count - 1].tag, in[i].tag, flip);
+			++kept;
+		}
+	}
+	if (kept == 0)
+	{
+		return m;
+	}
+	Candidate reduced[4];
+	int reducedCount = ReducePoints(candidates, kept, n, reduced);
+	for (int i = 0; i < reducedCount; ++i)
+	{
+		AddPoint(&m, cd3Add(ref.center, cd3RotateVector(ref.rotation, reduced[i].point)),
+				 reduced[i].separation, reduced[i].id);
+	}
+	cd3Vec worldNormal = cd3RotateVector(ref.rotation, n);
+	m.normal = flip ? cd3Neg(worldNormal) : worldNormal;
+	return m;
+}
+
 cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 {
 	cd3SatResult sat = cd3SatBoxes(a, b);
-	if (!(cd3SatSeparation(&sat) <= speculativeDistance))
+	cdReal separation = cd3SatSeparation(&sat);
+	if (!(separation <= speculativeDistance))
 	{
 		return EmptyManifold();
+	}
+	if (separation <= CD_R(0.0))
+	{
+		/* The choice of SatContact, with the box clipping. */
+		cdReal size = CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents));
+		bool useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size;
+		cdReal faceSeparation = useB ? sat.faceSeparationB : sat.faceSeparationA;
+		bool useEdges = sat.edgeA >= 0 && sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
+		if (!useEdges)
+		{
+			cd3Manifold m = useB ? BoxFaceContact(b, sat.faceB, a, true, speculativeDistance)
+								 : BoxFaceContact(a, sat.faceA, b, false, speculativeDistance);
+			if (m.pointCount > 0 || sat.edgeA < 0)
+			{
+				return m;
+			}
+		}
 	}
 	cd3Polytope pa, pb;
 	cd3InitBoxPolytope(&pa, a);
