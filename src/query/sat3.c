@@ -480,18 +480,10 @@ cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, 
 	return r->edgeSeparation > r->faceSeparationB ? CD3_SAT_EDGES : CD3_SAT_FACE_B;
 }
 
-/* The half-edge of the box from vertex `from` to vertex `to`. */
-static int BoxHalfEdge(int from, int to)
-{
-	for (int e = 0; e < 24; ++e)
-	{
-		if (BOX_EDGES[e].origin == from && BOX_EDGES[BOX_EDGES[e].twin].origin == to)
-		{
-			return e;
-		}
-	}
-	return 0;
-}
+/* BOX_EDGE_FROM[v][axis]: the half-edge from vertex v (its `axis` bit clear) to v with that bit
+ * set; -1 where the bit is already set. */
+static const int BOX_EDGE_FROM[8][3] = {{9, 17, 1},	 {-1, 5, 10},  {18, -1, 13}, {-1, -1, 6},
+										{21, 2, -1}, {-1, 22, -1}, {14, -1, -1}, {-1, -1, -1}};
 
 /* The box edge parallel to axis `axis` that supports the box along `direction` (box frame). */
 static int SupportingBoxEdge(int axis, cd3Vec direction)
@@ -504,7 +496,7 @@ static int SupportingBoxEdge(int axis, cd3Vec direction)
 			vertex |= 1 << k;
 		}
 	}
-	return BoxHalfEdge(vertex, vertex | (1 << axis));
+	return BOX_EDGE_FROM[vertex][axis];
 }
 
 cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b)
@@ -512,9 +504,8 @@ cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b)
 	cd3SatResult r;
 	cd3Quat q = cd3InvMulQuat(a.rotation, b.rotation); /* B's axes in A's frame */
 	cd3Vec t = cd3InvRotateVector(a.rotation, cd3Sub(b.center, a.center));
-	cd3Vec axisB[3] = {cd3RotateVector(q, cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.0))),
-					   cd3RotateVector(q, cd3MakeVec(CD_R(0.0), CD_R(1.0), CD_R(0.0))),
-					   cd3RotateVector(q, cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0)))};
+	cd3Mat33 matrix = cd3MakeMatFromQuat(q);
+	cd3Vec axisB[3] = {matrix.cx, matrix.cy, matrix.cz};
 	cdReal ha[3] = {a.halfExtents.x, a.halfExtents.y, a.halfExtents.z};
 	cdReal hb[3] = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
 	/* rot[i][j] = A's axis i . B's axis j */
@@ -598,7 +589,8 @@ cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b)
 	if (r.edgeSeparation > -CD_REAL_MAX)
 	{
 		r.edgeA = SupportingBoxEdge(bestI, bestAxis);
-		r.edgeB = SupportingBoxEdge(bestJ, cd3InvRotateVector(q, cd3Neg(bestAxis)));
+		cd3Vec inB = {-cd3Dot(bestAxis, axisB[0]), -cd3Dot(bestAxis, axisB[1]), -cd3Dot(bestAxis, axisB[2])};
+		r.edgeB = SupportingBoxEdge(bestJ, inB);
 	}
 	r.edgeNormal = cd3RotateVector(a.rotation, bestAxis);
 	return r;
