@@ -868,6 +868,32 @@ static cd3Vec AxisVector(int axis, cdReal value)
 					  axis == 2 ? value : CD_R(0.0));
 }
 
+/* ClipToPlane for the plane sign * x[axis] <= limit. */
+static int ClipToSlab(const ClipVertex* in, int count, int axis, cdReal sign, cdReal limit, uint32_t tag,
+					  ClipVertex* out)
+{
+	int n = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		ClipVertex p = in[i];
+		ClipVertex q = in[i + 1 < count ? i + 1 : 0];
+		cdReal dp = sign * Component(p.p, axis) - limit;
+		cdReal dq = sign * Component(q.p, axis) - limit;
+		if (dp <= CD_R(0.0))
+		{
+			out[n++] = p;
+		}
+		if ((dp <= CD_R(0.0)) != (dq <= CD_R(0.0)))
+		{
+			ClipVertex x;
+			x.p = cd3Lerp(p.p, q.p, dp / (dp - dq));
+			x.tag = dp <= CD_R(0.0) ? tag : p.tag;
+			out[n++] = x;
+		}
+	}
+	return n;
+}
+
 /* FaceContact for two boxes, in the reference box's frame: its side planes are axis-aligned and
  * the incident box's corners come from one rotation matrix. */
 static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, bool flip, cdReal speculativeDistance)
@@ -914,8 +940,7 @@ static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, bool flip, c
 			axis = (k + 2) % 3;
 		}
 		cdReal sideSign = ((v0 >> axis) & 1) ? CD_R(1.0) : -CD_R(1.0);
-		count = ClipToPlane(in, count, AxisVector(axis, sideSign), AxisVector(axis, sideSign * hr[axis]),
-							SIDE_TAG + (uint32_t)side, out);
+		count = ClipToSlab(in, count, axis, sideSign, hr[axis], SIDE_TAG + (uint32_t)side, out);
 		ClipVertex* swap = in;
 		in = out;
 		out = swap;
