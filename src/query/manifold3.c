@@ -896,15 +896,14 @@ static int ClipToSlab(const ClipVertex* in, int count, int axis, cdReal sign, cd
 
 /* FaceContact for two boxes, in the reference box's frame: its side planes are axis-aligned and
  * the incident box's corners come from one rotation matrix. */
-static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, bool flip, cdReal speculativeDistance)
+static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, cd3Mat33 rot, cd3Vec t, bool flip,
+								  cdReal speculativeDistance)
 {
 	cd3Manifold m = EmptyManifold();
 	int k = face / 2;
 	cdReal sign = (face & 1) ? CD_R(1.0) : -CD_R(1.0);
 	cdReal hr[3] = {ref.halfExtents.x, ref.halfExtents.y, ref.halfExtents.z};
 	cdReal hi[3] = {inc.halfExtents.x, inc.halfExtents.y, inc.halfExtents.z};
-	cd3Mat33 rot = cd3MakeMatFromQuat(cd3InvMulQuat(ref.rotation, inc.rotation));
-	cd3Vec t = cd3InvRotateVector(ref.rotation, cd3Sub(inc.center, ref.center));
 	cd3Vec n = AxisVector(k, sign);
 	cd3Vec columns[3] = {rot.cx, rot.cy, rot.cz};
 	int j = 0;
@@ -977,7 +976,9 @@ static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, bool flip, c
 
 cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 {
-	cd3SatResult sat = cd3SatBoxes(a, b);
+	cd3Mat33 rot;
+	cd3Vec t;
+	cd3SatResult sat = cd3SatBoxes(a, b, &rot, &t);
 	cdReal separation = cd3SatSeparation(&sat);
 	if (!(separation <= speculativeDistance))
 	{
@@ -985,15 +986,39 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 	}
 	if (separation <= CD_R(0.0))
 	{
-		/* The choice of SatContact, with the box clipping. */
-		cdReal size = CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents));
-		bool useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size;
+		/* The choice of SatContact, with the box clipping; the size for the tie bias only when a
+		 * tie is possible. */
+		cdReal size = -CD_R(1.0);
+		bool useB = false;
+		if (sat.faceSeparationB > sat.faceSeparationA)
+		{
+			size = CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents));
+			useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size;
+		}
 		cdReal faceSeparation = useB ? sat.faceSeparationB : sat.faceSeparationA;
-		bool useEdges = sat.edgeA >= 0 && sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
+		bool useEdges = false;
+		if (sat.edgeA >= 0 && sat.edgeSeparation > faceSeparation)
+		{
+			size =
+				size < CD_R(0.0) ? CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents)) : size;
+			useEdges = sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
+		}
 		if (!useEdges)
 		{
-			cd3Manifold m = useB ? BoxFaceContact(b, sat.faceB, a, true, speculativeDistance)
-								 : BoxFaceContact(a, sat.faceA, b, false, speculativeDistance);
+			cd3Manifold m;
+			if (useB)
+			{
+				/* A's frame in B's: the transposed rotation. */
+				cd3Mat33 inverse = {{rot.cx.x, rot.cy.x, rot.cz.x},
+									{rot.cx.y, rot.cy.y, rot.cz.y},
+									{rot.cx.z, rot.cy.z, rot.cz.z}};
+				cd3Vec back = cd3Neg(cd3MulMV(inverse, t));
+				m = BoxFaceContact(b, sat.faceB, a, inverse, back, true, speculativeDistance);
+			}
+			else
+			{
+				m = BoxFaceContact(a, sat.faceA, b, rot, t, false, speculativeDistance);
+			}
 			if (m.pointCount > 0 || sat.edgeA < 0)
 			{
 				return m;

@@ -499,12 +499,14 @@ static int SupportingBoxEdge(int axis, cd3Vec direction)
 	return BOX_EDGE_FROM[vertex][axis];
 }
 
-cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b)
+cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b, cd3Mat33* rotation, cd3Vec* translation)
 {
 	cd3SatResult r;
 	cd3Quat q = cd3InvMulQuat(a.rotation, b.rotation); /* B's axes in A's frame */
 	cd3Vec t = cd3InvRotateVector(a.rotation, cd3Sub(b.center, a.center));
 	cd3Mat33 matrix = cd3MakeMatFromQuat(q);
+	*rotation = matrix;
+	*translation = t;
 	cd3Vec axisB[3] = {matrix.cx, matrix.cy, matrix.cz};
 	cdReal ha[3] = {a.halfExtents.x, a.halfExtents.y, a.halfExtents.z};
 	cdReal hb[3] = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};

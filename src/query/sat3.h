@@ -51,9 +51,10 @@ typedef struct cd3SatResult
 
 cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
 
-/* The same for two boxes, with the fifteen axes in closed form (the polytopes must be the boxes'
- * cd3InitBoxPolytope, whose face and half-edge indices it reports). */
-cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b);
+/* The same for two boxes, with the fifteen axes in closed form; face and half-edge indices are
+ * those of cd3InitBoxPolytope. Also gives B's frame in A's: rotation (B's axes as columns) and
+ * translation. */
+cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b, cd3Mat33* rotation, cd3Vec* translation);
 
 /* The exact signed separation of the SAT result (the largest of its three). */
 static inline cdReal cd3SatSeparation(const cd3SatResult* r)
