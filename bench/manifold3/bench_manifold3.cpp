@@ -5,10 +5,10 @@
 // Pairs are near contact: unit-size shapes overlapping by 0 to 0.05 (the resting contacts a
 // physics step sees). box-box: collide's full manifold (up to 4 points) against Bullet's box-box
 // detector (up to 4 points). hull(32)-hull(32): hulls of 32 vertices on random ellipsoids;
-// collide's exact SAT depth plus manifold against Bullet's GJK/EPA (one point, margins 0) and
-// libccd's MPR and GJK/EPA (depth, direction and one point; libccd's support functions loop over
-// the 32 vertices like collide's). collide takes world-space shapes; Bullet and libccd take local
-// shapes and transforms. Each figure is the median of 9 runs of about 20 ms, the libraries' runs
+// collide's exact depth (GJK/EPA on the vertices for hulls this large) plus manifold against Bullet's GJK/EPA
+// (one point, margins 0) and libccd's MPR and GJK/EPA (depth, direction and one point; libccd's support
+// functions loop over the 32 vertices like collide's). collide takes world-space shapes; Bullet and libccd
+// take local shapes and transforms. Each figure is the median of 9 runs of about 20 ms, the libraries' runs
 // interleaved so that all see the same machine load.
 // Usage: collide_bench_manifold3 [--quick]
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
@@ -305,7 +305,7 @@ int main(int argc, char** argv)
 		return points;
 	};
 	std::vector<std::function<int()>> hullBodies = {collideHulls, bulletHullsGjk};
-	std::vector<const char*> hullNames = {"collide SAT depth + manifold", "Bullet GJK/EPA"};
+	std::vector<const char*> hullNames = {"collide cd3CollideHullHull (depth + manifold)", "Bullet GJK/EPA"};
 #ifdef COLLIDE_BENCH_HAVE_CCD
 	std::vector<CcdHull> ccdA(kPairs), ccdB(kPairs);
 	for (int i = 0; i < kPairs; ++i)
