@@ -709,6 +709,17 @@ static void TestPolygonExact(void)
 	CHECK_VEC(hit.normal, 0.0, 1.0, EXACT);
 	TEST_CHECK(cd2RaycastPolygon(&p, Ray(1, 1, 0, 0), &hit));
 	CHECK_VEC(hit.normal, 0.0, 0.0, 0.0);
+
+	/* An origin on an edge 0.00125 from its end (found by fuzz_query2): on the boundary, so a hit at
+	 * fraction 0, although the edge's closest point rounds off it by more than round-off of that
+	 * offset when computed from the far end. */
+	cd2Vec corners[3] = {cd2MakeVec(CD_R(-0.125), CD_R(-0.035)), cd2MakeVec(CD_R(-0.04625), CD_R(-0.125)),
+						 cd2MakeVec(CD_R(0.11625), CD_R(-0.125))};
+	cd2Polygon near;
+	TEST_CHECK(cd2MakePolygon(corners, 3, &near) == CD_OK);
+	TEST_CHECK(cd2RaycastPolygon(&near, Ray(CD_R(0.115), CD_R(-0.125), CD_R(-0.125), CD_R(0.035)), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
+	TEST_CHECK(cd2PointInPolygon(cd2MakeVec(CD_R(0.115), CD_R(-0.125)), &near));
 }
 
 /* Slivers (tip angles down to 1e-5, up to 1e9 / 1e30 long): a ray from beyond the sharp tip, on

@@ -2,6 +2,8 @@
  * A point inside a solid shape is its own closest point. */
 #include "collide/query2.h"
 
+#include "support2.h"
+
 cd2Vec cd2ClosestPointOnSegment(cd2Segment g, cd2Vec p)
 {
 	cd2Vec d = cd2Sub(g.p2, g.p1);
@@ -102,9 +104,9 @@ static cd2Vec ClosestPointOnCorePolygon(const cd2Polygon* polygon, cd2Vec p)
 	cdReal bestDistanceSquared = CD_REAL_MAX;
 	for (int i = 0; i < count; ++i)
 	{
-		cd2Segment edge = {polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0]};
-		cd2Vec candidate = cd2ClosestPointOnSegment(edge, p);
-		cdReal distanceSquared = cd2VecDistanceSquared(candidate, p);
+		cd2Vec candidate;
+		cdReal distanceSquared = cd2EdgeDistanceSquared(
+			polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0], p, &candidate);
 		if (distanceSquared < bestDistanceSquared)
 		{
 			best = candidate;

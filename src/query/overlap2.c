@@ -10,6 +10,8 @@
  * with a circle or a capsule compare the distance to the core point or segment with the radius. */
 #include "collide/query2.h"
 
+#include "support2.h"
+
 #include <string.h>
 
 static cdReal OverlapTolerance(cdReal scale)
@@ -308,7 +310,16 @@ bool cd2PointInPolygon(cd2Vec p, const cd2Polygon* polygon)
 	/* Inside, p would be within the tolerance of that line, plus the line test's own round-off
 	 * (below the tolerance). */
 	cdReal limit = CD_R(2.0) * nearTolerance;
-	return cd2VecDistanceSquared(cd2ClosestPointOnPolygon(polygon, p), p) <= limit * limit;
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec closest;
+		if (cd2EdgeDistanceSquared(polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0], p,
+								   &closest) <= limit * limit)
+		{
+			return true;
+		}
+	}
+	return false;
 }
 
 /* ---- circle pairs ---------------------------------------------------------------------------- */

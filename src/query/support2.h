@@ -132,4 +132,31 @@ static inline int cd2CoreSupportFrom(const cd2Core* core, cd2Vec direction, int 
 	return best;
 }
 
+/* Squared distance from p to the polygon edge a-b and the edge's closest point, computed from the
+ * edge end nearer to p: the round-off then grows with p's offset from that end, not with the
+ * coordinates, so that it compares with tolerances relative to those offsets (point containment
+ * near a vertex, beyond a sharp tip). */
+static inline cdReal cd2EdgeDistanceSquared(cd2Vec a, cd2Vec b, cd2Vec p, cd2Vec* closest)
+{
+	cd2Vec fromA = cd2Sub(p, a), fromB = cd2Sub(p, b);
+	bool nearA = cdMax(cdAbs(fromA.x), cdAbs(fromA.y)) <= cdMax(cdAbs(fromB.x), cdAbs(fromB.y));
+	cd2Vec end = nearA ? a : b;
+	cd2Vec offset = nearA ? fromA : fromB;
+	cd2Vec edge = nearA ? cd2Sub(b, a) : cd2Sub(a, b);
+	cdReal lengthSquared = cd2Dot(edge, edge);
+	cdReal along = cd2Dot(offset, edge);
+	cd2Vec foot = CD2_VEC_ZERO; /* relative to end */
+	/* The clamps come first so that a zero-length (or underflowing) edge never divides by 0. */
+	if (along >= lengthSquared && lengthSquared > CD_R(0.0))
+	{
+		foot = edge;
+	}
+	else if (along > CD_R(0.0) && lengthSquared > CD_R(0.0))
+	{
+		foot = cd2Scale(along / lengthSquared, edge);
+	}
+	*closest = cd2Add(end, foot);
+	return cd2LengthSquared(cd2Sub(offset, foot));
+}
+
 #endif
