@@ -1,7 +1,7 @@
 // Differential test of the 3D manifolds' depth against Bullet (libbullet-dev): btBoxBoxDetector
 // (ODE's box-box SAT) on random box pairs, btGjkPairDetector with btGjkEpaPenetrationDepthSolver on
-// random hull pairs (32 random points each, built by cd3ComputeHull and handed to Bullet as
-// btConvexHullShape). Bullet's collision margins are set to 0, so both libraries see the same
+// random hull pairs (32 random points each, in a box or on an ellipsoid, built by cd3ComputeHull and handed
+// to Bullet as btConvexHullShape). Bullet's collision margins are set to 0, so both libraries see the same
 // shapes.
 //
 // Also computed, in double: the exact signed separation by the separating axis test over every
@@ -290,16 +290,24 @@ void TestBoxes()
 	TEST_CHECK(tally.compared > 2000);
 }
 
-cd3Hull* RandomHull(TestRng* rng, int count)
+// 32 points in a box (about 20 hull vertices: the SAT path) or on an ellipsoid (32 vertices: the
+// GJK/EPA path of large hulls).
+cd3Hull* RandomHull(TestRng* rng, int count, bool onEllipsoid)
 {
 	std::vector<cd3Vec> points((size_t)count);
 	double sx = TestRngRange(rng, 0.3, 1.2), sy = TestRngRange(rng, 0.3, 1.2),
 		   sz = TestRngRange(rng, 0.3, 1.2);
 	for (int i = 0; i < count; ++i)
 	{
-		points[(size_t)i] =
-			cd3MakeVec((cdReal)(sx * TestRngRange(rng, -1, 1)), (cdReal)(sy * TestRngRange(rng, -1, 1)),
-					   (cdReal)(sz * TestRngRange(rng, -1, 1)));
+		double x = TestRngRange(rng, -1, 1), y = TestRngRange(rng, -1, 1), z = TestRngRange(rng, -1, 1);
+		double length = std::sqrt(x * x + y * y + z * z);
+		if (onEllipsoid && length > 1e-3)
+		{
+			x /= length;
+			y /= length;
+			z /= length;
+		}
+		points[(size_t)i] = cd3MakeVec((cdReal)(sx * x), (cdReal)(sy * y), (cdReal)(sz * z));
 	}
 	cd3Hull* hull = nullptr;
 	if (cd3ComputeHull(points.data(), count, &hull) != CD_OK)
@@ -327,10 +335,11 @@ void TestHulls()
 {
 	TestRng rng = {0x4011u};
 	Tally tally;
-	for (int n = 0; n < 2000; ++n)
+	for (int n = 0; n < 3000; ++n)
 	{
-		cd3Hull* ha = RandomHull(&rng, 32);
-		cd3Hull* hb = RandomHull(&rng, 32);
+		bool onEllipsoid = n % 2 == 1;
+		cd3Hull* ha = RandomHull(&rng, 32, onEllipsoid);
+		cd3Hull* hb = RandomHull(&rng, 32, onEllipsoid);
 		if (ha == nullptr || hb == nullptr)
 		{
 			TEST_CHECK(false);
