@@ -1019,10 +1019,15 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 			{
 				m = BoxFaceContact(a, sat.faceA, b, rot, t, false, speculativeDistance);
 			}
-			if (m.pointCount > 0 || sat.edgeA < 0)
+			if (m.pointCount > 0)
 			{
 				return m;
 			}
+			/* The incident face clipped away: the polytope path with every edge pair. */
+			cd3Polytope pa, pb;
+			cd3InitBoxPolytope(&pa, a);
+			cd3InitBoxPolytope(&pb, b);
+			return CollidePolytopesSat(&pa, &pb, cd3SatPolytopes(&pa, &pb), speculativeDistance);
 		}
 	}
 	cd3Polytope pa, pb;

@@ -558,6 +558,7 @@ cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b, cd3Mat33* rotation, cd3Vec* transla
 	r.edgeB = -1;
 	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	int bestI = 0, bestJ = 0;
+	cdReal faceBest = cdMax(r.faceSeparationA, r.faceSeparationB);
 	/* Edge axes A_i x B_j in A's frame: (0, -rot[2][j], rot[1][j]) for i = 0 and its cyclic
 	 * shifts, so the projections are sums of the matrix entries. */
 	for (int i = 0; i < 3; ++i)
@@ -574,7 +575,18 @@ cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b, cd3Mat33* rotation, cd3Vec* transla
 			cdReal radiusA = ha[i1] * absRot[i2][j] + ha[i2] * absRot[i1][j];
 			cdReal radiusB = hb[j1] * absRot[i][j2] + hb[j2] * absRot[i][j1];
 			cdReal centre = tA[i2] * rot[i1][j] - tA[i1] * rot[i2][j];
-			cdReal separation = (cdAbs(centre) - radiusA - radiusB) / cdSqrt(length2);
+			cdReal gap = cdAbs(centre) - radiusA - radiusB; /* separation * sqrt(length2) */
+			/* An edge axis matters only when it beats every axis so far: decided on squares, so
+			 * that only the winners pay a square root. */
+			cdReal threshold = cdMax(r.edgeSeparation, faceBest);
+			bool beats = threshold >= CD_R(0.0)
+							 ? (gap > CD_R(0.0) && gap * gap > threshold * threshold * length2)
+							 : (gap >= CD_R(0.0) || gap * gap < threshold * threshold * length2);
+			if (!beats)
+			{
+				continue;
+			}
+			cdReal separation = gap / cdSqrt(length2);
 			if (separation > r.edgeSeparation)
 			{
 				r.edgeSeparation = separation;

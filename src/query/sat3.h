@@ -52,8 +52,9 @@ typedef struct cd3SatResult
 cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
 
 /* The same for two boxes, with the fifteen axes in closed form; face and half-edge indices are
- * those of cd3InitBoxPolytope. Also gives B's frame in A's: rotation (B's axes as columns) and
- * translation. */
+ * those of cd3InitBoxPolytope. Edge axes that do not beat the best face axis are not reported
+ * (edgeA is then -1): the overall separation is still exact. Also gives B's frame in A's: rotation (B's axes
+ * as columns) and translation. */
 cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b, cd3Mat33* rotation, cd3Vec* translation);
 
 /* The exact signed separation of the SAT result (the largest of its three). */
