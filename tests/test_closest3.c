@@ -393,6 +393,45 @@ static void TestNeedleTriangles(void)
 	}
 }
 
+/* cd3PointInHull on a wedge (fuzz_query3): two faces of this hull meet at about 1e-4 rad along
+ * its long edge from (5e8, 5e8, -1.25e6) to (5e8, 5e8, 5e8). The point 1.25e6 beyond that edge
+ * along x and y (1.77e6 from the hull) is only 198 above one face and below the other, within
+ * the planes' tolerance (2.3e3 at these coordinates): it counted as inside. */
+static void TestPointInHullWedge(void)
+{
+	static const float cloud[] = {500000000, 500000000, -1250000,  -1250000,  -1250000,	 -1250000,
+								  -1250000,	 -1250000,	0,		   0,		  0,		 0,
+								  0,		 0,			0,		   -1150000,  -1250000,	 -1250000,
+								  500000000, 500000000, 500000000, 500000000, 500000000, -662500};
+	cd3Vec points[8];
+	for (int i = 0; i < 8; ++i)
+	{
+		points[i] = cd3MakeVec((cdReal)cloud[3 * i], (cdReal)cloud[3 * i + 1], (cdReal)cloud[3 * i + 2]);
+	}
+	cd3Hull* hull = NULL;
+	TEST_CHECK(cd3ComputeHull(points, 8, &hull) == CD_OK && hull != NULL);
+	if (hull == NULL)
+	{
+		return;
+	}
+	cd3HullShape shape = {hull,
+						  {cd3MakeVec(CD_R(5e8), CD_R(-1250000.0), CD_R(-1250000.0)),
+						   cd3NormalizeQuat(cd3MakeQuat(CD_R(-0.5), CD_R(-0.5), CD_R(-0.5), CD_R(-0.5)))}};
+	/* (5e8, 5e8, 5e8) in the hull's frame is (5.0125e8, 5.0125e8, 0). */
+	cd3Vec p = cd3MakeVec(CD_R(5e8), CD_R(5e8), CD_R(5e8));
+	TEST_CHECK(!cd3PointInHull(p, shape));
+	double away = RDist(RFromVec(cd3ClosestPointOnHull(shape, p)), RFromVec(p));
+	TEST_CHECKF(fabs(away - 1.25e6 * sqrt(2.0)) <= 1e-3 * 1.25e6, "closest point %.9g away", away);
+	/* Points of the hull still count: its vertices and the middle of that edge. */
+	for (int i = 0; i < hull->vertexCount; ++i)
+	{
+		TEST_CHECK(cd3PointInHull(cd3TransformPoint(shape.transform, hull->vertices[i]), shape));
+	}
+	cd3Vec middle = cd3MakeVec(CD_R(5e8), CD_R(5e8), CD_R(2.49375e8));
+	TEST_CHECK(cd3PointInHull(cd3TransformPoint(shape.transform, middle), shape));
+	cd3DestroyHull(hull);
+}
+
 /* Closest point on each shape to random points, at several scales: finite, on the shape,
  * at the reference's distance, the point itself when inside, and no sampled point is closer. */
 static void TestRandomClosestPoint(void)
@@ -538,6 +577,7 @@ int main(void)
 	TEST_RUN(TestNearlyParallelSegments);
 	TEST_RUN(TestThinTriangles);
 	TEST_RUN(TestNeedleTriangles);
+	TEST_RUN(TestPointInHullWedge);
 	TEST_RUN(TestRandomClosestPoint);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestFarFromOrigin);

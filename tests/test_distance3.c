@@ -1054,6 +1054,97 @@ static void TestThinBoxesAndLongSegments(void)
 	}
 }
 
+/* Hulls at the 1e9 scale (fuzz_query3): a tetrahedron of support points, thin for its size, gave
+ * barycentric weights that did enclose the origin but rebuilt a point 1e-3 of the size away from
+ * it, so a segment touching a hull got a "common" point 1e6 off the hull; and a point on a long
+ * edge of a hull came out 329000 away when such weights were refused instead of refined. */
+static cd3Hull* HullOf(const float* coordinates, int count)
+{
+	cd3Vec points[16];
+	for (int i = 0; i < count; ++i)
+	{
+		points[i] = cd3MakeVec((cdReal)coordinates[3 * i], (cdReal)coordinates[3 * i + 1],
+							   (cdReal)coordinates[3 * i + 2]);
+	}
+	cd3Hull* hull = NULL;
+	TEST_CHECK(cd3ComputeHull(points, count, &hull) == CD_OK && hull != NULL);
+	return hull;
+}
+
+static void TestHullsAtLargeScale(void)
+{
+	static const float cloud[] = {-11625000, -11625000, -11625000, -11625000, -11625000, -11625000, -11625000,
+								  -12500000, -12500000, -12500000, -1625000,  0,		 1000000,	500000,
+								  2250000,	 0,			0,		   2500000,	  1000000,	 500000,	750000,
+								  500000,	 -3000000,	250000,	   250000,	  6000000,	 0,			1e+09,
+								  -12500000, -12500000, -12500000, -12500000, -12500000};
+	cd3Hull* hull = HullOf(cloud, 11);
+	if (hull != NULL)
+	{
+		cd3Shape shape;
+		memset(&shape, 0, sizeof shape);
+		shape.type = CD3_SHAPE_HULL;
+		shape.hull.hull = hull;
+		shape.hull.transform.p = V(-11625000.0, -11625000.0, -11625000.0);
+		shape.hull.transform.q =
+			cd3NormalizeQuat(cd3MakeQuat(CD_R(-0.5), CD_R(-0.5), CD_R(-0.5), CD_R(-0.5)));
+		cd3Shape segment = Segment(V(-1e9, -1e9, -1e9), V(-11625000.0, -11875000.0, -11625000.0));
+		CheckAgainstReference(&segment, &shape, 16.0 * (double)CD_REAL_EPSILON * 2e9,
+							  "segment and hull at 1e9");
+		cd3ClosestPoints r = cd3Distance(&segment, &shape);
+		g_printedCase = false;
+		CheckResult(&segment, &shape, r);
+		cd3DestroyHull(hull);
+	}
+
+	/* (-1.25e7, -1.25e7, -1.25e7) lies on the segment between the input points (-1e9, -1e9, -1e9)
+	 * and (5e5, 5e5, 5e5): distance 0, within the documented tolerance. */
+	static const float sliver[] = {
+		-1e+09, -1e+09,	   -1e+09,	  500000,	 2250000,	0,		   0,		  500000,	 1000000,
+		500000, 500000,	   500000,	  -3000000,	 250000,	-3375000,  250000,	  6000000,	 0,
+		0,		-12500000, -12500000, -12500000, -12500000, -12500000, -12500000, -12500000, -12500000};
+	hull = HullOf(sliver, 9);
+	if (hull != NULL)
+	{
+		cd3Shape shape;
+		memset(&shape, 0, sizeof shape);
+		shape.type = CD3_SHAPE_HULL;
+		shape.hull.hull = hull;
+		shape.hull.transform.q = CD3_QUAT_IDENTITY;
+		cd3Shape point = Sphere(CD_R(-12500000.0), CD_R(-12500000.0), CD_R(-12500000.0), CD_R(0.0));
+		cd3ClosestPoints r = cd3Distance(&shape, &point);
+		TEST_CHECKF((double)r.distance <= 16.0 * (double)CD_REAL_EPSILON * 1e9,
+					"point on a hull edge: distance %.9g", (double)r.distance);
+		cd3DestroyHull(hull);
+	}
+
+	/* A needle-shaped hull (one vertex 1e9 out, the others within 1.25e6): the point
+	 * (-1.25e6, -1.25e6, -1.25e6) lies 187000 inside it (its faces, in double), but the
+	 * tetrahedron of support points, measured from the far vertex, passed for flat, and GJK
+	 * reported the distance to one face. */
+	static const float needle[] = {
+		-1187500, 812500,	-9.99999972e-10f, -1250000, -1250000, -1250000, -512500,	 -1250000, -1250000,
+		-937500,  600000,	675000,			 -525000,  0,		 0,		   -1e+09,	 0,		   0,
+		0,		  -1250000, -1250000,		 -1250000, -1250000, -1250000, -1250000, -1250000, -1250000};
+	hull = HullOf(needle, 9);
+	if (hull != NULL)
+	{
+		cd3Shape shape;
+		memset(&shape, 0, sizeof shape);
+		shape.type = CD3_SHAPE_HULL;
+		shape.hull.hull = hull;
+		shape.hull.transform.p = V(-937500.0, 0.0, -1175000.0);
+		shape.hull.transform.q = cd3NormalizeQuat(
+			cd3MakeQuat(CD_R(-0.501248419), CD_R(-0.501248419), CD_R(-0.496235907), CD_R(-0.501248419)));
+		cd3Shape point = Sphere(CD_R(-1250000.0), CD_R(-1250000.0), CD_R(-1250000.0), CD_R(0.0));
+		cd3ClosestPoints r = cd3Distance(&shape, &point);
+		TEST_CHECKF(r.distance == CD_R(0.0) && RefDistance(&shape, &point) == 0.0,
+					"point inside a needle hull: distance %.9g, reference %.9g", (double)r.distance,
+					RefDistance(&shape, &point));
+		cd3DestroyHull(hull);
+	}
+}
+
 /* cd3DistanceWithStatus reports GJK's work and gives the same answer as cd3Distance. */
 static void TestDistanceStatus(void)
 {
@@ -1091,6 +1182,7 @@ int main(void)
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestExtremeScales);
 	TEST_RUN(TestThinBoxesAndLongSegments);
+	TEST_RUN(TestHullsAtLargeScale);
 	TEST_RUN(TestDistanceStatus);
 	return TEST_SUMMARY();
 }

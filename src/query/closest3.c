@@ -423,16 +423,34 @@ bool cd3PointInHull(cd3Vec p, cd3HullShape shape)
 	const cd3Hull* hull = shape.hull;
 	cd3Vec local = cd3InvTransformPoint(shape.transform, p);
 	cdReal magnitude = cdMax(cdAbs(local.x), cdMax(cdAbs(local.y), cdAbs(local.z)));
+	cdReal largestOffset = CD_R(0.0);
+	bool withinTolerance = false;
 	for (int i = 0; i < hull->faceCount; ++i)
 	{
 		cd3Plane plane = hull->planes[i];
 		cdReal tolerance = CD_HULL_PLANE_TOLERANCE * (cdAbs(plane.offset) + magnitude);
-		if (cd3Dot(plane.normal, local) - plane.offset > tolerance)
+		cdReal height = cd3Dot(plane.normal, local) - plane.offset;
+		if (height > tolerance)
 		{
 			return false;
 		}
+		withinTolerance = withinTolerance || height > CD_R(0.0);
+		largestOffset = cdMax(largestOffset, cdAbs(plane.offset));
 	}
-	return true;
+	if (!withinTolerance)
+	{
+		return true;
+	}
+	/* Above some face, but within its tolerance. Near an edge where two faces meet at a small
+	 * angle (a sliver), a height that small can still be far from the hull: 198 above both faces
+	 * of a 1e-4 rad wedge is 1.8e6 beyond its edge. The distance decides, with the same
+	 * tolerance. */
+	cd3Shape hullShape;
+	hullShape.type = CD3_SHAPE_HULL;
+	hullShape.hull = shape;
+	cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
+	cdReal distance = cd3Distance(&hullShape, &point).distance;
+	return distance <= CD_HULL_PLANE_TOLERANCE * (largestOffset + magnitude);
 }
 
 cd3Vec cd3ClosestPointOnHull(cd3HullShape shape, cd3Vec p)

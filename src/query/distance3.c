@@ -115,10 +115,29 @@ static bool IsBetterSubSimplex(const SubSimplexChoice* best, cdReal distanceSqua
  * newest vertex. */
 static void SolveTriangle(const cd3Vec* w, cdReal* l)
 {
-	cd3Vec e1 = cd3Sub(w[1], w[0]);
-	cd3Vec e2 = cd3Sub(w[2], w[0]);
-	cd3Vec n = cd3Cross(e1, e2);
-	if (cd3Length(n) > GJK_DEGENERATE_TOLERANCE * cd3Length(e1) * cd3Length(e2))
+	/* The normal from the two shorter edges, which meet at the largest angle: from the two long
+	 * edges of a needle (one vertex far from the others) it would cancel, and the needle would
+	 * pass for flat. (w1 - w0) x (w2 - w0) = (w1 - w0) x (w2 - w1) = (w2 - w0) x (w2 - w1). */
+	cd3Vec e01 = cd3Sub(w[1], w[0]), e02 = cd3Sub(w[2], w[0]), e12 = cd3Sub(w[2], w[1]);
+	cdReal l01 = cd3Length(e01), l02 = cd3Length(e02), l12 = cd3Length(e12);
+	cd3Vec n;
+	cdReal edgeProduct;
+	if (l12 >= l01 && l12 >= l02)
+	{
+		n = cd3Cross(e01, e02);
+		edgeProduct = l01 * l02;
+	}
+	else if (l02 >= l01)
+	{
+		n = cd3Cross(e01, e12);
+		edgeProduct = l01 * l12;
+	}
+	else
+	{
+		n = cd3Cross(e02, e12);
+		edgeProduct = l02 * l12;
+	}
+	if (cd3Length(n) > GJK_DEGENERATE_TOLERANCE * edgeProduct)
 	{
 		cdReal l0 = cd3Dot(n, cd3Cross(w[1], w[2]));
 		cdReal l1 = cd3Dot(n, cd3Cross(w[2], w[0]));
@@ -160,26 +179,88 @@ static void SolveTriangle(const cd3Vec* w, cdReal* l)
  * true when the origin lies inside it. */
 static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 {
-	cd3Vec e1 = cd3Sub(w[1], w[0]);
-	cd3Vec e2 = cd3Sub(w[2], w[0]);
-	cd3Vec e3 = cd3Sub(w[3], w[0]);
+	/* Edges from the vertex whose three edges have the smallest product: from the far apex of a
+	 * needle (one support point far from the others) they would be long and nearly parallel, and
+	 * the needle would pass for flat. */
+	int base = 0;
+	cdReal smallest = CD_REAL_MAX;
+	for (int i = 0; i < 4; ++i)
+	{
+		cdReal product = CD_R(1.0);
+		for (int j = 0; j < 4; ++j)
+		{
+			product *= j == i ? CD_R(1.0) : cd3Length(cd3Sub(w[j], w[i]));
+		}
+		if (product < smallest)
+		{
+			smallest = product;
+			base = i;
+		}
+	}
+	int other[3];
+	for (int i = 0, k = 0; i < 4; ++i)
+	{
+		if (i != base)
+		{
+			other[k++] = i;
+		}
+	}
+	cd3Vec e1 = cd3Sub(w[other[0]], w[base]);
+	cd3Vec e2 = cd3Sub(w[other[1]], w[base]);
+	cd3Vec e3 = cd3Sub(w[other[2]], w[base]);
 	cdReal volume = cd3Dot(cd3Cross(e1, e2), e3);
+	/* The enclosing weights, when all are non-negative, and how far from the origin they rebuild
+	 * the point (CD_REAL_MAX when there are none). */
+	cdReal enclosing[4] = {CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+	cdReal residual = CD_REAL_MAX;
 	if (cdAbs(volume) > GJK_DEGENERATE_TOLERANCE * cd3Length(e1) * cd3Length(e2) * cd3Length(e3))
 	{
-		cd3Vec o = cd3Neg(w[0]);
-		cdReal l0 = cd3Dot(cd3Cross(w[1], w[2]), w[3]) / volume;
+		cd3Vec o = cd3Neg(w[base]);
+		cdReal lb = cd3Dot(cd3Cross(w[other[0]], w[other[1]]), w[other[2]]) / volume;
 		cdReal l1 = cd3Dot(cd3Cross(o, e2), e3) / volume;
 		cdReal l2 = cd3Dot(cd3Cross(e1, o), e3) / volume;
 		cdReal l3 = cd3Dot(cd3Cross(e1, e2), o) / volume;
-		if (l0 >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0) && l3 >= CD_R(0.0))
+		if (lb >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0) && l3 >= CD_R(0.0))
 		{
-			cdReal sum = l0 + l1 + l2 + l3;
-			l[0] = l0 / sum;
-			l[1] = l1 / sum;
-			l[2] = l2 / sum;
-			l[3] = l3 / sum;
-			return true;
+			cdReal sum = lb + l1 + l2 + l3;
+			enclosing[base] = lb / sum;
+			enclosing[other[0]] = l1 / sum;
+			enclosing[other[1]] = l2 / sum;
+			enclosing[other[2]] = l3 / sum;
+			/* On a thin tetrahedron (just above the flatness tolerance) the weights carry a
+			 * round-off of epsilon over its flatness: the point they rebuild can be far from the
+			 * origin (1e-3 of the size at the 1e9 scale, which made a common point 1e6 off a
+			 * hull). Iterative refinement: the weights of the rebuilt point r, by the same
+			 * (linear) formulas, are taken off; the residual, computed accurately, shrinks by
+			 * the solve's relative error at each pass. */
+			bool inside = true;
+			residual = cd3Length(Combine(w, enclosing, 4));
+			for (int pass = 0; pass < 2 && residual > GJK_TOUCH_TOLERANCE; ++pass)
+			{
+				cd3Vec r = Combine(w, enclosing, 4);
+				cdReal d1 = cd3Dot(cd3Cross(r, e2), e3) / volume;
+				cdReal d2 = cd3Dot(cd3Cross(e1, r), e3) / volume;
+				cdReal d3 = cd3Dot(cd3Cross(e1, e2), r) / volume;
+				enclosing[base] += d1 + d2 + d3;
+				enclosing[other[0]] -= d1;
+				enclosing[other[1]] -= d2;
+				enclosing[other[2]] -= d3;
+				inside = enclosing[0] >= CD_R(0.0) && enclosing[1] >= CD_R(0.0) &&
+						 enclosing[2] >= CD_R(0.0) && enclosing[3] >= CD_R(0.0);
+				residual = inside ? cd3Length(Combine(w, enclosing, 4)) : CD_REAL_MAX;
+			}
 		}
+	}
+	/* The origin counts as enclosed when the weights rebuild it within the touching tolerance of
+	 * these unit-scaled vertices, or at least closer than the nearest face does; otherwise the
+	 * faces decide. */
+	if (residual <= GJK_TOUCH_TOLERANCE)
+	{
+		for (int i = 0; i < 4; ++i)
+		{
+			l[i] = enclosing[i];
+		}
+		return true;
 	}
 
 	/* Outside (or flat): the closest point lies on a face. The faces list the newest vertex, 3,
@@ -207,6 +288,14 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 				l[faces[f][i]] = faceLambda[i];
 			}
 		}
+	}
+	if (residual < cdSqrt(best.distanceSquared))
+	{
+		for (int i = 0; i < 4; ++i)
+		{
+			l[i] = enclosing[i];
+		}
+		return true;
 	}
 	return false;
 }
