@@ -1305,6 +1305,50 @@ static void TestTriangleRobustness(void)
 	TEST_CHECKF(hits > 1000, "only %d hits", hits);
 }
 
+/* A zero-radius capsule at the 1e9 scale (fuzz_query3): the side entry's perpendicular parts are
+ * all round-off there, and a ray starting 1e-9 from its end reported a hit 2.4e8 from it. Every
+ * hit must lie on the capsule within the segment cast's tolerance (64 epsilon of the
+ * coordinates); then random thin capsules far out, with rays from near their ends. */
+static void TestThinCapsulesFarOut(void)
+{
+	cd3Capsule c = {cd3MakeVec(CD_R(-5e8), CD_R(-1e9), CD_R(-1e9)),
+					cd3MakeVec(CD_R(-9.99999972e-10), CD_R(-1e9), 0), CD_R(0.0)};
+	TestRng rng = TestRngMake(0x5eed300a);
+	for (int i = 0; i <= 4000; ++i)
+	{
+		cd3Ray ray = Ray(0, CD_R(-1e9), 0, CD_R(-1e9), 0, CD_R(-1e9));
+		double scale = CD_DOUBLE ? 1e30 : 1e9;
+		if (i > 0)
+		{
+			c.p1 = RandomVec(&rng, scale);
+			c.p2 = RandomVec(&rng, scale);
+			c.radius = TestRngInt(&rng, 2) == 0
+						   ? CD_R(0.0)
+						   : (cdReal)(scale * pow(10.0, TestRngRange(&rng, -12.0, -6.0)));
+			DVec end = D(TestRngInt(&rng, 2) == 0 ? c.p1 : c.p2);
+			ray.origin =
+				V(DAdd(end, DScale(scale * 1e-6 * TestRngRange(&rng, 0.0, 1.0), D(RandomUnit(&rng)))));
+			ray.translation = V(DScale(scale, D(RandomUnit(&rng))));
+		}
+		cd3RayHit hit = UntouchedHit();
+		if (!cd3RaycastCapsule(c, ray, &hit))
+		{
+			continue;
+		}
+		double magnitude =
+			fmax(fmax(DLength(D(c.p1)), DLength(D(c.p2))),
+				 fmax(DLength(D(ray.origin)), DLength(DAdd(D(ray.origin), D(ray.translation)))));
+		double off = fabs(RefDistanceToSegment(D(hit.point), D(c.p1), D(c.p2)) - (double)c.radius);
+		/* From inside (within double round-off: the fuzzer's origin is 1e-9 from the end), only
+		 * fraction 0 at the origin; otherwise a point of the surface. */
+		bool inside = RefDistanceToSegment(D(ray.origin), D(c.p1), D(c.p2)) <= (double)c.radius;
+		TEST_CHECKF((inside && hit.fraction == CD_R(0.0)) ||
+						off <= 128.0 * (double)CD_REAL_EPSILON * magnitude,
+					"case %d: fraction %.9g, the hit point is %.3g off the capsule's surface (radius %g)", i,
+					(double)hit.fraction, off, (double)c.radius);
+	}
+}
+
 /* Segments: rays aimed at a random point of the segment hit there; rays aimed beside it miss. */
 static void TestSegmentsAimed(void)
 {
@@ -1458,6 +1502,7 @@ int main(void)
 	TEST_RUN(TestBoxExact);
 	TEST_RUN(TestTriangleExact);
 	TEST_RUN(TestTriangleRobustness);
+	TEST_RUN(TestThinCapsulesFarOut);
 	TEST_RUN(TestPlaneExact);
 	TEST_RUN(TestSegmentExact);
 	TEST_RUN(TestDispatcher);

@@ -160,7 +160,16 @@ bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit)
 		{
 			cdReal t = outside / (-b + cdSqrt(disc));
 			cdReal hitAlong = offsetAlong + t * directionAlong;
-			if (t <= best && CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
+			/* The perpendicular parts carry a round-off of epsilon times the coordinates: for a
+			 * radius below it (a zero-radius capsule at the 1e9 scale) t is noise, and a hit
+			 * 2.4e8 from the axis came out. The point must lie at the radius from the axis
+			 * within the segment ray cast's tolerance (64 epsilon of the coordinates). */
+			cd3Vec offAxis = cd3MulAdd(offsetPerp, t, directionPerp);
+			cd3Vec end = cd3Add(ray.origin, ray.translation);
+			cdReal magnitude = cdMax(cdMax(MaxAbsComponent(c.p1), MaxAbsComponent(c.p2)),
+									 cdMax(MaxAbsComponent(ray.origin), MaxAbsComponent(end)));
+			bool onSide = cdAbs(cd3Length(offAxis) - c.radius) <= CD_R(64.0) * CD_REAL_EPSILON * magnitude;
+			if (onSide && t <= best && CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
 			{
 				found = true;
 				best = t;
