@@ -670,6 +670,18 @@ static void TestGjkFuzzFindings(void)
 	cd2Shape flat = Aabb(cd2MakeVec(CD_R(-1e-5), CD_R(-1.225e-4)), cd2MakeVec(CD_R(-1e-5), CD_R(-1.15e-4)));
 	r = CheckScaledPair(&slab, &flat, "flat AABB in a long thin box");
 	TEST_CHECK(r.distance == CD_R(0.0));
+
+	/* The point (-12.5, -12.5) on the axis of a box 4.8e15 long and 25 wide at 45 degrees (found
+	 * by the double fuzzer; in float the box is only 4.8e15 long where the documented range ends,
+	 * an ordinary case): the common point is the point itself. */
+	cd2Shape needle = Box(CD2_VEC_ZERO, cd2MakeVec((cdReal)0x1.100ap+51, CD_R(12.5)),
+						  (cd2Rot){(cdReal)-0x1.6a09e667f3bccp-1, (cdReal)-0x1.6a09e667f3bccp-1});
+	cd2Shape onAxis = Circle(CD_R(-12.5), CD_R(-12.5), CD_R(0.0));
+	r = CheckScaledPair(&needle, &onAxis, "point on the axis of a needle box");
+	TEST_CHECKF(r.distance == CD_R(0.0) &&
+					cd2Length(cd2Sub(r.pointB, onAxis.circle.center)) <= SCALED_TOLERANCE(0x1.100ap+51),
+				"distance %.9g, common point %.3g from the point", (double)r.distance,
+				(double)cd2Length(cd2Sub(r.pointB, onAxis.circle.center)));
 }
 
 /* Thin boxes (aspect ratios up to 1e6 in float, 1e12 in double) against random shapes and points

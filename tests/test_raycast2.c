@@ -720,6 +720,19 @@ static void TestPolygonExact(void)
 	TEST_CHECK(cd2RaycastPolygon(&near, Ray(CD_R(0.115), CD_R(-0.125), CD_R(-0.125), CD_R(0.035)), &hit));
 	TEST_CHECK(hit.fraction == CD_R(0.0));
 	TEST_CHECK(cd2PointInPolygon(cd2MakeVec(CD_R(0.115), CD_R(-0.125)), &near));
+
+	/* An origin 6e-6 from the core of a polygon rounded by 1 with edges 1e9 long (found by
+	 * fuzz_query2): inside, a hit at fraction 0; the core distance recomputed from the core point's
+	 * coordinates (1e9 along the edge) came out about 30. */
+	cd2Vec rounded[5] = {cd2MakeVec(CD_R(-1e9), CD_R(0.0)), cd2MakeVec(CD_R(-8e8), CD_R(-5.875e8)),
+						 cd2MakeVec(CD_R(-5e7), CD_R(-1e9)), cd2MakeVec(CD_R(0.0), CD_R(-9.125e8)),
+						 cd2MakeVec(CD_R(2.625e8), CD_R(-7.68813788e-06))};
+	cd2Polygon roundedPolygon;
+	TEST_CHECK(cd2MakeRoundedPolygon(rounded, 5, CD_R(1.0), &roundedPolygon) == CD_OK);
+	TEST_CHECK(cd2PointInPolygon(CD2_VEC_ZERO, &roundedPolygon));
+	TEST_CHECK(
+		cd2RaycastPolygon(&roundedPolygon, Ray(CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(-8.625e8)), &hit));
+	TEST_CHECK(hit.fraction == CD_R(0.0));
 }
 
 /* Slivers (tip angles down to 1e-5, up to 1e9 / 1e30 long): a ray from beyond the sharp tip, on

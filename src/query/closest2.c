@@ -63,66 +63,19 @@ cd2Vec cd2ClosestPointOnBox(cd2Box b, cd2Vec p)
 	return cd2Add(b.center, cd2RotateVector(q, clamped));
 }
 
-static cdReal MaxAbs(cd2Vec v)
-{
-	return cdMax(cdAbs(v.x), cdAbs(v.y));
-}
-
-/* Closest point on the core polygon (the vertices' hull, radius ignored). The side of each edge
- * line is measured from the edge's end point nearer to p, so that its round-off is relative to
- * p's offset from it. A point within round-off (8 epsilons of that offset) of an edge line is
- * inside only if it is that close to the boundary too: beyond a sharp vertex a point stays
- * within round-off of both edge lines however far it is (see cd2PointInPolygon). */
-static cd2Vec ClosestPointOnCorePolygon(const cd2Polygon* polygon, cd2Vec p)
-{
-	int count = polygon->count;
-	bool inside = true, nearEdgeLine = false;
-	cdReal nearTolerance = CD_REAL_MAX;
-	for (int i = 0; i < count; ++i)
-	{
-		cd2Vec offset = cd2Sub(p, polygon->vertices[i]);
-		cd2Vec offsetFromEnd = cd2Sub(p, polygon->vertices[i + 1 < count ? i + 1 : 0]);
-		if (MaxAbs(offsetFromEnd) < MaxAbs(offset))
-		{
-			offset = offsetFromEnd;
-		}
-		cdReal separation = cd2Dot(polygon->normals[i], offset);
-		cdReal tolerance = CD_R(8.0) * CD_REAL_EPSILON * MaxAbs(offset);
-		inside = inside && separation <= CD_R(0.0);
-		if (cdAbs(separation) <= tolerance)
-		{
-			nearEdgeLine = true;
-			nearTolerance = cdMin(nearTolerance, tolerance);
-		}
-	}
-	if (inside && !nearEdgeLine)
-	{
-		return p;
-	}
-	/* Outside a convex polygon the closest point lies on its boundary. */
-	cd2Vec best = polygon->vertices[0];
-	cdReal bestDistanceSquared = CD_REAL_MAX;
-	for (int i = 0; i < count; ++i)
-	{
-		cd2Vec candidate;
-		cdReal distanceSquared = cd2EdgeDistanceSquared(
-			polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0], p, &candidate);
-		if (distanceSquared < bestDistanceSquared)
-		{
-			best = candidate;
-			bestDistanceSquared = distanceSquared;
-		}
-	}
-	/* An inside point is no farther from the boundary than from any edge line. */
-	cdReal limit = CD_R(2.0) * nearTolerance;
-	return inside && bestDistanceSquared <= limit * limit ? p : best;
-}
-
 cd2Vec cd2ClosestPointOnPolygon(const cd2Polygon* polygon, cd2Vec p)
 {
 	CD_ASSERT(polygon != NULL && polygon->count >= 1);
-	cd2Vec core = ClosestPointOnCorePolygon(polygon, p);
-	return polygon->radius > CD_R(0.0) ? ClosestPointOnDisk(core, polygon->radius, p) : core;
+	cdReal distanceSquared, offsetScale;
+	cd2Vec core = cd2ClosestPointOnCore(polygon, p, &distanceSquared, &offsetScale);
+	cdReal radius = polygon->radius;
+	if (radius <= CD_R(0.0))
+	{
+		return core;
+	}
+	/* The core distance computed from the nearest edge's nearer end decides: recomputed from the
+	 * core point's coordinates it carries their round-off. */
+	return distanceSquared <= radius * radius ? p : ClosestPointOnDisk(core, radius, p);
 }
 
 /* Closest points between two 2D segments: either they cross (distance 0 at the crossing) or one of

@@ -273,10 +273,11 @@ bool cd2PointInPolygon(cd2Vec p, const cd2Polygon* polygon)
 	CD_ASSERT(polygon != NULL);
 	if (polygon->radius > CD_R(0.0))
 	{
-		/* The closest point on the rounded polygon is p itself exactly when p is inside. */
-		cd2Vec closest = cd2ClosestPointOnPolygon(polygon, p);
-		cdReal tolerance = OverlapTolerance(cdMax(cdMax(MaxAbs(p), MaxAbs(closest)), polygon->radius));
-		return cd2VecDistanceSquared(closest, p) <= tolerance * tolerance;
+		/* Within the radius of the core, up to the round-off of the core distance (relative to p's
+		 * offset from the nearest edge's nearer end) and of the radius. */
+		cdReal distanceSquared, offsetScale;
+		cd2ClosestPointOnCore(polygon, p, &distanceSquared, &offsetScale);
+		return WithinRadius(distanceSquared, polygon->radius, cdMax(offsetScale, polygon->radius));
 	}
 	int count = polygon->count;
 	bool nearEdgeLine = false;
@@ -313,8 +314,9 @@ bool cd2PointInPolygon(cd2Vec p, const cd2Polygon* polygon)
 	for (int i = 0; i < count; ++i)
 	{
 		cd2Vec closest;
+		cdReal scale;
 		if (cd2EdgeDistanceSquared(polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0], p,
-								   &closest) <= limit * limit)
+								   &closest, &scale) <= limit * limit)
 		{
 			return true;
 		}

@@ -233,7 +233,7 @@ bool cd2RaycastBox(cd2Box b, cd2Ray ray, cd2RayHit* hit)
  * entry is the earliest entry into an edge capsule, and that capsule's normal is the union's. */
 static bool RaycastRoundedPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 {
-	if (cd2VecEqual(cd2ClosestPointOnPolygon(polygon, ray.origin), ray.origin))
+	if (cd2PointInPolygon(ray.origin, polygon))
 	{
 		return cd2HitFromInside(ray, hit);
 	}
@@ -271,9 +271,10 @@ bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 		return RaycastRoundedPolygon(polygon, ray, hit);
 	}
 
-	/* The closest point decides containment robustly (also beyond a sharp vertex, where the origin
-	 * can be within round-off of both edge lines far from the polygon). */
-	if (cd2VecEqual(cd2ClosestPointOnPolygon(polygon, ray.origin), ray.origin))
+	/* Inside or on the boundary within round-off, as cd2PointInPolygon decides (robust also beyond
+	 * a sharp vertex, where the origin can be within round-off of both edge lines far from the
+	 * polygon). */
+	if (cd2PointInPolygon(ray.origin, polygon))
 	{
 		return cd2HitFromInside(ray, hit);
 	}

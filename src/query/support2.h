@@ -133,13 +133,15 @@ static inline int cd2CoreSupportFrom(const cd2Core* core, cd2Vec direction, int 
 }
 
 /* Squared distance from p to the polygon edge a-b and the edge's closest point, computed from the
- * edge end nearer to p: the round-off then grows with p's offset from that end, not with the
- * coordinates, so that it compares with tolerances relative to those offsets (point containment
- * near a vertex, beyond a sharp tip). */
-static inline cdReal cd2EdgeDistanceSquared(cd2Vec a, cd2Vec b, cd2Vec p, cd2Vec* closest)
+ * edge end nearer to p: the round-off then grows with p's offset from that end (*offsetScale, its
+ * largest |coordinate|), not with the coordinates, so that it compares with tolerances relative to
+ * those offsets (point containment near a vertex, beyond a sharp tip). */
+static inline cdReal cd2EdgeDistanceSquared(cd2Vec a, cd2Vec b, cd2Vec p, cd2Vec* closest,
+											cdReal* offsetScale)
 {
 	cd2Vec fromA = cd2Sub(p, a), fromB = cd2Sub(p, b);
-	bool nearA = cdMax(cdAbs(fromA.x), cdAbs(fromA.y)) <= cdMax(cdAbs(fromB.x), cdAbs(fromB.y));
+	cdReal scaleA = cdMax(cdAbs(fromA.x), cdAbs(fromA.y)), scaleB = cdMax(cdAbs(fromB.x), cdAbs(fromB.y));
+	bool nearA = scaleA <= scaleB;
 	cd2Vec end = nearA ? a : b;
 	cd2Vec offset = nearA ? fromA : fromB;
 	cd2Vec edge = nearA ? cd2Sub(b, a) : cd2Sub(a, b);
@@ -156,7 +158,74 @@ static inline cdReal cd2EdgeDistanceSquared(cd2Vec a, cd2Vec b, cd2Vec p, cd2Vec
 		foot = cd2Scale(along / lengthSquared, edge);
 	}
 	*closest = cd2Add(end, foot);
+	*offsetScale = nearA ? scaleA : scaleB;
 	return cd2LengthSquared(cd2Sub(offset, foot));
+}
+
+/* Closest point on a polygon's core (the vertices' hull, radius ignored), with the squared
+ * distance to it (0 inside) and the round-off scale of that distance (the largest |coordinate| of
+ * p's offset from the nearest edge's nearer end; 0 inside). The side of each edge line is measured
+ * from the edge's end nearer to p, so that its round-off is relative to p's offset from it. A
+ * point within round-off (8 epsilons of that offset) of an edge line is inside only if it is that
+ * close to the boundary too: beyond a sharp vertex a point stays within round-off of both edge
+ * lines however far it is (a point 157500 beyond a sliver's tip counted as inside). */
+static inline cd2Vec cd2ClosestPointOnCore(const cd2Polygon* polygon, cd2Vec p, cdReal* distanceSquared,
+										   cdReal* offsetScale)
+{
+	int count = polygon->count;
+	bool inside = true, nearEdgeLine = false;
+	cdReal nearTolerance = CD_REAL_MAX;
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec offset = cd2Sub(p, polygon->vertices[i]);
+		cd2Vec offsetFromEnd = cd2Sub(p, polygon->vertices[i + 1 < count ? i + 1 : 0]);
+		cdReal scale = cdMax(cdAbs(offset.x), cdAbs(offset.y));
+		cdReal scaleFromEnd = cdMax(cdAbs(offsetFromEnd.x), cdAbs(offsetFromEnd.y));
+		if (scaleFromEnd < scale)
+		{
+			offset = offsetFromEnd;
+			scale = scaleFromEnd;
+		}
+		cdReal separation = cd2Dot(polygon->normals[i], offset);
+		cdReal tolerance = CD_R(8.0) * CD_REAL_EPSILON * scale;
+		inside = inside && separation <= CD_R(0.0);
+		if (cdAbs(separation) <= tolerance)
+		{
+			nearEdgeLine = true;
+			nearTolerance = cdMin(nearTolerance, tolerance);
+		}
+	}
+	*distanceSquared = CD_R(0.0);
+	*offsetScale = CD_R(0.0);
+	if (inside && !nearEdgeLine)
+	{
+		return p;
+	}
+	/* Outside a convex polygon the closest point lies on its boundary. */
+	cd2Vec best = polygon->vertices[0];
+	cdReal bestDistanceSquared = CD_REAL_MAX, bestScale = CD_R(0.0);
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec candidate;
+		cdReal scale;
+		cdReal candidateSquared = cd2EdgeDistanceSquared(
+			polygon->vertices[i], polygon->vertices[i + 1 < count ? i + 1 : 0], p, &candidate, &scale);
+		if (candidateSquared < bestDistanceSquared)
+		{
+			best = candidate;
+			bestDistanceSquared = candidateSquared;
+			bestScale = scale;
+		}
+	}
+	/* An inside point is no farther from the boundary than from any edge line. */
+	cdReal limit = CD_R(2.0) * nearTolerance;
+	if (inside && bestDistanceSquared <= limit * limit)
+	{
+		return p;
+	}
+	*distanceSquared = bestDistanceSquared;
+	*offsetScale = bestScale;
+	return best;
 }
 
 #endif
