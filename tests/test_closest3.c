@@ -432,6 +432,22 @@ static void TestPointInHullWedge(void)
 	cd3DestroyHull(hull);
 }
 
+/* A segment piercing a sliver (two vertices 0.125 apart, the third 20 away) well inside
+ * (barycentrics 0.51, 0.14, 0.35 at the crossing, in double): the crossing point, from a float
+ * normal of the sliver, landed 3e-5 off its plane, beyond the touching tolerance (fuzz_query3). */
+static void TestSegmentPiercingSliver(void)
+{
+	cd3Segment g = {cd3MakeVec(CD_R(-2.0), CD_R(-6.875), CD_R(0.0)),
+					cd3MakeVec(CD_R(-11.75), CD_R(-4.375), CD_R(-12.125))};
+	cd3Triangle t = {cd3MakeVec(CD_R(0.0), CD_R(0.5), CD_R(2.0)),
+					 cd3MakeVec(CD_R(-12.375), CD_R(-12.5), CD_R(-12.5)),
+					 cd3MakeVec(CD_R(-12.5), CD_R(-12.5), CD_R(-12.5))};
+	cd3ClosestPoints r = cd3ClosestPointsTriangleSegment(t, g);
+	TEST_CHECKF(r.distance == CD_R(0.0) && cd3VecEqual(r.pointA, r.pointB), "distance %.9g",
+				(double)r.distance);
+	TEST_CHECK(cd3OverlapTriangleSegment(t, g));
+}
+
 /* Closest point on each shape to random points, at several scales: finite, on the shape,
  * at the reference's distance, the point itself when inside, and no sampled point is closer. */
 static void TestRandomClosestPoint(void)
@@ -578,6 +594,7 @@ int main(void)
 	TEST_RUN(TestThinTriangles);
 	TEST_RUN(TestNeedleTriangles);
 	TEST_RUN(TestPointInHullWedge);
+	TEST_RUN(TestSegmentPiercingSliver);
 	TEST_RUN(TestRandomClosestPoint);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestFarFromOrigin);

@@ -1236,6 +1236,21 @@ static void TestTriangleRobustness(void)
 				"in-plane ray: fraction %.9g, point %.3g off", (double)hit.fraction,
 				RefDistanceToTriangle(D(hit.point), D(flat.a), D(flat.b), D(flat.c)));
 
+	/* Along the axis of a needle, 0.5 beside it, passing its far tip (double build, fuzz_query3):
+	 * near the axis every point is close to the lines of both long edges, and a hit 16 lengths
+	 * past the tip passed the edge-line test. */
+	cd3Triangle needle = {cd3MakeVec(CD_R(0.5), CD_R(0.25), 0), cd3MakeVec(0, 7, CD_R(6.375)),
+						  cd3MakeVec(CD_R(1.68523752e22), CD_R(0.5), CD_R(0.25))};
+	cd3Ray alongNeedle = Ray(0, 0, 0, CD_R(5e29), 0, 0);
+	if (CD_DOUBLE)
+	{
+		hit = UntouchedHit();
+		got = cd3RaycastTriangle(needle, alongNeedle, &hit);
+		double off = RefDistanceToTriangle(D(hit.point), D(needle.a), D(needle.b), D(needle.c));
+		TEST_CHECKF(!got || off <= 64.0 * (double)CD_REAL_EPSILON * 5e29,
+					"along a needle: the hit is %.3g off", off);
+	}
+
 	/* Random: triangles of size 1e-3..10 near the origin; rays from up to the end of the range
 	 * aimed at them, and rays from a point of the triangle at a grazing angle (1e-7..1e-2 rad off
 	 * the plane). Every hit lies on the triangle within a few epsilon of the coordinates, and the

@@ -372,24 +372,32 @@ cd3ClosestPoints cd3ClosestPointsTriangleSegment(cd3Triangle t, cd3Segment g)
 	best.pointB = g.p1;
 	cdReal bestDistanceSquared = CD_REAL_MAX;
 
-	/* Piercing point: where the segment crosses the triangle's plane. The normal is left
-	 * unnormalized (it may be tiny or huge); only the signs and the ratio of the heights matter. */
+	/* Piercing point: where the segment crosses the triangle's plane, in double (wide3.h) with
+	 * the face normal from the two shorter edges. From a float normal of a sliver (relative
+	 * error epsilon / sin(angle)) the crossing landed 3e-5 off the plane of a triangle it pierced
+	 * well inside, beyond the touching tolerance. The normal is left unnormalized; only the signs
+	 * and the ratio of the heights matter. */
 	cd3Vec ab = cd3Sub(t.b, t.a);
 	cd3Vec ac = cd3Sub(t.c, t.a);
 	cdReal scale = cdMax(MaxAbsComponent(ab), MaxAbsComponent(ac));
 	if (scale > CD_R(0.0))
 	{
-		cdReal inverse = CD_R(1.0) / scale;
-		cd3Vec n = cd3Cross(cd3Scale(inverse, ab), cd3Scale(inverse, ac));
-		cdReal h1 = cd3Dot(n, cd3Sub(g.p1, t.a));
-		cdReal h2 = cd3Dot(n, cd3Sub(g.p2, t.a));
-		if ((h1 <= CD_R(0.0) && h2 >= CD_R(0.0)) || (h1 >= CD_R(0.0) && h2 <= CD_R(0.0)))
+		double inverse = 1.0 / (double)scale;
+		WideVec a = Widen(t.a);
+		WideVec n = WideTriangleNormal(WideScale(inverse, WideSub(Widen(t.b), a)),
+									   WideScale(inverse, WideSub(Widen(t.c), a)),
+									   WideScale(inverse, WideSub(Widen(t.c), Widen(t.b))));
+		WideVec p1 = Widen(g.p1), p2 = Widen(g.p2);
+		double h1 = WideDot(n, WideSub(p1, a));
+		double h2 = WideDot(n, WideSub(p2, a));
+		if ((h1 <= 0.0 && h2 >= 0.0) || (h1 >= 0.0 && h2 <= 0.0))
 		{
-			cdReal difference = h1 - h2;
-			if (difference != CD_R(0.0))
+			double difference = h1 - h2;
+			if (difference != 0.0)
 			{
-				cdReal fraction = cdClamp(h1 / difference, CD_R(0.0), CD_R(1.0));
-				cd3Vec crossing = cd3Lerp(g.p1, g.p2, fraction);
+				double fraction = h1 / difference;
+				fraction = fraction < 0.0 ? 0.0 : (fraction > 1.0 ? 1.0 : fraction);
+				cd3Vec crossing = Narrow(WideMulAdd(p1, fraction, WideSub(p2, p1)));
 				KeepCloser(&best, &bestDistanceSquared, cd3ClosestPointOnTriangle(t, crossing), crossing);
 			}
 		}

@@ -279,6 +279,17 @@ bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit)
 	return true;
 }
 
+/* Squared distance from p to the segment a-b, in double. */
+static double WideSegmentDistanceSquared(WideVec a, WideVec b, WideVec p)
+{
+	WideVec e = WideSub(b, a);
+	double ee = WideDot(e, e);
+	double s = ee > 0.0 ? WideDot(WideSub(p, a), e) / ee : 0.0;
+	s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+	WideVec offset = WideSub(p, WideMulAdd(a, s, e));
+	return WideDot(offset, offset);
+}
+
 /* Two-sided triangle: the fraction comes from the plane, then the hit point's barycentric
  * coordinates decide, everything relative to vertex a and in double (wide3.h) when cdReal is
  * float. Deciding "inside" apart from the fraction (by triple products relative to the ray
@@ -338,6 +349,20 @@ bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
 	if (fromAc < -tolerance || fromAb < -tolerance || !(fromBc >= -tolerance))
 	{
 		return false;
+	}
+	if (fromAc < 0.0 || fromAb < 0.0 || fromBc < 0.0)
+	{
+		/* Within the tolerance of an edge's line, but that is not the edge: beyond the tip of a
+		 * needle every point near its axis is close to both long edges' lines (a hit 16
+		 * lengths past one was accepted). The distance to the nearest edge decides. */
+		WideVec zero = {0.0, 0.0, 0.0};
+		double reach = tolerance / sqrt(nn);
+		if (WideSegmentDistanceSquared(zero, ab, q) > reach * reach &&
+			WideSegmentDistanceSquared(zero, ac, q) > reach * reach &&
+			WideSegmentDistanceSquared(ab, ac, q) > reach * reach)
+		{
+			return false;
+		}
 	}
 
 	cd3Vec unitNormal = Narrow(WideScale(1.0 / sqrt(nn), n));
