@@ -185,12 +185,13 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return ClosestPointOnTriangleEdges(t.a, ab, ac, ap);
 	}
 
-	/* Every quantity below comes from the edges ab, ac and the one offset ap (plus bc and bp for
-	 * the weight of a): bp = ap - ab and cp = ap - ac, formed as rounded vectors, lose the short
-	 * edge of a needle entirely when p is far from it (bp == ap), which made the point at vertex c
-	 * of a needle fall into the region of its short edge ab. Ericson's d3..d6 are the same dot
-	 * products expanded (ab.bp = ab.ap - ab.ab and so on), and the weights of c and b are
-	 * n.(ap x bp) = n.(ab x ap) and n.(cp x ap) = n.(ap x ac). */
+	/* The quantities below come from the edges ab, ac and the one offset ap (those along bc
+	 * from bc, bp and cp taken from the inputs): bp = ap - ab and cp = ap - ac, formed as
+	 * rounded vectors, lose the short edge of a needle entirely when p is far from it
+	 * (bp == ap), which made the point at vertex c of a needle fall into the region of its short
+	 * edge ab. Ericson's d3 and d6 are the same dot products expanded (ab.bp = ab.ap - ab.ab,
+	 * ac.cp = ac.ap - ac.ac), and the weights of c and b are n.(ap x bp) = n.(ab x ap) and
+	 * n.(cp x ap) = n.(ap x ac). */
 	double d1 = WideDot(sab, sap);
 	double d2 = WideDot(sac, sap);
 	if (d1 <= 0.0 && d2 <= 0.0)
@@ -198,10 +199,19 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return t.a;
 	}
 
-	double abab = WideDot(sab, sab), abac = WideDot(sab, sac), acac = WideDot(sac, sac);
+	/* Along the edge bc, from the inputs relative to b and c: Ericson's d4 - d3 = bc.bp and
+	 * d5 - d6 = -bc.cp. As differences of the large d's they vanish in round-off on a needle
+	 * whose short edge is bc (p past b along the long edges made d4 <= d3 by rounding, and the
+	 * face point 1e7 away came back as vertex b, 1.1e8 away, in the double build). */
+	WideVec sbc = WideScale(inverse, WideSub(Widen(t.c), Widen(t.b)));
+	WideVec sbp = WideScale(inverse, WideSub(Widen(p), Widen(t.b)));
+	WideVec scp = WideScale(inverse, WideSub(Widen(p), Widen(t.c)));
+	double fromB = WideDot(sbc, sbp);
+	double towardC = WideDot(sbc, scp);
+
+	double abab = WideDot(sab, sab), acac = WideDot(sac, sac);
 	double d3 = d1 - abab;
-	double d4 = d2 - abac;
-	if (d3 >= 0.0 && d4 <= d3)
+	if (d3 >= 0.0 && fromB <= 0.0)
 	{
 		return t.b;
 	}
@@ -215,9 +225,8 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return Narrow(WideMulAdd(origin, WideClampedRatio(d1, d1 - d3), ab));
 	}
 
-	double d5 = d1 - abac;
 	double d6 = d2 - acac;
-	if (d6 >= 0.0 && d5 <= d6)
+	if (d6 >= 0.0 && towardC >= 0.0)
 	{
 		return t.c;
 	}
@@ -228,16 +237,11 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 		return Narrow(WideMulAdd(origin, WideClampedRatio(d2, d2 - d6), ac));
 	}
 
-	/* Relative to b, from the inputs: accurate when p is near the edge bc. */
-	WideVec sbc = WideScale(inverse, WideSub(Widen(t.c), Widen(t.b)));
-	WideVec sbp = WideScale(inverse, WideSub(Widen(p), Widen(t.b)));
 	double va = WideDot(normal, WideCross(sbc, sbp));
-	double fromB = WideDot(sbc, sbp);
-	double fromC = WideDot(sbc, sbc) - fromB;
-	if (va <= 0.0 && fromB >= 0.0 && fromC >= 0.0)
+	if (va <= 0.0 && fromB >= 0.0 && towardC <= 0.0)
 	{
 		WideVec b = Widen(t.b);
-		return Narrow(WideMulAdd(b, WideClampedRatio(fromB, fromB + fromC), WideSub(Widen(t.c), b)));
+		return Narrow(WideMulAdd(b, WideClampedRatio(fromB, fromB - towardC), WideSub(Widen(t.c), b)));
 	}
 
 	if (va > 0.0 && vb > 0.0 && vc > 0.0)
