@@ -440,6 +440,26 @@ static void TestPointInHullWedge(void)
 	cd3Vec middle = cd3MakeVec(CD_R(5e8), CD_R(5e8), CD_R(2.49375e8));
 	TEST_CHECK(cd3PointInHull(cd3TransformPoint(shape.transform, middle), shape));
 	cd3DestroyHull(hull);
+
+	/* A 5e-6 rad wedge: (4.25e6, -1e9, -1e9) in its frame is 22 above one face (below the
+	 * float round-off of that height) and 4.25e6 beyond the hull's largest x, -6.625. */
+	static const float wedge[] = {-1e+09f, -7356.64795f, -6.625f, -6.625f, -6.875f, -6.625f,
+								  -6.625f, -6.625f,		 -6.625f, -6.625f, -1e+09f, -1e+09f,
+								  -1e+09f, -1e+09f,		 -1e+09f, -1e+09f, -1e+09f, -1e+09f};
+	for (int i = 0; i < 6; ++i)
+	{
+		points[i] = cd3MakeVec((cdReal)wedge[3 * i], (cdReal)wedge[3 * i + 1], (cdReal)wedge[3 * i + 2]);
+	}
+	hull = NULL;
+	TEST_CHECK(cd3ComputeHull(points, 6, &hull) == CD_OK && hull != NULL);
+	if (hull != NULL)
+	{
+		cd3HullShape thin = {hull, {CD3_VEC_ZERO, CD3_QUAT_IDENTITY}};
+		cd3Vec beyond = cd3MakeVec(CD_R(4250220.5), CD_R(-1e9), CD_R(-1e9));
+		TEST_CHECK(!cd3PointInHull(beyond, thin));
+		TEST_CHECK(cd3PointInHull(cd3MakeVec(CD_R(-6.625), CD_R(-1e9), CD_R(-1e9)), thin));
+		cd3DestroyHull(hull);
+	}
 }
 
 /* A segment piercing a sliver (two vertices 0.125 apart, the third 20 away) well inside

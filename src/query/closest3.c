@@ -446,16 +446,17 @@ bool cd3PointInHull(cd3Vec p, cd3HullShape shape)
 		{
 			return false;
 		}
-		withinTolerance = withinTolerance || height > CD_R(0.0);
+		withinTolerance = withinTolerance || height > -tolerance;
 		largestOffset = cdMax(largestOffset, cdAbs(plane.offset));
 	}
 	if (!withinTolerance)
 	{
 		return true;
 	}
-	/* Above some face, but within its tolerance. Near an edge where two faces meet at a small
-	 * angle (a sliver), a height that small can still be far from the hull: 198 above both faces
-	 * of a 1e-4 rad wedge is 1.8e6 beyond its edge. The distance decides, with the same
+	/* Within the tolerance of some face (on either side: the heights themselves carry that
+	 * round-off). Near an edge where two faces meet at a small angle (a sliver), a height that
+	 * small can still be far from the hull: 198 above both faces of a 1e-4 rad wedge is 1.8e6
+	 * beyond its edge, and 22 above a 5e-6 rad one 4.2e6. The distance decides, with the same
 	 * tolerance. */
 	cd3Shape hullShape;
 	hullShape.type = CD3_SHAPE_HULL;
