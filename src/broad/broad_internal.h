@@ -17,6 +17,25 @@
 
 #include <string.h>
 
+/* Debug operation counters (off unless built with -DCD_BROAD_COUNT_OPS): how many tree nodes
+ * moves and pair queries touch, to tell algorithmic growth from cache misses in benchmarks. */
+#ifdef CD_BROAD_COUNT_OPS
+enum
+{
+	CD_BROAD_OP_TREE_MOVES,		  /* TreeMoveProxy calls */
+	CD_BROAD_OP_TREE_REINSERTS,	  /* of which removed and reinserted */
+	CD_BROAD_OP_TREE_DESCENT,	  /* nodes read by the SAH sibling search */
+	CD_BROAD_OP_TREE_REFIT,		  /* refit steps (each may rotate) */
+	CD_BROAD_OP_TREE_QUERIES,	  /* TreeQuery calls */
+	CD_BROAD_OP_TREE_QUERY_NODES, /* nodes read by queries */
+	CD_BROAD_OP_COUNT
+};
+extern unsigned long long cdBroadOpCounts[CD_BROAD_OP_COUNT];
+#define CD_BROAD_COUNT(op, k) (cdBroadOpCounts[op] += (unsigned long long)(k))
+#else
+#define CD_BROAD_COUNT(op, k) ((void)0)
+#endif
+
 /* ---- callbacks from a backend to the frontend ------------------------------------------------- */
 
 /* Box query hit: return false to stop. */

@@ -1,6 +1,10 @@
 /* collide: broadphase pieces shared by 2D and 3D: type names, array growth, key sorting. */
 #include "broad/broad_internal.h"
 
+#ifdef CD_BROAD_COUNT_OPS
+unsigned long long cdBroadOpCounts[CD_BROAD_OP_COUNT];
+#endif
+
 const char* cdBroadPhaseTypeName(cdBroadPhaseType type)
 {
 	switch (type)
