@@ -278,13 +278,19 @@ size_t broadSceneCountPairs(const BroadScene* scene)
 
 /* ---- pair list ---------------------------------------------------------------------------- */
 
+enum
+{
+	BROAD_PAIR_MOVED = 1,
+	BROAD_PAIR_CHANGED = 2
+};
+
 bool broadPairListInit(BroadPairList* list, int boxCount)
 {
 	memset(list, 0, sizeof *list);
 	list->boxCount = boxCount < 0 ? 0 : boxCount;
-	list->moved = calloc((size_t)list->boxCount + 1, 1);
-	list->movedList = malloc(((size_t)list->boxCount + 1) * sizeof(int));
-	if (!list->moved || !list->movedList)
+	list->flags = calloc((size_t)list->boxCount + 1, 1);
+	list->flaggedList = malloc(((size_t)list->boxCount + 1) * sizeof(int));
+	if (!list->flags || !list->flaggedList)
 	{
 		broadPairListFree(list);
 		return false;
@@ -296,23 +302,35 @@ void broadPairListFree(BroadPairList* list)
 {
 	free(list->pairs);
 	free(list->fresh);
-	free(list->moved);
-	free(list->movedList);
+	free(list->merged);
+	free(list->flags);
+	free(list->flaggedList);
 	memset(list, 0, sizeof *list);
 }
 
-void broadPairListMarkMoved(BroadPairList* list, int index)
+static void markBox(BroadPairList* list, int index, uint8_t flag)
 {
 	if (index < 0 || index >= list->boxCount)
 	{
 		list->failed = true;
 		return;
 	}
-	if (!list->moved[index])
+	if (list->flags[index] == 0)
 	{
-		list->moved[index] = 1;
-		list->movedList[list->movedCount++] = index;
+		list->flaggedList[list->flaggedCount++] = index;
 	}
+	list->flags[index] |= flag;
+}
+
+void broadPairListMarkMoved(BroadPairList* list, int index)
+{
+	markBox(list, index, BROAD_PAIR_MOVED);
+}
+
+void broadPairListMarkChanged(BroadPairList* list, int index)
+{
+	list->tracksChanges = true;
+	markBox(list, index, BROAD_PAIR_CHANGED);
 }
 
 static bool reservePairs(BroadPair** pairs, size_t* capacity, size_t needed)
@@ -342,47 +360,84 @@ void broadPairListAdd(BroadPairList* list, int a, int b)
 	}
 	list->fresh[list->freshCount].a = a;
 	list->fresh[list->freshCount].b = b;
+	list->fresh[list->freshCount].overlapping = 0;
 	++list->freshCount;
+}
+
+static int comparePairs(const void* a, const void* b)
+{
+	const BroadPair* x = a;
+	const BroadPair* y = b;
+	if (x->a != y->a)
+	{
+		return x->a < y->a ? -1 : 1;
+	}
+	return (x->b > y->b) - (x->b < y->b);
+}
+
+static bool pairBefore(BroadPair x, BroadPair y)
+{
+	return x.a < y.a || (x.a == y.a && x.b < y.b);
 }
 
 size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 {
-	size_t count = 0, kept = 0;
-	for (size_t k = 0; k < list->pairCount; ++k)
+	/* Kept in (a, b) order by merging: the reported pairs are few, sorting them is cheap. */
+	if (list->freshCount > 1)
 	{
-		BroadPair pair = list->pairs[k];
-		if (list->moved[pair.a] || list->moved[pair.b])
-		{
-			continue;
-		}
-		count += broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]) ? 1u : 0u;
-		list->pairs[kept++] = pair;
+		qsort(list->fresh, list->freshCount, sizeof *list->fresh, comparePairs);
 	}
-	list->pairCount = kept;
-	if (!reservePairs(&list->pairs, &list->pairCapacity, kept + list->freshCount))
+	size_t count = 0;
+	if (!reservePairs(&list->merged, &list->mergedCapacity, list->pairCount + list->freshCount))
 	{
 		list->failed = true;
 	}
 	else
 	{
-		for (size_t k = 0; k < list->freshCount; ++k)
+		size_t out = 0, k = 0, f = 0;
+		while (k < list->pairCount || f < list->freshCount)
 		{
-			BroadPair pair = list->fresh[k];
-			count += broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]) ? 1u : 0u;
-			list->pairs[list->pairCount++] = pair;
+			BroadPair pair;
+			if (f == list->freshCount || (k < list->pairCount && pairBefore(list->pairs[k], list->fresh[f])))
+			{
+				pair = list->pairs[k++];
+				int flags = list->flags[pair.a] | list->flags[pair.b];
+				if (flags & BROAD_PAIR_MOVED)
+				{
+					continue;
+				}
+				if ((flags & BROAD_PAIR_CHANGED) || !list->tracksChanges)
+				{
+					pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
+				}
+			}
+			else
+			{
+				pair = list->fresh[f++];
+				pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
+			}
+			count += pair.overlapping ? 1u : 0u;
+			list->merged[out++] = pair;
 		}
+		BroadPair* swapPairs = list->pairs;
+		size_t swapCapacity = list->pairCapacity;
+		list->pairs = list->merged;
+		list->pairCapacity = list->mergedCapacity;
+		list->pairCount = out;
+		list->merged = swapPairs;
+		list->mergedCapacity = swapCapacity;
 	}
 	list->freshCount = 0;
-	for (int k = 0; k < list->movedCount; ++k)
+	for (int k = 0; k < list->flaggedCount; ++k)
 	{
-		list->moved[list->movedList[k]] = 0;
+		list->flags[list->flaggedList[k]] = 0;
 	}
-	list->movedCount = 0;
+	list->flaggedCount = 0;
 	return list->failed ? SIZE_MAX : count;
 }
 
 size_t broadPairListBytes(const BroadPairList* list)
 {
-	return (list->pairCapacity + list->freshCapacity) * sizeof(BroadPair) + (size_t)list->boxCount + 1 +
-		   ((size_t)list->boxCount + 1) * sizeof(int);
+	return (list->pairCapacity + list->freshCapacity + list->mergedCapacity) * sizeof(BroadPair) +
+		   (size_t)list->boxCount + 1 + ((size_t)list->boxCount + 1) * sizeof(int);
 }

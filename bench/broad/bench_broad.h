@@ -121,9 +121,15 @@ class PairList
 	}
 	// Drops the pairs with a moved side, appends the reported ones and forgets the moves.
 	// Returns the number of pairs whose tight boxes overlap.
-	size_t EndFrame(const View<Box>& boxes)
+	// The scene's moved boxes are the ones whose tight boxes changed: only their kept pairs are
+	// compared again.
+	size_t EndFrame(const Scene& scene)
 	{
-		return broadPairListEndFrame(&list_, boxes.data);
+		for (int i : scene.moved)
+		{
+			broadPairListMarkChanged(&list_, i);
+		}
+		return broadPairListEndFrame(&list_, scene.boxes.data);
 	}
 	size_t Bytes() const
 	{

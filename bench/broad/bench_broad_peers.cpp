@@ -358,7 +358,7 @@ class Box2dAdapter : public Adapter
 			}
 		}
 		broadphase_.UpdatePairs(this);
-		size_t count = pairs_.EndFrame(scene.boxes);
+		size_t count = pairs_.EndFrame(scene);
 		return count;
 	}
 	struct B2Callback
