@@ -11,7 +11,7 @@
 
 #ifdef CD_BROAD_COUNT_OPS
 // The library's debug operation counters (src/broad/broad_internal.h, same macro).
-extern "C" unsigned long long cdBroadOpCounts[6];
+extern "C" unsigned long long cdBroadOpCounts[8];
 #endif
 
 namespace bench
@@ -164,8 +164,8 @@ class CollideAdapter : public Adapter
 		size_t count = 0;
 		using Clock = std::chrono::steady_clock;
 #ifdef CD_BROAD_COUNT_OPS
-		unsigned long long opsBefore[6];
-		std::copy(cdBroadOpCounts, cdBroadOpCounts + 6, opsBefore);
+		unsigned long long opsBefore[8];
+		std::copy(cdBroadOpCounts, cdBroadOpCounts + 8, opsBefore);
 #endif
 		Clock::time_point t0 = Clock::now(), t1, t2;
 		size_t movedNow = 0;
@@ -212,7 +212,7 @@ class CollideAdapter : public Adapter
 			++frames_;
 		}
 #ifdef CD_BROAD_COUNT_OPS
-		for (int k = 0; k < 6; ++k)
+		for (int k = 0; k < 8; ++k)
 		{
 			ops_[k] += cdBroadOpCounts[k] - opsBefore[k];
 		}
@@ -226,7 +226,7 @@ class CollideAdapter : public Adapter
 		moved_ = 0;
 		moveSeconds_ = pairSeconds_ = sweepSeconds_ = 0.0;
 #ifdef CD_BROAD_COUNT_OPS
-		std::fill(ops_, ops_ + 6, 0ull);
+		std::fill(ops_, ops_ + 8, 0ull);
 #endif
 	}
 
@@ -302,6 +302,15 @@ class CollideAdapter : public Adapter
 						  per(ops_[3], ops_[0]), per(ops_[4], frames_), per(ops_[5], ops_[4]));
 			extra += text;
 		}
+		if (ops_[6] > 0)
+		{
+			// Grid queries are one per moved proxy in UpdatePairs (the structure-wide sweep is not
+			// counted): per changed fat box.
+			double perMoved = moved_ > 0 ? 1.0 / double(moved_) : 0.0;
+			std::snprintf(text, sizeof text, " | grid per changed box: cells %.2f, entries %.2f",
+						  double(ops_[6]) * perMoved, double(ops_[7]) * perMoved);
+			extra += text;
+		}
 #endif
 		return extra;
 	}
@@ -318,7 +327,7 @@ class CollideAdapter : public Adapter
 	size_t moved_ = 0;
 	double moveSeconds_ = 0, pairSeconds_ = 0, sweepSeconds_ = 0;
 #ifdef CD_BROAD_COUNT_OPS
-	unsigned long long ops_[6] = {};
+	unsigned long long ops_[8] = {};
 #endif
 };
 

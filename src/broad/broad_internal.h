@@ -28,6 +28,8 @@ enum
 	CD_BROAD_OP_TREE_REFIT,		  /* refit steps (each may rotate) */
 	CD_BROAD_OP_TREE_QUERIES,	  /* TreeQuery calls */
 	CD_BROAD_OP_TREE_QUERY_NODES, /* nodes read by queries */
+	CD_BROAD_OP_GRID_CELLS,		  /* grid cells looked up by queries */
+	CD_BROAD_OP_GRID_ENTRIES,	  /* grid entries read by queries */
 	CD_BROAD_OP_COUNT
 };
 extern unsigned long long cdBroadOpCounts[CD_BROAD_OP_COUNT];
