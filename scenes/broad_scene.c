@@ -302,7 +302,6 @@ void broadPairListFree(BroadPairList* list)
 {
 	free(list->pairs);
 	free(list->fresh);
-	free(list->merged);
 	free(list->flags);
 	free(list->flaggedList);
 	memset(list, 0, sizeof *list);
@@ -364,68 +363,38 @@ void broadPairListAdd(BroadPairList* list, int a, int b)
 	++list->freshCount;
 }
 
-static int comparePairs(const void* a, const void* b)
-{
-	const BroadPair* x = a;
-	const BroadPair* y = b;
-	if (x->a != y->a)
-	{
-		return x->a < y->a ? -1 : 1;
-	}
-	return (x->b > y->b) - (x->b < y->b);
-}
-
-static bool pairBefore(BroadPair x, BroadPair y)
-{
-	return x.a < y.a || (x.a == y.a && x.b < y.b);
-}
-
 size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 {
-	/* Kept in (a, b) order by merging: the reported pairs are few, sorting them is cheap. */
-	if (list->freshCount > 1)
+	size_t count = 0, kept = 0;
+	for (size_t k = 0; k < list->pairCount; ++k)
 	{
-		qsort(list->fresh, list->freshCount, sizeof *list->fresh, comparePairs);
+		BroadPair pair = list->pairs[k];
+		int flags = list->flags[pair.a] | list->flags[pair.b];
+		if (flags & BROAD_PAIR_MOVED)
+		{
+			continue;
+		}
+		if ((flags & BROAD_PAIR_CHANGED) || !list->tracksChanges)
+		{
+			pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
+		}
+		count += pair.overlapping ? 1u : 0u;
+		list->pairs[kept++] = pair;
 	}
-	size_t count = 0;
-	if (!reservePairs(&list->merged, &list->mergedCapacity, list->pairCount + list->freshCount))
+	list->pairCount = kept;
+	if (!reservePairs(&list->pairs, &list->pairCapacity, kept + list->freshCount))
 	{
 		list->failed = true;
 	}
 	else
 	{
-		size_t out = 0, k = 0, f = 0;
-		while (k < list->pairCount || f < list->freshCount)
+		for (size_t k = 0; k < list->freshCount; ++k)
 		{
-			BroadPair pair;
-			if (f == list->freshCount || (k < list->pairCount && pairBefore(list->pairs[k], list->fresh[f])))
-			{
-				pair = list->pairs[k++];
-				int flags = list->flags[pair.a] | list->flags[pair.b];
-				if (flags & BROAD_PAIR_MOVED)
-				{
-					continue;
-				}
-				if ((flags & BROAD_PAIR_CHANGED) || !list->tracksChanges)
-				{
-					pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
-				}
-			}
-			else
-			{
-				pair = list->fresh[f++];
-				pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
-			}
+			BroadPair pair = list->fresh[k];
+			pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
 			count += pair.overlapping ? 1u : 0u;
-			list->merged[out++] = pair;
+			list->pairs[list->pairCount++] = pair;
 		}
-		BroadPair* swapPairs = list->pairs;
-		size_t swapCapacity = list->pairCapacity;
-		list->pairs = list->merged;
-		list->pairCapacity = list->mergedCapacity;
-		list->pairCount = out;
-		list->merged = swapPairs;
-		list->mergedCapacity = swapCapacity;
 	}
 	list->freshCount = 0;
 	for (int k = 0; k < list->flaggedCount; ++k)
@@ -433,11 +402,12 @@ size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 		list->flags[list->flaggedList[k]] = 0;
 	}
 	list->flaggedCount = 0;
+	list->tracksChanges = false;
 	return list->failed ? SIZE_MAX : count;
 }
 
 size_t broadPairListBytes(const BroadPairList* list)
 {
-	return (list->pairCapacity + list->freshCapacity + list->mergedCapacity) * sizeof(BroadPair) +
-		   (size_t)list->boxCount + 1 + ((size_t)list->boxCount + 1) * sizeof(int);
+	return (list->pairCapacity + list->freshCapacity) * sizeof(BroadPair) + (size_t)list->boxCount + 1 +
+		   ((size_t)list->boxCount + 1) * sizeof(int);
 }

@@ -99,7 +99,7 @@ size_t broadSceneCountPairs(const BroadScene* scene);
  * involve a moved proxy (collide's and Box2D's UpdatePairs), kept the way a physics engine keeps
  * its contact list: pairs of two unmoved proxies stay as they were (their fat boxes did not
  * change), pairs with a moved side are dropped and come back among the reported ones if they
- * still overlap. Plain arrays, no lookups; one linear merge per frame. Indices are the scene's box indices.
+ * still overlap. Plain arrays, no lookups. Indices are the scene's box indices.
  */
 typedef struct BroadPair
 {
@@ -113,12 +113,10 @@ typedef struct BroadPairList
 	size_t pairCount, pairCapacity;
 	BroadPair* fresh;
 	size_t freshCount, freshCapacity;
-	BroadPair* merged; /* the next frame's list, swapped with pairs */
-	size_t mergedCapacity;
 	uint8_t* flags;	  /* per box: BROAD_PAIR_MOVED, BROAD_PAIR_CHANGED */
 	int* flaggedList; /* the boxes with flags set, to clear them */
 	int flaggedCount, boxCount;
-	bool tracksChanges; /* MarkChanged was used: unchanged pairs reuse their comparison */
+	bool tracksChanges; /* MarkChanged was used this frame: unchanged pairs reuse their comparison */
 	bool failed;		/* memory ran out: counts are no longer complete */
 } BroadPairList;
 
@@ -128,14 +126,15 @@ void broadPairListFree(BroadPairList* list);
 /* The structure reported box `index` as moved: its pairs are dropped and come back reported. */
 void broadPairListMarkMoved(BroadPairList* list, int index);
 /* The tight box `index` changed this frame (moved or not in the structure): its kept pairs are
- * compared again. Once a caller uses this, it must mark every changed box every frame: the other
- * kept pairs then reuse their last comparison. A list never told compares every pair. */
+ * compared again. A caller that marks one changed box in a frame must mark all of them in that
+ * frame: the other kept pairs then reuse their last comparison. In a frame without marks every
+ * pair is compared (cheaper when most boxes changed: no marks to set). */
 void broadPairListMarkChanged(BroadPairList* list, int index);
 void broadPairListAdd(BroadPairList* list, int a, int b);
-/* Drops the pairs with a moved side, merges in the reported ones and forgets the marks. Returns
+/* Drops the pairs with a moved side, appends the reported ones and forgets the marks. Returns
  * the number of pairs whose tight boxes overlap (SIZE_MAX once memory has run out). One linear
- * merge per frame; the list stays sorted by (a, b), and only pairs with a changed box read the
- * boxes (reading both boxes of every pair cost a cache miss per pair at 1M boxes). */
+ * pass; with marks, only pairs with a changed box read the boxes (reading both boxes of every
+ * pair costs a cache miss per pair at 1M boxes). */
 size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes);
 /* Bytes the list holds (the bench subtracts them from the structure's heap growth). */
 size_t broadPairListBytes(const BroadPairList* list);

@@ -121,13 +121,16 @@ class PairList
 	}
 	// Drops the pairs with a moved side, appends the reported ones and forgets the moves.
 	// Returns the number of pairs whose tight boxes overlap.
-	// The scene's moved boxes are the ones whose tight boxes changed: only their kept pairs are
-	// compared again.
+	// The scene's moved boxes are the ones whose tight boxes changed: when they are few (the mix
+	// scene), only their kept pairs are compared again; when most moved, every pair is.
 	size_t EndFrame(const Scene& scene)
 	{
-		for (int i : scene.moved)
+		if (8 * scene.moved.count < scene.boxes.count)
 		{
-			broadPairListMarkChanged(&list_, i);
+			for (int i : scene.moved)
+			{
+				broadPairListMarkChanged(&list_, i);
+			}
 		}
 		return broadPairListEndFrame(&list_, scene.boxes.data);
 	}
