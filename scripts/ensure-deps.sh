@@ -19,7 +19,7 @@ collide_missing_packages() {
 		command -v c++ >/dev/null 2>&1 || missing+=(g++)
 		# The peers: benchmark columns and differential tests always run against them.
 		local peer
-		for peer in libbullet-dev libfcl-dev libbox2d-dev libccd-dev; do
+		for peer in libbullet-dev libfcl-dev libbox2d-dev libccd-dev libqhull-dev; do
 			dpkg -s "$peer" >/dev/null 2>&1 || missing+=("$peer")
 		done
 	fi
