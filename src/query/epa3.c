@@ -3,6 +3,8 @@
  * sees that belong to only one of them. */
 #include "epa3.h"
 
+#include "sat3_support.h"
+
 #define MAX_VERTICES (CD3_EPA_MAX_ITERATIONS + 8)
 #define MAX_FACES (2 * MAX_VERTICES)
 #define MAX_HORIZON (3 * MAX_FACES)
@@ -23,33 +25,42 @@ cd3Vec cd3PolytopeSupport(const void* polytope, cd3Vec direction)
 {
 	const cd3Polytope* p = (const cd3Polytope*)polytope;
 	cd3Vec local = cd3InvRotateVector(p->transform.q, direction);
-	int best = 0;
-	cdReal highest = cd3Dot(local, p->vertices[0]);
-	for (int i = 1; i < p->vertexCount; ++i)
-	{
-		cdReal d = cd3Dot(local, p->vertices[i]);
-		if (d > highest)
-		{
-			highest = d;
-			best = i;
-		}
-	}
+	int best = cd3SupportIndex(p->vertices, p->vertexCount, local);
 	return cd3TransformPoint(p->transform, p->vertices[best]);
 }
 
+/* Two polytopes (the common case) are worked on in A's frame: A's support is a bare scan, B's
+ * takes one rotation by the relative matrix each way; the answer goes back to world space at the
+ * end. Other shapes go through their support functions in world space. */
 typedef struct Context
 {
 	const void* a;
 	const void* b;
 	cd3SupportFcn* supportA;
 	cd3SupportFcn* supportB;
+	const cd3Polytope* polytopeA; /* both set: the polytope path */
+	const cd3Polytope* polytopeB;
+	cd3Mat33 rotationB; /* B local -> A local */
+	cd3Vec translationB;
 } Context;
 
 static Vertex Support(const Context* c, cd3Vec d)
 {
 	Vertex v;
-	v.a = c->supportA(c->a, d);
-	v.b = c->supportB(c->b, cd3Neg(d));
+	if (c->polytopeA != NULL)
+	{
+		const cd3Polytope* pa = c->polytopeA;
+		const cd3Polytope* pb = c->polytopeB;
+		v.a = pa->vertices[cd3SupportIndex(pa->vertices, pa->vertexCount, d)];
+		cd3Vec inB = cd3Neg(cd3MulMTV(c->rotationB, d));
+		cd3Vec vb = pb->vertices[cd3SupportIndex(pb->vertices, pb->vertexCount, inB)];
+		v.b = cd3Add(cd3MulMV(c->rotationB, vb), c->translationB);
+	}
+	else
+	{
+		v.a = c->supportA(c->a, d);
+		v.b = c->supportB(c->b, cd3Neg(d));
+	}
 	v.w = cd3Sub(v.a, v.b);
 	return v;
 }
@@ -215,7 +226,8 @@ static void Barycentric(cd3Vec a, cd3Vec b, cd3Vec c, cd3Vec p, cdReal* u, cdRea
 	*u = CD_R(1.0) - *v - *w;
 }
 
-cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3SupportFcn* supportB)
+/* GJK and EPA in the context's frame. */
+static cd3Penetration Run(const Context* c)
 {
 	cd3Penetration out;
 	out.overlapping = false;
@@ -224,12 +236,11 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 	out.pointA = out.pointB = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	out.iterations = 0;
 	out.hitIterationCap = false;
-	Context c = {a, b, supportA, supportB};
 
 	Vertex simplex[4];
 	int count = 1;
 	cd3Vec d = cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.0));
-	simplex[0] = Support(&c, d);
+	simplex[0] = Support(c, d);
 	d = cd3Neg(simplex[0].w);
 	bool enclosed = false;
 	int gjkIteration = 0;
@@ -240,7 +251,7 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 		{
 			break; /* the origin is on the simplex: touching, or inside a flat simplex */
 		}
-		Vertex v = Support(&c, d);
+		Vertex v = Support(c, d);
 		if (cd3Dot(v.w, d) < CD_R(0.0))
 		{
 			return out; /* separated along d */
@@ -274,7 +285,7 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 										  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 		for (int k = 0; k < 6 && vertexCount < 4; ++k)
 		{
-			Vertex v = Support(&c, cd3MakeVec(axes[k][0], axes[k][1], axes[k][2]));
+			Vertex v = Support(c, cd3MakeVec(axes[k][0], axes[k][1], axes[k][2]));
 			bool fresh = true;
 			for (int i = 0; i < vertexCount; ++i)
 			{
@@ -341,7 +352,7 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 		}
 		++out.iterations;
 		Face f = faces[best];
-		Vertex w = Support(&c, f.normal);
+		Vertex w = Support(c, f.normal);
 		cdReal gain = cd3Dot(f.normal, w.w) - f.distance;
 		cdReal scale = cdMax(cd3Length(cd3Abs(w.w)), f.distance);
 		if (gain <= CD_R(64.0) * CD_REAL_EPSILON * scale)
@@ -354,12 +365,12 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 		int kept = 0;
 		for (int i = 0; i < faceCount; ++i)
 		{
-			Face g = faces[i];
-			if (cd3Dot(g.normal, cd3Sub(w.w, vertices[g.v[0]].w)) > CD_R(0.0))
+			const Face* g = &faces[i];
+			if (cd3Dot(g->normal, cd3Sub(w.w, vertices[g->v[0]].w)) > CD_R(0.0))
 			{
 				for (int e = 0; e < 3; ++e)
 				{
-					int p = g.v[e], q = g.v[(e + 1) % 3];
+					int p = g->v[e], q = g->v[(e + 1) % 3];
 					int found = -1;
 					for (int h = 0; h < horizonCount; ++h)
 					{
@@ -385,7 +396,11 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 			}
 			else
 			{
-				faces[kept++] = g;
+				if (kept != i)
+				{
+					faces[kept] = *g;
+				}
+				++kept;
 			}
 		}
 		faceCount = kept;
@@ -415,5 +430,30 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 						cd3Scale(t, vertices[f.v[2]].a));
 	out.pointB = cd3Add(cd3Add(cd3Scale(u, vertices[f.v[0]].b), cd3Scale(v, vertices[f.v[1]].b)),
 						cd3Scale(t, vertices[f.v[2]].b));
+	return out;
+}
+
+cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3SupportFcn* supportB)
+{
+	Context c;
+	c.a = a;
+	c.b = b;
+	c.supportA = supportA;
+	c.supportB = supportB;
+	c.polytopeA = c.polytopeB = NULL;
+	if (supportA != cd3PolytopeSupport || supportB != cd3PolytopeSupport)
+	{
+		return Run(&c);
+	}
+	c.polytopeA = (const cd3Polytope*)a;
+	c.polytopeB = (const cd3Polytope*)b;
+	cd3Transform rel = cd3InvMulTransforms(c.polytopeA->transform, c.polytopeB->transform);
+	c.rotationB = cd3MakeMatFromQuat(rel.q);
+	c.translationB = rel.p;
+	cd3Penetration out = Run(&c);
+	cd3Transform frame = c.polytopeA->transform;
+	out.normal = cd3RotateVector(frame.q, out.normal);
+	out.pointA = cd3TransformPoint(frame, out.pointA);
+	out.pointB = cd3TransformPoint(frame, out.pointB);
 	return out;
 }

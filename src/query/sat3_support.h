@@ -1,0 +1,97 @@
+/* collide (internal): the support vertex of a point set, the inner loop of EPA and of the
+ * incident-face search on large hulls. A hull of 32 vertices is scanned some twenty times per
+ * contact, and a scalar arg-max over it mispredicts a branch on almost every new maximum, so the
+ * float build on SSE2 scans four vertices at a time without branches (transposing them from the
+ * vertex array as it goes: no copy, any count). Both paths compute each dot product in the order
+ * of cd3Dot and return the first vertex of the largest dot product, so they give the same index
+ * bit for bit. Not installed. */
+#ifndef COLLIDE_SAT3_SUPPORT_H
+#define COLLIDE_SAT3_SUPPORT_H
+
+#include "collide/math3.h"
+
+#if !CD_DOUBLE && defined(__SSE2__)
+#include <emmintrin.h>
+#define CD3_SUPPORT_SSE 1
+#else
+#define CD3_SUPPORT_SSE 0
+#endif
+
+#if CD3_SUPPORT_SSE
+/* The dot products of four consecutive vertices (12 floats from f) with the direction. */
+static inline __m128 cd3SupportDots4(const float* f, __m128 dx, __m128 dy, __m128 dz)
+{
+	/* a0 = x0 y0 z0 x1, a1 = y1 z1 x2 y2, a2 = z2 x3 y3 z3 */
+	__m128 a0 = _mm_loadu_ps(f), a1 = _mm_loadu_ps(f + 4), a2 = _mm_loadu_ps(f + 8);
+	__m128 x23 = _mm_shuffle_ps(a1, a2, _MM_SHUFFLE(1, 1, 2, 2));
+	__m128 x = _mm_shuffle_ps(a0, x23, _MM_SHUFFLE(2, 0, 3, 0));
+	__m128 y01 = _mm_shuffle_ps(a0, a1, _MM_SHUFFLE(0, 0, 1, 1));
+	__m128 y23 = _mm_shuffle_ps(a1, a2, _MM_SHUFFLE(2, 2, 3, 3));
+	__m128 y = _mm_shuffle_ps(y01, y23, _MM_SHUFFLE(2, 0, 2, 0));
+	__m128 z01 = _mm_shuffle_ps(a0, a1, _MM_SHUFFLE(1, 1, 2, 2));
+	__m128 z = _mm_shuffle_ps(z01, a2, _MM_SHUFFLE(3, 0, 2, 0));
+	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, x), _mm_mul_ps(dy, y)), _mm_mul_ps(dz, z));
+}
+#endif
+
+/* Scalar tail: continues the first-maximum scan from index `start`. */
+static inline int cd3SupportIndexScalar(const cd3Vec* vertices, int start, int count, cd3Vec direction,
+										int best, cdReal highest)
+{
+	for (int i = start; i < count; ++i)
+	{
+		cdReal d = cd3Dot(direction, vertices[i]);
+		bool higher = d > highest;
+		best = higher ? i : best;
+		highest = higher ? d : highest;
+	}
+	return best;
+}
+
+/* The index of the first vertex with the largest dot product with `direction` (count >= 1). */
+static inline int cd3SupportIndex(const cd3Vec* vertices, int count, cd3Vec direction)
+{
+#if CD3_SUPPORT_SSE
+	_Static_assert(sizeof(cd3Vec) == 3 * sizeof(float), "cd3Vec must be three packed floats");
+	if (count >= 8)
+	{
+		const float* f = &vertices[0].x;
+		__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y), dz = _mm_set1_ps(direction.z);
+		__m128i index = _mm_set_epi32(3, 2, 1, 0);
+		__m128i four = _mm_set1_epi32(4);
+		__m128 best = cd3SupportDots4(f, dx, dy, dz);
+		__m128i bestIndex = index;
+		int groups = count / 4;
+		for (int g = 1; g < groups; ++g)
+		{
+			f += 12;
+			index = _mm_add_epi32(index, four);
+			__m128 d = cd3SupportDots4(f, dx, dy, dz);
+			__m128 higher = _mm_cmpgt_ps(d, best);
+			best = _mm_or_ps(_mm_and_ps(higher, d), _mm_andnot_ps(higher, best));
+			__m128i mask = _mm_castps_si128(higher);
+			bestIndex = _mm_or_si128(_mm_and_si128(mask, index), _mm_andnot_si128(mask, bestIndex));
+		}
+		float values[4];
+		int32_t indices[4];
+		_mm_storeu_ps(values, best);
+		_mm_storeu_si128((__m128i*)(void*)indices, bestIndex);
+		/* Lane k saw the indices k mod 4 and kept its first maximum; across lanes the first
+		 * maximum is the smallest index among the largest values. */
+		int winner = indices[0];
+		float highest = values[0];
+		for (int k = 1; k < 4; ++k)
+		{
+			if (values[k] > highest || (values[k] == highest && indices[k] < winner))
+			{
+				highest = values[k];
+				winner = indices[k];
+			}
+		}
+		return cd3SupportIndexScalar(vertices, groups * 4, count, direction, winner, highest);
+	}
+#endif
+	return cd3SupportIndexScalar(vertices, 1, count, direction, 0, cd3Dot(direction, vertices[0]));
+}
+
+#endif
