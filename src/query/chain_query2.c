@@ -1,0 +1,368 @@
+/* collide: queries on 2D chains: box query, one-sided ray cast and contact manifolds.
+ *
+ * Queries work in the chain's local frame: the shape, ray or box is brought into it once, the
+ * bounding hierarchy (see geometry/chain2.c) is walked depth first, left child first, so leaves
+ * come out in increasing segment order, and results go back to world space. */
+#include "../geometry/chain2_internal.h"
+
+/* Two stack entries per level are enough for a depth-first walk that pushes both children. */
+#define STACK_SIZE (2 * CHAIN_MAX_LEVELS)
+
+typedef struct Node
+{
+	int level, index;
+} Node;
+
+static bool BoxesOverlap(cd2Aabb a, cd2Aabb b)
+{
+	return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+
+/* The local box that encloses the world box `bounds` seen from the chain's frame. */
+static cd2Aabb LocalBounds(cd2Transform t, cd2Aabb bounds)
+{
+	cd2Vec center = cd2InvTransformPoint(t, cd2AabbCenter(bounds));
+	cd2Vec half = cd2AabbHalfExtents(bounds);
+	cdReal c = cdAbs(t.q.c), s = cdAbs(t.q.s);
+	cd2Vec extent = {c * half.x + s * half.y, s * half.x + c * half.y};
+	cd2Aabb local = {cd2Sub(center, extent), cd2Add(center, extent)};
+	return local;
+}
+
+/* Visits the segments whose boxes overlap `box` in increasing order until fcn returns false. */
+static void Query(const cd2Chain* chain, cd2Aabb box, cd2ChainQueryFcn* fcn, void* context)
+{
+	Node stack[STACK_SIZE];
+	int top = 0;
+	stack[top++] = (Node){chain->levelCount - 1, 0};
+	while (top > 0)
+	{
+		Node node = stack[--top];
+		if (!BoxesOverlap(chain->bounds[chain->levelOffset[node.level] + node.index], box))
+		{
+			continue;
+		}
+		if (node.level == 0)
+		{
+			if (!fcn(node.index, context))
+			{
+				return;
+			}
+			continue;
+		}
+		int child = 2 * node.index;
+		if (child + 1 < chain->levelSize[node.level - 1])
+		{
+			stack[top++] = (Node){node.level - 1, child + 1};
+		}
+		stack[top++] = (Node){node.level - 1, child};
+	}
+}
+
+void cd2Chain_QueryAabb(const cd2Chain* chain, cd2Transform chainTransform, cd2Aabb bounds,
+						cd2ChainQueryFcn* fcn, void* context)
+{
+	CD_ASSERT(chain != NULL && fcn != NULL);
+	Query(chain, LocalBounds(chainTransform, bounds), fcn, context);
+}
+
+/* ---- ray cast ----------------------------------------------------------------------------------- */
+
+/* Slab test of the segment origin + t * d, t in [0, maxFraction], against a closed box. */
+static bool RayHitsBox(cd2Aabb box, cd2Vec origin, cd2Vec d, cdReal maxFraction)
+{
+	cdReal lower = CD_R(0.0), upper = maxFraction;
+	const cdReal o[2] = {origin.x, origin.y}, v[2] = {d.x, d.y};
+	const cdReal lo[2] = {box.min.x, box.min.y}, hi[2] = {box.max.x, box.max.y};
+	for (int axis = 0; axis < 2; ++axis)
+	{
+		if (v[axis] == CD_R(0.0))
+		{
+			if (o[axis] < lo[axis] || o[axis] > hi[axis])
+			{
+				return false;
+			}
+			continue;
+		}
+		cdReal inverse = CD_R(1.0) / v[axis];
+		cdReal t1 = (lo[axis] - o[axis]) * inverse, t2 = (hi[axis] - o[axis]) * inverse;
+		if (t1 > t2)
+		{
+			cdReal t = t1;
+			t1 = t2;
+			t2 = t;
+		}
+		/* Widened by a few ulps so that a ray grazing a flat segment's zero-height box is kept. */
+		cdReal slack = CD_R(4.0) * CD_REAL_EPSILON * (cdAbs(t1) + cdAbs(t2));
+		lower = cdMax(lower, t1 - slack);
+		upper = cdMin(upper, t2 + slack);
+		if (lower > upper)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* One-sided hit of origin + t * d on p1 -> p2: the ray must move against the segment's right
+ * normal, start on the free side (or on the segment), and cross it within both ends (closed).
+ * Writes the fraction and the unit normal. Everything is in cross products of the inputs, so
+ * nothing divides before the hit is certain. */
+static bool RaycastSegment(cd2Vec p1, cd2Vec p2, cd2Vec origin, cd2Vec d, cdReal maxFraction,
+						   cdReal* fraction, cd2Vec* normal)
+{
+	cd2Vec e = cd2Sub(p2, p1);
+	cdReal denominator = -cd2Cross(d, e); /* |e| * (speed against the normal) */
+	if (!(denominator > CD_R(0.0)))
+	{
+		return false;
+	}
+	cd2Vec r = cd2Sub(origin, p1);
+	cdReal along = cd2Cross(r, e); /* |e| * height of the origin above the segment's line */
+	if (along < CD_R(0.0) || along > maxFraction * denominator)
+	{
+		return false;
+	}
+	cdReal across = cd2Cross(r, d); /* denominator * (where along e the ray crosses, 0..1) */
+	if (across < CD_R(0.0) || across > denominator)
+	{
+		return false;
+	}
+	*fraction = cdMin(along / denominator, maxFraction);
+	*normal = cd2Normalize(cd2RightPerp(e));
+	return true;
+}
+
+bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray ray, cd2RayHit* hit,
+					 int* segmentIndex)
+{
+	CD_ASSERT(chain != NULL && hit != NULL);
+	cd2Vec origin = cd2InvTransformPoint(chainTransform, ray.origin);
+	cd2Vec d = cd2InvRotateVector(chainTransform.q, ray.translation);
+	cdReal best = CD_R(1.0);
+	int bestIndex = -1;
+	cd2Vec bestNormal = CD2_VEC_ZERO;
+
+	Node stack[STACK_SIZE];
+	int top = 0;
+	stack[top++] = (Node){chain->levelCount - 1, 0};
+	while (top > 0)
+	{
+		Node node = stack[--top];
+		if (!RayHitsBox(chain->bounds[chain->levelOffset[node.level] + node.index], origin, d, best))
+		{
+			continue;
+		}
+		if (node.level == 0)
+		{
+			cdReal fraction;
+			cd2Vec normal;
+			if (RaycastSegment(chain->points[node.index], cd2ChainPoint(chain, node.index + 1), origin, d,
+							   best, &fraction, &normal) &&
+				(bestIndex < 0 || fraction < best || (fraction == best && node.index < bestIndex)))
+			{
+				best = fraction;
+				bestIndex = node.index;
+				bestNormal = normal;
+			}
+			continue;
+		}
+		int child = 2 * node.index;
+		if (child + 1 < chain->levelSize[node.level - 1])
+		{
+			stack[top++] = (Node){node.level - 1, child + 1};
+		}
+		stack[top++] = (Node){node.level - 1, child};
+	}
+	if (bestIndex < 0)
+	{
+		return false;
+	}
+	hit->fraction = best;
+	hit->point = cd2MulAdd(ray.origin, best, ray.translation);
+	hit->normal = cd2RotateVector(chainTransform.q, bestNormal);
+	if (segmentIndex != NULL)
+	{
+		*segmentIndex = bestIndex;
+	}
+	return true;
+}
+
+/* ---- manifolds ---------------------------------------------------------------------------------- */
+
+typedef enum LocalKind
+{
+	LOCAL_CIRCLE,
+	LOCAL_CAPSULE,
+	LOCAL_POLYGON
+} LocalKind;
+
+/* The shape in the chain's frame, as one of the three kinds the chain segment functions take. */
+typedef struct LocalShape
+{
+	LocalKind kind;
+	cd2Circle circle;
+	cd2Capsule capsule;
+	cd2Polygon polygon;
+	cd2Aabb bounds;
+} LocalShape;
+
+/* A rectangle center +- ax * hx +- ay * hy as a polygon; a zero size makes it a segment (a
+ * zero-radius capsule, which is a point when both sizes are zero). */
+static void SetRectangle(LocalShape* local, cd2Vec center, cd2Vec ax, cd2Vec ay, cdReal hx, cdReal hy)
+{
+	cd2Vec ex = cd2Scale(hx, ax), ey = cd2Scale(hy, ay);
+	if (hx == CD_R(0.0) || hy == CD_R(0.0))
+	{
+		cd2Vec e = hx == CD_R(0.0) ? ey : ex;
+		local->kind = LOCAL_CAPSULE;
+		local->capsule = (cd2Capsule){cd2Sub(center, e), cd2Add(center, e), CD_R(0.0)};
+		return;
+	}
+	cd2Polygon* p = &local->polygon;
+	local->kind = LOCAL_POLYGON;
+	p->vertices[0] = cd2Sub(cd2Sub(center, ex), ey);
+	p->vertices[1] = cd2Sub(cd2Add(center, ex), ey);
+	p->vertices[2] = cd2Add(cd2Add(center, ex), ey);
+	p->vertices[3] = cd2Add(cd2Sub(center, ex), ey);
+	p->normals[0] = cd2Neg(ay);
+	p->normals[1] = ax;
+	p->normals[2] = ay;
+	p->normals[3] = cd2Neg(ax);
+	p->centroid = center;
+	p->count = 4;
+	p->radius = CD_R(0.0);
+}
+
+static void ToLocal(LocalShape* local, const cd2Shape* shape, cd2Transform t)
+{
+	switch (shape->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			local->kind = LOCAL_CIRCLE;
+			local->circle.center = cd2InvTransformPoint(t, shape->circle.center);
+			local->circle.radius = shape->circle.radius;
+			break;
+		case CD2_SHAPE_CAPSULE:
+			local->kind = LOCAL_CAPSULE;
+			local->capsule.p1 = cd2InvTransformPoint(t, shape->capsule.p1);
+			local->capsule.p2 = cd2InvTransformPoint(t, shape->capsule.p2);
+			local->capsule.radius = shape->capsule.radius;
+			break;
+		case CD2_SHAPE_SEGMENT:
+			local->kind = LOCAL_CAPSULE;
+			local->capsule.p1 = cd2InvTransformPoint(t, shape->segment.p1);
+			local->capsule.p2 = cd2InvTransformPoint(t, shape->segment.p2);
+			local->capsule.radius = CD_R(0.0);
+			break;
+		case CD2_SHAPE_AABB:
+		{
+			cd2Vec ax = cd2InvRotateVector(t.q, cd2MakeVec(CD_R(1.0), CD_R(0.0)));
+			SetRectangle(local, cd2InvTransformPoint(t, cd2AabbCenter(shape->aabb)), ax, cd2LeftPerp(ax),
+						 CD_R(0.5) * (shape->aabb.max.x - shape->aabb.min.x),
+						 CD_R(0.5) * (shape->aabb.max.y - shape->aabb.min.y));
+			break;
+		}
+		case CD2_SHAPE_BOX:
+		{
+			/* Normalized because validators accept rotations slightly off unit length. */
+			cd2Rot q = cd2InvMulRot(t.q, cd2NormalizeRot(shape->box.rotation));
+			cd2Vec ax = cd2MakeVec(q.c, q.s);
+			SetRectangle(local, cd2InvTransformPoint(t, shape->box.center), ax, cd2LeftPerp(ax),
+						 shape->box.halfExtents.x, shape->box.halfExtents.y);
+			break;
+		}
+		default:
+		{
+			const cd2Polygon* world = &shape->polygon;
+			cd2Polygon* p = &local->polygon;
+			local->kind = LOCAL_POLYGON;
+			for (int i = 0; i < world->count; ++i)
+			{
+				p->vertices[i] = cd2InvTransformPoint(t, world->vertices[i]);
+				p->normals[i] = cd2InvRotateVector(t.q, world->normals[i]);
+			}
+			p->centroid = cd2InvTransformPoint(t, world->centroid);
+			p->count = world->count;
+			p->radius = world->radius;
+			break;
+		}
+	}
+
+	switch (local->kind)
+	{
+		case LOCAL_CIRCLE:
+			local->bounds = cd2ComputeCircleAabb(local->circle);
+			break;
+		case LOCAL_CAPSULE:
+			local->bounds = cd2ComputeCapsuleAabb(local->capsule);
+			break;
+		default:
+			local->bounds = cd2ComputePolygonAabb(&local->polygon);
+			break;
+	}
+}
+
+typedef struct CollideContext
+{
+	const cd2Chain* chain;
+	const LocalShape* shape;
+	cd2Transform transform;
+	cdReal speculativeDistance;
+	cd2Manifold* manifolds;
+	int* segmentIndices;
+	int capacity;
+	int count;
+} CollideContext;
+
+static bool CollideSegment(int index, void* userContext)
+{
+	CollideContext* context = (CollideContext*)userContext;
+	cd2ChainSegment segment = cd2GetChainSegment(context->chain, index);
+	const LocalShape* shape = context->shape;
+	cd2Manifold m;
+	switch (shape->kind)
+	{
+		case LOCAL_CIRCLE:
+			m = cd2CollideChainSegmentCircle(&segment, shape->circle, context->speculativeDistance);
+			break;
+		case LOCAL_CAPSULE:
+			m = cd2CollideChainSegmentCapsule(&segment, shape->capsule, context->speculativeDistance);
+			break;
+		default:
+			m = cd2CollideChainSegmentPolygon(&segment, &shape->polygon, context->speculativeDistance);
+			break;
+	}
+	if (m.pointCount == 0)
+	{
+		return true;
+	}
+	cd2Transform t = context->transform;
+	m.normal = cd2RotateVector(t.q, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].point = cd2TransformPoint(t, m.points[i].point);
+	}
+	context->manifolds[context->count] = m;
+	if (context->segmentIndices != NULL)
+	{
+		context->segmentIndices[context->count] = index;
+	}
+	return ++context->count < context->capacity;
+}
+
+int cd2CollideChain(const cd2Chain* chain, cd2Transform chainTransform, const cd2Shape* shape,
+					cdReal speculativeDistance, cd2Manifold* manifolds, int capacity, int* segmentIndices)
+{
+	CD_ASSERT(chain != NULL && shape != NULL && speculativeDistance >= CD_R(0.0));
+	if (capacity <= 0 || manifolds == NULL)
+	{
+		return 0;
+	}
+	LocalShape local;
+	ToLocal(&local, shape, chainTransform);
+	CollideContext context = {chain,	 &local,		 chainTransform, speculativeDistance,
+							  manifolds, segmentIndices, capacity,		 0};
+	Query(chain, cd2AabbInflate(local.bounds, speculativeDistance), CollideSegment, &context);
+	return context.count;
+}
