@@ -21,6 +21,7 @@
 
 #include "epa3.h"
 #include "sat3.h"
+#include "sat3_support.h"
 
 /* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
  * pair over the faces, only when it separates by this much more. */
@@ -183,18 +184,8 @@ static cd3Vec WorldVertex(const cd3Polytope* p, int vertex)
 static int IncidentFace(const cd3Polytope* p, cd3Vec worldNormal)
 {
 	cd3Vec local = cd3InvRotateVector(p->transform.q, worldNormal);
-	int best = 0;
-	cdReal lowest = CD_REAL_MAX;
-	for (int f = 0; f < p->faceCount; ++f)
-	{
-		cdReal d = cd3Dot(p->planes[f].normal, local);
-		if (d < lowest)
-		{
-			lowest = d;
-			best = f;
-		}
-	}
-	return best;
+	cdReal dot;
+	return cd3PlaneSupportIndex(p->planes, p->faceCount, cd3Neg(local), &dot);
 }
 
 /* The incident face for a reference normal: among the faces around the polytope's deepest vertex
@@ -204,17 +195,7 @@ static int IncidentFace(const cd3Polytope* p, cd3Vec worldNormal)
 static int IncidentFaceAtSupport(const cd3Polytope* p, cd3Vec worldNormal)
 {
 	cd3Vec local = cd3InvRotateVector(p->transform.q, worldNormal);
-	int deepest = 0;
-	cdReal lowest = cd3Dot(local, p->vertices[0]);
-	for (int i = 1; i < p->vertexCount; ++i)
-	{
-		cdReal d = cd3Dot(local, p->vertices[i]);
-		if (d < lowest)
-		{
-			lowest = d;
-			deepest = i;
-		}
-	}
+	int deepest = cd3SupportIndex(p->vertices, p->vertexCount, cd3Neg(local));
 	int start = -1;
 	for (int e = 0; e < p->edgeCount; ++e)
 	{
@@ -426,18 +407,7 @@ static cdReal ManifoldMinSeparation(const cd3Manifold* m)
 static int AlignedFace(const cd3Polytope* p, cd3Vec direction, cdReal* cosine)
 {
 	cd3Vec local = cd3InvRotateVector(p->transform.q, direction);
-	int best = -1;
-	*cosine = -CD_REAL_MAX;
-	for (int f = 0; f < p->faceCount; ++f)
-	{
-		cdReal d = cd3Dot(p->planes[f].normal, local);
-		if (d > *cosine)
-		{
-			*cosine = d;
-			best = f;
-		}
-	}
-	return best;
+	return cd3PlaneSupportIndex(p->planes, p->faceCount, local, cosine);
 }
 
 /* Large polytopes: the depth and normal from GJK (apart) or EPA (overlapping, exact on polytopes

@@ -7,6 +7,8 @@
  * half-circle arcs, so their edge pairs are tested by projecting both polytopes instead. */
 #include "sat3.h"
 
+#include "sat3_support.h"
+
 /* Edge pairs whose cross product is shorter than this fraction of |eA| |eB| are parallel: their
  * axis is a face normal (or does not exist) and is covered by the face queries. */
 #define PARALLEL_SINE CD_R(1.0e-5)
@@ -165,17 +167,7 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 			continue;
 		}
 		cd3Vec inQ = cd3InvRotateVector(rel.q, plane.normal);
-		int support = 0;
-		cdReal lowest = cd3Dot(inQ, q->vertices[0]);
-		for (int i = 1; i < q->vertexCount; ++i)
-		{
-			cdReal d = cd3Dot(inQ, q->vertices[i]);
-			if (d < lowest)
-			{
-				lowest = d;
-				support = i;
-			}
-		}
+		int support = cd3SupportIndex(q->vertices, q->vertexCount, cd3Neg(inQ));
 		cdReal separation = cd3Dot(plane.normal, cd3TransformPoint(rel, q->vertices[support])) - plane.offset;
 		if (separation > best)
 		{

@@ -8,7 +8,7 @@
 #ifndef COLLIDE_SAT3_SUPPORT_H
 #define COLLIDE_SAT3_SUPPORT_H
 
-#include "collide/math3.h"
+#include "collide/geometry3.h"
 
 #if !CD_DOUBLE && defined(__SSE2__)
 #include <emmintrin.h>
@@ -48,6 +48,43 @@ static inline int cd3SupportIndexScalar(const cd3Vec* vertices, int start, int c
 	return best;
 }
 
+#if CD3_SUPPORT_SSE
+/* Keeps, lane by lane, the first of the larger values and its index. */
+static inline void cd3SupportKeepHigher(__m128 d, __m128i index, __m128* best, __m128i* bestIndex)
+{
+	__m128 higher = _mm_cmpgt_ps(d, *best);
+	*best = _mm_or_ps(_mm_and_ps(higher, d), _mm_andnot_ps(higher, *best));
+	__m128i mask = _mm_castps_si128(higher);
+	*bestIndex = _mm_or_si128(_mm_and_si128(mask, index), _mm_andnot_si128(mask, *bestIndex));
+}
+
+/* Lane k saw the indices k mod 4 and kept its first maximum; across lanes the first maximum is
+ * the smallest index among the lanes holding the largest value (usually one lane: no branch to
+ * mispredict). */
+static inline int cd3SupportFirstMaximum(__m128 best, __m128i bestIndex, float* highest)
+{
+	__m128 top = _mm_max_ps(best, _mm_shuffle_ps(best, best, _MM_SHUFFLE(1, 0, 3, 2)));
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
+	int lanes = _mm_movemask_ps(_mm_cmpeq_ps(best, top));
+	int32_t indices[4];
+	_mm_storeu_si128((__m128i*)(void*)indices, bestIndex);
+	static const int8_t FIRST_LANE[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	int winner = indices[FIRST_LANE[lanes]];
+	if (lanes & (lanes - 1))
+	{
+		for (int k = 0; k < 4; ++k)
+		{
+			if (((lanes >> k) & 1) && indices[k] < winner)
+			{
+				winner = indices[k];
+			}
+		}
+	}
+	*highest = _mm_cvtss_f32(top);
+	return winner;
+}
+#endif
+
 /* The index of the first vertex with the largest dot product with `direction` (count >= 1). */
 static inline int cd3SupportIndex(const cd3Vec* vertices, int count, cd3Vec direction)
 {
@@ -66,32 +103,65 @@ static inline int cd3SupportIndex(const cd3Vec* vertices, int count, cd3Vec dire
 		{
 			f += 12;
 			index = _mm_add_epi32(index, four);
-			__m128 d = cd3SupportDots4(f, dx, dy, dz);
-			__m128 higher = _mm_cmpgt_ps(d, best);
-			best = _mm_or_ps(_mm_and_ps(higher, d), _mm_andnot_ps(higher, best));
-			__m128i mask = _mm_castps_si128(higher);
-			bestIndex = _mm_or_si128(_mm_and_si128(mask, index), _mm_andnot_si128(mask, bestIndex));
+			cd3SupportKeepHigher(cd3SupportDots4(f, dx, dy, dz), index, &best, &bestIndex);
 		}
-		float values[4];
-		int32_t indices[4];
-		_mm_storeu_ps(values, best);
-		_mm_storeu_si128((__m128i*)(void*)indices, bestIndex);
-		/* Lane k saw the indices k mod 4 and kept its first maximum; across lanes the first
-		 * maximum is the smallest index among the largest values. */
-		int winner = indices[0];
-		float highest = values[0];
-		for (int k = 1; k < 4; ++k)
-		{
-			if (values[k] > highest || (values[k] == highest && indices[k] < winner))
-			{
-				highest = values[k];
-				winner = indices[k];
-			}
-		}
+		float highest;
+		int winner = cd3SupportFirstMaximum(best, bestIndex, &highest);
 		return cd3SupportIndexScalar(vertices, groups * 4, count, direction, winner, highest);
 	}
 #endif
 	return cd3SupportIndexScalar(vertices, 1, count, direction, 0, cd3Dot(direction, vertices[0]));
+}
+
+/* The index of the first plane whose normal has the largest dot product with `direction`
+ * (count >= 1): the face most aligned with a direction. */
+static inline int cd3PlaneSupportIndex(const cd3Plane* planes, int count, cd3Vec direction, cdReal* dot)
+{
+	int start = 1;
+	int best = 0;
+	cdReal highest = cd3Dot(planes[0].normal, direction);
+#if CD3_SUPPORT_SSE
+	_Static_assert(sizeof(cd3Plane) == 4 * sizeof(float), "cd3Plane must be four packed floats");
+	if (count >= 8)
+	{
+		const float* f = &planes[0].normal.x;
+		__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y), dz = _mm_set1_ps(direction.z);
+		__m128i index = _mm_set_epi32(3, 2, 1, 0);
+		__m128i four = _mm_set1_epi32(4);
+		__m128 bestValue = _mm_set1_ps(-CD_REAL_MAX);
+		__m128i bestIndex = index;
+		int groups = count / 4;
+		for (int g = 0; g < groups; ++g, f += 16)
+		{
+			__m128 r0 = _mm_loadu_ps(f), r1 = _mm_loadu_ps(f + 4), r2 = _mm_loadu_ps(f + 8),
+				   r3 = _mm_loadu_ps(f + 12);
+			_MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+			__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(r0, dx), _mm_mul_ps(r1, dy)), _mm_mul_ps(r2, dz));
+			if (g == 0)
+			{
+				bestValue = d;
+			}
+			else
+			{
+				cd3SupportKeepHigher(d, index, &bestValue, &bestIndex);
+			}
+			index = _mm_add_epi32(index, four);
+		}
+		float top;
+		best = cd3SupportFirstMaximum(bestValue, bestIndex, &top);
+		highest = top;
+		start = groups * 4;
+	}
+#endif
+	for (int i = start; i < count; ++i)
+	{
+		cdReal d = cd3Dot(planes[i].normal, direction);
+		bool higher = d > highest;
+		best = higher ? i : best;
+		highest = higher ? d : highest;
+	}
+	*dot = highest;
+	return best;
 }
 
 #endif
