@@ -68,11 +68,18 @@ void cd2Chain_QueryAabb(const cd2Chain* chain, cd2Transform chainTransform, cd2A
 
 /* ---- ray cast ----------------------------------------------------------------------------------- */
 
+/* A ray in the chain's frame, with what the slab test needs precomputed. */
+typedef struct LocalRay
+{
+	cd2Vec origin, d;
+	cdReal inverse[2]; /* 1 / d per axis (unused where d is zero) */
+} LocalRay;
+
 /* Slab test of the segment origin + t * d, t in [0, maxFraction], against a closed box. */
-static bool RayHitsBox(cd2Aabb box, cd2Vec origin, cd2Vec d, cdReal maxFraction)
+static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction)
 {
 	cdReal lower = CD_R(0.0), upper = maxFraction;
-	const cdReal o[2] = {origin.x, origin.y}, v[2] = {d.x, d.y};
+	const cdReal o[2] = {ray->origin.x, ray->origin.y}, v[2] = {ray->d.x, ray->d.y};
 	const cdReal lo[2] = {box.min.x, box.min.y}, hi[2] = {box.max.x, box.max.y};
 	for (int axis = 0; axis < 2; ++axis)
 	{
@@ -84,8 +91,7 @@ static bool RayHitsBox(cd2Aabb box, cd2Vec origin, cd2Vec d, cdReal maxFraction)
 			}
 			continue;
 		}
-		cdReal inverse = CD_R(1.0) / v[axis];
-		cdReal t1 = (lo[axis] - o[axis]) * inverse, t2 = (hi[axis] - o[axis]) * inverse;
+		cdReal t1 = (lo[axis] - o[axis]) * ray->inverse[axis], t2 = (hi[axis] - o[axis]) * ray->inverse[axis];
 		if (t1 > t2)
 		{
 			cdReal t = t1;
@@ -137,8 +143,11 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 					 int* segmentIndex)
 {
 	CD_ASSERT(chain != NULL && hit != NULL);
-	cd2Vec origin = cd2InvTransformPoint(chainTransform, ray.origin);
-	cd2Vec d = cd2InvRotateVector(chainTransform.q, ray.translation);
+	LocalRay local;
+	local.origin = cd2InvTransformPoint(chainTransform, ray.origin);
+	local.d = cd2InvRotateVector(chainTransform.q, ray.translation);
+	local.inverse[0] = local.d.x != CD_R(0.0) ? CD_R(1.0) / local.d.x : CD_R(0.0);
+	local.inverse[1] = local.d.y != CD_R(0.0) ? CD_R(1.0) / local.d.y : CD_R(0.0);
 	cdReal best = CD_R(1.0);
 	int bestIndex = -1;
 	cd2Vec bestNormal = CD2_VEC_ZERO;
@@ -149,7 +158,7 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 	while (top > 0)
 	{
 		Node node = stack[--top];
-		if (!RayHitsBox(chain->bounds[chain->levelOffset[node.level] + node.index], origin, d, best))
+		if (!RayHitsBox(chain->bounds[chain->levelOffset[node.level] + node.index], &local, best))
 		{
 			continue;
 		}
@@ -157,8 +166,8 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 		{
 			cdReal fraction;
 			cd2Vec normal;
-			if (RaycastSegment(chain->points[node.index], cd2ChainPoint(chain, node.index + 1), origin, d,
-							   best, &fraction, &normal) &&
+			if (RaycastSegment(chain->points[node.index], cd2ChainPoint(chain, node.index + 1), local.origin,
+							   local.d, best, &fraction, &normal) &&
 				(bestIndex < 0 || fraction < best || (fraction == best && node.index < bestIndex)))
 			{
 				best = fraction;
@@ -167,12 +176,21 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 			}
 			continue;
 		}
+		/* The child nearer the origin along the ray first: its hit shortens the ray for the other. */
 		int child = 2 * node.index;
+		const cd2Aabb* below = chain->bounds + chain->levelOffset[node.level - 1];
 		if (child + 1 < chain->levelSize[node.level - 1])
 		{
-			stack[top++] = (Node){node.level - 1, child + 1};
+			cdReal first = cd2Dot(cd2Sub(cd2AabbCenter(below[child]), local.origin), local.d);
+			cdReal second = cd2Dot(cd2Sub(cd2AabbCenter(below[child + 1]), local.origin), local.d);
+			int nearer = second < first ? child + 1 : child;
+			stack[top++] = (Node){node.level - 1, nearer == child ? child + 1 : child};
+			stack[top++] = (Node){node.level - 1, nearer};
 		}
-		stack[top++] = (Node){node.level - 1, child};
+		else
+		{
+			stack[top++] = (Node){node.level - 1, child};
+		}
 	}
 	if (bestIndex < 0)
 	{
@@ -315,11 +333,54 @@ typedef struct CollideContext
 	int count;
 } CollideContext;
 
+/* Whether the whole shape lies above the segment's line by more than the speculative distance
+ * (plus a margin for round-off): then the segment's manifold has no point, and this test, a few
+ * cross products, saves the manifold's work for the segments a box query finds near the shape. */
+static bool ClearlyAbove(const LocalShape* shape, cd2Vec p1, cd2Vec p2, cdReal speculativeDistance)
+{
+	cd2Vec e = cd2Sub(p2, p1);
+	const cd2Vec* vertices;
+	int count;
+	cdReal radius;
+	switch (shape->kind)
+	{
+		case LOCAL_CIRCLE:
+			vertices = &shape->circle.center;
+			count = 1;
+			radius = shape->circle.radius;
+			break;
+		case LOCAL_CAPSULE:
+			vertices = &shape->capsule.p1; /* p1 and p2 are consecutive */
+			count = 2;
+			radius = shape->capsule.radius;
+			break;
+		default:
+			vertices = shape->polygon.vertices;
+			count = shape->polygon.count;
+			radius = shape->polygon.radius;
+			break;
+	}
+	/* cross(v - p1, e) is |e| times the height of v above the line (the free side is positive). */
+	cdReal lowest = CD_REAL_MAX;
+	for (int i = 0; i < count; ++i)
+	{
+		lowest = cdMin(lowest, cd2Cross(cd2Sub(vertices[i], p1), e));
+	}
+	cdReal scale = cdMax(cdMax(cdAbs(p1.x), cdAbs(p1.y)), cdMax(cdAbs(vertices[0].x), cdAbs(vertices[0].y)));
+	cdReal margin =
+		speculativeDistance + radius + CD_R(0.1) * CD_LINEAR_SLOP + CD_R(64.0) * CD_REAL_EPSILON * scale;
+	return lowest > margin * cd2Length(e);
+}
+
 static bool CollideSegment(int index, void* userContext)
 {
 	CollideContext* context = (CollideContext*)userContext;
 	cd2ChainSegment segment = cd2GetChainSegment(context->chain, index);
 	const LocalShape* shape = context->shape;
+	if (ClearlyAbove(shape, segment.p1, segment.p2, context->speculativeDistance))
+	{
+		return true;
+	}
 	cd2Manifold m;
 	switch (shape->kind)
 	{
