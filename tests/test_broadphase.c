@@ -515,11 +515,90 @@ static void TestFrames(void)
 	}
 }
 
+/* More proxies created one by one than the tree's self-rebuild threshold (1024), then frames in
+ * which a tenth of them teleport (sweep-and-prune: tombstone + tail merge instead of long shifts;
+ * tree: reinsertion from the root). The tree, mostly built by single insertions, must come out
+ * of the first pair update rebuilt: exactly the tree an explicit rebuild gives (same SAH cost). */
+static void TestTeleportFrames(void)
+{
+	for (int dim = 2; dim <= 3; ++dim)
+	{
+		for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+		{
+			Oracle* o = (Oracle*)malloc(sizeof(Oracle));
+			if (!OracleInit(o, dim, (cdBroadPhaseType)type, CD_R(0.1), CD_R(4.0)))
+			{
+				free(o);
+				continue;
+			}
+			TestRng rng = TestRngMake(991 + (uint64_t)(dim * 10 + type));
+			Scene s = {0.0, 80.0, 2.0, 0.2};
+			enum
+			{
+				COUNT = 1100
+			};
+			static OBox tight[COUNT];
+			bool ok = true;
+			for (int i = 0; i < COUNT && ok; ++i)
+			{
+				tight[i] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
+				int id;
+				ok = OracleCreate(o, tight[i], (uint64_t)i, &id);
+				ok = ok && id == i;
+			}
+			ok = ok && OracleUpdatePairs(o) && OracleValidate(o);
+			TEST_CHECKF(ok, "%s %dD first pairs: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
+						o->error);
+			if (ok && type == CD_BROADPHASE_TREE)
+			{
+				cdBroadPhaseStats before =
+					dim == 2 ? cd2BroadPhase_GetStats(o->bp2) : cd3BroadPhase_GetStats(o->bp3);
+				OracleRebuild(o);
+				cdBroadPhaseStats after =
+					dim == 2 ? cd2BroadPhase_GetStats(o->bp2) : cd3BroadPhase_GetStats(o->bp3);
+				TEST_CHECKF(before.sahCost == after.sahCost && before.height == after.height,
+							"tree %dD not rebuilt by the first pair update: SAH %g height %d, rebuilt %g %d",
+							dim, before.sahCost, before.height, after.sahCost, after.height);
+			}
+			for (int frame = 0; frame < 3 && ok; ++frame)
+			{
+				for (int i = 0; i < COUNT && ok; ++i)
+				{
+					cdReal d[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+					if (TestRngInt(&rng, 10) == 0)
+					{
+						tight[i] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
+					}
+					else
+					{
+						for (int k = 0; k < dim; ++k)
+						{
+							d[k] = R(&rng, -s.smallMove, s.smallMove);
+						}
+						tight[i] = Shift(tight[i], dim, d);
+					}
+					ok = OracleMove(o, i, tight[i], d);
+				}
+				ok = ok && OracleValidate(o) && OracleUpdatePairs(o);
+				TEST_CHECKF(ok, "%s %dD frame %d: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
+							frame, o->error);
+			}
+			if (ok)
+			{
+				ok = CheckAll(o, &rng, &s, true);
+			}
+			OracleFree(o);
+			free(o);
+		}
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestArguments);
 	TEST_RUN(TestRandomOperations);
 	TEST_RUN(TestDegenerateSets);
 	TEST_RUN(TestFrames);
+	TEST_RUN(TestTeleportFrames);
 	return TEST_SUMMARY();
 }

@@ -132,7 +132,7 @@ void Usage()
 				"[--max-frame-seconds S]\n"
 				"                           [--quick] [--svg file] [--csv file] [--markdown file] "
 				"[--merge-csv a.csv,b.csv]\n"
-				"structures: tree sap grid octree");
+				"structures: tree sap grid octree (tree-inc sap-inc: created one by one)");
 	for (const std::string& name : PeerNames())
 	{
 		std::printf(" %s", name.c_str());
