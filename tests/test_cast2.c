@@ -139,7 +139,7 @@ static void TestCastStartingInContact(void)
 			TEST_CHECKF(out.hit && out.fraction == CD_R(0.0), "start %d translation %d", s, k);
 			TEST_CHECK_NEAR(out.normal.x, expected.x, 1e-6);
 			TEST_CHECK_NEAR(out.normal.y, expected.y, 1e-6);
-			TEST_CHECK(out.iterations == 1);
+			TEST_CHECK(out.iterations >= 1 && out.iterations < CD_CAST_MAX_ITERATIONS);
 		}
 	}
 }
@@ -193,8 +193,11 @@ static void TestCastPointAgreesWithRaycast(void)
 		if (rayHits && approach > 0.05 * length)
 		{
 			++hits;
+			/* The cast stops within its tolerance of contact, which is 64 epsilons of the
+			 * coordinates (up to about 6 here) when that is larger than CD_CAST_TOLERANCE. */
+			double castTolerance = fmax((double)CD_CAST_TOLERANCE, 64.0 * (double)CD_REAL_EPSILON * 6.0);
 			TEST_CHECKF(out.hit && fabs((double)out.fraction - (double)rayHit.fraction) <=
-									   2e-5 * length / approach + 1e-5,
+									   (castTolerance + 2e-5 * length) / approach + 1e-5,
 						"case %d %s: cast %d %.9g ray %.9g", i, cd2ShapeTypeName(type), out.hit,
 						(double)out.fraction, (double)rayHit.fraction);
 			TEST_CHECKF(out.fraction <= rayHit.fraction + CD_R(1e-5), "case %d past the ray's entry", i);

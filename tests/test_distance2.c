@@ -5,6 +5,7 @@
 #include "random_shapes2.h"
 #include "test.h"
 
+#include <math.h>
 #include <string.h>
 
 /* ---- double-precision reference ------------------------------------------------------------ */
@@ -769,6 +770,106 @@ static void TestDistanceStatus(void)
 	TEST_CHECK(cd2DistanceWithStatus(&a, &b, NULL).distance == plain.distance);
 }
 
+/* ---- simplex cache --------------------------------------------------------------------------- */
+#if CD_DOUBLE
+#define CACHE_AGREEMENT 1e-9
+#else
+#define CACHE_AGREEMENT 2e-4
+#endif
+
+static void FillRandomBytes(TestRng* rng, void* memory, size_t size)
+{
+	unsigned char* bytes = (unsigned char*)memory;
+	for (size_t i = 0; i < size; ++i)
+	{
+		bytes[i] = (unsigned char)(TestRngNext(rng) >> 24);
+	}
+}
+
+/* The same answer whatever the cache holds: nothing, random bytes, random but in-range indices,
+ * another pair's simplex, this pair's own simplex. */
+static void TestCacheAgrees(void)
+{
+	TestRng rng = TestRngMake(0x5ca4e001u);
+	cd2SimplexCache other;
+	memset(&other, 0, sizeof(other));
+	int pairs = 0;
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int i = 0; i < 80; ++i, ++pairs)
+			{
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb);
+				cd2ClosestPoints plain = cd2Distance(&a, &b);
+				cd2SimplexCache caches[5];
+				memset(&caches[0], 0, sizeof(caches[0]));
+				FillRandomBytes(&rng, &caches[1], sizeof(caches[1]));
+				caches[2].count = 1 + TestRngInt(&rng, 3);
+				caches[2].metric = RandomReal(&rng, -1.0, 4.0);
+				for (int k = 0; k < 3; ++k)
+				{
+					caches[2].indexA[k] = TestRngInt(&rng, 9) - 1;
+					caches[2].indexB[k] = TestRngInt(&rng, 9) - 1;
+				}
+				caches[3] = other;
+				memset(&caches[4], 0, sizeof(caches[4]));
+				cd2DistanceCached(&a, &b, &caches[4], NULL);
+				for (int c = 0; c < 5; ++c)
+				{
+					cdDistanceStatus status;
+					cd2ClosestPoints cached = cd2DistanceCached(&a, &b, &caches[c], &status);
+					double error = fabs((double)cached.distance - (double)plain.distance);
+					double gap = (double)cd2Length(cd2Sub(cached.pointB, cached.pointA));
+					TEST_CHECKF(error <= CACHE_AGREEMENT &&
+									fabs(gap - (double)cached.distance) <= CACHE_AGREEMENT &&
+									!status.hitIterationCap && caches[c].count >= 1 && caches[c].count <= 3,
+								"%s-%s cache %d: cached %.9g, plain %.9g, points %.9g apart, count %d",
+								TypeName((cd2ShapeType)ta), TypeName((cd2ShapeType)tb), c,
+								(double)cached.distance, (double)plain.distance, gap, caches[c].count);
+				}
+				other = caches[4];
+			}
+		}
+	}
+	printf("%d pairs, 5 caches each\n", pairs);
+}
+
+/* A pair moving a little each frame: the cache of the last frame saves iterations. */
+static void TestCacheSavesIterations(void)
+{
+	TestRng rng = TestRngMake(0x5ca4e002u);
+	long long coldIterations = 0, warmIterations = 0;
+	int queries = 0;
+	const cd2ShapeType types[3] = {CD2_SHAPE_POLYGON, CD2_SHAPE_BOX, CD2_SHAPE_CAPSULE};
+	for (int sequence = 0; sequence < 150; ++sequence)
+	{
+		cd2Shape a = RandomShape(&rng, types[TestRngInt(&rng, 3)]);
+		cd2Shape b0 = RandomShape(&rng, types[TestRngInt(&rng, 3)]);
+		cd2Vec velocity = RandomVec(&rng, 0.02);
+		cdReal spin = RandomReal(&rng, -0.02, 0.02);
+		cd2SimplexCache cache;
+		memset(&cache, 0, sizeof(cache));
+		for (int frame = 0; frame < 20; ++frame, ++queries)
+		{
+			cd2Transform motion = {cd2Scale((cdReal)frame, velocity), cd2MakeRot(spin * (cdReal)frame)};
+			cd2Shape b = TransformShape(&b0, motion);
+			cdDistanceStatus cold, warm;
+			cd2ClosestPoints plain = cd2DistanceWithStatus(&a, &b, &cold);
+			cd2ClosestPoints cached = cd2DistanceCached(&a, &b, &cache, &warm);
+			coldIterations += cold.iterations;
+			warmIterations += warm.iterations;
+			TEST_CHECKF(fabs((double)cached.distance - (double)plain.distance) <= CACHE_AGREEMENT,
+						"sequence %d frame %d: cached %.9g, plain %.9g", sequence, frame,
+						(double)cached.distance, (double)plain.distance);
+		}
+	}
+	double cold = (double)coldIterations / queries, warm = (double)warmIterations / queries;
+	printf("mean iterations: %.2f without the cache, %.2f with it\n", cold, warm);
+	TEST_CHECKF(warm < 0.75 * cold, "mean iterations %.2f with the cache, %.2f without", warm, cold);
+}
+
 int main(void)
 {
 	TEST_RUN(TestCircles);
@@ -780,5 +881,7 @@ int main(void)
 	TEST_RUN(TestExtremeScales);
 	TEST_RUN(TestGjkFuzzFindings);
 	TEST_RUN(TestIllConditionedPairs);
+	TEST_RUN(TestCacheAgrees);
+	TEST_RUN(TestCacheSavesIterations);
 	return TEST_SUMMARY();
 }

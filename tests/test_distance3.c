@@ -5,6 +5,7 @@
 #include "random_shapes3.h"
 #include "test.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <string.h>
 
@@ -1171,6 +1172,116 @@ static void TestDistanceStatus(void)
 	TEST_CHECK(cd3DistanceWithStatus(&a, &b, NULL).distance == plain.distance);
 }
 
+/* ---- simplex cache --------------------------------------------------------------------------- */
+#if CD_DOUBLE
+#define CACHE_AGREEMENT 1e-9
+#else
+#define CACHE_AGREEMENT 2e-4
+#endif
+
+static void FillRandomBytes(TestRng* rng, void* memory, size_t size)
+{
+	unsigned char* bytes = (unsigned char*)memory;
+	for (size_t i = 0; i < size; ++i)
+	{
+		bytes[i] = (unsigned char)(TestRngNext(rng) >> 24);
+	}
+}
+
+/* The same answer whatever the cache holds: nothing, random bytes, random but in-range indices,
+ * another pair's simplex, this pair's own simplex. */
+static void TestCacheAgrees(void)
+{
+	TestRng rng = TestRngMake(0x5ca4e003u);
+	cd3SimplexCache other;
+	memset(&other, 0, sizeof(other));
+	int pairs = 0;
+	for (int ta = 0; ta < CD3_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD3_SHAPE_TYPE_COUNT; ++tb)
+		{
+			bool plane = ta == CD3_SHAPE_PLANE || tb == CD3_SHAPE_PLANE;
+			for (int i = 0; i < 25; ++i, ++pairs)
+			{
+				cd3Shape a = RandomShape(&rng, (cd3ShapeType)ta);
+				cd3Shape b = RandomShape(&rng, (cd3ShapeType)tb);
+				cd3ClosestPoints plain = cd3Distance(&a, &b);
+				cd3SimplexCache caches[5];
+				memset(&caches[0], 0, sizeof(caches[0]));
+				FillRandomBytes(&rng, &caches[1], sizeof(caches[1]));
+				caches[2].count = 1 + TestRngInt(&rng, 4);
+				caches[2].metric = RandomReal(&rng, -1.0, 8.0);
+				for (int k = 0; k < 4; ++k)
+				{
+					caches[2].indexA[k] = TestRngInt(&rng, 66) - 1;
+					caches[2].indexB[k] = TestRngInt(&rng, 66) - 1;
+				}
+				caches[3] = other;
+				memset(&caches[4], 0, sizeof(caches[4]));
+				cd3DistanceCached(&a, &b, &caches[4], NULL);
+				for (int c = 0; c < 5; ++c)
+				{
+					cdDistanceStatus status;
+					cd3ClosestPoints cached = cd3DistanceCached(&a, &b, &caches[c], &status);
+					double error = fabs((double)cached.distance - (double)plain.distance);
+					double gap = (double)cd3Length(cd3Sub(cached.pointB, cached.pointA));
+					bool countValid = plane || (caches[c].count >= 1 && caches[c].count <= 4);
+					TEST_CHECKF(error <= CACHE_AGREEMENT &&
+									fabs(gap - (double)cached.distance) <= CACHE_AGREEMENT &&
+									!status.hitIterationCap && countValid,
+								"%s-%s cache %d: cached %.9g, plain %.9g, points %.9g apart, count %d",
+								TypeName((cd3ShapeType)ta), TypeName((cd3ShapeType)tb), c,
+								(double)cached.distance, (double)plain.distance, gap, caches[c].count);
+				}
+				if (!plane)
+				{
+					other = caches[4];
+				}
+			}
+		}
+	}
+	printf("%d pairs, 5 caches each\n", pairs);
+}
+
+/* A pair moving a little each frame: the cache of the last frame saves iterations. */
+static void TestCacheSavesIterations(void)
+{
+	TestRng rng = TestRngMake(0x5ca4e004u);
+	long long coldIterations = 0, warmIterations = 0;
+	int queries = 0;
+	const cd3ShapeType types[3] = {CD3_SHAPE_HULL, CD3_SHAPE_BOX, CD3_SHAPE_CAPSULE};
+	for (int sequence = 0; sequence < 80; ++sequence)
+	{
+		cd3Shape a = RandomShape(&rng, types[TestRngInt(&rng, 3)]);
+		cd3Shape b0 = RandomShape(&rng, types[TestRngInt(&rng, 3)]);
+		cd3Vec velocity = RandomVec(&rng, 0.02);
+		cd3Vec axis = RandomUnit(&rng);
+		cdReal spin = RandomReal(&rng, -0.02, 0.02);
+		cd3SimplexCache cache;
+		memset(&cache, 0, sizeof(cache));
+		for (int frame = 0; frame < 20; ++frame, ++queries)
+		{
+			cdReal half = CD_R(0.5) * spin * (cdReal)frame;
+			cdReal sine = (cdReal)sin((double)half), cosine = (cdReal)cos((double)half);
+			cd3Transform motion = {
+				cd3Scale((cdReal)frame, velocity),
+				cd3NormalizeQuat(cd3MakeQuat(sine * axis.x, sine * axis.y, sine * axis.z, cosine))};
+			cd3Shape b = TransformShape(&b0, motion);
+			cdDistanceStatus cold, warm;
+			cd3ClosestPoints plain = cd3DistanceWithStatus(&a, &b, &cold);
+			cd3ClosestPoints cached = cd3DistanceCached(&a, &b, &cache, &warm);
+			coldIterations += cold.iterations;
+			warmIterations += warm.iterations;
+			TEST_CHECKF(fabs((double)cached.distance - (double)plain.distance) <= CACHE_AGREEMENT,
+						"sequence %d frame %d: cached %.9g, plain %.9g", sequence, frame,
+						(double)cached.distance, (double)plain.distance);
+		}
+	}
+	double cold = (double)coldIterations / queries, warm = (double)warmIterations / queries;
+	printf("mean iterations: %.2f without the cache, %.2f with it\n", cold, warm);
+	TEST_CHECKF(warm < 0.75 * cold, "mean iterations %.2f with the cache, %.2f without", warm, cold);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSpheres);
@@ -1184,5 +1295,7 @@ int main(void)
 	TEST_RUN(TestThinBoxesAndLongSegments);
 	TEST_RUN(TestHullsAtLargeScale);
 	TEST_RUN(TestDistanceStatus);
+	TEST_RUN(TestCacheAgrees);
+	TEST_RUN(TestCacheSavesIterations);
 	return TEST_SUMMARY();
 }

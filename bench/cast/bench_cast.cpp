@@ -10,7 +10,8 @@
 // libraries see polygons rounded by b2_polygonRadius; collide takes world-space shapes, Box2D
 // local proxies and transforms (its API). Each figure is the median of 9 runs of about 20 ms,
 // collide's and Box2D's runs alternating so that both see the same machine load.
-// Usage: collide_bench_cast [--quick]
+// Usage: collide_bench_cast [--quick | --profile-cast | --profile-toi] (the last two run only collide's
+// 2D query for 3 s, for a profiler)
 #include <box2d/b2_distance.h>
 #include <box2d/b2_time_of_impact.h>
 #include <box2d/box2d.h>
@@ -253,7 +254,8 @@ int main(int argc, char** argv)
 	std::vector<Pair2> pairs = MakePairs2(42);
 
 	int hits = 0, box2dHits = 0, castHits = 0, failed = 0, box2dFailed = 0;
-	long long toiIterations = 0, castIterations = 0;
+	long long toiIterations = 0, castIterations = 0, box2dCastIterations = 0;
+	int box2dCastHits = 0;
 	for (const Pair2& p : pairs)
 	{
 		cdToiOutput ours =
@@ -271,9 +273,45 @@ int main(int argc, char** argv)
 		b2TimeOfImpact(&output, &input);
 		box2dHits += output.state == b2TOIOutput::e_touching;
 		box2dFailed += output.state == b2TOIOutput::e_failed;
+		b2ShapeCastInput castInput;
+		castInput.proxyA.Set(&p.polygonB, 0);
+		castInput.proxyB.Set(&p.polygonA, 0);
+		castInput.transformA = p.xfB;
+		castInput.transformB = p.xfA;
+		castInput.translationB.Set((float)p.translation.x, (float)p.translation.y);
+		b2ShapeCastOutput castOutput;
+		box2dCastHits += b2ShapeCast(&castOutput, &castInput);
+		box2dCastIterations += castOutput.iterations;
 		cd2CastOutput castOut = cd2ShapeCast(&p.worldA, &p.worldB, p.translation);
 		castHits += castOut.hit;
 		castIterations += castOut.iterations;
+	}
+
+	if (argc > 1 && std::strcmp(argv[1], "--profile-cast") == 0)
+	{
+		// Only collide's 2D shape cast, for a profiler.
+		double ns = NsPerCall(
+			[&](int i) {
+				const Pair2& p = pairs[i];
+				return (double)cd2ShapeCast(&p.worldA, &p.worldB, p.translation).fraction;
+			},
+			3.0);
+		std::printf("2D shape cast %.1f ns\n", ns);
+		return 0;
+	}
+
+	if (argc > 1 && std::strcmp(argv[1], "--profile-toi") == 0)
+	{
+		double ns = NsPerCall(
+			[&](int i) {
+				const Pair2& p = pairs[i];
+				return (double)cd2TimeOfImpact(&p.coreA, &p.sweepA, &p.coreB, &p.sweepB, (cdReal)kSlop,
+											   (cdReal)(0.25 * kSlop))
+					.t;
+			},
+			3.0);
+		std::printf("2D time of impact %.1f ns\n", ns);
+		return 0;
 	}
 
 	Figures toi = Compare(
@@ -338,7 +376,9 @@ int main(int argc, char** argv)
 	std::printf(
 		"2D TOI hits: collide %d, Box2D %d; failed: collide %d, Box2D %d; collide's mean iterations %.1f\n",
 		hits, box2dHits, failed, box2dFailed, (double)toiIterations / kPairs);
-	std::printf("2D shape cast hits: %d (mean iterations %.1f)\n", castHits, (double)castIterations / kPairs);
+	std::printf("2D shape cast hits: collide %d, Box2D %d; mean iterations: collide %.1f, Box2D %.1f\n",
+				castHits, box2dCastHits, (double)castIterations / kPairs,
+				(double)box2dCastIterations / kPairs);
 	std::printf("%-36s %10s %10s %8s\n", "query", "collide", "Box2D", "ratio");
 	std::printf("%-36s %10.1f %10.1f %8.2f\n", "2D time of impact (polygons)", toi.ours, toi.peer,
 				toi.ours / toi.peer);

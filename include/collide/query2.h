@@ -99,6 +99,27 @@ CD_API cd2ClosestPoints cd2Distance(const cd2Shape* a, const cd2Shape* b);
 /* cd2Distance, also telling how GJK went (status may be NULL). */
 CD_API cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdDistanceStatus* status);
 
+/* A GJK warm start across frames (Catto, "Computing Distance", GDC 2010): the last simplex as
+ * indices into the shapes' core points (a polygon's vertices, a box's corners in the order
+ * bottom-left, bottom-right, top-right, top-left, a capsule's or segment's ends, a circle's
+ * centre) plus its size (length or area) to tell when the shapes changed too much for it to
+ * help. Zero it before the first call (count 0: no warm start). Any content is safe: a cache
+ * whose indices are out of range, repeated, or whose size changed by more than a factor of 2 is
+ * ignored. */
+typedef struct cd2SimplexCache
+{
+	cdReal metric;
+	int count;
+	int indexA[3];
+	int indexB[3];
+} cd2SimplexCache;
+
+/* cd2DistanceWithStatus warm-started from *cache, which it then updates (cache may be NULL). The
+ * answer is the same as without the cache up to round-off; the iterations are fewer when the
+ * shapes moved little since the cache was written. */
+CD_API cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2SimplexCache* cache,
+										  cdDistanceStatus* status);
+
 #ifdef __cplusplus
 }
 #endif

@@ -129,6 +129,27 @@ CD_API cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b);
 /* cd3Distance, also telling how GJK went (status may be NULL). */
 CD_API cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdDistanceStatus* status);
 
+/* A GJK warm start across frames (Catto, "Computing Distance", GDC 2010): the last simplex as
+ * indices into the shapes' core points (a hull's vertices, a box's or AABB's corners with bit 0,
+ * 1, 2 of the index choosing +x, +y, +z, a triangle's vertices, a capsule's or segment's ends, a
+ * sphere's centre) plus its size (length, area or volume) to tell when the shapes changed too
+ * much for it to help. Zero it before the first call (count 0: no warm start). Any content is
+ * safe: a cache whose indices are out of range, repeated, or whose size changed by more than a
+ * factor of 2 is ignored. Half-spaces do not use it. */
+typedef struct cd3SimplexCache
+{
+	cdReal metric;
+	int count;
+	int indexA[4];
+	int indexB[4];
+} cd3SimplexCache;
+
+/* cd3DistanceWithStatus warm-started from *cache, which it then updates (cache may be NULL). The
+ * answer is the same as without the cache up to round-off; the iterations are fewer when the
+ * shapes moved little since the cache was written. */
+CD_API cd3ClosestPoints cd3DistanceCached(const cd3Shape* a, const cd3Shape* b, cd3SimplexCache* cache,
+										  cdDistanceStatus* status);
+
 #ifdef __cplusplus
 }
 #endif

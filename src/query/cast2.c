@@ -11,10 +11,27 @@
 #define CAST_SWEEP cd2Sweep
 #define CAST_TRANSFORM cd2Transform
 #define CAST_OUTPUT cd2CastOutput
+#define CAST_CORE cd2Core
+#define CAST_SIMPLEX cd2GjkSimplex
+
+static bool MakeCastCore(const cd2Shape* shape, cd2Core* core)
+{
+	return cd2MakeCore(shape, core);
+}
+
+static cd2Vec CastCorePoint(const cd2Core* core, int i)
+{
+	return core->points[i];
+}
+
+static int CastCoreSupport(const cd2Core* core, cd2Vec direction, int start)
+{
+	return cd2CoreSupportFrom(core, direction, start);
+}
 
 static cdReal MaxAbs(cd2Vec v)
 {
-	return cdMax(cdAbs(v.x), cdAbs(v.y));
+	return cd2MaxAbs(v);
 }
 
 static cdReal StripRadius(cd2Shape* shape)
@@ -135,14 +152,23 @@ static bool ShapeExtent(const cd2Shape* shape, cd2Vec center, cdReal* extent)
 	return true;
 }
 
-static cdReal SupportValue(const cd2Shape* shape, cd2Vec direction)
+/* A body-frame core moved into the world (radius dropped: the casts grow by the radii). */
+typedef struct PlacedCore
 {
 	cd2Core core;
-	if (!cd2MakeCore(shape, &core))
+	cd2Vec points[CD2_CORE_MAX_POINTS];
+} PlacedCore;
+#define PLACED_CORE PlacedCore
+
+static void PlaceCore(const cd2Core* local, cd2Transform xf, PlacedCore* placed)
+{
+	placed->core.count = local->count;
+	placed->core.radius = CD_R(0.0);
+	for (int i = 0; i < local->count; ++i)
 	{
-		return CD_R(0.0);
+		placed->points[i] = cd2TransformPoint(xf, local->points[i]);
 	}
-	return cd2Dot(core.points[cd2CoreSupport(&core, direction)], direction);
+	placed->core.points = placed->points;
 }
 
 typedef struct SweepMotion

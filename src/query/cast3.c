@@ -11,6 +11,25 @@
 #define CAST_SWEEP cd3Sweep
 #define CAST_TRANSFORM cd3Transform
 #define CAST_OUTPUT cd3CastOutput
+#define CAST_CORE cd3Core
+#define CAST_SIMPLEX cd3GjkSimplex
+
+/* Half-spaces have no core: their casts take the advancement. */
+static bool MakeCastCore(const cd3Shape* shape, cd3Core* core)
+{
+	return cd3MakeCore(shape, core);
+}
+
+static cd3Vec CastCorePoint(const cd3Core* core, int i)
+{
+	return cd3CorePoint(core, i);
+}
+
+static int CastCoreSupport(const cd3Core* core, cd3Vec direction, int start)
+{
+	(void)start;
+	return cd3CoreSupport(core, direction);
+}
 
 static cdReal MaxAbs(cd3Vec v)
 {
@@ -144,17 +163,34 @@ static bool ShapeExtent(const cd3Shape* shape, cd3Vec center, cdReal* extent)
 	return true;
 }
 
-static cdReal SupportValue(const cd3Shape* shape, cd3Vec direction)
+/* The rotation q(t) = rotation0 * exp(t * angle * axis / 2): constant angular speed `angle`. */
+/* A body-frame core moved into the world (radius dropped: the casts grow by the radii). A hull's
+ * vertices stay in its frame: only its rotation and translation change. */
+typedef struct PlacedCore
 {
 	cd3Core core;
-	if (!cd3MakeCore(shape, &core))
+} PlacedCore;
+#define PLACED_CORE PlacedCore
+
+static void PlaceCore(const cd3Core* local, cd3Transform xf, PlacedCore* placed)
+{
+	cd3Core* core = &placed->core;
+	core->count = local->count;
+	core->radius = CD_R(0.0);
+	core->localPoints = local->localPoints;
+	if (local->localPoints != NULL)
 	{
-		return CD_R(0.0);
+		cd3Mat33 rotation = cd3MakeMatFromQuat(xf.q);
+		core->rotation = cd3MulMM(rotation, local->rotation);
+		core->translation = cd3TransformPoint(xf, local->translation);
+		return;
 	}
-	return cd3Dot(cd3CorePoint(&core, cd3CoreSupport(&core, direction)), direction);
+	for (int i = 0; i < local->count; ++i)
+	{
+		core->points[i] = cd3TransformPoint(xf, local->points[i]);
+	}
 }
 
-/* The rotation q(t) = rotation0 * exp(t * angle * axis / 2): constant angular speed `angle`. */
 typedef struct SweepMotion
 {
 	cd3Vec localCenter, center0, velocity;

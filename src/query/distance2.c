@@ -25,18 +25,8 @@
  * epsilons of the simplex's own size: below it the distance is round-off. */
 #define GJK_TOUCH_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
 
-typedef struct GjkVertex
-{
-	cd2Vec a, b, w; /* support points on A and B, w = a - b */
-	int indexA, indexB;
-} GjkVertex;
-
-typedef struct GjkSimplex
-{
-	GjkVertex v[3];
-	cdReal lambda[3];
-	int count;
-} GjkSimplex;
+typedef cd2GjkVertex GjkVertex;
+typedef cd2GjkSimplex GjkSimplex;
 
 /* Barycentric coordinates of the point of segment w0-w1 closest to the origin. */
 static void SolveSegment(cd2Vec w0, cd2Vec w1, cdReal* l0, cdReal* l1)
@@ -175,7 +165,7 @@ static bool SolveSimplex(GjkSimplex* simplex)
 	for (int i = 0; i < simplex->count; ++i)
 	{
 		w[i] = simplex->v[i].w;
-		largest = cdMax(largest, cdMax(cdAbs(w[i].x), cdAbs(w[i].y)));
+		largest = cdMax(largest, cd2MaxAbs(w[i]));
 	}
 	/* Within these bounds the products (up to the eighth power of a coordinate times the small
 	 * tolerances) neither overflow nor underflow: no scaling needed. */
@@ -253,16 +243,98 @@ static GjkVertex MakeVertex(const cd2Core* a, const cd2Core* b, int indexA, int 
 	return vertex;
 }
 
+/* The size of a simplex (length of a segment, area of a triangle), which a warm start compares
+ * with the cached one: a simplex that grew or shrank by more than a factor of 2 belongs to shapes
+ * that moved too much for it to help (Catto). */
+bool cd2SolveGjkSimplex(cd2GjkSimplex* simplex)
+{
+	return SolveSimplex(simplex);
+}
+
+static cdReal SimplexMetric(const GjkSimplex* simplex)
+{
+	if (simplex->count == 2)
+	{
+		return cd2Length(cd2Sub(simplex->v[1].w, simplex->v[0].w));
+	}
+	if (simplex->count == 3)
+	{
+		return cdAbs(
+			cd2Cross(cd2Sub(simplex->v[1].w, simplex->v[0].w), cd2Sub(simplex->v[2].w, simplex->v[0].w)));
+	}
+	return CD_R(0.0);
+}
+
+/* Rebuilds the cached simplex from the current shapes; false (no warm start) for a cache that is
+ * empty, garbage (count or indices out of range, a vertex repeated, a size that is not a finite
+ * positive number) or stale (size changed by more than a factor of 2). Any simplex of support
+ * points is a valid start for GJK, so a cache that passes can change the iterations but not the
+ * answer. */
+static bool ReadCache(const cd2SimplexCache* cache, const cd2Core* a, const cd2Core* b, GjkSimplex* simplex)
+{
+	if (cache == NULL || cache->count < 1 || cache->count > 3)
+	{
+		return false;
+	}
+	int count = cache->count;
+	for (int i = 0; i < count; ++i)
+	{
+		int indexA = cache->indexA[i], indexB = cache->indexB[i];
+		if (indexA < 0 || indexA >= a->count || indexB < 0 || indexB >= b->count)
+		{
+			return false;
+		}
+		for (int j = 0; j < i; ++j)
+		{
+			if (simplex->v[j].indexA == indexA && simplex->v[j].indexB == indexB)
+			{
+				return false;
+			}
+		}
+		simplex->v[i] = MakeVertex(a, b, indexA, indexB);
+		simplex->lambda[i] = CD_R(0.0);
+	}
+	simplex->count = count;
+	if (count > 1)
+	{
+		cdReal metric = SimplexMetric(simplex), cached = cache->metric;
+		if (!(metric > CD_R(0.0) && metric >= CD_R(0.5) * cached && metric <= CD_R(2.0) * cached))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static void WriteCache(cd2SimplexCache* cache, const GjkSimplex* simplex)
+{
+	if (cache == NULL)
+	{
+		return;
+	}
+	cache->count = simplex->count;
+	for (int i = 0; i < 3; ++i)
+	{
+		cache->indexA[i] = i < simplex->count ? simplex->v[i].indexA : 0;
+		cache->indexB[i] = i < simplex->count ? simplex->v[i].indexB : 0;
+	}
+	cache->metric = SimplexMetric(simplex);
+}
+
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
- * *pointA and *pointB coincide up to round-off). */
-static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* pointB, bool* touching,
-					bool* hitIterationCap)
+ * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
+ * writes the final simplex back to it (cache may be NULL). */
+static int GjkCores(const cd2Core* a, const cd2Core* b, cd2SimplexCache* cache, cd2Vec* pointA,
+					cd2Vec* pointB, bool* touching, bool* hitIterationCap)
 {
 	GjkSimplex simplex;
 	memset(&simplex, 0, sizeof(simplex));
-	simplex.count = 1;
-	simplex.v[0] = MakeVertex(a, b, 0, 0);
-	simplex.lambda[0] = CD_R(1.0);
+	if (!ReadCache(cache, a, b, &simplex))
+	{
+		simplex.count = 1;
+		simplex.v[0] = MakeVertex(a, b, 0, 0);
+		simplex.lambda[0] = CD_R(1.0);
+	}
 
 	/* Round-off can make a step gain nothing (or lose a little) while the next ones still gain:
 	 * keep the closest simplex seen, and stop after a few steps without progress. */
@@ -283,7 +355,7 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* 
 		for (int i = 0; i < simplex.count; ++i)
 		{
 			v = cd2MulAdd(v, simplex.lambda[i], simplex.v[i].w);
-			size = cdMax(size, cdMax(cdAbs(simplex.v[i].w.x), cdAbs(simplex.v[i].w.y)));
+			size = cdMax(size, cd2MaxAbs(simplex.v[i].w));
 		}
 		cdReal distanceSquared = cd2LengthSquared(v);
 		cdReal touch = GJK_TOUCH_TOLERANCE * CD_R(1.4142136) * size;
@@ -338,6 +410,7 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2Vec* pointA, cd2Vec* 
 	{
 		simplex = best;
 	}
+	WriteCache(cache, &simplex);
 
 	cd2Vec pa = CD2_VEC_ZERO, pb = CD2_VEC_ZERO;
 	for (int i = 0; i < simplex.count; ++i)
@@ -358,10 +431,51 @@ static cd2ClosestPoints Touching(cd2Vec point)
 
 cd2ClosestPoints cd2Distance(const cd2Shape* a, const cd2Shape* b)
 {
-	return cd2DistanceWithStatus(a, b, NULL);
+	return cd2DistanceCached(a, b, NULL, NULL);
 }
 
 cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdDistanceStatus* status)
+{
+	return cd2DistanceCached(a, b, NULL, status);
+}
+
+cd2ClosestPoints cd2DistanceCores(const cd2Core* coreA, const cd2Core* coreB, cd2SimplexCache* cache,
+								  cdDistanceStatus* status)
+{
+	cd2Vec pointA, pointB;
+	bool touching, hitIterationCap;
+	int iterations = GjkCores(coreA, coreB, cache, &pointA, &pointB, &touching, &hitIterationCap);
+	cd2ClosestPoints result;
+	cdReal radius = coreA->radius + coreB->radius;
+	cd2Vec delta = cd2Sub(pointB, pointA);
+	cdReal coreDistance = cd2Length(delta);
+	if (touching)
+	{
+		result = Touching(pointA);
+	}
+	else if (coreDistance <= radius)
+	{
+		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
+		cdReal t = radius > CD_R(0.0) ? coreA->radius / radius : CD_R(0.0);
+		result = Touching(cd2MulAdd(pointA, t, delta));
+	}
+	else
+	{
+		cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
+		result.pointA = cd2MulAdd(pointA, coreA->radius, normal);
+		result.pointB = cd2MulSub(pointB, coreB->radius, normal);
+		result.distance = coreDistance - radius;
+	}
+	if (status != NULL)
+	{
+		status->iterations = iterations;
+		status->hitIterationCap = hitIterationCap;
+	}
+	return result;
+}
+
+cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2SimplexCache* cache,
+								   cdDistanceStatus* status)
 {
 	if (status != NULL)
 	{
@@ -376,35 +490,5 @@ cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdD
 		cd2ClosestPoints none = {CD2_VEC_ZERO, CD2_VEC_ZERO, CD_REAL_MAX};
 		return none;
 	}
-
-	cd2Vec pointA, pointB;
-	bool touching, hitIterationCap;
-	int iterations = GjkCores(&coreA, &coreB, &pointA, &pointB, &touching, &hitIterationCap);
-	cd2ClosestPoints result;
-	cdReal radius = coreA.radius + coreB.radius;
-	cd2Vec delta = cd2Sub(pointB, pointA);
-	cdReal coreDistance = cd2Length(delta);
-	if (touching)
-	{
-		result = Touching(pointA);
-	}
-	else if (coreDistance <= radius)
-	{
-		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
-		cdReal t = radius > CD_R(0.0) ? coreA.radius / radius : CD_R(0.0);
-		result = Touching(cd2MulAdd(pointA, t, delta));
-	}
-	else
-	{
-		cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
-		result.pointA = cd2MulAdd(pointA, coreA.radius, normal);
-		result.pointB = cd2MulSub(pointB, coreB.radius, normal);
-		result.distance = coreDistance - radius;
-	}
-	if (status != NULL)
-	{
-		status->iterations = iterations;
-		status->hitIterationCap = hitIterationCap;
-	}
-	return result;
+	return cd2DistanceCores(&coreA, &coreB, cache, status);
 }

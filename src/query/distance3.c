@@ -31,18 +31,8 @@ static cdReal MaxAbsComponent(cd3Vec v)
 	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
 }
 
-typedef struct GjkVertex
-{
-	cd3Vec a, b, w; /* support points on A and B, w = a - b */
-	int indexA, indexB;
-} GjkVertex;
-
-typedef struct GjkSimplex
-{
-	GjkVertex v[4];
-	cdReal lambda[4];
-	int count;
-} GjkSimplex;
+typedef cd3GjkVertex GjkVertex;
+typedef cd3GjkSimplex GjkSimplex;
 
 /* Barycentric coordinates of the point of segment w0-w1 closest to the origin. */
 static void SolveSegment(cd3Vec w0, cd3Vec w1, cdReal* l0, cdReal* l1)
@@ -414,16 +404,101 @@ static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int 
 	return vertex;
 }
 
+/* The size of a simplex (length, area or volume), which a warm start compares with the cached
+ * one: a simplex that grew or shrank by more than a factor of 2 belongs to shapes that moved too
+ * much for it to help (Catto). */
+bool cd3SolveGjkSimplex(cd3GjkSimplex* simplex)
+{
+	return SolveSimplex(simplex);
+}
+
+static cdReal SimplexMetric(const GjkSimplex* simplex)
+{
+	const GjkVertex* v = simplex->v;
+	switch (simplex->count)
+	{
+		case 2:
+			return cd3Length(cd3Sub(v[1].w, v[0].w));
+		case 3:
+			return cd3Length(cd3Cross(cd3Sub(v[1].w, v[0].w), cd3Sub(v[2].w, v[0].w)));
+		case 4:
+			return cdAbs(
+				cd3Dot(cd3Cross(cd3Sub(v[1].w, v[0].w), cd3Sub(v[2].w, v[0].w)), cd3Sub(v[3].w, v[0].w)));
+		default:
+			return CD_R(0.0);
+	}
+}
+
+/* Rebuilds the cached simplex from the current shapes; false (no warm start) for a cache that is
+ * empty, garbage (count or indices out of range, a vertex repeated, a size that is not a finite
+ * positive number) or stale (size changed by more than a factor of 2). Any simplex of support
+ * points is a valid start for GJK, so a cache that passes can change the iterations but not the
+ * answer. */
+static bool ReadCache(const cd3SimplexCache* cache, const cd3Core* a, const cd3Core* b, GjkSimplex* simplex)
+{
+	if (cache == NULL || cache->count < 1 || cache->count > 4)
+	{
+		return false;
+	}
+	int count = cache->count;
+	for (int i = 0; i < count; ++i)
+	{
+		int indexA = cache->indexA[i], indexB = cache->indexB[i];
+		if (indexA < 0 || indexA >= a->count || indexB < 0 || indexB >= b->count)
+		{
+			return false;
+		}
+		for (int j = 0; j < i; ++j)
+		{
+			if (simplex->v[j].indexA == indexA && simplex->v[j].indexB == indexB)
+			{
+				return false;
+			}
+		}
+		simplex->v[i] = MakeVertex(a, b, indexA, indexB);
+		simplex->lambda[i] = CD_R(0.0);
+	}
+	simplex->count = count;
+	if (count > 1)
+	{
+		cdReal metric = SimplexMetric(simplex), cached = cache->metric;
+		if (!(metric > CD_R(0.0) && metric >= CD_R(0.5) * cached && metric <= CD_R(2.0) * cached))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static void WriteCache(cd3SimplexCache* cache, const GjkSimplex* simplex)
+{
+	if (cache == NULL)
+	{
+		return;
+	}
+	cache->count = simplex->count;
+	for (int i = 0; i < 4; ++i)
+	{
+		cache->indexA[i] = i < simplex->count ? simplex->v[i].indexA : 0;
+		cache->indexB[i] = i < simplex->count ? simplex->v[i].indexB : 0;
+	}
+	cache->metric = SimplexMetric(simplex);
+}
+
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
- * *pointA and *pointB coincide up to round-off). */
-static int GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* pointB, bool* touching,
-					bool* hitIterationCap)
+ * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
+ * writes the final simplex back to it (cache may be NULL). */
+static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, cd3Vec* pointA,
+					cd3Vec* pointB, bool* touching, bool* hitIterationCap)
 {
 	GjkSimplex simplex;
 	memset(&simplex, 0, sizeof(simplex));
-	simplex.count = 1;
-	simplex.v[0] = MakeVertex(a, b, 0, 0);
-	simplex.lambda[0] = CD_R(1.0);
+	if (!ReadCache(cache, a, b, &simplex))
+	{
+		simplex.count = 1;
+		simplex.v[0] = MakeVertex(a, b, 0, 0);
+		simplex.lambda[0] = CD_R(1.0);
+	}
 
 	/* Round-off can make a step gain nothing (or lose a little) while the next ones still gain:
 	 * keep the closest simplex seen, and stop after a few steps without progress. */
@@ -496,6 +571,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3Vec* pointA, cd3Vec* 
 	{
 		simplex = best;
 	}
+	WriteCache(cache, &simplex);
 
 	cd3Vec pa = CD3_VEC_ZERO, pb = CD3_VEC_ZERO;
 	for (int i = 0; i < simplex.count; ++i)
@@ -587,10 +663,51 @@ static cd3ClosestPoints Swap(cd3ClosestPoints result)
 
 cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b)
 {
-	return cd3DistanceWithStatus(a, b, NULL);
+	return cd3DistanceCached(a, b, NULL, NULL);
 }
 
 cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdDistanceStatus* status)
+{
+	return cd3DistanceCached(a, b, NULL, status);
+}
+
+cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd3SimplexCache* cache,
+								  cdDistanceStatus* status)
+{
+	cd3Vec pointA, pointB;
+	bool touching, hitIterationCap;
+	int iterations = GjkCores(coreA, coreB, cache, &pointA, &pointB, &touching, &hitIterationCap);
+	cd3ClosestPoints result;
+	cdReal radius = coreA->radius + coreB->radius;
+	cd3Vec delta = cd3Sub(pointB, pointA);
+	cdReal coreDistance = cd3Length(delta);
+	if (touching)
+	{
+		result = Touching(pointA);
+	}
+	else if (coreDistance <= radius)
+	{
+		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
+		cdReal t = radius > CD_R(0.0) ? coreA->radius / radius : CD_R(0.0);
+		result = Touching(cd3MulAdd(pointA, t, delta));
+	}
+	else
+	{
+		cd3Vec normal = cd3Scale(CD_R(1.0) / coreDistance, delta);
+		result.pointA = cd3MulAdd(pointA, coreA->radius, normal);
+		result.pointB = cd3MulSub(pointB, coreB->radius, normal);
+		result.distance = coreDistance - radius;
+	}
+	if (status != NULL)
+	{
+		status->iterations = iterations;
+		status->hitIterationCap = hitIterationCap;
+	}
+	return result;
+}
+
+cd3ClosestPoints cd3DistanceCached(const cd3Shape* a, const cd3Shape* b, cd3SimplexCache* cache,
+								   cdDistanceStatus* status)
 {
 	if (status != NULL)
 	{
@@ -619,35 +736,5 @@ cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdD
 		cd3ClosestPoints none = {CD3_VEC_ZERO, CD3_VEC_ZERO, CD_REAL_MAX};
 		return none;
 	}
-
-	cd3Vec pointA, pointB;
-	bool touching, hitIterationCap;
-	int iterations = GjkCores(&coreA, &coreB, &pointA, &pointB, &touching, &hitIterationCap);
-	cd3ClosestPoints result;
-	cdReal radius = coreA.radius + coreB.radius;
-	cd3Vec delta = cd3Sub(pointB, pointA);
-	cdReal coreDistance = cd3Length(delta);
-	if (touching)
-	{
-		result = Touching(pointA);
-	}
-	else if (coreDistance <= radius)
-	{
-		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
-		cdReal t = radius > CD_R(0.0) ? coreA.radius / radius : CD_R(0.0);
-		result = Touching(cd3MulAdd(pointA, t, delta));
-	}
-	else
-	{
-		cd3Vec normal = cd3Scale(CD_R(1.0) / coreDistance, delta);
-		result.pointA = cd3MulAdd(pointA, coreA.radius, normal);
-		result.pointB = cd3MulSub(pointB, coreB.radius, normal);
-		result.distance = coreDistance - radius;
-	}
-	if (status != NULL)
-	{
-		status->iterations = iterations;
-		status->hitIterationCap = hitIterationCap;
-	}
-	return result;
+	return cd3DistanceCores(&coreA, &coreB, cache, status);
 }

@@ -7,6 +7,7 @@
 #define COLLIDE_SUPPORT3_H
 
 #include "collide/geometry3.h"
+#include "collide/query3.h"
 
 #define CD3_CORE_MAX_POINTS 8
 
@@ -158,5 +159,28 @@ static inline bool cd3HalfSpacesApart(cd3Plane a, cd3Plane b, cdReal* gap)
 	}
 	return *gap > limit * cdMax(cdAbs(a.offset), cdAbs(b.offset));
 }
+
+/* GJK's simplex, shared by the distance (distance3.c) and the shape cast (cast.inc). */
+typedef struct cd3GjkVertex
+{
+	cd3Vec a, b, w; /* support points on A and B, w = a - b */
+	int indexA, indexB;
+} cd3GjkVertex;
+
+typedef struct cd3GjkSimplex
+{
+	cd3GjkVertex v[4];
+	cdReal lambda[4];
+	int count;
+} cd3GjkSimplex;
+
+/* Reduces the simplex to the vertices that support its point closest to the origin and sets
+ * their weights (lambda, summing to 1); true when the origin is enclosed (the shapes touch). */
+bool cd3SolveGjkSimplex(cd3GjkSimplex* simplex);
+
+/* GJK distance of two cores (distance3.c), radii included, warm-started from *cache and
+ * updating it (cache and status may be NULL). */
+cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd3SimplexCache* cache,
+								  cdDistanceStatus* status);
 
 #endif
