@@ -16,8 +16,8 @@
  * size, so the reported depth may exceed the exact one by that much at a tie. For separated pairs
  * the smallest separation is the distance (cd3Distance).
  *
- * Triangles are the two-sided surface of cd3Triangle (not solid). Triangle against triangle is
- * not provided (two flat shapes have no interior to resolve). Functions name their shapes in the
+ * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
+ * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
  * order Sphere, Capsule, Box, Hull, Triangle; cd3Collide takes tagged shapes in either order. */
 #ifndef COLLIDE_MANIFOLD3_H
 #define COLLIDE_MANIFOLD3_H
@@ -66,6 +66,11 @@ CD_API cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativ
 CD_API cd3Manifold cd3CollideBoxTriangle(cd3Box a, cd3Triangle b, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideHullHull(cd3HullShape a, cd3HullShape b, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance);
+/* Two two-sided triangles, the normal from A to B: up to 4 points of a face clipped against the
+ * other (parallel or crossing faces), one point for edge or vertex contacts. Crossing triangles
+ * get the axis of least overlap (face normals, edge-edge axes) as normal, read in the direction
+ * B lies on. Degenerate triangles collide as their segment or point. */
+CD_API cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdReal speculativeDistance);
 
 /* Any two tagged shapes among sphere, capsule, AABB (as a box), box, hull and triangle, in either
  * order. Shapes of different kinds run the pair function in the order above and flip the normal
