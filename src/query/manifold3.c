@@ -21,6 +21,7 @@
 
 #include "epa3.h"
 #include "sat3.h"
+#include "sat3_box.h"
 #include "sat3_support.h"
 
 /* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
@@ -49,18 +50,13 @@ typedef struct ClipVertex
 	uint32_t tag; /* the line the polygon follows from this vertex to the next */
 } ClipVertex;
 
+/* Zero-initialized: an empty manifold copied in a few wide moves (field stores, or a memset that
+ * compiles to rep stos, cost more than a box-box contact's SAT). */
+static const cd3Manifold EMPTY_MANIFOLD;
+
 static cd3Manifold EmptyManifold(void)
 {
-	cd3Manifold m;
-	m.normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
-	for (int i = 0; i < 4; ++i)
-	{
-		m.points[i].point = m.normal;
-		m.points[i].separation = CD_R(0.0);
-		m.points[i].id = 0u;
-	}
-	m.pointCount = 0;
-	return m;
+	return EMPTY_MANIFOLD;
 }
 
 static void AddPoint(cd3Manifold* m, cd3Vec point, cdReal separation, uint32_t id)
@@ -838,65 +834,81 @@ static cd3Vec AxisVector(int axis, cdReal value)
 					  axis == 2 ? value : CD_R(0.0));
 }
 
-/* ClipToPlane for the plane sign * x[axis] <= limit. */
-static int ClipToSlab(const ClipVertex* in, int count, int axis, cdReal sign, cdReal limit, uint32_t tag,
-					  ClipVertex* out)
+/* A clip vertex of the box path: the coordinates as an array, so that a side picks its axis by
+ * index. */
+typedef struct BoxClipVertex
+{
+	cdReal x[3];
+	uint32_t tag;
+} BoxClipVertex;
+
+/* ClipToPlane for the plane sign * x[axis] <= limit (the same arithmetic, vertex by vertex). */
+static int ClipToSlab(const BoxClipVertex* in, int count, int axis, cdReal sign, cdReal limit, uint32_t tag,
+					  BoxClipVertex* out)
 {
 	int n = 0;
+	cdReal dp = sign * in[0].x[axis] - limit;
 	for (int i = 0; i < count; ++i)
 	{
-		ClipVertex p = in[i];
-		ClipVertex q = in[i + 1 < count ? i + 1 : 0];
-		cdReal dp = sign * Component(p.p, axis) - limit;
-		cdReal dq = sign * Component(q.p, axis) - limit;
-		if (dp <= CD_R(0.0))
+		const BoxClipVertex* p = &in[i];
+		const BoxClipVertex* q = &in[i + 1 < count ? i + 1 : 0];
+		cdReal dq = sign * q->x[axis] - limit;
+		bool inside = dp <= CD_R(0.0);
+		if (inside)
 		{
-			out[n++] = p;
+			out[n++] = *p;
 		}
-		if ((dp <= CD_R(0.0)) != (dq <= CD_R(0.0)))
+		if (inside != (dq <= CD_R(0.0)))
 		{
-			ClipVertex x;
-			x.p = cd3Lerp(p.p, q.p, dp / (dp - dq));
-			x.tag = dp <= CD_R(0.0) ? tag : p.tag;
-			out[n++] = x;
+			cdReal s = dp / (dp - dq);
+			BoxClipVertex* x = &out[n++];
+			for (int c = 0; c < 3; ++c)
+			{
+				x->x[c] = p->x[c] + s * (q->x[c] - p->x[c]);
+			}
+			x->tag = inside ? tag : p->tag;
 		}
+		dp = dq;
 	}
 	return n;
 }
 
 /* FaceContact for two boxes, in the reference box's frame: its side planes are axis-aligned and
- * the incident box's corners come from one rotation matrix. */
-static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, cd3Mat33 rot, cd3Vec t, bool flip,
-								  cdReal speculativeDistance)
+ * the incident box's corners come from one rotation matrix (rot, t: the incident box's frame in
+ * the reference's). Writes the points and normal into *m, which the caller has emptied: the
+ * manifold is built in place, not returned through copies. */
+static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const cd3Mat33* rot, cd3Vec t,
+						   bool flip, cdReal speculativeDistance, cd3Manifold* m)
 {
-	cd3Manifold m = EmptyManifold();
 	int k = face / 2;
 	cdReal sign = (face & 1) ? CD_R(1.0) : -CD_R(1.0);
-	cdReal hr[3] = {ref.halfExtents.x, ref.halfExtents.y, ref.halfExtents.z};
-	cdReal hi[3] = {inc.halfExtents.x, inc.halfExtents.y, inc.halfExtents.z};
-	cd3Vec n = AxisVector(k, sign);
-	cd3Vec columns[3] = {rot.cx, rot.cy, rot.cz};
+	cdReal hr[3] = {ref->halfExtents.x, ref->halfExtents.y, ref->halfExtents.z};
+	cdReal hi[3] = {inc->halfExtents.x, inc->halfExtents.y, inc->halfExtents.z};
+	cdReal along[3] = {Component(rot->cx, k), Component(rot->cy, k), Component(rot->cz, k)};
 	int j = 0;
 	for (int axis = 1; axis < 3; ++axis)
 	{
-		if (cdAbs(Component(columns[axis], k)) > cdAbs(Component(columns[j], k)))
+		if (cdAbs(along[axis]) > cdAbs(along[j]))
 		{
 			j = axis;
 		}
 	}
 	/* The incident face's outward normal +-column j points against n. */
-	int incident = 2 * j + (sign * Component(columns[j], k) > CD_R(0.0) ? 0 : 1);
+	int incident = 2 * j + (sign * along[j] > CD_R(0.0) ? 0 : 1);
 
-	ClipVertex bufferA[8], bufferB[8];
-	ClipVertex* in = bufferA;
-	ClipVertex* out = bufferB;
+	BoxClipVertex bufferA[8], bufferB[8];
+	BoxClipVertex* in = bufferA;
+	BoxClipVertex* out = bufferB;
 	int count = 4;
 	for (int v = 0; v < 4; ++v)
 	{
 		int corner = BOX_FACE_VERTICES[incident][v];
 		cd3Vec c = cd3MakeVec((corner & 1) ? hi[0] : -hi[0], (corner & 2) ? hi[1] : -hi[1],
 							  (corner & 4) ? hi[2] : -hi[2]);
-		in[v].p = cd3Add(t, cd3MulMV(rot, c));
+		cd3Vec p = cd3Add(t, cd3MulMV(*rot, c));
+		in[v].x[0] = p.x;
+		in[v].x[1] = p.y;
+		in[v].x[2] = p.z;
 		in[v].tag = (uint32_t)v;
 	}
 	for (int side = 0; side < 4 && count > 0; ++side)
@@ -910,7 +922,7 @@ static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, cd3Mat33 rot
 		}
 		cdReal sideSign = ((v0 >> axis) & 1) ? CD_R(1.0) : -CD_R(1.0);
 		count = ClipToSlab(in, count, axis, sideSign, hr[axis], SIDE_TAG + (uint32_t)side, out);
-		ClipVertex* swap = in;
+		BoxClipVertex* swap = in;
 		in = out;
 		out = swap;
 	}
@@ -918,10 +930,13 @@ static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, cd3Mat33 rot
 	int kept = 0;
 	for (int i = 0; i < count; ++i)
 	{
-		cdReal separation = sign * Component(in[i].p, k) - hr[k];
+		cdReal separation = sign * in[i].x[k] - hr[k];
 		if (separation <= speculativeDistance)
 		{
-			candidates[kept].point = cd3MulSub(in[i].p, CD_R(0.5) * separation, n);
+			/* Midway between the surfaces: only the coordinate along the normal moves. */
+			cdReal x[3] = {in[i].x[0], in[i].x[1], in[i].x[2]};
+			x[k] -= CD_R(0.5) * separation * sign;
+			candidates[kept].point = cd3MakeVec(x[0], x[1], x[2]);
 			candidates[kept].separation = separation;
 			candidates[kept].id =
 				PackFaceId(face, incident, in[i > 0 ? i - 1 : count - 1].tag, in[i].tag, flip);
@@ -930,29 +945,58 @@ static cd3Manifold BoxFaceContact(cd3Box ref, int face, cd3Box inc, cd3Mat33 rot
 	}
 	if (kept == 0)
 	{
-		return m;
+		return;
 	}
+	cd3Mat33 frame = cd3MakeMatFromQuat(ref->rotation);
+	cd3Vec n = AxisVector(k, sign);
 	Candidate reduced[4];
-	int reducedCount = ReducePoints(candidates, kept, n, reduced);
-	for (int i = 0; i < reducedCount; ++i)
+	const Candidate* chosen = candidates;
+	int chosenCount = kept;
+	if (kept > 4)
 	{
-		AddPoint(&m, cd3Add(ref.center, cd3RotateVector(ref.rotation, reduced[i].point)),
-				 reduced[i].separation, reduced[i].id);
+		chosenCount = ReducePoints(candidates, kept, n, reduced);
+		chosen = reduced;
 	}
-	cd3Vec worldNormal = cd3RotateVector(ref.rotation, n);
-	m.normal = flip ? cd3Neg(worldNormal) : worldNormal;
-	return m;
+	for (int i = 0; i < chosenCount; ++i)
+	{
+		AddPoint(m, cd3Add(ref->center, cd3MulMV(frame, chosen[i].point)), chosen[i].separation,
+				 chosen[i].id);
+	}
+	cd3Vec worldNormal = cd3MulMV(frame, n);
+	m->normal = flip ? cd3Neg(worldNormal) : worldNormal;
+}
+
+/* EdgeContact for two boxes: the closest points of the two edges in A's frame (rot, t: B's frame
+ * in A's). */
+static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult* sat, const cd3Mat33* rot,
+						   cd3Vec t, cd3Manifold* m)
+{
+	cd3Segment edgeA, edgeB;
+	cd3BoxEdgeLocal(a->halfExtents, sat->edgeA, &edgeA.p1, &edgeA.p2);
+	cd3Vec q1, q2;
+	cd3BoxEdgeLocal(b->halfExtents, sat->edgeB, &q1, &q2);
+	edgeB.p1 = cd3Add(t, cd3MulMV(*rot, q1));
+	edgeB.p2 = cd3Add(t, cd3MulMV(*rot, q2));
+	cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(edgeA, edgeB);
+	cd3Transform frame = {a->center, a->rotation};
+	m->normal = cd3Normalize(sat->edgeNormal);
+	uint32_t id =
+		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
+	AddPoint(m, cd3TransformPoint(frame, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5))), sat->edgeSeparation, id);
 }
 
 cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 {
 	cd3Mat33 rot;
 	cd3Vec t;
-	cd3SatResult sat = cd3SatBoxes(a, b, &rot, &t);
+	cd3SatResult sat;
+	cd3SatBoxesInPlace(&a, &b, &sat, &rot, &t);
 	cdReal separation = cd3SatSeparation(&sat);
+	/* Every path returns m, so that it is built in the caller's result. */
+	cd3Manifold m = EmptyManifold();
 	if (!(separation <= speculativeDistance))
 	{
-		return EmptyManifold();
+		return m;
 	}
 	if (separation <= CD_R(0.0))
 	{
@@ -973,37 +1017,35 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 				size < CD_R(0.0) ? CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents)) : size;
 			useEdges = sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
 		}
-		if (!useEdges)
+		if (useEdges)
 		{
-			cd3Manifold m;
-			if (useB)
-			{
-				/* A's frame in B's: the transposed rotation. */
-				cd3Mat33 inverse = {{rot.cx.x, rot.cy.x, rot.cz.x},
-									{rot.cx.y, rot.cy.y, rot.cz.y},
-									{rot.cx.z, rot.cy.z, rot.cz.z}};
-				cd3Vec back = cd3Neg(cd3MulMV(inverse, t));
-				m = BoxFaceContact(b, sat.faceB, a, inverse, back, true, speculativeDistance);
-			}
-			else
-			{
-				m = BoxFaceContact(a, sat.faceA, b, rot, t, false, speculativeDistance);
-			}
-			if (m.pointCount > 0)
-			{
-				return m;
-			}
-			/* The incident face clipped away: the polytope path with every edge pair. */
-			cd3Polytope pa, pb;
-			cd3InitBoxPolytope(&pa, a);
-			cd3InitBoxPolytope(&pb, b);
-			return CollidePolytopesSat(&pa, &pb, cd3SatPolytopes(&pa, &pb), speculativeDistance);
+			BoxEdgeContact(&a, &b, &sat, &rot, t, &m);
+			return m;
+		}
+		if (useB)
+		{
+			/* A's frame in B's: the transposed rotation. */
+			cd3Mat33 inverse = cd3Transpose(rot);
+			cd3Vec back = cd3Neg(cd3MulMV(inverse, t));
+			BoxFaceContact(&b, sat.faceB, &a, &inverse, back, true, speculativeDistance, &m);
+		}
+		else
+		{
+			BoxFaceContact(&a, sat.faceA, &b, &rot, t, false, speculativeDistance, &m);
+		}
+		if (m.pointCount > 0)
+		{
+			return m;
 		}
 	}
+	/* Apart (the GJK distance decides the features), or the incident face clipped away: the
+	 * polytope path, with every edge pair in the second case. */
 	cd3Polytope pa, pb;
 	cd3InitBoxPolytope(&pa, a);
 	cd3InitBoxPolytope(&pb, b);
-	return CollidePolytopesSat(&pa, &pb, sat, speculativeDistance);
+	m = CollidePolytopesSat(&pa, &pb, separation <= CD_R(0.0) ? cd3SatPolytopes(&pa, &pb) : sat,
+							speculativeDistance);
+	return m;
 }
 
 cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance)
