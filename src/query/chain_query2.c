@@ -92,16 +92,10 @@ static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction)
 			continue;
 		}
 		cdReal t1 = (lo[axis] - o[axis]) * ray->inverse[axis], t2 = (hi[axis] - o[axis]) * ray->inverse[axis];
-		if (t1 > t2)
-		{
-			cdReal t = t1;
-			t1 = t2;
-			t2 = t;
-		}
 		/* Widened by a few ulps so that a ray grazing a flat segment's zero-height box is kept. */
 		cdReal slack = CD_R(4.0) * CD_REAL_EPSILON * (cdAbs(t1) + cdAbs(t2));
-		lower = cdMax(lower, t1 - slack);
-		upper = cdMin(upper, t2 + slack);
+		lower = cdMax(lower, cdMin(t1, t2) - slack);
+		upper = cdMin(upper, cdMax(t1, t2) + slack);
 		if (lower > upper)
 		{
 			return false;
@@ -158,12 +152,9 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 	while (top > 0)
 	{
 		Node node = stack[--top];
-		if (!RayHitsBox(chain->bounds[chain->levelOffset[node.level] + node.index], &local, best))
-		{
-			continue;
-		}
 		if (node.level == 0)
 		{
+			/* The segment test costs no more than its box's: no box test here. */
 			cdReal fraction;
 			cd2Vec normal;
 			if (RaycastSegment(chain->points[node.index], cd2ChainPoint(chain, node.index + 1), local.origin,
@@ -174,6 +165,10 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 				bestIndex = node.index;
 				bestNormal = normal;
 			}
+			continue;
+		}
+		if (!RayHitsBox(chain->bounds[chain->levelOffset[node.level] + node.index], &local, best))
+		{
 			continue;
 		}
 		/* The child nearer the origin along the ray first: its hit shortens the ray for the other. */
