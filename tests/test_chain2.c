@@ -259,6 +259,53 @@ static void TestSlidingOnStraightTerrain(void)
 	TEST_CHECK(contacts > 10000);
 }
 
+/* Tilted boxes and polygons resting on a corner: the normal is still the terrain's, and the
+ * deepest point is the lowest corner's depth. */
+static void TestTiltedShapesOnTerrain(void)
+{
+	static cd2Vec points[1024];
+	TestRng rng = TestRngMake(0x71E);
+	double angle = 0.4, c = cos(angle), s = sin(angle), nx = -s, ny = c;
+	int n = Tessellate(points, 1024, angle, 0.5, -1.0, 10.0, true, &rng);
+	cd2Chain* chain = MakeChain(points, n, false);
+	if (chain == NULL)
+	{
+		return;
+	}
+	int checked = 0;
+	for (int step = 0; step < 300; ++step)
+	{
+		double t = -7.0 + step * 0.0467;
+		double tilt = TestRngRange(&rng, -0.6, 0.6);
+		double sink = TestRngRange(&rng, 0.001, 0.03);
+		double hx = TestRngRange(&rng, 0.2, 0.8), hy = TestRngRange(&rng, 0.2, 0.8);
+		/* Height of the centre above the line when the lowest corner touches it. */
+		double h = hx * fabs(sin(tilt)) + hy * cos(tilt) - sink;
+		cd2Box box = {V(0.5 + c * t + nx * h, -1.0 + s * t + ny * h), V(hx, hy),
+					  cd2MakeRot((cdReal)(angle + tilt))};
+		cd2Shape shape = cd2MakeBoxShape(box);
+		cd2Manifold manifolds[16];
+		int count = cd2CollideChain(chain, MakeTransform(0, 0, 0), &shape, CD_R(0.0), manifolds, 16, NULL);
+		double deepest = 1e30;
+		for (int k = 0; k < count; ++k)
+		{
+			TEST_CHECKF(fabs((double)manifolds[k].normal.x - nx) <= 1e-4 &&
+							fabs((double)manifolds[k].normal.y - ny) <= 1e-4,
+						"t %.4f tilt %.3f: normal (%.9g %.9g)", t, tilt, (double)manifolds[k].normal.x,
+						(double)manifolds[k].normal.y);
+			for (int p = 0; p < manifolds[k].pointCount; ++p)
+			{
+				deepest = fmin(deepest, (double)manifolds[k].points[p].separation);
+			}
+		}
+		TEST_CHECKF(count >= 1 && fabs(deepest + sink) <= TOL,
+					"t %.4f tilt %.3f: %d manifolds, deepest %.9g, sunk %.6g", t, tilt, count, deepest, sink);
+		++checked;
+	}
+	TEST_CHECK(checked == 300);
+	cd2DestroyChain(chain);
+}
+
 /* The same terrain made of independent two-sided segments does catch: the test above can fail. */
 static void TestTwoSidedSegmentsCatch(void)
 {
@@ -890,6 +937,7 @@ int main(void)
 	TEST_RUN(TestBadInput);
 	TEST_RUN(TestGhosts);
 	TEST_RUN(TestSlidingOnStraightTerrain);
+	TEST_RUN(TestTiltedShapesOnTerrain);
 	TEST_RUN(TestTwoSidedSegmentsCatch);
 	TEST_RUN(TestHill);
 	TEST_RUN(TestBackSide);
