@@ -932,6 +932,85 @@ static void TestCollideAgainstBruteForce(void)
 	cd2DestroyChain(chain);
 }
 
+/* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
+static void TestScales(void)
+{
+	static cd2Vec points[200];
+	TestRng rng = TestRngMake(0x5CA1E);
+	const double scales[] = {1e-9, 1e-5, 1.0, 1e5, 1e9};
+	int finite = 0;
+	for (int si = 0; si < 5; ++si)
+	{
+		double k = scales[si];
+		int n = RandomTerrain(points, 200, &rng);
+		for (int i = 0; i < n; ++i)
+		{
+			points[i] = V(k * (double)points[i].x, k * (double)points[i].y);
+		}
+		/* The weld tolerance is half a linear slop: at other scales the length unit follows. */
+		cdSetLengthUnitsPerMeter((cdReal)k);
+		cd2Chain* chain = MakeChain(points, n, si % 2 == 1);
+		if (chain == NULL)
+		{
+			cdSetLengthUnitsPerMeter(CD_R(1.0));
+			continue;
+		}
+		cd2Transform frame = MakeTransform(k * 3.0, -k * 2.0, 0.3 * si);
+		cd2Aabb all = cd2GetChainBounds(chain);
+		for (int trial = 0; trial < 200; ++trial)
+		{
+			cd2Vec c = cd2TransformPoint(frame, V(TestRngRange(&rng, (double)all.min.x, (double)all.max.x),
+												  TestRngRange(&rng, (double)all.min.y, (double)all.max.y)));
+			cd2Shape shape;
+			if (trial % 3 == 0)
+			{
+				cd2Circle circle = {c, (cdReal)(k * TestRngRange(&rng, 0, 2))};
+				shape = cd2MakeCircleShape(circle);
+			}
+			else if (trial % 3 == 1)
+			{
+				cd2Capsule capsule = {c, V((double)c.x + k, (double)c.y),
+									  (cdReal)(k * TestRngRange(&rng, 0, 1))};
+				shape = cd2MakeCapsuleShape(capsule);
+			}
+			else
+			{
+				cd2Box box = {c, V(k * TestRngRange(&rng, 0, 2), k * TestRngRange(&rng, 0, 2)),
+							  cd2MakeRot((cdReal)TestRngRange(&rng, -3, 3))};
+				shape = cd2MakeBoxShape(box);
+			}
+			cd2Manifold manifolds[64];
+			int count = cd2CollideChain(chain, frame, &shape, (cdReal)(0.1 * k), manifolds, 64, NULL);
+			bool ok = true;
+			for (int m = 0; m < count; ++m)
+			{
+				ok = ok && cd2IsValidVec(manifolds[m].normal) &&
+					 fabs((double)cd2Length(manifolds[m].normal) - 1.0) <= 1e-3;
+				for (int p = 0; p < manifolds[m].pointCount; ++p)
+				{
+					ok = ok && cd2IsValidVec(manifolds[m].points[p].point) &&
+						 isfinite((double)manifolds[m].points[p].separation);
+				}
+			}
+			cd2Ray ray = {c, V(k * TestRngRange(&rng, -20, 20), k * TestRngRange(&rng, -20, 20))};
+			cd2RayHit hit;
+			if (cd2RaycastChain(chain, frame, ray, &hit, NULL))
+			{
+				ok = ok && cd2IsValidVec(hit.point) && cd2IsValidVec(hit.normal) &&
+					 hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0) &&
+					 fabs((double)cd2Length(hit.normal) - 1.0) <= 1e-3 &&
+					 cd2Dot(hit.normal, ray.translation) <= CD_R(0.0);
+			}
+			TEST_CHECKF(ok, "scale %g trial %d: not finite or not unit", k, trial);
+			finite += ok;
+		}
+		TEST_CHECK(cd2GetChainPointCount(chain) == n);
+		cd2DestroyChain(chain);
+		cdSetLengthUnitsPerMeter(CD_R(1.0));
+	}
+	TEST_CHECK(finite == 1000);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBadInput);
@@ -945,5 +1024,6 @@ int main(void)
 	TEST_RUN(TestQueryAabb);
 	TEST_RUN(TestRaycast);
 	TEST_RUN(TestCollideAgainstBruteForce);
+	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }
