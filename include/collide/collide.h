@@ -12,6 +12,8 @@
 #include "collide/query3.h"
 #include "collide/manifold2.h"
 #include "collide/manifold3.h"
+#include "collide/chain2.h"
+#include "collide/mesh3.h"
 #include "collide/broad.h"
 #include "collide/cast.h"
 
