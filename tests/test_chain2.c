@@ -351,7 +351,8 @@ static void TestHill(void)
 		cd2Circle ball = {V(cos(a) * (r - sink), 5.0 + sin(a) * (r - sink)), (cdReal)r};
 		cd2Shape shape = cd2MakeCircleShape(ball);
 		int count = cd2CollideChain(chain, MakeTransform(0, 0, 0), &shape, CD_R(0.0), manifolds, 8, segments);
-		TEST_CHECKF(count >= 1, "angle %.4f: %d manifolds", a, count);
+		/* Both faces allow the normal: the vertex is reported once, by the lower segment. */
+		TEST_CHECKF(count == 1 && segments[0] == 0, "angle %.4f: %d manifolds", a, count);
 		for (int k = 0; k < count; ++k)
 		{
 			TEST_CHECKF(manifolds[k].pointCount == 1 && fabs((double)manifolds[k].normal.x - cos(a)) <= TOL &&
@@ -378,7 +379,7 @@ static void TestHill(void)
 			++pointTotal;
 		}
 	}
-	TEST_CHECK(pointTotal >= 1);
+	TEST_CHECK(pointTotal == 1);
 	cd2DestroyChain(chain);
 }
 
@@ -466,12 +467,17 @@ static void TestLoops(void)
 	cd2Shape shape = cd2MakeCircleShape(ball);
 	int count = cd2CollideChain(a, frame, &shape, CD_R(0.0), manifolds, 8, segments);
 	cd2Vec diagonal = cd2RotateVector(frame.q, V(sqrt(0.5), sqrt(0.5)));
-	TEST_CHECK(count >= 1);
+	TEST_CHECK(count == 1 && segments[0] == 1);
 	for (int k = 0; k < count; ++k)
 	{
 		TEST_CHECK(fabs((double)manifolds[k].normal.x - (double)diagonal.x) <= TOL &&
 				   fabs((double)manifolds[k].normal.y - (double)diagonal.y) <= TOL);
 	}
+	/* The loop's closing corner (between the last segment and segment 0): segment 0 keeps it. */
+	ball.center = cd2TransformPoint(frame, V(-2.2, -2.2));
+	shape = cd2MakeCircleShape(ball);
+	count = cd2CollideChain(a, frame, &shape, CD_R(0.0), manifolds, 8, segments);
+	TEST_CHECK(count == 1 && segments[0] == 0);
 	/* The room's corners are concave: a ball in a corner gets both walls. */
 	ball.center = cd2TransformPoint(frame, V(1.8, 1.8));
 	shape = cd2MakeCircleShape(ball);
@@ -776,7 +782,7 @@ static void TestCollideAgainstBruteForce(void)
 	}
 	int segmentCount = cd2GetChainSegmentCount(chain);
 	cd2Aabb all = cd2GetChainBounds(chain);
-	int touching = 0;
+	int touching = 0, sharedRemoved = 0;
 	for (int trial = 0; trial < 500; ++trial)
 	{
 		/* Near the terrain: start on a random vertex and move a little. */
@@ -823,6 +829,8 @@ static void TestCollideAgainstBruteForce(void)
 			cd2CollideChain(chain, MakeTransform(0, 0, 0), &shape, CD_R(0.05), manifolds, 32, segments);
 		int expected = 0;
 		bool same = true;
+		cd2Manifold previous = {{CD_R(0.0), CD_R(0.0)}, {{{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u}}, 0};
+		int previousIndex = -2;
 		cd2Polygon boxPolygon;
 		if (kind == 2)
 		{
@@ -844,10 +852,34 @@ static void TestCollideAgainstBruteForce(void)
 			{
 				m = cd2CollideChainSegmentPolygon(&s, kind == 2 ? &boxPolygon : &shape.polygon, CD_R(0.05));
 			}
+			/* A vertex contact the previous segment already reports is kept there only. */
+			if (m.pointCount > 0 && previousIndex == i - 1 &&
+				(double)cd2Dot(m.normal, previous.normal) >= 1.0 - 1e-4)
+			{
+				int kept = 0;
+				for (int p = 0; p < m.pointCount; ++p)
+				{
+					bool shared = false;
+					for (int q = 0; q < previous.pointCount; ++q)
+					{
+						shared =
+							shared || (double)cd2VecDistance(m.points[p].point, previous.points[q].point) <=
+										  0.01 * (double)CD_LINEAR_SLOP + 1e-4;
+					}
+					if (!shared)
+					{
+						m.points[kept++] = m.points[p];
+					}
+				}
+				m.pointCount = kept;
+				sharedRemoved += kept == 0;
+			}
 			if (m.pointCount == 0)
 			{
 				continue;
 			}
+			previous = m;
+			previousIndex = i;
 			bool match = expected < count && segments[expected] == i &&
 						 manifolds[expected].pointCount == m.pointCount &&
 						 cd2VecDistance(manifolds[expected].normal, m.normal) <= (cdReal)TOL;
@@ -906,7 +938,8 @@ static void TestCollideAgainstBruteForce(void)
 			for (int k = 0; k < count; ++k)
 			{
 				cd2Vec normal = cd2RotateVector(frame.q, manifolds[k].normal);
-				bool ok = movedSegments[k] == segments[k] &&
+				/* A vertex both neighbours touch may go to the other one at its fan's edge. */
+				bool ok = abs(movedSegments[k] - segments[k]) <= 1 &&
 						  movedManifolds[k].pointCount == manifolds[k].pointCount &&
 						  cd2VecDistance(normal, movedManifolds[k].normal) <= (cdReal)invariance;
 				for (int p = 0; ok && p < manifolds[k].pointCount; ++p)
@@ -916,17 +949,20 @@ static void TestCollideAgainstBruteForce(void)
 						 fabs((double)manifolds[k].points[p].separation -
 							  (double)movedManifolds[k].points[p].separation) <= invariance;
 				}
-				TEST_CHECKF(ok,
-							"trial %d kind %d: moved manifold %d differs: points %d/%d normal (%.6f "
-							"%.6f)/(%.6f %.6f) sep %.6f/%.6f",
-							trial, kind, k, manifolds[k].pointCount, movedManifolds[k].pointCount,
-							(double)normal.x, (double)normal.y, (double)movedManifolds[k].normal.x,
-							(double)movedManifolds[k].normal.y, (double)manifolds[k].points[0].separation,
-							(double)movedManifolds[k].points[0].separation);
+				TEST_CHECKF(
+					ok,
+					"trial %d kind %d: moved manifold %d (segment %d/%d) differs: points %d/%d normal (%.6f "
+					"%.6f)/(%.6f %.6f) sep %.6f/%.6f",
+					trial, kind, k, segments[k], movedSegments[k], manifolds[k].pointCount,
+					movedManifolds[k].pointCount, (double)normal.x, (double)normal.y,
+					(double)movedManifolds[k].normal.x, (double)movedManifolds[k].normal.y,
+					(double)manifolds[k].points[0].separation,
+					(double)movedManifolds[k].points[0].separation);
 			}
 		}
 	}
-	printf("collide: %d of 500 shapes touch the terrain\n", touching);
+	printf("collide: %d of 500 shapes touch the terrain, %d shared vertex contacts kept once\n", touching,
+		   sharedRemoved);
 	TEST_CHECK(touching > 150);
 	(void)all;
 	cd2DestroyChain(chain);

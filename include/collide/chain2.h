@@ -86,7 +86,9 @@ CD_API void cd2Chain_QueryAabb(const cd2Chain* chain, cd2Transform chainTransfor
  * points from the terrain to the shape. Boxes and AABBs collide as polygons, segments as
  * zero-radius capsules. Manifolds come in increasing segment index order; segmentIndices[k]
  * (may be NULL) receives the segment of manifolds[k]. A point's feature id is that of the
- * segment's manifold: (segment index, id) stays the same while the same features touch. Returns
+ * segment's manifold: (segment index, id) stays the same while the same features touch. A convex
+ * vertex contact that both of its segments report is kept once, in the lower segment's manifold
+ * (in a loop, segment 0's over the last segment's). Returns
  * the number of manifolds written, at most capacity (segments beyond capacity are dropped). */
 CD_API int cd2CollideChain(const cd2Chain* chain, cd2Transform chainTransform, const cd2Shape* shape,
 						   cdReal speculativeDistance, cd2Manifold* manifolds, int capacity,

@@ -326,7 +326,39 @@ typedef struct CollideContext
 	int* segmentIndices;
 	int capacity;
 	int count;
+	/* The last and the first manifold kept, in the chain's frame, for removing shared vertices. */
+	cd2Manifold previous, first;
+	int previousIndex, firstIndex;
 } CollideContext;
+
+/* Drops the points of m that `earlier` (a neighbouring segment's manifold) already reports: at a
+ * convex vertex both segments allow the same fan of normals and both report the vertex contact.
+ * The lower segment keeps it (the loop's last segment yields to segment 0), so the owner does not
+ * change while both touch. */
+static void RemoveSharedPoints(cd2Manifold* m, const cd2Manifold* earlier)
+{
+	if (cd2Dot(m->normal, earlier->normal) < CD_R(1.0) - CD_R(1.0e-4))
+	{
+		return;
+	}
+	int kept = 0;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		cd2Vec p = m->points[i].point;
+		cdReal tolerance =
+			CD_R(0.01) * CD_LINEAR_SLOP + CD_R(8.0) * CD_REAL_EPSILON * cdMax(cdAbs(p.x), cdAbs(p.y));
+		bool shared = false;
+		for (int j = 0; j < earlier->pointCount && !shared; ++j)
+		{
+			shared = cd2VecDistanceSquared(p, earlier->points[j].point) <= tolerance * tolerance;
+		}
+		if (!shared)
+		{
+			m->points[kept++] = m->points[i];
+		}
+	}
+	m->pointCount = kept;
+}
 
 /* Whether the whole shape lies above the segment's line by more than the speculative distance
  * (plus a margin for round-off): then the segment's manifold has no point, and this test, a few
@@ -393,6 +425,27 @@ static bool CollideSegment(int index, void* userContext)
 	{
 		return true;
 	}
+	if (context->count > 0 && context->previousIndex == index - 1)
+	{
+		RemoveSharedPoints(&m, &context->previous);
+	}
+	if (context->count > 0 && context->firstIndex == 0 && index == context->chain->segmentCount - 1 &&
+		context->chain->isLoop && index > 0)
+	{
+		RemoveSharedPoints(&m, &context->first);
+	}
+	if (m.pointCount == 0)
+	{
+		return true;
+	}
+	if (context->count == 0)
+	{
+		context->first = m;
+		context->firstIndex = index;
+	}
+	context->previous = m;
+	context->previousIndex = index;
+
 	cd2Transform t = context->transform;
 	m.normal = cd2RotateVector(t.q, m.normal);
 	for (int i = 0; i < m.pointCount; ++i)
@@ -417,8 +470,16 @@ int cd2CollideChain(const cd2Chain* chain, cd2Transform chainTransform, const cd
 	}
 	LocalShape local;
 	ToLocal(&local, shape, chainTransform);
-	CollideContext context = {chain,	 &local,		 chainTransform, speculativeDistance,
-							  manifolds, segmentIndices, capacity,		 0};
+	CollideContext context;
+	context.chain = chain;
+	context.shape = &local;
+	context.transform = chainTransform;
+	context.speculativeDistance = speculativeDistance;
+	context.manifolds = manifolds;
+	context.segmentIndices = segmentIndices;
+	context.capacity = capacity;
+	context.count = 0;
+	context.previousIndex = context.firstIndex = -2;
 	Query(chain, cd2AabbInflate(local.bounds, speculativeDistance), CollideSegment, &context);
 	return context.count;
 }
