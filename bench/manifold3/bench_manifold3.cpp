@@ -1,41 +1,60 @@
-// collide_bench_manifold3: ns per call of the 3D contact manifolds, with Bullet (btBoxBoxDetector:
-// ODE's box-box SAT and clipping; btGjkPairDetector + btGjkEpaPenetrationDepthSolver) and libccd
-// (ccdMPRPenetration, ccdGJKPenetration) on the same pairs in the same run.
+// collide_bench_manifold3: ns per call of 3D convex pair queries (distance, overlap, depth,
+// manifold) on box-box and hull(32)-hull(32) pairs, with the peers that do the same job, on the
+// same pairs in the same run: Bullet (btGjkEpaSolver2 for distance/overlap/depth,
+// btBoxBoxDetector = ODE's box-box SAT and clipping, btGjkPairDetector + btGjkEpaPenetrationDepthSolver
+// for the hull manifold), libccd (ccdGJKIntersect, ccdMPRIntersect, ccdGJKPenetration,
+// ccdMPRPenetration) and FCL (fcl::distance, fcl::collide with its libccd-based GJK solver; its
+// box-box contact is ODE's), each when pkg-config finds it.
 //
-// Pairs are near contact: unit-size shapes overlapping by 0 to 0.05 (the resting contacts a
-// physics step sees). box-box: collide's full manifold (up to 4 points) against Bullet's box-box
-// detector (up to 4 points). hull(32)-hull(32): hulls of 32 vertices on random ellipsoids;
-// collide's exact depth (GJK/EPA on the vertices for hulls this large) plus manifold against Bullet's GJK/EPA
-// (one point, margins 0) and libccd's MPR and GJK/EPA (depth, direction and one point; libccd's support
-// functions loop over the 32 vertices like collide's). collide takes world-space shapes; Bullet and libccd
-// take local shapes and transforms. Each figure is the median of 9 runs of about 20 ms, the libraries' runs
-// interleaved so that all see the same machine load.
+// Pairs: unit-size shapes near contact, as a physics step sees them. Each set has kPairs
+// overlapping pairs (depth 0.005 to 0.05) and kPairs separated pairs (gap 0.005 to 0.05):
+// distance runs on the separated ones, depth and manifold on the overlapping ones, overlap on
+// all. Half the box pairs rest face on face (a stack), half are at random; hulls have 32 vertices
+// on random ellipsoids. collide has no depth-only query: its depth row is the manifold call (the
+// depth is the manifold's smallest separation), so depth and manifold rows time the same call.
+//
+// Answers are checked against an exact reference computed here in double: the separating axis
+// test over every face normal and every edge pair (a superset of the critical axes, so its
+// largest separation is the exact signed separation for overlapping pairs and its sign decides
+// overlap exactly). Printed per peer: overlap counts (reference: the SAT sign), and the max and
+// mean relative depth error against the reference depth; distances against collide's.
+//
+// Timing: each figure is the median of 9 runs of about 20 ms of thread CPU time (so that other
+// processes on a shared machine stall no one's clock), all queries' runs interleaved.
 // Usage: collide_bench_manifold3 [--quick]
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #ifdef COLLIDE_BENCH_HAVE_CCD
 #include <ccd/ccd.h>
 #endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+#endif
 
 #include "collide/collide.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace
 {
-const int kPairs = 256;
+const int kPairs = 256; // overlapping pairs; as many separated ones
 
 btTransform ToBullet(cd3Transform t)
 {
@@ -67,17 +86,193 @@ double MinSeparation(const cd3Manifold& m)
 	return s;
 }
 
-// Moves B along the manifold normal until the pair overlaps by `depth` (a few refinements).
-template <typename Collide, typename Move> void PlaceAtDepth(Collide collide, Move move, double depth)
+// Moves B along the manifold normal until the pair's signed separation is `separation` (a few
+// refinements).
+template <typename Collide, typename Move>
+void PlaceAtSeparation(Collide collide, Move move, double separation)
 {
-	for (int k = 0; k < 4; ++k)
+	for (int k = 0; k < 6; ++k)
 	{
 		cd3Manifold m = collide(CD_R(100.0));
 		if (m.pointCount == 0)
 		{
 			return;
 		}
-		move(cd3Scale((cdReal)(-depth - MinSeparation(m)), m.normal));
+		move(cd3Scale((cdReal)(separation - MinSeparation(m)), m.normal));
+	}
+}
+
+// ---- exact reference: SAT in double over every face normal and edge pair ----
+
+struct D3
+{
+	double x, y, z;
+};
+D3 Sub(D3 a, D3 b)
+{
+	return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+double Dot(D3 a, D3 b)
+{
+	return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+D3 Cross(D3 a, D3 b)
+{
+	return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+D3 Rotate(cd3Quat q, D3 v)
+{
+	D3 u = {(double)q.x, (double)q.y, (double)q.z};
+	double w = (double)q.w;
+	D3 t = Cross(u, v);
+	t = {2 * t.x, 2 * t.y, 2 * t.z};
+	D3 c = Cross(u, t);
+	return {v.x + w * t.x + c.x, v.y + w * t.y + c.y, v.z + w * t.z + c.z};
+}
+
+struct RefPolytope
+{
+	std::vector<D3> vertices, normals, edges; // world
+};
+
+RefPolytope RefBox(cd3Box b)
+{
+	RefPolytope p;
+	D3 c = {(double)b.center.x, (double)b.center.y, (double)b.center.z};
+	D3 h = {(double)b.halfExtents.x, (double)b.halfExtents.y, (double)b.halfExtents.z};
+	for (int i = 0; i < 8; ++i)
+	{
+		D3 local = {(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z};
+		D3 r = Rotate(b.rotation, local);
+		p.vertices.push_back({c.x + r.x, c.y + r.y, c.z + r.z});
+	}
+	D3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+	for (D3 a : axes)
+	{
+		p.normals.push_back(Rotate(b.rotation, a));
+		p.edges.push_back(Rotate(b.rotation, a));
+	}
+	return p;
+}
+
+RefPolytope RefHull(cd3HullShape s)
+{
+	RefPolytope p;
+	const cd3Hull* h = s.hull;
+	D3 c = {(double)s.transform.p.x, (double)s.transform.p.y, (double)s.transform.p.z};
+	for (int i = 0; i < h->vertexCount; ++i)
+	{
+		D3 r = Rotate(s.transform.q,
+					  {(double)h->vertices[i].x, (double)h->vertices[i].y, (double)h->vertices[i].z});
+		p.vertices.push_back({c.x + r.x, c.y + r.y, c.z + r.z});
+	}
+	for (int f = 0; f < h->faceCount; ++f)
+	{
+		cd3Vec n = h->planes[f].normal;
+		p.normals.push_back(Rotate(s.transform.q, {(double)n.x, (double)n.y, (double)n.z}));
+	}
+	for (int e = 0; e < h->edgeCount; ++e)
+	{
+		if (h->edges[e].twin > e)
+		{
+			p.edges.push_back(Sub(p.vertices[(size_t)h->edges[h->edges[e].twin].origin],
+								  p.vertices[(size_t)h->edges[e].origin]));
+		}
+	}
+	return p;
+}
+
+double AxisSeparation(const RefPolytope& a, const RefPolytope& b, D3 n)
+{
+	double loA = INFINITY, hiA = -INFINITY, loB = INFINITY, hiB = -INFINITY;
+	for (D3 v : a.vertices)
+	{
+		double d = Dot(n, v);
+		loA = std::min(loA, d);
+		hiA = std::max(hiA, d);
+	}
+	for (D3 v : b.vertices)
+	{
+		double d = Dot(n, v);
+		loB = std::min(loB, d);
+		hiB = std::max(hiB, d);
+	}
+	return std::max(loB - hiA, loA - hiB);
+}
+
+// The exact signed separation (minus the depth when overlapping; a lower bound of the distance
+// when apart, whose sign is exact).
+double ReferenceSeparation(const RefPolytope& a, const RefPolytope& b)
+{
+	double best = -INFINITY;
+	for (D3 n : a.normals)
+	{
+		best = std::max(best, AxisSeparation(a, b, n));
+	}
+	for (D3 n : b.normals)
+	{
+		best = std::max(best, AxisSeparation(a, b, n));
+	}
+	for (D3 ea : a.edges)
+	{
+		for (D3 eb : b.edges)
+		{
+			D3 n = Cross(ea, eb);
+			double l = std::sqrt(Dot(n, n));
+			if (l > 1e-9 * std::sqrt(Dot(ea, ea) * Dot(eb, eb)))
+			{
+				best = std::max(best, AxisSeparation(a, b, {n.x / l, n.y / l, n.z / l}));
+			}
+		}
+	}
+	return best;
+}
+
+// ---- timing ----
+
+double ThreadSeconds()
+{
+	timespec t;
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+double Median(std::vector<double> v)
+{
+	std::sort(v.begin(), v.end());
+	return v[v.size() / 2];
+}
+
+// A timed query: its body runs over `calls` pairs and returns a checksum.
+struct Query
+{
+	std::function<int()> body;
+	int calls;
+	double ns;
+};
+
+void MeasureAll(std::vector<Query*>& queries, int runs, double seconds)
+{
+	std::vector<std::vector<double>> samples(queries.size());
+	volatile int sink = 0;
+	for (int r = 0; r < runs; ++r)
+	{
+		for (size_t q = 0; q < queries.size(); ++q)
+		{
+			double start = ThreadSeconds(), elapsed = 0.0;
+			long calls = 0;
+			do
+			{
+				sink = sink + queries[q]->body();
+				calls += queries[q]->calls;
+				elapsed = ThreadSeconds() - start;
+			} while (elapsed < seconds);
+			samples[q].push_back(elapsed * 1e9 / (double)calls);
+		}
+	}
+	for (size_t q = 0; q < queries.size(); ++q)
+	{
+		queries[q]->ns = Median(samples[q]);
 	}
 }
 
@@ -98,77 +293,134 @@ struct CountResult : btDiscreteCollisionDetectorInterface::Result
 	}
 };
 
-double Median(std::vector<double> v)
-{
-	std::sort(v.begin(), v.end());
-	return v[v.size() / 2];
-}
-
-// Runs each body over all pairs repeatedly for about `seconds`, interleaved, `runs` times; returns
-// the median ns per call of each.
-std::vector<double> Measure(const std::vector<std::function<int()>>& bodies, int pairs, int runs,
-							double seconds)
-{
-	std::vector<std::vector<double>> samples(bodies.size());
-	volatile int sink = 0;
-	for (int r = 0; r < runs; ++r)
-	{
-		for (size_t b = 0; b < bodies.size(); ++b)
-		{
-			auto start = std::chrono::steady_clock::now();
-			long calls = 0;
-			double elapsed = 0.0;
-			do
-			{
-				sink = sink + bodies[b]();
-				calls += pairs;
-				elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-			} while (elapsed < seconds);
-			samples[b].push_back(elapsed * 1e9 / (double)calls);
-		}
-	}
-	std::vector<double> out;
-	for (auto& s : samples)
-	{
-		out.push_back(Median(s));
-	}
-	return out;
-}
-
 #ifdef COLLIDE_BENCH_HAVE_CCD
-struct CcdHull
+// A libccd object: a box or a hull with its transform; the support function loops over the
+// vertices (hull) or picks the corner by signs (box), in the shape's frame, like collide's.
+struct CcdObject
 {
-	const cd3Hull* hull;
+	const cd3Hull* hull; // NULL: a box
+	cd3Vec halfExtents;
 	cd3Transform transform;
 };
 
 void CcdSupport(const void* object, const ccd_vec3_t* dir, ccd_vec3_t* out)
 {
-	const CcdHull* h = (const CcdHull*)object;
-	cd3Vec d = cd3InvRotateVector(h->transform.q,
+	const CcdObject* o = (const CcdObject*)object;
+	cd3Vec d = cd3InvRotateVector(o->transform.q,
 								  cd3MakeVec((cdReal)dir->v[0], (cdReal)dir->v[1], (cdReal)dir->v[2]));
-	int best = 0;
-	cdReal bestDot = cd3Dot(d, h->hull->vertices[0]);
-	for (int i = 1; i < h->hull->vertexCount; ++i)
+	cd3Vec local;
+	if (o->hull == nullptr)
 	{
-		cdReal x = cd3Dot(d, h->hull->vertices[i]);
-		if (x > bestDot)
-		{
-			bestDot = x;
-			best = i;
-		}
+		cd3Vec h = o->halfExtents;
+		local = cd3MakeVec(d.x >= 0 ? h.x : -h.x, d.y >= 0 ? h.y : -h.y, d.z >= 0 ? h.z : -h.z);
 	}
-	cd3Vec p = cd3TransformPoint(h->transform, h->hull->vertices[best]);
+	else
+	{
+		int best = 0;
+		cdReal bestDot = cd3Dot(d, o->hull->vertices[0]);
+		for (int i = 1; i < o->hull->vertexCount; ++i)
+		{
+			cdReal x = cd3Dot(d, o->hull->vertices[i]);
+			if (x > bestDot)
+			{
+				bestDot = x;
+				best = i;
+			}
+		}
+		local = o->hull->vertices[best];
+	}
+	cd3Vec p = cd3TransformPoint(o->transform, local);
 	ccdVec3Set(out, p.x, p.y, p.z);
 }
 
 void CcdCenter(const void* object, ccd_vec3_t* out)
 {
-	const CcdHull* h = (const CcdHull*)object;
-	cd3Vec p = cd3TransformPoint(h->transform, h->hull->centroid);
-	ccdVec3Set(out, p.x, p.y, p.z);
+	const CcdObject* o = (const CcdObject*)object;
+	cd3Vec c = o->hull == nullptr ? o->transform.p : cd3TransformPoint(o->transform, o->hull->centroid);
+	ccdVec3Set(out, c.x, c.y, c.z);
 }
 #endif
+
+#ifdef COLLIDE_BENCH_HAVE_FCL
+fcl::Transform3d ToFcl(cd3Transform t)
+{
+	fcl::Transform3d x = fcl::Transform3d::Identity();
+	x.linear() =
+		Eigen::Quaterniond((double)t.q.w, (double)t.q.x, (double)t.q.y, (double)t.q.z).toRotationMatrix();
+	x.translation() = Eigen::Vector3d((double)t.p.x, (double)t.p.y, (double)t.p.z);
+	return x;
+}
+
+std::shared_ptr<fcl::CollisionGeometryd> FclHull(const cd3Hull* h)
+{
+	auto vertices = std::make_shared<std::vector<Eigen::Vector3d>>();
+	for (int i = 0; i < h->vertexCount; ++i)
+	{
+		vertices->emplace_back((double)h->vertices[i].x, (double)h->vertices[i].y, (double)h->vertices[i].z);
+	}
+	auto faces = std::make_shared<std::vector<int>>();
+	for (int f = 0; f < h->faceCount; ++f)
+	{
+		std::vector<int> loop;
+		int e = h->faceEdges[f];
+		do
+		{
+			loop.push_back(h->edges[e].origin);
+			e = h->edges[e].next;
+		} while (e != h->faceEdges[f]);
+		faces->push_back((int)loop.size());
+		faces->insert(faces->end(), loop.begin(), loop.end());
+	}
+	return std::make_shared<fcl::Convexd>(vertices, h->faceCount, faces);
+}
+#endif
+
+// One pair kind (box-box or hull-hull): the shapes in every library's form.
+struct PairSet
+{
+	std::string name;
+	std::vector<cd3Shape> a, b;	   // 2 kPairs: even overlapping, odd separated
+	std::vector<double> reference; // exact signed separation (SAT), as above
+	std::vector<const btConvexShape*> btA, btB;
+	std::vector<btTransform> xa, xb;
+#ifdef COLLIDE_BENCH_HAVE_CCD
+	std::vector<CcdObject> ccdA, ccdB;
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+	std::vector<std::shared_ptr<fcl::CollisionGeometryd>> fclA, fclB;
+	std::vector<fcl::Transform3d> fxa, fxb;
+#endif
+};
+
+cd3Manifold CollideShapes(const cd3Shape& a, const cd3Shape& b, cdReal speculative)
+{
+	if (a.type == CD3_SHAPE_BOX)
+	{
+		return cd3CollideBoxBox(a.box, b.box, speculative);
+	}
+	return cd3CollideHullHull(a.hull, b.hull, speculative);
+}
+
+struct Stats
+{
+	double maxError = 0.0, sumError = 0.0;
+	int count = 0, failed = 0;
+	void Add(double value, double reference)
+	{
+		double e = std::fabs(value - reference) / std::fabs(reference);
+		maxError = std::max(maxError, e);
+		sumError += e;
+		++count;
+	}
+	std::string Text() const
+	{
+		char s[96];
+		std::snprintf(s, sizeof s, "max %.1e mean %.1e (%d pairs%s)", maxError,
+					  count ? sumError / count : 0.0, count,
+					  failed ? (", " + std::to_string(failed) + " no answer").c_str() : "");
+		return s;
+	}
+};
 } // namespace
 
 int main(int argc, char** argv)
@@ -178,12 +430,14 @@ int main(int argc, char** argv)
 	double seconds = quick ? 0.005 : 0.02;
 	std::mt19937_64 rng(20261121);
 	std::uniform_real_distribution<double> u(0.0, 1.0);
+	const int n = 2 * kPairs;
+	auto signedGap = [&](int i) { return (i % 2 == 0 ? -1.0 : 1.0) * (0.005 + 0.045 * u(rng)); };
 
 	// ---- box-box ----
-	std::vector<cd3Box> boxA(kPairs), boxB(kPairs);
-	std::vector<std::unique_ptr<btBoxShape>> bulletBoxA, bulletBoxB;
-	std::vector<btTransform> xa(kPairs), xb(kPairs);
-	for (int i = 0; i < kPairs; ++i)
+	PairSet boxes;
+	boxes.name = "box-box";
+	std::vector<std::unique_ptr<btBoxShape>> btBoxes;
+	for (int i = 0; i < n; ++i)
 	{
 		cd3Box a, b;
 		a.halfExtents = cd3MakeVec((cdReal)(0.3 + 0.4 * u(rng)), (cdReal)(0.3 + 0.4 * u(rng)),
@@ -193,50 +447,46 @@ int main(int argc, char** argv)
 		a.center = cd3MakeVec(0, 0, 0);
 		a.rotation = RandomRotation(rng);
 		// Half the pairs resting face on face (the common case in a stack), half at random.
-		b.rotation = i % 2 == 0 ? a.rotation : RandomRotation(rng);
-		b.center = cd3Scale(CD_R(1.5),
-							i % 2 == 0 ? cd3RotateVector(a.rotation, cd3MakeVec(0, 1, 0)) : RandomUnit(rng));
-		PlaceAtDepth([&](cdReal s) { return cd3CollideBoxBox(a, b, s); },
-					 [&](cd3Vec d) { b.center = cd3Add(b.center, d); }, 0.05 * u(rng));
-		boxA[(size_t)i] = a;
-		boxB[(size_t)i] = b;
-		bulletBoxA.emplace_back(new btBoxShape(
-			btVector3((btScalar)a.halfExtents.x, (btScalar)a.halfExtents.y, (btScalar)a.halfExtents.z)));
-		bulletBoxB.emplace_back(new btBoxShape(
-			btVector3((btScalar)b.halfExtents.x, (btScalar)b.halfExtents.y, (btScalar)b.halfExtents.z)));
-		xa[(size_t)i] = ToBullet({a.center, a.rotation});
-		xb[(size_t)i] = ToBullet({b.center, b.rotation});
+		bool stacked = (i / 2) % 2 == 0;
+		b.rotation = stacked ? a.rotation : RandomRotation(rng);
+		b.center =
+			cd3Scale(CD_R(1.5), stacked ? cd3RotateVector(a.rotation, cd3MakeVec(0, 1, 0)) : RandomUnit(rng));
+		PlaceAtSeparation([&](cdReal s) { return cd3CollideBoxBox(a, b, s); },
+						  [&](cd3Vec d) { b.center = cd3Add(b.center, d); }, signedGap(i));
+		boxes.a.push_back(cd3MakeBoxShape(a));
+		boxes.b.push_back(cd3MakeBoxShape(b));
+		boxes.reference.push_back(ReferenceSeparation(RefBox(a), RefBox(b)));
+		for (cd3Box box : {a, b})
+		{
+			btBoxes.emplace_back(new btBoxShape(btVector3(
+				(btScalar)box.halfExtents.x, (btScalar)box.halfExtents.y, (btScalar)box.halfExtents.z)));
+			btBoxes.back()->setMargin(0);
+		}
+		boxes.btA.push_back(btBoxes[btBoxes.size() - 2].get());
+		boxes.btB.push_back(btBoxes.back().get());
+		boxes.xa.push_back(ToBullet({a.center, a.rotation}));
+		boxes.xb.push_back(ToBullet({b.center, b.rotation}));
+#ifdef COLLIDE_BENCH_HAVE_CCD
+		boxes.ccdA.push_back({nullptr, a.halfExtents, {a.center, a.rotation}});
+		boxes.ccdB.push_back({nullptr, b.halfExtents, {b.center, b.rotation}});
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+		boxes.fclA.push_back(
+			std::make_shared<fcl::Boxd>(2.0 * a.halfExtents.x, 2.0 * a.halfExtents.y, 2.0 * a.halfExtents.z));
+		boxes.fclB.push_back(
+			std::make_shared<fcl::Boxd>(2.0 * b.halfExtents.x, 2.0 * b.halfExtents.y, 2.0 * b.halfExtents.z));
+		boxes.fxa.push_back(ToFcl({a.center, a.rotation}));
+		boxes.fxb.push_back(ToFcl({b.center, b.rotation}));
+#endif
 	}
-	auto collideBoxes = [&]() {
-		int points = 0;
-		for (int i = 0; i < kPairs; ++i)
-		{
-			points += cd3CollideBoxBox(boxA[(size_t)i], boxB[(size_t)i], CD_R(0.0)).pointCount;
-		}
-		return points;
-	};
-	auto bulletBoxes = [&]() {
-		int points = 0;
-		for (int i = 0; i < kPairs; ++i)
-		{
-			btBoxBoxDetector detector(bulletBoxA[(size_t)i].get(), bulletBoxB[(size_t)i].get());
-			btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-			input.m_transformA = xa[(size_t)i];
-			input.m_transformB = xb[(size_t)i];
-			CountResult result;
-			detector.getClosestPoints(input, result, nullptr);
-			points += result.count;
-		}
-		return points;
-	};
-	std::printf("box-box: collide %d points, Bullet %d points over %d pairs\n", collideBoxes(), bulletBoxes(),
-				kPairs);
-	std::vector<double> boxTimes = Measure({collideBoxes, bulletBoxes}, kPairs, runs, seconds);
 
 	// ---- hull(32)-hull(32) ----
 	const int kHulls = 32;
 	std::vector<cd3Hull*> hulls;
-	std::vector<std::unique_ptr<btConvexHullShape>> bulletHulls;
+	std::vector<std::unique_ptr<btConvexHullShape>> btHulls;
+#ifdef COLLIDE_BENCH_HAVE_FCL
+	std::vector<std::shared_ptr<fcl::CollisionGeometryd>> fclHulls;
+#endif
 	for (int h = 0; h < kHulls; ++h)
 	{
 		cd3Hull* hull = nullptr;
@@ -263,56 +513,40 @@ int main(int argc, char** argv)
 		}
 		shape->recalcLocalAabb();
 		shape->setMargin(0);
-		bulletHulls.push_back(std::move(shape));
+		btHulls.push_back(std::move(shape));
+#ifdef COLLIDE_BENCH_HAVE_FCL
+		fclHulls.push_back(FclHull(hull));
+#endif
 	}
-	std::vector<cd3HullShape> hullA(kPairs), hullB(kPairs);
-	std::vector<int> indexA(kPairs), indexB(kPairs);
-	for (int i = 0; i < kPairs; ++i)
+	PairSet hullPairs;
+	hullPairs.name = "hull(32)-hull(32)";
+	for (int i = 0; i < n; ++i)
 	{
-		indexA[(size_t)i] = (int)(rng() % kHulls);
-		indexB[(size_t)i] = (int)(rng() % kHulls);
-		cd3HullShape a = {hulls[(size_t)indexA[(size_t)i]], {cd3MakeVec(0, 0, 0), RandomRotation(rng)}};
-		cd3HullShape b = {hulls[(size_t)indexB[(size_t)i]],
-						  {cd3Scale(CD_R(1.2), RandomUnit(rng)), RandomRotation(rng)}};
-		PlaceAtDepth([&](cdReal s) { return cd3CollideHullHull(a, b, s); },
-					 [&](cd3Vec d) { b.transform.p = cd3Add(b.transform.p, d); }, 0.05 * u(rng));
-		hullA[(size_t)i] = a;
-		hullB[(size_t)i] = b;
-	}
-	auto collideHulls = [&]() {
-		int points = 0;
-		for (int i = 0; i < kPairs; ++i)
-		{
-			points += cd3CollideHullHull(hullA[(size_t)i], hullB[(size_t)i], CD_R(0.0)).pointCount;
-		}
-		return points;
-	};
-	btVoronoiSimplexSolver simplex;
-	btGjkEpaPenetrationDepthSolver epa;
-	auto bulletHullsGjk = [&]() {
-		int points = 0;
-		for (int i = 0; i < kPairs; ++i)
-		{
-			btGjkPairDetector detector(bulletHulls[(size_t)indexA[(size_t)i]].get(),
-									   bulletHulls[(size_t)indexB[(size_t)i]].get(), &simplex, &epa);
-			btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-			input.m_transformA = ToBullet(hullA[(size_t)i].transform);
-			input.m_transformB = ToBullet(hullB[(size_t)i].transform);
-			CountResult result;
-			detector.getClosestPoints(input, result, nullptr);
-			points += result.count;
-		}
-		return points;
-	};
-	std::vector<std::function<int()>> hullBodies = {collideHulls, bulletHullsGjk};
-	std::vector<const char*> hullNames = {"collide cd3CollideHullHull (depth + manifold)", "Bullet GJK/EPA"};
+		int ia = (int)(rng() % kHulls), ib = (int)(rng() % kHulls);
+		cd3HullShape a = {hulls[(size_t)ia], {cd3MakeVec(0, 0, 0), RandomRotation(rng)}};
+		cd3HullShape b = {hulls[(size_t)ib], {cd3Scale(CD_R(1.2), RandomUnit(rng)), RandomRotation(rng)}};
+		PlaceAtSeparation([&](cdReal s) { return cd3CollideHullHull(a, b, s); },
+						  [&](cd3Vec d) { b.transform.p = cd3Add(b.transform.p, d); }, signedGap(i));
+		hullPairs.a.push_back(cd3MakeHullShape(a.hull, a.transform));
+		hullPairs.b.push_back(cd3MakeHullShape(b.hull, b.transform));
+		hullPairs.reference.push_back(ReferenceSeparation(RefHull(a), RefHull(b)));
+		hullPairs.btA.push_back(btHulls[(size_t)ia].get());
+		hullPairs.btB.push_back(btHulls[(size_t)ib].get());
+		hullPairs.xa.push_back(ToBullet(a.transform));
+		hullPairs.xb.push_back(ToBullet(b.transform));
 #ifdef COLLIDE_BENCH_HAVE_CCD
-	std::vector<CcdHull> ccdA(kPairs), ccdB(kPairs);
-	for (int i = 0; i < kPairs; ++i)
-	{
-		ccdA[(size_t)i] = {hullA[(size_t)i].hull, hullA[(size_t)i].transform};
-		ccdB[(size_t)i] = {hullB[(size_t)i].hull, hullB[(size_t)i].transform};
+		hullPairs.ccdA.push_back({a.hull, cd3MakeVec(0, 0, 0), a.transform});
+		hullPairs.ccdB.push_back({b.hull, cd3MakeVec(0, 0, 0), b.transform});
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+		hullPairs.fclA.push_back(fclHulls[(size_t)ia]);
+		hullPairs.fclB.push_back(fclHulls[(size_t)ib]);
+		hullPairs.fxa.push_back(ToFcl(a.transform));
+		hullPairs.fxb.push_back(ToFcl(b.transform));
+#endif
 	}
+
+#ifdef COLLIDE_BENCH_HAVE_CCD
 	ccd_t ccd;
 	CCD_INIT(&ccd);
 	ccd.support1 = CcdSupport;
@@ -320,46 +554,477 @@ int main(int argc, char** argv)
 	ccd.center1 = CcdCenter;
 	ccd.center2 = CcdCenter;
 	ccd.max_iterations = 100;
-	auto ccdMpr = [&]() {
-		int hits = 0;
-		for (int i = 0; i < kPairs; ++i)
-		{
-			ccd_real_t depth;
-			ccd_vec3_t dir, pos;
-			hits += ccdMPRPenetration(&ccdA[(size_t)i], &ccdB[(size_t)i], &ccd, &depth, &dir, &pos) == 0;
-		}
-		return hits;
-	};
-	auto ccdGjkEpa = [&]() {
-		int hits = 0;
-		for (int i = 0; i < kPairs; ++i)
-		{
-			ccd_real_t depth;
-			ccd_vec3_t dir, pos;
-			hits += ccdGJKPenetration(&ccdA[(size_t)i], &ccdB[(size_t)i], &ccd, &depth, &dir, &pos) == 0;
-		}
-		return hits;
-	};
-	hullBodies.push_back(ccdMpr);
-	hullBodies.push_back(ccdGjkEpa);
-	hullNames.push_back("libccd MPR");
-	hullNames.push_back("libccd GJK/EPA");
 #endif
-	std::vector<double> hullTimes = Measure(hullBodies, kPairs, runs, seconds);
+	btVoronoiSimplexSolver simplex;
+	btGjkEpaPenetrationDepthSolver epaSolver;
 
-	std::printf("\n| pair (%d near-contact pairs) | query | ns per call |\n|---|---|---|\n", kPairs);
-	std::printf("| box-box | collide cd3CollideBoxBox (manifold) | %.0f |\n", boxTimes[0]);
-	std::printf("| box-box | Bullet btBoxBoxDetector (manifold) | %.0f |\n", boxTimes[1]);
-	for (size_t i = 0; i < hullTimes.size(); ++i)
+	// Columns of the table; a row's cell is empty when the peer has no such query.
+	enum Column
 	{
-		std::printf("| hull(32)-hull(32) | %s | %.0f |\n", hullNames[i], hullTimes[i]);
-	}
-	std::printf("\nratios: box-box collide/Bullet %.2f (target <= 1); hull-hull collide/Bullet GJK-EPA %.2f "
-				"(target <= 0.5)",
-				boxTimes[0] / boxTimes[1], hullTimes[0] / hullTimes[1]);
-#ifdef COLLIDE_BENCH_HAVE_CCD
-	std::printf("; collide/libccd MPR %.2f (target <= 1)", hullTimes[0] / hullTimes[2]);
+		COLLIDE,
+		BULLET,
+		CCD_GJK,
+		CCD_MPR,
+		FCL,
+		COLUMNS
+	};
+	const char* columnNames[COLUMNS] = {"collide", "Bullet", "libccd GJK", "libccd MPR", "FCL"};
+	struct Row
+	{
+		std::string pair, query;
+		Query cells[COLUMNS];
+		bool present[COLUMNS] = {false, false, false, false, false};
+		std::string notes[COLUMNS];
+	};
+	std::vector<Row> rows;
+
+	for (PairSet* set : {&boxes, &hullPairs})
+	{
+		PairSet& s = *set;
+		bool isBox = set == &boxes;
+		// Checks first (untimed): overlap counts, distances and depths against the reference.
+		int refOverlaps = 0;
+		for (int i = 0; i < n; ++i)
+		{
+			refOverlaps += s.reference[(size_t)i] <= 0.0;
+		}
+
+		Row distance;
+		distance.pair = s.name;
+		distance.query = "distance";
+		Row overlap;
+		overlap.pair = s.name;
+		overlap.query = "overlap";
+		Row depth;
+		depth.pair = s.name;
+		depth.query = "depth";
+		Row manifold;
+		manifold.pair = s.name;
+		manifold.query = "manifold";
+		auto set_ = [](Row& row, int column, std::function<int()> body, int calls, std::string note) {
+			row.cells[column] = {body, calls, 0.0};
+			row.present[column] = true;
+			row.notes[column] = note;
+		};
+
+		// ---- distance (separated pairs) ----
+		{
+			std::vector<double> collideDistance((size_t)n, 0.0);
+			for (int i = 1; i < n; i += 2)
+			{
+				collideDistance[(size_t)i] = cd3Distance(&s.a[(size_t)i], &s.b[(size_t)i]).distance;
+			}
+			set_(
+				distance, COLLIDE,
+				[&s]() {
+					int k = 0;
+					for (int i = 1; i < n; i += 2)
+					{
+						k += cd3Distance(&s.a[(size_t)i], &s.b[(size_t)i]).distance > 0;
+					}
+					return k;
+				},
+				kPairs, "cd3Distance");
+			Stats bt;
+			for (int i = 1; i < n; i += 2)
+			{
+				btGjkEpaSolver2::sResults r;
+				if (btGjkEpaSolver2::Distance(s.btA[(size_t)i], s.xa[(size_t)i], s.btB[(size_t)i],
+											  s.xb[(size_t)i], btVector3(1, 0, 0), r))
+				{
+					bt.Add(r.distance, collideDistance[(size_t)i]);
+				}
+				else
+				{
+					++bt.failed;
+				}
+			}
+			set_(
+				distance, BULLET,
+				[&s]() {
+					int k = 0;
+					for (int i = 1; i < n; i += 2)
+					{
+						btGjkEpaSolver2::sResults r;
+						k += btGjkEpaSolver2::Distance(s.btA[(size_t)i], s.xa[(size_t)i], s.btB[(size_t)i],
+													   s.xb[(size_t)i], btVector3(1, 0, 0), r);
+					}
+					return k;
+				},
+				kPairs, "btGjkEpaSolver2::Distance; vs collide " + bt.Text());
+#ifdef COLLIDE_BENCH_HAVE_FCL
+			Stats fs;
+			for (int i = 1; i < n; i += 2)
+			{
+				fcl::DistanceRequestd request;
+				fcl::DistanceResultd result;
+				fcl::distance(s.fclA[(size_t)i].get(), s.fxa[(size_t)i], s.fclB[(size_t)i].get(),
+							  s.fxb[(size_t)i], request, result);
+				fs.Add(result.min_distance, collideDistance[(size_t)i]);
+			}
+			set_(
+				distance, FCL,
+				[&s]() {
+					int k = 0;
+					for (int i = 1; i < n; i += 2)
+					{
+						fcl::DistanceRequestd request;
+						fcl::DistanceResultd result;
+						fcl::distance(s.fclA[(size_t)i].get(), s.fxa[(size_t)i], s.fclB[(size_t)i].get(),
+									  s.fxb[(size_t)i], request, result);
+						k += result.min_distance > 0;
+					}
+					return k;
+				},
+				kPairs, "fcl::distance; vs collide " + fs.Text());
 #endif
+		}
+
+		// ---- overlap (all pairs) ----
+		{
+			auto countText = [&](int count) {
+				return "overlapping " + std::to_string(count) + " of " + std::to_string(n) + " (reference " +
+					   std::to_string(refOverlaps) + ")";
+			};
+			auto collideOverlap = [&s]() {
+				int k = 0;
+				for (int i = 0; i < n; ++i)
+				{
+					k += cd3Overlap(&s.a[(size_t)i], &s.b[(size_t)i]);
+				}
+				return k;
+			};
+			set_(overlap, COLLIDE, collideOverlap, n, "cd3Overlap; " + countText(collideOverlap()));
+			auto bulletOverlap = [&s]() {
+				int k = 0;
+				for (int i = 0; i < n; ++i)
+				{
+					btGjkEpaSolver2::sResults r;
+					k += !btGjkEpaSolver2::Distance(s.btA[(size_t)i], s.xa[(size_t)i], s.btB[(size_t)i],
+													s.xb[(size_t)i], btVector3(1, 0, 0), r);
+				}
+				return k;
+			};
+			set_(overlap, BULLET, bulletOverlap, n,
+				 "btGjkEpaSolver2::Distance false; " + countText(bulletOverlap()));
+#ifdef COLLIDE_BENCH_HAVE_CCD
+			auto gjk = [&s, &ccd]() {
+				int k = 0;
+				for (int i = 0; i < n; ++i)
+				{
+					k += ccdGJKIntersect(&s.ccdA[(size_t)i], &s.ccdB[(size_t)i], &ccd) != 0;
+				}
+				return k;
+			};
+			auto mpr = [&s, &ccd]() {
+				int k = 0;
+				for (int i = 0; i < n; ++i)
+				{
+					k += ccdMPRIntersect(&s.ccdA[(size_t)i], &s.ccdB[(size_t)i], &ccd) != 0;
+				}
+				return k;
+			};
+			set_(overlap, CCD_GJK, gjk, n, "ccdGJKIntersect; " + countText(gjk()));
+			set_(overlap, CCD_MPR, mpr, n, "ccdMPRIntersect; " + countText(mpr()));
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+			auto fclOverlap = [&s]() {
+				int k = 0;
+				for (int i = 0; i < n; ++i)
+				{
+					fcl::CollisionRequestd request;
+					fcl::CollisionResultd result;
+					fcl::collide(s.fclA[(size_t)i].get(), s.fxa[(size_t)i], s.fclB[(size_t)i].get(),
+								 s.fxb[(size_t)i], request, result);
+					k += result.isCollision();
+				}
+				return k;
+			};
+			set_(overlap, FCL, fclOverlap, n, "fcl::collide, no contact; " + countText(fclOverlap()));
+#endif
+		}
+
+		// ---- depth and manifold (overlapping pairs) ----
+		{
+			Stats cs;
+			for (int i = 0; i < n; i += 2)
+			{
+				cd3Manifold m = CollideShapes(s.a[(size_t)i], s.b[(size_t)i], CD_R(0.0));
+				if (m.pointCount > 0)
+				{
+					cs.Add(-MinSeparation(m), -s.reference[(size_t)i]);
+				}
+				else
+				{
+					++cs.failed;
+				}
+			}
+			auto collideManifold = [&s]() {
+				int k = 0;
+				for (int i = 0; i < n; i += 2)
+				{
+					k += CollideShapes(s.a[(size_t)i], s.b[(size_t)i], CD_R(0.0)).pointCount;
+				}
+				return k;
+			};
+			set_(depth, COLLIDE, collideManifold, kPairs, "the manifold call; depth error " + cs.Text());
+			set_(manifold, COLLIDE, collideManifold, kPairs,
+				 std::string(isBox ? "cd3CollideBoxBox" : "cd3CollideHullHull") + "; depth error " +
+					 cs.Text());
+
+			Stats bt;
+			for (int i = 0; i < n; i += 2)
+			{
+				btGjkEpaSolver2::sResults r;
+				if (btGjkEpaSolver2::Penetration(s.btA[(size_t)i], s.xa[(size_t)i], s.btB[(size_t)i],
+												 s.xb[(size_t)i], btVector3(1, 0, 0), r, false))
+				{
+					bt.Add(-r.distance, -s.reference[(size_t)i]);
+				}
+				else
+				{
+					++bt.failed;
+				}
+			}
+			set_(
+				depth, BULLET,
+				[&s]() {
+					int k = 0;
+					for (int i = 0; i < n; i += 2)
+					{
+						btGjkEpaSolver2::sResults r;
+						k += btGjkEpaSolver2::Penetration(s.btA[(size_t)i], s.xa[(size_t)i], s.btB[(size_t)i],
+														  s.xb[(size_t)i], btVector3(1, 0, 0), r, false);
+					}
+					return k;
+				},
+				kPairs, "btGjkEpaSolver2::Penetration; depth error " + bt.Text());
+
+			Stats bm;
+			std::function<int(int, double*)> bulletManifold;
+			if (isBox)
+			{
+				bulletManifold = [&s](int i, double* d) {
+					btBoxBoxDetector detector((btBoxShape*)s.btA[(size_t)i], (btBoxShape*)s.btB[(size_t)i]);
+					btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+					input.m_transformA = s.xa[(size_t)i];
+					input.m_transformB = s.xb[(size_t)i];
+					CountResult result;
+					detector.getClosestPoints(input, result, nullptr);
+					*d = -result.depth;
+					return result.count;
+				};
+			}
+			else
+			{
+				bulletManifold = [&s, &simplex, &epaSolver](int i, double* d) {
+					btGjkPairDetector detector((const btConvexShape*)s.btA[(size_t)i],
+											   (const btConvexShape*)s.btB[(size_t)i], &simplex, &epaSolver);
+					btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+					input.m_transformA = s.xa[(size_t)i];
+					input.m_transformB = s.xb[(size_t)i];
+					CountResult result;
+					detector.getClosestPoints(input, result, nullptr);
+					*d = -result.depth;
+					return result.count;
+				};
+			}
+			for (int i = 0; i < n; i += 2)
+			{
+				double d = 0.0;
+				if (bulletManifold(i, &d) > 0)
+				{
+					bm.Add(d, -s.reference[(size_t)i]);
+				}
+				else
+				{
+					++bm.failed;
+				}
+			}
+			set_(
+				manifold, BULLET,
+				[bulletManifold]() {
+					int k = 0;
+					double d;
+					for (int i = 0; i < n; i += 2)
+					{
+						k += bulletManifold(i, &d);
+					}
+					return k;
+				},
+				kPairs,
+				std::string(isBox ? "btBoxBoxDetector"
+								  : "btGjkPairDetector + btGjkEpaPenetrationDepthSolver") +
+					"; depth error " + bm.Text());
+#ifdef COLLIDE_BENCH_HAVE_CCD
+			for (int column : {CCD_GJK, CCD_MPR})
+			{
+				auto penetration = [&s, &ccd, column](int i, double* d) {
+					ccd_real_t depthValue;
+					ccd_vec3_t dir, pos;
+					int r = column == CCD_GJK ? ccdGJKPenetration(&s.ccdA[(size_t)i], &s.ccdB[(size_t)i],
+																  &ccd, &depthValue, &dir, &pos)
+											  : ccdMPRPenetration(&s.ccdA[(size_t)i], &s.ccdB[(size_t)i],
+																  &ccd, &depthValue, &dir, &pos);
+					*d = depthValue;
+					return r == 0;
+				};
+				Stats st;
+				for (int i = 0; i < n; i += 2)
+				{
+					double d = 0.0;
+					if (penetration(i, &d))
+					{
+						st.Add(d, -s.reference[(size_t)i]);
+					}
+					else
+					{
+						++st.failed;
+					}
+				}
+				set_(
+					depth, column,
+					[penetration]() {
+						int k = 0;
+						double d;
+						for (int i = 0; i < n; i += 2)
+						{
+							k += penetration(i, &d);
+						}
+						return k;
+					},
+					kPairs,
+					std::string(column == CCD_GJK ? "ccdGJKPenetration" : "ccdMPRPenetration") +
+						"; depth error " + st.Text());
+			}
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+			for (int contacts : {1, 4})
+			{
+				auto fclCollide = [&s, contacts](int i, double* d) {
+					fcl::CollisionRequestd request((size_t)contacts, true);
+					fcl::CollisionResultd result;
+					fcl::collide(s.fclA[(size_t)i].get(), s.fxa[(size_t)i], s.fclB[(size_t)i].get(),
+								 s.fxb[(size_t)i], request, result);
+					*d = 0.0;
+					for (size_t c = 0; c < result.numContacts(); ++c)
+					{
+						*d = std::max(*d, result.getContact(c).penetration_depth);
+					}
+					return (int)result.numContacts();
+				};
+				Stats st;
+				for (int i = 0; i < n; i += 2)
+				{
+					double d = 0.0;
+					if (fclCollide(i, &d) > 0)
+					{
+						st.Add(d, -s.reference[(size_t)i]);
+					}
+					else
+					{
+						++st.failed;
+					}
+				}
+				set_(
+					contacts == 1 ? depth : manifold, FCL,
+					[fclCollide]() {
+						int k = 0;
+						double d;
+						for (int i = 0; i < n; i += 2)
+						{
+							k += fclCollide(i, &d);
+						}
+						return k;
+					},
+					kPairs,
+					std::string(contacts == 1 ? "fcl::collide, 1 contact"
+											  : "fcl::collide, up to 4 contacts") +
+						"; depth error " + st.Text());
+			}
+#endif
+		}
+		rows.push_back(distance);
+		rows.push_back(overlap);
+		rows.push_back(depth);
+		rows.push_back(manifold);
+	}
+
+	std::vector<Query*> queries;
+	for (Row& row : rows)
+	{
+		for (int c = 0; c < COLUMNS; ++c)
+		{
+			if (row.present[c])
+			{
+				queries.push_back(&row.cells[c]);
+			}
+		}
+	}
+	MeasureAll(queries, runs, seconds);
+
+	std::printf(
+		"ns per call, median of %d runs (thread CPU time), %d overlapping + %d separated near-contact pairs "
+		"per kind; ratio = collide / peer\n\n",
+		runs, kPairs, kPairs);
+	std::printf("| pair | query |");
+	for (const char* name : columnNames)
+	{
+		std::printf(" %s |", name);
+	}
+	std::printf("\n|---|---|");
+	for (int c = 0; c < COLUMNS; ++c)
+	{
+		std::printf("---|");
+	}
+	std::printf("\n");
+	for (const Row& row : rows)
+	{
+		std::printf("| %s | %s |", row.pair.c_str(), row.query.c_str());
+		for (int c = 0; c < COLUMNS; ++c)
+		{
+			if (!row.present[c])
+			{
+				std::printf(" - |");
+			}
+			else if (c == COLLIDE || !row.present[COLLIDE])
+			{
+				std::printf(" %.0f |", row.cells[c].ns);
+			}
+			else
+			{
+				std::printf(" %.0f (%.2f) |", row.cells[c].ns, row.cells[COLLIDE].ns / row.cells[c].ns);
+			}
+		}
+		std::printf("\n");
+	}
+	std::printf(
+		"\nWhat each cell ran, and its answers against the exact SAT reference (relative depth error; "
+		"distances against collide's):\n");
+	for (const Row& row : rows)
+	{
+		for (int c = 0; c < COLUMNS; ++c)
+		{
+			if (row.present[c])
+			{
+				std::printf("- %s %s, %s: %s\n", row.pair.c_str(), row.query.c_str(), columnNames[c],
+							row.notes[c].c_str());
+			}
+		}
+	}
+	const Row& boxManifold = rows[3];
+	const Row& hullDepth = rows[6];
+	const Row& hullManifold = rows[7];
+	std::printf(
+		"\ntargets: box-box manifold collide / btBoxBoxDetector %.2f (<= 1); hull-hull manifold collide / "
+		"Bullet GJK-EPA %.2f (<= 0.5)",
+		boxManifold.cells[COLLIDE].ns / boxManifold.cells[BULLET].ns,
+		hullManifold.cells[COLLIDE].ns / hullManifold.cells[BULLET].ns);
+	if (hullDepth.present[CCD_MPR])
+	{
+		std::printf("; collide / ccdMPRPenetration %.2f (<= 1)",
+					hullManifold.cells[COLLIDE].ns / hullDepth.cells[CCD_MPR].ns);
+	}
 	std::printf("\n");
 	for (cd3Hull* h : hulls)
 	{

@@ -67,6 +67,35 @@ static void AddPoint(cd3Manifold* m, cd3Vec point, cdReal separation, uint32_t i
 	p->id = id;
 }
 
+/* The reference feature is chosen with a bias for stability from frame to frame (FACE_BIAS,
+ * EDGE_BIAS), so a face contact can be deeper along its normal than the exact depth by up to the
+ * bias; and clipping can lose the deepest vertex at a tie of incident faces. The points'
+ * separations are shifted so that the smallest is the exact signed separation the separating axis
+ * test (or EPA) proves, with A's side of each point kept in place; a larger mismatch than `limit`
+ * is a different contact and is left alone. */
+static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit)
+{
+	if (m->pointCount == 0)
+	{
+		return;
+	}
+	cdReal deepest = m->points[0].separation;
+	for (int i = 1; i < m->pointCount; ++i)
+	{
+		deepest = cdMin(deepest, m->points[i].separation);
+	}
+	cdReal delta = exact - deepest;
+	if (delta == CD_R(0.0) || !(cdAbs(delta) <= limit))
+	{
+		return;
+	}
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		m->points[i].separation += delta;
+		m->points[i].point = cd3MulAdd(m->points[i].point, CD_R(0.5) * delta, m->normal);
+	}
+}
+
 static cd3Manifold Flipped(cd3Manifold m)
 {
 	m.normal = cd3Neg(m.normal);
@@ -456,6 +485,10 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 							 : FaceContact(a, faceA, b, false, speculativeDistance);
 		if (m.pointCount > 0 && cdAbs(ManifoldMinSeparation(&m) - separation) <= tolerance)
 		{
+			if (epa.overlapping)
+			{
+				MatchDepth(&m, separation, tolerance);
+			}
 			return m;
 		}
 	}
@@ -487,7 +520,9 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	}
 	if (separation <= CD_R(0.0))
 	{
-		return SatContact(a, b, &sat, speculativeDistance);
+		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance);
+		MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size));
+		return m;
 	}
 	/* Apart: the SAT separation only bounds the distance from below. The SAT manifold stands when
 	 * its deepest point realizes the distance (closest features face-vertex or edge-edge);
@@ -1035,6 +1070,11 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 		}
 		if (m.pointCount > 0)
 		{
+			/* The size bound from the 1-norms: no square roots on the common path. */
+			cdReal sizeBound =
+				CD_R(2.0) * (cdAbs(a.halfExtents.x) + cdAbs(a.halfExtents.y) + cdAbs(a.halfExtents.z) +
+							 cdAbs(b.halfExtents.x) + cdAbs(b.halfExtents.y) + cdAbs(b.halfExtents.z));
+			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * sizeBound);
 			return m;
 		}
 	}
