@@ -178,6 +178,20 @@ static void PlaceCore(const cd3Core* local, cd3Transform xf, PlacedCore* placed)
 	core->count = local->count;
 	core->radius = CD_R(0.0);
 	core->localPoints = local->localPoints;
+	core->box = local->box;
+	core->lazyBox = local->lazyBox;
+	if (local->box)
+	{
+		for (int k = 0; k < 3; ++k)
+		{
+			core->axes[k] = cd3RotateVector(xf.q, local->axes[k]);
+		}
+	}
+	if (local->lazyBox)
+	{
+		core->center = cd3TransformPoint(xf, local->center);
+		return;
+	}
 	if (local->localPoints != NULL)
 	{
 		cd3Mat33 rotation = cd3MakeMatFromQuat(xf.q);

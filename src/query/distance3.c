@@ -5,6 +5,7 @@
 
 #include "support3.h"
 
+#include <math.h>
 #include <string.h>
 
 /* GJK converges in a handful of iterations on these small point sets; the cap only guards
@@ -28,7 +29,7 @@
 
 static cdReal MaxAbsComponent(cd3Vec v)
 {
-	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+	return cd3MaxAbs(v);
 }
 
 typedef cd3GjkVertex GjkVertex;
@@ -109,25 +110,28 @@ static void SolveTriangle(const cd3Vec* w, cdReal* l)
 	 * edges of a needle (one vertex far from the others) it would cancel, and the needle would
 	 * pass for flat. (w1 - w0) x (w2 - w0) = (w1 - w0) x (w2 - w1) = (w2 - w0) x (w2 - w1). */
 	cd3Vec e01 = cd3Sub(w[1], w[0]), e02 = cd3Sub(w[2], w[0]), e12 = cd3Sub(w[2], w[1]);
-	cdReal l01 = cd3Length(e01), l02 = cd3Length(e02), l12 = cd3Length(e12);
+	/* Squared lengths: the products compare the same, and one square root does (in double, where
+	 * the product of two squares of float lengths cannot underflow). */
+	double l01 = (double)cd3LengthSquared(e01), l02 = (double)cd3LengthSquared(e02),
+		   l12 = (double)cd3LengthSquared(e12);
 	cd3Vec n;
-	cdReal edgeProduct;
+	double edgeProductSquared;
 	if (l12 >= l01 && l12 >= l02)
 	{
 		n = cd3Cross(e01, e02);
-		edgeProduct = l01 * l02;
+		edgeProductSquared = l01 * l02;
 	}
 	else if (l02 >= l01)
 	{
 		n = cd3Cross(e01, e12);
-		edgeProduct = l01 * l12;
+		edgeProductSquared = l01 * l12;
 	}
 	else
 	{
 		n = cd3Cross(e02, e12);
-		edgeProduct = l02 * l12;
+		edgeProductSquared = l02 * l12;
 	}
-	if (cd3Length(n) > GJK_DEGENERATE_TOLERANCE * edgeProduct)
+	if ((double)cd3Length(n) > (double)GJK_DEGENERATE_TOLERANCE * sqrt(edgeProductSquared))
 	{
 		cdReal l0 = cd3Dot(n, cd3Cross(w[1], w[2]));
 		cdReal l1 = cd3Dot(n, cd3Cross(w[2], w[0]));
@@ -172,15 +176,22 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 	/* Edges from the vertex whose three edges have the smallest product: from the far apex of a
 	 * needle (one support point far from the others) they would be long and nearly parallel, and
 	 * the needle would pass for flat. */
-	int base = 0;
-	cdReal smallest = CD_REAL_MAX;
+	/* Six squared edge lengths, once: products of squares compare like products of lengths (in
+	 * double, where products of three squares of float lengths cannot underflow). */
+	double edgeSquared[4][4];
 	for (int i = 0; i < 4; ++i)
 	{
-		cdReal product = CD_R(1.0);
-		for (int j = 0; j < 4; ++j)
+		edgeSquared[i][i] = 1.0;
+		for (int j = i + 1; j < 4; ++j)
 		{
-			product *= j == i ? CD_R(1.0) : cd3Length(cd3Sub(w[j], w[i]));
+			edgeSquared[i][j] = edgeSquared[j][i] = (double)cd3LengthSquared(cd3Sub(w[j], w[i]));
 		}
+	}
+	int base = 0;
+	double smallest = (double)CD_REAL_MAX * (double)CD_REAL_MAX;
+	for (int i = 0; i < 4; ++i)
+	{
+		double product = edgeSquared[i][0] * edgeSquared[i][1] * edgeSquared[i][2] * edgeSquared[i][3];
 		if (product < smallest)
 		{
 			smallest = product;
@@ -203,7 +214,7 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 	 * the point (CD_REAL_MAX when there are none). */
 	cdReal enclosing[4] = {CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
 	cdReal residual = CD_REAL_MAX;
-	if (cdAbs(volume) > GJK_DEGENERATE_TOLERANCE * cd3Length(e1) * cd3Length(e2) * cd3Length(e3))
+	if ((double)cdAbs(volume) > (double)GJK_DEGENERATE_TOLERANCE * sqrt(smallest))
 	{
 		cd3Vec o = cd3Neg(w[base]);
 		cdReal lb = cd3Dot(cd3Cross(w[other[0]], w[other[1]]), w[other[2]]) / volume;
@@ -302,7 +313,7 @@ static bool SolveSimplex(GjkSimplex* simplex)
 	for (int i = 0; i < simplex->count; ++i)
 	{
 		w[i] = simplex->v[i].w;
-		largest = cdMax(largest, cdMax(cdAbs(w[i].x), cdMax(cdAbs(w[i].y), cdAbs(w[i].z))));
+		largest = cdMax(largest, cd3MaxAbs(w[i]));
 	}
 	if (largest > CD_R(0.0))
 	{
@@ -366,11 +377,22 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 	for (int i = 0; i < simplex->count; ++i)
 	{
 		w[i] = simplex->v[i].w;
-		largest = cdMax(largest, cdMax(cdAbs(w[i].x), cdMax(cdAbs(w[i].y), cdAbs(w[i].z))));
+		largest = cdMax(largest, cd3MaxAbs(w[i]));
 	}
-	for (int i = 0; i < simplex->count; ++i)
+	/* Within these bounds the products of three coordinates neither overflow nor underflow: no
+	 * scaling needed (the direction's length does not matter). */
+#if CD_DOUBLE
+	const cdReal safeLow = 0x1p-300, safeHigh = 0x1p300;
+#else
+	const cdReal safeLow = 0x1p-36f, safeHigh = 0x1p36f;
+#endif
+	if (largest < safeLow || largest > safeHigh)
 	{
-		w[i] = cd3Scale(CD_R(1.0) / largest, w[i]);
+		cdReal inverse = CD_R(1.0) / largest;
+		for (int i = 0; i < simplex->count; ++i)
+		{
+			w[i] = cd3Scale(inverse, w[i]);
+		}
 	}
 	cd3Vec direction;
 	if (simplex->count == 2)
@@ -485,6 +507,21 @@ static void WriteCache(cd3SimplexCache* cache, const GjkSimplex* simplex)
 	cache->metric = SimplexMetric(simplex);
 }
 
+/* A point inside the core's hull, near its middle: a box's centre, a hull's origin, else its
+ * first point. */
+static cd3Vec CoreCenter(const cd3Core* core)
+{
+	if (core->lazyBox)
+	{
+		return core->center;
+	}
+	if (core->localPoints != NULL)
+	{
+		return core->translation;
+	}
+	return core->points[0];
+}
+
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
  * writes the final simplex back to it (cache may be NULL). */
@@ -495,8 +532,13 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 	memset(&simplex, 0, sizeof(simplex));
 	if (!ReadCache(cache, a, b, &simplex))
 	{
+		/* A cold start from the supports along the line between the cores' centres (or first
+		 * points) is usually a step or two closer than an arbitrary pair of points. */
+		cd3Vec toB = cd3Sub(CoreCenter(b), CoreCenter(a));
+		bool usable = cd3LengthSquared(toB) > CD_R(0.0);
 		simplex.count = 1;
-		simplex.v[0] = MakeVertex(a, b, 0, 0);
+		simplex.v[0] = MakeVertex(a, b, usable ? cd3CoreSupport(a, toB) : 0,
+								  usable ? cd3CoreSupport(b, cd3Neg(toB)) : 0);
 		simplex.lambda[0] = CD_R(1.0);
 	}
 
@@ -554,10 +596,13 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			break;
 		}
 		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
-		/* The support plane bounds the distance from below: stop when it meets |v|. */
-		cdReal upper = cdSqrt(distanceSquared);
-		cdReal lower = -cd3Dot(direction, vertex.w) / cd3Length(direction);
-		if (upper - lower <= GJK_GAP_TOLERANCE * upper)
+		/* The support plane bounds the distance from below: stop when it meets |v|:
+		 * lower = -dot(direction, w) / |direction| >= (1 - tolerance) * upper, squared and in double
+		 * (no square root per iteration; the squares overflow no float range). */
+		double lowerTimesLength = -(double)cd3Dot(direction, vertex.w);
+		double enough = (1.0 - (double)GJK_GAP_TOLERANCE) * (1.0 - (double)GJK_GAP_TOLERANCE) *
+						(double)distanceSquared * (double)cd3LengthSquared(direction);
+		if (lowerTimesLength > 0.0 && lowerTimesLength * lowerTimesLength >= enough)
 		{
 			break;
 		}
