@@ -118,6 +118,14 @@ static void TestFaces(void)
 	}
 	TEST_CHECK(PointsOnBoth(&m, a, over, TOL, &worst));
 
+	/* B's vertex just beside A's edge and just above its plane, closer than the direct path's
+	 * threshold: nothing of B lies over A's face, the contact is the closest pair. */
+	cd3Triangle beside = Tri(V3(-3e-4, 1, 2e-4), V3(-1, 1, 1), V3(-1, 2, 1));
+	m = cd3CollideTriangleTriangle(a, beside, CD_R(0.01));
+	TEST_CHECK(m.pointCount == 1 && IsFiniteManifold(&m));
+	TEST_CHECK(m.pointCount == 1 && fabs((double)m.points[0].separation - sqrt(13e-8)) <= 1e-6 + TOL);
+	TEST_CHECK(PointsOnBoth(&m, a, beside, 2e-4, &worst));
+
 	/* Tilted above A: only the low vertex is within reach. */
 	cd3Triangle tilted = Tri(V3(1, 1, 0.01), V3(2, 1, 1), V3(1, 2, 1));
 	m = cd3CollideTriangleTriangle(a, tilted, CD_R(0.05));

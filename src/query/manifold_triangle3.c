@@ -348,7 +348,7 @@ typedef enum AxisKind
 } AxisKind;
 
 static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec onA, cd3Vec onB, int pair,
-								   cdReal size, cdReal speculativeDistance)
+								   cdReal distance, cdReal size, cdReal speculativeDistance)
 {
 	cdReal bias = AXIS_BIAS_FRACTION * size;
 	AxisKind kind = AXIS_NONE;
@@ -428,9 +428,21 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec 
 	switch (kind)
 	{
 		case AXIS_FACE_A:
-			return ClipFace(a, b, normal, normal, false, WeldTolerance(size), speculativeDistance);
 		case AXIS_FACE_B:
-			return ClipFace(b, a, cd3Neg(normal), normal, true, WeldTolerance(size), speculativeDistance);
+		{
+			cd3Manifold manifold =
+				kind == AXIS_FACE_A
+					? ClipFace(a, b, normal, normal, false, WeldTolerance(size), speculativeDistance)
+					: ClipFace(b, a, cd3Neg(normal), normal, true, WeldTolerance(size), speculativeDistance);
+			if (manifold.pointCount > 0)
+			{
+				return manifold;
+			}
+			/* Nothing of the other triangle over the face (it touches just beside an edge): the
+			 * closest pair, at the distance. */
+			return SinglePoint(onA, onB, normal, distance > CD_R(0.0) ? distance : cdMin(best, CD_R(0.0)),
+							   ID_CLOSEST | (uint32_t)pair);
+		}
 		case AXIS_EDGES:
 		{
 			cd3Segment sa = {a->v[edgeA], a->v[(edgeA + 1) % 3]};
@@ -484,5 +496,5 @@ cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdReal spec
 	{
 		return SeparatedContact(&ta, &tb, onA, onB, distance, pair, size, speculativeDistance);
 	}
-	return TouchingContact(&ta, &tb, onA, onB, pair, size, speculativeDistance);
+	return TouchingContact(&ta, &tb, onA, onB, pair, distance, size, speculativeDistance);
 }
