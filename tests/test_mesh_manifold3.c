@@ -65,14 +65,15 @@ static void SlideOverFloor(const TestMesh* floor, double halfSize, TestRng* rng,
 	cd3MeshManifold* manifolds = (cd3MeshManifold*)malloc(CAPACITY * sizeof(cd3MeshManifold));
 	cdReal depth = CD_R(0.02);
 	int positions = 0, bad = 0;
-	for (int path = 0; path < 8; ++path)
+	/* Paths 0-2 on the floor as given, 3-4 on the floor moved by a random transform. */
+	for (int path = 0; path < 5; ++path)
 	{
 		cd3Transform xf =
-			path < 4 ? CD3_TRANSFORM_IDENTITY : (cd3Transform){RandomVec(rng, 3.0), RandomQuat(rng)};
+			path < 3 ? CD3_TRANSFORM_IDENTITY : (cd3Transform){RandomVec(rng, 3.0), RandomQuat(rng)};
 		cd3Vec down = cd3RotateVector(xf.q, cd3MakeVec(CD_R(0.0), -CD_R(1.0), CD_R(0.0)));
 		double reach = halfSize - 1.2;
 		double z0, z1;
-		switch (path % 4)
+		switch (path % 3)
 		{
 			case 0: /* along a grid line */
 				z0 = z1 = 0.0;
@@ -84,10 +85,10 @@ static void SlideOverFloor(const TestMesh* floor, double halfSize, TestRng* rng,
 				z0 = TestRngRange(rng, -reach, reach), z1 = TestRngRange(rng, -reach, reach);
 				break;
 		}
-		cdReal yaw = path % 4 == 1 ? CD_R(0.0) : RandomReal(rng, 0.0, 3.0);
-		for (int step = 0; step <= 120; ++step)
+		cdReal yaw = path % 3 == 1 ? CD_R(0.0) : RandomReal(rng, 0.0, 3.0);
+		for (int step = 0; step <= 32; ++step)
 		{
-			double u = (double)step / 120.0;
+			double u = (double)step / 32.0;
 			cdReal x = (cdReal)(-reach + 2.0 * reach * u), z = (cdReal)(z0 + (z1 - z0) * u);
 			for (int kind = 0; kind < 4; ++kind)
 			{
@@ -141,7 +142,7 @@ static void TestRegularFloor(void)
 static void TestRandomFloor(void)
 {
 	TestRng rng = TestRngMake(0x7a2d0f1u);
-	for (int round = 0; round < 2; ++round)
+	for (int round = 0; round < 1; ++round)
 	{
 		TestMesh floor = TestMeshRandomFloor(10, 1.0, 150, &rng);
 		SlideOverFloor(&floor, 5.0, &rng, "random floor");
@@ -301,7 +302,7 @@ static void TestLoneTriangle(void)
 	TestRng rng = TestRngMake(0x10e7u);
 	cd3MeshManifold manifolds[4];
 	int contacts = 0;
-	for (int i = 0; i < 2000; ++i)
+	for (int i = 0; i < 500; ++i)
 	{
 		cd3Shape tri = RandomShape(&rng, CD3_SHAPE_TRIANGLE);
 		if (!cd3IsValidTriangle(tri.triangle))
@@ -339,7 +340,7 @@ static void TestLoneTriangle(void)
 					cd3ShapeTypeName(shape.type), count, expected.pointCount);
 		cd3DestroyMesh(mesh);
 	}
-	TEST_CHECKF(contacts > 100, "%d contacts", contacts);
+	TEST_CHECKF(contacts > 20, "%d contacts", contacts);
 }
 
 /* The (triangle, id) keys of a box resting on the random floor stay the same under motions far
@@ -356,7 +357,7 @@ static void TestStableIds(void)
 	}
 	static cd3MeshManifold a[CAPACITY], b[CAPACITY];
 	int stable = 0, trials = 0;
-	for (int i = 0; i < 200; ++i)
+	for (int i = 0; i < 100; ++i)
 	{
 		cdReal x = RandomReal(&rng, -2.5, 2.5), z = RandomReal(&rng, -2.5, 2.5),
 			   yaw = RandomReal(&rng, 0.0, 3.0);

@@ -427,6 +427,9 @@ static cd3Manifold FixInternalEdges(const cd3Shape* s, cd3Triangle t, uint32_t f
 
 /* ---- the mesh ------------------------------------------------------------------------------------ */
 
+static int ContactKind(cd3Triangle t, const cd3Manifold* m);
+#define KIND_SHIFT 24
+
 typedef struct CollideContext
 {
 	const cd3Mesh* mesh;
@@ -456,7 +459,7 @@ static bool CollideSlot(int slot, void* context)
 		return true;
 	}
 	c->out[c->count].manifold = m;
-	c->out[c->count].triangleIndex = c->mesh->inputIndex[slot];
+	c->out[c->count].triangleIndex = c->mesh->inputIndex[slot] | ContactKind(t, &m) << KIND_SHIFT;
 	++c->count;
 	return c->count < c->capacity;
 }
@@ -570,22 +573,24 @@ static int ContactKind(cd3Triangle t, const cd3Manifold* m)
 	return IsFaceContact(t, m) ? 0 : 1;
 }
 
+/* During the ghost removal each manifold's kind rides in the bits of its triangle index above the
+ * 24 an index needs (CD3_MAX_MESH_TRIANGLES, KIND_SHIFT above). */
+#define INDEX_MASK ((1 << KIND_SHIFT) - 1)
+
 static int RemoveGhosts(const cd3Mesh* mesh, cd3Transform xf, cd3MeshManifold* m, int count)
 {
-	/* By kind, then deepest first (stable insertion sort of the manifolds found: at most the
+	/* By kind, then deepest first (a stable insertion sort of the manifolds found, at most the
 	 * caller's capacity); face contacts are all kept. */
 	for (int i = 1; i < count; ++i)
 	{
 		cd3MeshManifold x = m[i];
-		cd3Triangle local;
-		int kind = ContactKind(WorldTriangle(mesh, xf, x.triangleIndex, &local), &x.manifold);
+		int kind = x.triangleIndex >> KIND_SHIFT;
 		cdReal depth = Deepest(&x.manifold);
 		int j = i;
 		while (j > 0)
 		{
-			cd3MeshManifold* y = &m[j - 1];
-			int yKind = ContactKind(WorldTriangle(mesh, xf, y->triangleIndex, &local), &y->manifold);
-			if (yKind < kind || (yKind == kind && (kind == 0 || Deepest(&y->manifold) <= depth)))
+			int yKind = m[j - 1].triangleIndex >> KIND_SHIFT;
+			if (yKind < kind || (yKind == kind && (kind == 0 || Deepest(&m[j - 1].manifold) <= depth)))
 			{
 				break;
 			}
@@ -597,10 +602,16 @@ static int RemoveGhosts(const cd3Mesh* mesh, cd3Transform xf, cd3MeshManifold* m
 	int kept = 0;
 	for (int i = 0; i < count; ++i)
 	{
-		cd3Triangle local;
-		cd3Triangle world = WorldTriangle(mesh, xf, m[i].triangleIndex, &local);
-		if (ContactKind(world, &m[i].manifold) == 0 ||
-			!AllFeaturesTaken(mesh, m, kept, world, local, &m[i].manifold))
+		int kind = m[i].triangleIndex >> KIND_SHIFT;
+		m[i].triangleIndex &= INDEX_MASK;
+		bool keep = kind == 0;
+		if (!keep)
+		{
+			cd3Triangle local;
+			cd3Triangle world = WorldTriangle(mesh, xf, m[i].triangleIndex, &local);
+			keep = !AllFeaturesTaken(mesh, m, kept, world, local, &m[i].manifold);
+		}
+		if (keep)
 		{
 			m[kept++] = m[i];
 		}
