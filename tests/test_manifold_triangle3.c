@@ -515,6 +515,49 @@ static void TestRandomParallel(void)
 	TEST_CHECK(faces > 200);
 }
 
+/* Every scale of the documented range: finite results, unit normals, and (well inside the
+ * touching/apart decision) contacts exactly when the triangles touch. */
+static void TestScales(void)
+{
+	TestRng rng = TestRngMake(0x5CA1E3);
+	const double scales[] = {1e-9, 1e-4, 1.0, 1e4, 1e9};
+	int agreed = 0;
+	for (int si = 0; si < 5; ++si)
+	{
+		double k = scales[si];
+		for (int trial = 0; trial < 400; ++trial)
+		{
+			cd3Triangle a = RandomTriangle(&rng, trial % 7 == 3 ? 1 : 0);
+			cd3Triangle b = RandomTriangle(&rng, trial % 7 == 5 ? 2 : 0);
+			a = Tri(cd3Scale((cdReal)k, a.a), cd3Scale((cdReal)k, a.b), cd3Scale((cdReal)k, a.c));
+			b = Tri(cd3Scale((cdReal)k, b.a), cd3Scale((cdReal)k, b.b), cd3Scale((cdReal)k, b.c));
+			cd3Manifold m = cd3CollideTriangleTriangle(a, b, (cdReal)(0.1 * k));
+			TEST_CHECKF(IsFiniteManifold(&m), "scale %g trial %d: not finite", k, trial);
+			cd3Shape sa = cd3MakeTriangleShape(a), sb = cd3MakeTriangleShape(b);
+			double d = (double)cd3Distance(&sa, &sb).distance / k;
+			if (d == 0.0)
+			{
+				TEST_CHECKF(m.pointCount > 0 && MinSeparation(&m) <= 0.0,
+							"scale %g trial %d: touching, %d points", k, trial, m.pointCount);
+				++agreed;
+			}
+			else if (d > 0.02 && d < 0.08)
+			{
+				TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) / k - d) <= 1e-3,
+							"scale %g trial %d: distance %.6g, %d points, separation %.6g", k, trial, d,
+							m.pointCount, MinSeparation(&m) / k);
+				++agreed;
+			}
+			else if (d > 0.12)
+			{
+				TEST_CHECK(m.pointCount == 0);
+				++agreed;
+			}
+		}
+	}
+	TEST_CHECK(agreed > 1000);
+}
+
 int main(void)
 {
 	TEST_RUN(TestFaces);
@@ -523,5 +566,6 @@ int main(void)
 	TEST_RUN(TestDegenerate);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestRandomParallel);
+	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }
