@@ -145,6 +145,12 @@ extern const cd3BroadBackend cd3BroadSapBackend;
  * growing by half again. Keeps the contents. false when out of memory (array unchanged). */
 bool cdBroadReserve(void** array, int* capacity, int needed, size_t elementSize);
 
+/* Asks the OS to back the whole 2 MB pages inside a large, freshly allocated block with huge
+ * pages (Linux transparent huge pages in "madvise" mode; nothing elsewhere). At 1M proxies the
+ * tree's nodes take 64 MB: with 4 KB pages nearly every node read at random also misses the TLB
+ * and walks the page table. Call before the block is first written. */
+void cdBroadAdviseLarge(void* memory, size_t bytes);
+
 /* Sorts `count` keys ascending (LSD radix sort over the bits in use). `scratch` holds `count`
  * keys. The result may land in either buffer: the function returns the one that holds it. */
 uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count);

@@ -1,5 +1,12 @@
 /* collide: broadphase pieces shared by 2D and 3D: type names, array growth, key sorting. */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE /* madvise */
+#endif
 #include "broad/broad_internal.h"
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #ifdef CD_BROAD_COUNT_OPS
 unsigned long long cdBroadOpCounts[CD_BROAD_OP_COUNT];
@@ -23,6 +30,27 @@ const char* cdBroadPhaseTypeName(cdBroadPhaseType type)
 	return "unknown";
 }
 
+void cdBroadAdviseLarge(void* memory, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+	const uintptr_t huge = (uintptr_t)2 << 20;
+	if (memory == NULL || bytes < 2 * huge)
+	{
+		return;
+	}
+	uintptr_t begin = ((uintptr_t)memory + huge - 1) & ~(huge - 1);
+	uintptr_t end = ((uintptr_t)memory + bytes) & ~(huge - 1);
+	if (end > begin)
+	{
+		/* Advice only: memory from a user allocator that cannot take it just stays as it is. */
+		(void)madvise((void*)begin, (size_t)(end - begin), MADV_HUGEPAGE);
+	}
+#else
+	(void)memory;
+	(void)bytes;
+#endif
+}
+
 bool cdBroadReserve(void** array, int* capacity, int needed, size_t elementSize)
 {
 	if (needed <= *capacity)
@@ -40,6 +68,7 @@ bool cdBroadReserve(void** array, int* capacity, int needed, size_t elementSize)
 	{
 		return false;
 	}
+	cdBroadAdviseLarge(memory, (size_t)newCapacity * elementSize);
 	if (*array != NULL)
 	{
 		memcpy(memory, *array, (size_t)*capacity * elementSize);
