@@ -24,6 +24,11 @@ static cd2Vec CastCorePoint(const cd2Core* core, int i)
 	return core->points[i];
 }
 
+static cd2Vec CastCoreCenter(const cd2Core* core)
+{
+	return cd2CoreCenter(core);
+}
+
 static int CastCoreSupport(const cd2Core* core, cd2Vec direction, int start)
 {
 	return cd2CoreSupportFrom(core, direction, start);

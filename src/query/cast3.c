@@ -25,6 +25,11 @@ static cd3Vec CastCorePoint(const cd3Core* core, int i)
 	return cd3CorePoint(core, i);
 }
 
+static cd3Vec CastCoreCenter(const cd3Core* core)
+{
+	return cd3CoreCenter(core);
+}
+
 static int CastCoreSupport(const cd3Core* core, cd3Vec direction, int start)
 {
 	(void)start;

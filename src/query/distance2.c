@@ -331,8 +331,13 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2SimplexCache* cache, 
 	memset(&simplex, 0, sizeof(simplex));
 	if (!ReadCache(cache, a, b, &simplex))
 	{
+		/* A cold start from the supports along the line between the cores' middles is usually a
+		 * step closer than an arbitrary pair of points. */
+		cd2Vec toB = cd2Sub(cd2CoreCenter(b), cd2CoreCenter(a));
+		bool usable = cd2LengthSquared(toB) > CD_R(0.0);
 		simplex.count = 1;
-		simplex.v[0] = MakeVertex(a, b, 0, 0);
+		simplex.v[0] = MakeVertex(a, b, usable ? cd2CoreSupport(a, toB) : 0,
+								  usable ? cd2CoreSupport(b, cd2Neg(toB)) : 0);
 		simplex.lambda[0] = CD_R(1.0);
 	}
 

@@ -507,21 +507,6 @@ static void WriteCache(cd3SimplexCache* cache, const GjkSimplex* simplex)
 	cache->metric = SimplexMetric(simplex);
 }
 
-/* A point inside the core's hull, near its middle: a box's centre, a hull's origin, else its
- * first point. */
-static cd3Vec CoreCenter(const cd3Core* core)
-{
-	if (core->lazyBox)
-	{
-		return core->center;
-	}
-	if (core->localPoints != NULL)
-	{
-		return core->translation;
-	}
-	return core->points[0];
-}
-
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
  * writes the final simplex back to it (cache may be NULL). */
@@ -534,7 +519,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 	{
 		/* A cold start from the supports along the line between the cores' centres (or first
 		 * points) is usually a step or two closer than an arbitrary pair of points. */
-		cd3Vec toB = cd3Sub(CoreCenter(b), CoreCenter(a));
+		cd3Vec toB = cd3Sub(cd3CoreCenter(b), cd3CoreCenter(a));
 		bool usable = cd3LengthSquared(toB) > CD_R(0.0);
 		simplex.count = 1;
 		simplex.v[0] = MakeVertex(a, b, usable ? cd3CoreSupport(a, toB) : 0,

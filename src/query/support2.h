@@ -78,6 +78,13 @@ static inline bool cd2MakeCore(const cd2Shape* shape, cd2Core* core)
 	}
 }
 
+/* A point of the core's hull near its middle (halfway between its first point and the one
+ * half-way round): GJK's cold start looks for supports along the line between two of them. */
+static inline cd2Vec cd2CoreCenter(const cd2Core* core)
+{
+	return cd2Lerp(core->points[0], core->points[core->count / 2], CD_R(0.5));
+}
+
 /* Largest |coordinate| without a branch per coordinate (max(x, -x) is a max instruction; a
  * branchy absolute value cost GJK's hot loops a fifth of their time in mispredictions). */
 static inline cdReal cd2MaxAbs(cd2Vec v)

@@ -127,6 +127,21 @@ static inline cd3Vec cd3CorePoint(const cd3Core* core, int i)
 	return core->points[i];
 }
 
+/* A point of the core's hull near its middle (a box's centre, a hull's origin, else the first
+ * point): GJK's cold start looks for supports along the line between two of them. */
+static inline cd3Vec cd3CoreCenter(const cd3Core* core)
+{
+	if (core->lazyBox)
+	{
+		return core->center;
+	}
+	if (core->localPoints != NULL)
+	{
+		return core->translation;
+	}
+	return core->points[0];
+}
+
 /* Largest |coordinate| without a branch per coordinate (max(x, -x) is a max instruction; a
  * branchy absolute value cost GJK's hot loops a tenth of their time in mispredictions). */
 static inline cdReal cd3MaxAbs(cd3Vec v)
