@@ -79,7 +79,10 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 	{
 		return false;
 	}
-	RayBox box = MakeRayBox(RayToMesh(xf, ray));
+	/* The identity (the common case of a static mesh placed in world space) moves nothing. */
+	bool identity = xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) && xf.p.z == CD_R(0.0) &&
+					xf.q.x == CD_R(0.0) && xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0);
+	RayBox box = MakeRayBox(identity ? ray : RayToMesh(xf, ray));
 	bool found = false;
 	cd3RayHit best;
 	int bestIndex = 0;
@@ -99,7 +102,8 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 			for (int s = node->first; s < node->first + node->count; ++s)
 			{
 				cd3RayHit hit;
-				if (!cd3RaycastTriangle(TriangleToWorld(xf, mesh->triangles[s]), ray, &hit))
+				cd3Triangle t = identity ? mesh->triangles[s] : TriangleToWorld(xf, mesh->triangles[s]);
+				if (!cd3RaycastTriangle(t, ray, &hit))
 				{
 					continue;
 				}
