@@ -42,12 +42,19 @@ typedef struct Context
 	const cd3Polytope* polytopeB;
 	cd3Mat33 rotationB; /* B local -> A local */
 	cd3Vec translationB;
+	const cd3SoaPoints* pointsA; /* both set: A's points and B's (in A's frame) as arrays */
+	const cd3SoaPoints* pointsB;
 } Context;
 
 static Vertex Support(const Context* c, cd3Vec d)
 {
 	Vertex v;
-	if (c->polytopeA != NULL)
+	if (c->pointsA != NULL)
+	{
+		v.a = cd3SoaPoint(c->pointsA, cd3SoaSupportIndex(c->pointsA, d));
+		v.b = cd3SoaPoint(c->pointsB, cd3SoaSupportIndex(c->pointsB, cd3Neg(d)));
+	}
+	else if (c->polytopeA != NULL)
 	{
 		const cd3Polytope* pa = c->polytopeA;
 		const cd3Polytope* pb = c->polytopeB;
@@ -441,6 +448,7 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 	c.supportA = supportA;
 	c.supportB = supportB;
 	c.polytopeA = c.polytopeB = NULL;
+	c.pointsA = c.pointsB = NULL;
 	if (supportA != cd3PolytopeSupport || supportB != cd3PolytopeSupport)
 	{
 		return Run(&c);
@@ -450,6 +458,15 @@ cd3Penetration cd3Epa(const void* a, cd3SupportFcn* supportA, const void* b, cd3
 	cd3Transform rel = cd3InvMulTransforms(c.polytopeA->transform, c.polytopeB->transform);
 	c.rotationB = cd3MakeMatFromQuat(rel.q);
 	c.translationB = rel.p;
+	cd3SoaPoints pointsA, pointsB;
+	if (c.polytopeA->vertexCount <= CD3_SOA_MAX_POINTS && c.polytopeB->vertexCount <= CD3_SOA_MAX_POINTS)
+	{
+		cd3CopySoaPoints(&pointsA, c.polytopeA->vertices, c.polytopeA->vertexCount);
+		cd3MakeSoaPoints(&pointsB, c.polytopeB->vertices, c.polytopeB->vertexCount, c.rotationB,
+						 c.translationB);
+		c.pointsA = &pointsA;
+		c.pointsB = &pointsB;
+	}
 	cd3Penetration out = Run(&c);
 	cd3Transform frame = c.polytopeA->transform;
 	out.normal = cd3RotateVector(frame.q, out.normal);

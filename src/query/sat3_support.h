@@ -164,4 +164,86 @@ static inline int cd3PlaneSupportIndex(const cd3Plane* planes, int count, cd3Vec
 	return best;
 }
 
+/* Points stored as coordinate arrays (structure of arrays), padded to a multiple of 4 with
+ * copies of point 0 (a copy never beats the first point under the first-maximum rule). Small
+ * polytopes get this form on the stack when they are scanned many times: a scan then needs no
+ * shuffles, and B's points are moved into A's frame once instead of each direction and answer. */
+#define CD3_SOA_MAX_POINTS 64
+
+typedef struct cd3SoaPoints
+{
+	int count, padded;
+	cdReal x[CD3_SOA_MAX_POINTS], y[CD3_SOA_MAX_POINTS], z[CD3_SOA_MAX_POINTS];
+} cd3SoaPoints;
+
+/* rotation * v + translation of each point (count <= CD3_SOA_MAX_POINTS), as cd3MulMV and cd3Add
+ * compute it. */
+static inline void cd3MakeSoaPoints(cd3SoaPoints* s, const cd3Vec* points, int count, cd3Mat33 rotation,
+									cd3Vec translation)
+{
+	s->count = count;
+	s->padded = (count + 3) & ~3;
+	for (int i = 0; i < s->padded; ++i)
+	{
+		cd3Vec p = cd3Add(cd3MulMV(rotation, points[i < count ? i : 0]), translation);
+		s->x[i] = p.x;
+		s->y[i] = p.y;
+		s->z[i] = p.z;
+	}
+}
+
+/* The points as they are. */
+static inline void cd3CopySoaPoints(cd3SoaPoints* s, const cd3Vec* points, int count)
+{
+	s->count = count;
+	s->padded = (count + 3) & ~3;
+	for (int i = 0; i < s->padded; ++i)
+	{
+		cd3Vec p = points[i < count ? i : 0];
+		s->x[i] = p.x;
+		s->y[i] = p.y;
+		s->z[i] = p.z;
+	}
+}
+
+static inline cd3Vec cd3SoaPoint(const cd3SoaPoints* s, int i)
+{
+	return cd3MakeVec(s->x[i], s->y[i], s->z[i]);
+}
+
+/* cd3SupportIndex over the arrays. */
+static inline int cd3SoaSupportIndex(const cd3SoaPoints* s, cd3Vec direction)
+{
+#if CD3_SUPPORT_SSE
+	__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y), dz = _mm_set1_ps(direction.z);
+	__m128i index = _mm_set_epi32(3, 2, 1, 0);
+	__m128i four = _mm_set1_epi32(4);
+	__m128 best =
+		_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(s->x)), _mm_mul_ps(dy, _mm_loadu_ps(s->y))),
+				   _mm_mul_ps(dz, _mm_loadu_ps(s->z)));
+	__m128i bestIndex = index;
+	for (int i = 4; i < s->padded; i += 4)
+	{
+		index = _mm_add_epi32(index, four);
+		__m128 d = _mm_add_ps(
+			_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(s->x + i)), _mm_mul_ps(dy, _mm_loadu_ps(s->y + i))),
+			_mm_mul_ps(dz, _mm_loadu_ps(s->z + i)));
+		cd3SupportKeepHigher(d, index, &best, &bestIndex);
+	}
+	float highest;
+	return cd3SupportFirstMaximum(best, bestIndex, &highest);
+#else
+	int best = 0;
+	cdReal highest = direction.x * s->x[0] + direction.y * s->y[0] + direction.z * s->z[0];
+	for (int i = 1; i < s->count; ++i)
+	{
+		cdReal d = direction.x * s->x[i] + direction.y * s->y[i] + direction.z * s->z[i];
+		bool higher = d > highest;
+		best = higher ? i : best;
+		highest = higher ? d : highest;
+	}
+	return best;
+#endif
+}
+
 #endif
