@@ -70,90 +70,157 @@ static double cdMaxDouble(double a, double b)
 	return a > b ? a : b;
 }
 
-/* ---- allocation ------------------------------------------------------------------------------- */
-
 static void* AllocArray(size_t count, size_t size)
 {
 	return count == 0 ? NULL : cdAlloc(count * size);
+}
+
+/* ---- scratch memory ------------------------------------------------------------------------------ */
+
+/* Pieces of one allocation, each rounded up to 32 bytes. */
+static size_t AlignUp(size_t size)
+{
+	return (size + 31u) & ~(size_t)31u;
+}
+
+/* One block carved into the build's scratch arrays: a build allocates it and the hull, nothing
+ * else. Measured first (base NULL), then carved. */
+typedef struct Arena
+{
+	char* base;
+	size_t used;
+} Arena;
+
+static void* ArenaTake(Arena* arena, size_t count, size_t size)
+{
+	void* memory = arena->base != NULL ? arena->base + arena->used : NULL;
+	arena->used += AlignUp(count * size);
+	return memory;
+}
+
+/* ---- sorting ------------------------------------------------------------------------------------- */
+
+typedef struct SortKey
+{
+	uint64_t key;
+	int index;
+} SortKey;
+
+/* Bits of a double that sort as unsigned integers in the order of the values (-0 as +0). */
+static uint64_t OrderedBits(double x)
+{
+	x = x + 0.0;
+	uint64_t bits;
+	memcpy(&bits, &x, sizeof(bits));
+	return (bits >> 63) != 0 ? ~bits : bits | 0x8000000000000000ull;
+}
+
+/* Stable sort by key (equal keys keep their order): insertion sort for a few keys, else a radix
+ * sort by bytes that skips the digits every key shares. Returns the sorted array, which
+ * is `keys` or `spare`. */
+static SortKey* SortKeys(SortKey* keys, SortKey* spare, int count)
+{
+	if (count < 64)
+	{
+		for (int i = 1; i < count; ++i)
+		{
+			SortKey k = keys[i];
+			int j = i;
+			for (; j > 0 && keys[j - 1].key > k.key; --j)
+			{
+				keys[j] = keys[j - 1];
+			}
+			keys[j] = k;
+		}
+		return keys;
+	}
+	enum
+	{
+		DIGIT_BITS = 8,
+		DIGITS = 8,
+		BUCKETS = 1 << DIGIT_BITS
+	};
+	static const uint64_t mask = BUCKETS - 1;
+	int histogram[DIGITS][BUCKETS];
+	memset(histogram, 0, sizeof(histogram));
+	for (int i = 0; i < count; ++i)
+	{
+		uint64_t key = keys[i].key;
+		for (int d = 0; d < DIGITS; ++d)
+		{
+			++histogram[d][(key >> (d * DIGIT_BITS)) & mask];
+		}
+	}
+	SortKey* from = keys;
+	SortKey* to = spare;
+	for (int d = 0; d < DIGITS; ++d)
+	{
+		int* h = histogram[d];
+		if (h[(from[0].key >> (d * DIGIT_BITS)) & mask] == count)
+		{
+			continue; /* every key has this digit */
+		}
+		int sum = 0;
+		for (int bucket = 0; bucket < BUCKETS; ++bucket)
+		{
+			int c = h[bucket];
+			h[bucket] = sum;
+			sum += c;
+		}
+		for (int i = 0; i < count; ++i)
+		{
+			to[h[(from[i].key >> (d * DIGIT_BITS)) & mask]++] = from[i];
+		}
+		SortKey* swap = from;
+		from = to;
+		to = swap;
+	}
+	return from;
 }
 
 /* ---- quickhull on triangles -------------------------------------------------------------------- */
 
 typedef struct HFace
 {
-	int v[3];
-	int adj[3]; /* face across edge v[i] -> v[(i + 1) % 3] */
 	HVec normal;
 	double offset;
+	double farthestDistance; /* of the conflict list's farthest point */
+	int v[3];
+	int adj[3];	  /* face across edge v[i] -> v[(i + 1) % 3]; adj[0] links the free list when dead */
 	int conflict; /* first point of the conflict list, -1 when empty */
+	int farthest; /* its farthest point */
 	int mark;	  /* visit stamp of the horizon search */
 	bool visible;
 	bool alive;
+	bool queued; /* on the pending ring (kept when the slot is reused) */
 } HFace;
 
+/* Dead faces are recycled before new ones are made, so that the slots in use never exceed the
+ * faces of the final triangulation: 2 V - 4 for V points, whatever the insertion order. */
 typedef struct Builder
 {
 	const HVec* p;
 	int n;
 	int* nextConflict;
 	HFace* faces;
-	int faceCount, faceCapacity;
+	int faceCount; /* slots ever used */
+	int faceCapacity;
+	int freeFace;
+	int* pending; /* ring of faces with conflict points, each once (queued) */
+	int pendingHead;
+	int pendingCount;
 	int* stack;
 	int* visibleFaces;
-	int* horizonFace;
+	int* horizonFace; /* per horizon edge: its visible face, then the face beyond it */
 	int* horizonEdge;
-	int* startAt; /* per vertex: new face whose horizon edge starts there */
-	int* endAt;
+	int* horizonFrom;
+	int* horizonTo;
 	int* newFaces;
-	int scratchCapacity;
+	int* orphans; /* the conflict points of the faces an eye point removes */
+	int* startAt; /* per vertex: new face whose horizon edge starts there, -1 */
+	int* endAt;
 	double tol;
 } Builder;
-
-static bool GrowFaces(Builder* b, int extra)
-{
-	if (b->faceCount + extra <= b->faceCapacity)
-	{
-		return true;
-	}
-	int capacity = b->faceCapacity * 2;
-	while (capacity < b->faceCount + extra)
-	{
-		capacity *= 2;
-	}
-	HFace* faces = (HFace*)AllocArray((size_t)capacity, sizeof(HFace));
-	if (faces == NULL)
-	{
-		return false;
-	}
-	memcpy(faces, b->faces, (size_t)b->faceCount * sizeof(HFace));
-	cdFree(b->faces);
-	b->faces = faces;
-	b->faceCapacity = capacity;
-	return true;
-}
-
-/* Scratch arrays sized by the number of faces (stack, visible set, horizon). */
-static bool GrowScratch(Builder* b, int needed)
-{
-	if (needed <= b->scratchCapacity)
-	{
-		return true;
-	}
-	int capacity = cdMaxInt(needed, 2 * b->scratchCapacity);
-	int** arrays[] = {&b->stack, &b->visibleFaces, &b->horizonFace, &b->horizonEdge, &b->newFaces};
-	for (int i = 0; i < 5; ++i)
-	{
-		int* grown = (int*)AllocArray((size_t)capacity, sizeof(int));
-		if (grown == NULL)
-		{
-			return false;
-		}
-		cdFree(*arrays[i]);
-		*arrays[i] = grown;
-	}
-	b->scratchCapacity = capacity;
-	return true;
-}
 
 static void SetPlane(Builder* b, HFace* f)
 {
@@ -167,20 +234,45 @@ static double FaceDistance(const Builder* b, const HFace* f, int point)
 	return HDot(f->normal, b->p[point]) - f->offset;
 }
 
+/* -1 when no slot is left (cannot happen on a simple triangulated sphere; checked anyway). */
 static int AddFace(Builder* b, int v0, int v1, int v2)
 {
-	int index = b->faceCount++;
+	int index = b->freeFace;
+	if (index >= 0)
+	{
+		b->freeFace = b->faces[index].adj[0];
+	}
+	else
+	{
+		if (b->faceCount == b->faceCapacity)
+		{
+			return -1;
+		}
+		index = b->faceCount++;
+		b->faces[index].queued = false;
+	}
 	HFace* f = &b->faces[index];
 	f->v[0] = v0;
 	f->v[1] = v1;
 	f->v[2] = v2;
 	f->adj[0] = f->adj[1] = f->adj[2] = -1;
 	f->conflict = -1;
+	f->farthest = -1;
+	f->farthestDistance = 0.0;
 	f->mark = -1;
 	f->visible = false;
 	f->alive = true;
 	SetPlane(b, f);
 	return index;
+}
+
+static void FreeFace(Builder* b, int index)
+{
+	HFace* f = &b->faces[index];
+	f->alive = false;
+	f->conflict = -1;
+	f->adj[0] = b->freeFace;
+	b->freeFace = index;
 }
 
 /* Puts `point` on the conflict list of the face among `faces` it is farthest above (by more than
@@ -200,16 +292,28 @@ static void AssignPoint(Builder* b, const int* faces, int count, int point)
 	}
 	if (best >= 0)
 	{
-		b->nextConflict[point] = b->faces[best].conflict;
-		b->faces[best].conflict = point;
+		HFace* f = &b->faces[best];
+		if (f->conflict < 0 || bestDistance > f->farthestDistance)
+		{
+			f->farthest = point;
+			f->farthestDistance = bestDistance;
+		}
+		b->nextConflict[point] = f->conflict;
+		f->conflict = point;
+		if (!f->queued)
+		{
+			f->queued = true;
+			int tail = b->pendingHead + b->pendingCount++;
+			b->pending[tail < b->faceCapacity ? tail : tail - b->faceCapacity] = best;
+		}
 	}
 }
 
-static int EdgeIndex(const HFace* f, int from, int to)
+static int EdgeIndex(const int* v, int from, int to)
 {
 	for (int i = 0; i < 3; ++i)
 	{
-		if (f->v[i] == from && f->v[(i + 1) % 3] == to)
+		if (v[i] == from && v[(i + 1) % 3] == to)
 		{
 			return i;
 		}
@@ -217,26 +321,12 @@ static int EdgeIndex(const HFace* f, int from, int to)
 	return -1;
 }
 
-/* One quickhull step: adds the farthest conflict point of face `start`. False when the horizon
- * is not a simple loop (round-off beyond anything double should produce) or memory runs out. */
+/* One quickhull step: adds the farthest conflict point of face `start`. Degenerate when the
+ * horizon is not a simple loop (round-off beyond anything double should produce). */
 static cdResult AddEyePoint(Builder* b, int start, int stamp)
 {
 	HFace* f0 = &b->faces[start];
-	int eye = f0->conflict;
-	double farthest = FaceDistance(b, f0, eye);
-	for (int q = b->nextConflict[eye]; q >= 0; q = b->nextConflict[q])
-	{
-		double d = FaceDistance(b, f0, q);
-		if (d > farthest)
-		{
-			farthest = d;
-			eye = q;
-		}
-	}
-	if (!GrowScratch(b, 3 * b->faceCount + 8))
-	{
-		return CD_ERROR_OUT_OF_MEMORY;
-	}
+	int eye = f0->farthest;
 
 	/* Depth-first search of the faces the eye sees; the horizon is where it stops. */
 	int visibleCount = 0, horizonCount = 0, top = 0;
@@ -275,7 +365,10 @@ static cdResult AddEyePoint(Builder* b, int start, int stamp)
 	for (int k = 0; k < horizonCount; ++k)
 	{
 		const HFace* f = &b->faces[b->horizonFace[k]];
-		int a = f->v[b->horizonEdge[k]];
+		int e = b->horizonEdge[k];
+		int a = f->v[e];
+		b->horizonFrom[k] = a;
+		b->horizonTo[k] = f->v[(e + 1) % 3];
 		simple = simple && b->startAt[a] < 0;
 		b->startAt[a] = k;
 	}
@@ -284,9 +377,7 @@ static cdResult AddEyePoint(Builder* b, int start, int stamp)
 		int steps = 0, k = 0;
 		do
 		{
-			const HFace* f = &b->faces[b->horizonFace[k]];
-			int next = f->v[(b->horizonEdge[k] + 1) % 3];
-			k = b->startAt[next];
+			k = b->startAt[b->horizonTo[k]];
 			++steps;
 		} while (k >= 0 && k != 0 && steps <= horizonCount);
 		simple = k == 0 && steps == horizonCount;
@@ -295,25 +386,43 @@ static cdResult AddEyePoint(Builder* b, int start, int stamp)
 	{
 		for (int k = 0; k < horizonCount; ++k)
 		{
-			b->startAt[b->faces[b->horizonFace[k]].v[b->horizonEdge[k]]] = -1;
+			b->startAt[b->horizonFrom[k]] = -1;
 		}
 		return CD_ERROR_DEGENERATE;
 	}
-
-	if (!GrowFaces(b, horizonCount))
+	for (int k = 0; k < horizonCount; ++k)
 	{
-		return CD_ERROR_OUT_OF_MEMORY;
+		b->horizonFace[k] = b->faces[b->horizonFace[k]].adj[b->horizonEdge[k]];
 	}
+
+	/* The visible faces go first, so that the cone reuses their slots; their points wait. */
+	int orphanCount = 0;
+	for (int i = 0; i < visibleCount; ++i)
+	{
+		int fi = b->visibleFaces[i];
+		for (int q = b->faces[fi].conflict; q >= 0; q = b->nextConflict[q])
+		{
+			if (q != eye)
+			{
+				b->orphans[orphanCount++] = q;
+			}
+		}
+		FreeFace(b, fi);
+	}
+
 	/* A cone of new faces from the eye to the horizon. */
 	for (int k = 0; k < horizonCount; ++k)
 	{
-		HFace* f = &b->faces[b->horizonFace[k]];
-		int e = b->horizonEdge[k];
-		int a = f->v[e], c = f->v[(e + 1) % 3], g = f->adj[e];
+		int a = b->horizonFrom[k], c = b->horizonTo[k], g = b->horizonFace[k];
 		int nf = AddFace(b, a, c, eye);
-		b->newFaces[k] = nf;
 		HFace* other = &b->faces[g];
-		other->adj[EdgeIndex(other, c, a)] = nf;
+		int j = EdgeIndex(other->v, c, a);
+		if (nf < 0 || j < 0)
+		{
+			return CD_ERROR_DEGENERATE;
+		}
+		b->newFaces[k] = nf;
+		other->adj[j] = nf;
 		b->faces[nf].adj[0] = g;
 		b->startAt[a] = nf;
 		b->endAt[c] = nf;
@@ -326,27 +435,14 @@ static cdResult AddEyePoint(Builder* b, int start, int stamp)
 	}
 	for (int k = 0; k < horizonCount; ++k)
 	{
-		HFace* nf = &b->faces[b->newFaces[k]];
-		b->startAt[nf->v[0]] = -1;
-		b->endAt[nf->v[1]] = -1;
+		b->startAt[b->horizonFrom[k]] = -1;
+		b->endAt[b->horizonTo[k]] = -1;
 	}
 
-	/* The visible faces go; their points find a new face or lie inside. */
-	for (int i = 0; i < visibleCount; ++i)
+	/* The removed faces' points find a new face or lie inside. */
+	for (int i = 0; i < orphanCount; ++i)
 	{
-		HFace* f = &b->faces[b->visibleFaces[i]];
-		f->alive = false;
-		int q = f->conflict;
-		f->conflict = -1;
-		while (q >= 0)
-		{
-			int next = b->nextConflict[q];
-			if (q != eye)
-			{
-				AssignPoint(b, b->newFaces, horizonCount, q);
-			}
-			q = next;
-		}
+		AssignPoint(b, b->newFaces, horizonCount, b->orphans[i]);
 	}
 	return CD_OK;
 }
@@ -441,11 +537,11 @@ static cdResult RunQuickhull(Builder* b, double weld)
 		return result;
 	}
 	/* Faces of the tetrahedron, counter-clockwise from outside; (s0, s1, s2) faces away from s3. */
-	int f0 = AddFace(b, s[0], s[1], s[2]);
-	int f1 = AddFace(b, s[0], s[3], s[1]);
-	int f2 = AddFace(b, s[1], s[3], s[2]);
-	int f3 = AddFace(b, s[2], s[3], s[0]);
-	int all[4] = {f0, f1, f2, f3};
+	int all[4];
+	all[0] = AddFace(b, s[0], s[1], s[2]);
+	all[1] = AddFace(b, s[0], s[3], s[1]);
+	all[2] = AddFace(b, s[1], s[3], s[2]);
+	all[3] = AddFace(b, s[2], s[3], s[0]);
 	for (int i = 0; i < 4; ++i)
 	{
 		for (int e = 0; e < 3; ++e)
@@ -454,7 +550,7 @@ static cdResult RunQuickhull(Builder* b, double weld)
 			int from = f->v[e], to = f->v[(e + 1) % 3];
 			for (int j = 0; j < 4; ++j)
 			{
-				if (j != i && EdgeIndex(&b->faces[all[j]], to, from) >= 0)
+				if (j != i && EdgeIndex(b->faces[all[j]].v, to, from) >= 0)
 				{
 					f->adj[e] = all[j];
 				}
@@ -469,10 +565,15 @@ static cdResult RunQuickhull(Builder* b, double weld)
 		}
 	}
 
+	/* Each step adds one point for good, so there are at most n steps. */
 	int stamp = 0;
-	for (int f = 0; f < b->faceCount; ++f)
+	while (b->pendingCount > 0)
 	{
-		while (b->faces[f].alive && b->faces[f].conflict >= 0)
+		int f = b->pending[b->pendingHead];
+		b->pendingHead = b->pendingHead + 1 < b->faceCapacity ? b->pendingHead + 1 : 0;
+		--b->pendingCount;
+		b->faces[f].queued = false;
+		if (b->faces[f].alive && b->faces[f].conflict >= 0)
 		{
 			result = AddEyePoint(b, f, stamp++);
 			if (result != CD_OK)
@@ -486,76 +587,138 @@ static cdResult RunQuickhull(Builder* b, double weld)
 
 /* ---- merging triangles into faces and building the half-edge hull ---------------------------- */
 
-typedef struct AreaOrder
+/* Arrays sized by the face slots (F) and points (n) of the triangulation, from the arena. */
+typedef struct HTri
 {
-	double area;
-	int face;
-} AreaOrder;
-
-static int CompareAreasDescending(const void* a, const void* b)
-{
-	double x = ((const AreaOrder*)a)->area, y = ((const AreaOrder*)b)->area;
-	if (x != y)
-	{
-		return x > y ? -1 : 1;
-	}
-	int i = ((const AreaOrder*)a)->face, j = ((const AreaOrder*)b)->face;
-	return i < j ? -1 : (i > j ? 1 : 0);
-}
+	int v[3];
+	int adj[3];
+} HTri;
 
 typedef struct Merged
 {
+	HTri* tris; /* the live triangles, renumbered in breadth-first order (neighbours nearby) */
+	HVec* triNormal;
+	double* triOffset;
+	int triCount;
 	int* group; /* per face: merged face index */
 	int groupCount;
 	int* loopNext;	  /* per boundary slot (face * 3 + edge): next boundary slot of the group */
 	int* groupStart;  /* per group: one boundary slot */
 	int* vertexFaces; /* per vertex: number of merged faces around it */
+	SortKey* order;	  /* the live triangles, largest first */
+	int orderCount;
+	SortKey* orderSpare;
+	int* queue;
+	int* slotsInGroup;
+	int* groupSlots;
+	int* groupFirst; /* F + 1 */
+	int* groupOrder; /* 3 F */
+	int* vertexMap;	 /* n */
+	int* slotEdge;	 /* 3 F */
+	int* lastSlot;	 /* 3 F */
+	int* firstSlot;	 /* 3 F */
 } Merged;
+
+static void TakeMerged(Arena* arena, Merged* m, size_t faces, size_t points)
+{
+	m->tris = (HTri*)ArenaTake(arena, faces, sizeof(HTri));
+	m->triNormal = (HVec*)ArenaTake(arena, faces, sizeof(HVec));
+	m->triOffset = (double*)ArenaTake(arena, faces, sizeof(double));
+	m->group = (int*)ArenaTake(arena, faces, sizeof(int));
+	m->loopNext = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	m->groupStart = (int*)ArenaTake(arena, faces, sizeof(int));
+	m->vertexFaces = (int*)ArenaTake(arena, points, sizeof(int));
+	m->order = (SortKey*)ArenaTake(arena, faces, sizeof(SortKey));
+	m->orderSpare = (SortKey*)ArenaTake(arena, faces, sizeof(SortKey));
+	m->queue = (int*)ArenaTake(arena, faces, sizeof(int));
+	m->slotsInGroup = (int*)ArenaTake(arena, faces, sizeof(int));
+	m->groupSlots = (int*)ArenaTake(arena, faces, sizeof(int));
+	m->groupFirst = (int*)ArenaTake(arena, faces + 1, sizeof(int));
+	m->groupOrder = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	m->vertexMap = (int*)ArenaTake(arena, points, sizeof(int));
+	m->slotEdge = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	m->lastSlot = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	m->firstSlot = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+}
+
+/* Copies the live triangles into a dense array in breadth-first order from the first one, so that
+ * the walks along merged faces touch nearby memory (quickhull's recycled slots are scattered);
+ * then orders the merge seeds, once for every merge attempt: largest area first, ties by index. */
+static void CompactTriangles(Builder* b, Merged* m)
+{
+	int first = 0;
+	while (!b->faces[first].alive)
+	{
+		++first;
+	}
+	for (int f = 0; f < b->faceCount; ++f)
+	{
+		b->faces[f].mark = -1; /* the new index */
+	}
+	int* queue = m->queue;
+	int head = 0, tail = 0;
+	queue[tail++] = first;
+	b->faces[first].mark = 0;
+	while (head < tail)
+	{
+		const HFace* f = &b->faces[queue[head++]];
+		for (int e = 0; e < 3; ++e)
+		{
+			HFace* g = &b->faces[f->adj[e]];
+			if (g->mark < 0)
+			{
+				g->mark = tail;
+				queue[tail++] = f->adj[e];
+			}
+		}
+	}
+	m->triCount = tail;
+	for (int t = 0; t < tail; ++t)
+	{
+		const HFace* f = &b->faces[queue[t]];
+		HTri* tri = &m->tris[t];
+		for (int k = 0; k < 3; ++k)
+		{
+			tri->v[k] = f->v[k];
+			tri->adj[k] = b->faces[f->adj[k]].mark;
+		}
+		m->triNormal[t] = f->normal;
+		m->triOffset[t] = f->offset;
+		HVec a = b->p[f->v[0]];
+		double area = HLength(HCross(HSub(b->p[f->v[1]], a), HSub(b->p[f->v[2]], a)));
+		m->order[t].key = ~OrderedBits(area);
+		m->order[t].index = t;
+	}
+	m->order = SortKeys(m->order, m->orderSpare, tail);
+	m->orderCount = tail;
+}
 
 /* Grows each face from the largest unmerged triangle through neighbours whose three vertices lie
  * within `mergeTolerance` of the seed's plane. */
-static cdResult MergeTriangles(const Builder* b, double mergeTolerance, Merged* m)
+static void MergeTriangles(const Builder* b, double mergeTolerance, Merged* m)
 {
-	int total = b->faceCount;
-	AreaOrder* order = (AreaOrder*)AllocArray((size_t)total, sizeof(AreaOrder));
-	int* queue = (int*)AllocArray((size_t)total, sizeof(int));
-	if (order == NULL || queue == NULL)
-	{
-		cdFree(order);
-		cdFree(queue);
-		return CD_ERROR_OUT_OF_MEMORY;
-	}
-	int aliveCount = 0;
-	for (int f = 0; f < total; ++f)
+	int* queue = m->queue;
+	for (int f = 0; f < m->triCount; ++f)
 	{
 		m->group[f] = -1;
-		if (b->faces[f].alive)
-		{
-			const HFace* face = &b->faces[f];
-			HVec a = b->p[face->v[0]];
-			order[aliveCount].area = HLength(HCross(HSub(b->p[face->v[1]], a), HSub(b->p[face->v[2]], a)));
-			order[aliveCount].face = f;
-			++aliveCount;
-		}
 	}
-	qsort(order, (size_t)aliveCount, sizeof(AreaOrder), CompareAreasDescending);
 	m->groupCount = 0;
-	for (int i = 0; i < aliveCount; ++i)
+	for (int i = 0; i < m->orderCount; ++i)
 	{
-		int seed = order[i].face;
+		int seed = m->order[i].index;
 		if (m->group[seed] >= 0)
 		{
 			continue;
 		}
 		int g = m->groupCount++;
-		HVec n = b->faces[seed].normal;
-		double d = b->faces[seed].offset;
+		HVec n = m->triNormal[seed];
+		double d = m->triOffset[seed];
 		int head = 0, tail = 0;
 		queue[tail++] = seed;
 		m->group[seed] = g;
 		while (head < tail)
 		{
-			const HFace* f = &b->faces[queue[head++]];
+			const HTri* f = &m->tris[queue[head++]];
 			for (int e = 0; e < 3; ++e)
 			{
 				int other = f->adj[e];
@@ -563,15 +726,16 @@ static cdResult MergeTriangles(const Builder* b, double mergeTolerance, Merged* 
 				{
 					continue;
 				}
-				const HFace* o = &b->faces[other];
 				/* No test of the normal: a sliver's normal is noise, its vertices are not. (The
-				 * far side of a slab this thin was rejected as flat.) */
-				bool coplanar = true;
-				for (int k = 0; k < 3 && coplanar; ++k)
-				{
-					coplanar = fabs(HDot(n, b->p[o->v[k]]) - d) <= mergeTolerance;
-				}
-				if (coplanar)
+				 * far side of a slab this thin was rejected as flat.) Only the vertex opposite the
+				 * shared edge is tested: the edge's vertices are f's, already within the tolerance
+				 * (the seed's own to round-off, and a negative tolerance merges nothing anyway). */
+				const HTri* o = &m->tris[other];
+				int a = f->v[e], c = f->v[e == 2 ? 0 : e + 1];
+				int opposite = o->v[0] != a && o->v[0] != c
+								   ? o->v[0]
+								   : (o->v[1] != a && o->v[1] != c ? o->v[1] : o->v[2]);
+				if (fabs(HDot(n, b->p[opposite]) - d) <= mergeTolerance)
 				{
 					m->group[other] = g;
 					queue[tail++] = other;
@@ -579,9 +743,6 @@ static cdResult MergeTriangles(const Builder* b, double mergeTolerance, Merged* 
 			}
 		}
 	}
-	cdFree(order);
-	cdFree(queue);
-	return CD_OK;
 }
 
 /* Links each merged face's boundary (triangle edges whose neighbour is in another group) into one
@@ -589,7 +750,7 @@ static cdResult MergeTriangles(const Builder* b, double mergeTolerance, Merged* 
  * loop cannot come from a convex surface; it is reported as degenerate. */
 static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 {
-	int total = b->faceCount;
+	int total = m->triCount;
 	for (int g = 0; g < m->groupCount; ++g)
 	{
 		m->groupStart[g] = -1;
@@ -598,14 +759,8 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 	{
 		m->vertexFaces[i] = 0;
 	}
-	int* groupSlots = (int*)AllocArray((size_t)m->groupCount, sizeof(int));
-	int* slotsInGroup = (int*)AllocArray((size_t)m->groupCount, sizeof(int));
-	if (groupSlots == NULL || slotsInGroup == NULL)
-	{
-		cdFree(groupSlots);
-		cdFree(slotsInGroup);
-		return CD_ERROR_OUT_OF_MEMORY;
-	}
+	int* groupSlots = m->groupSlots;
+	int* slotsInGroup = m->slotsInGroup;
 	for (int g = 0; g < m->groupCount; ++g)
 	{
 		slotsInGroup[g] = 0;
@@ -616,16 +771,12 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 		{
 			m->loopNext[3 * f + e] = -1;
 		}
-		if (!b->faces[f].alive)
-		{
-			continue;
-		}
 		for (int e = 0; e < 3; ++e)
 		{
-			if (m->group[b->faces[f].adj[e]] != m->group[f])
+			if (m->group[m->tris[f].adj[e]] != m->group[f])
 			{
 				++slotsInGroup[m->group[f]];
-				++m->vertexFaces[b->faces[f].v[e]];
+				++m->vertexFaces[m->tris[f].v[e]];
 			}
 		}
 	}
@@ -633,16 +784,8 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 	cdResult result = CD_OK;
 	/* Per group: map each boundary edge's start vertex to its slot, then link a -> b to the edge
 	 * starting at b. startAt is a per-vertex scratch array of -1s, restored before moving on. */
-	int* groupOrder = (int*)AllocArray((size_t)total * 3, sizeof(int));
-	int* groupFirst = (int*)AllocArray((size_t)m->groupCount + 1, sizeof(int));
-	if (groupOrder == NULL || groupFirst == NULL)
-	{
-		cdFree(groupSlots);
-		cdFree(slotsInGroup);
-		cdFree(groupOrder);
-		cdFree(groupFirst);
-		return CD_ERROR_OUT_OF_MEMORY;
-	}
+	int* groupOrder = m->groupOrder;
+	int* groupFirst = m->groupFirst;
 	groupFirst[0] = 0;
 	for (int g = 0; g < m->groupCount; ++g)
 	{
@@ -651,13 +794,9 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 	}
 	for (int f = 0; f < total; ++f)
 	{
-		if (!b->faces[f].alive)
-		{
-			continue;
-		}
 		for (int e = 0; e < 3; ++e)
 		{
-			if (m->group[b->faces[f].adj[e]] != m->group[f])
+			if (m->group[m->tris[f].adj[e]] != m->group[f])
 			{
 				groupOrder[groupSlots[m->group[f]]++] = 3 * f + e;
 			}
@@ -674,7 +813,7 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 		for (int s = first; s < last && result == CD_OK; ++s)
 		{
 			int slot = groupOrder[s];
-			int a = b->faces[slot / 3].v[slot % 3];
+			int a = m->tris[slot / 3].v[slot % 3];
 			if (startAt[a] >= 0)
 			{
 				result = CD_ERROR_DEGENERATE; /* two boundary edges leave one vertex: pinched */
@@ -684,7 +823,7 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 		for (int s = first; s < last && result == CD_OK; ++s)
 		{
 			int slot = groupOrder[s];
-			int to = b->faces[slot / 3].v[(slot % 3 + 1) % 3];
+			int to = m->tris[slot / 3].v[(slot % 3 + 1) % 3];
 			m->loopNext[slot] = startAt[to];
 			if (startAt[to] < 0)
 			{
@@ -709,20 +848,10 @@ static cdResult LinkBoundaries(const Builder* b, Merged* m, int* startAt)
 		for (int s = first; s < last; ++s)
 		{
 			int slot = groupOrder[s];
-			startAt[b->faces[slot / 3].v[slot % 3]] = -1;
+			startAt[m->tris[slot / 3].v[slot % 3]] = -1;
 		}
 	}
-	cdFree(groupSlots);
-	cdFree(slotsInGroup);
-	cdFree(groupOrder);
-	cdFree(groupFirst);
 	return result;
-}
-
-/* Sizes of the pieces of the hull's single allocation, each rounded up to 32 bytes. */
-static size_t AlignUp(size_t size)
-{
-	return (size + 31u) & ~(size_t)31u;
 }
 
 /* Distance from p to the line through a and b (to a when they coincide). */
@@ -740,18 +869,17 @@ static double LineDistance(HVec p, HVec a, HVec b)
 static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input, const int* inputIndex,
 						  double collinearTolerance, cd3Hull** out)
 {
-	int total = b->faceCount;
-	/* Kept vertices: those where at least three merged faces meet. A vertex between only two
-	 * lies on their common edge and is dropped. */
-	int* vertexMap = (int*)AllocArray((size_t)b->n, sizeof(int));
-	if (vertexMap == NULL)
-	{
-		return CD_ERROR_OUT_OF_MEMORY;
-	}
+	int total = m->triCount;
+	/* Kept vertices: those where at least three merged faces meet (-2 until numbered in the
+	 * order the faces reach them, for locality). A vertex between only two lies on their common
+	 * edge and is dropped (-1). */
+	int* vertexMap = m->vertexMap;
 	int vertexCount = 0;
 	for (int i = 0; i < b->n; ++i)
 	{
-		vertexMap[i] = m->vertexFaces[i] >= 3 ? vertexCount++ : -1;
+		bool kept = m->vertexFaces[i] >= 3;
+		vertexMap[i] = kept ? -2 : -1;
+		vertexCount += kept;
 	}
 	int halfEdgeCount = 0;
 	for (int f = 0; f < total; ++f)
@@ -759,7 +887,7 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 		for (int e = 0; e < 3; ++e)
 		{
 			int slot = 3 * f + e;
-			if (m->loopNext[slot] >= 0 && vertexMap[b->faces[f].v[e]] >= 0)
+			if (m->loopNext[slot] >= 0 && vertexMap[m->tris[f].v[e]] != -1)
 			{
 				++halfEdgeCount;
 			}
@@ -775,16 +903,11 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	char* memory = (char*)cdAlloc(headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize);
 	/* Each half-edge covers a chain of boundary slots (the dropped vertices in between); its
 	 * twin is the half-edge covering the twin of its chain's last slot. */
-	int* slotEdge = (int*)AllocArray((size_t)total * 3, sizeof(int));
-	int* lastSlot = (int*)AllocArray((size_t)halfEdgeCount, sizeof(int));
-	int* firstSlot = (int*)AllocArray((size_t)halfEdgeCount, sizeof(int));
-	if (memory == NULL || slotEdge == NULL || lastSlot == NULL || firstSlot == NULL)
+	int* slotEdge = m->slotEdge;
+	int* lastSlot = m->lastSlot;
+	int* firstSlot = m->firstSlot;
+	if (memory == NULL)
 	{
-		cdFree(memory);
-		cdFree(slotEdge);
-		cdFree(lastSlot);
-		cdFree(firstSlot);
-		cdFree(vertexMap);
 		return CD_ERROR_OUT_OF_MEMORY;
 	}
 	cd3Hull* hull = (cd3Hull*)memory;
@@ -793,13 +916,7 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	int32_t* faceEdges = (int32_t*)(memory + headerSize + verticesSize + edgesSize);
 	cd3Plane* planes = (cd3Plane*)(memory + headerSize + verticesSize + edgesSize + faceEdgesSize);
 	memset(hull, 0, sizeof(*hull));
-	for (int i = 0; i < b->n; ++i)
-	{
-		if (vertexMap[i] >= 0)
-		{
-			vertices[vertexMap[i]] = input[inputIndex[i]];
-		}
-	}
+	int numbered = 0;
 
 	/* Faces: walk each boundary loop, keeping the slots that start at a kept vertex. */
 	int edgeIndex = 0;
@@ -811,7 +928,13 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 		int first = -1, previous = -1, count = 0;
 		do
 		{
-			int v = vertexMap[b->faces[slot / 3].v[slot % 3]];
+			int point = m->tris[slot / 3].v[slot % 3];
+			int v = vertexMap[point];
+			if (v == -2)
+			{
+				v = vertexMap[point] = numbered++;
+				vertices[v] = input[inputIndex[point]];
+			}
 			if (v >= 0)
 			{
 				cd3HullHalfEdge* edge = &edges[edgeIndex];
@@ -857,11 +980,11 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	{
 		/* The dropped vertices of this half-edge's chain lie on it. */
 		int slot = firstSlot[e], last = lastSlot[e];
-		const HFace* lastFace = &b->faces[last / 3];
-		HVec from = b->p[b->faces[slot / 3].v[slot % 3]], to = b->p[lastFace->v[(last % 3 + 1) % 3]];
+		const HTri* lastFace = &m->tris[last / 3];
+		HVec from = b->p[m->tris[slot / 3].v[slot % 3]], to = b->p[lastFace->v[(last % 3 + 1) % 3]];
 		for (; slot != last && ok; slot = m->loopNext[slot])
 		{
-			const HFace* f = &b->faces[slot / 3];
+			const HTri* f = &m->tris[slot / 3];
 			ok = LineDistance(b->p[f->v[(slot % 3 + 1) % 3]], from, to) <= collinearTolerance;
 		}
 	}
@@ -870,9 +993,9 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 		for (int e = 0; e < halfEdgeCount && ok; ++e)
 		{
 			int slot = lastSlot[e];
-			const HFace* f = &b->faces[slot / 3];
+			const HTri* f = &m->tris[slot / 3];
 			int other = f->adj[slot % 3];
-			int j = EdgeIndex(&b->faces[other], f->v[(slot % 3 + 1) % 3], f->v[slot % 3]);
+			int j = EdgeIndex(m->tris[other].v, f->v[(slot % 3 + 1) % 3], f->v[slot % 3]);
 			ok = j >= 0 && slotEdge[3 * other + j] >= 0;
 			if (ok)
 			{
@@ -880,10 +1003,6 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 			}
 		}
 	}
-	cdFree(slotEdge);
-	cdFree(lastSlot);
-	cdFree(firstSlot);
-	cdFree(vertexMap);
 	if (!ok)
 	{
 		cdFree(memory);
@@ -969,34 +1088,18 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 
 /* ---- welding ------------------------------------------------------------------------------------ */
 
-typedef struct SortedPoint
-{
-	double x;
-	int index;
-} SortedPoint;
-
-static int CompareSortedPoints(const void* a, const void* b)
-{
-	const SortedPoint* p = (const SortedPoint*)a;
-	const SortedPoint* q = (const SortedPoint*)b;
-	if (p->x != q->x)
-	{
-		return p->x < q->x ? -1 : 1;
-	}
-	return p->index < q->index ? -1 : (p->index > q->index ? 1 : 0);
-}
-
 /* Keeps one point of every cluster closer than `weld` (sweep along x); returns the count kept and
  * their input indices in `kept`. The first point (in input order among equal x) wins. */
-static int WeldPoints(const HVec* p, int count, double weld, SortedPoint* sorted, bool* removed, int* kept)
+static int WeldPoints(const HVec* p, int count, double weld, SortKey* keys, SortKey* spare, bool* removed,
+					  int* kept)
 {
 	for (int i = 0; i < count; ++i)
 	{
-		sorted[i].x = p[i].x;
-		sorted[i].index = i;
+		keys[i].key = OrderedBits(p[i].x);
+		keys[i].index = i;
 		removed[i] = false;
 	}
-	qsort(sorted, (size_t)count, sizeof(SortedPoint), CompareSortedPoints);
+	const SortKey* sorted = SortKeys(keys, spare, count);
 	double weldSquared = weld * weld;
 	int keptCount = 0;
 	for (int i = 0; i < count; ++i)
@@ -1007,7 +1110,7 @@ static int WeldPoints(const HVec* p, int count, double weld, SortedPoint* sorted
 			continue;
 		}
 		kept[keptCount++] = a;
-		for (int j = i + 1; j < count && sorted[j].x - sorted[i].x <= weld; ++j)
+		for (int j = i + 1; j < count && p[sorted[j].index].x - p[a].x <= weld; ++j)
 		{
 			int c = sorted[j].index;
 			HVec d = HSub(p[c], p[a]);
@@ -1020,7 +1123,51 @@ static int WeldPoints(const HVec* p, int count, double weld, SortedPoint* sorted
 	return keptCount;
 }
 
-static cdResult ValidateHull(const cd3Hull* hull, bool global);
+static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratch);
+static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch);
+
+/* The scratch of a build of `count` points, carved from one arena. */
+typedef struct Scratch
+{
+	HVec* shifted;
+	HVec* welded;
+	SortKey* keys;
+	SortKey* spareKeys;
+	bool* removed;
+	int* kept;
+	Builder b;
+	Merged m;
+} Scratch;
+
+static size_t TakeScratch(Arena* arena, Scratch* s, int count)
+{
+	size_t n = (size_t)count;
+	/* A triangulated sphere on V <= n vertices has 2 V - 4 faces; slots are recycled. */
+	size_t faces = 2 * n + 8;
+	s->shifted = (HVec*)ArenaTake(arena, n, sizeof(HVec));
+	s->welded = (HVec*)ArenaTake(arena, n, sizeof(HVec));
+	s->keys = (SortKey*)ArenaTake(arena, n, sizeof(SortKey));
+	s->spareKeys = (SortKey*)ArenaTake(arena, n, sizeof(SortKey));
+	s->removed = (bool*)ArenaTake(arena, n, sizeof(bool));
+	s->kept = (int*)ArenaTake(arena, n, sizeof(int));
+	Builder* b = &s->b;
+	b->faceCapacity = (int)faces;
+	b->faces = (HFace*)ArenaTake(arena, faces, sizeof(HFace));
+	b->nextConflict = (int*)ArenaTake(arena, n, sizeof(int));
+	b->startAt = (int*)ArenaTake(arena, n, sizeof(int));
+	b->endAt = (int*)ArenaTake(arena, n, sizeof(int));
+	b->orphans = (int*)ArenaTake(arena, n, sizeof(int));
+	b->pending = (int*)ArenaTake(arena, faces, sizeof(int));
+	b->stack = (int*)ArenaTake(arena, faces, sizeof(int));
+	b->visibleFaces = (int*)ArenaTake(arena, faces, sizeof(int));
+	b->newFaces = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	b->horizonFace = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	b->horizonEdge = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	b->horizonFrom = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	b->horizonTo = (int*)ArenaTake(arena, 3 * faces, sizeof(int));
+	TakeMerged(arena, &s->m, faces, n);
+	return arena->used;
+}
 
 /* ---- public -------------------------------------------------------------------------------------- */
 
@@ -1069,60 +1216,41 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		return CD_ERROR_DEGENERATE;
 	}
 
-	size_t n = (size_t)count;
-	HVec* shifted = (HVec*)AllocArray(n, sizeof(HVec));
-	HVec* welded = (HVec*)AllocArray(n, sizeof(HVec));
-	SortedPoint* sorted = (SortedPoint*)AllocArray(n, sizeof(SortedPoint));
-	bool* removed = (bool*)AllocArray(n, sizeof(bool));
-	int* kept = (int*)AllocArray(n, sizeof(int));
-	int* nextConflict = (int*)AllocArray(n, sizeof(int));
-	int* startAt = (int*)AllocArray(n, sizeof(int));
-	int* endAt = (int*)AllocArray(n, sizeof(int));
-	Builder b;
-	memset(&b, 0, sizeof(b));
-	b.faceCapacity = 64;
-	b.faces = (HFace*)AllocArray((size_t)b.faceCapacity, sizeof(HFace));
-	cdResult result = CD_OK;
-	if (shifted == NULL || welded == NULL || sorted == NULL || removed == NULL || kept == NULL ||
-		nextConflict == NULL || startAt == NULL || endAt == NULL || b.faces == NULL)
+	Scratch s;
+	memset(&s, 0, sizeof(s));
+	Arena arena = {NULL, 0};
+	size_t scratchSize = TakeScratch(&arena, &s, count);
+	arena.base = (char*)cdAlloc(scratchSize);
+	if (arena.base == NULL)
 	{
-		result = CD_ERROR_OUT_OF_MEMORY;
+		return CD_ERROR_OUT_OF_MEMORY;
 	}
-	Merged m;
-	memset(&m, 0, sizeof(m));
+	arena.used = 0;
+	TakeScratch(&arena, &s, count);
+	Builder* b = &s.b;
+	Merged* m = &s.m;
+	b->freeFace = -1;
+
+	for (int i = 0; i < count; ++i)
+	{
+		s.shifted[i] = HSub(HMake((double)points[i].x, (double)points[i].y, (double)points[i].z), center);
+	}
+	int keptCount =
+		WeldPoints(s.shifted, count, HULL_WELD_REL * extent, s.keys, s.spareKeys, s.removed, s.kept);
+	for (int i = 0; i < keptCount; ++i)
+	{
+		s.welded[i] = s.shifted[s.kept[i]];
+		b->startAt[i] = -1;
+		b->endAt[i] = -1;
+		b->nextConflict[i] = -1;
+	}
+	b->p = s.welded;
+	b->n = keptCount;
+	b->tol = HULL_BUILD_REL * extent;
+	cdResult result = keptCount < 4 ? CD_ERROR_DEGENERATE : RunQuickhull(b, HULL_WELD_REL * extent);
 	if (result == CD_OK)
 	{
-		for (int i = 0; i < count; ++i)
-		{
-			shifted[i] = HSub(HMake((double)points[i].x, (double)points[i].y, (double)points[i].z), center);
-		}
-		int keptCount = WeldPoints(shifted, count, HULL_WELD_REL * extent, sorted, removed, kept);
-		for (int i = 0; i < keptCount; ++i)
-		{
-			welded[i] = shifted[kept[i]];
-			startAt[i] = -1;
-			endAt[i] = -1;
-			nextConflict[i] = -1;
-		}
-		b.p = welded;
-		b.n = keptCount;
-		b.nextConflict = nextConflict;
-		b.startAt = startAt;
-		b.endAt = endAt;
-		b.tol = HULL_BUILD_REL * extent;
-		result = keptCount < 4 ? CD_ERROR_DEGENERATE : RunQuickhull(&b, HULL_WELD_REL * extent);
-	}
-	if (result == CD_OK)
-	{
-		size_t total = (size_t)b.faceCount;
-		m.group = (int*)AllocArray(total, sizeof(int));
-		m.loopNext = (int*)AllocArray(3 * total, sizeof(int));
-		m.groupStart = (int*)AllocArray(total, sizeof(int));
-		m.vertexFaces = (int*)AllocArray((size_t)b.n, sizeof(int));
-		if (m.group == NULL || m.loopNext == NULL || m.groupStart == NULL || m.vertexFaces == NULL)
-		{
-			result = CD_ERROR_OUT_OF_MEMORY;
-		}
+		CompactTriangles(b, m);
 	}
 	/* Greedy merging can leave a face notched by a nearly coplanar neighbour when points sit
 	 * right at the merge tolerance. Such a merge is retried with smaller tolerances, and at last
@@ -1132,19 +1260,17 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 	for (int attempt = 0; attempt < 4 && result == CD_OK; ++attempt)
 	{
 		double mergeTolerance = HULL_MERGE_REL * extent * mergeScales[attempt];
-		mergeTolerance = mergeScales[attempt] < 0.0 ? -1.0 : cdMaxDouble(mergeTolerance, 4.0 * b.tol);
-		result = MergeTriangles(&b, mergeTolerance, &m);
+		mergeTolerance = mergeScales[attempt] < 0.0 ? -1.0 : cdMaxDouble(mergeTolerance, 4.0 * b->tol);
+		MergeTriangles(b, mergeTolerance, m);
+		result = LinkBoundaries(b, m, b->startAt);
 		if (result == CD_OK)
 		{
-			result = LinkBoundaries(&b, &m, startAt);
+			result = BuildHull(b, m, points, s.kept, cdMaxDouble(mergeTolerance, 4.0 * b->tol), hull);
 		}
 		if (result == CD_OK)
 		{
-			result = BuildHull(&b, &m, points, kept, cdMaxDouble(mergeTolerance, 4.0 * b.tol), hull);
-		}
-		if (result == CD_OK)
-		{
-			cdResult valid = ValidateHull(*hull, false);
+			/* The arena's per-vertex scratch is free by now. */
+			cdResult valid = CheckBuiltHull(*hull, m->vertexMap);
 			if (valid != CD_OK)
 			{
 				/* Never hand out a broken hull. */
@@ -1159,25 +1285,7 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		}
 		result = CD_OK;
 	}
-
-	cdFree(m.group);
-	cdFree(m.loopNext);
-	cdFree(m.groupStart);
-	cdFree(m.vertexFaces);
-	cdFree(b.faces);
-	cdFree(b.stack);
-	cdFree(b.visibleFaces);
-	cdFree(b.horizonFace);
-	cdFree(b.horizonEdge);
-	cdFree(b.newFaces);
-	cdFree(shifted);
-	cdFree(welded);
-	cdFree(sorted);
-	cdFree(removed);
-	cdFree(kept);
-	cdFree(nextConflict);
-	cdFree(startAt);
-	cdFree(endAt);
+	cdFree(arena.base);
 	return result;
 }
 
@@ -1198,14 +1306,118 @@ cdReal cd3GetHullTolerance(const cd3Hull* hull)
 	return (cdReal)(HULL_VALID_REL * extent + 16.0 * (double)CD_REAL_EPSILON * magnitude);
 }
 
+/* Unit normal; planar and convex: vertices on the plane, each corner turning counter-clockwise
+ * about the outward normal (this also rejects inward normals). */
+static cdResult CheckFace(const cd3Hull* hull, int face, cdReal tolerance)
+{
+	cd3Plane plane = hull->planes[face];
+	if (cdAbs(cd3Length(plane.normal) - CD_R(1.0)) > CD_R(64.0) * CD_REAL_EPSILON)
+	{
+		return CD_ERROR_NOT_NORMALIZED;
+	}
+	int start = hull->faceEdges[face], h = start;
+	do
+	{
+		const cd3HullHalfEdge* edge = &hull->edges[h];
+		cd3Vec p0 = hull->vertices[edge->origin];
+		cd3Vec p1 = hull->vertices[hull->edges[edge->next].origin];
+		cd3Vec p2 = hull->vertices[hull->edges[hull->edges[edge->next].next].origin];
+		if (cdAbs(cd3Dot(plane.normal, p0) - plane.offset) > tolerance)
+		{
+			return CD_ERROR_DEGENERATE;
+		}
+		/* The corner at p1 bends away from the face's interior by less than the tolerance:
+		 * p2 lies on the inner side of the line p0-p1 within the plane. */
+		cd3Vec inward = cd3Normalize(cd3Cross(plane.normal, cd3Sub(p1, p0)));
+		if (cd3Dot(inward, cd3Sub(p2, p0)) < -tolerance)
+		{
+			return CD_ERROR_DEGENERATE;
+		}
+		h = edge->next;
+	} while (h != start);
+	return CD_OK;
+}
+
+/* The vertices of the faces around `face` lie below its plane: on a closed manifold whose every
+ * face passes, that makes the hull convex up to round-off. */
+static bool NeighboursBelow(const cd3Hull* hull, int face, cdReal tolerance)
+{
+	cd3Plane plane = hull->planes[face];
+	int start = hull->faceEdges[face], h = start;
+	do
+	{
+		int t = hull->edges[h].twin, k = t;
+		do
+		{
+			if (cd3Dot(plane.normal, hull->vertices[hull->edges[k].origin]) - plane.offset > tolerance)
+			{
+				return false;
+			}
+			k = hull->edges[k].next;
+		} while (k != t);
+		h = hull->edges[h].next;
+	} while (h != start);
+	return true;
+}
+
+/* Outward: the centre of volume lies strictly below every face. */
+static cdResult CheckOutward(const cd3Hull* hull)
+{
+	if (!(hull->volume > CD_R(0.0)))
+	{
+		return CD_ERROR_DEGENERATE;
+	}
+	for (int i = 0; i < hull->faceCount; ++i)
+	{
+		if (cd3Dot(hull->planes[i].normal, hull->centroid) - hull->planes[i].offset >= CD_R(0.0))
+		{
+			return CD_ERROR_DEGENERATE;
+		}
+	}
+	return CD_OK;
+}
+
+/* The check of a hull just built: the local geometry of every face (merging can notch a face, and
+ * a bare sliver triangle's plane is noise). Its topology holds by construction: every merged
+ * face is a disc with one simple boundary loop, so the faces, twins and fans form a sphere (the
+ * full validation confirms it in debug builds). */
+static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
+{
+	cdReal tolerance = cd3GetHullTolerance(hull);
+	for (int i = 0; i < hull->faceCount; ++i)
+	{
+		cdResult result = CheckFace(hull, i, tolerance);
+		if (result != CD_OK)
+		{
+			return result;
+		}
+		if (!NeighboursBelow(hull, i, tolerance))
+		{
+			return CD_ERROR_DEGENERATE;
+		}
+	}
+	cdResult result = CheckOutward(hull);
+#if !defined(NDEBUG) || defined(CD_ENABLE_ASSERT)
+	if (result == CD_OK)
+	{
+		result = ValidateHull(hull, false, vertexScratch);
+		CD_ASSERT(result == CD_OK);
+	}
+#else
+	(void)vertexScratch;
+#endif
+	return result;
+}
+
 static bool ValidIndex(int32_t index, int count)
 {
 	return index >= 0 && index < count;
 }
 
 /* `global`: every vertex against every plane (O(V F)); otherwise only the vertices of each face's
- * neighbours, which on a closed manifold with convex edges implies the same up to round-off. */
-static cdResult ValidateHull(const cd3Hull* hull, bool global)
+ * neighbours, which on a closed manifold with convex edges implies the same up to round-off.
+ * `vertexScratch`: room for one int per vertex, or NULL to allocate it. */
+static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratch)
 {
 	if (hull == NULL || hull->vertices == NULL || hull->edges == NULL || hull->faceEdges == NULL ||
 		hull->planes == NULL || hull->vertexCount < 4 || hull->faceCount < 4 || hull->edgeCount < 12 ||
@@ -1275,7 +1487,7 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global)
 		return CD_ERROR_INVALID_ARGUMENT;
 	}
 	/* Every vertex is used, and the half-edges around each vertex form one fan (a manifold). */
-	int* fan = (int*)AllocArray((size_t)v, sizeof(int));
+	int* fan = vertexScratch != NULL ? vertexScratch : (int*)AllocArray((size_t)v, sizeof(int));
 	if (fan == NULL)
 	{
 		return CD_ERROR_OUT_OF_MEMORY;
@@ -1288,23 +1500,35 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global)
 	{
 		++fan[hull->edges[i].origin];
 	}
+	/* Around the origin: twin(h) ends at the origin, next(twin(h)) leaves it again. That step
+	 * permutes the half-edges leaving a vertex (next and twin are permutations), so they form one
+	 * fan exactly when the orbit of any one of them holds all of them. A walked vertex's count
+	 * turns negative. */
 	bool manifold = true;
 	for (int i = 0; i < e && manifold; ++i)
 	{
-		/* Around the origin: twin(h) ends at origin, next(twin(h)) leaves it again. */
+		int origin = hull->edges[i].origin;
+		if (fan[origin] <= 0)
+		{
+			continue;
+		}
 		int steps = 0, h = i;
 		do
 		{
 			h = hull->edges[hull->edges[h].twin].next;
 			++steps;
 		} while (h != i && steps <= e);
-		manifold = h == i && steps == fan[hull->edges[i].origin];
+		manifold = h == i && steps == fan[origin] && steps >= 3;
+		fan[origin] = -steps;
 	}
 	for (int i = 0; i < v && manifold; ++i)
 	{
-		manifold = fan[i] >= 3;
+		manifold = fan[i] < 0; /* every vertex used */
 	}
-	cdFree(fan);
+	if (vertexScratch == NULL)
+	{
+		cdFree(fan);
+	}
 	if (!manifold)
 	{
 		return CD_ERROR_INVALID_ARGUMENT;
@@ -1313,35 +1537,14 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global)
 	cdReal tolerance = cd3GetHullTolerance(hull);
 	for (int i = 0; i < f; ++i)
 	{
-		cd3Plane plane = hull->planes[i];
-		if (cdAbs(cd3Length(plane.normal) - CD_R(1.0)) > CD_R(64.0) * CD_REAL_EPSILON)
+		cdResult result = CheckFace(hull, i, tolerance);
+		if (result != CD_OK)
 		{
-			return CD_ERROR_NOT_NORMALIZED;
+			return result;
 		}
-		/* Planar and convex: vertices on the plane, each corner turning counter-clockwise about
-		 * the outward normal (this also rejects inward normals). */
-		int start = hull->faceEdges[i], h = start;
-		do
-		{
-			const cd3HullHalfEdge* edge = &hull->edges[h];
-			cd3Vec p0 = hull->vertices[edge->origin];
-			cd3Vec p1 = hull->vertices[hull->edges[edge->next].origin];
-			cd3Vec p2 = hull->vertices[hull->edges[hull->edges[edge->next].next].origin];
-			if (cdAbs(cd3Dot(plane.normal, p0) - plane.offset) > tolerance)
-			{
-				return CD_ERROR_DEGENERATE;
-			}
-			/* The corner at p1 bends away from the face's interior by less than the tolerance:
-			 * p2 lies on the inner side of the line p0-p1 within the plane. */
-			cd3Vec inward = cd3Normalize(cd3Cross(plane.normal, cd3Sub(p1, p0)));
-			if (cd3Dot(inward, cd3Sub(p2, p0)) < -tolerance)
-			{
-				return CD_ERROR_DEGENERATE;
-			}
-			h = edge->next;
-		} while (h != start);
 		if (global)
 		{
+			cd3Plane plane = hull->planes[i];
 			for (int k = 0; k < v; ++k)
 			{
 				if (cd3Dot(plane.normal, hull->vertices[k]) - plane.offset > tolerance)
@@ -1349,41 +1552,18 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global)
 					return CD_ERROR_DEGENERATE;
 				}
 			}
-			continue;
 		}
-		h = start;
-		do
-		{
-			int t = hull->edges[h].twin, k = t;
-			do
-			{
-				if (cd3Dot(plane.normal, hull->vertices[hull->edges[k].origin]) - plane.offset > tolerance)
-				{
-					return CD_ERROR_DEGENERATE;
-				}
-				k = hull->edges[k].next;
-			} while (k != t);
-			h = hull->edges[h].next;
-		} while (h != start);
-	}
-	/* Outward: the centre of volume lies strictly below every face. */
-	if (!(hull->volume > CD_R(0.0)))
-	{
-		return CD_ERROR_DEGENERATE;
-	}
-	for (int i = 0; i < f; ++i)
-	{
-		if (cd3Dot(hull->planes[i].normal, hull->centroid) - hull->planes[i].offset >= CD_R(0.0))
+		else if (!NeighboursBelow(hull, i, tolerance))
 		{
 			return CD_ERROR_DEGENERATE;
 		}
 	}
-	return CD_OK;
+	return CheckOutward(hull);
 }
 
 cdResult cd3ValidateHull(const cd3Hull* hull)
 {
-	return ValidateHull(hull, true);
+	return ValidateHull(hull, true, NULL);
 }
 
 /* ---- convenience builders ----------------------------------------------------------------------- */
