@@ -10,19 +10,20 @@
 // the very edges that touch each box, without any search.
 // Boxes (1 x 1, slightly rotated) rest on the terrain sunk by up to 0.02; contacts are reported up
 // to 2 * b2_polygonRadius apart (collide: that speculative distance). Each figure is the median of
-// 9 runs of about 20 ms (3 with --quick), collide's and Box2D's runs alternating.
-// Usage: collide_bench_chain2 [--quick]
+// 9 runs of about 20 ms of thread CPU time (3 with --quick), collide's and Box2D's runs alternating.
+// Usage: collide_bench_chain2 [--quick | --profile <chain|edge|ray>-<collide|box2d> | --profile none]
 #include <box2d/box2d.h>
 
 #include "collide/chain2.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace
@@ -144,10 +145,18 @@ bool CountSegment(int, void* context)
 	return true;
 }
 
+// CPU time of this thread: on a machine shared with other jobs, the time the thread was not
+// running does not count (wall-clock figures there were 2-4 times too high and erratic).
+double ThreadSeconds()
+{
+	timespec t;
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 template <typename F> double TimeOnce(int count, F f, int reps)
 {
-	using Clock = std::chrono::steady_clock;
-	auto start = Clock::now();
+	double start = ThreadSeconds();
 	int64_t sum = 0;
 	for (int r = 0; r < reps; ++r)
 	{
@@ -156,7 +165,7 @@ template <typename F> double TimeOnce(int count, F f, int reps)
 			sum += f(i);
 		}
 	}
-	double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+	double elapsed = ThreadSeconds() - start;
 	g_sink += sum;
 	return elapsed * 1e9 / ((double)reps * (double)count);
 }
@@ -247,6 +256,7 @@ struct RayQuery
 int main(int argc, char** argv)
 {
 	bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+	const char* profile = argc > 2 && std::strcmp(argv[1], "--profile") == 0 ? argv[2] : nullptr;
 	int runs = quick ? 3 : 9;
 	double seconds = quick ? 0.002 : 0.02;
 	const cdReal speculative = (cdReal)(2.0 * b2_polygonRadius);
@@ -294,77 +304,90 @@ int main(int argc, char** argv)
 		box2dPoints += query.points;
 	}
 
-	std::printf("collide_bench_chain2 (%s, cdReal = %s): ns per call, median of %d runs\n",
+	std::printf("collide_bench_chain2 (%s, cdReal = %s): ns of thread CPU time per call, median of %d runs\n",
 				quick ? "quick" : "full", sizeof(cdReal) == sizeof(double) ? "double" : "float", runs);
 	std::printf(
 		"terrain: %d segments; %d boxes touch %zu edges (%.2f candidate edges per box), %d contact points "
 		"(box2d: %d); box2d tree height %d\n",
 		cd2GetChainSegmentCount(scene.chain), kBoxes, scene.pairEdge.size(), (double)candidates / kBoxes,
 		collidePoints, box2dPoints, scene.tree.GetHeight());
+	auto collideChain = [&](int i) {
+		cd2Manifold manifolds[16];
+		return cd2CollideChain(scene.chain, identity, &scene.boxes[(size_t)i], speculative, manifolds, 16,
+							   nullptr);
+	};
+	auto box2dChain = [&](int i) {
+		EdgeQuery query = {&scene.b2chain,
+						   &scene.tree,
+						   &scene.b2boxes[(size_t)i],
+						   scene.b2boxTransforms[(size_t)i],
+						   b2identity,
+						   0};
+		b2AABB box;
+		scene.b2boxes[(size_t)i].ComputeAABB(&box, scene.b2boxTransforms[(size_t)i], 0);
+		scene.tree.Query(&query, box);
+		return query.points;
+	};
+	auto collideEdge = [&](int k) {
+		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		return cd2CollideChainSegmentPolygon(&segment, &scene.boxPolygons[(size_t)scene.pairBox[(size_t)k]],
+											 speculative)
+			.pointCount;
+	};
+	auto box2dEdge = [&](int k) {
+		b2EdgeShape edge;
+		scene.b2chain.GetChildEdge(&edge, scene.pairEdge[(size_t)k]);
+		b2Manifold manifold;
+		size_t box = (size_t)scene.pairBox[(size_t)k];
+		b2CollideEdgeAndPolygon(&manifold, &edge, b2identity, &scene.b2boxes[box],
+								scene.b2boxTransforms[box]);
+		return manifold.pointCount;
+	};
+	auto collideRay = [&](int i) {
+		cd2RayHit hit;
+		return (int)cd2RaycastChain(scene.chain, identity, scene.rays[(size_t)i], &hit, nullptr);
+	};
+	auto box2dRay = [&](int i) {
+		RayQuery query = {&scene.b2chain, &scene.tree, b2identity, -1.0f};
+		scene.tree.RayCast(&query, scene.b2rays[(size_t)i]);
+		return (int)(query.best >= 0.0f);
+	};
+	int pairs = (int)scene.pairEdge.size();
+
+	// --profile <case>: run one function a fixed number of times and nothing else (for perf).
+	if (profile != nullptr)
+	{
+		const int reps = 2000;
+		std::string which = profile;
+		double ns = 0.0;
+		if (which == "chain-collide")
+			ns = TimeOnce(kBoxes, collideChain, reps);
+		else if (which == "chain-box2d")
+			ns = TimeOnce(kBoxes, box2dChain, reps);
+		else if (which == "edge-collide")
+			ns = TimeOnce(pairs, collideEdge, reps);
+		else if (which == "edge-box2d")
+			ns = TimeOnce(pairs, box2dEdge, reps);
+		else if (which == "ray-collide")
+			ns = TimeOnce(kRays, collideRay, reps);
+		else if (which == "ray-box2d")
+			ns = TimeOnce(kRays, box2dRay, reps);
+		std::printf("profile %s: %.1f ns per call (thread CPU time)\n", profile, ns);
+		cd2DestroyChain(scene.chain);
+		return 0;
+	}
+
 	std::printf("%-52s %10s %10s %8s\n", "case", "collide", "box2d 2.4", "ratio");
 	auto row = [&](const char* name, Figures f) {
 		std::printf("%-52s %10.1f %10.1f %8.2f\n", name, f.mine, f.theirs, f.mine / f.theirs);
 	};
-
 	// Whole chain: search + one manifold per touching edge.
 	row("box vs 10k-segment chain (search + manifolds)",
-		Compare(
-			kBoxes,
-			[&](int i) {
-				cd2Manifold manifolds[16];
-				return cd2CollideChain(scene.chain, identity, &scene.boxes[(size_t)i], speculative, manifolds,
-									   16, nullptr);
-			},
-			[&](int i) {
-				EdgeQuery query = {&scene.b2chain,
-								   &scene.tree,
-								   &scene.b2boxes[(size_t)i],
-								   scene.b2boxTransforms[(size_t)i],
-								   b2identity,
-								   0};
-				b2AABB box;
-				scene.b2boxes[(size_t)i].ComputeAABB(&box, scene.b2boxTransforms[(size_t)i], 0);
-				scene.tree.Query(&query, box);
-				return query.points;
-			},
-			runs, seconds));
-
+		Compare(kBoxes, collideChain, box2dChain, runs, seconds));
 	// One manifold on the same child edge.
-	int pairs = (int)scene.pairEdge.size();
-	row("box vs one chain edge (same edges)",
-		Compare(
-			pairs,
-			[&](int k) {
-				cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
-				return cd2CollideChainSegmentPolygon(
-						   &segment, &scene.boxPolygons[(size_t)scene.pairBox[(size_t)k]], speculative)
-					.pointCount;
-			},
-			[&](int k) {
-				b2EdgeShape edge;
-				scene.b2chain.GetChildEdge(&edge, scene.pairEdge[(size_t)k]);
-				b2Manifold manifold;
-				size_t box = (size_t)scene.pairBox[(size_t)k];
-				b2CollideEdgeAndPolygon(&manifold, &edge, b2identity, &scene.b2boxes[box],
-										scene.b2boxTransforms[box]);
-				return manifold.pointCount;
-			},
-			runs, seconds));
-
+	row("box vs one chain edge (same edges)", Compare(pairs, collideEdge, box2dEdge, runs, seconds));
 	// Ray casts: closest hit on the whole chain.
-	row("ray cast vs 10k-segment chain",
-		Compare(
-			kRays,
-			[&](int i) {
-				cd2RayHit hit;
-				return (int)cd2RaycastChain(scene.chain, identity, scene.rays[(size_t)i], &hit, nullptr);
-			},
-			[&](int i) {
-				RayQuery query = {&scene.b2chain, &scene.tree, b2identity, -1.0f};
-				scene.tree.RayCast(&query, scene.b2rays[(size_t)i]);
-				return (int)(query.best >= 0.0f);
-			},
-			runs, seconds));
+	row("ray cast vs 10k-segment chain", Compare(kRays, collideRay, box2dRay, runs, seconds));
 
 	// Scaling of the whole-chain query with the chain's length (collide only).
 	std::printf("\nscaling (collide only): box vs chain, ns per call\n");

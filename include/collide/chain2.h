@@ -13,7 +13,7 @@
  * The open ends of a chain have ghosts that extend the end segments straight on, so nothing
  * pokes out past an open end.
  *
- * The chain keeps a static bounding-volume hierarchy over its segments (a binary tree over runs
+ * The chain keeps a static bounding-volume hierarchy over its segments (a 4-ary tree over runs
  * of consecutive segments: a polyline's neighbours are close in space), so queries on chains of
  * many thousands of segments visit O(log n + k) nodes for the k segments they touch.
  *

@@ -1,10 +1,10 @@
 /* collide: 2D chain builder and validator.
  *
- * The bounding hierarchy is a complete binary tree over the segments in chain order, stored
- * level by level (no child pointers: the children of box i at level k + 1 are boxes 2i and
- * 2i + 1 at level k). A polyline's consecutive segments are neighbours in space, so boxes over
- * runs of them stay tight for terrain; the layout costs two boxes per segment and builds in
- * O(n) without sorting. */
+ * The bounding hierarchy is a complete 4-ary tree over the segments in chain order, stored level
+ * by level (no child pointers: the children of box i at level k + 1 are boxes 4i to 4i + 3 at
+ * level k). A polyline's consecutive segments are neighbours in space, so boxes over runs of them
+ * stay tight for terrain; the layout costs 4/3 of a box per segment and builds in O(n) without
+ * sorting. */
 #include "chain2_internal.h"
 
 #include <string.h>
@@ -34,13 +34,15 @@ static void BuildHierarchy(cd2Chain* chain)
 			break;
 		}
 		int parentOffset = offset + size;
-		int parentSize = (size + 1) / 2;
+		int parentSize = (size + CHAIN_BRANCH - 1) / CHAIN_BRANCH;
 		for (int i = 0; i < parentSize; ++i)
 		{
-			cd2Aabb box = chain->bounds[offset + 2 * i];
-			if (2 * i + 1 < size)
+			int first = CHAIN_BRANCH * i;
+			int last = first + CHAIN_BRANCH < size ? first + CHAIN_BRANCH : size;
+			cd2Aabb box = chain->bounds[offset + first];
+			for (int k = first + 1; k < last; ++k)
 			{
-				box = cd2AabbUnion(box, chain->bounds[offset + 2 * i + 1]);
+				box = cd2AabbUnion(box, chain->bounds[offset + k]);
 			}
 			chain->bounds[parentOffset + i] = box;
 		}
@@ -49,11 +51,11 @@ static void BuildHierarchy(cd2Chain* chain)
 	}
 }
 
-/* Boxes in a hierarchy over n leaves: n + ceil(n/2) + ... + 1 < 2n + levels. */
+/* Boxes in a hierarchy over n leaves: n + ceil(n/4) + ... + 1 < 4n/3 + levels. */
 static int HierarchySize(int leaves)
 {
 	int total = 0;
-	for (int size = leaves;; size = (size + 1) / 2)
+	for (int size = leaves;; size = (size + CHAIN_BRANCH - 1) / CHAIN_BRANCH)
 	{
 		total += size;
 		if (size == 1)
@@ -206,13 +208,14 @@ cdResult cd2ValidateChain(const cd2Chain* chain)
 	for (int level = 1; level < chain->levelCount; ++level)
 	{
 		int below = chain->levelOffset[level - 1], size = chain->levelSize[level - 1];
-		if (chain->levelSize[level] != (size + 1) / 2)
+		if (chain->levelSize[level] != (size + CHAIN_BRANCH - 1) / CHAIN_BRANCH)
 		{
 			return CD_ERROR_INVALID_ARGUMENT;
 		}
 		for (int i = 0; i < size; ++i)
 		{
-			if (!cd2AabbContains(chain->bounds[chain->levelOffset[level] + i / 2], chain->bounds[below + i]))
+			if (!cd2AabbContains(chain->bounds[chain->levelOffset[level] + i / CHAIN_BRANCH],
+								 chain->bounds[below + i]))
 			{
 				return CD_ERROR_INVALID_ARGUMENT;
 			}

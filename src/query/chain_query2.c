@@ -5,12 +5,14 @@
  * come out in increasing segment order, and results go back to world space. */
 #include "../geometry/chain2_internal.h"
 
-/* Two stack entries per level are enough for a depth-first walk that pushes both children. */
-#define STACK_SIZE (2 * CHAIN_MAX_LEVELS)
+/* A depth-first walk pushes at most CHAIN_BRANCH - 1 siblings per level besides the one it
+ * descends into. */
+#define STACK_SIZE (CHAIN_BRANCH * CHAIN_MAX_LEVELS)
 
 typedef struct Node
 {
 	int level, index;
+	cdReal entry; /* ray casts: the fraction where the ray enters the node's box */
 } Node;
 
 static bool BoxesOverlap(cd2Aabb a, cd2Aabb b)
@@ -29,33 +31,50 @@ static cd2Aabb LocalBounds(cd2Transform t, cd2Aabb bounds)
 	return local;
 }
 
-/* Visits the segments whose boxes overlap `box` in increasing order until fcn returns false. */
+/* Visits the segments whose boxes overlap `box` in increasing order until fcn returns false.
+ * Children are tested together (their boxes share a cache line) and only overlapping ones are
+ * pushed, last child first so that the walk visits them in order. */
 static void Query(const cd2Chain* chain, cd2Aabb box, cd2ChainQueryFcn* fcn, void* context)
 {
+	int rootLevel = chain->levelCount - 1;
+	if (!BoxesOverlap(chain->bounds[chain->levelOffset[rootLevel]], box))
+	{
+		return;
+	}
+	if (rootLevel == 0)
+	{
+		fcn(0, context);
+		return;
+	}
 	Node stack[STACK_SIZE];
 	int top = 0;
-	stack[top++] = (Node){chain->levelCount - 1, 0};
+	stack[top++] = (Node){rootLevel, 0, CD_R(0.0)};
 	while (top > 0)
 	{
 		Node node = stack[--top];
-		if (!BoxesOverlap(chain->bounds[chain->levelOffset[node.level] + node.index], box))
+		int level = node.level - 1;
+		const cd2Aabb* children = chain->bounds + chain->levelOffset[level];
+		int first = CHAIN_BRANCH * node.index;
+		int last =
+			first + CHAIN_BRANCH < chain->levelSize[level] ? first + CHAIN_BRANCH : chain->levelSize[level];
+		if (level == 0)
 		{
-			continue;
-		}
-		if (node.level == 0)
-		{
-			if (!fcn(node.index, context))
+			for (int i = first; i < last; ++i)
 			{
-				return;
+				if (BoxesOverlap(children[i], box) && !fcn(i, context))
+				{
+					return;
+				}
 			}
 			continue;
 		}
-		int child = 2 * node.index;
-		if (child + 1 < chain->levelSize[node.level - 1])
+		for (int i = last - 1; i >= first; --i)
 		{
-			stack[top++] = (Node){node.level - 1, child + 1};
+			if (BoxesOverlap(children[i], box))
+			{
+				stack[top++] = (Node){level, i, CD_R(0.0)};
+			}
 		}
-		stack[top++] = (Node){node.level - 1, child};
 	}
 }
 
@@ -76,7 +95,7 @@ typedef struct LocalRay
 } LocalRay;
 
 /* Slab test of the segment origin + t * d, t in [0, maxFraction], against a closed box. */
-static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction)
+static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction, cdReal* entry)
 {
 	cdReal lower = CD_R(0.0), upper = maxFraction;
 	const cdReal o[2] = {ray->origin.x, ray->origin.y}, v[2] = {ray->d.x, ray->d.y};
@@ -101,6 +120,7 @@ static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction)
 			return false;
 		}
 	}
+	*entry = lower;
 	return true;
 }
 
@@ -133,6 +153,22 @@ static bool RaycastSegment(cd2Vec p1, cd2Vec p2, cd2Vec origin, cd2Vec d, cdReal
 	return true;
 }
 
+/* Keeps segment `index`'s hit when it is nearer than the best so far (the lower index on a tie). */
+static void TestSegment(const cd2Chain* chain, const LocalRay* ray, int index, cdReal* best, int* bestIndex,
+						cd2Vec* bestNormal)
+{
+	cdReal fraction;
+	cd2Vec normal;
+	if (RaycastSegment(chain->points[index], cd2ChainPoint(chain, index + 1), ray->origin, ray->d, *best,
+					   &fraction, &normal) &&
+		(*bestIndex < 0 || fraction < *best || (fraction == *best && index < *bestIndex)))
+	{
+		*best = fraction;
+		*bestIndex = index;
+		*bestNormal = normal;
+	}
+}
+
 bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray ray, cd2RayHit* hit,
 					 int* segmentIndex)
 {
@@ -146,45 +182,62 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 	int bestIndex = -1;
 	cd2Vec bestNormal = CD2_VEC_ZERO;
 
+	int rootLevel = chain->levelCount - 1;
 	Node stack[STACK_SIZE];
 	int top = 0;
-	stack[top++] = (Node){chain->levelCount - 1, 0};
+	cdReal rootEntry;
+	if (RayHitsBox(chain->bounds[chain->levelOffset[rootLevel]], &local, best, &rootEntry))
+	{
+		stack[top++] = (Node){rootLevel, 0, rootEntry};
+	}
 	while (top > 0)
 	{
 		Node node = stack[--top];
+		if (node.entry > best)
+		{
+			continue; /* a nearer hit came after this node was pushed */
+		}
 		if (node.level == 0)
 		{
-			/* The segment test costs no more than its box's: no box test here. */
-			cdReal fraction;
-			cd2Vec normal;
-			if (RaycastSegment(chain->points[node.index], cd2ChainPoint(chain, node.index + 1), local.origin,
-							   local.d, best, &fraction, &normal) &&
-				(bestIndex < 0 || fraction < best || (fraction == best && node.index < bestIndex)))
+			/* Only a one-segment chain gets here: its root is the segment's box. */
+			TestSegment(chain, &local, node.index, &best, &bestIndex, &bestNormal);
+			continue;
+		}
+		int level = node.level - 1;
+		const cd2Aabb* children = chain->bounds + chain->levelOffset[level];
+		int first = CHAIN_BRANCH * node.index;
+		int last =
+			first + CHAIN_BRANCH < chain->levelSize[level] ? first + CHAIN_BRANCH : chain->levelSize[level];
+		if (level == 0)
+		{
+			/* A segment test costs no more than its box's: no box test here. */
+			for (int i = first; i < last; ++i)
 			{
-				best = fraction;
-				bestIndex = node.index;
-				bestNormal = normal;
+				TestSegment(chain, &local, i, &best, &bestIndex, &bestNormal);
 			}
 			continue;
 		}
-		if (!RayHitsBox(chain->bounds[chain->levelOffset[node.level] + node.index], &local, best))
+		/* The children the ray enters, pushed farthest first: the nearest is walked first and its
+		 * hit shortens the ray for the others. */
+		Node hits[CHAIN_BRANCH];
+		int count = 0;
+		for (int i = first; i < last; ++i)
 		{
-			continue;
+			cdReal entry;
+			if (RayHitsBox(children[i], &local, best, &entry))
+			{
+				int k = count++;
+				while (k > 0 && hits[k - 1].entry < entry)
+				{
+					hits[k] = hits[k - 1];
+					--k;
+				}
+				hits[k] = (Node){level, i, entry};
+			}
 		}
-		/* The child nearer the origin along the ray first: its hit shortens the ray for the other. */
-		int child = 2 * node.index;
-		const cd2Aabb* below = chain->bounds + chain->levelOffset[node.level - 1];
-		if (child + 1 < chain->levelSize[node.level - 1])
+		for (int k = 0; k < count; ++k)
 		{
-			cdReal first = cd2Dot(cd2Sub(cd2AabbCenter(below[child]), local.origin), local.d);
-			cdReal second = cd2Dot(cd2Sub(cd2AabbCenter(below[child + 1]), local.origin), local.d);
-			int nearer = second < first ? child + 1 : child;
-			stack[top++] = (Node){node.level - 1, nearer == child ? child + 1 : child};
-			stack[top++] = (Node){node.level - 1, nearer};
-		}
-		else
-		{
-			stack[top++] = (Node){node.level - 1, child};
+			stack[top++] = hits[k];
 		}
 	}
 	if (bestIndex < 0)
