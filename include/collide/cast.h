@@ -3,11 +3,13 @@
  * impact".
  *
  * Shape cast: shape A moves by a translation against a static shape B, both tagged shapes in
- * world space. Conservative advancement on the GJK distance (van den Bergen's ray cast of the
- * origin against the Minkowski difference, with GJK restarted at each step): A advances along
- * the translation by the distance over the approach speed until the shapes are within the cast
- * tolerance, so no earlier fraction overlaps. Radii (circles, capsules, rounded polygons) are
- * exact: the distance includes them.
+ * world space. van den Bergen's GJK ray cast of the origin against the Minkowski difference of
+ * the cores grown by the radii: one GJK simplex lives through the whole cast, and a support plane
+ * that separates the shapes moves A along the translation until that plane is half a tolerance
+ * short of contact, so no earlier fraction overlaps. It stops when the shapes are within the cast
+ * tolerance. Radii (circles, capsules, rounded polygons) are exact. Half-spaces, and the rare
+ * case where round-off stalls the ray cast, go on by conservative advancement on the GJK
+ * distance from the contact-free fraction reached. See docs/CASTS.md.
  *
  * Time of impact: both shapes move rigidly over the step (a sweep: linear motion of the centre,
  * rotation at constant angular speed about it). Conservative advancement (Mirtich): each step
@@ -16,7 +18,8 @@
  * sweep centre. It never steps past a time where the distance falls below the target. The
  * bounding circles (spheres) about the sweep centres skip the far part of the step, and between
  * GJK calls a few cheap steps advance on the separation along the last closest-point axis (a
- * lower bound on the distance): both keep the guarantee. */
+ * lower bound on the distance): both keep the guarantee. Each GJK call is warm-started from the
+ * previous one's simplex (cd2SimplexCache / cd3SimplexCache). */
 #ifndef COLLIDE_CAST_H
 #define COLLIDE_CAST_H
 
@@ -27,7 +30,8 @@
 extern "C" {
 #endif
 
-/* Most GJK distance evaluations of a shape cast and of a time of impact. */
+/* Most GJK iterations of a shape cast's ray cast (and as many distance evaluations of the
+ * advancement after it), and most GJK distance evaluations of a time of impact. */
 #define CD_CAST_MAX_ITERATIONS 64
 #define CD_TOI_MAX_ITERATIONS 64
 
@@ -50,7 +54,8 @@ typedef struct cd2CastOutput
 	cdReal fraction;
 	cd2Vec point;
 	cd2Vec normal;
-	int iterations; /* GJK distance evaluations */
+	int iterations; /* GJK iterations of the ray cast (plus distance evaluations of the advancement
+					   when it takes over) */
 } cd2CastOutput;
 
 typedef struct cd3CastOutput
