@@ -764,6 +764,25 @@ static void TestRaycast(void)
 	cd2Ray fromSurface = {V(-1, 0), V(0.5, -1)}; /* starts on the floor, moving into it */
 	TEST_CHECK(cd2RaycastChain(chain, MakeTransform(0, 0, 0), fromSurface, &hit, &index));
 	TEST_CHECK(index == 1 && hit.fraction == CD_R(0.0) && hit.point.x == CD_R(-1.0));
+	/* A one-segment chain: its root is the segment's own box. */
+	cd2Vec single[2] = {V(1, 0), V(-1, 0)};
+	cd2Chain* one = MakeChain(single, 2, false);
+	if (one != NULL)
+	{
+		TEST_CHECK(cd2GetChainSegmentCount(one) == 1);
+		TEST_CHECK(cd2RaycastChain(one, MakeTransform(0, 0, 0), down, &hit, &index) && index == 0);
+		cd2Ray miss = {V(1.5, 1), V(0, -2)};
+		TEST_CHECK(!cd2RaycastChain(one, MakeTransform(0, 0, 0), miss, &hit, NULL));
+		cd2Circle ball = {V(0.2, 0.25), CD_R(0.3)};
+		cd2Shape shape = cd2MakeCircleShape(ball);
+		cd2Manifold m;
+		TEST_CHECK(cd2CollideChain(one, MakeTransform(0, 0, 0), &shape, CD_R(0.0), &m, 1, &index) == 1 &&
+				   index == 0);
+		ball.center = V(3, 0.25);
+		shape = cd2MakeCircleShape(ball);
+		TEST_CHECK(cd2CollideChain(one, MakeTransform(0, 0, 0), &shape, CD_R(0.0), &m, 1, NULL) == 0);
+		cd2DestroyChain(one);
+	}
 	cd2Ray zero = {V(0, 1), V(0, 0)};
 	TEST_CHECK(!cd2RaycastChain(chain, MakeTransform(0, 0, 0), zero, &hit, NULL));
 	cd2DestroyChain(chain);
