@@ -39,119 +39,130 @@ static inline cdReal cd3AbsNoBranch(cdReal a)
 	return cdMax(a, -a);
 }
 
+/* The best edge axis so far of the box SAT. */
+typedef struct cd3BoxEdgeBest
+{
+	cdReal separation;
+	cd3Vec axis;
+	int i, j;
+} cd3BoxEdgeBest;
+
+/* Edge axis A_i x B_j in A's frame: (0, -r[2][j], r[1][j]) for i = 0 and its cyclic shifts (ri1j
+ * and ri2j: the matrix entries of B's axis j on A's axes i+1 and i+2), so the projections are sums
+ * of the matrix entries: radiusA and radiusB are the boxes' and centre the centres' projections,
+ * all times the axis length. */
+static inline void cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j, cdReal ri1j, cdReal ri2j, cdReal radiusA,
+								  cdReal radiusB, cdReal centre, cdReal faceBest)
+{
+	cdReal length2 = ri1j * ri1j + ri2j * ri2j;
+	if (!(length2 > CD3_BOX_PARALLEL_SINE * CD3_BOX_PARALLEL_SINE))
+	{
+		return;
+	}
+	cdReal gap = cd3AbsNoBranch(centre) - radiusA - radiusB; /* separation * sqrt(length2) */
+	/* An edge axis matters only when it beats every axis so far: decided on squares, so that
+	 * only the winners pay a square root. */
+	cdReal threshold = cdMax(e->separation, faceBest);
+	cdReal bar = threshold * threshold * length2;
+	bool ahead = threshold >= CD_R(0.0), behind = !ahead;
+	bool beats =
+		(ahead & (gap > CD_R(0.0)) & (gap * gap > bar)) | (behind & ((gap >= CD_R(0.0)) | (gap * gap < bar)));
+	if (!beats)
+	{
+		return;
+	}
+	cdReal separation = gap / cdSqrt(length2);
+	if (separation > e->separation)
+	{
+		e->separation = separation;
+		cdReal components[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+		components[(i + 1) % 3] = -ri2j;
+		components[(i + 2) % 3] = ri1j;
+		cd3Vec axis = cd3Normalize(cd3MakeVec(components[0], components[1], components[2]));
+		e->axis = centre < CD_R(0.0) ? cd3Neg(axis) : axis;
+		e->i = i;
+		e->j = j;
+	}
+}
+
 /* cd3SatBoxes writing into *result, inline: the box-box manifold reads the result at once, and
- * a result returned through memory stalls on store forwarding. */
+ * a result returned through memory stalls on store forwarding. The matrix entries are named
+ * scalars, not arrays: arrays filled a float at a time and read back two at a time by the
+ * vectorizer stalled on store forwarding too. */
 static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd3SatResult* result,
 									  cd3Mat33* rotation, cd3Vec* translation)
 {
-	cd3SatResult r;
-	cd3Box a = *boxA, b = *boxB;
-	cd3Quat q = cd3InvMulQuat(a.rotation, b.rotation); /* B's axes in A's frame */
-	cd3Vec t = cd3InvRotateVector(a.rotation, cd3Sub(b.center, a.center));
-	cd3Mat33 matrix = cd3MakeMatFromQuat(q);
-	*rotation = matrix;
+	cd3Quat qa = boxA->rotation;
+	cd3Quat q = cd3InvMulQuat(qa, boxB->rotation); /* B's axes in A's frame */
+	cd3Vec t = cd3InvRotateVector(qa, cd3Sub(boxB->center, boxA->center));
+	cd3Mat33 m = cd3MakeMatFromQuat(q);
+	*rotation = m;
 	*translation = t;
-	cd3Vec axisB[3] = {matrix.cx, matrix.cy, matrix.cz};
-	cdReal ha[3] = {a.halfExtents.x, a.halfExtents.y, a.halfExtents.z};
-	cdReal hb[3] = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
-	/* rot[i][j] = A's axis i . B's axis j */
-	cdReal rot[3][3], absRot[3][3];
-	for (int j = 0; j < 3; ++j)
-	{
-		rot[0][j] = axisB[j].x;
-		rot[1][j] = axisB[j].y;
-		rot[2][j] = axisB[j].z;
-	}
-	for (int i = 0; i < 3; ++i)
-	{
-		for (int j = 0; j < 3; ++j)
-		{
-			absRot[i][j] = cd3AbsNoBranch(rot[i][j]);
-		}
-	}
-	cdReal tA[3] = {t.x, t.y, t.z};
+	cdReal ha0 = boxA->halfExtents.x, ha1 = boxA->halfExtents.y, ha2 = boxA->halfExtents.z;
+	cdReal hb0 = boxB->halfExtents.x, hb1 = boxB->halfExtents.y, hb2 = boxB->halfExtents.z;
+	/* rij = A's axis i . B's axis j, aij = |rij| */
+	cdReal r00 = m.cx.x, r10 = m.cx.y, r20 = m.cx.z;
+	cdReal r01 = m.cy.x, r11 = m.cy.y, r21 = m.cy.z;
+	cdReal r02 = m.cz.x, r12 = m.cz.y, r22 = m.cz.z;
+	cdReal a00 = cd3AbsNoBranch(r00), a10 = cd3AbsNoBranch(r10), a20 = cd3AbsNoBranch(r20);
+	cdReal a01 = cd3AbsNoBranch(r01), a11 = cd3AbsNoBranch(r11), a21 = cd3AbsNoBranch(r21);
+	cdReal a02 = cd3AbsNoBranch(r02), a12 = cd3AbsNoBranch(r12), a22 = cd3AbsNoBranch(r22);
+	cdReal t0 = t.x, t1 = t.y, t2 = t.z;
 
-	r.faceSeparationA = -CD_REAL_MAX;
-	r.faceA = 0;
-	for (int i = 0; i < 3; ++i)
-	{
-		cdReal radiusB = hb[0] * absRot[i][0] + hb[1] * absRot[i][1] + hb[2] * absRot[i][2];
-		cdReal separation = cd3AbsNoBranch(tA[i]) - ha[i] - radiusB;
-		if (separation > r.faceSeparationA)
-		{
-			r.faceSeparationA = separation;
-			r.faceA = 2 * i + (tA[i] > CD_R(0.0) ? 1 : 0);
-		}
-	}
-	r.faceSeparationB = -CD_REAL_MAX;
-	r.faceB = 0;
-	for (int j = 0; j < 3; ++j)
-	{
-		cdReal tB = cd3Dot(t, axisB[j]);
-		cdReal radiusA = ha[0] * absRot[0][j] + ha[1] * absRot[1][j] + ha[2] * absRot[2][j];
-		cdReal separation = cd3AbsNoBranch(tB) - hb[j] - radiusA;
-		if (separation > r.faceSeparationB)
-		{
-			r.faceSeparationB = separation;
-			/* B's face toward A: A lies on B's negative side when tB > 0. */
-			r.faceB = 2 * j + (tB > CD_R(0.0) ? 0 : 1);
-		}
-	}
-	r.edgeSeparation = -CD_REAL_MAX;
+	cd3SatResult r;
+	/* A's faces: B's radius on A's axis i. */
+	cdReal faceA[3] = {cd3AbsNoBranch(t0) - ha0 - (hb0 * a00 + hb1 * a01 + hb2 * a02),
+					   cd3AbsNoBranch(t1) - ha1 - (hb0 * a10 + hb1 * a11 + hb2 * a12),
+					   cd3AbsNoBranch(t2) - ha2 - (hb0 * a20 + hb1 * a21 + hb2 * a22)};
+	int bestA = faceA[1] > faceA[0] ? 1 : 0;
+	bestA = faceA[2] > faceA[bestA] ? 2 : bestA;
+	cdReal tBestA = bestA == 0 ? t0 : (bestA == 1 ? t1 : t2);
+	r.faceSeparationA = faceA[bestA];
+	r.faceA = 2 * bestA + (tBestA > CD_R(0.0) ? 1 : 0);
+	/* B's faces: the centre offset on B's axis j, A's radius on it. */
+	cdReal tB[3] = {cd3Dot(t, m.cx), cd3Dot(t, m.cy), cd3Dot(t, m.cz)};
+	cdReal faceB[3] = {cd3AbsNoBranch(tB[0]) - hb0 - (ha0 * a00 + ha1 * a10 + ha2 * a20),
+					   cd3AbsNoBranch(tB[1]) - hb1 - (ha0 * a01 + ha1 * a11 + ha2 * a21),
+					   cd3AbsNoBranch(tB[2]) - hb2 - (ha0 * a02 + ha1 * a12 + ha2 * a22)};
+	int bestB = faceB[1] > faceB[0] ? 1 : 0;
+	bestB = faceB[2] > faceB[bestB] ? 2 : bestB;
+	r.faceSeparationB = faceB[bestB];
+	/* B's face toward A: A lies on B's negative side when tB > 0. */
+	r.faceB = 2 * bestB + (tB[bestB] > CD_R(0.0) ? 0 : 1);
+
+	cdReal faceBest = cdMax(r.faceSeparationA, r.faceSeparationB);
+	cd3BoxEdgeBest e;
+	e.separation = -CD_REAL_MAX;
+	e.axis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	e.i = e.j = 0;
+	cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * a20 + ha2 * a10, hb1 * a02 + hb2 * a01, t2 * r10 - t1 * r20,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * a21 + ha2 * a11, hb2 * a00 + hb0 * a02, t2 * r11 - t1 * r21,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * a22 + ha2 * a12, hb0 * a01 + hb1 * a00, t2 * r12 - t1 * r22,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * a00 + ha0 * a20, hb1 * a12 + hb2 * a11, t0 * r20 - t2 * r00,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * a01 + ha0 * a21, hb2 * a10 + hb0 * a12, t0 * r21 - t2 * r01,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * a02 + ha0 * a22, hb0 * a11 + hb1 * a10, t0 * r22 - t2 * r02,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * a10 + ha1 * a00, hb1 * a22 + hb2 * a21, t1 * r00 - t0 * r10,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * a11 + ha1 * a01, hb2 * a20 + hb0 * a22, t1 * r01 - t0 * r11,
+				   faceBest);
+	cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * a12 + ha1 * a02, hb0 * a21 + hb1 * a20, t1 * r02 - t0 * r12,
+				   faceBest);
+	r.edgeSeparation = e.separation;
 	r.edgeA = -1;
 	r.edgeB = -1;
-	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
-	int bestI = 0, bestJ = 0;
-	cdReal faceBest = cdMax(r.faceSeparationA, r.faceSeparationB);
-	/* Edge axes A_i x B_j in A's frame: (0, -rot[2][j], rot[1][j]) for i = 0 and its cyclic
-	 * shifts, so the projections are sums of the matrix entries. */
-	for (int i = 0; i < 3; ++i)
+	if (e.separation > -CD_REAL_MAX)
 	{
-		int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-		for (int j = 0; j < 3; ++j)
-		{
-			int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-			cdReal length2 = rot[i1][j] * rot[i1][j] + rot[i2][j] * rot[i2][j];
-			if (!(length2 > CD3_BOX_PARALLEL_SINE * CD3_BOX_PARALLEL_SINE))
-			{
-				continue;
-			}
-			cdReal radiusA = ha[i1] * absRot[i2][j] + ha[i2] * absRot[i1][j];
-			cdReal radiusB = hb[j1] * absRot[i][j2] + hb[j2] * absRot[i][j1];
-			cdReal centre = tA[i2] * rot[i1][j] - tA[i1] * rot[i2][j];
-			cdReal gap = cd3AbsNoBranch(centre) - radiusA - radiusB; /* separation * sqrt(length2) */
-			/* An edge axis matters only when it beats every axis so far: decided on squares, so
-			 * that only the winners pay a square root. */
-			cdReal threshold = cdMax(r.edgeSeparation, faceBest);
-			cdReal bar = threshold * threshold * length2;
-			bool ahead = threshold >= CD_R(0.0), behind = !ahead;
-			bool beats = (ahead & (gap > CD_R(0.0)) & (gap * gap > bar)) |
-						 (behind & ((gap >= CD_R(0.0)) | (gap * gap < bar)));
-			if (!beats)
-			{
-				continue;
-			}
-			cdReal separation = gap / cdSqrt(length2);
-			if (separation > r.edgeSeparation)
-			{
-				r.edgeSeparation = separation;
-				cdReal components[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
-				components[i1] = -rot[i2][j];
-				components[i2] = rot[i1][j];
-				cd3Vec axis = cd3Normalize(cd3MakeVec(components[0], components[1], components[2]));
-				bestAxis = centre < CD_R(0.0) ? cd3Neg(axis) : axis;
-				bestI = i;
-				bestJ = j;
-			}
-		}
+		r.edgeA = cd3SupportingBoxEdge(e.i, e.axis);
+		cd3Vec inB = {-cd3Dot(e.axis, m.cx), -cd3Dot(e.axis, m.cy), -cd3Dot(e.axis, m.cz)};
+		r.edgeB = cd3SupportingBoxEdge(e.j, inB);
 	}
-	if (r.edgeSeparation > -CD_REAL_MAX)
-	{
-		r.edgeA = cd3SupportingBoxEdge(bestI, bestAxis);
-		cd3Vec inB = {-cd3Dot(bestAxis, axisB[0]), -cd3Dot(bestAxis, axisB[1]), -cd3Dot(bestAxis, axisB[2])};
-		r.edgeB = cd3SupportingBoxEdge(bestJ, inB);
-	}
-	r.edgeNormal = cd3RotateVector(a.rotation, bestAxis);
+	r.edgeNormal = cd3RotateVector(qa, e.axis);
 	*result = r;
 }
 
