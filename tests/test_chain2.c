@@ -306,6 +306,54 @@ static void TestTiltedShapesOnTerrain(void)
 	cd2DestroyChain(chain);
 }
 
+/* AABBs, segments and zero-size boxes go through the same paths (polygon, zero-radius capsule). */
+static void TestOtherShapes(void)
+{
+	cd2Vec points[9];
+	for (int i = 0; i < 9; ++i)
+	{
+		points[i] = V(4.0 - i, 0);
+	}
+	cd2Chain* chain = MakeChain(points, 9, false);
+	if (chain == NULL)
+	{
+		return;
+	}
+	cd2Transform identity = MakeTransform(0, 0, 0);
+	cd2Manifold manifolds[8];
+	for (int step = 0; step < 50; ++step)
+	{
+		double x = -2.0 + step * 0.0813;
+		cd2Aabb aabb = {V(x - 0.4, -0.01), V(x + 0.4, 0.5)};
+		cd2Segment segment = {V(x - 0.3, 0.01), V(x + 0.3, 0.01)};
+		cd2Box flat = {V(x, 0.015), V(0.5, 0), cd2MakeRot(0)}; /* zero height: a segment */
+		cd2Box dot = {V(x, 0.015), V(0, 0), cd2MakeRot(0)};	   /* zero size: a point */
+		cd2Shape shapes[4] = {cd2MakeAabbShape(aabb), cd2MakeSegmentShape(segment), cd2MakeBoxShape(flat),
+							  cd2MakeBoxShape(dot)};
+		const double expected[4] = {-0.01, 0.01, 0.015, 0.015};
+		const double span[4][2] = {{x - 0.4, x + 0.4}, {x - 0.3, x + 0.3}, {x - 0.5, x + 0.5}, {x, x}};
+		for (int k = 0; k < 4; ++k)
+		{
+			int count = cd2CollideChain(chain, identity, &shapes[k], CD_R(0.02), manifolds, 8, NULL);
+			double low = 1e30, high = -1e30;
+			bool ok = count >= 1;
+			for (int m = 0; m < count; ++m)
+			{
+				ok = ok && manifolds[m].normal.x == CD_R(0.0) && manifolds[m].normal.y == CD_R(1.0);
+				for (int p = 0; p < manifolds[m].pointCount; ++p)
+				{
+					ok = ok && fabs((double)manifolds[m].points[p].separation - expected[k]) <= TOL;
+					low = fmin(low, (double)manifolds[m].points[p].point.x);
+					high = fmax(high, (double)manifolds[m].points[p].point.x);
+				}
+			}
+			ok = ok && fabs(low - span[k][0]) <= TOL && fabs(high - span[k][1]) <= TOL;
+			TEST_CHECKF(ok, "x %.4f shape %d: %d manifolds, span [%.6f %.6f]", x, k, count, low, high);
+		}
+	}
+	cd2DestroyChain(chain);
+}
+
 /* The same terrain made of independent two-sided segments does catch: the test above can fail. */
 static void TestTwoSidedSegmentsCatch(void)
 {
@@ -1072,6 +1120,7 @@ int main(void)
 	TEST_RUN(TestGhosts);
 	TEST_RUN(TestSlidingOnStraightTerrain);
 	TEST_RUN(TestTiltedShapesOnTerrain);
+	TEST_RUN(TestOtherShapes);
 	TEST_RUN(TestTwoSidedSegmentsCatch);
 	TEST_RUN(TestHill);
 	TEST_RUN(TestBackSide);
