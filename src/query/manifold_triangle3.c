@@ -470,6 +470,52 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec 
 	}
 }
 
+/* Whether some axis (the bounding boxes' axes, the face normals, the edge-edge axes) separates
+ * the triangles by more than the speculative distance: then the distance does too, and the exact
+ * closest points (the costly part) are not needed. The margin covers the round-off of the unit
+ * axes at the coordinates' magnitude. */
+static bool ClearlyApart(const Triangle* a, const Triangle* b, cdReal speculativeDistance)
+{
+	cdReal magnitude = CD_R(0.0);
+	cd3Vec aLow = a->v[0], aHigh = a->v[0], bLow = b->v[0], bHigh = b->v[0];
+	for (int i = 0; i < 3; ++i)
+	{
+		aLow = cd3Min(aLow, a->v[i]);
+		aHigh = cd3Max(aHigh, a->v[i]);
+		bLow = cd3Min(bLow, b->v[i]);
+		bHigh = cd3Max(bHigh, b->v[i]);
+		cd3Vec m = cd3Max(cd3Abs(a->v[i]), cd3Abs(b->v[i]));
+		magnitude = cdMax(magnitude, cdMax(m.x, cdMax(m.y, m.z)));
+	}
+	cdReal limit = speculativeDistance + CD_R(16.0) * CD_REAL_EPSILON * magnitude;
+	cd3Vec gap = cd3Max(cd3Sub(bLow, aHigh), cd3Sub(aLow, bHigh));
+	if (gap.x > speculativeDistance || gap.y > speculativeDistance || gap.z > speculativeDistance)
+	{
+		return true;
+	}
+	cd3Vec normal;
+	if (cd3LengthSquared(a->normal) > CD_R(0.0) && AxisSeparation(a, b, a->normal, &normal) > limit)
+	{
+		return true;
+	}
+	if (cd3LengthSquared(b->normal) > CD_R(0.0) && AxisSeparation(a, b, b->normal, &normal) > limit)
+	{
+		return true;
+	}
+	for (int i = 0; i < 3; ++i)
+	{
+		for (int j = 0; j < 3; ++j)
+		{
+			cd3Vec axis = cd3Normalize(cd3Cross(a->e[i], b->e[j]));
+			if (cd3LengthSquared(axis) > CD_R(0.5) && AxisSeparation(a, b, axis, &normal) > limit)
+			{
+				return true;
+			}
+		}
+	}
+	return false;
+}
+
 cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdReal speculativeDistance)
 {
 	CD_ASSERT(speculativeDistance >= CD_R(0.0));
@@ -484,6 +530,10 @@ cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdReal spec
 	Triangle ta, tb;
 	MakeTriangle(&ta, a, size);
 	MakeTriangle(&tb, b, size);
+	if (ClearlyApart(&ta, &tb, speculativeDistance))
+	{
+		return EmptyManifold();
+	}
 
 	cd3Vec onA, onB;
 	int pair = 0;
