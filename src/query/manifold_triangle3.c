@@ -1,7 +1,9 @@
 /* collide: contact manifold between two triangles (two-sided, not solid).
  *
- * Two paths, chosen by the exact distance (the closest of the six edge-against-triangle pairs,
- * which is zero exactly when the triangles touch or cross):
+ * Pairs that some axis (box axes, face normals, edge-edge axes) separates beyond the speculative
+ * distance return at once. Crossing pairs (cd3OverlapTriangleTriangle) go to the separating axis
+ * test below; the others are sorted by their exact distance (the closest of the six
+ * edge-against-triangle pairs):
  * - apart by more than a small fraction of their size: the normal is the direction between the
  *   closest points. When it is (nearly) a face normal, the other triangle is clipped against that
  *   face's side planes and its points within the speculative distance are kept (a face contact);
@@ -311,6 +313,27 @@ static cdReal ClosestPoints(cd3Triangle a, cd3Triangle b, const Triangle* ta, co
 	return best;
 }
 
+/* The closest points, computed on first use: crossing triangles need them only in rare cases. */
+typedef struct Closest
+{
+	cd3Triangle a, b;
+	const Triangle *ta, *tb;
+	cd3Vec onA, onB;
+	cdReal distance;
+	int pair;
+	bool known;
+} Closest;
+
+static const Closest* GetClosest(Closest* c)
+{
+	if (!c->known)
+	{
+		c->distance = ClosestPoints(c->a, c->b, c->ta, c->tb, &c->onA, &c->onB, &c->pair);
+		c->known = true;
+	}
+	return c;
+}
+
 static cd3Manifold SeparatedContact(const Triangle* a, const Triangle* b, cd3Vec onA, cd3Vec onB,
 									cdReal distance, int pair, cdReal size, cdReal speculativeDistance)
 {
@@ -347,8 +370,8 @@ typedef enum AxisKind
 	AXIS_IN_PLANE
 } AxisKind;
 
-static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec onA, cd3Vec onB, int pair,
-								   cdReal distance, cdReal size, cdReal speculativeDistance)
+static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, Closest* closest, cdReal size,
+								   cdReal speculativeDistance)
 {
 	cdReal bias = AXIS_BIAS_FRACTION * size;
 	AxisKind kind = AXIS_NONE;
@@ -440,8 +463,10 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec 
 			}
 			/* Nothing of the other triangle over the face (it touches just beside an edge): the
 			 * closest pair, at the distance. */
-			return SinglePoint(onA, onB, normal, distance > CD_R(0.0) ? distance : cdMin(best, CD_R(0.0)),
-							   ID_CLOSEST | (uint32_t)pair);
+			const Closest* c = GetClosest(closest);
+			return SinglePoint(c->onA, c->onB, normal,
+							   c->distance > CD_R(0.0) ? c->distance : cdMin(best, CD_R(0.0)),
+							   ID_CLOSEST | (uint32_t)c->pair);
 		}
 		case AXIS_EDGES:
 		{
@@ -452,7 +477,10 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec 
 							   CD3_FEATURE_EDGES | (uint32_t)edgeA | ((uint32_t)edgeB << 15));
 		}
 		case AXIS_IN_PLANE:
-			return SinglePoint(onA, onB, normal, best, ID_CLOSEST | (uint32_t)pair);
+		{
+			const Closest* c = GetClosest(closest);
+			return SinglePoint(c->onA, c->onB, normal, best, ID_CLOSEST | (uint32_t)c->pair);
+		}
 		default:
 		{
 			/* Two collinear segments or points touching: no axis; any unit normal will do, one
@@ -465,7 +493,8 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, cd3Vec 
 			{
 				n = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0));
 			}
-			return SinglePoint(onA, onB, n, cdMin(best, CD_R(0.0)), ID_CLOSEST | (uint32_t)pair);
+			const Closest* c = GetClosest(closest);
+			return SinglePoint(c->onA, c->onB, n, cdMin(best, CD_R(0.0)), ID_CLOSEST | (uint32_t)c->pair);
 		}
 	}
 }
@@ -535,16 +564,25 @@ cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdReal spec
 		return EmptyManifold();
 	}
 
-	cd3Vec onA, onB;
-	int pair = 0;
-	cdReal distance = ClosestPoints(a, b, &ta, &tb, &onA, &onB, &pair);
-	if (distance > speculativeDistance)
+	Closest closest;
+	closest.a = a;
+	closest.b = b;
+	closest.ta = &ta;
+	closest.tb = &tb;
+	closest.known = false;
+	/* Crossing triangles go straight to the separating axis test. */
+	if (!cd3OverlapTriangleTriangle(a, b))
 	{
-		return EmptyManifold();
+		const Closest* c = GetClosest(&closest);
+		if (c->distance > speculativeDistance)
+		{
+			return EmptyManifold();
+		}
+		if (c->distance > DIRECT_PATH_FRACTION * size)
+		{
+			return SeparatedContact(&ta, &tb, c->onA, c->onB, c->distance, c->pair, size,
+									speculativeDistance);
+		}
 	}
-	if (distance > DIRECT_PATH_FRACTION * size)
-	{
-		return SeparatedContact(&ta, &tb, onA, onB, distance, pair, size, speculativeDistance);
-	}
-	return TouchingContact(&ta, &tb, onA, onB, pair, distance, size, speculativeDistance);
+	return TouchingContact(&ta, &tb, &closest, size, speculativeDistance);
 }
