@@ -183,6 +183,15 @@ static void TestCrossing(void)
 	}
 	TEST_CHECK(PointsOnBoth(&m, a, b, TOL, &worst));
 
+	/* Ids stay while B moves a little (same features), and the two points' ids differ. */
+	cd3Triangle nudged = Tri(V3(1.02, 1.01, -0.09), V3(2.02, 1.01, -0.09), V3(1.52, 1.01, 2));
+	cd3Manifold m2 = cd3CollideTriangleTriangle(a, nudged, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 2 && m2.pointCount == 2 && m.points[0].id != m.points[1].id);
+	for (int i = 0; i < 2 && m.pointCount == 2 && m2.pointCount == 2; ++i)
+	{
+		TEST_CHECK(m2.points[i].id == m.points[i].id);
+	}
+
 	/* The same from below: B's tip pokes 0.1 above A, pushed down. */
 	cd3Triangle below = Tri(V3(1, 1, 0.1), V3(2, 1, 0.1), V3(1.5, 1, -2));
 	m = cd3CollideTriangleTriangle(a, below, CD_R(0.0));
