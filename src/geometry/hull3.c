@@ -1306,6 +1306,26 @@ cdReal cd3GetHullTolerance(const cd3Hull* hull)
 	return (cdReal)(HULL_VALID_REL * extent + 16.0 * (double)CD_REAL_EPSILON * magnitude);
 }
 
+static bool IsFinite(const cd3Hull* hull)
+{
+	for (int i = 0; i < hull->vertexCount; ++i)
+	{
+		if (!cd3IsValidVec(hull->vertices[i]))
+		{
+			return false;
+		}
+	}
+	for (int i = 0; i < hull->faceCount; ++i)
+	{
+		if (!cd3IsValidVec(hull->planes[i].normal) || !cdIsValidReal(hull->planes[i].offset))
+		{
+			return false;
+		}
+	}
+	return cd3IsValidVec(hull->centroid) && cdIsValidReal(hull->volume) && cd3IsValidVec(hull->bounds.min) &&
+		   cd3IsValidVec(hull->bounds.max);
+}
+
 /* Unit normal; planar and convex: vertices on the plane, each corner turning counter-clockwise
  * about the outward normal (this also rejects inward normals). */
 static cdResult CheckFace(const cd3Hull* hull, int face, cdReal tolerance)
@@ -1377,12 +1397,17 @@ static cdResult CheckOutward(const cd3Hull* hull)
 	return CD_OK;
 }
 
-/* The check of a hull just built: the local geometry of every face (merging can notch a face, and
- * a bare sliver triangle's plane is noise). Its topology holds by construction: every merged
+/* The check of a hull just built: finite figures (the volume of a hull near the largest floats
+ * overflows) and the local geometry of every face (merging can notch a face, and a bare sliver
+ * triangle's plane is noise). Its topology holds by construction: every merged
  * face is a disc with one simple boundary loop, so the faces, twins and fans form a sphere (the
  * full validation confirms it in debug builds). */
 static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 {
+	if (!IsFinite(hull))
+	{
+		return CD_ERROR_NOT_FINITE;
+	}
 	cdReal tolerance = cd3GetHullTolerance(hull);
 	for (int i = 0; i < hull->faceCount; ++i)
 	{
@@ -1426,22 +1451,7 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 		return CD_ERROR_INVALID_ARGUMENT;
 	}
 	int v = hull->vertexCount, e = hull->edgeCount, f = hull->faceCount;
-	for (int i = 0; i < v; ++i)
-	{
-		if (!cd3IsValidVec(hull->vertices[i]))
-		{
-			return CD_ERROR_NOT_FINITE;
-		}
-	}
-	for (int i = 0; i < f; ++i)
-	{
-		if (!cd3IsValidVec(hull->planes[i].normal) || !cdIsValidReal(hull->planes[i].offset))
-		{
-			return CD_ERROR_NOT_FINITE;
-		}
-	}
-	if (!cd3IsValidVec(hull->centroid) || !cdIsValidReal(hull->volume) || !cd3IsValidVec(hull->bounds.min) ||
-		!cd3IsValidVec(hull->bounds.max))
+	if (!IsFinite(hull))
 	{
 		return CD_ERROR_NOT_FINITE;
 	}
