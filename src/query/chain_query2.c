@@ -92,6 +92,7 @@ typedef struct LocalRay
 {
 	cd2Vec origin, d;
 	cdReal inverse[2]; /* 1 / d per axis (unused where d is zero) */
+	cdReal slack[2];   /* the round-off of a slab's fractions for any box of the chain, per axis */
 } LocalRay;
 
 /* Slab test of the segment origin + t * d, t in [0, maxFraction], against a closed box. */
@@ -111,10 +112,10 @@ static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction, cdR
 			continue;
 		}
 		cdReal t1 = (lo[axis] - o[axis]) * ray->inverse[axis], t2 = (hi[axis] - o[axis]) * ray->inverse[axis];
-		/* Widened by a few ulps so that a ray grazing a flat segment's zero-height box is kept. */
-		cdReal slack = CD_R(4.0) * CD_REAL_EPSILON * (cdAbs(t1) + cdAbs(t2));
-		lower = cdMax(lower, cdMin(t1, t2) - slack);
-		upper = cdMin(upper, cdMax(t1, t2) + slack);
+		/* Widened by the round-off so that a ray through the end of a flat run of segments (a box
+		 * of zero height) is kept. */
+		lower = cdMax(lower, cdMin(t1, t2) - ray->slack[axis]);
+		upper = cdMin(upper, cdMax(t1, t2) + ray->slack[axis]);
 		if (lower > upper)
 		{
 			return false;
@@ -178,6 +179,13 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 	local.d = cd2InvRotateVector(chainTransform.q, ray.translation);
 	local.inverse[0] = local.d.x != CD_R(0.0) ? CD_R(1.0) / local.d.x : CD_R(0.0);
 	local.inverse[1] = local.d.y != CD_R(0.0) ? CD_R(1.0) / local.d.y : CD_R(0.0);
+	/* A slab fraction (lo - o) / d is off by a few ulps of |lo| + |o|: bound |lo| by the chain's
+	 * bounds once per ray instead of per box. */
+	cd2Aabb root = cd2GetChainBounds(chain);
+	cdReal extentX = cdMax(cdAbs(root.min.x), cdAbs(root.max.x)) + cdAbs(local.origin.x);
+	cdReal extentY = cdMax(cdAbs(root.min.y), cdAbs(root.max.y)) + cdAbs(local.origin.y);
+	local.slack[0] = CD_R(8.0) * CD_REAL_EPSILON * extentX * cdAbs(local.inverse[0]);
+	local.slack[1] = CD_R(8.0) * CD_REAL_EPSILON * extentY * cdAbs(local.inverse[1]);
 	cdReal best = CD_R(1.0);
 	int bestIndex = -1;
 	cd2Vec bestNormal = CD2_VEC_ZERO;
