@@ -1172,6 +1172,26 @@ static void TestDistanceStatus(void)
 	TEST_CHECK(cd3DistanceWithStatus(&a, &b, NULL).distance == plain.distance);
 }
 
+/* fuzz_query3 (double build): a point inside a box 2.3e-3 x 2.5e-3 x 6.5e5 was 6.1e-5 away by GJK
+ * (the closest point on the box is the point itself). The values are the fuzzer's, to the bit in
+ * double (rounded to float in the float build, where the case passes as well). */
+static void TestPointInsideLongBox(void)
+{
+	cd3Box box = {
+		{(cdReal)-0.00061249999999999998, (cdReal)-0.00061249999999999998, (cdReal)-0.00061249999999999998},
+		{(cdReal)0.00115, (cdReal)0.001225, (cdReal)326941.53125},
+		{(cdReal)0.51320932208477166, (cdReal)0.51320932208477166, (cdReal)0.0, (cdReal)0.68791887853916189}};
+	cd3Vec p = {(cdReal)-0.00125, (cdReal)-0.00125, (cdReal)-0.00125};
+	cd3Shape boxShape = cd3MakeBoxShape(box);
+	cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
+	TEST_CHECK(cd3PointInBox(p, box));
+	double tolerance = 64.0 * (double)CD_REAL_EPSILON * 326941.53125;
+	double forward = (double)cd3Distance(&boxShape, &point).distance;
+	double backward = (double)cd3Distance(&point, &boxShape).distance;
+	TEST_CHECKF(forward <= tolerance && backward <= tolerance, "distances %.9g, %.9g (tolerance %.3g)",
+				forward, backward, tolerance);
+}
+
 /* ---- simplex cache --------------------------------------------------------------------------- */
 #if CD_DOUBLE
 #define CACHE_AGREEMENT 1e-9
@@ -1295,6 +1315,7 @@ int main(void)
 	TEST_RUN(TestThinBoxesAndLongSegments);
 	TEST_RUN(TestHullsAtLargeScale);
 	TEST_RUN(TestDistanceStatus);
+	TEST_RUN(TestPointInsideLongBox);
 	TEST_RUN(TestCacheAgrees);
 	TEST_RUN(TestCacheSavesIterations);
 	return TEST_SUMMARY();
