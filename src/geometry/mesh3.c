@@ -30,13 +30,14 @@ static cdReal MaxAbs(cd3Vec v)
 	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
 }
 
-/* A triangle's bounds grown by the round-off of the ray and point queries against it (a few
- * epsilons of its coordinates), so a hit the triangle routine accepts is never culled. */
+/* A triangle's bounds grown by the tolerances of the ray, overlap and point queries against it
+ * (cd3RaycastTriangle: 4 double epsilons, the overlap tests: 16 epsilons of the coordinates), so
+ * an answer the triangle routine gives is never culled. */
 static cd3Aabb PaddedTriangleBounds(cd3Triangle t)
 {
 	cd3Aabb b = cd3ComputeTriangleAabb(t);
 	cdReal magnitude = cdMax(MaxAbs(b.min), MaxAbs(b.max));
-	return cd3AabbInflate(b, CD_R(8.0) * CD_REAL_EPSILON * magnitude);
+	return cd3AabbInflate(b, CD_R(64.0) * CD_REAL_EPSILON * magnitude);
 }
 
 /* ---- the build ---------------------------------------------------------------------------------- */

@@ -14,6 +14,7 @@ typedef struct RayBox
 {
 	cdReal origin[3];
 	cdReal inverse[3]; /* 1 / translation, infinite on a zero component */
+	cdReal pad;		   /* node bounds grow by this: the triangle cast's tolerance at the ray's scale */
 } RayBox;
 
 static RayBox MakeRayBox(cd3Ray ray)
@@ -23,6 +24,13 @@ static RayBox MakeRayBox(cd3Ray ray)
 	r.origin[0] = ray.origin.x;
 	r.origin[1] = ray.origin.y;
 	r.origin[2] = ray.origin.z;
+	/* cd3RaycastTriangle accepts hits within 4 double epsilons of the largest coordinate of the
+	 * triangle and the ray's ends from the triangle; the build pads node bounds for the triangle's
+	 * own coordinates, this for the ray's (a far ray may count a tiny triangle as hit). */
+	cd3Vec end = cd3Add(ray.origin, ray.translation);
+	cdReal magnitude = cdMax(cdMax(cdAbs(ray.origin.x), cdMax(cdAbs(ray.origin.y), cdAbs(ray.origin.z))),
+							 cdMax(cdAbs(end.x), cdMax(cdAbs(end.y), cdAbs(end.z))));
+	r.pad = CD_R(8.0) * CD_REAL_EPSILON * magnitude;
 	for (int k = 0; k < 3; ++k)
 	{
 		/* IEEE division: a zero component gives an infinite inverse, whose products below are
@@ -40,8 +48,8 @@ static cdReal EnterNode(const RayBox* r, const cd3MeshNode* node, cdReal limit)
 	cdReal enter = CD_R(0.0), exit = limit;
 	for (int k = 0; k < 3; ++k)
 	{
-		cdReal t1 = ((cdReal)node->min[k] - r->origin[k]) * r->inverse[k];
-		cdReal t2 = ((cdReal)node->max[k] - r->origin[k]) * r->inverse[k];
+		cdReal t1 = ((cdReal)node->min[k] - r->pad - r->origin[k]) * r->inverse[k];
+		cdReal t2 = ((cdReal)node->max[k] + r->pad - r->origin[k]) * r->inverse[k];
 		cdReal lo = t1 < t2 ? t1 : t2;
 		cdReal hi = t1 < t2 ? t2 : t1;
 		if (t1 != t1 || t2 != t2)
