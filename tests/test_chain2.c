@@ -831,6 +831,10 @@ static void TestRaycast(void)
 		TEST_CHECK(cd2CollideChain(one, MakeTransform(0, 0, 0), &shape, CD_R(0.0), &m, 1, NULL) == 0);
 		cd2DestroyChain(one);
 	}
+	/* A direction component too small to invert: no NaN, the hit below is found. */
+	cd2Ray denormal = {V(0.5, 1), V(CD_DOUBLE ? 1e-310 : 1e-40, -2)};
+	TEST_CHECK(cd2RaycastChain(chain, MakeTransform(0, 0, 0), denormal, &hit, &index));
+	TEST_CHECK(index == 0 && fabs((double)hit.fraction - 0.5) <= TOL && cd2IsValidVec(hit.point));
 	cd2Ray zero = {V(0, 1), V(0, 0)};
 	TEST_CHECK(!cd2RaycastChain(chain, MakeTransform(0, 0, 0), zero, &hit, NULL));
 	cd2DestroyChain(chain);

@@ -91,7 +91,7 @@ void cd2Chain_QueryAabb(const cd2Chain* chain, cd2Transform chainTransform, cd2A
 typedef struct LocalRay
 {
 	cd2Vec origin, d;
-	cdReal inverse[2]; /* 1 / d per axis (unused where d is zero) */
+	cdReal inverse[2]; /* 1 / d per axis, 0 where d is zero (or too small to invert) */
 	cdReal slack[2];   /* the round-off of a slab's fractions for any box of the chain, per axis */
 } LocalRay;
 
@@ -99,11 +99,11 @@ typedef struct LocalRay
 static bool RayHitsBox(cd2Aabb box, const LocalRay* ray, cdReal maxFraction, cdReal* entry)
 {
 	cdReal lower = CD_R(0.0), upper = maxFraction;
-	const cdReal o[2] = {ray->origin.x, ray->origin.y}, v[2] = {ray->d.x, ray->d.y};
+	const cdReal o[2] = {ray->origin.x, ray->origin.y};
 	const cdReal lo[2] = {box.min.x, box.min.y}, hi[2] = {box.max.x, box.max.y};
 	for (int axis = 0; axis < 2; ++axis)
 	{
-		if (v[axis] == CD_R(0.0))
+		if (ray->inverse[axis] == CD_R(0.0))
 		{
 			if (o[axis] < lo[axis] || o[axis] > hi[axis])
 			{
@@ -177,8 +177,10 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 	LocalRay local;
 	local.origin = cd2InvTransformPoint(chainTransform, ray.origin);
 	local.d = cd2InvRotateVector(chainTransform.q, ray.translation);
-	local.inverse[0] = local.d.x != CD_R(0.0) ? CD_R(1.0) / local.d.x : CD_R(0.0);
-	local.inverse[1] = local.d.y != CD_R(0.0) ? CD_R(1.0) / local.d.y : CD_R(0.0);
+	/* A direction component whose inverse overflows (denormal) counts as zero: the ray moves by
+	 * less than the smallest normal number along that axis. */
+	local.inverse[0] = cdAbs(local.d.x) * CD_REAL_MAX >= CD_R(1.0) ? CD_R(1.0) / local.d.x : CD_R(0.0);
+	local.inverse[1] = cdAbs(local.d.y) * CD_REAL_MAX >= CD_R(1.0) ? CD_R(1.0) / local.d.y : CD_R(0.0);
 	/* A slab fraction (lo - o) / d is off by a few ulps of |lo| + |o|: bound |lo| by the chain's
 	 * bounds once per ray instead of per box. */
 	cd2Aabb root = cd2GetChainBounds(chain);
