@@ -430,6 +430,7 @@ static bool ClearlyAbove(const LocalShape* shape, cd2Vec p1, cd2Vec p2, cdReal s
 {
 	cd2Vec e = cd2Sub(p2, p1);
 	const cd2Vec* vertices;
+	cd2Vec ends[2];
 	int count;
 	cdReal radius;
 	switch (shape->kind)
@@ -440,7 +441,9 @@ static bool ClearlyAbove(const LocalShape* shape, cd2Vec p1, cd2Vec p2, cdReal s
 			radius = shape->circle.radius;
 			break;
 		case LOCAL_CAPSULE:
-			vertices = &shape->capsule.p1; /* p1 and p2 are consecutive */
+			ends[0] = shape->capsule.p1;
+			ends[1] = shape->capsule.p2;
+			vertices = ends;
 			count = 2;
 			radius = shape->capsule.radius;
 			break;
