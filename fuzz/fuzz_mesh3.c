@@ -12,10 +12,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The documented range of the queries: magnitudes up to MAX and down to MIN, or exactly zero
+ * (below MIN squared distances underflow: a point 1e-43 off a triangle reads as touching it). */
 #if CD_DOUBLE
 #define MESH_FUZZ_MAX 1e30
+#define MESH_FUZZ_MIN 1e-30
 #else
 #define MESH_FUZZ_MAX 1e9
+#define MESH_FUZZ_MIN 1e-9
 #endif
 
 static void Fail(const char* what, int detail)
@@ -50,6 +54,7 @@ static cdReal Coordinate(Reader* r, uint8_t mode, double scale, double offset)
 		if ((mode & 2) && isfinite(v))
 		{
 			v = v > MESH_FUZZ_MAX ? MESH_FUZZ_MAX : (v < -MESH_FUZZ_MAX ? -MESH_FUZZ_MAX : v);
+			v = fabs(v) < MESH_FUZZ_MIN ? 0.0 : v;
 		}
 		return (cdReal)v;
 	}
@@ -58,10 +63,15 @@ static cdReal Coordinate(Reader* r, uint8_t mode, double scale, double offset)
 	return (cdReal)(offset + scale * ((double)(b & 15) - 7.5) * 0.25);
 }
 
+static bool InRangeReal(cdReal x)
+{
+	double a = fabs((double)x);
+	return a <= MESH_FUZZ_MAX && (a >= MESH_FUZZ_MIN || a == 0.0);
+}
+
 static bool InRange(cd3Vec v)
 {
-	return fabs((double)v.x) <= MESH_FUZZ_MAX && fabs((double)v.y) <= MESH_FUZZ_MAX &&
-		   fabs((double)v.z) <= MESH_FUZZ_MAX;
+	return InRangeReal(v.x) && InRangeReal(v.y) && InRangeReal(v.z);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);

@@ -200,6 +200,13 @@ bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visi
 		{
 			for (int s = node->first; s < node->first + node->count; ++s)
 			{
+				/* A leaf holds up to 8 triangles: each one's own bounds first. */
+				cd3Aabb tb = cd3ComputeTriangleAabb(mesh->triangles[s]);
+				cdReal magnitude = cdMax(cd3Length(cd3Abs(tb.min)), cd3Length(cd3Abs(tb.max)));
+				if (!cd3OverlapAabbAabb(cd3AabbInflate(tb, CD_R(64.0) * CD_REAL_EPSILON * magnitude), bounds))
+				{
+					continue;
+				}
 				if (!visit(s, context))
 				{
 					return false;
