@@ -886,6 +886,98 @@ static void TestNearlyOppositeHalfSpaces(void)
 	}
 }
 
+/* Capsule-triangle and triangle-segment reject separated pairs early (bounding boxes, then the
+ * triangle's plane) before the closest points: exact touching cases right at both rejection
+ * bounds, then pairs placed at the radius times (1 +- 1e-3 .. 0.3) from a random point of the
+ * triangle, along its normal (the plane test) and away from an edge or corner (the box test),
+ * slivers included, at several scales, against the double reference away from the boundary. */
+static void TestTriangleSegmentRejection(void)
+{
+	/* A face-parallel axis exactly at the radius above the face, and at the radius beside a
+	 * corner along x (the boxes' gap equals the radius): touching. */
+	cd3Shape t = Tri(0, 0, 0, 4, 0, 0, 0, 4, 0);
+	Expect(t, Cap(1, 1, 2, 2, 1, 2, 2), true, __LINE__);
+	Expect(t, Cap(1, 1, -2, 2, 1, -2, 2), true, __LINE__);
+	Expect(t, Cap(1, 1, 2, 2, 1, 2, 1.999), false, __LINE__);
+	Expect(t, Cap(6, 0, 0, 6, 1, 0, 2), true, __LINE__);
+	Expect(t, Cap(6, 0, 0, 6, 1, 0, 1.999), false, __LINE__);
+	Expect(t, Seg(4, 0, 0, 5, 0, 0), true, __LINE__);
+	Expect(t, Seg(1, 1, 0, 2, 1, 0), true, __LINE__);
+	Expect(t, Seg(1, 1, 0.001, 2, 1, 0.001), false, __LINE__);
+	Expect(t, Seg(1, 1, 1, 1, 1, -1), true, __LINE__);
+	double huge = CD_DOUBLE ? 1e30 : 1e9;
+	cd3Shape big = Tri(0, 0, 0, 4 * huge, 0, 0, 0, 4 * huge, 0);
+	Expect(big, Cap(6 * huge, 0, 0, 6 * huge, huge, 0, 2 * huge), true, __LINE__);
+	Expect(big, Cap(huge, huge, 2 * huge, 2 * huge, huge, 2 * huge, 2 * huge), true, __LINE__);
+
+	TestRng rng = TestRngMake(0x5EED3210u);
+	const double scales[] = {1.0, 1e-6, 1e6, CD_DOUBLE ? 1e-30 : 1e-9, CD_DOUBLE ? 1e30 : 1e9};
+	int decided[2] = {0, 0};
+	for (int i = 0; i < 3000; ++i)
+	{
+		double scale = scales[i % 5];
+		RVec a = RMake(TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1));
+		RVec b =
+			RAdd(a, RMake(TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1)));
+		RVec c =
+			RAdd(a, RMake(TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1)));
+		if (i % 4 == 0)
+		{
+			/* A sliver: c close to the line ab. */
+			double along = TestRngRange(&rng, -0.5, 1.5), off = pow(10.0, TestRngRange(&rng, -6.0, -2.0));
+			c = RAdd(RAdd(a, RScale(along, RSub(b, a))), RScale(off, RSub(c, a)));
+		}
+		RVec n = RCross(RSub(b, a), RSub(c, a));
+		double nLength = RLength(n);
+		if (!(nLength > 0.0))
+		{
+			continue;
+		}
+		n = RScale(1.0 / nLength, n);
+		double radius = i % 3 == 0 ? 0.0 : TestRngRange(&rng, 0.0, 0.5);
+		double u = TestRngRange(&rng, 0, 1), v = TestRngRange(&rng, 0, 1);
+		RVec anchor = RAdd(a, RAdd(RScale(u, RSub(b, a)), RScale(v * (1.0 - u), RSub(c, a))));
+		RVec direction = n;
+		if (i % 2 == 1)
+		{
+			/* Away from a corner or edge: outside the triangle's box along some axis. */
+			anchor = i % 4 == 1 ? b : RAdd(a, RScale(0.5, RSub(c, a)));
+			direction = RFromVec(RandomUnit(&rng));
+		}
+		double factor = 1.0 + (TestRngInt(&rng, 2) ? 1.0 : -1.0) * pow(10.0, TestRngRange(&rng, -3.0, -0.5));
+		double distance = radius > 0.0 ? factor * radius : pow(10.0, TestRngRange(&rng, -3.0, -0.5));
+		RVec near = RAdd(anchor, RScale(distance * (TestRngInt(&rng, 2) ? 1.0 : -1.0), direction));
+		RVec along = RCross(direction, RFromVec(RandomUnit(&rng)));
+		double length = TestRngRange(&rng, 0.0, 1.0);
+		RVec p1 = RAdd(near, RScale(length, along)),
+			 p2 = RSub(near, RScale(length * TestRngRange(&rng, 0, 1), along));
+		RVec shift = RScale(TestRngRange(&rng, -2.0, 2.0), RMake(1, 1, 1));
+		a = RScale(scale, RAdd(a, shift));
+		b = RScale(scale, RAdd(b, shift));
+		c = RScale(scale, RAdd(c, shift));
+		p1 = RScale(scale, RAdd(p1, shift));
+		p2 = RScale(scale, RAdd(p2, shift));
+		cd3Shape tri = Tri(a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z);
+		cd3Shape other = radius > 0.0 ? Cap(p1.x, p1.y, p1.z, p2.x, p2.y, p2.z, radius * scale)
+									  : Seg(p1.x, p1.y, p1.z, p2.x, p2.y, p2.z);
+		Verdict verdict = ReferenceVerdict(&tri, &other, 1e-4 * scale);
+		if (verdict == VERDICT_UNDECIDED)
+		{
+			continue;
+		}
+		bool expected = verdict == VERDICT_OVERLAP;
+		++decided[expected];
+		bool direct = radius > 0.0 ? cd3OverlapCapsuleTriangle(other.capsule, tri.triangle)
+								   : cd3OverlapTriangleSegment(tri.triangle, other.segment);
+		char textA[256], textB[256];
+		TEST_CHECKF(direct == expected && cd3Overlap(&other, &tri) == expected,
+					"%s and %s: got %d, reference %d", ShapeText(&tri, textA, sizeof textA),
+					ShapeText(&other, textB, sizeof textB), (int)direct, (int)expected);
+	}
+	TEST_CHECKF(decided[0] >= 500 && decided[1] >= 500, "%d apart, %d overlapping cases", decided[0],
+				decided[1]);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSourceTexts);
@@ -903,5 +995,6 @@ int main(void)
 	TEST_RUN(TestClosestPointIsContained);
 	TEST_RUN(TestDegenerateNeverCrash);
 	TEST_RUN(TestNearlyOppositeHalfSpaces);
+	TEST_RUN(TestTriangleSegmentRejection);
 	return TEST_SUMMARY();
 }

@@ -99,6 +99,48 @@ static cdReal SegmentSegmentDistanceSquared(cd3Segment a, cd3Segment b, cdReal* 
 	return cd3VecDistanceSquared(pair.pointA, pair.pointB);
 }
 
+/* A cheap exact rejection before the closest points of a triangle and a segment: true when they
+ * are certainly farther apart than `radius` plus the overlap tolerance, so that the full test would
+ * say "apart" too. Relative to the triangle's first vertex, as the full test. Two tests:
+ * - bounding boxes: their gap along an axis is a lower bound of the distance; the subtraction
+ *   rounds by epsilon times the gap, far below the margin of one more overlap tolerance;
+ * - the triangle's plane: both segment ends on one side, higher than radius plus margin times
+ *   |n|, with n = b x c computed on b and c divided by their largest component (so |n| <= 2 and
+ *   no underflow at tiny scales). The rounding of n (which can turn a sliver's normal) moves the
+ *   heights and margin |n| by less than 32 epsilon (magnitude + margin); a normal below
+ *   epsilon^2 (a sliver flatter than round-off) rejects nothing. */
+static bool TriangleSegmentApart(cd3Triangle t, cd3Segment g, cdReal radius)
+{
+	cd3Vec b = cd3Sub(t.b, t.a), c = cd3Sub(t.c, t.a);
+	cd3Vec p1 = cd3Sub(g.p1, t.a), p2 = cd3Sub(g.p2, t.a);
+	cdReal sideMagnitude = cdMax(MaxAbsComponent(b), MaxAbsComponent(c));
+	cdReal magnitude = cdMax(sideMagnitude, cdMax(MaxAbsComponent(p1), MaxAbsComponent(p2)));
+	cdReal margin = radius + CD_R(2.0) * Tolerance(magnitude + radius);
+	cd3Vec triangleMin = cd3Min(CD3_VEC_ZERO, cd3Min(b, c)), triangleMax = cd3Max(CD3_VEC_ZERO, cd3Max(b, c));
+	cd3Vec segmentMin = cd3Min(p1, p2), segmentMax = cd3Max(p1, p2);
+	cd3Vec below = cd3Sub(triangleMin, segmentMax), above = cd3Sub(segmentMin, triangleMax);
+	if (cdMax(cdMax(below.x, below.y), below.z) > margin || cdMax(cdMax(above.x, above.y), above.z) > margin)
+	{
+		return true;
+	}
+	if (!(sideMagnitude > CD_R(0.0)))
+	{
+		return false;
+	}
+	cdReal inverse = CD_R(1.0) / sideMagnitude;
+	cd3Vec n = cd3Cross(cd3Scale(inverse, b), cd3Scale(inverse, c));
+	cdReal lengthSquared = cd3Dot(n, n);
+	cdReal flattest = CD_REAL_EPSILON * CD_REAL_EPSILON * CD_REAL_EPSILON * CD_REAL_EPSILON;
+	if (!(lengthSquared > flattest))
+	{
+		return false;
+	}
+	cdReal h1 = cd3Dot(n, p1), h2 = cd3Dot(n, p2);
+	cdReal limit = margin * cdSqrt(lengthSquared) + CD_R(32.0) * CD_REAL_EPSILON * (magnitude + margin);
+	/* An infinite or NaN limit compares false: no rejection. */
+	return (h1 > limit && h2 > limit) || (-h1 > limit && -h2 > limit);
+}
+
 static cdReal TriangleSegmentDistanceSquared(cd3Triangle t, cd3Segment g, cdReal* magnitude)
 {
 	cd3Vec origin = t.a;
@@ -443,6 +485,10 @@ bool cd3OverlapCapsuleBox(cd3Capsule c, cd3Box b)
 bool cd3OverlapCapsuleTriangle(cd3Capsule c, cd3Triangle t)
 {
 	cd3Segment axis = {c.p1, c.p2};
+	if (TriangleSegmentApart(t, axis, c.radius))
+	{
+		return false;
+	}
 	cdReal magnitude;
 	cdReal distanceSquared = TriangleSegmentDistanceSquared(t, axis, &magnitude);
 	return WithinRadius(distanceSquared, c.radius, magnitude);
@@ -685,6 +731,10 @@ bool cd3OverlapTrianglePlane(cd3Triangle t, cd3Plane p)
 
 bool cd3OverlapTriangleSegment(cd3Triangle t, cd3Segment g)
 {
+	if (TriangleSegmentApart(t, g, CD_R(0.0)))
+	{
+		return false;
+	}
 	cdReal magnitude;
 	cdReal distanceSquared = TriangleSegmentDistanceSquared(t, g, &magnitude);
 	return WithinRadius(distanceSquared, CD_R(0.0), magnitude);
