@@ -32,6 +32,8 @@ extern "C" {
 
 namespace
 {
+const double kPi = 3.14159265358979323846;
+
 struct Mesh
 {
 	std::vector<cd3Vec> vertices;
@@ -84,10 +86,10 @@ Mesh Sphere(int rings, int segments)
 	Mesh m;
 	for (int r = 0; r <= rings; ++r)
 	{
-		double theta = M_PI * r / rings;
+		double theta = kPi * r / rings;
 		for (int s = 0; s < segments; ++s)
 		{
-			double phi = 2.0 * M_PI * s / segments;
+			double phi = 2.0 * kPi * s / segments;
 			m.vertices.push_back(
 				Vec(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
 		}
