@@ -378,6 +378,7 @@ void TestPairs()
 			total.mprBelow += st.mprBelow;
 			// Both libccd algorithms must report (nearly) every penetrating pair.
 			TEST_CHECK(st.epaCount * 100 >= st.penetrating * 99);
+			TEST_CHECK(st.mprCount * 100 >= st.penetrating * 99);
 		}
 	}
 	// libccd is a peer: its GJK must agree on nearly every pair away from the boundary, its EPA on
