@@ -468,21 +468,23 @@ static cdResult InitialSimplex(Builder* b, double weld, int* out)
 		if (p->z > b->p[extremes[5]].z)
 			extremes[5] = i;
 	}
+	/* Squared distances while searching, one square root for the decision. */
 	double best = -1.0;
 	for (int i = 0; i < 6; ++i)
 	{
 		for (int j = i + 1; j < 6; ++j)
 		{
-			double d = HLength(HSub(b->p[extremes[i]], b->p[extremes[j]]));
-			if (d > best)
+			HVec d = HSub(b->p[extremes[i]], b->p[extremes[j]]);
+			double squared = HDot(d, d);
+			if (squared > best)
 			{
-				best = d;
+				best = squared;
 				out[0] = extremes[i];
 				out[1] = extremes[j];
 			}
 		}
 	}
-	if (best <= weld)
+	if (sqrt(best) <= weld)
 	{
 		return CD_ERROR_DEGENERATE; /* all points coincide */
 	}
@@ -491,14 +493,15 @@ static cdResult InitialSimplex(Builder* b, double weld, int* out)
 	for (int i = 0; i < b->n; ++i)
 	{
 		HVec d = HSub(b->p[i], b->p[out[0]]);
-		double distance = HLength(HSub(d, HScale(HDot(d, axis), axis)));
-		if (distance > best)
+		HVec off = HSub(d, HScale(HDot(d, axis), axis));
+		double squared = HDot(off, off);
+		if (squared > best)
 		{
-			best = distance;
+			best = squared;
 			out[2] = i;
 		}
 	}
-	if (best <= weld)
+	if (sqrt(best) <= weld)
 	{
 		return CD_ERROR_DEGENERATE; /* collinear */
 	}
