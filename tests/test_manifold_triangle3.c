@@ -567,6 +567,51 @@ static void TestScales(void)
 	TEST_CHECK(agreed > 1000);
 }
 
+/* Needles and slivers (one side 1e-4 of the others, or a vertex 1e-5 off the opposite edge)
+ * against ordinary triangles (and now and then against each other):
+ * finite results, and contacts exactly when touching (away from the boundary). */
+static void TestNeedles(void)
+{
+	TestRng rng = TestRngMake(0x9EED);
+	int touching = 0, apart = 0;
+	for (int trial = 0; trial < 2000; ++trial)
+	{
+		cd3Triangle t[2];
+		t[1] = RandomTriangle(&rng, 0);
+		for (int k = 0; k < (trial % 8 == 7 ? 2 : 1); ++k)
+		{
+			cd3Vec centroid = cd3Scale(CD_R(1.0) / CD_R(3.0), cd3Add(cd3Add(t[1].a, t[1].b), t[1].c));
+			cd3Vec p = cd3Add(centroid, RandomPoint(&rng, 1.0)), q = cd3Sub(centroid, RandomPoint(&rng, 1.0));
+			double thin = trial % 2 == 0 ? 1e-4 : 1e-5;
+			cd3Vec offset = cd3Scale((cdReal)thin, RandomPoint(&rng, 1.0));
+			t[k] = trial % 4 < 2 ? Tri(p, q, cd3Add(q, offset))							/* needle */
+								 : Tri(p, q, cd3Add(cd3Lerp(p, q, CD_R(0.5)), offset)); /* sliver */
+		}
+		cd3Manifold m = cd3CollideTriangleTriangle(t[0], t[1], CD_R(0.05));
+		TEST_CHECKF(IsFiniteManifold(&m), "trial %d: not finite", trial);
+		cd3Shape sa = cd3MakeTriangleShape(t[0]), sb = cd3MakeTriangleShape(t[1]);
+		double d = (double)cd3Distance(&sa, &sb).distance;
+		if (d == 0.0)
+		{
+			TEST_CHECKF(m.pointCount > 0 && MinSeparation(&m) <= 0.0, "trial %d: touching, %d points", trial,
+						m.pointCount);
+			++touching;
+		}
+		else if (d > 0.05 + BAND)
+		{
+			TEST_CHECKF(m.pointCount == 0, "trial %d: apart by %.6g, %d points", trial, d, m.pointCount);
+			++apart;
+		}
+		else if (d > BAND && d < 0.05 - BAND)
+		{
+			TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) - d) <= 1e-4,
+						"trial %d: distance %.6g, separation %.6g", trial, d, MinSeparation(&m));
+		}
+	}
+	printf("needles: %d touching, %d apart\n", touching, apart);
+	TEST_CHECK(touching > 200 && apart > 200);
+}
+
 int main(void)
 {
 	TEST_RUN(TestFaces);
@@ -576,5 +621,6 @@ int main(void)
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestRandomParallel);
 	TEST_RUN(TestScales);
+	TEST_RUN(TestNeedles);
 	return TEST_SUMMARY();
 }

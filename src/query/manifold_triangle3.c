@@ -35,7 +35,7 @@ typedef struct Triangle
 {
 	cd3Vec v[3];
 	cd3Vec e[3];	/* e[i] = v[i + 1] - v[i] */
-	cd3Vec winding; /* cross(e0, -e2): the unnormalized face normal */
+	cd3Vec winding; /* the unit normal of the winding (zero for a degenerate triangle) */
 	cd3Vec normal;	/* unit, zero for a degenerate triangle */
 } Triangle;
 
@@ -47,21 +47,45 @@ static void SetEdges(Triangle* t)
 	}
 }
 
+/* The unit vector along cross(a1 - a0, b1 - b0), computed in double from the coordinates (zero
+ * when the cross product is). In float, the differences and the cross product of a sliver's edges
+ * lose the digits its normal lives on: a 1e-5 sliver's normal was off by 1e-2 rad, and a face
+ * contact's separation by 3e-4. *length gets the cross product's length, *scale the product of
+ * the two edges' lengths. */
+static cd3Vec UnitCross(cd3Vec a0, cd3Vec a1, cd3Vec b0, cd3Vec b1, double* length, double* scale)
+{
+	double ax = (double)a1.x - (double)a0.x, ay = (double)a1.y - (double)a0.y,
+		   az = (double)a1.z - (double)a0.z;
+	double bx = (double)b1.x - (double)b0.x, by = (double)b1.y - (double)b0.y,
+		   bz = (double)b1.z - (double)b0.z;
+	double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+	double l = sqrt(cx * cx + cy * cy + cz * cz);
+	*length = l;
+	*scale = sqrt(ax * ax + ay * ay + az * az) * sqrt(bx * bx + by * by + bz * bz);
+	if (!(l > 0.0))
+	{
+		return cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	}
+	return cd3MakeVec((cdReal)(cx / l), (cdReal)(cy / l), (cdReal)(cz / l));
+}
+
 static void MakeTriangle(Triangle* t, cd3Triangle source, cdReal size)
 {
 	t->v[0] = source.a;
 	t->v[1] = source.b;
 	t->v[2] = source.c;
 	SetEdges(t);
-	t->winding = cd3Cross(t->e[0], cd3Sub(t->v[2], t->v[0]));
+	double area2, scale;
+	cd3Vec normal = UnitCross(t->v[0], t->v[1], t->v[0], t->v[2], &area2, &scale);
 	/* Zero area up to round-off of the size: no face axis. */
-	cdReal area2 = cd3Length(t->winding);
-	if (area2 > CD_R(64.0) * CD_REAL_EPSILON * size * size)
+	if (area2 > 64.0 * (double)CD_REAL_EPSILON * (double)size * (double)size)
 	{
-		t->normal = cd3Scale(CD_R(1.0) / area2, t->winding);
+		t->normal = normal;
+		t->winding = normal;
 		return;
 	}
 	t->normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	t->winding = t->normal;
 	/* The segment it is: its longest edge, the third vertex on an end. Otherwise a shorter edge
 	 * of the three collinear ones could be taken for the contact edge. */
 	int longest = 0;
@@ -401,14 +425,14 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, Closest
 	{
 		for (int j = 0; j < 3; ++j)
 		{
-			cd3Vec axis = cd3Cross(a->e[i], b->e[j]);
-			cdReal length = cd3Length(axis);
-			if (!(length > PARALLEL_SINE * cd3Length(a->e[i]) * cd3Length(b->e[j])))
+			double length, scale;
+			cd3Vec axis = UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &scale);
+			if (!(length > (double)PARALLEL_SINE * scale))
 			{
 				continue;
 			}
 			cd3Vec candidate;
-			cdReal s = AxisSeparation(a, b, cd3Scale(CD_R(1.0) / length, axis), &candidate);
+			cdReal s = AxisSeparation(a, b, axis, &candidate);
 			bool beats =
 				kind == AXIS_NONE || (kind == AXIS_EDGES ? s > best : s > faceBest + bias && s > best);
 			if (beats)
@@ -535,8 +559,9 @@ static bool ClearlyApart(const Triangle* a, const Triangle* b, cdReal speculativ
 	{
 		for (int j = 0; j < 3; ++j)
 		{
-			cd3Vec axis = cd3Normalize(cd3Cross(a->e[i], b->e[j]));
-			if (cd3LengthSquared(axis) > CD_R(0.5) && AxisSeparation(a, b, axis, &normal) > limit)
+			double length, scale;
+			cd3Vec axis = UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &scale);
+			if (length > 0.0 && AxisSeparation(a, b, axis, &normal) > limit)
 			{
 				return true;
 			}
