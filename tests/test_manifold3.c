@@ -3,7 +3,8 @@
  * independent reference: the separating axis test over every face normal and every edge-pair
  * cross product, in double, for penetrating pairs; cd3Distance for separated ones. */
 #include "collide/collide.h"
-#include "../src/query/epa3.h" /* internal: EPA and the polytope SAT, tested against each other */
+#include "../src/query/epa3.h"		   /* internal: EPA and the polytope SAT, tested against each other */
+#include "../src/query/sat3_support.h" /* internal: the support scans */
 #include "random_shapes3.h"
 #include "test.h"
 
@@ -709,6 +710,213 @@ static void TestEpaAgreesWithSat(void)
 	TEST_CHECK(capped * 100 < compared);
 }
 
+/* The support scans (SSE2 four at a time in the float build) against a plain first-maximum loop,
+ * with ties: every count from 1 to 70, points drawn from a few values so that many share the
+ * largest dot product. */
+static void TestSupportScans(void)
+{
+	TestRng rng = {0x5ca7u};
+	static const cdReal levels[3] = {CD_R(-0.5), CD_R(0.25), CD_R(1.0)};
+	for (int round = 0; round < 400; ++round)
+	{
+		int count = 1 + round % 70;
+		bool coarse = round % 2 == 0; /* few distinct values: ties */
+		cd3Vec points[70];
+		cd3Plane planes[70];
+		for (int i = 0; i < count; ++i)
+		{
+			points[i] = coarse ? cd3MakeVec(levels[TestRngInt(&rng, 3)], levels[TestRngInt(&rng, 3)],
+											levels[TestRngInt(&rng, 3)])
+							   : RandomVec(&rng, 2.0);
+			planes[i].normal = cd3Normalize(points[i]);
+			planes[i].offset = RandomReal(&rng, 0.0, 1.0);
+		}
+		cd3Vec d = coarse ? cd3MakeVec(levels[TestRngInt(&rng, 3)], CD_R(0.0), levels[TestRngInt(&rng, 3)])
+						  : RandomVec(&rng, 1.0);
+		int expected = 0, expectedPlane = 0;
+		for (int i = 1; i < count; ++i)
+		{
+			expected = cd3Dot(d, points[i]) > cd3Dot(d, points[expected]) ? i : expected;
+			expectedPlane =
+				cd3Dot(planes[i].normal, d) > cd3Dot(planes[expectedPlane].normal, d) ? i : expectedPlane;
+		}
+		int got = cd3SupportIndex(points, count, d);
+		TEST_CHECKF(got == expected, "round %d (%d points): support %d, first maximum %d", round, count, got,
+					expected);
+		cdReal dot = CD_R(0.0);
+		int plane = cd3PlaneSupportIndex(planes, count, d, &dot);
+		TEST_CHECKF(plane == expectedPlane && dot == cd3Dot(planes[expectedPlane].normal, d),
+					"round %d (%d planes): plane %d, first maximum %d", round, count, plane, expectedPlane);
+		if (count > CD3_SOA_MAX_POINTS)
+		{
+			continue;
+		}
+		/* The arrays: the points as they are, and moved by a rigid motion (against the moved
+		 * points' own first maximum). */
+		cd3SoaPoints soa;
+		cd3CopySoaPoints(&soa, points, count);
+		got = cd3SoaSupportIndex(&soa, d);
+		TEST_CHECKF(got == expected, "round %d (%d points): array support %d, first maximum %d", round, count,
+					got, expected);
+		cd3Mat33 rotation = cd3MakeMatFromQuat(RandomQuat(&rng));
+		cd3Vec shift = RandomVec(&rng, 1.0);
+		cd3MakeSoaPoints(&soa, points, count, rotation, shift);
+		int movedExpected = 0;
+		for (int i = 0; i < count; ++i)
+		{
+			cd3Vec p = cd3Add(cd3MulMV(rotation, points[i]), shift);
+			TEST_CHECK(cd3SoaPoint(&soa, i).x == p.x && cd3SoaPoint(&soa, i).y == p.y &&
+					   cd3SoaPoint(&soa, i).z == p.z);
+			movedExpected = cd3Dot(d, p) > cd3Dot(d, cd3SoaPoint(&soa, movedExpected)) ? i : movedExpected;
+		}
+		got = cd3SoaSupportIndex(&soa, d);
+		TEST_CHECKF(got == movedExpected, "round %d (%d points): moved array support %d, first maximum %d",
+					round, count, got, movedExpected);
+	}
+}
+
+/* A hull of 32 vertices on a random ellipsoid (the benchmark's hulls: the EPA path). */
+static cd3Hull* Ellipsoid32(TestRng* rng)
+{
+	cd3Hull* hull = NULL;
+	while (hull == NULL || hull->vertexCount != 32)
+	{
+		cd3DestroyHull(hull);
+		hull = NULL;
+		cd3Vec points[32];
+		double sx = TestRngRange(rng, 0.4, 0.7), sy = TestRngRange(rng, 0.4, 0.7),
+			   sz = TestRngRange(rng, 0.4, 0.7);
+		for (int i = 0; i < 32; ++i)
+		{
+			cd3Vec u = RandomUnit(rng);
+			points[i] = cd3MakeVec((cdReal)(sx * (double)u.x), (cdReal)(sy * (double)u.y),
+								   (cdReal)(sz * (double)u.z));
+		}
+		cd3ComputeHull(points, 32, &hull);
+	}
+	return hull;
+}
+
+/* B moved along the manifold normal until the pair overlaps by `depth` (a few refinements). */
+static cd3Shape PlaceAtDepth(const cd3Shape* a, cd3Shape b, double depth)
+{
+	for (int k = 0; k < 6; ++k)
+	{
+		cd3Manifold m = cd3Collide(a, &b, CD_R(100.0));
+		if (m.pointCount == 0)
+		{
+			break;
+		}
+		b = Translated(&b, cd3Scale((cdReal)(-depth - MinSeparation(&m)), m.normal));
+	}
+	return b;
+}
+
+/* Near-contact pairs as a physics step sees them (overlapping by 0.01 to 0.05 of unit shapes):
+ * stacked boxes tilted by 1e-4 (near ties between the two faces and the edge axes, where the
+ * reference choice is biased for stability), boxes at random, hull(32) pairs and box-hull(32)
+ * pairs (the EPA path), small hulls against boxes (the polytope SAT path). The manifold's smallest
+ * separation is minus the exact depth (the double SAT over every axis) within 1e-4 relative plus
+ * float round-off, from A,B and from B,A (normals opposite); stacked boxes keep their ids under
+ * small motions. */
+static void TestExactDepth(void)
+{
+	TestRng rng = {0xde97u};
+	cd3Hull* hulls[8];
+	for (int i = 0; i < 8; ++i)
+	{
+		hulls[i] = Ellipsoid32(&rng);
+	}
+	int compared[5] = {0, 0, 0, 0, 0};
+	double worst = 0.0;
+	for (int n = 0; n < 300; ++n)
+	{
+		int kind = n % 5;
+		cd3Shape a, b;
+		cd3Quat qa = RandomQuat(&rng);
+		if (kind == 0)
+		{
+			cd3Box ground = MakeBox(0, 0, 0, TestRngRange(&rng, 0.6, 0.7), TestRngRange(&rng, 0.6, 0.7),
+									TestRngRange(&rng, 0.6, 0.7), qa);
+			cd3Quat tilt = cd3MakeQuatAxisAngle(RandomUnit(&rng), CD_R(1.0e-4));
+			cd3Box top = MakeBox(0, 0, 0, TestRngRange(&rng, 0.3, 0.4), TestRngRange(&rng, 0.3, 0.4),
+								 TestRngRange(&rng, 0.3, 0.4), cd3NormalizeQuat(cd3MulQuat(tilt, qa)));
+			top.center = cd3RotateVector(
+				qa, cd3MakeVec(RandomReal(&rng, -0.1, 0.1), CD_R(1.0), RandomReal(&rng, -0.1, 0.1)));
+			a = cd3MakeBoxShape(ground);
+			b = cd3MakeBoxShape(top);
+		}
+		else if (kind == 1 || kind == 4)
+		{
+			a = cd3MakeBoxShape(MakeBox(0, 0, 0, TestRngRange(&rng, 0.3, 0.7), TestRngRange(&rng, 0.3, 0.7),
+										TestRngRange(&rng, 0.3, 0.7), qa));
+			if (kind == 1)
+			{
+				cd3Vec c = cd3Scale(CD_R(1.5), RandomUnit(&rng));
+				b = cd3MakeBoxShape(MakeBox((double)c.x, (double)c.y, (double)c.z,
+											TestRngRange(&rng, 0.3, 0.7), TestRngRange(&rng, 0.3, 0.7),
+											TestRngRange(&rng, 0.3, 0.7), RandomQuat(&rng)));
+			}
+			else
+			{
+				cd3Shape hull = RandomShape(&rng, CD3_SHAPE_HULL);
+				b = Translated(&hull, cd3Scale(CD_R(1.5), RandomUnit(&rng)));
+			}
+		}
+		else
+		{
+			cd3Transform ta = {cd3MakeVec(0, 0, 0), qa};
+			cd3Transform tb = {cd3Scale(CD_R(1.2), RandomUnit(&rng)), RandomQuat(&rng)};
+			a = kind == 2 ? cd3MakeHullShape(hulls[TestRngInt(&rng, 8)], ta)
+						  : cd3MakeBoxShape(MakeBox(0, 0, 0, TestRngRange(&rng, 0.3, 0.7),
+													TestRngRange(&rng, 0.3, 0.7),
+													TestRngRange(&rng, 0.3, 0.7), qa));
+			b = cd3MakeHullShape(hulls[TestRngInt(&rng, 8)], tb);
+		}
+		b = PlaceAtDepth(&a, b, TestRngRange(&rng, 0.01, 0.05));
+		Brute ba, bb;
+		BruteFromShape(&ba, &a);
+		BruteFromShape(&bb, &b);
+		double reference = BruteSat(&ba, &bb);
+		double size = ShapeSize(&a) + ShapeSize(&b);
+		if (!(reference < -5e-3))
+		{
+			continue; /* placement missed: near the boundary or apart */
+		}
+		++compared[kind];
+		double tol = 1e-4 * -reference + 4.0 * (double)CD_REAL_EPSILON * size;
+		cd3Manifold m = cd3Collide(&a, &b, CD_R(0.0));
+		cd3Manifold r = cd3Collide(&b, &a, CD_R(0.0));
+		TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) - reference) <= tol,
+					"kind %d #%d: smallest separation %.9g, exact %.9g", kind, n, MinSeparation(&m),
+					reference);
+		TEST_CHECKF(r.pointCount > 0 && fabs(MinSeparation(&r) - reference) <= tol,
+					"kind %d #%d: swapped, smallest separation %.9g, exact %.9g", kind, n, MinSeparation(&r),
+					reference);
+		TEST_CHECKF(cd3Dot(m.normal, r.normal) < CD_R(0.0), "kind %d #%d: swapped normal not flipped", kind,
+					n);
+		if (m.pointCount > 0)
+		{
+			worst = fmax(worst, fabs(MinSeparation(&m) - reference) / -reference);
+		}
+		if (kind == 0 && n < 60)
+		{
+			CheckIdsStable(a.box, b.box);
+		}
+	}
+	printf("exact depth: %d/%d/%d/%d/%d pairs compared (stacked, boxes, hulls, box-hull, small hull), worst "
+		   "relative error %.2e\n",
+		   compared[0], compared[1], compared[2], compared[3], compared[4], worst);
+	for (int k = 0; k < 5; ++k)
+	{
+		TEST_CHECKF(compared[k] > 45, "kind %d: only %d pairs compared", k, compared[k]);
+	}
+	for (int i = 0; i < 8; ++i)
+	{
+		cd3DestroyHull(hulls[i]);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -720,5 +928,7 @@ int main(void)
 	TEST_RUN(TestDegenerate);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestEpaAgreesWithSat);
+	TEST_RUN(TestSupportScans);
+	TEST_RUN(TestExactDepth);
 	return TEST_SUMMARY();
 }

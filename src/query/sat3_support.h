@@ -181,6 +181,7 @@ typedef struct cd3SoaPoints
 static inline void cd3MakeSoaPoints(cd3SoaPoints* s, const cd3Vec* points, int count, cd3Mat33 rotation,
 									cd3Vec translation)
 {
+	CD_ASSERT(count >= 1 && count <= CD3_SOA_MAX_POINTS);
 	s->count = count;
 	s->padded = (count + 3) & ~3;
 	for (int i = 0; i < s->padded; ++i)
@@ -195,6 +196,7 @@ static inline void cd3MakeSoaPoints(cd3SoaPoints* s, const cd3Vec* points, int c
 /* The points as they are. */
 static inline void cd3CopySoaPoints(cd3SoaPoints* s, const cd3Vec* points, int count)
 {
+	CD_ASSERT(count >= 1 && count <= CD3_SOA_MAX_POINTS);
 	s->count = count;
 	s->padded = (count + 3) & ~3;
 	for (int i = 0; i < s->padded; ++i)
