@@ -50,18 +50,20 @@ static void SetEdges(Triangle* t)
 /* The unit vector along cross(a1 - a0, b1 - b0), computed in double from the coordinates (zero
  * when the cross product is). In float, the differences and the cross product of a sliver's edges
  * lose the digits its normal lives on: a 1e-5 sliver's normal was off by 1e-2 rad, and a face
- * contact's separation by 3e-4. *length gets the cross product's length, *scale the product of
- * the two edges' lengths. */
-static cd3Vec UnitCross(cd3Vec a0, cd3Vec a1, cd3Vec b0, cd3Vec b1, double* length, double* scale)
+ * contact's separation by 3e-4. *length gets the cross product's length, *sineSquared the square
+ * of the sine of the angle between the two edges (0 when one has no length). */
+static cd3Vec UnitCross(cd3Vec a0, cd3Vec a1, cd3Vec b0, cd3Vec b1, double* length, double* sineSquared)
 {
 	double ax = (double)a1.x - (double)a0.x, ay = (double)a1.y - (double)a0.y,
 		   az = (double)a1.z - (double)a0.z;
 	double bx = (double)b1.x - (double)b0.x, by = (double)b1.y - (double)b0.y,
 		   bz = (double)b1.z - (double)b0.z;
 	double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
-	double l = sqrt(cx * cx + cy * cy + cz * cz);
+	double cc = cx * cx + cy * cy + cz * cz;
+	double product = (ax * ax + ay * ay + az * az) * (bx * bx + by * by + bz * bz);
+	*sineSquared = product > 0.0 ? cc / product : 0.0;
+	double l = sqrt(cc);
 	*length = l;
-	*scale = sqrt(ax * ax + ay * ay + az * az) * sqrt(bx * bx + by * by + bz * bz);
 	if (!(l > 0.0))
 	{
 		return cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
@@ -75,8 +77,8 @@ static void MakeTriangle(Triangle* t, cd3Triangle source, cdReal size)
 	t->v[1] = source.b;
 	t->v[2] = source.c;
 	SetEdges(t);
-	double area2, scale;
-	cd3Vec normal = UnitCross(t->v[0], t->v[1], t->v[0], t->v[2], &area2, &scale);
+	double area2, sineSquared;
+	cd3Vec normal = UnitCross(t->v[0], t->v[1], t->v[0], t->v[2], &area2, &sineSquared);
 	/* Zero area up to round-off of the size: no face axis. */
 	if (area2 > 64.0 * (double)CD_REAL_EPSILON * (double)size * (double)size)
 	{
@@ -425,9 +427,10 @@ static cd3Manifold TouchingContact(const Triangle* a, const Triangle* b, Closest
 	{
 		for (int j = 0; j < 3; ++j)
 		{
-			double length, scale;
-			cd3Vec axis = UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &scale);
-			if (!(length > (double)PARALLEL_SINE * scale))
+			double length, sineSquared;
+			cd3Vec axis =
+				UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &sineSquared);
+			if (!(sineSquared > (double)PARALLEL_SINE * (double)PARALLEL_SINE))
 			{
 				continue;
 			}
@@ -559,8 +562,9 @@ static bool ClearlyApart(const Triangle* a, const Triangle* b, cdReal speculativ
 	{
 		for (int j = 0; j < 3; ++j)
 		{
-			double length, scale;
-			cd3Vec axis = UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &scale);
+			double length, sineSquared;
+			cd3Vec axis =
+				UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &sineSquared);
 			if (length > 0.0 && AxisSeparation(a, b, axis, &normal) > limit)
 			{
 				return true;
