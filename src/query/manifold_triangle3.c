@@ -562,10 +562,9 @@ static bool ClearlyApart(const Triangle* a, const Triangle* b, cdReal speculativ
 	{
 		for (int j = 0; j < 3; ++j)
 		{
-			double length, sineSquared;
-			cd3Vec axis =
-				UnitCross(a->v[i], a->v[(i + 1) % 3], b->v[j], b->v[(j + 1) % 3], &length, &sineSquared);
-			if (length > 0.0 && AxisSeparation(a, b, axis, &normal) > limit)
+			/* Any unit axis bounds the distance: the float cross product will do here. */
+			cd3Vec axis = cd3Normalize(cd3Cross(a->e[i], b->e[j]));
+			if (cd3LengthSquared(axis) > CD_R(0.5) && AxisSeparation(a, b, axis, &normal) > limit)
 			{
 				return true;
 			}
