@@ -205,6 +205,14 @@ static void CheckRays(const TestMesh* m, cd3Aabb bounds, int count, TestRng* rng
 		{
 			d = cd3Scale(RandomReal(rng, 0.0, 1.0), d);
 		}
+		if (i % 10 == 4)
+		{
+			/* Axis-parallel (on the identity placement): zero components, one of them negative zero. */
+			int axis = (i / 10) % 3;
+			cdReal along = cd3GetComponent(d, axis);
+			d = cd3MakeVec(axis == 0 ? along : -CD_R(0.0), axis == 1 ? along : CD_R(0.0),
+						   axis == 2 ? along : -CD_R(0.0));
+		}
 		cd3Ray ray = {cd3TransformPoint(xf, from), cd3RotateVector(xf.q, d)};
 		cd3MeshRayHit expected = {{0, {0, 0, 0}, {0, 0, 0}}, -1}, got = expected;
 		bool brute = BruteRay(m, xf, ray, &expected);

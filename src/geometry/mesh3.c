@@ -599,12 +599,12 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 	{
 		cd3MeshNode* node = m->nodes + i;
 		cd3Aabb b = buildNodes[i].bounds;
-		node->min[0] = FloatDown(b.min.x);
-		node->min[1] = FloatDown(b.min.y);
-		node->min[2] = FloatDown(b.min.z);
-		node->max[0] = FloatUp(b.max.x);
-		node->max[1] = FloatUp(b.max.y);
-		node->max[2] = FloatUp(b.max.z);
+		node->bounds[0] = FloatDown(b.min.x);
+		node->bounds[1] = FloatDown(b.min.y);
+		node->bounds[2] = FloatDown(b.min.z);
+		node->bounds[3] = FloatUp(b.max.x);
+		node->bounds[4] = FloatUp(b.max.y);
+		node->bounds[5] = FloatUp(b.max.z);
 		node->first = buildNodes[i].first;
 		node->count = buildNodes[i].count;
 	}
@@ -675,7 +675,7 @@ static bool NodeContains(const cd3MeshNode* outer, const cd3MeshNode* inner)
 {
 	for (int k = 0; k < 3; ++k)
 	{
-		if (!(outer->min[k] <= inner->min[k] && inner->max[k] <= outer->max[k]))
+		if (!(outer->bounds[k] <= inner->bounds[k] && inner->bounds[3 + k] <= outer->bounds[3 + k]))
 		{
 			return false;
 		}
@@ -685,9 +685,9 @@ static bool NodeContains(const cd3MeshNode* outer, const cd3MeshNode* inner)
 
 static bool NodeContainsBox(const cd3MeshNode* node, cd3Aabb b)
 {
-	return (cdReal)node->min[0] <= b.min.x && (cdReal)node->min[1] <= b.min.y &&
-		   (cdReal)node->min[2] <= b.min.z && b.max.x <= (cdReal)node->max[0] &&
-		   b.max.y <= (cdReal)node->max[1] && b.max.z <= (cdReal)node->max[2];
+	return (cdReal)node->bounds[0] <= b.min.x && (cdReal)node->bounds[1] <= b.min.y &&
+		   (cdReal)node->bounds[2] <= b.min.z && b.max.x <= (cdReal)node->bounds[3] &&
+		   b.max.y <= (cdReal)node->bounds[4] && b.max.z <= (cdReal)node->bounds[5];
 }
 
 cdResult cd3ValidateMesh(const cd3Mesh* mesh)
@@ -744,7 +744,7 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 		const cd3MeshNode* node = mesh->nodes + index;
 		for (int k = 0; k < 3; ++k)
 		{
-			if (!isfinite(node->min[k]) || !isfinite(node->max[k]))
+			if (!isfinite(node->bounds[k]) || !isfinite(node->bounds[3 + k]))
 			{
 				return CD_ERROR_NOT_FINITE;
 			}

@@ -5,14 +5,13 @@
 
 #include "collide/mesh3.h"
 
-/* 32 bytes in both builds: bounds in float, rounded outward from the triangles' cdReal bounds.
- * An inner node (count 0) has its children at first and first + 1; a leaf holds the triangles
- * first .. first + count - 1 of the reordered arrays. */
+/* 32 bytes in both builds: bounds (min x y z, max x y z) in float, rounded outward from the
+ * triangles' cdReal bounds. An inner node (count 0) has its children at first and first + 1; a
+ * leaf holds the triangles first .. first + count - 1 of the reordered arrays. */
 typedef struct cd3MeshNode
 {
-	float min[3];
+	float bounds[6];
 	int32_t first;
-	float max[3];
 	int32_t count;
 } cd3MeshNode;
 

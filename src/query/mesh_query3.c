@@ -12,52 +12,52 @@
 
 typedef struct RayBox
 {
-	cdReal origin[3];
-	cdReal inverse[3]; /* 1 / translation, infinite on a zero component */
-	cdReal pad;		   /* node bounds grow by this: the triangle cast's tolerance at the ray's scale */
+	/* Per axis: the node bound the ray meets first (min when it runs towards +) and last, as
+	 * indices into cd3MeshNode.bounds, the origin shifted by the pad towards each, and
+	 * 1 / translation (infinite on a zero component). */
+	int nearIndex[3], farIndex[3];
+	cdReal nearOrigin[3], farOrigin[3];
+	cdReal inverse[3];
 } RayBox;
 
 static RayBox MakeRayBox(cd3Ray ray)
 {
 	RayBox r;
+	cdReal o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
 	cdReal d[3] = {ray.translation.x, ray.translation.y, ray.translation.z};
-	r.origin[0] = ray.origin.x;
-	r.origin[1] = ray.origin.y;
-	r.origin[2] = ray.origin.z;
 	/* cd3RaycastTriangle accepts hits within 4 double epsilons of the largest coordinate of the
 	 * triangle and the ray's ends from the triangle; the build pads node bounds for the triangle's
-	 * own coordinates, this for the ray's (a far ray may count a tiny triangle as hit). */
+	 * own coordinates, this pad for the ray's (a far ray may count a tiny triangle as hit). */
 	cd3Vec end = cd3Add(ray.origin, ray.translation);
 	cdReal magnitude = cdMax(cdMax(cdAbs(ray.origin.x), cdMax(cdAbs(ray.origin.y), cdAbs(ray.origin.z))),
 							 cdMax(cdAbs(end.x), cdMax(cdAbs(end.y), cdAbs(end.z))));
-	r.pad = CD_R(8.0) * CD_REAL_EPSILON * magnitude;
+	cdReal pad = CD_R(8.0) * CD_REAL_EPSILON * magnitude;
 	for (int k = 0; k < 3; ++k)
 	{
 		/* IEEE division: a zero component gives an infinite inverse, whose products below are
-		 * infinite (origin outside the slab: no t) or NaN (origin on a slab plane), and the
-		 * comparisons skip NaN, which keeps the closed slab. */
+		 * infinite (origin outside the slab: no t) or NaN (origin on a slab plane, inside it for
+		 * every t), and the comparisons in EnterNode skip NaN. */
 		r.inverse[k] = CD_R(1.0) / d[k];
+		bool positive = !(r.inverse[k] < CD_R(0.0)); /* the inverse's sign: -0 gives -infinity */
+		r.nearIndex[k] = positive ? k : 3 + k;
+		r.farIndex[k] = positive ? 3 + k : k;
+		/* bound - pad - origin for the min, bound + pad - origin for the max. */
+		r.nearOrigin[k] = positive ? o[k] + pad : o[k] - pad;
+		r.farOrigin[k] = positive ? o[k] - pad : o[k] + pad;
 	}
 	return r;
 }
 
-/* Entry fraction of the ray into the node's box within [0, limit], or a negative value on a miss.
- * The bounds are padded at the build for the round-off here. */
+/* Entry fraction of the ray into the node's box within [0, limit], or a negative value on a miss. */
 static cdReal EnterNode(const RayBox* r, const cd3MeshNode* node, cdReal limit)
 {
 	cdReal enter = CD_R(0.0), exit = limit;
 	for (int k = 0; k < 3; ++k)
 	{
-		cdReal t1 = ((cdReal)node->min[k] - r->pad - r->origin[k]) * r->inverse[k];
-		cdReal t2 = ((cdReal)node->max[k] + r->pad - r->origin[k]) * r->inverse[k];
-		cdReal lo = t1 < t2 ? t1 : t2;
-		cdReal hi = t1 < t2 ? t2 : t1;
-		if (t1 != t1 || t2 != t2)
-		{
-			continue; /* on a slab plane with a zero component: inside this slab for every t */
-		}
-		enter = lo > enter ? lo : enter;
-		exit = hi < exit ? hi : exit;
+		cdReal tNear = ((cdReal)node->bounds[r->nearIndex[k]] - r->nearOrigin[k]) * r->inverse[k];
+		cdReal tFar = ((cdReal)node->bounds[r->farIndex[k]] - r->farOrigin[k]) * r->inverse[k];
+		enter = tNear > enter ? tNear : enter;
+		exit = tFar < exit ? tFar : exit;
 	}
 	return enter <= exit ? enter : -CD_R(1.0);
 }
@@ -179,9 +179,9 @@ bool cd3RaycastMeshAny(const cd3Mesh* mesh, cd3Transform meshTransform, cd3Ray r
 
 static bool NodeOverlaps(const cd3MeshNode* node, cd3Aabb b)
 {
-	return (cdReal)node->min[0] <= b.max.x && b.min.x <= (cdReal)node->max[0] &&
-		   (cdReal)node->min[1] <= b.max.y && b.min.y <= (cdReal)node->max[1] &&
-		   (cdReal)node->min[2] <= b.max.z && b.min.z <= (cdReal)node->max[2];
+	return (cdReal)node->bounds[0] <= b.max.x && b.min.x <= (cdReal)node->bounds[3] &&
+		   (cdReal)node->bounds[1] <= b.max.y && b.min.y <= (cdReal)node->bounds[4] &&
+		   (cdReal)node->bounds[2] <= b.max.z && b.min.z <= (cdReal)node->bounds[5];
 }
 
 bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visit, void* context)
@@ -312,13 +312,13 @@ static cdReal NodeDistanceSquared(const cd3MeshNode* node, cd3Vec p)
 	for (int k = 0; k < 3; ++k)
 	{
 		cdReal d = CD_R(0.0);
-		if (c[k] < (cdReal)node->min[k])
+		if (c[k] < (cdReal)node->bounds[k])
 		{
-			d = (cdReal)node->min[k] - c[k];
+			d = (cdReal)node->bounds[k] - c[k];
 		}
-		else if (c[k] > (cdReal)node->max[k])
+		else if (c[k] > (cdReal)node->bounds[3 + k])
 		{
-			d = c[k] - (cdReal)node->max[k];
+			d = c[k] - (cdReal)node->bounds[3 + k];
 		}
 		sum += d * d;
 	}
