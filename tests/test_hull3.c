@@ -789,6 +789,58 @@ static void CopyHull(MutableHull* m, const cd3Hull* source)
 	m->hull.planes = m->planes;
 }
 
+/* fuzz_hull3 (double build): a lattice far from the origin with near-duplicates; a thin face
+ * passed its neighbours while a far vertex stood 3 percent beyond the tolerance above it. Refused
+ * or valid, never broken. */
+static void TestFarLatticeFinding(void)
+{
+#if CD_DOUBLE
+	static const double p[][3] = {{999935.00000000023, 999925.00000000023, 999925},
+								  {1000015, 999925, 1000065.0000000007},
+								  {999995, 999985, 1000005},
+								  {1000005.0000000009, 1000075.0000000017, 1000045},
+								  {999925.00000000023, 999925, 999925},
+								  {999925, 1000015, 1000045},
+								  {999965.00000000093, 1000075.0000000007, 999925},
+								  {1000045, 1000045, 1000045},
+								  {999965.00000000093, 1000075.0000000007, 999925},
+								  {1000075.0000000017, 1000045, 1000035},
+								  {1000075, 1000005, 999995},
+								  {1000055, 999945, 1000045.0000000012},
+								  {999945, 1000055, 999945},
+								  {999945, 1000055, 1000035},
+								  {1000035, 1000035, 999925},
+								  {999925, 999925, 999925},
+								  {999925, 999925, 999925},
+								  {999945, 1000045, 999925},
+								  {1000055.0000000007, 999925.00000000128, 999935.00000000023},
+								  {999925, 999925.00000000128, 999925},
+								  {999925.00000000151, 999995.00000000047, 999955},
+								  {999925, 1000075.0000000017, 1000075.0000000017},
+								  {1000075.0000000017, 1000075.0000000017, 1000075.0000000017},
+								  {1000075.0000000017, 1000075.0000000017, 1000075.0000000007},
+								  {999925, 1000045, 1000045},
+								  {1000045, 999965.00000000093, 1000075.0000000007},
+								  {999925, 1000075.0000000017, 1000035},
+								  {1000035, 1000075, 999925.00000000128},
+								  {999925, 999935.00000000023, 999985.00000000116},
+								  {999925.0000000007, 999925, 999935.00000000023},
+								  {999935.00000000023, 999925.00000000023, 999925},
+								  {1000075.0000000017, 999925, 999925}};
+	int count = (int)(sizeof(p) / sizeof(p[0]));
+	cd3Vec points[64];
+	for (int i = 0; i < count; ++i)
+	{
+		points[i] = cd3MakeVec(p[i][0], p[i][1], p[i][2]);
+	}
+	cd3Hull* hull = NULL;
+	cdResult result = cd3ComputeHull(points, count, &hull);
+	TEST_CHECKF(result == CD_ERROR_DEGENERATE || (result == CD_OK && cd3ValidateHull(hull) == CD_OK),
+				"result %d, validation %d", (int)result, hull != NULL ? (int)cd3ValidateHull(hull) : -1);
+	cd3DestroyHull(hull);
+#endif
+}
+
 static void TestValidator(void)
 {
 	cd3Hull* box = NULL;
@@ -889,6 +941,7 @@ int main(void)
 	TEST_RUN(TestWelding);
 	TEST_RUN(TestNearlyCoplanar);
 	TEST_RUN(TestSliverCorner);
+	TEST_RUN(TestFarLatticeFinding);
 	TEST_RUN(TestDegenerateAndBadInput);
 	TEST_RUN(TestScalesAndOffsets);
 	TEST_RUN(TestValidator);
