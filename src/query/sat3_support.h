@@ -18,18 +18,25 @@
 #endif
 
 #if CD3_SUPPORT_SSE
-/* The dot products of four consecutive vertices (12 floats from f) with the direction. */
-static inline __m128 cd3SupportDots4(const float* f, __m128 dx, __m128 dy, __m128 dz)
+/* Four consecutive vertices (12 floats from f) as coordinate vectors. */
+static inline void cd3SupportLoad4(const float* f, __m128* x, __m128* y, __m128* z)
 {
 	/* a0 = x0 y0 z0 x1, a1 = y1 z1 x2 y2, a2 = z2 x3 y3 z3 */
 	__m128 a0 = _mm_loadu_ps(f), a1 = _mm_loadu_ps(f + 4), a2 = _mm_loadu_ps(f + 8);
 	__m128 x23 = _mm_shuffle_ps(a1, a2, _MM_SHUFFLE(1, 1, 2, 2));
-	__m128 x = _mm_shuffle_ps(a0, x23, _MM_SHUFFLE(2, 0, 3, 0));
+	*x = _mm_shuffle_ps(a0, x23, _MM_SHUFFLE(2, 0, 3, 0));
 	__m128 y01 = _mm_shuffle_ps(a0, a1, _MM_SHUFFLE(0, 0, 1, 1));
 	__m128 y23 = _mm_shuffle_ps(a1, a2, _MM_SHUFFLE(2, 2, 3, 3));
-	__m128 y = _mm_shuffle_ps(y01, y23, _MM_SHUFFLE(2, 0, 2, 0));
+	*y = _mm_shuffle_ps(y01, y23, _MM_SHUFFLE(2, 0, 2, 0));
 	__m128 z01 = _mm_shuffle_ps(a0, a1, _MM_SHUFFLE(1, 1, 2, 2));
-	__m128 z = _mm_shuffle_ps(z01, a2, _MM_SHUFFLE(3, 0, 2, 0));
+	*z = _mm_shuffle_ps(z01, a2, _MM_SHUFFLE(3, 0, 2, 0));
+}
+
+/* The dot products of four consecutive vertices (12 floats from f) with the direction. */
+static inline __m128 cd3SupportDots4(const float* f, __m128 dx, __m128 dy, __m128 dz)
+{
+	__m128 x, y, z;
+	cd3SupportLoad4(f, &x, &y, &z);
 	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, x), _mm_mul_ps(dy, y)), _mm_mul_ps(dz, z));
 }
 #endif
@@ -184,7 +191,32 @@ static inline void cd3MakeSoaPoints(cd3SoaPoints* s, const cd3Vec* points, int c
 	CD_ASSERT(count >= 1 && count <= CD3_SOA_MAX_POINTS);
 	s->count = count;
 	s->padded = (count + 3) & ~3;
-	for (int i = 0; i < s->padded; ++i)
+	int start = 0;
+#if CD3_SUPPORT_SSE
+	/* Four at a time, in cd3MulMV's order of operations (the same bits). */
+	__m128 m00 = _mm_set1_ps(rotation.cx.x), m10 = _mm_set1_ps(rotation.cx.y),
+		   m20 = _mm_set1_ps(rotation.cx.z);
+	__m128 m01 = _mm_set1_ps(rotation.cy.x), m11 = _mm_set1_ps(rotation.cy.y),
+		   m21 = _mm_set1_ps(rotation.cy.z);
+	__m128 m02 = _mm_set1_ps(rotation.cz.x), m12 = _mm_set1_ps(rotation.cz.y),
+		   m22 = _mm_set1_ps(rotation.cz.z);
+	__m128 tx = _mm_set1_ps(translation.x), ty = _mm_set1_ps(translation.y), tz = _mm_set1_ps(translation.z);
+	for (; start + 4 <= count; start += 4)
+	{
+		__m128 x, y, z;
+		cd3SupportLoad4(&points[start].x, &x, &y, &z);
+		_mm_storeu_ps(s->x + start, _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(x, m00), _mm_mul_ps(y, m01)),
+														  _mm_mul_ps(z, m02)),
+											   tx));
+		_mm_storeu_ps(s->y + start, _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(x, m10), _mm_mul_ps(y, m11)),
+														  _mm_mul_ps(z, m12)),
+											   ty));
+		_mm_storeu_ps(s->z + start, _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(x, m20), _mm_mul_ps(y, m21)),
+														  _mm_mul_ps(z, m22)),
+											   tz));
+	}
+#endif
+	for (int i = start; i < s->padded; ++i)
 	{
 		cd3Vec p = cd3Add(cd3MulMV(rotation, points[i < count ? i : 0]), translation);
 		s->x[i] = p.x;
@@ -199,7 +231,18 @@ static inline void cd3CopySoaPoints(cd3SoaPoints* s, const cd3Vec* points, int c
 	CD_ASSERT(count >= 1 && count <= CD3_SOA_MAX_POINTS);
 	s->count = count;
 	s->padded = (count + 3) & ~3;
-	for (int i = 0; i < s->padded; ++i)
+	int start = 0;
+#if CD3_SUPPORT_SSE
+	for (; start + 4 <= count; start += 4)
+	{
+		__m128 x, y, z;
+		cd3SupportLoad4(&points[start].x, &x, &y, &z);
+		_mm_storeu_ps(s->x + start, x);
+		_mm_storeu_ps(s->y + start, y);
+		_mm_storeu_ps(s->z + start, z);
+	}
+#endif
+	for (int i = start; i < s->padded; ++i)
 	{
 		cd3Vec p = points[i < count ? i : 0];
 		s->x[i] = p.x;
