@@ -87,67 +87,80 @@ typedef struct Split
 	int bin;  /* left side: bins 0..bin */
 	double cost;
 	cdReal lower, scale;
+	int binCount;
 } Split;
 
-static int BinOf(cd3Vec centroid, int axis, cdReal lower, cdReal scale)
+static int BinOf(cd3Vec centroid, int axis, cdReal lower, cdReal scale, int binCount)
 {
 	cdReal c = cd3GetComponent(centroid, axis);
 	int b = (int)((c - lower) * scale);
-	return b < 0 ? 0 : (b >= SAH_BINS ? SAH_BINS - 1 : b);
+	return b < 0 ? 0 : (b >= binCount ? binCount - 1 : b);
 }
 
-static Split FindSplit(const BuildTriangle* tris, int first, int count, double parentArea)
+/* One pass over the triangles bins them on all three axes at once (each axis over the
+ * centroids' extent), then each axis's sweeps find its best split. */
+static Split FindSplit(const BuildTriangle* tris, int first, int count, double parentArea, cd3Aabb centroids)
 {
-	Split best = {-1, 0, 0.0, CD_R(0.0), CD_R(0.0)};
+	Split best = {-1, 0, 0.0, CD_R(0.0), CD_R(0.0), 0};
 	best.cost = (double)count; /* a leaf */
-	cd3Aabb centroids = EmptyAabb();
+	Bin bins[3][SAH_BINS];
+	/* Small nodes get as many bins as triangles: the sweeps cost per bin, and most nodes are small. */
+	int binCount = count < SAH_BINS ? (count < 4 ? 4 : count) : SAH_BINS;
+	cdReal lower[3], scale[3];
+	bool usable[3];
+	bool any = false;
+	for (int axis = 0; axis < 3; ++axis)
+	{
+		lower[axis] = cd3GetComponent(centroids.min, axis);
+		cdReal extent = cd3GetComponent(centroids.max, axis) - lower[axis];
+		scale[axis] = extent > CD_R(0.0) ? (cdReal)binCount / extent : CD_R(0.0);
+		usable[axis] = extent > CD_R(0.0) && cdIsValidReal(scale[axis]);
+		any = any || usable[axis];
+		for (int b = 0; b < binCount; ++b)
+		{
+			bins[axis][b].bounds = EmptyAabb();
+			bins[axis][b].count = 0;
+		}
+	}
+	if (!any)
+	{
+		return best;
+	}
 	for (int i = first; i < first + count; ++i)
 	{
-		centroids.min = cd3Min(centroids.min, tris[i].centroid);
-		centroids.max = cd3Max(centroids.max, tris[i].centroid);
+		for (int axis = 0; axis < 3; ++axis)
+		{
+			if (usable[axis])
+			{
+				Bin* bin = &bins[axis][BinOf(tris[i].centroid, axis, lower[axis], scale[axis], binCount)];
+				bin->bounds = cd3AabbUnion(bin->bounds, tris[i].bounds);
+				++bin->count;
+			}
+		}
 	}
 	for (int axis = 0; axis < 3; ++axis)
 	{
-		cdReal lower = cd3GetComponent(centroids.min, axis);
-		cdReal extent = cd3GetComponent(centroids.max, axis) - lower;
-		if (!(extent > CD_R(0.0)))
+		if (!usable[axis])
 		{
 			continue;
-		}
-		cdReal scale = (cdReal)SAH_BINS / extent;
-		if (!cdIsValidReal(scale))
-		{
-			continue;
-		}
-		Bin bins[SAH_BINS];
-		for (int b = 0; b < SAH_BINS; ++b)
-		{
-			bins[b].bounds = EmptyAabb();
-			bins[b].count = 0;
-		}
-		for (int i = first; i < first + count; ++i)
-		{
-			int b = BinOf(tris[i].centroid, axis, lower, scale);
-			bins[b].bounds = cd3AabbUnion(bins[b].bounds, tris[i].bounds);
-			++bins[b].count;
 		}
 		double rightArea[SAH_BINS];
 		int rightCount[SAH_BINS];
 		cd3Aabb sweep = EmptyAabb();
 		int n = 0;
-		for (int b = SAH_BINS - 1; b > 0; --b)
+		for (int b = binCount - 1; b > 0; --b)
 		{
-			sweep = cd3AabbUnion(sweep, bins[b].bounds);
-			n += bins[b].count;
+			sweep = cd3AabbUnion(sweep, bins[axis][b].bounds);
+			n += bins[axis][b].count;
 			rightArea[b] = Area(sweep);
 			rightCount[b] = n;
 		}
 		sweep = EmptyAabb();
 		n = 0;
-		for (int b = 0; b < SAH_BINS - 1; ++b)
+		for (int b = 0; b < binCount - 1; ++b)
 		{
-			sweep = cd3AabbUnion(sweep, bins[b].bounds);
-			n += bins[b].count;
+			sweep = cd3AabbUnion(sweep, bins[axis][b].bounds);
+			n += bins[axis][b].count;
 			if (n == 0 || rightCount[b + 1] == 0)
 			{
 				continue;
@@ -159,8 +172,9 @@ static Split FindSplit(const BuildTriangle* tris, int first, int count, double p
 				best.axis = axis;
 				best.bin = b;
 				best.cost = cost;
-				best.lower = lower;
-				best.scale = scale;
+				best.lower = lower[axis];
+				best.scale = scale[axis];
+				best.binCount = binCount;
 			}
 		}
 	}
@@ -168,7 +182,8 @@ static Split FindSplit(const BuildTriangle* tris, int first, int count, double p
 }
 
 /* Splits the range at `mid`, or returns false when the node becomes a leaf. */
-static bool SplitRange(BuildTriangle* tris, int first, int count, cd3Aabb bounds, int depth, int* mid)
+static bool SplitRange(BuildTriangle* tris, int first, int count, cd3Aabb bounds, cd3Aabb centroids,
+					   int depth, int* mid)
 {
 	if (count <= 1)
 	{
@@ -176,13 +191,14 @@ static bool SplitRange(BuildTriangle* tris, int first, int count, cd3Aabb bounds
 	}
 	if (depth < CD3_MESH_SAH_DEPTH)
 	{
-		Split split = FindSplit(tris, first, count, Area(bounds));
+		Split split = FindSplit(tris, first, count, Area(bounds), centroids);
 		if (split.axis >= 0)
 		{
 			int i = first, j = first + count - 1;
 			while (i <= j)
 			{
-				if (BinOf(tris[i].centroid, split.axis, split.lower, split.scale) <= split.bin)
+				if (BinOf(tris[i].centroid, split.axis, split.lower, split.scale, split.binCount) <=
+					split.bin)
 				{
 					++i;
 				}
@@ -235,10 +251,12 @@ static int BuildTree(BuildTriangle* tris, int n, BuildNode* nodes, int* depthOut
 	{
 		BuildTask task = stack[--top];
 		BuildNode* node = nodes + task.node;
-		cd3Aabb bounds = EmptyAabb();
+		cd3Aabb bounds = EmptyAabb(), centroids = EmptyAabb();
 		for (int i = node->first; i < node->first + node->count; ++i)
 		{
 			bounds = cd3AabbUnion(bounds, tris[i].bounds);
+			centroids.min = cd3Min(centroids.min, tris[i].centroid);
+			centroids.max = cd3Max(centroids.max, tris[i].centroid);
 		}
 		node->bounds = bounds;
 		if (task.node == 0)
@@ -247,7 +265,7 @@ static int BuildTree(BuildTriangle* tris, int n, BuildNode* nodes, int* depthOut
 		}
 		maxDepth = task.depth > maxDepth ? task.depth : maxDepth;
 		int mid;
-		if (!SplitRange(tris, node->first, node->count, bounds, task.depth, &mid))
+		if (!SplitRange(tris, node->first, node->count, bounds, centroids, task.depth, &mid))
 		{
 			++leafCount;
 			sah += Area(bounds) / rootArea * node->count;
@@ -391,9 +409,12 @@ static uint8_t EdgeFlagsAgainst(cd3Triangle t, int k, cd3Vec w)
 	return h < 0.0 ? front : back;
 }
 
-static void ComputeEdgeFlags(const cd3Triangle* triangles, const int32_t* canonical, int n, uint8_t* flags,
-							 EdgeKey* edges, EdgeKey* scratch)
+/* Neighbours through equal edge keys: the entries are bucketed by their smaller vertex (a counting
+ * sort, linear), then each bucket, a vertex's few edges, is sorted by the larger. */
+static void ComputeEdgeFlags(const cd3Triangle* triangles, const int32_t* canonical, int n, int vertexCount,
+							 uint8_t* flags, EdgeKey* edges, EdgeKey* scratch, int32_t* bucket)
 {
+	memset(bucket, 0, (size_t)(vertexCount + 1) * sizeof(int32_t));
 	for (int s = 0; s < n; ++s)
 	{
 		flags[s] = 0;
@@ -401,12 +422,29 @@ static void ComputeEdgeFlags(const cd3Triangle* triangles, const int32_t* canoni
 		{
 			uint32_t v0 = (uint32_t)canonical[3 * s + k], v1 = (uint32_t)canonical[3 * s + (k + 1) % 3];
 			uint32_t lo = v0 < v1 ? v0 : v1, hi = v0 < v1 ? v1 : v0;
-			edges[3 * s + k].key = (uint64_t)lo << 32 | hi;
-			edges[3 * s + k].slotEdge = 3 * s + k;
+			scratch[3 * s + k].key = (uint64_t)lo << 32 | hi;
+			scratch[3 * s + k].slotEdge = 3 * s + k;
+			++bucket[lo + 1];
 		}
 	}
 	int count = 3 * n;
-	MergeSortEdges(edges, scratch, count);
+	for (int v = 0; v < vertexCount; ++v)
+	{
+		bucket[v + 1] += bucket[v];
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		edges[bucket[scratch[i].key >> 32]++] = scratch[i];
+	}
+	/* bucket[v] is now the end of v's entries. */
+	for (int v = 0, start = 0; v < vertexCount; ++v)
+	{
+		if (bucket[v] - start > 1)
+		{
+			MergeSortEdges(edges + start, scratch, bucket[v] - start);
+		}
+		start = bucket[v];
+	}
 	for (int i = 0; i < count;)
 	{
 		int j = i + 1;
@@ -490,7 +528,8 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 	/* Scratch: build triangles, build nodes, canonical vertex ids, edge keys. */
 	size_t scratchBytes =
 		AlignUp((size_t)kept * sizeof(BuildTriangle)) + AlignUp((size_t)(2 * kept - 1) * sizeof(BuildNode)) +
-		AlignUp((size_t)vertexCount * sizeof(int32_t)) * 3 + AlignUp((size_t)kept * 3 * sizeof(int32_t)) +
+		AlignUp((size_t)vertexCount * sizeof(int32_t)) * 3 +
+		AlignUp((size_t)(vertexCount + 1) * sizeof(int32_t)) + AlignUp((size_t)kept * 3 * sizeof(int32_t)) +
 		AlignUp((size_t)kept * 3 * sizeof(EdgeKey)) * 2;
 	char* scratch = (char*)cdAlloc(scratchBytes);
 	if (scratch == NULL)
@@ -508,6 +547,8 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 	cursor += AlignUp((size_t)vertexCount * sizeof(int32_t));
 	int32_t* weld = (int32_t*)cursor;
 	cursor += AlignUp((size_t)vertexCount * sizeof(int32_t));
+	int32_t* buckets = (int32_t*)cursor;
+	cursor += AlignUp((size_t)(vertexCount + 1) * sizeof(int32_t));
 	int32_t* canonical = (int32_t*)cursor;
 	cursor += AlignUp((size_t)kept * 3 * sizeof(int32_t));
 	EdgeKey* edges = (EdgeKey*)cursor;
@@ -608,7 +649,7 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 		node->first = buildNodes[i].first;
 		node->count = buildNodes[i].count;
 	}
-	ComputeEdgeFlags(m->triangles, canonical, kept, m->edgeFlags, edges, edgeScratch);
+	ComputeEdgeFlags(m->triangles, canonical, kept, vertexCount, m->edgeFlags, edges, edgeScratch, buckets);
 	int active = 0;
 	for (int s = 0; s < kept; ++s)
 	{
