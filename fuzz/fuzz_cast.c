@@ -184,8 +184,10 @@ static void CheckShapeCast3(void)
 		{
 			break;
 		}
-		cdReal s = i == SAMPLES ? CD_R(1.0) : Sample(i, out.hit ? out.fraction : CD_R(1.0));
-		if (out.hit && s >= out.fraction)
+		/* A hit, or the iteration cap, vouches only for the fractions before the one reported. */
+		bool stopped = out.hit || out.hitIterationCap;
+		cdReal s = i == SAMPLES ? CD_R(1.0) : Sample(i, stopped ? out.fraction : CD_R(1.0));
+		if (stopped && s >= out.fraction)
 		{
 			break;
 		}
@@ -193,7 +195,8 @@ static void CheckShapeCast3(void)
 		if (cd3Distance(&moved, b).distance == CD_R(0.0) && FuzzDeeplyOverlapping3(&moved, b, band))
 		{
 			Fail("cast-free", "%s at fraction %.9g, but the shapes overlap deeply at %.9g",
-				 out.hit ? "hit" : "no hit", (double)out.fraction, (double)s);
+				 out.hit ? "hit" : (out.hitIterationCap ? "iteration cap" : "no hit"), (double)out.fraction,
+				 (double)s);
 		}
 	}
 }
@@ -342,8 +345,10 @@ static void CheckShapeCast2(void)
 		{
 			break;
 		}
-		cdReal s = i == SAMPLES ? CD_R(1.0) : Sample(i, out.hit ? out.fraction : CD_R(1.0));
-		if (out.hit && s >= out.fraction)
+		/* A hit, or the iteration cap, vouches only for the fractions before the one reported. */
+		bool stopped = out.hit || out.hitIterationCap;
+		cdReal s = i == SAMPLES ? CD_R(1.0) : Sample(i, stopped ? out.fraction : CD_R(1.0));
+		if (stopped && s >= out.fraction)
 		{
 			break;
 		}
@@ -351,7 +356,8 @@ static void CheckShapeCast2(void)
 		if (cd2Distance(&moved, b).distance == CD_R(0.0) && FuzzDeeplyOverlapping2(&moved, b, band))
 		{
 			Fail("cast-free", "%s at fraction %.9g, but the shapes overlap deeply at %.9g",
-				 out.hit ? "hit" : "no hit", (double)out.fraction, (double)s);
+				 out.hit ? "hit" : (out.hitIterationCap ? "iteration cap" : "no hit"), (double)out.fraction,
+				 (double)s);
 		}
 	}
 }
