@@ -435,6 +435,7 @@ typedef struct CollideContext
 	const cd3Mesh* mesh;
 	const cd3Shape* shape;
 	cd3Transform xf;
+	bool identity; /* the placement moves nothing: the triangles are used as stored */
 	cdReal speculativeDistance;
 	cd3MeshManifold* out;
 	int capacity;
@@ -445,8 +446,13 @@ static bool CollideSlot(int slot, void* context)
 {
 	CollideContext* c = (CollideContext*)context;
 	cd3Triangle local = c->mesh->triangles[slot];
-	cd3Triangle t = {cd3TransformPoint(c->xf, local.a), cd3TransformPoint(c->xf, local.b),
-					 cd3TransformPoint(c->xf, local.c)};
+	cd3Triangle t = local;
+	if (!c->identity)
+	{
+		t.a = cd3TransformPoint(c->xf, local.a);
+		t.b = cd3TransformPoint(c->xf, local.b);
+		t.c = cd3TransformPoint(c->xf, local.c);
+	}
 	cd3Shape triangle = cd3MakeTriangleShape(t);
 	cd3Manifold m = cd3Collide(c->shape, &triangle, c->speculativeDistance);
 	if (m.pointCount == 0)
@@ -639,7 +645,11 @@ int cd3CollideMesh(const cd3Shape* shape, const cd3Mesh* mesh, cd3Transform mesh
 	}
 	cdReal margin = cdMax(speculativeDistance, CD_R(0.0));
 	cd3Aabb world = cd3AabbInflate(cd3ComputeShapeAabb(shape), margin);
-	CollideContext c = {mesh, shape, meshTransform, speculativeDistance, manifolds, capacity, 0};
+	bool identity = meshTransform.p.x == CD_R(0.0) && meshTransform.p.y == CD_R(0.0) &&
+					meshTransform.p.z == CD_R(0.0) && meshTransform.q.x == CD_R(0.0) &&
+					meshTransform.q.y == CD_R(0.0) && meshTransform.q.z == CD_R(0.0) &&
+					meshTransform.q.w == CD_R(1.0);
+	CollideContext c = {mesh, shape, meshTransform, identity, speculativeDistance, manifolds, capacity, 0};
 	cd3MeshVisitSlots(mesh, cd3MeshBoundsOfWorldAabb(meshTransform, world), CollideSlot, &c);
 	return RemoveGhosts(mesh, meshTransform, manifolds, c.count);
 }

@@ -202,7 +202,8 @@ bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visi
 			{
 				/* A leaf holds up to 8 triangles: each one's own bounds first. */
 				cd3Aabb tb = cd3ComputeTriangleAabb(mesh->triangles[s]);
-				cdReal magnitude = cdMax(cd3Length(cd3Abs(tb.min)), cd3Length(cd3Abs(tb.max)));
+				cd3Vec big = cd3Max(cd3Abs(tb.min), cd3Abs(tb.max));
+				cdReal magnitude = cdMax(big.x, cdMax(big.y, big.z)); /* as the build pads */
 				if (!cd3OverlapAabbAabb(cd3AabbInflate(tb, CD_R(64.0) * CD_REAL_EPSILON * magnitude), bounds))
 				{
 					continue;
