@@ -917,6 +917,62 @@ static void TestExactDepth(void)
 	}
 }
 
+/* Hulls of more vertices than the coordinate arrays hold (EPA's support scans the vertex arrays in
+ * place): EPA and the manifold against the polytope SAT on overlapping pairs. */
+static void TestEpaLargeHulls(void)
+{
+	TestRng rng = {0x1a63u};
+	cd3Hull* hulls[3] = {NULL, NULL, NULL};
+	for (int k = 0; k < 3; ++k)
+	{
+		while (hulls[k] == NULL || hulls[k]->vertexCount <= CD3_SOA_MAX_POINTS)
+		{
+			cd3DestroyHull(hulls[k]);
+			hulls[k] = NULL;
+			cd3Vec points[120];
+			for (int i = 0; i < 120; ++i)
+			{
+				cd3Vec u = RandomUnit(&rng);
+				points[i] = cd3MakeVec(CD_R(0.7) * u.x, CD_R(0.5) * u.y, CD_R(0.6) * u.z);
+			}
+			cd3ComputeHull(points, 120, &hulls[k]);
+		}
+	}
+	int compared = 0;
+	for (int n = 0; n < 20; ++n)
+	{
+		cd3Transform ta = {cd3MakeVec(0, 0, 0), RandomQuat(&rng)};
+		cd3Transform tb = {cd3Scale(CD_R(1.2), RandomUnit(&rng)), RandomQuat(&rng)};
+		cd3Shape a = cd3MakeHullShape(hulls[n % 3], ta);
+		cd3Shape b =
+			PlaceAtDepth(&a, cd3MakeHullShape(hulls[(n + 1) % 3], tb), TestRngRange(&rng, 0.01, 0.05));
+		cd3Polytope pa, pb;
+		cd3InitHullPolytope(&pa, a.hull);
+		cd3InitHullPolytope(&pb, b.hull);
+		cd3SatResult sat = cd3SatPolytopes(&pa, &pb);
+		double separation = (double)cd3SatSeparation(&sat);
+		double size = (double)(pa.size + pb.size);
+		if (!(separation < -5e-3))
+		{
+			continue;
+		}
+		++compared;
+		double tol = 1e-4 * -separation + 4.0 * (double)CD_REAL_EPSILON * size;
+		cd3Penetration epa = cd3Epa(&pa, cd3PolytopeSupport, &pb, cd3PolytopeSupport);
+		TEST_CHECKF(epa.overlapping && fabs((double)epa.depth + separation) <= tol,
+					"#%d (%d and %d vertices): EPA depth %.9g, SAT %.9g", n, pa.vertexCount, pb.vertexCount,
+					(double)epa.depth, -separation);
+		cd3Manifold m = cd3Collide(&a, &b, CD_R(0.0));
+		TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) - separation) <= tol,
+					"#%d: smallest separation %.9g, SAT %.9g", n, MinSeparation(&m), separation);
+	}
+	TEST_CHECKF(compared > 15, "only %d pairs compared", compared);
+	for (int k = 0; k < 3; ++k)
+	{
+		cd3DestroyHull(hulls[k]);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -930,5 +986,6 @@ int main(void)
 	TEST_RUN(TestEpaAgreesWithSat);
 	TEST_RUN(TestSupportScans);
 	TEST_RUN(TestExactDepth);
+	TEST_RUN(TestEpaLargeHulls);
 	return TEST_SUMMARY();
 }
