@@ -255,8 +255,9 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
 		cd3MeshManifold manifolds[16];
 		cd3Box box = {p, {(cdReal)scale, (cdReal)(0.5 * scale), (cdReal)(2.0 * scale)}, CD3_QUAT_IDENTITY};
-		cd3Shape shapes[2] = {sphere, cd3MakeBoxShape(box)};
-		for (int s = 0; s < 2; ++s)
+		cd3Capsule capsule = {p, cd3Add(p, nudge), (cdReal)(0.5 * scale)};
+		cd3Shape shapes[3] = {sphere, cd3MakeBoxShape(box), cd3MakeCapsuleShape(capsule)};
+		for (int s = 0; s < 3; ++s)
 		{
 			int n = cd3CollideMesh(&shapes[s], mesh, CD3_TRANSFORM_IDENTITY, (cdReal)(0.1 * scale), manifolds,
 								   16);
