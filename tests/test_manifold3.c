@@ -654,6 +654,67 @@ static void TestRandomPairs(void)
 	printf("random pairs compared: %d\n", compared);
 }
 
+/* Triangle against triangle through the dispatcher: an exact pair of parallel triangles 0.5 apart,
+ * and on random pairs cd3Collide(a, b) is the pair function and cd3Collide(b, a) reports a contact
+ * exactly when it does, with the opposite normal and the same smallest separation. */
+static void TestTriangleTriangleDispatch(void)
+{
+	cd3Shape a, b;
+	a.type = b.type = CD3_SHAPE_TRIANGLE;
+	a.triangle.a = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	a.triangle.b = cd3MakeVec(CD_R(2.0), CD_R(0.0), CD_R(0.0));
+	a.triangle.c = cd3MakeVec(CD_R(0.0), CD_R(2.0), CD_R(0.0));
+	b.triangle.a = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.5));
+	b.triangle.b = cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.5));
+	b.triangle.c = cd3MakeVec(CD_R(0.0), CD_R(1.0), CD_R(0.5));
+	cd3Manifold m = cd3Collide(&a, &b, CD_R(1.0));
+	cd3Manifold s = cd3Collide(&b, &a, CD_R(1.0));
+	TEST_CHECK(m.pointCount == 3 && s.pointCount == 3);
+	TEST_CHECK_NEAR((double)m.normal.z, 1.0, TOL);
+	TEST_CHECK_NEAR((double)s.normal.z, -1.0, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&m), 0.5, TOL);
+	TEST_CHECK_NEAR(MinSeparation(&s), 0.5, TOL);
+	TEST_CHECK(cd3Collide(&a, &b, CD_R(0.25)).pointCount == 0);
+
+	TestRng rng = {0x7717u};
+	int contacts = 0;
+	for (int n = 0; n < 2000; ++n)
+	{
+		a = RandomShape(&rng, CD3_SHAPE_TRIANGLE);
+		b = RandomShape(&rng, CD3_SHAPE_TRIANGLE);
+		/* Most random triangles miss each other: draw B three quarters of the way towards A. */
+		cd3Vec toA = cd3Sub(cd3Add(cd3Add(a.triangle.a, a.triangle.b), a.triangle.c),
+							cd3Add(cd3Add(b.triangle.a, b.triangle.b), b.triangle.c));
+		b = Translated(&b, cd3Scale(CD_R(0.25), toA));
+		m = cd3Collide(&a, &b, SPECULATIVE);
+		cd3Manifold direct = cd3CollideTriangleTriangle(a.triangle, b.triangle, SPECULATIVE);
+		TEST_CHECKF(m.pointCount == direct.pointCount && cd3VecDistance(m.normal, direct.normal) == CD_R(0.0),
+					"#%d: dispatcher %d points, pair function %d", n, m.pointCount, direct.pointCount);
+		s = cd3Collide(&b, &a, SPECULATIVE);
+		double size = ShapeSize(&a) + ShapeSize(&b);
+		double minSep = MinSeparation(&m);
+		if (m.pointCount > 0)
+		{
+			++contacts;
+		}
+		/* Away from the speculative boundary, where round-off may keep a contact on one side only. */
+		if (fabs(minSep - (double)SPECULATIVE) < 1e-3 * size &&
+			fabs(MinSeparation(&s) - (double)SPECULATIVE) < 1e-3 * size)
+		{
+			continue;
+		}
+		TEST_CHECKF((m.pointCount > 0) == (s.pointCount > 0), "#%d: %d points, swapped %d", n, m.pointCount,
+					s.pointCount);
+		if (m.pointCount > 0 && s.pointCount > 0)
+		{
+			TEST_CHECKF((double)cd3VecDistance(s.normal, cd3Neg(m.normal)) <= 1e-3 &&
+							fabs(MinSeparation(&s) - minSep) <= 1e-4 * size + TOL,
+						"#%d: separation %.9g, swapped %.9g", n, minSep, MinSeparation(&s));
+		}
+	}
+	TEST_CHECKF(contacts > 500, "%d contacts", contacts);
+}
+
 /* EPA (internal) against the polytope SAT on random box and hull pairs: the same depth within
  * 1e-4 relative (plus float round-off of the coordinates), the same overlap answer away from the
  * boundary, and B moved by the EPA depth along its normal just touches A. */
@@ -983,6 +1044,7 @@ int main(void)
 	TEST_RUN(TestCylinders);
 	TEST_RUN(TestDegenerate);
 	TEST_RUN(TestRandomPairs);
+	TEST_RUN(TestTriangleTriangleDispatch);
 	TEST_RUN(TestEpaAgreesWithSat);
 	TEST_RUN(TestSupportScans);
 	TEST_RUN(TestExactDepth);

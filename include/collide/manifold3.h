@@ -11,10 +11,11 @@
  *
  * Depth: for penetrating pairs the smallest separation is minus the penetration depth, found by
  * the separating axis test (face normals and the edge pairs that form faces of the Minkowski
- * difference), which is exact for polytopes. The reference face is chosen with a small bias for
- * stability from frame to frame (A's face over B's, faces over edges) within 1e-3 of the shapes'
- * size, so the reported depth may exceed the exact one by that much at a tie. For separated pairs
- * the smallest separation is the distance (cd3Distance).
+ * difference), which is exact for polytopes (EPA for polytopes with many edge pairs). The
+ * reference face is chosen with a small bias for stability from frame to frame (A's face over B's,
+ * faces over edges) within 1e-3 of the shapes' size; the points' separations are then shifted
+ * (each point kept on A's side) so that the smallest equals the exact SAT/EPA depth. For separated
+ * pairs the smallest separation is the distance (cd3Distance).
  *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
@@ -76,7 +77,7 @@ CD_API cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdRe
  * order. Shapes of different kinds run the pair function in the order above and flip the normal
  * when a and b were swapped, so cd3Collide(b, a) reports the same points, separations and ids with
  * the opposite normal. Two shapes of the same kind run in the given order. Unsupported pairs
- * (planes, segments, triangle-triangle) return an empty manifold. */
+ * (planes, segments) return an empty manifold. */
 CD_API cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeDistance);
 
 #ifdef __cplusplus

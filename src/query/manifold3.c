@@ -1176,9 +1176,13 @@ cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeD
 {
 	CD_ASSERT(a != NULL && b != NULL);
 	int rankA = Rank(a->type), rankB = Rank(b->type);
-	if (rankA < 0 || rankB < 0 || (rankA == 4 && rankB == 4))
+	if (rankA < 0 || rankB < 0)
 	{
 		return EmptyManifold();
+	}
+	if (rankA == 4 && rankB == 4)
+	{
+		return cd3CollideTriangleTriangle(a->triangle, b->triangle, speculativeDistance);
 	}
 	bool swap = rankA > rankB;
 	if (swap)
