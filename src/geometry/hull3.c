@@ -1383,6 +1383,27 @@ static bool NeighboursBelow(const cd3Hull* hull, int face, cdReal tolerance)
 	return true;
 }
 
+/* Twice the area (Newell) over the longest edge, the polygon's height in the thin direction, below
+ * 64 tolerances (compared squared: an overflow counts as thin, which only costs time). */
+static bool IsThin(const cd3Hull* hull, int face, cdReal tolerance)
+{
+	int start = hull->faceEdges[face], h = start;
+	cd3Vec origin = hull->vertices[hull->edges[start].origin];
+	cd3Vec newell = CD3_VEC_ZERO;
+	cdReal longestSquared = CD_R(0.0);
+	do
+	{
+		cd3Vec p = cd3Sub(hull->vertices[hull->edges[h].origin], origin);
+		cd3Vec q = cd3Sub(hull->vertices[hull->edges[hull->edges[h].next].origin], origin);
+		newell = cd3Add(newell, cd3Cross(p, q));
+		cd3Vec edge = cd3Sub(q, p);
+		longestSquared = cdMax(longestSquared, cd3Dot(edge, edge));
+		h = hull->edges[h].next;
+	} while (h != start);
+	cdReal height = CD_R(64.0) * tolerance;
+	return cd3Dot(newell, newell) <= height * height * longestSquared;
+}
+
 static bool AllBelow(const cd3Hull* hull, int face, cdReal tolerance)
 {
 	cd3Plane plane = hull->planes[face];
@@ -1425,10 +1446,11 @@ static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 		return CD_ERROR_NOT_FINITE;
 	}
 	cdReal tolerance = cd3GetHullTolerance(hull);
-	/* Small hulls get the global test (every vertex below every plane) for a few microseconds: a
-	 * thin face's plane, tilted by round-off, can pass its neighbours and not a far vertex
-	 * (fuzz_hull3, double build: lattices far from the origin, a vertex 3% beyond the tolerance). */
-	bool global = (long)hull->vertexCount * (long)hull->faceCount <= 2048;
+	/* A thin face's plane, tilted by round-off, can pass its neighbours and not a far vertex
+	 * (fuzz_hull3, double build: slivers 1e-10 high and 100 long in lattices far from the origin,
+	 * a vertex up to twice the tolerance above): thin faces, and every face of a small hull, get
+	 * the global test (every vertex below the plane). */
+	bool small = (long)hull->vertexCount * (long)hull->faceCount <= 2048;
 	for (int i = 0; i < hull->faceCount; ++i)
 	{
 		cdResult result = CheckFace(hull, i, tolerance);
@@ -1436,6 +1458,7 @@ static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 		{
 			return result;
 		}
+		bool global = small || IsThin(hull, i, tolerance);
 		if (!(global ? AllBelow(hull, i, tolerance) : NeighboursBelow(hull, i, tolerance)))
 		{
 			return CD_ERROR_DEGENERATE;
