@@ -344,7 +344,7 @@ void TestPairs()
 				continue;
 			}
 			Stats st;
-			int count = ta == CD3_SHAPE_HULL && tb == CD3_SHAPE_HULL ? 900 : 600;
+			int count = ta == CD3_SHAPE_HULL && tb == CD3_SHAPE_HULL ? 600 : 400;
 			for (int n = 0; n < count; ++n)
 			{
 				cd3Shape a = RandomShape(&rng, ta, pool), b = RandomShape(&rng, tb, pool);

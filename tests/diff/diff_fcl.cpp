@@ -297,7 +297,7 @@ void TestPairs()
 				continue;
 			}
 			Tally t;
-			const int count = 600;
+			const int count = 400;
 			for (int n = 0; n < count; ++n)
 			{
 				cd3Shape a = RandomShape(&rng, ta, pool), b = RandomShape(&rng, tb, pool);
