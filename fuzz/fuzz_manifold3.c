@@ -11,8 +11,8 @@
  *                       (within the band: not outside the solid, on the triangle);
  *   manifold-overlap    a manifold exists when the shapes overlap deeply, none when cd3Distance
  *                       exceeds the speculative distance by the band;
- *   manifold-separation the smallest separation is cd3Distance for separated pairs, at most the
- *                       band for overlapping ones;
+ *   manifold-separation the smallest separation is cd3Distance (within 1e-3 of the scale) for
+ *                       separated pairs, at most the band for overlapping ones;
  *   manifold-symmetry   cd3Collide(b, a): shapes of different kinds give the same points,
  *                       separations and ids with the opposite normal; shapes of one kind (AABB and
  *                       box are one) agree on whether there is contact away from the boundary.
@@ -29,9 +29,8 @@ static struct
 /* Open findings (fuzz/crashes/README.md, FuzzPassOver): the checks this target's CI run still
  * fails on; FUZZ_STRICT=1 checks them. */
 #define OPEN_FINDINGS                                                                                        \
-	"manifold-empty-normal,manifold-surface,manifold-surface-speculative,manifold-overlap,"                  \
-	"manifold-empty-normal-triangle,manifold-surface-triangle,manifold-surface-speculative-triangle,"        \
-	"manifold-overlap-triangle,manifold-separation-triangle"
+	"manifold-surface,manifold-surface-speculative,manifold-overlap,manifold-surface-triangle,"              \
+	"manifold-surface-speculative-triangle,manifold-overlap-triangle,manifold-separation-triangle"
 
 /* Pairs with a triangle (their own code path, manifold_triangle3.c) fail under the check's name
  * followed by "-triangle". */
@@ -160,7 +159,11 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	if (ab.pointCount > 0)
 	{
 		double smallest = MinSeparation(&ab);
-		if (distance > band && fabs(smallest - distance) > band)
+		/* manifold3.h: a separated pair keeps its SAT manifold when the deepest point realizes the
+		 * distance within a small fraction of the size; 1e-3 of the scale covers it (and is the
+		 * band of the float build). */
+		double realized = fmax(band, 1e-3 * scale);
+		if (distance > band && fabs(smallest - distance) > realized)
 		{
 			Fail("manifold-separation", "smallest separation %.9g, distance %.9g", smallest, distance);
 		}

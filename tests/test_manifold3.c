@@ -715,6 +715,50 @@ static void TestTriangleTriangleDispatch(void)
 	TEST_CHECKF(contacts > 500, "%d contacts", contacts);
 }
 
+static cd3Shape CapsuleShape(double x1, double y1, double z1, double x2, double y2, double z2, double r)
+{
+	cd3Capsule c = {cd3MakeVec((cdReal)x1, (cdReal)y1, (cdReal)z1),
+					cd3MakeVec((cdReal)x2, (cdReal)y2, (cdReal)z2), (cdReal)r};
+	return cd3MakeCapsuleShape(c);
+}
+
+static cd3Shape AabbShape(double x0, double y0, double z0, double x1, double y1, double z1)
+{
+	cd3Aabb box = {cd3MakeVec((cdReal)x0, (cdReal)y0, (cdReal)z0),
+				   cd3MakeVec((cdReal)x1, (cdReal)y1, (cdReal)z1)};
+	return cd3MakeAabbShape(box);
+}
+
+static cd3Shape TriangleShape(double ax, double ay, double az, double bx, double by, double bz, double cx,
+							  double cy, double cz)
+{
+	cd3Triangle t = {cd3MakeVec((cdReal)ax, (cdReal)ay, (cdReal)az),
+					 cd3MakeVec((cdReal)bx, (cdReal)by, (cdReal)bz),
+					 cd3MakeVec((cdReal)cx, (cdReal)cy, (cdReal)cz)};
+	return cd3MakeTriangleShape(t);
+}
+
+/* Findings of fuzz_manifold3 (fuzz/crashes), each pinned by its exact answer. */
+static void TestFuzzFindings(void)
+{
+	/* manifold3-empty-normal: a capsule 1.125 - 0.875 = 0.25 in x from a flat AABB. A face contact
+	 * whose points were all beyond the speculative distance kept the face's normal. */
+	cd3Shape capsule = CapsuleShape(-0.5, 1.625, 1.125, -1, -0.125, -1.5, 0.875);
+	cd3Shape flat = AabbShape(0.625, 1.5, -12.5, 0.625, 6.03e7, 1.125);
+	cd3Manifold m = cd3Collide(&capsule, &flat, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 0 && cd3LengthSquared(m.normal) == CD_R(0.0));
+	m = cd3Collide(&capsule, &flat, CD_R(0.5));
+	TEST_CHECK(m.pointCount == 1);
+	TEST_CHECK_NEAR(MinSeparation(&m), 0.25, TOL);
+	TEST_CHECK_NEAR((double)m.normal.x, 1.0, TOL);
+	/* manifold3-triangle-sphere-empty-normal: a sphere 20 from a 1e9 triangle's nearest corner. */
+	cd3Shape triangle = TriangleShape(8.625, 5e8, -1e9, 1.125, 0.25, 8.25, -0.25, 1e9, -9.75);
+	cd3Sphere ball = {cd3MakeVec(CD_R(-11.75), CD_R(-12.5), CD_R(-6.5)), CD_R(0.5)};
+	cd3Shape sphere = cd3MakeSphereShape(ball);
+	m = cd3Collide(&triangle, &sphere, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 0 && cd3LengthSquared(m.normal) == CD_R(0.0));
+}
+
 /* EPA (internal) against the polytope SAT on random box and hull pairs: the same depth within
  * 1e-4 relative (plus float round-off of the coordinates), the same overlap answer away from the
  * boundary, and B moved by the EPA depth along its normal just touches A. */
@@ -1049,5 +1093,6 @@ int main(void)
 	TEST_RUN(TestSupportScans);
 	TEST_RUN(TestExactDepth);
 	TEST_RUN(TestEpaLargeHulls);
+	TEST_RUN(TestFuzzFindings);
 	return TEST_SUMMARY();
 }

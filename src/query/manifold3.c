@@ -616,7 +616,6 @@ static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b
 		}
 	}
 	*m = EmptyManifold();
-	m->normal = cd3Neg(n);
 	for (int i = 0; i < count; ++i)
 	{
 		cdReal separation = cd3Dot(n, q[i]) - offset - r;
@@ -625,6 +624,10 @@ static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b
 			uint32_t id = ((uint32_t)face & 0xffffu) | ((uint32_t)i << 16);
 			AddPoint(m, cd3MulSub(q[i], r + CD_R(0.5) * separation, n), separation, id);
 		}
+	}
+	if (m->pointCount > 0)
+	{
+		m->normal = cd3Neg(n); /* an empty manifold keeps the zero normal */
 	}
 	return true;
 }
