@@ -738,6 +738,12 @@ static cd3Shape TriangleShape(double ax, double ay, double az, double bx, double
 	return cd3MakeTriangleShape(t);
 }
 
+static cd3Box ShapeBoxOf(const cd3Shape* s)
+{
+	cd3Box box = {cd3AabbCenter(s->aabb), cd3AabbHalfExtents(s->aabb), CD3_QUAT_IDENTITY};
+	return box;
+}
+
 /* Findings of fuzz_manifold3 (fuzz/crashes), each pinned by its exact answer. */
 static void TestFuzzFindings(void)
 {
@@ -757,6 +763,65 @@ static void TestFuzzFindings(void)
 	cd3Shape sphere = cd3MakeSphereShape(ball);
 	m = cd3Collide(&triangle, &sphere, CD_R(0.0));
 	TEST_CHECK(m.pointCount == 0 && cd3LengthSquared(m.normal) == CD_R(0.0));
+
+	/* manifold3-degenerate-box-reference: a point box 0.5 from an AABB's face. The point box's
+	 * faces have no area, so they do not clip the AABB's face: 4 points up to 1 off the point. Now
+	 * one point, midway between the point and the face's nearest point (-0.5, 0, 0). */
+	cd3Shape point = AabbShape(0, 0, 0, 0, 0, 0);
+	point = cd3MakeBoxShape(ShapeBoxOf(&point));
+	cd3Shape slab = AabbShape(-12.5, -1, 0, -0.5, 0, 0.125);
+	m = cd3Collide(&point, &slab, CD_R(1.0));
+	TEST_CHECK(m.pointCount == 1);
+	if (m.pointCount == 1)
+	{
+		TEST_CHECK_NEAR((double)m.points[0].separation, 0.5, TOL);
+		TEST_CHECK((double)cd3VecDistance(m.points[0].point, cd3MakeVec(CD_R(-0.25), CD_R(0.0), CD_R(0.0))) <=
+				   TOL);
+		TEST_CHECK((double)cd3VecDistance(m.normal, cd3MakeVec(CD_R(-1.0), CD_R(0.0), CD_R(0.0))) <= TOL);
+	}
+	/* manifold3-tiny-triangle-point: the same at 1e-7, a triangle against a point AABB (-2.625e-8
+	 * in every coordinate), speculative 1.25e-7: the contact's B side is the point (it was 1.4e-7
+	 * off). */
+	triangle =
+		TriangleShape(-1.625e-8, -1.25e-7, -1.25e-7, -4.375e-8, -1.25e-7, -1.25e-7, 1e-9, 1.5e-8, -5e-9);
+	point = AabbShape(-2.625e-8, -2.625e-8, -2.625e-8, -2.625e-8, -2.625e-8, -2.625e-8);
+	m = cd3Collide(&triangle, &point, CD_R(1.25e-7));
+	TEST_CHECK(m.pointCount == 1);
+	if (m.pointCount == 1)
+	{
+		cd3Vec onB = cd3MulAdd(m.points[0].point, CD_R(0.5) * m.points[0].separation, m.normal);
+		TEST_CHECKF((double)cd3VecDistance(onB, point.aabb.min) <= 1e-3 * 1.25e-7, "%.3g off the point",
+					(double)cd3VecDistance(onB, point.aabb.min));
+		TEST_CHECK_NEAR((double)m.points[0].separation, (double)cd3Distance(&triangle, &point).distance,
+						1e-3 * 1.25e-7);
+	}
+	/* A long capsule of radius 0 passing 1.18e6 from a point box, speculative 5e8 (found by
+	 * fuzz_manifold3 after the fix above): the point's face did not clip the capsule's segment, so
+	 * its far end got separation 0. */
+	cd3Shape needle = CapsuleShape(-1250000, -1250000, -1187500, 500000000, 500000000, 0, 0);
+	point = AabbShape(0, 0, 0, 0, 0, 0);
+	point = cd3MakeBoxShape(ShapeBoxOf(&point));
+	m = cd3Collide(&needle, &point, CD_R(5e8));
+	double gap = (double)cd3Distance(&needle, &point).distance;
+	TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) - gap) <= 1e-4 * gap,
+				"%d points, separation %.9g, distance %.9g", m.pointCount, MinSeparation(&m), gap);
+	/* A flat AABB (no height) overlapping a rotated box: its end faces are segments, whose
+	 * zero-length edges must not clip (clipping to a zero-width slab loses the polygon). */
+	flat = AabbShape(-12.5, 0, -12.5, -3.5, 0, 0);
+	cd3Box turned = {cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(9.375)),
+					 cd3MakeVec(CD_R(12.25), CD_R(12.25), CD_R(12.5)),
+					 cd3MakeQuat(CD_R(0.948683262), CD_R(-0.316227764), CD_R(0.0), CD_R(0.0))};
+	cd3Shape turnedShape = cd3MakeBoxShape(turned);
+	m = cd3Collide(&flat, &turnedShape, CD_R(0.0));
+	cd3Manifold swapped = cd3Collide(&turnedShape, &flat, CD_R(0.0));
+	TEST_CHECKF(m.pointCount > 0 && swapped.pointCount > 0, "%d and %d points", m.pointCount,
+				swapped.pointCount);
+	/* manifold3-huge-triangle-point-overlap: a point 5.5e8 from a 1e9 triangle, touching only
+	 * through the point AABB's faces that did not clip. */
+	triangle = TriangleShape(2.5e8, -1.25e8, -1e9, -1e9, 1e9, -1e9, -4.3e8, -1e9, -1e9);
+	point = AabbShape(-1e9, -1e9, -1e9, -1e9, -1e9, -1e9);
+	m = cd3Collide(&triangle, &point, CD_R(0.0));
+	TEST_CHECK(m.pointCount == 0);
 }
 
 /* EPA (internal) against the polytope SAT on random box and hull pairs: the same depth within

@@ -286,6 +286,78 @@ static uint32_t PackFaceId(int reference, int incident, uint32_t inTag, uint32_t
 	return flip ? id | CD3_FEATURE_FLIP : id;
 }
 
+/* The mean of the face's vertices (world). */
+static cd3Vec FaceCentre(const cd3Polytope* p, int face)
+{
+	cd3Vec sum = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	int count = 0;
+	int e = p->faceEdges[face];
+	do
+	{
+		sum = cd3Add(sum, WorldVertex(p, p->edges[e].origin));
+		++count;
+		e = p->edges[e].next;
+	} while (e != p->faceEdges[face] && count < p->edgeCount);
+	return cd3Scale(CD_R(1.0) / (cdReal)count, sum);
+}
+
+/* The outward normal of the side plane through edge v0-v1 of face `face` (world normal n): zero
+ * (no clipping) for a zero-length edge of a face with no area in that direction (a flat box's end;
+ * bounding the face there would clip the incident polygon to a sliver that round-off loses). False
+ * for a face that is a point (a zero-size box): it has no side planes at all. */
+static bool FaceSideNormal(const cd3Polytope* p, int face, cd3Vec v0, cd3Vec v1, cd3Vec n, cd3Vec* side)
+{
+	*side = cd3Cross(cd3Sub(v1, v0), n);
+	if (cd3LengthSquared(*side) > CD_R(0.0))
+	{
+		return true;
+	}
+	cd3Vec outward = cd3Sub(cd3Lerp(v0, v1, CD_R(0.5)), FaceCentre(p, face));
+	return cd3LengthSquared(cd3MulSub(outward, cd3Dot(outward, n), n)) > CD_R(0.0);
+}
+
+/* A reference face that is a point r (a zero-size box): the incident face clipped to it is where
+ * the line through r along the face normal n crosses it; none when the line passes beside it.
+ * flip: ref is B. */
+static cd3Manifold PointFaceContact(cd3Vec r, cd3Vec n, int face, const cd3Polytope* inc, int incident,
+									bool flip, cdReal speculativeDistance, cdReal size)
+{
+	cd3Manifold m = EmptyManifold();
+	cd3Plane local = inc->planes[incident];
+	cd3Vec incNormal = cd3RotateVector(inc->transform.q, local.normal);
+	cdReal incOffset = local.offset + cd3Dot(incNormal, inc->transform.p);
+	cdReal rate = cd3Dot(incNormal, n);
+	if (!(rate < CD_R(0.0)))
+	{
+		return m;
+	}
+	cdReal separation = (incOffset - cd3Dot(incNormal, r)) / rate;
+	if (!(separation <= speculativeDistance))
+	{
+		return m;
+	}
+	cd3Vec crossing = cd3MulAdd(r, separation, n);
+	/* Inside every side plane of the incident face, within round-off of the shapes' size. */
+	int guard = 0;
+	int e = inc->faceEdges[incident];
+	do
+	{
+		cd3Vec v0 = WorldVertex(inc, inc->edges[e].origin);
+		cd3Vec v1 = WorldVertex(inc, inc->edges[inc->edges[e].next].origin);
+		cd3Vec edge = cd3Sub(v1, v0);
+		cd3Vec side = cd3Cross(edge, incNormal);
+		if (cd3Dot(side, cd3Sub(crossing, v0)) > REALIZED_TOLERANCE * size * cd3Length(edge))
+		{
+			return m;
+		}
+		e = inc->edges[e].next;
+	} while (e != inc->faceEdges[incident] && ++guard < inc->edgeCount);
+	m.normal = flip ? cd3Neg(n) : n;
+	AddPoint(&m, cd3MulAdd(r, CD_R(0.5) * separation, n), separation,
+			 PackFaceId(face, incident, 0u, 0u, flip));
+	return m;
+}
+
 /* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
 static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polytope* inc, bool flip,
 							   cdReal speculativeDistance)
@@ -318,7 +390,12 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 		cd3Vec v0 = v1;
 		int next = ref->edges[e].next;
 		v1 = next == ref->faceEdges[face] ? first : WorldVertex(ref, ref->edges[next].origin);
-		cd3Vec sideNormal = cd3Cross(cd3Sub(v1, v0), n);
+		cd3Vec sideNormal;
+		if (!FaceSideNormal(ref, face, v0, v1, n, &sideNormal))
+		{
+			return PointFaceContact(first, n, face, inc, incident, flip, speculativeDistance,
+									ref->size + inc->size);
+		}
 		uint32_t tag = SIDE_TAG + (uint32_t)(side < (int)SIDE_TAG - 1 ? side : (int)SIDE_TAG - 1);
 		count = ClipToPlane(in, count, sideNormal, v0, tag, out);
 		ClipVertex* t = in;
@@ -521,8 +598,15 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	if (separation <= CD_R(0.0))
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance);
-		MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size));
-		return m;
+		if (m.pointCount > 0)
+		{
+			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size));
+			return m;
+		}
+		/* No contact on the SAT's axis: a degenerate polytope (a point box against a triangle) can
+		 * lack the separating axis, so the distance decides. */
+		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
+		return cp.distance > CD_R(0.0) && cp.distance <= speculativeDistance ? VertexContact(cp) : m;
 	}
 	/* Apart: the SAT separation only bounds the distance from below. The SAT manifold stands when
 	 * its deepest point realizes the distance (closest features face-vertex or edge-edge);
@@ -556,7 +640,11 @@ static bool ClipSegmentToFace(const cd3Polytope* p, int face, cd3Vec n, cd3Vec* 
 	{
 		cd3Vec v0 = WorldVertex(p, p->edges[e].origin);
 		cd3Vec v1 = WorldVertex(p, p->edges[p->edges[e].next].origin);
-		cd3Vec side = cd3Cross(cd3Sub(v1, v0), n);
+		cd3Vec side;
+		if (!FaceSideNormal(p, face, v0, v1, n, &side))
+		{
+			return false;
+		}
 		cdReal start = cd3Dot(side, cd3Sub(*p1, v0));
 		cdReal rate = cd3Dot(side, d);
 		if (rate == CD_R(0.0))
