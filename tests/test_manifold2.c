@@ -340,6 +340,291 @@ static void TestWrappedVertex(void)
 	CheckNormal(&m, (double)gap.x, (double)gap.y);
 }
 
+/* ---- fuzzer findings (fuzz_manifold2, the values of its inputs) -------------------------------- */
+
+static double DistanceToShape(const cd2Shape* s, cd2Vec p);
+
+/* Each point lies midway: point -+ separation/2 * normal within `tolerance` of A / B (0 inside a
+ * solid); the smallest separation is `separation` within `tolerance`. */
+static void CheckFinding(const char* what, const cd2Shape* a, const cd2Shape* b, const cd2Manifold* m,
+						 double separation, double tolerance)
+{
+	TEST_CHECKF(m->pointCount >= 1, "%s: no points", what);
+	TEST_CHECKF(fabs((double)cd2Length(m->normal) - 1.0) <= TOL, "%s: normal of length %.9g", what,
+				(double)cd2Length(m->normal));
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		const cd2ManifoldPoint* p = &m->points[i];
+		double offA = DistanceToShape(a, cd2MulAdd(p->point, CD_R(-0.5) * p->separation, m->normal));
+		double offB = DistanceToShape(b, cd2MulAdd(p->point, CD_R(0.5) * p->separation, m->normal));
+		TEST_CHECKF(offA <= tolerance && offB <= tolerance,
+					"%s: point %d (%.9g %.9g) separation %.9g is %.3g off A, %.3g off B", what, i,
+					(double)p->point.x, (double)p->point.y, (double)p->separation, offA, offB);
+	}
+	if (m->pointCount >= 1)
+	{
+		TEST_CHECKF(fabs(MinSeparation(m) - separation) <= tolerance,
+					"%s: smallest separation %.9g, expected %.9g", what, MinSeparation(m), separation);
+	}
+	if (m->pointCount < 1 || fabs(MinSeparation(m) - separation) > tolerance)
+	{
+		PrintManifold(m);
+	}
+}
+
+static cd2Vec Turned(double x, double y, double angle, cd2Vec origin)
+{
+	double c = cos(angle), s = sin(angle);
+	return cd2Add(origin, V(c * x - s * y, s * x + c * y));
+}
+
+/* Perpendicular capsules (and segments) whose axes share an end point: the cores touch there, so
+ * the shapes overlap by the sum of the radii (fuzz finding manifold2-capsules-shared-end: the far
+ * end of the upright capsule was kept, at a positive separation, and the pair got no contact).
+ * Turned through every angle and moved off the origin, the shared end staying exact. */
+static void TestSharedEnds(void)
+{
+	cd2Capsule a = {V(-0.875, 0), V(0, 0), CD_R(0.0)}, b = {V(0, 0), V(0, 0.625), CD_R(0.5)};
+	cd2Shape sa = cd2MakeCapsuleShape(a), sb = cd2MakeCapsuleShape(b);
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(0.0));
+	CheckFinding("shared end", &sa, &sb, &m, -0.5, TOL);
+	/* Both faces separate by 0 (a tie): B's upright core lies beyond the side line of A's face,
+	 * so B's face holds the contact: A's end pushed into B's side by 0.5, midway at x = -0.25. */
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, 1, 0);
+	CheckPoint(&m, 0, -0.25, 0, -0.5);
+	m = cd2Collide(&sb, &sa, CD_R(0.0));
+	CheckFinding("shared end (b, a)", &sb, &sa, &m, -0.5, TOL);
+
+	/* manifold2-capsules-shared-end-symmetry, at scale 1 and at the fuzzer's 1e9: collide(b, a)
+	 * had no points, collide(a, b) two (the cores touch: 1.625 deep). */
+	for (int k = 0; k < 2; ++k)
+	{
+		double scale = k == 0 ? 1.0 : 1e9;
+		cd2Capsule c = {V(-scale, -scale), V(-scale, scale), (cdReal)(0.625 * scale)};
+		cd2Capsule d = {V(-0.5 * scale, -scale), V(-scale, -scale), (cdReal)scale};
+		cd2Shape sc = cd2MakeCapsuleShape(c), sd = cd2MakeCapsuleShape(d);
+		m = cd2Collide(&sc, &sd, CD_R(0.0));
+		CheckFinding("shared end symmetry (a, b)", &sc, &sd, &m, -1.625 * scale, TOL * scale);
+		m = cd2Collide(&sd, &sc, CD_R(0.0));
+		CheckFinding("shared end symmetry (b, a)", &sd, &sc, &m, -1.625 * scale, TOL * scale);
+	}
+
+	int cases = 0;
+	for (int step = 0; step < 720; ++step)
+	{
+		double angle = step * (3.14159265358979 / 360.0);
+		cd2Vec origin = V(step % 3 == 0 ? 0.0 : 0.3125, step % 2 == 0 ? 0.0 : -0.6875);
+		cd2Vec shared = origin;
+		cd2Vec farA = Turned(-0.875, 0, angle, origin), farB = Turned(0, 0.625, angle, origin);
+		cd2Capsule ca = {farA, shared, CD_R(0.25)}, cb = {shared, farB, CD_R(0.5)};
+		cd2Segment ga = {farA, shared}, gb = {shared, farB};
+		cd2Shape capA = cd2MakeCapsuleShape(ca), capB = cd2MakeCapsuleShape(cb);
+		cd2Shape segA = cd2MakeSegmentShape(ga), segB = cd2MakeSegmentShape(gb);
+		char what[96];
+		snprintf(what, sizeof what, "capsules at %.4f rad", angle);
+		m = cd2CollideCapsuleCapsule(ca, cb, CD_R(0.0));
+		CheckFinding(what, &capA, &capB, &m, -0.75, TOL);
+		m = cd2CollideCapsuleCapsule(cb, ca, CD_R(0.0));
+		CheckFinding(what, &capB, &capA, &m, -0.75, TOL);
+		snprintf(what, sizeof what, "capsule and segment at %.4f rad", angle);
+		m = cd2CollideCapsuleSegment(cb, ga, CD_R(0.0));
+		CheckFinding(what, &capB, &segA, &m, -0.5, TOL);
+		m = cd2CollideCapsuleSegment(ca, gb, CD_R(0.0));
+		CheckFinding(what, &capA, &segB, &m, -0.25, TOL);
+		/* Touching segments: turned, their separation is a rounding error either side of 0, so
+		 * they are asked with a speculative distance of TOL (unturned, with none). */
+		cdReal touching = step == 0 ? CD_R(0.0) : (cdReal)TOL;
+		snprintf(what, sizeof what, "segments at %.4f rad", angle);
+		m = cd2CollideSegmentSegment(ga, gb, touching);
+		CheckFinding(what, &segA, &segB, &m, 0.0, TOL);
+		m = cd2CollideSegmentSegment(gb, ga, touching);
+		CheckFinding(what, &segB, &segA, &m, 0.0, TOL);
+		++cases;
+	}
+	TEST_CHECK(cases == 720);
+}
+
+/* manifold2-box-capsule-overlap-positive: the capsule's axis points straight away from the box
+ * face it faces, so its core edge (offset sideways by the radius) fell beyond the face's side lines
+ * and the far end was kept, at separation +5.35 though the box sits inside the capsule. The core's
+ * near end is outside the face x . axis = 1.25 by d, so the shapes overlap by radius - d along the
+ * face normal. */
+static void TestBoxAlongCapsule(void)
+{
+	double h = 0.5 * sqrt(2.0);
+	cd2Box box = {V(1.875, -0.5), V(1.25, 1.75), {(cdReal)-h, (cdReal)-h}};
+	cd2Capsule capsule = {V(-1.5, -1.5), V(-12.375, -12.375), CD_R(11.875)};
+	cd2Shape sa = cd2MakeBoxShape(box), sb = cd2MakeCapsuleShape(capsule);
+	double axisX = -h, axisY = -h; /* the box's x axis: the face normal towards the capsule */
+	double d = axisX * (-1.5 - 1.875) + axisY * (-1.5 + 0.5) - 1.25;
+	double depth = 11.875 - d;
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(12.375));
+	CheckFinding("box along a capsule", &sa, &sb, &m, -depth, TOL);
+	TEST_CHECK(m.pointCount == 1);
+	CheckNormal(&m, axisX, axisY);
+	/* midway between the face point (core end moved back by d) and the capsule's surface point */
+	double along = 0.5 * (11.875 + d);
+	CheckPoint(&m, 0, -1.5 + along * -axisX, -1.5 + along * -axisY, -depth);
+	cd2Manifold r = cd2Collide(&sb, &sa, CD_R(12.375));
+	CheckFinding("capsule along a box", &sb, &sa, &r, -depth, TOL);
+	CheckNormal(&r, -axisX, -axisY);
+}
+
+/* manifold2-far-speculative-box-box and -aabb-box: shapes 1e9 apart with a speculative distance of
+ * 1e9. In float a box of size 9 at y = 1e9 has its corners rounded to 64: its faces are degenerate,
+ * a closest point was taken as inside one, and that face's tilted normal gave the contact a
+ * separation of 0.89e9 (0.71e9) along it with the point 4.5e8 off the box. The one point along the
+ * gap is the contact: separation the distance, surfaces within round-off of the scale. */
+static void TestFarSpeculative(void)
+{
+	cd2Box a = {V(0.875, -1), V(9.125, 9.125), {CD_R(0.707106829), CD_R(0.707106829)}};
+	cd2Box b = {V(3.25, 1e9), V(9.125, 9.125), {CD_R(-0.44721359), CD_R(0.89442718)}};
+	cd2Shape sa = cd2MakeBoxShape(a), sb = cd2MakeBoxShape(b);
+	/* the lowest corner of b (offsets 9.125 (c + s) below its centre) over the highest of a */
+	double gap = 1e9 - 9.125 * (0.89442718 + 0.44721359) - (-1.0 + 9.125 * sqrt(2.0));
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(1e9));
+	CheckFinding("far boxes", &sa, &sb, &m, gap, 1e-6 * 1e9);
+	CheckNormal(&m, 0, 1);
+	m = cd2Collide(&sb, &sa, CD_R(1e9));
+	CheckFinding("far boxes (b, a)", &sb, &sa, &m, gap, 1e-6 * 1e9);
+	CheckNormal(&m, 0, -1);
+
+	cd2Aabb aabb = {V(-1.25000001e-08, -3.74999987e-09), V(1.125e-08, 9.99999994e-09)};
+	cd2Box tiny = {
+		V(-1e9, 9.99999972e-10), V(6.50000018e-08, 4.99999997e-09), {CD_R(-0.707106769), CD_R(-0.707106769)}};
+	sa = cd2MakeAabbShape(aabb);
+	sb = cd2MakeBoxShape(tiny);
+	m = cd2Collide(&sa, &sb, CD_R(1e9));
+	CheckFinding("far AABB and box", &sa, &sb, &m, 1e9, 1e-6 * 1e9);
+	CheckNormal(&m, -1, 0);
+	m = cd2Collide(&sb, &sa, CD_R(1e9));
+	CheckFinding("far box and AABB", &sb, &sa, &m, 1e9, 1e-6 * 1e9);
+	CheckNormal(&m, 1, 0);
+}
+
+/* manifold2-huge-capsules-surface: a small capsule inside a capsule of radius 1e9 whose axis
+ * crosses it; the point was 2.9e8 off the small one. In float the axes' crossing is known to about
+ * 64 only, so the depth is the big radius within round-off of the scale. */
+static void TestCapsuleInHugeCapsule(void)
+{
+	cd2Capsule a = {V(-0.174999997, -1.1875), V(-1.03750002, 0.125), CD_R(0.137500003)};
+	cd2Capsule b = {V(0, 9.99999972e-10), V(-1e9, -1e9), CD_R(1e9)};
+	cd2Shape sa = cd2MakeCapsuleShape(a), sb = cd2MakeCapsuleShape(b);
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(1e9));
+	CheckFinding("capsule in a huge capsule", &sa, &sb, &m, -1e9, 1e-6 * 1e9);
+	m = cd2Collide(&sb, &sa, CD_R(1e9));
+	CheckFinding("huge capsule around a capsule", &sb, &sa, &m, -1e9, 1e-6 * 1e9);
+
+	/* A capsule of radius 5e8 standing upright across a long segment (its lower end 0.54 under
+	 * it): its core edge offset sideways by the radius reached past the segment's end, the
+	 * deepest vertex's point was clipped there, and the pair got no contact. Deep by the radius
+	 * (plus 0.54, below round-off at this scale). */
+	cd2Capsule upright = {V(7.875, 5e8), V(-9.25, -7.625), CD_R(5e8)};
+	cd2Capsule across = {V(5e8, -11.625), V(-1e9, 2), CD_R(0.0)};
+	sa = cd2MakeCapsuleShape(upright);
+	sb = cd2MakeCapsuleShape(across);
+	m = cd2Collide(&sa, &sb, CD_R(0.0));
+	CheckFinding("upright capsule across a segment", &sa, &sb, &m, -5e8, 1e-6 * 1e9);
+	m = cd2Collide(&sb, &sa, CD_R(0.0));
+	CheckFinding("segment across an upright capsule", &sb, &sa, &m, -5e8, 1e-6 * 1e9);
+}
+
+static double ReferenceSeparation(const cd2Shape* a, const cd2Shape* b);
+
+/* A thin triangle deep inside a rounded quad (radius 12.5): the quad's incident edge lies beyond
+ * the side lines of the triangle's reference edge, and the one end kept must be the deeper one
+ * (the other end gave -13.4 for a depth of 20.5, its point 0.68 off the triangle). Found by
+ * fuzz_manifold2 while the end nearer to the reference edge was kept. */
+static void TestTriangleInRoundedQuad(void)
+{
+	cd2Vec pa[3] = {V(-12, -12.5), V(-1, -1), V(-0.25, 0.375)};
+	cd2Vec pb[4] = {V(-12.5, -12.5), V(0.375, -12.5), V(-0.25, 1.125), V(-11.875, -0.75)};
+	cd2Polygon a, b;
+	TEST_CHECK(cd2MakePolygon(pa, 3, &a) == CD_OK && cd2MakeRoundedPolygon(pb, 4, CD_R(12.5), &b) == CD_OK);
+	cd2Shape sa = cd2MakePolygonShape(&a), sb = cd2MakePolygonShape(&b);
+	double depth = -ReferenceSeparation(&sa, &sb);
+	TEST_CHECK(depth > 20.0);
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(0.0));
+	CheckFinding("triangle in a rounded quad", &sa, &sb, &m, -depth, 20.0 * TOL);
+	m = cd2Collide(&sb, &sa, CD_R(0.0));
+	CheckFinding("rounded quad around a triangle", &sb, &sa, &m, -depth, 20.0 * TOL);
+}
+
+/* A circle of radius 1e9 whose edge reaches a box of size 3.5 at x = -1e9: in float the box's
+ * corners round to x = -1e9 exactly, a vertical segment whatever the box's rotation (87.7 degrees
+ * here), and the face region was judged along that edge while the face point moves along the
+ * box's tilted normal: the point was 4e7 off the box. The box and the circle touch within
+ * round-off of the scale: one point of separation 0 within 1e-6 of it. */
+static void TestCircleReachingFarBox(void)
+{
+	cd2Circle circle = {V(0, -12.375), CD_R(1e9)};
+	cd2Box box = {V(-1e9, -12.5), V(1.75, 2.5), {CD_R(0.0399680361), CD_R(-0.99920094)}};
+	cd2Shape sa = cd2MakeCircleShape(circle), sb = cd2MakeBoxShape(box);
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(12.5));
+	CheckFinding("circle reaching a far box", &sa, &sb, &m, 0.0, 1e-6 * 1e9);
+	m = cd2Collide(&sb, &sa, CD_R(12.5));
+	CheckFinding("far box in a circle's reach", &sb, &sa, &m, 0.0, 1e-6 * 1e9);
+}
+
+/* A segment standing nearly square to another and ending 1e-4 short of its end (within the 0.1
+ * slop in which cores count as touching): clipped to the short segment's side line, the long one's
+ * contact ran out to its far end, at separation 1 instead of the gap 1e-4. Found by fuzz_manifold2
+ * in the double build at 1e30 (a segment of length 1e30 rising 1.3e-5 over its length). */
+static void TestSegmentShortOfEnd(void)
+{
+	cd2Segment a = {V(0, 0), V(0, 0.01)}, b = {V(0, -1e-4), V(1, 0)};
+	cd2Shape sa = cd2MakeSegmentShape(a), sb = cd2MakeSegmentShape(b);
+	/* the gap: from a's lower end (the origin) to its closest point on b, in double */
+	double bx = (double)b.p2.x - (double)b.p1.x, by = (double)b.p2.y - (double)b.p1.y;
+	double t = fmax(0.0, fmin(1.0, -((double)b.p1.x * bx + (double)b.p1.y * by) / (bx * bx + by * by)));
+	double gap = hypot((double)b.p1.x + t * bx, (double)b.p1.y + t * by);
+	TEST_CHECK(gap > 0.9e-4 && gap < 1.1e-4);
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(2.0));
+	CheckFinding("segment short of another's end", &sa, &sb, &m, gap, TOL);
+	m = cd2Collide(&sb, &sa, CD_R(2.0));
+	CheckFinding("segment short of another's end (b, a)", &sb, &sa, &m, gap, TOL);
+	/* The same with a box's face as the short edge: a long segment rising 1e-3 per unit, ending
+	 * 1e-4 under the box's lower left corner. Clipped to the box's left face, its contact was 0.1
+	 * from the box at x = -0.6 (and 999.5 at the face's top); the gap is 1e-4. */
+	cd2Aabb box = {V(-0.5, -0.5), V(0.5, 0.5)};
+	cd2Segment under = {V(-0.5, -0.5001), V(-1000, 0.5)};
+	sa = cd2MakeAabbShape(box);
+	sb = cd2MakeSegmentShape(under);
+	bx = (double)under.p2.x - (double)under.p1.x;
+	by = (double)under.p2.y - (double)under.p1.y;
+	double cx = -0.5 - (double)under.p1.x, cy = -0.5 - (double)under.p1.y;
+	t = fmax(0.0, fmin(1.0, (cx * bx + cy * by) / (bx * bx + by * by)));
+	gap = hypot(cx - t * bx, cy - t * by);
+	TEST_CHECK(gap > 0.9e-4 && gap < 1.1e-4);
+	m = cd2Collide(&sa, &sb, CD_R(0.2));
+	CheckFinding("segment under a box's corner", &sa, &sb, &m, gap, TOL);
+	m = cd2Collide(&sb, &sa, CD_R(0.2));
+	CheckFinding("segment under a box's corner (b, a)", &sb, &sa, &m, gap, TOL);
+#if CD_DOUBLE
+	/* fuzz_manifold2, double build: the same with a box of 7e-19 by 2e-30 and a segment 7.3e12 long,
+	 * 7.125e-5 under it, whose contact was 7.3e12 from the box */
+	cd2Box speck = {V(0, 0), V(3.60549004e-19, 1e-30), {CD_R(-1.0), CD_R(0.0)}};
+	cd2Segment beneath = {V(-7.31282984e+12, 3.60549004e-19), V(-1e-30, -7.125e-05)};
+	sa = cd2MakeBoxShape(speck);
+	sb = cd2MakeSegmentShape(beneath);
+	m = cd2Collide(&sa, &sb, CD_R(7.31282984e+12));
+	CheckFinding("segment 7.3e12 long under a speck", &sa, &sb, &m, 7.125e-5, 1e-9);
+	m = cd2Collide(&sb, &sa, CD_R(7.31282984e+12));
+	CheckFinding("segment 7.3e12 long under a speck (b, a)", &sb, &sa, &m, 7.125e-5, 1e-9);
+
+	cd2Segment c = {V(1.625e-06, 1.625e-06), V(1.625e-06, 2.125e-06)};
+	cd2Segment d = {V(1.625e-06, -1.1375e-05), V(1e30, 1.625e-06)};
+	sa = cd2MakeSegmentShape(c);
+	sb = cd2MakeSegmentShape(d);
+	/* the gap runs from c's lower end straight down to d's start (d rises 1.3e-5 over 1e30) */
+	m = cd2Collide(&sa, &sb, CD_R(1e30));
+	CheckFinding("segment of length 1e30 short of a segment", &sa, &sb, &m, 1.3e-5, 1e-9);
+	m = cd2Collide(&sb, &sa, CD_R(1e30));
+	CheckFinding("segment of length 1e30 short of a segment (b, a)", &sb, &sa, &m, 1.3e-5, 1e-9);
+#endif
+}
+
 /* ---- random properties ------------------------------------------------------------------------ */
 
 static cd2Shape PointShape(cd2Vec p)
@@ -857,6 +1142,13 @@ int main(void)
 	TEST_RUN(TestCircles);
 	TEST_RUN(TestCapsulesAndSegments);
 	TEST_RUN(TestWrappedVertex);
+	TEST_RUN(TestSharedEnds);
+	TEST_RUN(TestBoxAlongCapsule);
+	TEST_RUN(TestFarSpeculative);
+	TEST_RUN(TestCapsuleInHugeCapsule);
+	TEST_RUN(TestTriangleInRoundedQuad);
+	TEST_RUN(TestCircleReachingFarBox);
+	TEST_RUN(TestSegmentShortOfEnd);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestSymmetryAndInvariance);
 	TEST_RUN(TestChainNoGhosts);

@@ -8,10 +8,13 @@
  *   flicker); the incident edge of the other core, the one facing it most, is clipped to the
  *   reference edge's side lines and its points below the speculative distance are kept. When the
  *   cores are apart, the closest points of the two max-separation edges decide between a face
- *   contact (clip as above) and a vertex-vertex contact (one point, normal along the gap): the
- *   separation along a direction is unimodal where it is positive, so a core whose max
- *   separation is positive has its closest feature on its max-separation edge; the other core's
- *   edges are all searched when its own max separation is not positive.
+ *   contact (clip as above, when a closest point lies inside an edge and the clip keeps points
+ *   over that face) and one point along the gap, normal along it (vertex against vertex, or a
+ *   face that is not what is closest): the separation along a direction is unimodal where it is
+ *   positive, so a core whose max separation is positive has its closest feature on its
+ *   max-separation edge; the other core's edges are all searched when its own max separation is
+ *   not positive. Either way every point lies midway between the two surfaces along the
+ *   manifold's normal (manifold2.h), far speculative contacts included.
  * - chain segment: the two-sided segment's manifold, with its normal checked against the
  *   directions the chain allows (see cd2ChainSegment).
  * Points are reported midway between the surfaces; the normal points from A to B. */
@@ -28,7 +31,12 @@
 #define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
 
 #define VERTEX_FEATURE 0x100u
+/* Feature codes (bits 16+) of a single point along the gap between separated cores: vertex
+ * against vertex, plus these when A's or B's closest point lies inside an edge (the id then holds
+ * that edge's index instead of a vertex's). */
 #define CODE_VERTEX_VERTEX 4u
+#define CODE_EDGE_A 1u
+#define CODE_EDGE_B 2u
 
 typedef struct Core
 {
@@ -180,13 +188,17 @@ static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal specula
 	cdReal coreSeparation = edgeSeparation;
 	uint32_t id = (uint32_t)edge;
 	/* Inside a polygon core the face is the answer; a segment core has no inside. Outside, the
-	 * point is in the region of v1 or v2 when it projects beyond that end of the edge. */
+	 * point is in the region of v1 or v2 when it projects beyond that end of the edge. Measured
+	 * along the normal's own tangent, not the edge v2 - v1: the face point is the centre moved
+	 * along the normal, and at large coordinates the rounded vertices of a small polygon can make
+	 * an edge that is not square to its normal (a box of size 2 at x = 1e9 in float is a
+	 * vertical segment whatever its rotation), which put points far off to the side in the face
+	 * region. */
 	if (edgeSeparation > CD_R(0.0) || k->count == 2)
 	{
-		cd2Vec e = cd2Sub(v2, v1);
-		int vertex = cd2Dot(cd2Sub(center, v1), e) <= CD_R(0.0)	  ? edge
-					 : cd2Dot(cd2Sub(center, v2), e) >= CD_R(0.0) ? next
-																  : -1;
+		cd2Vec tangent = cd2LeftPerp(normal);
+		cdReal along = cd2Dot(tangent, cd2Sub(center, v1));
+		int vertex = along <= CD_R(0.0) ? edge : along >= cd2Dot(tangent, cd2Sub(v2, v1)) ? next : -1;
 		if (vertex >= 0)
 		{
 			cdReal distance;
@@ -241,6 +253,14 @@ static cdReal MaxSeparation(const Core* a, const Core* b, int* edge, cdReal limi
 	return best;
 }
 
+/* A bound on the rounding of positions along an edge computed from these points: closer than
+ * this they count as equal. */
+static cdReal RoundingSlack(cd2Vec p, cd2Vec q, cd2Vec r)
+{
+	cdReal magnitude = cdAbs(p.x) + cdAbs(p.y) + cdAbs(q.x) + cdAbs(q.y) + cdAbs(r.x) + cdAbs(r.y);
+	return CD_R(8.0) * CD_REAL_EPSILON * magnitude;
+}
+
 /* Clips the incident edge of `incident` (the one facing the reference normal most) to the side
  * lines of the reference edge and keeps the points within the speculative distance. `flip` says
  * that the reference is B. Without `keepOutside`, an incident edge entirely beyond one side line
@@ -287,9 +307,28 @@ static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* in
 		{
 			return manifold;
 		}
-		/* Beyond one side line: keep the end nearer to the reference edge's extent. */
+		/* Beyond one side line: keep the core end nearer to the reference edge's extent (it is
+		 * where the incident edge enters the face region), the deeper one when both are equally
+		 * near within round-off. Measured on the core ends, not on the surface ends: a rounded
+		 * incident edge tilted from the reference face has its surface offset along the face by
+		 * up to its radius (sideways for a capsule standing upright on the face's end, where the
+		 * tie then took the far end of capsules meeting at a common end point: no contact). */
 		bool below = along[0] < CD_R(0.0);
-		int keep = (below ? along[0] > along[1] : along[0] < along[1]) ? 0 : 1;
+		cdReal beyond[2];
+		for (int i = 0; i < 2; ++i)
+		{
+			cdReal position = cd2Dot(tangent, cd2Sub(core[i], v1));
+			beyond[i] = cdMax(below ? -position : position - upper, CD_R(0.0));
+		}
+		int keep;
+		if (cdAbs(beyond[0] - beyond[1]) <= RoundingSlack(core[0], core[1], v1))
+		{
+			keep = cd2Dot(n, cd2Sub(core[0], core[1])) <= CD_R(0.0) ? 0 : 1;
+		}
+		else
+		{
+			keep = beyond[0] < beyond[1] ? 0 : 1;
+		}
 		w[0] = w[keep];
 		core[0] = core[keep];
 		code[0] = code[keep];
@@ -318,26 +357,20 @@ static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* in
 
 	if (incident->radius > CD_R(0.0))
 	{
-		/* The deepest unclipped core vertex: its surface point straight against n, if that stays
-		 * over the reference edge. */
-		int deepest = -1;
-		if (pointCount == 1)
+		/* The deepest core vertex: its surface point straight against n, if that stays
+		 * over the reference edge (up to its rounding: a vertex right at the edge's end, such as an
+		 * upright capsule's end standing on it, comes out a rounding error beyond it, and its
+		 * sideways surface point would be reported instead, up to a radius too shallow). */
+		int deepest = pointCount == 1 ? 0 : cd2Dot(n, cd2Sub(core[0], core[1])) <= CD_R(0.0) ? 0 : 1;
+		cd2Vec straight = cd2MulSub(core[deepest], incident->radius, n);
+		cdReal t = cd2Dot(tangent, cd2Sub(straight, v1));
+		cdReal slack = RoundingSlack(straight, v1, v2);
+		if (pointCount == 1 || (-slack <= t && t <= upper + slack))
 		{
-			deepest = 0;
-		}
-		else if (code[0] < 2u || code[1] < 2u)
-		{
-			int i = cd2Dot(n, core[0]) <= cd2Dot(n, core[1]) ? 0 : 1;
-			deepest = code[i] < 2u ? i : -1;
-		}
-		if (deepest >= 0)
-		{
-			cd2Vec straight = cd2MulSub(core[deepest], incident->radius, n);
-			cdReal t = cd2Dot(tangent, cd2Sub(straight, v1));
-			if (pointCount == 1 || (CD_R(0.0) <= t && t <= upper))
-			{
-				w[deepest] = straight;
-			}
+			/* Also when its surface point was clipped: an incident edge square to the reference
+			 * one has its surface offset sideways, beyond a side line while the vertex is not. */
+			w[deepest] = straight;
+			code[deepest] = pointCount == 1 ? code[0] : (uint32_t)deepest;
 		}
 	}
 
@@ -401,6 +434,56 @@ static cd2ClosestPoints ClosestEdge(cd2Segment segment, const Core* core, int* e
 	return best;
 }
 
+/* One point along the gap between the closest points of two cores that are apart (distance > 0):
+ * midway between their surfaces, normal from a to b. */
+static cd2Manifold GapContact(const Core* a, const Core* b, cd2ClosestPoints closest, int edgeA, int edgeB)
+{
+	cd2Manifold manifold = EmptyManifold();
+	cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
+	int vertexA = EndpointIndex(a, edgeA, closest.pointA);
+	int vertexB = EndpointIndex(b, edgeB, closest.pointB);
+	cd2Vec onA = cd2MulAdd(closest.pointA, a->radius, u);
+	cd2Vec onB = cd2MulSub(closest.pointB, b->radius, u);
+	uint32_t featureA = vertexA >= 0 ? (uint32_t)vertexA : (uint32_t)edgeA;
+	uint32_t featureB = vertexB >= 0 ? (uint32_t)vertexB : (uint32_t)edgeB;
+	uint32_t code = CODE_VERTEX_VERTEX + (vertexA < 0 ? CODE_EDGE_A : 0u) + (vertexB < 0 ? CODE_EDGE_B : 0u);
+	manifold.normal = u;
+	AddPoint(&manifold, cd2Scale(CD_R(0.5), cd2Add(onA, onB)), closest.distance - (a->radius + b->radius),
+			 featureA | featureB << 8 | code << 16);
+	return manifold;
+}
+
+static cdReal SmallestSeparation(const cd2Manifold* manifold)
+{
+	cdReal smallest = CD_REAL_MAX;
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		smallest = cdMin(smallest, manifold->points[i].separation);
+	}
+	return smallest;
+}
+
+/* The closest points of two cores and the edges that hold them (in: the max-separation edges).
+ * With both separations positive, each max-separation edge holds its core's closest feature (the
+ * unimodality above); when only one is, the other core's edges are searched. */
+static cd2ClosestPoints ClosestCores(const Core* a, const Core* b, cdReal separationA, cdReal separationB,
+									 int* edgeA, int* edgeB)
+{
+	if (separationA > CD_R(0.0) && separationB > CD_R(0.0))
+	{
+		return cd2ClosestPointsSegmentSegment(EdgeSegment(a, *edgeA), EdgeSegment(b, *edgeB));
+	}
+	if (separationA >= separationB)
+	{
+		return ClosestEdge(EdgeSegment(a, *edgeA), b, edgeB);
+	}
+	cd2ClosestPoints closest = ClosestEdge(EdgeSegment(b, *edgeB), a, edgeA);
+	cd2Vec swap = closest.pointA;
+	closest.pointA = closest.pointB;
+	closest.pointB = swap;
+	return closest;
+}
+
 static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
 {
 	cdReal total = a->radius + b->radius;
@@ -421,26 +504,16 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	 * segments are separated along their common direction, which is neither one's normal. */
 	cdReal slop = CD_LINEAR_SLOP;
 	cdReal separatedTolerance = SEPARATED_SLOPS * slop;
-	if ((a->count == 2 && b->count == 2) || cdMax(separationA, separationB) > separatedTolerance)
+	bool segments = a->count == 2 && b->count == 2;
+	cd2ClosestPoints closest = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0)};
+	/* Own copies: the search below may move them, and the separating-axis path after this block
+	 * (cores within the tolerance) needs the max-separation edges themselves. */
+	int closestEdgeA = edgeA, closestEdgeB = edgeB;
+	bool haveClosest = false;
+	if (segments || cdMax(separationA, separationB) > separatedTolerance)
 	{
-		/* With both separations positive, each max-separation edge holds its core's closest
-		 * feature (the unimodality above). When only one is, the other core's edges are searched. */
-		cd2ClosestPoints closest;
-		if (separationA > CD_R(0.0) && separationB > CD_R(0.0))
-		{
-			closest = cd2ClosestPointsSegmentSegment(EdgeSegment(a, edgeA), EdgeSegment(b, edgeB));
-		}
-		else if (separationA >= separationB)
-		{
-			closest = ClosestEdge(EdgeSegment(a, edgeA), b, &edgeB);
-		}
-		else
-		{
-			closest = ClosestEdge(EdgeSegment(b, edgeB), a, &edgeA);
-			cd2Vec swap = closest.pointA;
-			closest.pointA = closest.pointB;
-			closest.pointB = swap;
-		}
+		closest = ClosestCores(a, b, separationA, separationB, &closestEdgeA, &closestEdgeB);
+		haveClosest = true;
 		if (closest.distance > separatedTolerance)
 		{
 			if (closest.distance - total > speculativeDistance)
@@ -448,31 +521,68 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 				return EmptyManifold();
 			}
 			cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
-			int vertexA = EndpointIndex(a, edgeA, closest.pointA);
-			int vertexB = EndpointIndex(b, edgeB, closest.pointB);
-			if (vertexA >= 0 && vertexB >= 0)
+			int vertexA = EndpointIndex(a, closestEdgeA, closest.pointA);
+			int vertexB = EndpointIndex(b, closestEdgeB, closest.pointB);
+			/* A closest point inside an edge makes a face contact, unless the incident edge lies
+			 * wholly beyond the face's side lines (or its points beyond the speculative distance):
+			 * then the face is not what is closest (a face made degenerate by round-off at large
+			 * coordinates, or an incident edge far from the closest vertex), its separation along
+			 * the face normal would underestimate the gap, and the one point along the gap is
+			 * the contact. */
+			if (vertexA < 0 || vertexB < 0)
 			{
-				cd2Manifold manifold = EmptyManifold();
-				cd2Vec onA = cd2MulAdd(closest.pointA, a->radius, u);
-				cd2Vec onB = cd2MulSub(closest.pointB, b->radius, u);
-				manifold.normal = u;
-				AddPoint(&manifold, cd2Scale(CD_R(0.5), cd2Add(onA, onB)), closest.distance - total,
-						 (uint32_t)vertexA | (uint32_t)vertexB << 8 | CODE_VERTEX_VERTEX << 16);
-				return manifold;
+				cd2Manifold face = vertexA < 0 ? Clip(a, FacingEdge(a, closestEdgeA, u), b, false,
+													  speculativeDistance, false)
+											   : Clip(b, FacingEdge(b, closestEdgeB, cd2Neg(u)), a, true,
+													  speculativeDistance, false);
+				if (face.pointCount > 0)
+				{
+					return face;
+				}
 			}
-			if (vertexA < 0)
-			{
-				return Clip(a, FacingEdge(a, edgeA, u), b, false, speculativeDistance, true);
-			}
-			return Clip(b, FacingEdge(b, edgeB, cd2Neg(u)), a, true, speculativeDistance, true);
+			return GapContact(a, b, closest, closestEdgeA, closestEdgeB);
 		}
 	}
 
-	if (separationB > separationA + FLIP_SLOPS * slop)
+	/* On a near tie between the two faces (A's preferred), the incident edge may lie wholly beyond
+	 * the preferred face's side lines, where its one kept point would project off that face: the
+	 * other face, nearly as good an axis, then holds the contact if its clip keeps points. */
+	cdReal flipTolerance = FLIP_SLOPS * slop;
+	bool flip = separationB > separationA + flipTolerance;
+	cd2Manifold manifold = flip ? Clip(b, edgeB, a, true, speculativeDistance, false)
+								: Clip(a, edgeA, b, false, speculativeDistance, false);
+	if (manifold.pointCount == 0 && !flip && separationB >= separationA - flipTolerance)
 	{
-		return Clip(b, edgeB, a, true, speculativeDistance, true);
+		manifold = Clip(b, edgeB, a, true, speculativeDistance, false);
 	}
-	return Clip(a, edgeA, b, false, speculativeDistance, true);
+	if (manifold.pointCount == 0)
+	{
+		manifold = flip ? Clip(b, edgeB, a, true, speculativeDistance, true)
+						: Clip(a, edgeA, b, false, speculativeDistance, true);
+	}
+	/* Cores within the tolerance that do not overlap: their separation is exactly the gap minus
+	 * the radii. The clipped face misses it when the incident edge stands nearly square to a short
+	 * reference edge and just short of its end (clipped at the side line, the point runs out to
+	 * the incident edge's far end, beyond the separating-axis value): then the one point along the
+	 * gap is the contact. */
+	bool apart = segments || cdMax(separationA, separationB) > CD_R(0.0);
+	bool missed =
+		manifold.pointCount == 0 ||
+		SmallestSeparation(&manifold) > cdMax(separationA, separationB) - total + separatedTolerance;
+	if (apart && missed)
+	{
+		if (!haveClosest)
+		{
+			closest = ClosestCores(a, b, separationA, separationB, &closestEdgeA, &closestEdgeB);
+		}
+		if (closest.distance > CD_R(0.0) && closest.distance - total <= speculativeDistance &&
+			(manifold.pointCount == 0 ||
+			 SmallestSeparation(&manifold) > closest.distance - total + separatedTolerance))
+		{
+			return GapContact(a, b, closest, closestEdgeA, closestEdgeB);
+		}
+	}
+	return manifold;
 }
 
 /* Any two cores, normal from a to b. */
