@@ -42,9 +42,13 @@ static struct
 	cdReal target, tolerance;
 } s_case;
 
+/* Open findings (fuzz/crashes/README.md, FuzzPassOver): checks that inputs within reach of the CI
+ * run still fail; FUZZ_STRICT=1 checks them. */
+#define OPEN_FINDINGS "cast-free"
+
 static void Fail(const char* check, const char* format, ...)
 {
-	if (FuzzSkipped(check))
+	if (FuzzPassOver("fuzz_cast", OPEN_FINDINGS, check))
 	{
 		return;
 	}
