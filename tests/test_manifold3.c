@@ -816,6 +816,30 @@ static void TestFuzzFindings(void)
 	cd3Manifold swapped = cd3Collide(&turnedShape, &flat, CD_R(0.0));
 	TEST_CHECKF(m.pointCount > 0 && swapped.pointCount > 0, "%d and %d points", m.pointCount,
 				swapped.pointCount);
+	/* manifold3-tiny-triangle-box: a triangle of size 1e-7 got a zero normal (its cross product,
+	 * 1e-14 long, was below cd3Normalize's absolute threshold), so the SAT missed its face axis
+	 * and reported a penetration for shapes 8e-10 apart. The same pair scaled by 1e8 is the
+	 * reference: the same points, separations scaled by 1e8. */
+	double scales[2] = {1.0, 1e8};
+	cd3Manifold scaled[2];
+	for (int k = 0; k < 2; ++k)
+	{
+		double f = scales[k];
+		cd3Shape tiny = TriangleShape(-1.875e-8 * f, -1.125e-8 * f, 8.75e-9 * f, -1.875e-8 * f, 0,
+									  -1.15e-7 * f, -1.25e-7 * f, 1.5e-8 * f, -8.75e-9 * f);
+		cd3Box slabBox = {cd3MakeVec((cdReal)(7.5e-9 * f), (cdReal)(7.5e-9 * f), (cdReal)(-7.5e-9 * f)),
+						  cd3MakeVec((cdReal)(3.75e-8 * f), (cdReal)(1.375e-8 * f), (cdReal)(1e-9 * f)),
+						  CD3_QUAT_IDENTITY};
+		cd3Shape slabShape = cd3MakeBoxShape(slabBox);
+		scaled[k] = cd3Collide(&tiny, &slabShape, (cdReal)(8.75e-9 * f));
+	}
+	TEST_CHECKF(scaled[0].pointCount == scaled[1].pointCount && scaled[0].pointCount > 0, "%d vs %d points",
+				scaled[0].pointCount, scaled[1].pointCount);
+	TEST_CHECKF(MinSeparation(&scaled[0]) > 0.0 &&
+					fabs(MinSeparation(&scaled[0]) * 1e8 - MinSeparation(&scaled[1])) <=
+						1e-3 * fabs(MinSeparation(&scaled[1])),
+				"separation %.9g, scaled %.9g", MinSeparation(&scaled[0]), MinSeparation(&scaled[1]));
+	TEST_CHECK((double)cd3VecDistance(scaled[0].normal, scaled[1].normal) <= 1e-4);
 	/* manifold3-huge-triangle-point-overlap: a point 5.5e8 from a 1e9 triangle, touching only
 	 * through the point AABB's faces that did not clip. */
 	triangle = TriangleShape(2.5e8, -1.25e8, -1e9, -1e9, 1e9, -1e9, -4.3e8, -1e9, -1e9);

@@ -104,12 +104,16 @@ void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 {
 	cd3Vec ab = cd3Sub(t.b, t.a), bc = cd3Sub(t.c, t.b), ca = cd3Sub(t.a, t.c);
 	cdReal lab = cd3LengthSquared(ab), lbc = cd3LengthSquared(bc), lca = cd3LengthSquared(ca);
-	cd3Vec cross = cd3Cross(ab, cd3Neg(ca));
+	/* The cross product of the edges scaled to the longest one: a triangle of size 1e-7 has a
+	 * cross product of length 1e-14, below what cd3Normalize accepts (an absolute threshold). */
+	cdReal longest = cdMax(lab, cdMax(lbc, lca));
+	cdReal unit = longest > CD_R(0.0) ? CD_R(1.0) / cdSqrt(longest) : CD_R(0.0);
+	cd3Vec cross = cd3Cross(cd3Scale(unit, ab), cd3Scale(-unit, ca));
+	cdReal crossLength = cd3Length(cross);
 	/* A collinear triangle (within round-off) is the segment of its longest edge: its normal
 	 * would be noise, so it gets zero normals (face axes skipped) and one edge axis, with the
 	 * longest edge moved to a-b. */
-	cdReal longest = cdMax(lab, cdMax(lbc, lca));
-	bool collinear = !(cd3Length(cross) > DEGENERATE_SINE * longest);
+	bool collinear = !(crossLength > DEGENERATE_SINE);
 	if (collinear && lbc == longest)
 	{
 		cd3Vec a = t.a;
@@ -127,7 +131,8 @@ void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 	p->vertexStorage[0] = t.a;
 	p->vertexStorage[1] = t.b;
 	p->vertexStorage[2] = t.c;
-	cd3Vec n = collinear ? cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)) : cd3Normalize(cross);
+	cd3Vec n =
+		collinear ? cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)) : cd3Scale(CD_R(1.0) / crossLength, cross);
 	p->edgeAxisCount = collinear ? 1 : 6;
 	p->planeStorage[0].normal = n;
 	p->planeStorage[0].offset = cd3Dot(n, t.a);
