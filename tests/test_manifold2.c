@@ -625,6 +625,42 @@ static void TestSegmentShortOfEnd(void)
 #endif
 }
 
+/* fuzz_manifold2 findings of this session's later runs. A flat AABB (a segment from the origin
+ * along +x) and a rounded triangle whose core corner (-0.000625, 0) lies on the segment's line
+ * 6.25e-4 short of its end: the cores are apart by less than the 0.1 slop of the separating-axis
+ * path, the triangle's corner lies beyond the segment face's side line, and the point kept there
+ * projected 6.25e-4 off the segment. The gap point: separation 6.25e-4 - radius. */
+static void TestCornerShortOfFlatBox(void)
+{
+	cd2Aabb flat = {V(0, 0), V(0.0116250003, 0)};
+	cd2Vec points[3] = {V(-0.0125000002, -0.0125000002), V(-0.000624999986, 0),
+						V(-0.0125000002, -0.00462500006)};
+	cd2Polygon triangle;
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 3, CD_R(0.00937500037), &triangle) == CD_OK);
+	cd2Shape sa = cd2MakeAabbShape(flat), sb = cd2MakePolygonShape(&triangle);
+	double expected = -(double)points[1].x - (double)triangle.radius;
+	cd2Manifold m = cd2Collide(&sa, &sb, CD_R(0.0));
+	CheckFinding("rounded corner short of a flat box", &sa, &sb, &m, expected, TOL * 0.01);
+	m = cd2Collide(&sb, &sa, CD_R(0.0));
+	CheckFinding("flat box beyond a rounded corner", &sb, &sa, &m, expected, TOL * 0.01);
+#if CD_DOUBLE
+	/* Double build: a triangle rounded by 1e30 whose edge's line passes 177 (round-off at this
+	 * scale) from a segment's end, the segment square to that edge: the segment's end was clipped
+	 * within rounding of the side line, its point ran to the far end at +4e29, and the pair (deep
+	 * by the radius) got no contact. */
+	cd2Vec huge[3] = {V(-105, 1e30), V(0, 0), V(1e30, 1e30)};
+	cd2Polygon rounded;
+	TEST_CHECK(cd2MakeRoundedPolygon(huge, 3, CD_R(1e30), &rounded) == CD_OK);
+	cd2Segment upright = {V(1e30, -1e30), V(-125, -125)};
+	sa = cd2MakePolygonShape(&rounded);
+	sb = cd2MakeSegmentShape(upright);
+	m = cd2Collide(&sa, &sb, CD_R(0.0));
+	CheckFinding("segment square to a huge rounded triangle", &sa, &sb, &m, -1e30, 1e-9 * 1e30);
+	m = cd2Collide(&sb, &sa, CD_R(0.0));
+	CheckFinding("huge rounded triangle square to a segment", &sb, &sa, &m, -1e30, 1e-9 * 1e30);
+#endif
+}
+
 /* ---- random properties ------------------------------------------------------------------------ */
 
 static cd2Shape PointShape(cd2Vec p)
@@ -1149,6 +1185,7 @@ int main(void)
 	TEST_RUN(TestTriangleInRoundedQuad);
 	TEST_RUN(TestCircleReachingFarBox);
 	TEST_RUN(TestSegmentShortOfEnd);
+	TEST_RUN(TestCornerShortOfFlatBox);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestSymmetryAndInvariance);
 	TEST_RUN(TestChainNoGhosts);

@@ -355,23 +355,21 @@ static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* in
 		w[1] = clipped[1];
 	}
 
-	if (incident->radius > CD_R(0.0))
+	/* The deepest core vertex: its surface point straight against n, if that stays over the
+	 * reference edge (up to its rounding: a vertex right at the edge's end, such as an upright
+	 * capsule's end standing on it, comes out a rounding error beyond it, and its sideways surface
+	 * point would be reported instead, up to a radius too shallow). Also when its surface point
+	 * was clipped: an incident edge square to the reference one has its surface offset sideways,
+	 * beyond a side line while the vertex is not, and clipped within rounding of a side line an
+	 * upright sharp edge's point runs along it to its far end. */
+	int deepest = pointCount == 1 ? 0 : cd2Dot(n, cd2Sub(core[0], core[1])) <= CD_R(0.0) ? 0 : 1;
+	cd2Vec straight = cd2MulSub(core[deepest], incident->radius, n);
+	cdReal t = cd2Dot(tangent, cd2Sub(straight, v1));
+	cdReal slack = RoundingSlack(straight, v1, v2);
+	if (pointCount == 1 || (-slack <= t && t <= upper + slack))
 	{
-		/* The deepest core vertex: its surface point straight against n, if that stays
-		 * over the reference edge (up to its rounding: a vertex right at the edge's end, such as an
-		 * upright capsule's end standing on it, comes out a rounding error beyond it, and its
-		 * sideways surface point would be reported instead, up to a radius too shallow). */
-		int deepest = pointCount == 1 ? 0 : cd2Dot(n, cd2Sub(core[0], core[1])) <= CD_R(0.0) ? 0 : 1;
-		cd2Vec straight = cd2MulSub(core[deepest], incident->radius, n);
-		cdReal t = cd2Dot(tangent, cd2Sub(straight, v1));
-		cdReal slack = RoundingSlack(straight, v1, v2);
-		if (pointCount == 1 || (-slack <= t && t <= upper + slack))
-		{
-			/* Also when its surface point was clipped: an incident edge square to the reference
-			 * one has its surface offset sideways, beyond a side line while the vertex is not. */
-			w[deepest] = straight;
-			code[deepest] = pointCount == 1 ? code[0] : (uint32_t)deepest;
-		}
+		w[deepest] = straight;
+		code[deepest] = pointCount == 1 ? code[0] : (uint32_t)deepest;
 	}
 
 	uint32_t base = (uint32_t)referenceEdge | (uint32_t)incidentEdge << 8 | (flip ? CD2_FEATURE_FLIP : 0u);
@@ -555,7 +553,8 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	{
 		manifold = Clip(b, edgeB, a, true, speculativeDistance, false);
 	}
-	if (manifold.pointCount == 0)
+	bool keptOutside = manifold.pointCount == 0;
+	if (keptOutside)
 	{
 		manifold = flip ? Clip(b, edgeB, a, true, speculativeDistance, true)
 						: Clip(a, edgeA, b, false, speculativeDistance, true);
@@ -563,11 +562,11 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	/* Cores within the tolerance that do not overlap: their separation is exactly the gap minus
 	 * the radii. The clipped face misses it when the incident edge stands nearly square to a short
 	 * reference edge and just short of its end (clipped at the side line, the point runs out to
-	 * the incident edge's far end, beyond the separating-axis value): then the one point along the
-	 * gap is the contact. */
+	 * the incident edge's far end, beyond the separating-axis value), and a point kept beyond the
+	 * side lines projects off the face: then the one point along the gap is the contact. */
 	bool apart = segments || cdMax(separationA, separationB) > CD_R(0.0);
 	bool missed =
-		manifold.pointCount == 0 ||
+		keptOutside || manifold.pointCount == 0 ||
 		SmallestSeparation(&manifold) > cdMax(separationA, separationB) - total + separatedTolerance;
 	if (apart && missed)
 	{
@@ -576,7 +575,7 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			closest = ClosestCores(a, b, separationA, separationB, &closestEdgeA, &closestEdgeB);
 		}
 		if (closest.distance > CD_R(0.0) && closest.distance - total <= speculativeDistance &&
-			(manifold.pointCount == 0 ||
+			(keptOutside || manifold.pointCount == 0 ||
 			 SmallestSeparation(&manifold) > closest.distance - total + separatedTolerance))
 		{
 			return GapContact(a, b, closest, closestEdgeA, closestEdgeB);
