@@ -840,6 +840,21 @@ static void TestFuzzFindings(void)
 						1e-3 * fabs(MinSeparation(&scaled[1])),
 				"separation %.9g, scaled %.9g", MinSeparation(&scaled[0]), MinSeparation(&scaled[1]));
 	TEST_CHECK((double)cd3VecDistance(scaled[0].normal, scaled[1].normal) <= 1e-4);
+	/* manifold3-flat-aabb-box-no-contact: a 7375-long AABB 1e-9 thin and 0 deep inside a box, 5125
+	 * below its +z face. Its +-z faces are 1e-9 slivers: the box's face clipped to them vanished
+	 * in round-off, and there are no edge pairs to fall back on. */
+	cd3Shape sliver = AabbShape(0, -1e-9, 0, 7375, 0, 0);
+	cd3Box big = {cd3MakeVec(CD_R(0.0), CD_R(-625.0), CD_R(-6500.0)),
+				  cd3MakeVec(CD_R(12500.0), CD_R(11750.0), CD_R(11625.0)), CD3_QUAT_IDENTITY};
+	cd3Shape bigShape = cd3MakeBoxShape(big);
+	for (int k = 0; k < 2; ++k)
+	{
+		m = k == 0 ? cd3Collide(&sliver, &bigShape, CD_R(10375.0))
+				   : cd3Collide(&bigShape, &sliver, CD_R(10375.0));
+		TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) + 5125.0) <= 1e-2, "order %d: %d points, %.9g",
+					k, m.pointCount, MinSeparation(&m));
+		TEST_CHECK(fabs((double)m.normal.z) > 0.999);
+	}
 	/* manifold3-huge-triangle-point-overlap: a point 5.5e8 from a 1e9 triangle, touching only
 	 * through the point AABB's faces that did not clip. */
 	triangle = TriangleShape(2.5e8, -1.25e8, -1e9, -1e9, 1e9, -1e9, -4.3e8, -1e9, -1e9);

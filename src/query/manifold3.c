@@ -479,6 +479,14 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 	{
 		cd3Manifold m = useB ? FaceContact(b, face, a, true, speculativeDistance)
 							 : FaceContact(a, face, b, false, speculativeDistance);
+		int other = useB ? sat->faceA : sat->faceB;
+		if (m.pointCount == 0 && sat->edgeA < 0 && other >= 0)
+		{
+			/* The incident polygon clipped away against a sliver of a face (a box 1e-9 thin whose
+			 * side planes round-off of the incident coordinates crosses): the other shape's face. */
+			m = useB ? FaceContact(a, other, b, false, speculativeDistance)
+					 : FaceContact(b, other, a, true, speculativeDistance);
+		}
 		if (m.pointCount > 0 || sat->edgeA < 0)
 		{
 			return m;
