@@ -855,6 +855,41 @@ static void TestFuzzFindings(void)
 					k, m.pointCount, MinSeparation(&m));
 		TEST_CHECK(fabs((double)m.normal.z) > 0.999);
 	}
+	/* manifold3-aabb-triangle-speculative: an AABB's edge 2.5 above a triangle's edge, offset
+	 * sideways by 0.054: the edge contact took the SAT axis (0, 0, -1) as normal, so the point
+	 * was 0.027 off both surfaces. Now the closest points: on both surfaces, the distance apart. */
+	cd3Shape box3 = AabbShape(-0.25, 1.5, 0.875, 3.25, 1.625, 1.5);
+	triangle = TriangleShape(-11.875, -0.5, -1.75, -0.375, 1.875, -1.625, 0.25, -1.5, -1.625);
+	m = cd3Collide(&box3, &triangle, CD_R(12.5));
+	TEST_CHECK(m.pointCount == 1);
+	if (m.pointCount == 1)
+	{
+		cd3ManifoldPoint p = m.points[0];
+		cd3Vec onA = cd3MulSub(p.point, CD_R(0.5) * p.separation, m.normal);
+		cd3Vec onB = cd3MulAdd(p.point, CD_R(0.5) * p.separation, m.normal);
+		double offA = (double)cd3VecDistance(cd3ClosestPointOnShape(&box3, onA), onA);
+		double offB = (double)cd3VecDistance(cd3ClosestPointOnShape(&triangle, onB), onB);
+		TEST_CHECKF(offA <= 1e-4 && offB <= 1e-4, "%.3g off A, %.3g off B", offA, offB);
+		TEST_CHECK_NEAR((double)p.separation, (double)cd3Distance(&box3, &triangle).distance, 1e-5);
+	}
+	/* manifold3-aabb-box-speculative-surface: the same for an AABB 2 from a turned box. */
+	cd3Shape small = AabbShape(-0.375, -0.125, -1.75, 0, 0, 0);
+	cd3Box turned2 = {cd3MakeVec(CD_R(-6.25), CD_R(-1.125), CD_R(0.0)),
+					  cd3MakeVec(CD_R(12.125), CD_R(1.875), CD_R(0.125)),
+					  cd3MakeQuat(CD_R(-0.265668511), CD_R(-0.948816061), CD_R(-0.170786887), CD_R(0.0))};
+	cd3Shape turned2Shape = cd3MakeBoxShape(turned2);
+	m = cd3Collide(&small, &turned2Shape, CD_R(12.375));
+	TEST_CHECK(m.pointCount > 0);
+	TEST_CHECK_NEAR(MinSeparation(&m), (double)cd3Distance(&small, &turned2Shape).distance, 1e-4);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		cd3ManifoldPoint p = m.points[i];
+		cd3Vec onA = cd3MulSub(p.point, CD_R(0.5) * p.separation, m.normal);
+		cd3Vec onB = cd3MulAdd(p.point, CD_R(0.5) * p.separation, m.normal);
+		double offA = (double)cd3VecDistance(cd3ClosestPointOnShape(&small, onA), onA);
+		double offB = (double)cd3VecDistance(cd3ClosestPointOnShape(&turned2Shape, onB), onB);
+		TEST_CHECKF(offA <= 1e-3 && offB <= 1e-3, "point %d: %.3g off A, %.3g off B", i, offA, offB);
+	}
 	/* manifold3-huge-triangle-point-overlap: a point 5.5e8 from a 1e9 triangle, touching only
 	 * through the point AABB's faces that did not clip. */
 	triangle = TriangleShape(2.5e8, -1.25e8, -1e9, -1e9, 1e9, -1e9, -4.3e8, -1e9, -1e9);

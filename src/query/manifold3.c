@@ -630,6 +630,16 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance);
 		if (m.pointCount > 0 && cdAbs(ManifoldMinSeparation(&m) - cp.distance) <= tolerance)
 		{
+			if (m.pointCount == 1 && (m.points[0].id & CD3_FEATURE_EDGES) != 0u && cp.distance > tolerance)
+			{
+				/* Edges apart: the SAT axis only bounds the distance within the tolerance, and the
+				 * edges' closest points need not lie along it (a point off both surfaces by half
+				 * the lateral offset). The closest points, with the edge pair's id; touching edges
+				 * keep the SAT axis (the closest points give no direction). */
+				uint32_t id = m.points[0].id;
+				m = VertexContact(cp);
+				m.points[0].id = id;
+			}
 			return m;
 		}
 	}
