@@ -643,6 +643,36 @@ static void TestCornerShortOfFlatBox(void)
 	CheckFinding("rounded corner short of a flat box", &sa, &sb, &m, expected, TOL * 0.01);
 	m = cd2Collide(&sb, &sa, CD_R(0.0));
 	CheckFinding("flat box beyond a rounded corner", &sb, &sa, &m, expected, TOL * 0.01);
+	/* A box of size 2e-9 (a point, turned) 0.3375 under an AABB's lower right corner: its closest
+	 * point counted as inside one of its faces by rounding, and that face's tilted normal measured
+	 * 0.377 for a gap of 0.3375. */
+	cd2Aabb block = {V(-1.14999998, -0.8125), V(0, 0.275000006)};
+	cd2Box speck = {V(0, -1.14999998), V(1e-9, 1e-9), {CD_R(0.44721359), CD_R(-0.89442718)}};
+	sa = cd2MakeAabbShape(block);
+	sb = cd2MakeBoxShape(speck);
+	expected = (double)block.min.y - (double)speck.center.y - 1.5e-9;
+	m = cd2Collide(&sa, &sb, CD_R(0.774999976));
+	CheckFinding("speck under a block's corner", &sa, &sb, &m, expected, TOL);
+	m = cd2Collide(&sb, &sa, CD_R(0.774999976));
+	CheckFinding("block's corner over a speck", &sb, &sa, &m, expected, TOL);
+
+	/* A flat AABB (a segment) and a triangle rounded by 6.25e-4 whose core corner is 7.29e-4 from
+	 * the segment's end, beyond its side line: apart by 1.04e-4, yet a point 6.25e-4 off the
+	 * segment came out at separation -2.5e-4 (found in the double build). */
+	cd2Vec corner[3] = {V(-0.0115, -0.012125), V(0, -0.000375), V(0, 0.006375)};
+	TEST_CHECK(cd2MakeRoundedPolygon(corner, 3, CD_R(0.000625), &triangle) == CD_OK);
+	cd2Aabb sliver = {V(-0.0125, -0.0125), V(-0.012125, -0.0125)};
+	sa = cd2MakeAabbShape(sliver);
+	sb = cd2MakePolygonShape(&triangle);
+	expected = hypot((double)corner[0].x - (double)sliver.max.x, (double)corner[0].y - (double)sliver.max.y) -
+			   (double)triangle.radius;
+	TEST_CHECK(expected > 1e-4);
+	TEST_CHECK(cd2Collide(&sa, &sb, CD_R(0.0)).pointCount == 0);
+	TEST_CHECK(cd2Collide(&sb, &sa, CD_R(0.0)).pointCount == 0);
+	m = cd2Collide(&sa, &sb, CD_R(2e-4));
+	CheckFinding("rounded corner beyond a sliver's end", &sa, &sb, &m, expected, TOL * 0.01);
+	m = cd2Collide(&sb, &sa, CD_R(2e-4));
+	CheckFinding("sliver's end before a rounded corner", &sb, &sa, &m, expected, TOL * 0.01);
 #if CD_DOUBLE
 	/* Double build: a triangle rounded by 1e30 whose edge's line passes 177 (round-off at this
 	 * scale) from a segment's end, the segment square to that edge: the segment's end was clipped

@@ -264,7 +264,8 @@ static cdReal RoundingSlack(cd2Vec p, cd2Vec q, cd2Vec r)
 /* Clips the incident edge of `incident` (the one facing the reference normal most) to the side
  * lines of the reference edge and keeps the points within the speculative distance. `flip` says
  * that the reference is B. Without `keepOutside`, an incident edge entirely beyond one side line
- * gives no contact; with it, its nearer end is kept.
+ * gives no contact; with it, the core end nearer to the reference edge's extent is kept (its
+ * point then projects off the face: for cores that are apart the caller takes the gap point).
  *
  * Points lie on both surfaces: the incident surface is its core edge moved out by the incident
  * radius along the edge's normal, and that segment is what gets clipped; the reference surface
@@ -522,18 +523,20 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			int vertexA = EndpointIndex(a, closestEdgeA, closest.pointA);
 			int vertexB = EndpointIndex(b, closestEdgeB, closest.pointB);
 			/* A closest point inside an edge makes a face contact, unless the incident edge lies
-			 * wholly beyond the face's side lines (or its points beyond the speculative distance):
-			 * then the face is not what is closest (a face made degenerate by round-off at large
-			 * coordinates, or an incident edge far from the closest vertex), its separation along
-			 * the face normal would underestimate the gap, and the one point along the gap is
-			 * the contact. */
+			 * wholly beyond the face's side lines (or its points beyond the speculative distance),
+			 * or the clipped points do not reach the gap: then the face is not what is closest (a
+			 * face made degenerate by round-off at large coordinates, a box of size 1e-9 whose
+			 * closest point is inside an edge by rounding, an incident edge far from the closest
+			 * vertex), its separation along the face normal misses the gap, and the one point
+			 * along the gap is the contact. */
 			if (vertexA < 0 || vertexB < 0)
 			{
 				cd2Manifold face = vertexA < 0 ? Clip(a, FacingEdge(a, closestEdgeA, u), b, false,
 													  speculativeDistance, false)
 											   : Clip(b, FacingEdge(b, closestEdgeB, cd2Neg(u)), a, true,
 													  speculativeDistance, false);
-				if (face.pointCount > 0)
+				if (face.pointCount > 0 &&
+					SmallestSeparation(&face) <= closest.distance - total + separatedTolerance)
 				{
 					return face;
 				}
@@ -574,11 +577,17 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 		{
 			closest = ClosestCores(a, b, separationA, separationB, &closestEdgeA, &closestEdgeB);
 		}
-		if (closest.distance > CD_R(0.0) && closest.distance - total <= speculativeDistance &&
-			(keptOutside || manifold.pointCount == 0 ||
-			 SmallestSeparation(&manifold) > closest.distance - total + separatedTolerance))
+		if (closest.distance > CD_R(0.0))
 		{
-			return GapContact(a, b, closest, closestEdgeA, closestEdgeB);
+			if (closest.distance - total > speculativeDistance)
+			{
+				return EmptyManifold();
+			}
+			if (keptOutside || manifold.pointCount == 0 ||
+				SmallestSeparation(&manifold) > closest.distance - total + separatedTolerance)
+			{
+				return GapContact(a, b, closest, closestEdgeA, closestEdgeB);
+			}
 		}
 	}
 	return manifold;
