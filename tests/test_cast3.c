@@ -389,6 +389,65 @@ static void TestToiTranslationEqualsCast(void)
 	TEST_CHECKF(compared > 200, "%d compared", compared);
 }
 
+/* fuzz_cast (float): a grazing cast of two hulls at scale 12. The ray cast's direction v / |v|,
+ * a sum of cancelling terms 1e-4 from the origin, erred by 1%: a support already in the simplex
+ * looked like no progress, and the advancement's equally round-off normal called the hulls
+ * receding, so the cast missed though they overlap deeply at fraction 0.5625. */
+/* The distance after A moved by s * translation (this build's GJK: the hulls are 1e-4 to 1 apart
+ * where it is asked, far above its round-off). */
+static double HullGapAt(const cd3Shape* a, cd3Vec translation, const cd3Shape* b, double s)
+{
+	cd3Shape moved = *a;
+	moved.hull.transform.p = cd3MulAdd(a->hull.transform.p, (cdReal)s, translation);
+	return (double)cd3Distance(&moved, b).distance;
+}
+
+/* fuzz_cast (float): a grazing cast of two hulls at scale 12. The ray cast's direction v / |v|,
+ * a sum of cancelling terms 1e-4 from the origin, erred by about 1%: a support already in the
+ * simplex looked like no progress, and the advancement's equally round-off normal called the
+ * hulls receding, so the cast missed though they overlap deeply at fraction 0.5625. */
+static void TestCastGrazingHulls(void)
+{
+	const cd3Vec pointsA[10] = {
+		{CD_R(0.375), CD_R(-12.0), CD_R(1.0)},	   {CD_R(-2.75), CD_R(2.625), CD_R(-0.375)},
+		{CD_R(0.875), CD_R(-12.125), CD_R(-12.5)}, {CD_R(0.25), CD_R(-0.375), CD_R(-0.5)},
+		{CD_R(0.375), CD_R(-0.375), CD_R(-0.5)},   {CD_R(0.0), CD_R(0.0), CD_R(0.0)},
+		{CD_R(0.0), CD_R(0.0), CD_R(0.0)},		   {CD_R(0.0), CD_R(-8.875), CD_R(-0.25)},
+		{CD_R(0.375), CD_R(4.75), CD_R(1.375)},	   {CD_R(-2.25), CD_R(0.0), CD_R(0.625)}};
+	const cd3Vec pointsB[4] = {{CD_R(6.5), CD_R(0.375), CD_R(1.375)},
+							   {CD_R(-2.25), CD_R(0.0), CD_R(0.75)},
+							   {CD_R(0.5), CD_R(0.0), CD_R(0.125)},
+							   {CD_R(-12.5), CD_R(-12.5), CD_R(-12.5)}};
+	cd3Hull *hullA = NULL, *hullB = NULL;
+	TEST_CHECK(cd3ComputeHull(pointsA, 10, &hullA) == CD_OK);
+	TEST_CHECK(cd3ComputeHull(pointsB, 4, &hullB) == CD_OK);
+	if (hullA == NULL || hullB == NULL)
+	{
+		return;
+	}
+	cd3Transform placeA = {
+		{CD_R(-0.375), CD_R(1.75), CD_R(-1.5)},
+		{(cdReal)-0.182574183, (cdReal)-0.426006407, (cdReal)-0.243432239, (cdReal)-0.852012813}};
+	cd3Transform placeB = {{CD_R(2.375), CD_R(0.0), CD_R(0.0)}, CD3_QUAT_IDENTITY};
+	cd3Shape a = cd3MakeHullShape(hullA, placeA), b = cd3MakeHullShape(hullB, placeB);
+	cd3Vec translation = {CD_R(-12.5), CD_R(-12.5), CD_R(-12.5)};
+	cd3CastOutput out = cd3ShapeCast(&a, &b, translation);
+	TEST_CHECKF(HullGapAt(&a, translation, &b, 0.5625) == 0.0, "overlap at 0.5625: %.9g",
+				HullGapAt(&a, translation, &b, 0.5625));
+	TEST_CHECKF(out.hit && out.fraction <= CD_R(0.5625), "hit %d at %.9g", out.hit, (double)out.fraction);
+	double gap = HullGapAt(&a, translation, &b, (double)out.fraction);
+	TEST_CHECKF(gap <= (double)CD_CAST_TOLERANCE + 1e-4, "%.9g apart at the hit %.9g", gap,
+				(double)out.fraction);
+	for (int i = 0; i < 64; ++i)
+	{
+		double s = (double)out.fraction * i / 64;
+		TEST_CHECKF(HullGapAt(&a, translation, &b, s) > 0.0, "contact at %.9g before the hit %.9g", s,
+					(double)out.fraction);
+	}
+	cd3DestroyHull(hullA);
+	cd3DestroyHull(hullB);
+}
+
 int main(void)
 {
 	TEST_RUN(TestCastSphereAtBoxAndPlane);
@@ -398,5 +457,6 @@ int main(void)
 	TEST_RUN(TestToiRandomPairs);
 	TEST_RUN(TestHullActsAsBox);
 	TEST_RUN(TestToiTranslationEqualsCast);
+	TEST_RUN(TestCastGrazingHulls);
 	return TEST_SUMMARY();
 }

@@ -251,6 +251,12 @@ bool cd2SolveGjkSimplex(cd2GjkSimplex* simplex)
 	return SolveSimplex(simplex);
 }
 
+cd2Vec cd2GjkSearchDirection(const cd2GjkSimplex* simplex, cd2Vec v)
+{
+	cdReal lengthSquared;
+	return SearchDirection(simplex, v, cd2LengthSquared(v), &lengthSquared);
+}
+
 static cdReal SimplexMetric(const GjkSimplex* simplex)
 {
 	if (simplex->count == 2)

@@ -436,6 +436,11 @@ bool cd3SolveGjkSimplex(cd3GjkSimplex* simplex)
 	return SolveSimplex(simplex);
 }
 
+cd3Vec cd3GjkSearchDirection(const cd3GjkSimplex* simplex, cd3Vec v)
+{
+	return SearchDirection(simplex, v);
+}
+
 static cdReal SimplexMetric(const GjkSimplex* simplex)
 {
 	const GjkVertex* v = simplex->v;

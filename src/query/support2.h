@@ -263,6 +263,10 @@ typedef struct cd2GjkSimplex
  * their weights (lambda, summing to 1); true when the origin is enclosed (the shapes touch). */
 bool cd2SolveGjkSimplex(cd2GjkSimplex* simplex);
 
+/* The direction from the simplex (closest point v) towards the origin, of any length, built from
+ * the simplex's edges where -v, a sum of large cancelling terms, would point off (distance2.c). */
+cd2Vec cd2GjkSearchDirection(const cd2GjkSimplex* simplex, cd2Vec v);
+
 /* GJK distance of two cores (distance2.c), radii included, warm-started from *cache and
  * updating it (cache and status may be NULL). */
 cd2ClosestPoints cd2DistanceCores(const cd2Core* coreA, const cd2Core* coreB, cd2SimplexCache* cache,

@@ -236,6 +236,10 @@ typedef struct cd3GjkSimplex
  * their weights (lambda, summing to 1); true when the origin is enclosed (the shapes touch). */
 bool cd3SolveGjkSimplex(cd3GjkSimplex* simplex);
 
+/* The direction from the simplex (closest point v) towards the origin, of any length, built from
+ * the simplex's edges where -v, a sum of large cancelling terms, would point off (distance3.c). */
+cd3Vec cd3GjkSearchDirection(const cd3GjkSimplex* simplex, cd3Vec v);
+
 /* GJK distance of two cores (distance3.c), radii included, warm-started from *cache and
  * updating it (cache and status may be NULL). */
 cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd3SimplexCache* cache,
