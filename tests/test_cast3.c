@@ -448,6 +448,40 @@ static void TestCastGrazingHulls(void)
 	cd3DestroyHull(hullB);
 }
 
+#if CD_DOUBLE
+/* fuzz_cast (double): a sphere coming from 1.9e28 towards a box, target 8.6e19. The bounding
+ * spheres' quadratic took its discriminant as half^2 - speed^2 c, two products of 1e113 that
+ * agree to far below round-off, called it negative and the pair separated for the whole step,
+ * though at t = 1 the shapes are 24.6 apart. */
+static void TestToiHugeTarget(void)
+{
+	cd3Shape sphere = Sphere(-12.5, -12.5, -12.25, 1.75);
+	cd3Box box = {
+		{-0.75, 1.5, 1.5}, {0.375, 0.75, 0.5}, {-0.13009761, -0.0400300338, -0.980735828, -0.140105118}};
+	cd3Shape boxShape = cd3MakeBoxShape(box);
+	cd3Sweep sa = {{1.0, -1.625, 1.25},
+				   {1.85976343e+28, -0.875, -16059611.0},
+				   {-1.875, -12.5, -12.5},
+				   {0.288675135, 0.948504014, 0.123717915, -0.0412393049},
+				   {-0.59805036, 0.512614595, 0.341743063, -0.512614595}};
+	cd3Sweep sb = {{0.375, -0.5, 0.0},
+				   {-0.375, -0.375, -0.25},
+				   {1.25, 1.25, 2.125},
+				   {1.4282734e-17, 8.56964043e-18, -0.707106781, -0.707106781},
+				   {-0.5, -0.5, -0.5, -0.5}};
+	double target = 8.55512933e+19;
+	cd3Shape endA = PlacedAt(&sphere, &sa, 1.0), endB = PlacedAt(&boxShape, &sb, 1.0);
+	TEST_CHECK((double)cd3Distance(&endA, &endB).distance < target);
+	cdToiOutput out = cd3TimeOfImpact(&sphere, &sa, &boxShape, &sb, target, 0.75);
+	TEST_CHECKF(out.state == CD_TOI_HIT && out.t < 1.0, "state %d t %.17g", (int)out.state, out.t);
+	cd3Shape atA = PlacedAt(&sphere, &sa, out.t), atB = PlacedAt(&boxShape, &sb, out.t);
+	double distance = (double)cd3Distance(&atA, &atB).distance;
+	/* The time of impact's documented round-off: 64 epsilons of the sweep's largest coordinate. */
+	TEST_CHECKF(fabs(distance - target) <= 64.0 * CD_REAL_EPSILON * 1.86e28, "distance %.17g at t %.17g",
+				distance, out.t);
+}
+#endif
+
 int main(void)
 {
 	TEST_RUN(TestCastSphereAtBoxAndPlane);
@@ -458,5 +492,8 @@ int main(void)
 	TEST_RUN(TestHullActsAsBox);
 	TEST_RUN(TestToiTranslationEqualsCast);
 	TEST_RUN(TestCastGrazingHulls);
+#if CD_DOUBLE
+	TEST_RUN(TestToiHugeTarget);
+#endif
 	return TEST_SUMMARY();
 }

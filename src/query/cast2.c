@@ -34,6 +34,13 @@ static int CastCoreSupport(const cd2Core* core, cd2Vec direction, int start)
 	return cd2CoreSupportFrom(core, direction, start);
 }
 
+/* |a x b|^2: by Lagrange's identity |a|^2 |b|^2 - (a.b)^2 without its cancellation. */
+static cdReal CrossLengthSquared(cd2Vec a, cd2Vec b)
+{
+	cdReal cross = cd2Cross(a, b);
+	return cross * cross;
+}
+
 static cdReal MaxAbs(cd2Vec v)
 {
 	return cd2MaxAbs(v);

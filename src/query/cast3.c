@@ -36,6 +36,12 @@ static int CastCoreSupport(const cd3Core* core, cd3Vec direction, int start)
 	return cd3CoreSupport(core, direction);
 }
 
+/* |a x b|^2: by Lagrange's identity |a|^2 |b|^2 - (a.b)^2 without its cancellation. */
+static cdReal CrossLengthSquared(cd3Vec a, cd3Vec b)
+{
+	return cd3LengthSquared(cd3Cross(a, b));
+}
+
 static cdReal MaxAbs(cd3Vec v)
 {
 	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
