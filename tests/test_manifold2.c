@@ -673,6 +673,20 @@ static void TestCornerShortOfFlatBox(void)
 	CheckFinding("rounded corner beyond a sliver's end", &sa, &sb, &m, expected, TOL * 0.01);
 	m = cd2Collide(&sb, &sa, CD_R(2e-4));
 	CheckFinding("sliver's end before a rounded corner", &sb, &sa, &m, expected, TOL * 0.01);
+	/* Capsules of radius 1.2e-6 whose cores pass within 6e-16 of each other (one is 5e8 long): the
+	 * point along that gap had a normal of length 1.00005 (the distance the closest points report
+	 * is not the length of their difference at that size). */
+	cd2Capsule shortCapsule = {V(0, 0), V(4.49999987e-07, 0), CD_R(1.24999997e-06)};
+	cd2Capsule longCapsule = {V(0, -1.15e-06), V(-2.87500001e-07, 5e8), CD_R(1.23749999e-06)};
+	sa = cd2MakeCapsuleShape(shortCapsule);
+	sb = cd2MakeCapsuleShape(longCapsule);
+	for (int order = 0; order < 2; ++order)
+	{
+		m = order == 0 ? cd2Collide(&sa, &sb, CD_R(0.0)) : cd2Collide(&sb, &sa, CD_R(0.0));
+		TEST_CHECK(m.pointCount >= 1);
+		TEST_CHECK_NEAR(cd2Length(m.normal), 1.0, 1e-6);
+		TEST_CHECK(m.pointCount >= 1 && MinSeparation(&m) < -2e-6);
+	}
 #if CD_DOUBLE
 	/* Double build: a triangle rounded by 1e30 whose edge's line passes 177 (round-off at this
 	 * scale) from a segment's end, the segment square to that edge: the segment's end was clipped

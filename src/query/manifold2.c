@@ -433,12 +433,18 @@ static cd2ClosestPoints ClosestEdge(cd2Segment segment, const Core* core, int* e
 	return best;
 }
 
-/* One point along the gap between the closest points of two cores that are apart (distance > 0):
- * midway between their surfaces, normal from a to b. */
+/* One point along the gap between the closest points of two cores that are apart: midway between
+ * their surfaces, normal from a to b (normalized here: for a gap of a rounding error the distance
+ * the closest points report is not the length of their difference). No point when the gap
+ * vanishes. */
 static cd2Manifold GapContact(const Core* a, const Core* b, cd2ClosestPoints closest, int edgeA, int edgeB)
 {
 	cd2Manifold manifold = EmptyManifold();
-	cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
+	cd2Vec u = cd2GetLengthAndNormalize(&closest.distance, cd2Sub(closest.pointB, closest.pointA));
+	if (u.x == CD_R(0.0) && u.y == CD_R(0.0))
+	{
+		return manifold;
+	}
 	int vertexA = EndpointIndex(a, edgeA, closest.pointA);
 	int vertexB = EndpointIndex(b, edgeB, closest.pointB);
 	cd2Vec onA = cd2MulAdd(closest.pointA, a->radius, u);
@@ -586,7 +592,11 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			if (keptOutside || manifold.pointCount == 0 ||
 				SmallestSeparation(&manifold) > closest.distance - total + separatedTolerance)
 			{
-				return GapContact(a, b, closest, closestEdgeA, closestEdgeB);
+				cd2Manifold gap = GapContact(a, b, closest, closestEdgeA, closestEdgeB);
+				if (gap.pointCount > 0 && gap.points[0].separation <= speculativeDistance)
+				{
+					return gap;
+				}
 			}
 		}
 	}
