@@ -1147,6 +1147,92 @@ static void TestHullsAtLargeScale(void)
 }
 
 /* cd3DistanceWithStatus reports GJK's work and gives the same answer as cd3Distance. */
+/* The hull support scan runs four vertices at a time with a scalar tail (sat3_support.h): hulls
+ * of every vertex count from 4 to 20 (every tail length) against random boxes and hulls, and a
+ * cube hull, whose corners tie four by four along the axes, against the same cube as a box. */
+static void TestHullVertexCounts(void)
+{
+	TestRng rng = TestRngMake(20261121);
+	for (int count = 4; count <= 20; ++count)
+	{
+		cd3Vec points[20];
+		for (int i = 0; i < count; ++i)
+		{
+			cd3Vec d = RandomUnit(&rng);
+			points[i] = cd3MakeVec(d.x * RandomReal(&rng, 0.4, 0.7), d.y * RandomReal(&rng, 0.4, 0.7),
+								   d.z * RandomReal(&rng, 0.4, 0.7));
+		}
+		cd3Hull* hull = NULL;
+		if (cd3ComputeHull(points, count, &hull) != CD_OK || hull == NULL)
+		{
+			TEST_CHECKF(false, "hull of %d random points", count);
+			continue;
+		}
+		for (int k = 0; k < 40; ++k)
+		{
+			cd3Transform place = {RandomVec(&rng, 0.5), RandomQuat(&rng)};
+			cd3Shape shape = cd3MakeHullShape(hull, place);
+			cd3Shape other;
+			if (k % 2 == 0)
+			{
+				cd3Box box = {cd3Add(RandomUnit(&rng), RandomVec(&rng, 0.5)),
+							  cd3MakeVec(RandomReal(&rng, 0.1, 0.5), RandomReal(&rng, 0.1, 0.5),
+										 RandomReal(&rng, 0.1, 0.5)),
+							  RandomQuat(&rng)};
+				other = cd3MakeBoxShape(box);
+			}
+			else
+			{
+				cd3Transform near = {cd3Scale(CD_R(1.5), RandomUnit(&rng)), RandomQuat(&rng)};
+				other = cd3MakeHullShape(RandomHull(&rng), near);
+			}
+			if (RefDistance(&shape, &other) < 1e-3)
+			{
+				continue;
+			}
+			CheckAgainstReference(&shape, &other, 64.0 * (double)CD_REAL_EPSILON * 4.0, "hull of n vertices");
+		}
+		cd3DestroyHull(hull);
+	}
+
+	cd3Vec corners[8];
+	for (int i = 0; i < 8; ++i)
+	{
+		corners[i] = cd3MakeVec((i & 1) ? CD_R(0.5) : CD_R(-0.5), (i & 2) ? CD_R(0.5) : CD_R(-0.5),
+								(i & 4) ? CD_R(0.5) : CD_R(-0.5));
+	}
+	cd3Hull* cube = NULL;
+	TEST_CHECK(cd3ComputeHull(corners, 8, &cube) == CD_OK && cube != NULL);
+	if (cube == NULL)
+	{
+		return;
+	}
+	for (int k = 0; k < 200; ++k)
+	{
+		cd3Transform t = {RandomVec(&rng, 1.0), RandomQuat(&rng)};
+		cd3Shape cubeHull = cd3MakeHullShape(cube, t);
+		cd3Box box = {t.p, cd3MakeVec(CD_R(0.5), CD_R(0.5), CD_R(0.5)), t.q};
+		cd3Shape cubeBox = cd3MakeBoxShape(box);
+		/* Axis-aligned in the cube's frame: the support ties among a face's four corners. */
+		static const cd3Vec axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+		cd3Vec local = cd3Scale(k % 2 == 0 ? CD_R(1.0) : CD_R(-1.0), axes[k % 3]);
+		cd3Vec offset = cd3Add(cd3Scale(RandomReal(&rng, 0.6, 1.5), local), RandomVec(&rng, 0.3));
+		cd3Sphere sphere = {cd3Add(t.p, cd3RotateVector(t.q, offset)), RandomReal(&rng, 0.0, 0.05)};
+		cd3Shape ball = cd3MakeSphereShape(sphere);
+		cd3ClosestPoints fromHull = cd3Distance(&cubeHull, &ball), fromBox = cd3Distance(&cubeBox, &ball);
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * 4.0;
+		TEST_CHECKF(fabs((double)fromHull.distance - (double)fromBox.distance) <= tolerance &&
+						cd3Length(cd3Sub(fromHull.pointA, fromBox.pointA)) <=
+							CD_R(64.0) * CD_REAL_EPSILON * CD_R(4.0),
+					"cube hull %.9g vs box %.9g", (double)fromHull.distance, (double)fromBox.distance);
+		if (RefDistance(&cubeHull, &ball) >= 1e-3)
+		{
+			CheckAgainstReference(&cubeHull, &ball, tolerance, "cube hull and ball");
+		}
+	}
+	cd3DestroyHull(cube);
+}
+
 static void TestDistanceStatus(void)
 {
 	cd3Box box = {{0, 0, 0}, {1, 1, 1}, cd3MakeQuatAxisAngle(cd3MakeVec(1, 2, 3), CD_R(0.7))};
@@ -1314,6 +1400,7 @@ int main(void)
 	TEST_RUN(TestExtremeScales);
 	TEST_RUN(TestThinBoxesAndLongSegments);
 	TEST_RUN(TestHullsAtLargeScale);
+	TEST_RUN(TestHullVertexCounts);
 	TEST_RUN(TestDistanceStatus);
 	TEST_RUN(TestPointInsideLongBox);
 	TEST_RUN(TestCacheAgrees);

@@ -131,7 +131,16 @@ static void SolveTriangle(const cd3Vec* w, cdReal* l)
 		n = cd3Cross(e02, e12);
 		edgeProductSquared = l02 * l12;
 	}
-	if ((double)cd3Length(n) > (double)GJK_DEGENERATE_TOLERANCE * sqrt(edgeProductSquared))
+#if CD_DOUBLE
+	bool flat = !((double)cd3Length(n) > (double)GJK_DEGENERATE_TOLERANCE * sqrt(edgeProductSquared));
+#else
+	/* Squares in double, without the two square roots: products of float coordinates of these
+	 * unit-scaled vertices neither overflow nor underflow there. */
+	double normalSquared = (double)n.x * (double)n.x + (double)n.y * (double)n.y + (double)n.z * (double)n.z;
+	bool flat = !(normalSquared >
+				  (double)GJK_DEGENERATE_TOLERANCE * (double)GJK_DEGENERATE_TOLERANCE * edgeProductSquared);
+#endif
+	if (!flat)
 	{
 		cdReal l0 = cd3Dot(n, cd3Cross(w[1], w[2]));
 		cdReal l1 = cd3Dot(n, cd3Cross(w[2], w[0]));
@@ -412,9 +421,12 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 	}
 	/* The constructions vanish only when the origin is (nearly) on the simplex's line or plane,
 	 * where -v is as good a direction as any. */
-	cdReal length = cd3Length(direction);
-	return length > CD_R(0.0) && cdIsValidReal(length) && cd3Dot(direction, v) < CD_R(0.0) ? direction
-																						   : cd3Neg(v);
+	/* The squared length decides as the length would (its square root is positive, finite or NaN
+	 * exactly when it is), without a square root per iteration. */
+	cdReal lengthSquared = cd3LengthSquared(direction);
+	return lengthSquared > CD_R(0.0) && cdIsValidReal(lengthSquared) && cd3Dot(direction, v) < CD_R(0.0)
+			   ? direction
+			   : cd3Neg(v);
 }
 
 static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int indexB)
