@@ -43,8 +43,10 @@ static struct
 } s_case;
 
 /* Open findings (fuzz/crashes/README.md, FuzzPassOver): checks that inputs within reach of the CI
- * run still fail; FUZZ_STRICT=1 checks them. */
-#define OPEN_FINDINGS "cast-free"
+ * run still fail; FUZZ_STRICT=1 checks them. Empty: the CI run (seed 1, 100000 inputs) passes
+ * with FUZZ_STRICT=1 in the float and the double build; the open cast-* rows of the README are
+ * reproduced by hand only. */
+#define OPEN_FINDINGS ""
 
 static void Fail(const char* check, const char* format, ...)
 {
