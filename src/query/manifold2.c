@@ -273,10 +273,12 @@ static cdReal RoundingSlack(cd2Vec p, cd2Vec q, cd2Vec r)
  * exception is the incident core's deepest vertex (its support against the normal), whose surface
  * point is taken straight against the normal: there the separation is exactly the separating-axis
  * value, rounded incident shapes included. */
-static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* incident, bool flip,
-						cdReal speculativeDistance, bool keepOutside)
+static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge, const Core* incident,
+				 bool flip, cdReal speculativeDistance, bool keepOutside)
 {
-	cd2Manifold manifold = EmptyManifold();
+	/* Written in place: a manifold returned by value through the callers cost store-forwarding
+	 * stalls on every copy. */
+	*manifold = EmptyManifold();
 	cd2Vec n = reference->normals[referenceEdge];
 	cd2Vec v1 = reference->vertices[referenceEdge];
 	cd2Vec v2 = reference->vertices[referenceEdge + 1 < reference->count ? referenceEdge + 1 : 0];
@@ -306,7 +308,7 @@ static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* in
 	{
 		if (!keepOutside)
 		{
-			return manifold;
+			return;
 		}
 		/* Beyond one side line: keep the core end nearer to the reference edge's extent (it is
 		 * where the incident edge enters the face region), the deeper one when both are equally
@@ -379,14 +381,13 @@ static cd2Manifold Clip(const Core* reference, int referenceEdge, const Core* in
 		cdReal separation = cd2Dot(n, cd2Sub(w[i], v1)) - reference->radius;
 		if (separation <= speculativeDistance)
 		{
-			AddPoint(&manifold, cd2MulSub(w[i], CD_R(0.5) * separation, n), separation, base | code[i] << 16);
+			AddPoint(manifold, cd2MulSub(w[i], CD_R(0.5) * separation, n), separation, base | code[i] << 16);
 		}
 	}
-	if (manifold.pointCount > 0)
+	if (manifold->pointCount > 0)
 	{
-		manifold.normal = flip ? cd2Neg(n) : n;
+		manifold->normal = flip ? cd2Neg(n) : n;
 	}
-	return manifold;
 }
 
 /* Index of the endpoint of edge (i, i + 1) that p is exactly, or -1. */
@@ -537,10 +538,16 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			 * along the gap is the contact. */
 			if (vertexA < 0 || vertexB < 0)
 			{
-				cd2Manifold face = vertexA < 0 ? Clip(a, FacingEdge(a, closestEdgeA, u), b, false,
-													  speculativeDistance, false)
-											   : Clip(b, FacingEdge(b, closestEdgeB, cd2Neg(u)), a, true,
-													  speculativeDistance, false);
+				cd2Manifold face;
+				if (vertexA < 0)
+				{
+					Clip(&face, a, FacingEdge(a, closestEdgeA, u), b, false, speculativeDistance, false);
+				}
+				else
+				{
+					Clip(&face, b, FacingEdge(b, closestEdgeB, cd2Neg(u)), a, true, speculativeDistance,
+						 false);
+				}
 				if (face.pointCount > 0 &&
 					SmallestSeparation(&face) <= closest.distance - total + separatedTolerance)
 				{
@@ -556,17 +563,30 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	 * other face, nearly as good an axis, then holds the contact if its clip keeps points. */
 	cdReal flipTolerance = FLIP_SLOPS * slop;
 	bool flip = separationB > separationA + flipTolerance;
-	cd2Manifold manifold = flip ? Clip(b, edgeB, a, true, speculativeDistance, false)
-								: Clip(a, edgeA, b, false, speculativeDistance, false);
+	cd2Manifold manifold;
+	if (flip)
+	{
+		Clip(&manifold, b, edgeB, a, true, speculativeDistance, false);
+	}
+	else
+	{
+		Clip(&manifold, a, edgeA, b, false, speculativeDistance, false);
+	}
 	if (manifold.pointCount == 0 && !flip && separationB >= separationA - flipTolerance)
 	{
-		manifold = Clip(b, edgeB, a, true, speculativeDistance, false);
+		Clip(&manifold, b, edgeB, a, true, speculativeDistance, false);
 	}
 	bool keptOutside = manifold.pointCount == 0;
 	if (keptOutside)
 	{
-		manifold = flip ? Clip(b, edgeB, a, true, speculativeDistance, true)
-						: Clip(a, edgeA, b, false, speculativeDistance, true);
+		if (flip)
+		{
+			Clip(&manifold, b, edgeB, a, true, speculativeDistance, true);
+		}
+		else
+		{
+			Clip(&manifold, a, edgeA, b, false, speculativeDistance, true);
+		}
 	}
 	/* Cores within the tolerance that do not overlap: their separation is exactly the gap minus
 	 * the radii. The clipped face misses it when the incident edge stands nearly square to a short
@@ -705,10 +725,11 @@ cd2Manifold cd2CollideSegmentSegment(cd2Segment a, cd2Segment b, cdReal speculat
 
 /* ---- chain segments --------------------------------------------------------------------------- */
 
-/* Whether the chain turns left (a convex corner, seen from the free side) from edge e1 to e2. */
-static bool IsConvexTurn(cd2Vec e1, cd2Vec e2)
+/* Whether the chain turns left (a convex corner, seen from the free side) from the unit direction
+ * u1 to u2. */
+static bool IsConvexTurn(cd2Vec u1, cd2Vec u2)
 {
-	return cd2Cross(cd2Normalize(e1), cd2Normalize(e2)) > CHAIN_FLAT_TOLERANCE;
+	return cd2Cross(u1, u2) > CHAIN_FLAT_TOLERANCE;
 }
 
 static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape, cd2Vec shapeCenter,
@@ -722,6 +743,7 @@ static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape,
 		return EmptyManifold(); /* a zero-length chain segment has no side */
 	}
 	cd2Vec n = segment.normals[0];
+	cd2Vec direction = cd2LeftPerp(n); /* the normalized edge, exactly */
 	if (cd2Dot(n, cd2Sub(shapeCenter, chain->p1)) < CD_R(0.0))
 	{
 		return EmptyManifold(); /* behind the one-sided segment */
@@ -741,20 +763,21 @@ static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape,
 	}
 	else if (side > CD_R(0.0))
 	{
-		cd2Vec next = cd2Sub(chain->ghost2, chain->p2);
-		admissible = IsConvexTurn(edge, next) && cd2Cross(m, cd2RightPerp(cd2Normalize(next))) >= CD_R(0.0);
+		cd2Vec next = cd2Normalize(cd2Sub(chain->ghost2, chain->p2));
+		bool convex = IsConvexTurn(direction, next);
+		admissible = convex && cd2Cross(m, cd2RightPerp(next)) >= CD_R(0.0);
 		/* Past the next segment's normal at a convex corner: that segment reports the contact. */
-		if (IsConvexTurn(edge, next) && !admissible)
+		if (convex && !admissible)
 		{
 			return EmptyManifold();
 		}
 	}
 	else if (side < CD_R(0.0))
 	{
-		cd2Vec previous = cd2Sub(chain->p1, chain->ghost1);
-		admissible =
-			IsConvexTurn(previous, edge) && cd2Cross(cd2RightPerp(cd2Normalize(previous)), m) >= CD_R(0.0);
-		if (IsConvexTurn(previous, edge) && !admissible)
+		cd2Vec previous = cd2Normalize(cd2Sub(chain->p1, chain->ghost1));
+		bool convex = IsConvexTurn(previous, direction);
+		admissible = convex && cd2Cross(cd2RightPerp(previous), m) >= CD_R(0.0);
+		if (convex && !admissible)
 		{
 			return EmptyManifold();
 		}
@@ -789,7 +812,9 @@ static cd2Manifold CollideChain(const cd2ChainSegment* chain, const Core* shape,
 		}
 		return faceManifold;
 	}
-	return Clip(&segment, 0, shape, false, speculativeDistance, false);
+	cd2Manifold faceManifold;
+	Clip(&faceManifold, &segment, 0, shape, false, speculativeDistance, false);
+	return faceManifold;
 }
 
 cd2Manifold cd2CollideChainSegmentCircle(const cd2ChainSegment* a, cd2Circle b, cdReal speculativeDistance)
