@@ -92,9 +92,15 @@ typedef struct Split
 
 static int BinOf(cd3Vec centroid, int axis, cdReal lower, cdReal scale, int binCount)
 {
-	cdReal c = cd3GetComponent(centroid, axis);
-	int b = (int)((c - lower) * scale);
-	return b < 0 ? 0 : (b >= binCount ? binCount - 1 : b);
+	/* In double and tested before the conversion: with coordinates near the largest floats a
+	 * centroid or the centroids' extent overflows, and (inf - lower) * 0 is NaN, which no int
+	 * conversion may see. Such triangles all land in bin 0 (the build falls back to halving). */
+	double t = ((double)cd3GetComponent(centroid, axis) - (double)lower) * (double)scale;
+	if (!(t > 0.0))
+	{
+		return 0;
+	}
+	return t >= (double)binCount ? binCount - 1 : (int)t;
 }
 
 /* One pass over the triangles bins them on all three axes at once (each axis over the
