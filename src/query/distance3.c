@@ -376,7 +376,9 @@ static cd3Vec SimplexPoint(const GjkSimplex* simplex)
  * and make GJK stop at a tie between support points. */
 static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 {
-	if (simplex->count < 2)
+	/* A tetrahedron (the shape cast can ask with one that round-off kept from enclosing the
+	 * origin) has no edge construction: -v. */
+	if (simplex->count < 2 || simplex->count > 3)
 	{
 		return cd3Neg(v);
 	}
