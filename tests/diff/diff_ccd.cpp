@@ -20,6 +20,7 @@
 
 #include "collide/collide.h"
 #include "exact3.h"
+#include "random_shapes3.h"
 #include "test.h"
 
 #include <cstdio>
@@ -82,26 +83,6 @@ ccd_t MakeCcd()
 
 // ---- random shapes ----------------------------------------------------------------------------
 
-cd3Quat RandomRotation(TestRng* rng)
-{
-	for (;;)
-	{
-		double x = TestRngRange(rng, -1, 1), y = TestRngRange(rng, -1, 1), z = TestRngRange(rng, -1, 1),
-			   w = TestRngRange(rng, -1, 1);
-		double n = std::sqrt(x * x + y * y + z * z + w * w);
-		if (n > 0.1 && n <= 1.0)
-		{
-			return cd3MakeQuat((cdReal)(x / n), (cdReal)(y / n), (cdReal)(z / n), (cdReal)(w / n));
-		}
-	}
-}
-
-cd3Vec RandomPoint(TestRng* rng, double reach)
-{
-	return cd3MakeVec((cdReal)TestRngRange(rng, -reach, reach), (cdReal)TestRngRange(rng, -reach, reach),
-					  (cdReal)TestRngRange(rng, -reach, reach));
-}
-
 // A pool of hulls: random clouds in a box or on an ellipsoid (8 to 32 points), cylinders, cones.
 std::vector<cd3Hull*> MakeHullPool(int count)
 {
@@ -155,7 +136,7 @@ cd3Shape RandomShape(TestRng* rng, cd3ShapeType type, const std::vector<cd3Hull*
 	cd3Shape s;
 	std::memset(&s, 0, sizeof s);
 	s.type = type;
-	cd3Vec center = RandomPoint(rng, 1.0);
+	cd3Vec center = RandomVec(rng, 1.0);
 	switch (type)
 	{
 		case CD3_SHAPE_SPHERE:
@@ -164,7 +145,7 @@ cd3Shape RandomShape(TestRng* rng, cd3ShapeType type, const std::vector<cd3Hull*
 			break;
 		case CD3_SHAPE_CAPSULE:
 		{
-			cd3Vec half = RandomPoint(rng, 0.8);
+			cd3Vec half = RandomVec(rng, 0.8);
 			// One capsule in ten has zero length (a sphere through the capsule code).
 			if (TestRngInt(rng, 10) == 0)
 			{
@@ -180,13 +161,13 @@ cd3Shape RandomShape(TestRng* rng, cd3ShapeType type, const std::vector<cd3Hull*
 			s.box.halfExtents =
 				cd3MakeVec((cdReal)TestRngRange(rng, 0.1, 1.2), (cdReal)TestRngRange(rng, 0.1, 1.2),
 						   (cdReal)TestRngRange(rng, 0.1, 1.2));
-			s.box.rotation = RandomRotation(rng);
+			s.box.rotation = RandomQuat(rng);
 			break;
 		default:
 			s.type = CD3_SHAPE_HULL;
 			s.hull.hull = pool[(size_t)TestRngInt(rng, (int)pool.size())];
 			s.hull.transform.p = center;
-			s.hull.transform.q = RandomRotation(rng);
+			s.hull.transform.q = RandomQuat(rng);
 			break;
 	}
 	return s;

@@ -15,6 +15,7 @@
 
 #include "collide/collide.h"
 #include "exact3.h"
+#include "random_shapes3.h"
 #include "test.h"
 
 #include <cstdio>
@@ -25,26 +26,6 @@
 namespace
 {
 using exact3::V3;
-
-cd3Quat RandomRotation(TestRng* rng)
-{
-	for (;;)
-	{
-		double x = TestRngRange(rng, -1, 1), y = TestRngRange(rng, -1, 1), z = TestRngRange(rng, -1, 1),
-			   w = TestRngRange(rng, -1, 1);
-		double n = std::sqrt(x * x + y * y + z * z + w * w);
-		if (n > 0.1 && n <= 1.0)
-		{
-			return cd3MakeQuat((cdReal)(x / n), (cdReal)(y / n), (cdReal)(z / n), (cdReal)(w / n));
-		}
-	}
-}
-
-cd3Vec RandomPoint(TestRng* rng, double reach)
-{
-	return cd3MakeVec((cdReal)TestRngRange(rng, -reach, reach), (cdReal)TestRngRange(rng, -reach, reach),
-					  (cdReal)TestRngRange(rng, -reach, reach));
-}
 
 std::vector<cd3Hull*> MakeHullPool(int count)
 {
@@ -84,7 +65,7 @@ cd3Shape RandomShape(TestRng* rng, cd3ShapeType type, const std::vector<cd3Hull*
 	cd3Shape s;
 	std::memset(&s, 0, sizeof s);
 	s.type = type;
-	cd3Vec center = RandomPoint(rng, 1.5);
+	cd3Vec center = RandomVec(rng, 1.5);
 	switch (type)
 	{
 		case CD3_SHAPE_SPHERE:
@@ -93,7 +74,7 @@ cd3Shape RandomShape(TestRng* rng, cd3ShapeType type, const std::vector<cd3Hull*
 			break;
 		case CD3_SHAPE_CAPSULE:
 		{
-			cd3Vec half = RandomPoint(rng, 0.8);
+			cd3Vec half = RandomVec(rng, 0.8);
 			s.capsule.p1 = cd3Sub(center, half);
 			s.capsule.p2 = cd3Add(center, half);
 			s.capsule.radius = (cdReal)TestRngRange(rng, 0.1, 0.8);
@@ -104,13 +85,13 @@ cd3Shape RandomShape(TestRng* rng, cd3ShapeType type, const std::vector<cd3Hull*
 			s.box.halfExtents =
 				cd3MakeVec((cdReal)TestRngRange(rng, 0.1, 1.2), (cdReal)TestRngRange(rng, 0.1, 1.2),
 						   (cdReal)TestRngRange(rng, 0.1, 1.2));
-			s.box.rotation = RandomRotation(rng);
+			s.box.rotation = RandomQuat(rng);
 			break;
 		default:
 			s.type = CD3_SHAPE_HULL;
 			s.hull.hull = pool[(size_t)TestRngInt(rng, (int)pool.size())];
 			s.hull.transform.p = center;
-			s.hull.transform.q = RandomRotation(rng);
+			s.hull.transform.q = RandomQuat(rng);
 			break;
 	}
 	return s;
