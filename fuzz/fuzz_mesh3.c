@@ -1,7 +1,8 @@
 /* libFuzzer target for triangle meshes: arbitrary vertex and index arrays (raw float bit patterns
  * with NaN and infinities, lattices that make coincident vertices, zero-area and coplanar
  * triangles, scales from tiny to huge, indices out of range). The builder must return exactly the
- * documented error (non-finite input first, then indices, then all-degenerate), and a mesh it
+ * documented error (non-finite input first, then coordinates beyond the limit, then indices,
+ * then all-degenerate), and a mesh it
  * returns must validate; then ray casts, any-hit casts and closest points equal a brute-force loop
  * over the triangles, overlap equals the OR over the triangles, and manifolds stay finite. */
 #include "collide/mesh3.h"
@@ -86,7 +87,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	int triangleCount = 1 + Byte(&r) % 48;
 	cd3Vec vertices[48];
 	int indices[3 * 48];
-	bool finite = true, inRange = true;
+	bool finite = true, inRange = true, belowLimit = true;
 	for (int i = 0; i < vertexCount; ++i)
 	{
 		vertices[i].x = Coordinate(&r, mode, scale, offset);
@@ -94,6 +95,9 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 		vertices[i].z = Coordinate(&r, mode, scale, offset);
 		finite = finite && cd3IsValidVec(vertices[i]);
 		inRange = inRange && InRange(vertices[i]);
+		belowLimit = belowLimit && fabs((double)vertices[i].x) <= (double)CD3_MESH_MAX_COORDINATE &&
+					 fabs((double)vertices[i].y) <= (double)CD3_MESH_MAX_COORDINATE &&
+					 fabs((double)vertices[i].z) <= (double)CD3_MESH_MAX_COORDINATE;
 	}
 	bool indicesOk = true;
 	for (int i = 0; i < 3 * triangleCount; ++i)
@@ -110,9 +114,11 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 						   vertices[indices[3 * t + 2]]};
 		valid += cd3IsValidTriangle(tri) ? 1 : 0;
 	}
-	cdResult expected =
-		!finite ? CD_ERROR_NOT_FINITE
-				: (!indicesOk ? CD_ERROR_INVALID_ARGUMENT : (valid == 0 ? CD_ERROR_DEGENERATE : CD_OK));
+	cdResult expected = !finite		  ? CD_ERROR_NOT_FINITE
+						: !belowLimit ? CD_ERROR_OUT_OF_RANGE
+						: !indicesOk  ? CD_ERROR_INVALID_ARGUMENT
+						: valid == 0  ? CD_ERROR_DEGENERATE
+									  : CD_OK;
 	cd3Mesh* mesh = NULL;
 	cdResult result = cd3CreateMesh(vertices, vertexCount, indices, triangleCount, &mesh);
 	if (result != expected)

@@ -2,6 +2,8 @@
  * loop over the triangles with the primitive routines (ray casts, any hit, closest point, overlap,
  * bounds queries) on random soups, a terrain and a sphere mesh, with and without a mesh transform. */
 #include "collide/mesh3.h"
+
+#include <float.h>
 #include "random_meshes3.h"
 #include "random_shapes3.h"
 #include "test.h"
@@ -40,6 +42,16 @@ static void TestBadInput(void)
 	TEST_CHECK(cd3CreateMesh(bad, 4, good, 2, &mesh) == CD_ERROR_NOT_FINITE && mesh == NULL);
 	bad[3].y = (cdReal)INFINITY;
 	TEST_CHECK(cd3CreateMesh(bad, 4, good, 2, &mesh) == CD_ERROR_NOT_FINITE);
+	/* Finite but beyond the limit (the fuzzer's case: a vertex near FLT_MAX, whose padded float
+	 * bound was infinite); just inside the limit builds and validates. */
+	bad[3].y = CD3_MESH_MAX_COORDINATE * CD_R(2.0);
+	TEST_CHECK(cd3CreateMesh(bad, 4, good, 2, &mesh) == CD_ERROR_OUT_OF_RANGE && mesh == NULL);
+	bad[3].y = -(cdReal)FLT_MAX;
+	TEST_CHECK(cd3CreateMesh(bad, 4, good, 2, &mesh) == CD_ERROR_OUT_OF_RANGE);
+	bad[3].y = CD3_MESH_MAX_COORDINATE;
+	TEST_CHECK(cd3CreateMesh(bad, 4, good, 2, &mesh) == CD_OK && mesh != NULL);
+	TEST_CHECK(cd3ValidateMesh(mesh) == CD_OK);
+	cd3DestroyMesh(mesh);
 	/* Every triangle degenerate: coincident corners, collinear corners. */
 	cd3Vec line[3] = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
 	int flat[6] = {0, 1, 2, 0, 0, 1};

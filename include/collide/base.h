@@ -57,7 +57,8 @@ typedef enum cdResult
 	CD_ERROR_TOO_MANY_POINTS,  /* more points than the documented limit */
 	CD_ERROR_NOT_NORMALIZED,   /* a quaternion, rotation or plane normal that is not unit length */
 	CD_ERROR_OUT_OF_MEMORY,
-	CD_ERROR_PARSE, /* malformed input file */
+	CD_ERROR_PARSE,		   /* malformed input file */
+	CD_ERROR_OUT_OF_RANGE, /* a finite coordinate beyond a builder's documented limit */
 	CD_RESULT_COUNT
 } cdResult;
 

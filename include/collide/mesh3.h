@@ -19,6 +19,16 @@ extern "C" {
 #define CD3_MAX_MESH_VERTICES (1 << 24)
 #define CD3_MAX_MESH_TRIANGLES (1 << 24)
 
+/* Vertex coordinates must lie within +-CD3_MESH_MAX_COORDINATE. The BVH stores float bounds
+ * padded outward, so a coordinate near FLT_MAX would have no finite bound; in the float build
+ * the limit also keeps squared distances finite. Both limits are far beyond the range in which
+ * queries keep their documented precision (1e9 float, 1e30 double, docs/API.md). */
+#if CD_DOUBLE
+#define CD3_MESH_MAX_COORDINATE 1e30
+#else
+#define CD3_MESH_MAX_COORDINATE 1e18f
+#endif
+
 /* Opaque: one block from cdAlloc, released by cd3DestroyMesh. */
 typedef struct cd3Mesh cd3Mesh;
 
@@ -42,8 +52,9 @@ typedef struct cd3MeshStats
  * which the queries report. Neighbouring triangles are found through shared vertex indices and
  * vertices at exactly the same position. On success *mesh receives a new mesh (free it with
  * cd3DestroyMesh); on failure *mesh is NULL and the result says why: CD_ERROR_INVALID_ARGUMENT
- * (NULL pointer, count <= 0 or above the limits, an index out of range), CD_ERROR_NOT_FINITE,
- * CD_ERROR_DEGENERATE (every triangle has zero area), CD_ERROR_OUT_OF_MEMORY. */
+ * (NULL pointer, count <= 0, an index out of range), CD_ERROR_TOO_MANY_POINTS (a count above
+ * its limit), CD_ERROR_NOT_FINITE,
+ * CD_ERROR_OUT_OF_RANGE (a coordinate beyond CD3_MESH_MAX_COORDINATE), CD_ERROR_DEGENERATE (every triangle has zero area), CD_ERROR_OUT_OF_MEMORY. */
 CD_API cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indices, int triangleCount,
 							  cd3Mesh** mesh);
 CD_API void cd3DestroyMesh(cd3Mesh* mesh);

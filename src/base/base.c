@@ -27,6 +27,8 @@ const char* cdResultString(cdResult result)
 			return "out of memory";
 		case CD_ERROR_PARSE:
 			return "malformed input";
+		case CD_ERROR_OUT_OF_RANGE:
+			return "coordinate beyond the documented range";
 		case CD_RESULT_COUNT:
 			break;
 	}

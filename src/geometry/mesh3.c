@@ -512,6 +512,13 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 			return CD_ERROR_NOT_FINITE;
 		}
 	}
+	for (int i = 0; i < vertexCount; ++i)
+	{
+		if (MaxAbs(vertices[i]) > CD3_MESH_MAX_COORDINATE)
+		{
+			return CD_ERROR_OUT_OF_RANGE;
+		}
+	}
 	for (int i = 0; i < 3 * triangleCount; ++i)
 	{
 		if (indices[i] < 0 || indices[i] >= vertexCount)
@@ -750,6 +757,10 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 		if (!cd3IsValidVec(t.a) || !cd3IsValidVec(t.b) || !cd3IsValidVec(t.c))
 		{
 			return CD_ERROR_NOT_FINITE;
+		}
+		if (cdMax(MaxAbs(t.a), cdMax(MaxAbs(t.b), MaxAbs(t.c))) > CD3_MESH_MAX_COORDINATE)
+		{
+			return CD_ERROR_OUT_OF_RANGE;
 		}
 		if (!cd3IsValidTriangle(t))
 		{
