@@ -1217,6 +1217,56 @@ static void TestEpaLargeHulls(void)
 	}
 }
 
+static cd3Shape BoxShape(double cx, double cy, double cz, double hx, double hy, double hz, double qx,
+						 double qy, double qz, double qw)
+{
+	cd3Box box = {cd3MakeVec((cdReal)cx, (cdReal)cy, (cdReal)cz),
+				  cd3MakeVec((cdReal)hx, (cdReal)hy, (cdReal)hz),
+				  cd3NormalizeQuat(cd3MakeQuat((cdReal)qx, (cdReal)qy, (cdReal)qz, (cdReal)qw))};
+	return cd3MakeBoxShape(box);
+}
+
+/* The largest distance of a manifold point's A side from A and B side from B (0 for no points). */
+static double WorstOffSurface(const cd3Manifold* m, const cd3Shape* a, const cd3Shape* b)
+{
+	double worst = 0.0;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		cd3ManifoldPoint p = m->points[i];
+		cd3Vec onA = cd3MulSub(p.point, CD_R(0.5) * p.separation, m->normal);
+		cd3Vec onB = cd3MulAdd(p.point, CD_R(0.5) * p.separation, m->normal);
+		worst = fmax(worst, (double)cd3VecDistance(cd3ClosestPointOnShape(a, onA), onA));
+		worst = fmax(worst, (double)cd3VecDistance(cd3ClosestPointOnShape(b, onB), onB));
+	}
+	return worst;
+}
+
+/* Findings of fuzz_manifold3 of session 3 (fuzz/corpus/fuzz_manifold3/regression-*): the exact
+ * inputs, each manifold checked on both surfaces in both orders. */
+static void TestFuzzRegressions(void)
+{
+	/* regression-box-capsule-surface: a capsule (radius 12.5e6) whose axis lies inside a box of
+	 * half size 12.5e6 but for its end p2, 1.25e5 past the box's -y face. The SAT face (+x, depth
+	 * 11.625e6 + r) wins within EDGE_BIAS over the true axis (the capsule's axis crossed with the
+	 * box's z edges, depth 11.6231e6 + r, reference below in double), and its one point was p2
+	 * projected on the face: 1.25e5 beside the face. Now the deepest point of the segment's part
+	 * over the face. */
+	cd3Shape box = BoxShape(-1125000, 0, -12125000, 12375000, 12500000, 12500000, -0.5, -0.5, -0.5, -0.5);
+	cd3Shape capsule = CapsuleShape(-125000, -250000, -12375000, -250000, -12500000, -12500000, 12500000);
+	/* Segment against box, axes: the box's faces and the segment crossed with its edges. */
+	double reference = -11623119.386878215 - 12500000.0;
+	for (int order = 0; order < 2; ++order)
+	{
+		cd3Manifold m =
+			order == 0 ? cd3Collide(&box, &capsule, CD_R(0.0)) : cd3Collide(&capsule, &box, CD_R(0.0));
+		double off = order == 0 ? WorstOffSurface(&m, &box, &capsule) : WorstOffSurface(&m, &capsule, &box);
+		TEST_CHECKF(m.pointCount > 0 && off <= 1e-5 * 2.5e7, "order %d: %d points, %.3g off a surface", order,
+					m.pointCount, off);
+		TEST_CHECKF(fabs(MinSeparation(&m) - reference) <= 1e-4 * 2.5e7,
+					"order %d: separation %.9g, reference %.9g", order, MinSeparation(&m), reference);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -1233,5 +1283,6 @@ int main(void)
 	TEST_RUN(TestExactDepth);
 	TEST_RUN(TestEpaLargeHulls);
 	TEST_RUN(TestFuzzFindings);
+	TEST_RUN(TestFuzzRegressions);
 	return TEST_SUMMARY();
 }

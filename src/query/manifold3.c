@@ -715,10 +715,20 @@ static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b
 	}
 	else
 	{
+		/* One point: the deepest along n of the segment's part over the face. The deepest end can
+		 * lie beside the face when an edge axis separates within EDGE_BIAS of it (a capsule's
+		 * end past the face's side, at a slant): its projection on the face plane is then off
+		 * the face. A segment that passes beside the face keeps its deepest end. */
 		count = 1;
-		if (cd3Dot(n, p2) < cd3Dot(n, p1))
+		cd3Vec c1 = p1, c2 = p2;
+		if (ClipSegmentToFace(b, face, n, &c1, &c2))
 		{
-			q[0] = p2;
+			q[0] = c1;
+			q[1] = c2;
+		}
+		if (cd3Dot(n, q[1]) < cd3Dot(n, q[0]))
+		{
+			q[0] = q[1];
 		}
 	}
 	*m = EmptyManifold();
