@@ -2,9 +2,11 @@
  * straight terrain (no ghost normals, right depths), convex corners, one-sidedness, loops, and
  * the hierarchy's box query, ray cast and manifolds against brute force over the segments. */
 #include "collide/chain2.h"
+#include "../src/query/chain_manifold2.h" /* internal: the dedicated segment-polygon manifold */
 
 #include "test.h"
 
+#include <math.h>
 #include <stdbool.h>
 #include <string.h>
 
@@ -1039,6 +1041,266 @@ static void TestCollideAgainstBruteForce(void)
 	cd2DestroyChain(chain);
 }
 
+/* ---- the dedicated segment-polygon manifold ---------------------------------------------------- */
+
+/* A random one-sided segment with ghosts that turn by a random angle at each end (convex,
+ * concave, straight on exactly, or within a hair of straight) and a random polygon near it: a box
+ * (now and then square to the segment, so that faces are parallel), a hull of 3 to 8 points, a
+ * third of them rounded; placed anywhere from behind the segment to above it and beyond its ends. */
+static void RandomSegmentPolygon(TestRng* rng, cd2ChainSegment* s, cd2Polygon* polygon)
+{
+	double angle = TestRngRange(rng, -3.2, 3.2);
+	double length = TestRngRange(rng, 0.2, 3.0);
+	double x = TestRngRange(rng, -5, 5), y = TestRngRange(rng, -5, 5);
+	s->p1 = V(x, y);
+	s->p2 = V(x + length * cos(angle), y + length * sin(angle));
+	for (int end = 0; end < 2; ++end)
+	{
+		double turn;
+		switch (TestRngInt(rng, 5))
+		{
+			case 0:
+				turn = 0.0;
+				break;
+			case 1:
+				turn = TestRngRange(rng, -1e-3, 1e-3);
+				break;
+			case 2:
+				turn = TestRngRange(rng, 0.02, 1.4); /* convex */
+				break;
+			case 3:
+				turn = -TestRngRange(rng, 0.02, 1.4); /* concave */
+				break;
+			default:
+				turn = TestRngRange(rng, -0.3, 0.3);
+				break;
+		}
+		double ghostLength = TestRngRange(rng, 0.2, 3.0);
+		if (end == 0)
+		{
+			double a = angle - turn; /* the previous segment's direction, turning left by `turn` */
+			s->ghost1 = turn == 0.0 ? cd2Sub(s->p1, cd2Sub(s->p2, s->p1))
+									: V((double)s->p1.x - ghostLength * cos(a),
+										(double)s->p1.y - ghostLength * sin(a));
+		}
+		else
+		{
+			double a = angle + turn;
+			s->ghost2 = turn == 0.0 ? cd2Add(s->p2, cd2Sub(s->p2, s->p1))
+									: V((double)s->p2.x + ghostLength * cos(a),
+										(double)s->p2.y + ghostLength * sin(a));
+		}
+	}
+	double size = TestRngRange(rng, 0.05, 1.0);
+	double along = TestRngRange(rng, -0.4, 1.4);
+	double height = TestRngRange(rng, -0.8, 1.6) * size;
+	double nx = sin(angle), ny = -cos(angle); /* the front normal, right of p1 -> p2 */
+	cd2Vec center =
+		V(x + along * length * cos(angle) + height * nx, y + along * length * sin(angle) + height * ny);
+	cdReal radius = TestRngInt(rng, 3) == 0 ? (cdReal)TestRngRange(rng, 0.0, 0.3) : CD_R(0.0);
+	cdResult result;
+	if (TestRngInt(rng, 2) == 0)
+	{
+		double rotation = TestRngInt(rng, 4) == 0 ? angle + 0.5 * 3.14159265358979 * TestRngInt(rng, 4)
+												  : TestRngRange(rng, -3.2, 3.2);
+		cd2Box box = {center, V(size, TestRngRange(rng, 0.05, 1.0)), cd2MakeRot((cdReal)rotation)};
+		result = cd2MakeRoundedBoxPolygon(box, radius, polygon);
+	}
+	else
+	{
+		cd2Vec cloud[8];
+		int count = 3 + TestRngInt(rng, 6);
+		for (int i = 0; i < count; ++i)
+		{
+			cloud[i] = V((double)center.x + TestRngRange(rng, -size, size),
+						 (double)center.y + TestRngRange(rng, -size, size));
+		}
+		result = cd2MakeRoundedPolygon(cloud, count, radius, polygon);
+	}
+	if (result != CD_OK)
+	{
+		cd2Box box = {center, V(size, size), cd2MakeRot(CD_R(0.3))};
+		TEST_CHECK(cd2MakeBoxPolygon(box, polygon) == CD_OK);
+	}
+}
+
+/* Distance from p to the polygon's core (negative inside: minus the depth below the nearest face). */
+static double CoreDistance(const cd2Polygon* polygon, cd2Vec p)
+{
+	double deepest = -1e300;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		deepest = fmax(deepest, (double)cd2Dot(polygon->normals[i], cd2Sub(p, polygon->vertices[i])));
+	}
+	if (deepest <= 0.0)
+	{
+		return deepest;
+	}
+	double best = 1e300;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		cd2Segment edge = {polygon->vertices[i], polygon->vertices[i + 1 < polygon->count ? i + 1 : 0]};
+		best = fmin(best, (double)cd2VecDistance(p, cd2ClosestPointOnSegment(edge, p)));
+	}
+	return best;
+}
+
+/* cd2CollideChainSegmentPolygonDirect (what cd2CollideChain runs for polygons) against the generic
+ * core-core path cd2CollideChainSegmentPolygon of manifold2.c on random segments, ghosts and
+ * polygons at all distances: the same points, separations, normal and feature ids; every point
+ * midway between the two surfaces. Then against the two-sided segment's manifold (cd2Collide)
+ * where its normal is one the chain allows, clear of the fan's edges and of ties between the two
+ * shapes' faces: the same normal and deepest separation. */
+static void TestDirectSegmentPolygon(void)
+{
+	TestRng rng = TestRngMake(0x5E6D);
+	const double tolerance = CD_DOUBLE ? 1e-9 : 2e-4;
+	const cdReal speculative[3] = {CD_R(0.0), CD_R(0.02), CD_R(0.25)};
+	int contacts = 0, exact = 0, cases = 6000, twoSidedCompared = 0, faceReference = 0, gapContacts = 0;
+	for (int trial = 0; trial < cases; ++trial)
+	{
+		cd2ChainSegment s;
+		cd2Polygon polygon;
+		RandomSegmentPolygon(&rng, &s, &polygon);
+		cdReal distance = speculative[TestRngInt(&rng, 3)];
+		cd2Manifold direct = cd2CollideChainSegmentPolygonDirect(&s, &polygon, distance);
+		cd2Manifold generic = cd2CollideChainSegmentPolygon(&s, &polygon, distance);
+		bool same = direct.pointCount == generic.pointCount &&
+					(double)cd2VecDistance(direct.normal, generic.normal) <= tolerance;
+		for (int i = 0; same && i < direct.pointCount; ++i)
+		{
+			const cd2ManifoldPoint* d = &direct.points[i];
+			const cd2ManifoldPoint* g = &generic.points[i];
+			same = d->id == g->id && (double)cd2VecDistance(d->point, g->point) <= tolerance &&
+				   fabs((double)d->separation - (double)g->separation) <=
+					   tolerance * fmax(1.0, fabs((double)g->separation));
+		}
+		TEST_CHECKF(
+			same,
+			"trial %d: direct %d points normal (%.7g %.7g) id %x sep %.7g, generic %d points normal (%.7g "
+			"%.7g) id %x sep %.7g",
+			trial, direct.pointCount, (double)direct.normal.x, (double)direct.normal.y, direct.points[0].id,
+			(double)direct.points[0].separation, generic.pointCount, (double)generic.normal.x,
+			(double)generic.normal.y, generic.points[0].id, (double)generic.points[0].separation);
+		bool identical = same && cd2VecEqual(direct.normal, generic.normal);
+		for (int i = 0; identical && i < direct.pointCount; ++i)
+		{
+			identical = cd2VecEqual(direct.points[i].point, generic.points[i].point) &&
+						direct.points[i].separation == generic.points[i].separation;
+		}
+		exact += identical;
+		if (direct.pointCount == 0)
+		{
+			continue;
+		}
+		++contacts;
+		gapContacts += (direct.points[0].id >> 16) >= 4u;
+		faceReference += (direct.points[0].id & CD2_FEATURE_FLIP) == 0u && (direct.points[0].id >> 16) < 4u;
+
+		/* Midway between the surfaces: on the segment below, on the polygon's surface above; the
+		 * normal unit and facing the front. */
+		cd2Segment core = {s.p1, s.p2};
+		cd2Vec front = cd2RightPerp(cd2Normalize(cd2Sub(s.p2, s.p1)));
+		TEST_CHECKF(fabs((double)cd2Length(direct.normal) - 1.0) <= tolerance &&
+						(double)cd2Dot(direct.normal, front) >= 0.0,
+					"trial %d: normal (%.7g %.7g)", trial, (double)direct.normal.x, (double)direct.normal.y);
+		for (int i = 0; i < direct.pointCount; ++i)
+		{
+			const cd2ManifoldPoint* p = &direct.points[i];
+			cd2Vec onA = cd2MulSub(p->point, CD_R(0.5) * p->separation, direct.normal);
+			cd2Vec onB = cd2MulAdd(p->point, CD_R(0.5) * p->separation, direct.normal);
+			double offA = (double)cd2VecDistance(onA, cd2ClosestPointOnSegment(core, onA));
+			double offB = CoreDistance(&polygon, onB) - (double)polygon.radius;
+			TEST_CHECKF(offA <= 10.0 * tolerance && fabs(offB) <= 10.0 * tolerance &&
+							p->separation <= distance,
+						"trial %d point %d: %.3g off the segment, %.3g off the polygon, separation %.7g",
+						trial, i, offA, offB, (double)p->separation);
+		}
+	}
+
+	/* The two-sided segment (cd2Collide: the normal points from the segment to the polygon) where
+	 * the chain allows its normal and the shapes' best faces are not near a tie. */
+	TestRng rng2 = TestRngMake(0x5E6E);
+	for (int trial = 0; trial < cases; ++trial)
+	{
+		cd2ChainSegment s;
+		cd2Polygon polygon;
+		RandomSegmentPolygon(&rng2, &s, &polygon);
+		cdReal distance = speculative[TestRngInt(&rng2, 3)];
+		cd2Segment segment = {s.p1, s.p2};
+		cd2Shape a = cd2MakeSegmentShape(segment), b = cd2MakePolygonShape(&polygon);
+		cd2Manifold twoSided = cd2Collide(&a, &b, distance);
+		if (twoSided.pointCount == 0)
+		{
+			continue;
+		}
+		cd2Vec direction = cd2Normalize(cd2Sub(s.p2, s.p1));
+		cd2Vec front = cd2RightPerp(direction);
+		cd2Vec m = twoSided.normal;
+		double side = (double)cd2Cross(front, m);
+		bool allowed;
+		if (fabs(side) < 1e-6 && (double)cd2Dot(m, front) > 0.0)
+		{
+			allowed = true; /* the segment's own normal */
+		}
+		else if (side > 1e-3)
+		{
+			cd2Vec next = cd2Normalize(cd2Sub(s.ghost2, s.p2));
+			allowed = (double)cd2Cross(direction, next) > 1e-3 &&
+					  (double)cd2Cross(m, cd2RightPerp(next)) > 1e-3; /* inside the convex fan */
+		}
+		else if (side < -1e-3)
+		{
+			cd2Vec previous = cd2Normalize(cd2Sub(s.p1, s.ghost1));
+			allowed = (double)cd2Cross(previous, direction) > 1e-3 &&
+					  (double)cd2Cross(cd2RightPerp(previous), m) > 1e-3;
+		}
+		else
+		{
+			allowed = false;
+		}
+		/* The separating axis values of the segment's front face and of the polygon's best face:
+		 * the two orders prefer their own first shape's face on a near tie. */
+		double faceA = 1e300, faceB = -1e300;
+		for (int j = 0; j < polygon.count; ++j)
+		{
+			faceA = fmin(faceA, (double)cd2Dot(front, cd2Sub(polygon.vertices[j], s.p1)));
+			double e = fmin((double)cd2Dot(polygon.normals[j], cd2Sub(s.p1, polygon.vertices[j])),
+							(double)cd2Dot(polygon.normals[j], cd2Sub(s.p2, polygon.vertices[j])));
+			faceB = fmax(faceB, e);
+		}
+		bool behind = (double)cd2Dot(front, cd2Sub(polygon.centroid, s.p1)) < 1e-3;
+		if (!allowed || behind || fabs(faceA - faceB) < 0.01 || fmax(faceA, faceB) > 0.0)
+		{
+			continue; /* separated cores take the closest-feature path, where the tie rules differ too */
+		}
+		cd2Manifold direct = cd2CollideChainSegmentPolygonDirect(&s, &polygon, distance);
+		double deepestDirect = 1e300, deepestTwoSided = 1e300;
+		for (int i = 0; i < direct.pointCount; ++i)
+		{
+			deepestDirect = fmin(deepestDirect, (double)direct.points[i].separation);
+		}
+		for (int i = 0; i < twoSided.pointCount; ++i)
+		{
+			deepestTwoSided = fmin(deepestTwoSided, (double)twoSided.points[i].separation);
+		}
+		TEST_CHECKF(
+			direct.pointCount == twoSided.pointCount &&
+				(double)cd2VecDistance(direct.normal, m) <= tolerance &&
+				fabs(deepestDirect - deepestTwoSided) <= tolerance * fmax(1.0, fabs(deepestTwoSided)),
+			"trial %d: direct %d points (%.7g %.7g) deepest %.7g, two-sided %d points (%.7g %.7g) deepest "
+			"%.7g",
+			trial, direct.pointCount, (double)direct.normal.x, (double)direct.normal.y, deepestDirect,
+			twoSided.pointCount, (double)m.x, (double)m.y, deepestTwoSided);
+		++twoSidedCompared;
+	}
+	printf("direct segment-polygon: %d of %d cases in contact (%d on the segment's face, %d along a gap), %d "
+		   "bit for bit as the generic path; %d compared with the two-sided segment\n",
+		   contacts, cases, faceReference, gapContacts, exact, twoSidedCompared);
+	TEST_CHECK(contacts > cases / 4 && faceReference > contacts / 4 && gapContacts > 20 &&
+			   twoSidedCompared > cases / 10);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1132,6 +1394,7 @@ int main(void)
 	TEST_RUN(TestQueryAabb);
 	TEST_RUN(TestRaycast);
 	TEST_RUN(TestCollideAgainstBruteForce);
+	TEST_RUN(TestDirectSegmentPolygon);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

@@ -11,10 +11,14 @@
 // Boxes (1 x 1, slightly rotated) rest on the terrain sunk by up to 0.02; contacts are reported up
 // to 2 * b2_polygonRadius apart (collide: that speculative distance). Each figure is the median of
 // 9 runs of about 20 ms of thread CPU time (3 with --quick), collide's and Box2D's runs alternating.
-// Usage: collide_bench_chain2 [--quick | --profile <chain|edge|ray>-<collide|box2d> | --profile none]
+// The edge rows time cd2CollideChainSegmentPolygonDirect (the dedicated routine cd2CollideChain
+// runs) and, for comparison, the public cd2CollideChainSegmentPolygon (manifold2.c's generic path).
+// Usage: collide_bench_chain2 [--quick | --profile <chain|edge|ray>-<collide|box2d> | --profile
+// edge-generic | --profile none]
 #include <box2d/box2d.h>
 
 #include "collide/chain2.h"
+#include "query/chain_manifold2.h" // internal: the dedicated segment-polygon manifold
 
 #include <algorithm>
 #include <cmath>
@@ -330,6 +334,12 @@ int main(int argc, char** argv)
 	};
 	auto collideEdge = [&](int k) {
 		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		return cd2CollideChainSegmentPolygonDirect(
+				   &segment, &scene.boxPolygons[(size_t)scene.pairBox[(size_t)k]], speculative)
+			.pointCount;
+	};
+	auto collideEdgeGeneric = [&](int k) {
+		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentPolygon(&segment, &scene.boxPolygons[(size_t)scene.pairBox[(size_t)k]],
 											 speculative)
 			.pointCount;
@@ -366,6 +376,8 @@ int main(int argc, char** argv)
 			ns = TimeOnce(kBoxes, box2dChain, reps);
 		else if (which == "edge-collide")
 			ns = TimeOnce(pairs, collideEdge, reps);
+		else if (which == "edge-generic")
+			ns = TimeOnce(pairs, collideEdgeGeneric, reps);
 		else if (which == "edge-box2d")
 			ns = TimeOnce(pairs, box2dEdge, reps);
 		else if (which == "ray-collide")
@@ -386,6 +398,7 @@ int main(int argc, char** argv)
 		Compare(kBoxes, collideChain, box2dChain, runs, seconds));
 	// One manifold on the same child edge.
 	row("box vs one chain edge (same edges)", Compare(pairs, collideEdge, box2dEdge, runs, seconds));
+	row("  same, previous generic core-core path", Compare(pairs, collideEdgeGeneric, box2dEdge, runs, seconds));
 	// Ray casts: closest hit on the whole chain.
 	row("ray cast vs 10k-segment chain", Compare(kRays, collideRay, box2dRay, runs, seconds));
 

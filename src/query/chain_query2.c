@@ -4,6 +4,7 @@
  * bounding hierarchy (see geometry/chain2.c) is walked depth first, left child first, so leaves
  * come out in increasing segment order, and results go back to world space. */
 #include "../geometry/chain2_internal.h"
+#include "chain_manifold2.h"
 
 /* A depth-first walk pushes at most CHAIN_BRANCH - 1 siblings per level besides the one it
  * descends into. */
@@ -484,7 +485,7 @@ static bool CollideSegment(int index, void* userContext)
 			m = cd2CollideChainSegmentCapsule(&segment, shape->capsule, context->speculativeDistance);
 			break;
 		default:
-			m = cd2CollideChainSegmentPolygon(&segment, &shape->polygon, context->speculativeDistance);
+			m = cd2CollideChainSegmentPolygonDirect(&segment, &shape->polygon, context->speculativeDistance);
 			break;
 	}
 	if (m.pointCount == 0)

@@ -1,0 +1,715 @@
+/* collide: a one-sided chain segment (shape A) against a polygon, rounded or not (shape B).
+ *
+ * The answer is the one manifold2.c gives (see the comment at its top): the segment's two-sided
+ * core against the polygon's core by the separating axis test, the closest-feature path for cores
+ * apart by more than a tenth of a linear slop, then the chain's check of the normal against the
+ * directions the ghosts allow, falling back to the contact seen from the segment's own face. The
+ * same decisions are taken in the same order with the same tolerances, so points, separations,
+ * normals and feature ids match; what changes is the work:
+ * - the segment's two normals need no core: its front separation is one pass over the polygon's
+ *   vertices, its back one stops at the first vertex clearly above the line;
+ * - clipping is written once per reference side: the segment's face (the polygon's edge facing
+ *   it is incident) or a polygon edge (the segment is incident);
+ * - when the segment's front normal separates the polygon (every vertex above the line) and the
+ *   polygon's own normals do not, the closest points come from the vertices' heights: a lowest
+ *   vertex that projects onto the segment is the closest feature; otherwise the segment's ends
+ *   against the polygon edges that face them. The generic path ran a segment-segment closest
+ *   point search against every polygon edge there, the most costly step of a box resting on
+ *   terrain next to a segment it does not quite touch. */
+#include "chain_manifold2.h"
+
+/* The tolerances of manifold2.c, which this routine must follow to take the same decisions. */
+#define SEPARATED_SLOPS CD_R(0.1)
+#define FLIP_SLOPS CD_R(0.1)
+#define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
+#define CODE_VERTEX_VERTEX 4u
+#define CODE_EDGE_A 1u
+#define CODE_EDGE_B 2u
+
+typedef struct Pair
+{
+	cd2Vec p1, p2;
+	cd2Vec n; /* the segment's front normal (unit); its back normal is -n */
+	const cd2Polygon* polygon;
+	cdReal speculativeDistance;
+} Pair;
+
+static cd2Manifold EmptyManifold(void)
+{
+	cd2Manifold manifold = {{CD_R(0.0), CD_R(0.0)}, {{{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u}}, 0};
+	return manifold;
+}
+
+static void AddPoint(cd2Manifold* manifold, cd2Vec point, cdReal separation, uint32_t id)
+{
+	cd2ManifoldPoint* p = &manifold->points[manifold->pointCount++];
+	p->point = point;
+	p->separation = separation;
+	p->id = id;
+}
+
+static cdReal SmallestSeparation(const cd2Manifold* manifold)
+{
+	cdReal smallest = CD_REAL_MAX;
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		smallest = cdMin(smallest, manifold->points[i].separation);
+	}
+	return smallest;
+}
+
+/* A bound on the rounding of positions along an edge computed from these points. */
+static cdReal RoundingSlack(cd2Vec p, cd2Vec q, cd2Vec r)
+{
+	cdReal magnitude = cdAbs(p.x) + cdAbs(p.y) + cdAbs(q.x) + cdAbs(q.y) + cdAbs(r.x) + cdAbs(r.y);
+	return CD_R(8.0) * CD_REAL_EPSILON * magnitude;
+}
+
+static int NextVertex(const cd2Polygon* polygon, int i)
+{
+	return i + 1 < polygon->count ? i + 1 : 0;
+}
+
+/* ---- clipping --------------------------------------------------------------------------------- */
+
+/* The reference edge v1 -> v2 (outward unit normal n, rounded by referenceRadius) against the
+ * incident core edge core0 -> core1 (rounded by incidentRadius along incidentNormal): the clip of
+ * manifold2.c, step for step (its comments explain the choices). */
+static void ClipEdges(cd2Manifold* manifold, cd2Vec n, cd2Vec v1, cd2Vec v2, cdReal referenceRadius,
+					  cd2Vec core0, cd2Vec core1, cd2Vec incidentNormal, cdReal incidentRadius, uint32_t base,
+					  bool flip, cdReal speculativeDistance, bool keepOutside)
+{
+	/* Scalars, not two-element arrays indexed by a variable: those lived on the stack. */
+	*manifold = EmptyManifold();
+	cd2Vec offset = cd2Scale(incidentRadius, incidentNormal);
+	cd2Vec w0 = cd2Add(core0, offset), w1 = cd2Add(core1, offset);
+	uint32_t code0 = 0u, code1 = 1u;
+
+	cd2Vec tangent = cd2LeftPerp(n);
+	cdReal upper = cd2Dot(tangent, cd2Sub(v2, v1));
+	cdReal along0 = cd2Dot(tangent, cd2Sub(w0, v1)), along1 = cd2Dot(tangent, cd2Sub(w1, v1));
+	int pointCount = 2;
+	if ((along0 < CD_R(0.0) && along1 < CD_R(0.0)) || (along0 > upper && along1 > upper))
+	{
+		if (!keepOutside)
+		{
+			return;
+		}
+		/* Beyond one side line: the core end nearer to the reference edge's extent, the deeper one
+		 * on a tie within round-off. */
+		bool below = along0 < CD_R(0.0);
+		cdReal position0 = cd2Dot(tangent, cd2Sub(core0, v1)), position1 = cd2Dot(tangent, cd2Sub(core1, v1));
+		cdReal beyond0 = cdMax(below ? -position0 : position0 - upper, CD_R(0.0));
+		cdReal beyond1 = cdMax(below ? -position1 : position1 - upper, CD_R(0.0));
+		bool keepSecond;
+		if (cdAbs(beyond0 - beyond1) <= RoundingSlack(core0, core1, v1))
+		{
+			keepSecond = cd2Dot(n, cd2Sub(core0, core1)) > CD_R(0.0);
+		}
+		else
+		{
+			keepSecond = !(beyond0 < beyond1);
+		}
+		if (keepSecond)
+		{
+			w0 = w1;
+			core0 = core1;
+			code0 = code1;
+		}
+		pointCount = 1;
+	}
+	else
+	{
+		/* along0 != along1 here: one end is inside the extent, the other outside it. */
+		cd2Vec clipped0 = w0, clipped1 = w1;
+		if (along0 < CD_R(0.0))
+		{
+			clipped0 = cd2Lerp(w0, w1, (CD_R(0.0) - along0) / (along1 - along0));
+			code0 = 2u;
+		}
+		else if (along0 > upper)
+		{
+			clipped0 = cd2Lerp(w0, w1, (upper - along0) / (along1 - along0));
+			code0 = 3u;
+		}
+		if (along1 < CD_R(0.0))
+		{
+			clipped1 = cd2Lerp(w1, w0, (CD_R(0.0) - along1) / (along0 - along1));
+			code1 = 2u;
+		}
+		else if (along1 > upper)
+		{
+			clipped1 = cd2Lerp(w1, w0, (upper - along1) / (along0 - along1));
+			code1 = 3u;
+		}
+		w0 = clipped0;
+		w1 = clipped1;
+	}
+
+	/* The deepest core vertex's surface point straight against n, when it stays over the edge. */
+	bool deepestSecond = pointCount == 2 && cd2Dot(n, cd2Sub(core0, core1)) > CD_R(0.0);
+	cd2Vec straight = cd2MulSub(deepestSecond ? core1 : core0, incidentRadius, n);
+	cdReal t = cd2Dot(tangent, cd2Sub(straight, v1));
+	bool over = pointCount == 1 || (CD_R(0.0) <= t && t <= upper);
+	if (!over)
+	{
+		cdReal slack = RoundingSlack(straight, v1, v2);
+		over = -slack <= t && t <= upper + slack;
+	}
+	if (over)
+	{
+		if (deepestSecond)
+		{
+			w1 = straight;
+			code1 = 1u;
+		}
+		else
+		{
+			w0 = straight;
+			code0 = pointCount == 1 ? code0 : 0u;
+		}
+	}
+
+	cdReal separation0 = cd2Dot(n, cd2Sub(w0, v1)) - referenceRadius;
+	if (separation0 <= speculativeDistance)
+	{
+		AddPoint(manifold, cd2MulSub(w0, CD_R(0.5) * separation0, n), separation0, base | code0 << 16);
+	}
+	if (pointCount == 2)
+	{
+		cdReal separation1 = cd2Dot(n, cd2Sub(w1, v1)) - referenceRadius;
+		if (separation1 <= speculativeDistance)
+		{
+			AddPoint(manifold, cd2MulSub(w1, CD_R(0.5) * separation1, n), separation1, base | code1 << 16);
+		}
+	}
+	if (manifold->pointCount > 0)
+	{
+		manifold->normal = flip ? cd2Neg(n) : n;
+	}
+}
+
+/* The segment's face is the reference: side 0 is the front (p1 -> p2, normal n), side 1 the back
+ * (p2 -> p1, normal -n); the polygon's edge facing it most is incident. */
+static void ClipOnSegment(cd2Manifold* manifold, const Pair* pair, int side, bool keepOutside)
+{
+	const cd2Polygon* polygon = pair->polygon;
+	cd2Vec n = side == 0 ? pair->n : cd2Neg(pair->n);
+	int incident = 0;
+	cdReal lowest = CD_REAL_MAX;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		cdReal d = cd2Dot(n, polygon->normals[i]);
+		if (d < lowest)
+		{
+			lowest = d;
+			incident = i;
+		}
+	}
+	cd2Vec v1 = side == 0 ? pair->p1 : pair->p2;
+	cd2Vec v2 = side == 0 ? pair->p2 : pair->p1;
+	uint32_t base = (uint32_t)side | (uint32_t)incident << 8;
+	ClipEdges(manifold, n, v1, v2, CD_R(0.0), polygon->vertices[incident],
+			  polygon->vertices[NextVertex(polygon, incident)], polygon->normals[incident], polygon->radius,
+			  base, false, pair->speculativeDistance, keepOutside);
+}
+
+/* A polygon edge is the reference; the segment's side facing it is incident. */
+static void ClipOnPolygon(cd2Manifold* manifold, const Pair* pair, int edge, bool keepOutside)
+{
+	const cd2Polygon* polygon = pair->polygon;
+	cd2Vec n = polygon->normals[edge];
+	/* The back side (normal -n) faces n more exactly when the front one faces away from it. */
+	int incident = cd2Dot(n, pair->n) > CD_R(0.0) ? 1 : 0;
+	cd2Vec core0 = incident == 0 ? pair->p1 : pair->p2;
+	cd2Vec core1 = incident == 0 ? pair->p2 : pair->p1;
+	cd2Vec incidentNormal = incident == 0 ? pair->n : cd2Neg(pair->n);
+	uint32_t base = (uint32_t)edge | (uint32_t)incident << 8 | CD2_FEATURE_FLIP;
+	ClipEdges(manifold, n, polygon->vertices[edge], polygon->vertices[NextVertex(polygon, edge)],
+			  polygon->radius, core0, core1, incidentNormal, CD_R(0.0), base, true, pair->speculativeDistance,
+			  keepOutside);
+}
+
+/* ---- closest features of cores that are apart ------------------------------------------------- */
+
+static int EndpointIndex(cd2Vec first, cd2Vec second, int edge, int next, cd2Vec p)
+{
+	if (cd2VecEqual(p, first))
+	{
+		return edge;
+	}
+	return cd2VecEqual(p, second) ? next : -1;
+}
+
+static int SegmentEndpoint(const Pair* pair, cd2Vec p)
+{
+	return cd2VecEqual(p, pair->p1) ? 0 : cd2VecEqual(p, pair->p2) ? 1 : -1;
+}
+
+static int PolygonEndpoint(const cd2Polygon* polygon, int edge, cd2Vec p)
+{
+	int next = NextVertex(polygon, edge);
+	return EndpointIndex(polygon->vertices[edge], polygon->vertices[next], edge, next, p);
+}
+
+static cd2Segment PolygonEdge(const cd2Polygon* polygon, int edge)
+{
+	cd2Segment segment = {polygon->vertices[edge], polygon->vertices[NextVertex(polygon, edge)]};
+	return segment;
+}
+
+static cd2Segment SegmentSide(const Pair* pair, int side)
+{
+	cd2Segment segment = {side == 0 ? pair->p1 : pair->p2, side == 0 ? pair->p2 : pair->p1};
+	return segment;
+}
+
+/* cd2ClosestPointsSegmentSegment(a, b) for segments that do not cross because b lies on one side
+ * of a's line (neither end strictly on the other side): the same candidates in the same order,
+ * without the orientation tests that look for a crossing. */
+static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
+{
+	cd2Vec candidatesA[4] = {a.p1, a.p2, cd2ClosestPointOnSegment(a, b.p1),
+							 cd2ClosestPointOnSegment(a, b.p2)};
+	cd2Vec candidatesB[4] = {cd2ClosestPointOnSegment(b, a.p1), cd2ClosestPointOnSegment(b, a.p2), b.p1,
+							 b.p2};
+	int best = 0;
+	cdReal bestDistanceSquared = cd2VecDistanceSquared(candidatesA[0], candidatesB[0]);
+	for (int i = 1; i < 4; ++i)
+	{
+		cdReal distanceSquared = cd2VecDistanceSquared(candidatesA[i], candidatesB[i]);
+		if (distanceSquared < bestDistanceSquared)
+		{
+			best = i;
+			bestDistanceSquared = distanceSquared;
+		}
+	}
+	cd2ClosestPoints result = {candidatesA[best], candidatesB[best], cdSqrt(bestDistanceSquared)};
+	return result;
+}
+
+/* The closest points of the segment and a polygon core that stands wholly above the segment's
+ * line (every vertex height > 0; manifold2.c searched every polygon edge with a segment-segment
+ * closest point test here). A closest pair either has its segment point inside the segment, and
+ * then its polygon point is a vertex of least height among those that project onto the segment
+ * (no point of the polygon is lower), or has it at an end, and then its polygon point is that
+ * end's closest point on the polygon, on an edge facing the end. Ties go to the lower edge index,
+ * as the search over the edges in order did. */
+static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* edgeB)
+{
+	const cd2Polygon* polygon = pair->polygon;
+	cd2Vec d = cd2Sub(pair->p2, pair->p1);
+	cdReal lengthSquared = cd2Dot(d, d);
+	cd2ClosestPoints best = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_REAL_MAX};
+	int count = polygon->count;
+	/* The lowest vertex projecting inside the segment: nothing is closer (up to round-off). */
+	{
+		cd2Vec v = polygon->vertices[lowestVertex];
+		cdReal t = cd2Dot(cd2Sub(v, pair->p1), d);
+		if (t > CD_R(0.0) && t < lengthSquared)
+		{
+			best.pointA = cd2MulAdd(pair->p1, t / lengthSquared, d);
+			best.pointB = v;
+			best.distance = cdSqrt(cd2VecDistanceSquared(best.pointA, v));
+			*edgeB = lowestVertex == 0 ? 0 : lowestVertex - 1;
+			return best;
+		}
+	}
+	cdReal bestSquared = CD_REAL_MAX;
+	int bestEdge = 0;
+	for (int j = 0; j < count; ++j)
+	{
+		cd2Vec v = polygon->vertices[j];
+		cdReal t = cd2Dot(cd2Sub(v, pair->p1), d);
+		if (t <= CD_R(0.0) || t >= lengthSquared)
+		{
+			continue; /* projects onto an end: the ends' own search below covers it */
+		}
+		cd2Vec onSegment = cd2MulAdd(pair->p1, t / lengthSquared, d);
+		cdReal squared = cd2VecDistanceSquared(onSegment, v);
+		/* Vertex j ends edge j - 1 and starts edge j; the edge search met edge j - 1 first (edge 0
+		 * before the last one for vertex 0). */
+		int edge = j == 0 ? 0 : j - 1;
+		if (squared < bestSquared || (squared == bestSquared && edge < bestEdge))
+		{
+			bestSquared = squared;
+			bestEdge = edge;
+			best.pointA = onSegment;
+			best.pointB = v;
+		}
+	}
+	for (int end = 0; end < 2; ++end)
+	{
+		cd2Vec p = end == 0 ? pair->p1 : pair->p2;
+		for (int i = 0; i < count; ++i)
+		{
+			if (cd2Dot(polygon->normals[i], cd2Sub(p, polygon->vertices[i])) <= CD_R(0.0))
+			{
+				continue; /* the end is behind this edge's line: not its closest edge */
+			}
+			cd2Vec onEdge = cd2ClosestPointOnSegment(PolygonEdge(polygon, i), p);
+			cdReal squared = cd2VecDistanceSquared(p, onEdge);
+			if (squared < bestSquared || (squared == bestSquared && i < bestEdge))
+			{
+				bestSquared = squared;
+				bestEdge = i;
+				best.pointA = p;
+				best.pointB = onEdge;
+			}
+		}
+	}
+	best.distance = cdSqrt(bestSquared);
+	*edgeB = bestEdge;
+	return best;
+}
+
+/* The closest points of the two cores (pointA on the segment) and the edges holding them (in: the
+ * max-separation edges), as manifold2.c's ClosestCores finds them. */
+static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdReal separationB,
+									 int lowestVertex, int* edgeA, int* edgeB)
+{
+	const cd2Polygon* polygon = pair->polygon;
+	/* The cores are apart along an axis by clearly more than the round-off of the orientation
+	 * tests (always at ordinary scales: the caller's gap exceeds a tenth of a linear slop): the
+	 * edge that gives it has the other core's segment wholly on one side of its line, so the
+	 * segment-segment test finds no crossing and its four candidates suffice. */
+	cd2Vec v0 = polygon->vertices[0];
+	cdReal scale = cdMax(cdMax(cdAbs(pair->p1.x), cdAbs(pair->p1.y)), cdMax(cdAbs(v0.x), cdAbs(v0.y)));
+	bool clear = cdMax(separationA, separationB) > CD_R(64.0) * CD_REAL_EPSILON * scale;
+	if (separationA > CD_R(0.0) && separationB > CD_R(0.0))
+	{
+		cd2Segment side = SegmentSide(pair, *edgeA), edge = PolygonEdge(polygon, *edgeB);
+		return clear ? ClosestNotCrossing(side, edge) : cd2ClosestPointsSegmentSegment(side, edge);
+	}
+	if (separationA >= separationB)
+	{
+		if (*edgeA == 0)
+		{
+			return ClosestAbove(pair, lowestVertex, edgeB);
+		}
+		/* The polygon wholly behind the line (its centroid said in front: round-off): search. */
+		cd2Segment side = SegmentSide(pair, *edgeA);
+		cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, 0));
+		*edgeB = 0;
+		for (int i = 1; i < polygon->count; ++i)
+		{
+			cd2ClosestPoints candidate = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, i));
+			if (candidate.distance < best.distance)
+			{
+				best = candidate;
+				*edgeB = i;
+			}
+		}
+		return best;
+	}
+	/* The polygon's edge separates more: its closest feature is on that edge. The generic path
+	 * also tried the segment's back side (the same points reversed), which differs only by
+	 * rounding; the front side is taken. */
+	cd2Segment edge = PolygonEdge(polygon, *edgeB), front = SegmentSide(pair, 0);
+	cd2ClosestPoints closest =
+		clear ? ClosestNotCrossing(edge, front) : cd2ClosestPointsSegmentSegment(edge, front);
+	*edgeA = 0;
+	cd2Vec swap = closest.pointA;
+	closest.pointA = closest.pointB;
+	closest.pointB = swap;
+	return closest;
+}
+
+/* One point along the gap between the closest points, normal from the segment to the polygon. */
+static void GapContact(cd2Manifold* manifold, const Pair* pair, cd2ClosestPoints closest, int edgeA,
+					   int edgeB)
+{
+	*manifold = EmptyManifold();
+	cd2Vec u = cd2GetLengthAndNormalize(&closest.distance, cd2Sub(closest.pointB, closest.pointA));
+	if (u.x == CD_R(0.0) && u.y == CD_R(0.0))
+	{
+		return;
+	}
+	const cd2Polygon* polygon = pair->polygon;
+	int vertexA = SegmentEndpoint(pair, closest.pointA);
+	int vertexB = PolygonEndpoint(polygon, edgeB, closest.pointB);
+	cd2Vec onB = cd2MulSub(closest.pointB, polygon->radius, u);
+	uint32_t featureA = vertexA >= 0 ? (uint32_t)vertexA : (uint32_t)edgeA;
+	uint32_t featureB = vertexB >= 0 ? (uint32_t)vertexB : (uint32_t)edgeB;
+	uint32_t code = CODE_VERTEX_VERTEX + (vertexA < 0 ? CODE_EDGE_A : 0u) + (vertexB < 0 ? CODE_EDGE_B : 0u);
+	manifold->normal = u;
+	AddPoint(manifold, cd2Scale(CD_R(0.5), cd2Add(closest.pointA, onB)), closest.distance - polygon->radius,
+			 featureA | featureB << 8 | code << 16);
+}
+
+/* ---- the two-sided segment core against the polygon ------------------------------------------- */
+
+/* Writes the manifold in place (*out): returned by value through the callers, the copies cost
+ * store-forwarding stalls. */
+static void CollideCores(const Pair* pair, cd2Manifold* out)
+{
+	const cd2Polygon* polygon = pair->polygon;
+	const cd2Vec* vertices = polygon->vertices;
+	const cd2Vec* normals = polygon->normals;
+	int count = polygon->count;
+	cdReal total = polygon->radius;
+	cdReal speculativeDistance = pair->speculativeDistance;
+	cdReal limit = total + speculativeDistance;
+	cd2Vec p1 = pair->p1, p2 = pair->p2, n = pair->n;
+
+	/* The segment's front normal: the polygon's lowest vertex above the line. */
+	cdReal separationA = CD_REAL_MAX;
+	int lowestVertex = 0;
+	for (int j = 0; j < count; ++j)
+	{
+		cdReal h = cd2Dot(n, cd2Sub(vertices[j], p1));
+		if (h < separationA)
+		{
+			separationA = h;
+			lowestVertex = j;
+		}
+	}
+	if (separationA > limit)
+	{
+		*out = EmptyManifold();
+		return;
+	}
+	int edgeA = 0;
+	/* The back normal, measured from p2 as the generic core does; it cannot win once a vertex
+	 * falls to the front separation (usually the first one: the polygon stands above the line). */
+	cd2Vec back = cd2Neg(n);
+	cdReal lowest = CD_REAL_MAX;
+	for (int j = 0; j < count && lowest > separationA; ++j)
+	{
+		lowest = cdMin(lowest, cd2Dot(back, cd2Sub(vertices[j], p2)));
+	}
+	if (lowest > separationA)
+	{
+		separationA = lowest;
+		edgeA = 1;
+		if (separationA > limit)
+		{
+			*out = EmptyManifold();
+			return;
+		}
+	}
+
+	/* The polygon's normals: the segment's lower end against each edge. */
+	cdReal separationB = -CD_REAL_MAX;
+	int edgeB = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal s = cd2Dot(normals[i], cd2Sub(p1, vertices[i]));
+		if (s > separationB)
+		{
+			s = cdMin(s, cd2Dot(normals[i], cd2Sub(p2, vertices[i])));
+			if (s > separationB)
+			{
+				separationB = s;
+				edgeB = i;
+				if (separationB > limit)
+				{
+					*out = EmptyManifold();
+					return;
+				}
+			}
+		}
+	}
+
+	cdReal slop = CD_LINEAR_SLOP;
+	cdReal separatedTolerance = SEPARATED_SLOPS * slop;
+	cd2ClosestPoints closest = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0)};
+	int closestEdgeA = edgeA, closestEdgeB = edgeB;
+	bool haveClosest = false;
+	cdReal largest = cdMax(separationA, separationB);
+	if (largest > separatedTolerance)
+	{
+		closest = ClosestCores(pair, separationA, separationB, lowestVertex, &closestEdgeA, &closestEdgeB);
+		haveClosest = true;
+		if (closest.distance > separatedTolerance)
+		{
+			if (closest.distance - total > speculativeDistance)
+			{
+				*out = EmptyManifold();
+				return;
+			}
+			int vertexA = SegmentEndpoint(pair, closest.pointA);
+			int vertexB = PolygonEndpoint(polygon, closestEdgeB, closest.pointB);
+			if (vertexA < 0 || vertexB < 0)
+			{
+				if (vertexA < 0)
+				{
+					/* The segment side facing the gap. */
+					cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
+					ClipOnSegment(out, pair, cd2Dot(n, u) >= CD_R(0.0) ? 0 : 1, false);
+				}
+				else
+				{
+					ClipOnPolygon(out, pair, closestEdgeB, false);
+				}
+				if (out->pointCount > 0 &&
+					SmallestSeparation(out) <= closest.distance - total + separatedTolerance)
+				{
+					return;
+				}
+			}
+			GapContact(out, pair, closest, closestEdgeA, closestEdgeB);
+			return;
+		}
+	}
+
+	cdReal flipTolerance = FLIP_SLOPS * slop;
+	bool flip = separationB > separationA + flipTolerance;
+	if (flip)
+	{
+		ClipOnPolygon(out, pair, edgeB, false);
+	}
+	else
+	{
+		ClipOnSegment(out, pair, edgeA, false);
+	}
+	if (out->pointCount == 0 && !flip && separationB >= separationA - flipTolerance)
+	{
+		ClipOnPolygon(out, pair, edgeB, false);
+	}
+	bool keptOutside = out->pointCount == 0;
+	if (keptOutside)
+	{
+		if (flip)
+		{
+			ClipOnPolygon(out, pair, edgeB, true);
+		}
+		else
+		{
+			ClipOnSegment(out, pair, edgeA, true);
+		}
+	}
+	bool apart = largest > CD_R(0.0);
+	if (!apart)
+	{
+		return;
+	}
+	bool missed =
+		keptOutside || out->pointCount == 0 || SmallestSeparation(out) > largest - total + separatedTolerance;
+	if (missed)
+	{
+		if (!haveClosest)
+		{
+			closest =
+				ClosestCores(pair, separationA, separationB, lowestVertex, &closestEdgeA, &closestEdgeB);
+		}
+		if (closest.distance > CD_R(0.0))
+		{
+			if (closest.distance - total > speculativeDistance)
+			{
+				*out = EmptyManifold();
+				return;
+			}
+			if (keptOutside || out->pointCount == 0 ||
+				SmallestSeparation(out) > closest.distance - total + separatedTolerance)
+			{
+				cd2Manifold gap;
+				GapContact(&gap, pair, closest, closestEdgeA, closestEdgeB);
+				if (gap.pointCount > 0 && gap.points[0].separation <= speculativeDistance)
+				{
+					*out = gap;
+				}
+			}
+		}
+	}
+}
+
+/* ---- the chain's directions ------------------------------------------------------------------- */
+
+/* The unit direction of the ghost edge `e` when the chain turns left from `from` to it (a convex
+ * corner) by more than the flat tolerance, in the order given (first: the turn's first direction);
+ * zero otherwise. A turn that is clearly flat or concave is told without the square root (the sine
+ * times |e| against the tolerance, squared, with a factor 2 of room for the round-off of the test
+ * on the normalized edge that decides the close cases). */
+static cd2Vec ConvexGhostDirection(cd2Vec first, cd2Vec second, bool ghostIsSecond)
+{
+	cd2Vec zero = {CD_R(0.0), CD_R(0.0)};
+	cd2Vec e = ghostIsSecond ? second : first;
+	cdReal c = cd2Cross(first, second);
+	if (c <= CD_R(0.0) || CD_R(2.0) * c * c < CHAIN_FLAT_TOLERANCE * CHAIN_FLAT_TOLERANCE * cd2Dot(e, e))
+	{
+		return zero;
+	}
+	cd2Vec u = cd2Normalize(e);
+	bool convex = ghostIsSecond ? cd2Cross(first, u) > CHAIN_FLAT_TOLERANCE
+								: cd2Cross(u, second) > CHAIN_FLAT_TOLERANCE;
+	return convex ? u : zero;
+}
+
+static void CollideChainSegment(const cd2ChainSegment* a, const cd2Polygon* b, cdReal speculativeDistance,
+								cd2Manifold* manifold)
+{
+	*manifold = EmptyManifold();
+	cd2Vec direction = cd2Normalize(cd2Sub(a->p2, a->p1));
+	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
+	{
+		return; /* a zero-length chain segment has no side */
+	}
+	Pair pair;
+	pair.p1 = a->p1;
+	pair.p2 = a->p2;
+	pair.n = cd2RightPerp(direction);
+	pair.polygon = b;
+	pair.speculativeDistance = speculativeDistance;
+	cd2Vec n = pair.n;
+	if (cd2Dot(n, cd2Sub(b->centroid, a->p1)) < CD_R(0.0))
+	{
+		return; /* behind the one-sided segment */
+	}
+	CollideCores(&pair, manifold);
+	if (manifold->pointCount == 0)
+	{
+		return;
+	}
+
+	/* The normal must be one the chain allows here: the segment's own, or at a convex vertex one in
+	 * the fan up to the neighbour's normal (past it, the neighbour reports the contact). */
+	cd2Vec m = manifold->normal;
+	cdReal side = cd2Cross(n, m); /* > 0: tilted towards p2, < 0: towards p1 */
+	bool admissible;
+	if (cd2Dot(m, n) < CD_R(0.0))
+	{
+		admissible = false;
+	}
+	else if (side > CD_R(0.0))
+	{
+		cd2Vec next = ConvexGhostDirection(direction, cd2Sub(a->ghost2, a->p2), true);
+		bool convex = next.x != CD_R(0.0) || next.y != CD_R(0.0);
+		admissible = convex && cd2Cross(m, cd2RightPerp(next)) >= CD_R(0.0);
+		if (convex && !admissible)
+		{
+			*manifold = EmptyManifold();
+			return;
+		}
+	}
+	else if (side < CD_R(0.0))
+	{
+		cd2Vec previous = ConvexGhostDirection(cd2Sub(a->p1, a->ghost1), direction, false);
+		bool convex = previous.x != CD_R(0.0) || previous.y != CD_R(0.0);
+		admissible = convex && cd2Cross(cd2RightPerp(previous), m) >= CD_R(0.0);
+		if (convex && !admissible)
+		{
+			*manifold = EmptyManifold();
+			return;
+		}
+	}
+	else
+	{
+		admissible = true;
+	}
+	if (admissible)
+	{
+		return;
+	}
+	/* Only the segment's own normal is allowed: the contact seen from its face, within its extent. */
+	ClipOnSegment(manifold, &pair, 0, false);
+}
+
+cd2Manifold cd2CollideChainSegmentPolygonDirect(const cd2ChainSegment* a, const cd2Polygon* b,
+												cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd2Manifold manifold;
+	CollideChainSegment(a, b, speculativeDistance, &manifold);
+	return manifold;
+}
