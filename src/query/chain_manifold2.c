@@ -75,9 +75,13 @@ static int NextVertex(const cd2Polygon* polygon, int i)
 /* The reference edge v1 -> v2 (outward unit normal n, rounded by referenceRadius) against the
  * incident core edge core0 -> core1 (rounded by incidentRadius along incidentNormal): the clip of
  * manifold2.c, step for step (its comments explain the choices). */
-static void ClipEdges(cd2Manifold* manifold, cd2Vec n, cd2Vec v1, cd2Vec v2, cdReal referenceRadius,
-					  cd2Vec core0, cd2Vec core1, cd2Vec incidentNormal, cdReal incidentRadius, uint32_t base,
-					  bool flip, cdReal speculativeDistance, bool keepOutside)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void
+ClipEdges(cd2Manifold* manifold, cd2Vec n, cd2Vec v1, cd2Vec v2, cdReal referenceRadius, cd2Vec core0,
+		  cd2Vec core1, cd2Vec incidentNormal, cdReal incidentRadius, uint32_t base, bool flip,
+		  cdReal speculativeDistance, bool keepOutside)
 {
 	/* Scalars, not two-element arrays indexed by a variable: those lived on the stack. */
 	*manifold = EmptyManifold();
@@ -200,11 +204,9 @@ static void ClipOnSegment(cd2Manifold* manifold, const Pair* pair, int side, boo
 	for (int i = 0; i < polygon->count; ++i)
 	{
 		cdReal d = cd2Dot(n, polygon->normals[i]);
-		if (d < lowest)
-		{
-			lowest = d;
-			incident = i;
-		}
+		bool lower = d < lowest;
+		incident = lower ? i : incident;
+		lowest = lower ? d : lowest;
 	}
 	cd2Vec v1 = side == 0 ? pair->p1 : pair->p2;
 	cd2Vec v2 = side == 0 ? pair->p2 : pair->p1;
@@ -370,11 +372,15 @@ static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdRea
 {
 	const cd2Polygon* polygon = pair->polygon;
 	/* The cores are apart along an axis by clearly more than the round-off of the orientation
-	 * tests (always at ordinary scales: the caller's gap exceeds a tenth of a linear slop): the
-	 * edge that gives it has the other core's segment wholly on one side of its line, so the
-	 * segment-segment test finds no crossing and its four candidates suffice. */
-	cd2Vec v0 = polygon->vertices[0];
-	cdReal scale = cdMax(cdMax(cdAbs(pair->p1.x), cdAbs(pair->p1.y)), cdMax(cdAbs(v0.x), cdAbs(v0.y)));
+	 * tests: the edge that gives it has the other core's edge wholly on one side of its line, so the
+	 * segment-segment test finds no crossing and its four candidates suffice. Those tests and the
+	 * separations share the differences of the coordinates (rounded alike in both); what differs is
+	 * rounded relative to the differences' size, bounded here by the segment, the polygon edge and
+	 * the offset between them. */
+	cd2Vec d = cd2Sub(pair->p2, pair->p1);
+	cd2Vec e = cd2Sub(polygon->vertices[NextVertex(polygon, *edgeB)], polygon->vertices[*edgeB]);
+	cd2Vec offset = cd2Sub(polygon->vertices[*edgeB], pair->p1);
+	cdReal scale = cdAbs(d.x) + cdAbs(d.y) + cdAbs(e.x) + cdAbs(e.y) + cdAbs(offset.x) + cdAbs(offset.y);
 	bool clear = cdMax(separationA, separationB) > CD_R(64.0) * CD_REAL_EPSILON * scale;
 	if (separationA > CD_R(0.0) && separationB > CD_R(0.0))
 	{
@@ -457,12 +463,11 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	int lowestVertex = 0;
 	for (int j = 0; j < count; ++j)
 	{
+		/* Selects, not branches: which vertex is lowest is data, not a pattern to predict. */
 		cdReal h = cd2Dot(n, cd2Sub(vertices[j], p1));
-		if (h < separationA)
-		{
-			separationA = h;
-			lowestVertex = j;
-		}
+		bool lower = h < separationA;
+		lowestVertex = lower ? j : lowestVertex;
+		separationA = lower ? h : separationA;
 	}
 	if (separationA > limit)
 	{
@@ -494,21 +499,18 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	int edgeB = 0;
 	for (int i = 0; i < count; ++i)
 	{
-		cdReal s = cd2Dot(normals[i], cd2Sub(p1, vertices[i]));
-		if (s > separationB)
-		{
-			s = cdMin(s, cd2Dot(normals[i], cd2Sub(p2, vertices[i])));
-			if (s > separationB)
-			{
-				separationB = s;
-				edgeB = i;
-				if (separationB > limit)
-				{
-					*out = EmptyManifold();
-					return;
-				}
-			}
-		}
+		/* The generic core stops at the first edge beyond the limit; the answer (no contact) is
+		 * the same when the test comes after the loop, which then has no branch to mispredict. */
+		cdReal s =
+			cdMin(cd2Dot(normals[i], cd2Sub(p1, vertices[i])), cd2Dot(normals[i], cd2Sub(p2, vertices[i])));
+		bool higher = s > separationB;
+		edgeB = higher ? i : edgeB;
+		separationB = higher ? s : separationB;
+	}
+	if (separationB > limit)
+	{
+		*out = EmptyManifold();
+		return;
 	}
 
 	cdReal slop = CD_LINEAR_SLOP;
@@ -639,10 +641,10 @@ static cd2Vec ConvexGhostDirection(cd2Vec first, cd2Vec second, bool ghostIsSeco
 static void CollideChainSegment(const cd2ChainSegment* a, const cd2Polygon* b, cdReal speculativeDistance,
 								cd2Manifold* manifold)
 {
-	*manifold = EmptyManifold();
 	cd2Vec direction = cd2Normalize(cd2Sub(a->p2, a->p1));
 	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
 	{
+		*manifold = EmptyManifold();
 		return; /* a zero-length chain segment has no side */
 	}
 	Pair pair;
@@ -654,6 +656,7 @@ static void CollideChainSegment(const cd2ChainSegment* a, const cd2Polygon* b, c
 	cd2Vec n = pair.n;
 	if (cd2Dot(n, cd2Sub(b->centroid, a->p1)) < CD_R(0.0))
 	{
+		*manifold = EmptyManifold();
 		return; /* behind the one-sided segment */
 	}
 	CollideCores(&pair, manifold);
