@@ -458,56 +458,35 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	cdReal limit = total + speculativeDistance;
 	cd2Vec p1 = pair->p1, p2 = pair->p2, n = pair->n;
 
-	/* The segment's front normal: the polygon's lowest vertex above the line. */
-	cdReal separationA = CD_REAL_MAX;
-	int lowestVertex = 0;
+	/* One pass over the polygon for the three separations: the segment's front normal (the
+	 * polygon's lowest vertex above the line), its back normal (measured from p2, as the generic
+	 * core does) and the polygon's edge normals (the segment's lower end against each edge). The
+	 * generic core stops a scan early once it can no longer win or is beyond the limit; the
+	 * answers are the same when the full scans are compared after the loop, which has no branch
+	 * to mispredict (selects, not branches: which vertex is lowest is data, not a pattern). */
+	cd2Vec back = cd2Neg(n);
+	cdReal separationA = CD_REAL_MAX, separationBack = CD_REAL_MAX, separationB = -CD_REAL_MAX;
+	int lowestVertex = 0, edgeB = 0;
 	for (int j = 0; j < count; ++j)
 	{
-		/* Selects, not branches: which vertex is lowest is data, not a pattern to predict. */
-		cdReal h = cd2Dot(n, cd2Sub(vertices[j], p1));
+		cd2Vec v = vertices[j];
+		cdReal h = cd2Dot(n, cd2Sub(v, p1));
 		bool lower = h < separationA;
 		lowestVertex = lower ? j : lowestVertex;
 		separationA = lower ? h : separationA;
-	}
-	if (separationA > limit)
-	{
-		*out = EmptyManifold();
-		return;
-	}
-	int edgeA = 0;
-	/* The back normal, measured from p2 as the generic core does; it cannot win once a vertex
-	 * falls to the front separation (usually the first one: the polygon stands above the line). */
-	cd2Vec back = cd2Neg(n);
-	cdReal lowest = CD_REAL_MAX;
-	for (int j = 0; j < count && lowest > separationA; ++j)
-	{
-		lowest = cdMin(lowest, cd2Dot(back, cd2Sub(vertices[j], p2)));
-	}
-	if (lowest > separationA)
-	{
-		separationA = lowest;
-		edgeA = 1;
-		if (separationA > limit)
-		{
-			*out = EmptyManifold();
-			return;
-		}
-	}
-
-	/* The polygon's normals: the segment's lower end against each edge. */
-	cdReal separationB = -CD_REAL_MAX;
-	int edgeB = 0;
-	for (int i = 0; i < count; ++i)
-	{
-		/* The generic core stops at the first edge beyond the limit; the answer (no contact) is
-		 * the same when the test comes after the loop, which then has no branch to mispredict. */
-		cdReal s =
-			cdMin(cd2Dot(normals[i], cd2Sub(p1, vertices[i])), cd2Dot(normals[i], cd2Sub(p2, vertices[i])));
+		separationBack = cdMin(separationBack, cd2Dot(back, cd2Sub(v, p2)));
+		cdReal s = cdMin(cd2Dot(normals[j], cd2Sub(p1, v)), cd2Dot(normals[j], cd2Sub(p2, v)));
 		bool higher = s > separationB;
-		edgeB = higher ? i : edgeB;
+		edgeB = higher ? j : edgeB;
 		separationB = higher ? s : separationB;
 	}
-	if (separationB > limit)
+	int edgeA = 0;
+	if (separationBack > separationA)
+	{
+		separationA = separationBack;
+		edgeA = 1;
+	}
+	if (separationA > limit || separationB > limit)
 	{
 		*out = EmptyManifold();
 		return;
@@ -536,9 +515,16 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 			{
 				if (vertexA < 0)
 				{
-					/* The segment side facing the gap. */
-					cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
-					ClipOnSegment(out, pair, cd2Dot(n, u) >= CD_R(0.0) ? 0 : 1, false);
+					/* The segment side facing the gap u = gap / distance. Scaling by 1 / distance keeps
+					 * the sign of the dot product unless it is within rounding of zero: only then is u
+					 * formed. */
+					cd2Vec gap = cd2Sub(closest.pointB, closest.pointA);
+					cdReal facing = cd2Dot(n, gap);
+					if (cdAbs(facing) <= CD_R(8.0) * CD_REAL_EPSILON * (cdAbs(gap.x) + cdAbs(gap.y)))
+					{
+						facing = cd2Dot(n, cd2Scale(CD_R(1.0) / closest.distance, gap));
+					}
+					ClipOnSegment(out, pair, facing >= CD_R(0.0) ? 0 : 1, false);
 				}
 				else
 				{
