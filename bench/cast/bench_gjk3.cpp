@@ -12,11 +12,13 @@
 // Bullet's cast and TOI stop at their own fixed tolerances, so the work is comparable but not
 // identical. Each figure is the median of 9 runs of about 20 ms, collide's and Bullet's runs
 // alternating so that both see the same machine load.
-// Usage: collide_bench_gjk3 [--quick | --profile-distance]
+// Usage: collide_bench_gjk3 [--quick | --distance (the distance rows only) | --profile-distance [kind 0-3] |
+// --count kind]
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btContinuousConvexCollision.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkConvexCast.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
@@ -28,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <random>
@@ -107,9 +110,9 @@ std::unique_ptr<btConvexHullShape> BulletHull(const cd3Hull* hull)
 	auto shape = std::make_unique<btConvexHullShape>();
 	for (int i = 0; i < hull->vertexCount; ++i)
 	{
-		shape->addPoint(
-			btVector3((btScalar)hull->vertices[i].x, (btScalar)hull->vertices[i].y, (btScalar)hull->vertices[i].z),
-			false);
+		shape->addPoint(btVector3((btScalar)hull->vertices[i].x, (btScalar)hull->vertices[i].y,
+								  (btScalar)hull->vertices[i].z),
+						false);
 	}
 	shape->recalcLocalAabb();
 	shape->setMargin(0);
@@ -153,7 +156,12 @@ cd3Quat SmallTurn(std::mt19937_64& rng, double angle)
 	return cd3MakeQuat(s * axis.x, s * axis.y, s * axis.z, c);
 }
 
-std::vector<DistancePair> MakeDistancePairs(std::mt19937_64& rng, const std::vector<Body>& bodies)
+// Separated pairs. Spread: centres 1.5-3 apart in random directions. Near contact (as
+// collide_bench_manifold3 and a physics step see them): gaps 0.005-0.05, half the pairs resting
+// face on face (B turned as A, on A's local y axis: the parallel faces tie many supports), half at
+// random; B is moved along the line of the centres until the gap is reached.
+std::vector<DistancePair> MakeDistancePairs(std::mt19937_64& rng, const std::vector<Body>& bodies,
+											bool nearContact)
 {
 	std::uniform_real_distribution<double> u(0.0, 1.0);
 	std::vector<DistancePair> pairs;
@@ -164,9 +172,32 @@ std::vector<DistancePair> MakeDistancePairs(std::mt19937_64& rng, const std::vec
 		p.b = bodies[(size_t)(rng() % bodies.size())];
 		p.xfA = {CD3_VEC_ZERO, RandomQuat(rng)};
 		p.xfB = {cd3Scale((cdReal)(1.5 + 1.5 * u(rng)), RandomUnit(rng)), RandomQuat(rng)};
+		if (nearContact)
+		{
+			bool stacked = pairs.size() % 2 == 0 && p.a.shape.type == CD3_SHAPE_BOX;
+			if (stacked)
+			{
+				p.xfB.q = p.xfA.q;
+				p.xfB.p = cd3Scale((cdReal)1.5, cd3RotateVector(p.xfA.q, cd3MakeVec(0, 1, 0)));
+			}
+			double gap = 0.005 + 0.045 * u(rng);
+			cd3Vec along = cd3Normalize(p.xfB.p);
+			for (int step = 0; step < 8; ++step)
+			{
+				cd3Shape a = Placed(p.a.shape, p.xfA), b = Placed(p.b.shape, p.xfB);
+				double d = (double)cd3Distance(&a, &b).distance;
+				if (std::fabs(d - gap) < 1e-4 * gap)
+				{
+					break;
+				}
+				// Along the centre line the gap changes by at most the move (slower when the
+				// closest features slant): step by the difference.
+				p.xfB.p = cd3MulAdd(p.xfB.p, (cdReal)(gap - d), along);
+			}
+		}
 		p.worldA = Placed(p.a.shape, p.xfA);
 		p.worldB = Placed(p.b.shape, p.xfB);
-		if (!(cd3Distance(&p.worldA, &p.worldB).distance > (cdReal)0.01))
+		if (!(cd3Distance(&p.worldA, &p.worldB).distance > (cdReal)0.004))
 		{
 			continue;
 		}
@@ -222,11 +253,62 @@ std::vector<MotionPair> MakeMotionPairs(std::mt19937_64& rng, const Body& box, c
 	return pairs;
 }
 
+// btGjkPairDetector::getClosestPoints with Bullet's Voronoi simplex solver (margins 0).
+double BulletDetectorDistance(const DistancePair& p, btVoronoiSimplexSolver& simplexSolver,
+							  btGjkEpaPenetrationDepthSolver& epa)
+{
+	btGjkPairDetector detector(p.a.bullet, p.b.bullet, &simplexSolver, &epa);
+	btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+	input.m_transformA = ToBullet(p.xfA);
+	input.m_transformB = ToBullet(p.xfB);
+	btPointCollector result;
+	detector.getClosestPoints(input, result, nullptr);
+	return (double)result.m_distance;
+}
+
+// btGjkEpaSolver2::Distance (GJK of btGjkEpa2.h; it reads the supports without margin, and the
+// margins are 0 anyway). Its first support is along -guess: guess = centre of A - centre of B
+// starts it from the line between the centres, as collide's cold start does.
+double BulletGjkEpa2Distance(const DistancePair& p)
+{
+	btTransform xa = ToBullet(p.xfA), xb = ToBullet(p.xfB);
+	btGjkEpaSolver2::sResults r;
+	if (!btGjkEpaSolver2::Distance(p.a.bullet, xa, p.b.bullet, xb, xa.getOrigin() - xb.getOrigin(), r))
+	{
+		return -1.0;
+	}
+	return (double)r.distance;
+}
+
+// --count K: each distance of pair set K once, collide's then btGjkEpaSolver2's, in functions of
+// their own, for an instruction counter (valgrind --tool=callgrind; instructions per call = the
+// inclusive count / kPairs): a measure that other processes on the machine do not disturb.
+__attribute__((noinline)) double CountCollide(const std::vector<DistancePair>& pairs)
+{
+	double sum = 0.0;
+	for (const DistancePair& p : pairs)
+	{
+		sum += (double)cd3Distance(&p.worldA, &p.worldB).distance;
+	}
+	return sum;
+}
+
+__attribute__((noinline)) double CountBullet(const std::vector<DistancePair>& pairs)
+{
+	double sum = 0.0;
+	for (const DistancePair& p : pairs)
+	{
+		sum += BulletGjkEpa2Distance(p);
+	}
+	return sum;
+}
+
 void PrintRow(const char* name, const std::vector<double>& t, bool cached)
 {
 	if (cached)
 	{
-		std::printf("%-34s %10.1f %10.1f %10.1f %8.2f %8.2f\n", name, t[0], t[2], t[1], t[0] / t[1], t[2] / t[1]);
+		std::printf("%-34s %10.1f %10.1f %10.1f %8.2f %8.2f\n", name, t[0], t[2], t[1], t[0] / t[1],
+					t[2] / t[1]);
 	}
 	else
 	{
@@ -252,7 +334,8 @@ int main(int argc, char** argv)
 		cd3Vec half = cd3MakeVec((cdReal)(0.2 + 0.5 * u(rng)), (cdReal)(0.2 + 0.5 * u(rng)),
 								 (cdReal)(0.2 + 0.5 * u(rng)));
 		cd3Box box = {CD3_VEC_ZERO, half, CD3_QUAT_IDENTITY};
-		auto bulletBox = std::make_unique<btBoxShape>(btVector3((btScalar)half.x, (btScalar)half.y, (btScalar)half.z));
+		auto bulletBox =
+			std::make_unique<btBoxShape>(btVector3((btScalar)half.x, (btScalar)half.y, (btScalar)half.z));
 		bulletBox->setMargin(0);
 		boxes.push_back({cd3MakeBoxShape(box), bulletBox.get()});
 		owned.push_back(std::move(bulletBox));
@@ -290,30 +373,40 @@ int main(int argc, char** argv)
 	std::printf("%-34s %10s %10s %10s %8s %8s\n", "query", "collide", "cached", "Bullet", "ratio", "cached");
 
 	// ---- distance ----
-	const char* distanceNames[2] = {"3D GJK distance (box, box)", "3D GJK distance (hull32, hull32)"};
-	for (int kind = 0; kind < 2; ++kind)
+	const char* distanceNames[4] = {"3D GJK distance (box, box)", "3D GJK distance (hull32, hull32)",
+									"  near contact (box, box)", "  near contact (hull32, hull32)"};
+	for (int kind = 0; kind < 4; ++kind)
 	{
-		std::vector<DistancePair> pairs = MakeDistancePairs(rng, kind == 0 ? boxes : hulls32);
-		double worst = 0.0;
+		std::vector<DistancePair> pairs = MakeDistancePairs(rng, kind % 2 == 0 ? boxes : hulls32, kind >= 2);
+		double worst = 0.0, worstEpa2 = 0.0;
+		int maxIterations = 0;
 		long long iterations = 0, cachedIterations = 0;
 		for (const DistancePair& p : pairs)
 		{
 			cdDistanceStatus status;
 			double ours = (double)cd3DistanceWithStatus(&p.worldA, &p.worldB, &status).distance;
 			iterations += status.iterations;
+			maxIterations = std::max(maxIterations, status.iterations);
 			cd3SimplexCache cache = p.cache;
 			cd3DistanceCached(&p.worldA, &p.worldB, &cache, &status);
 			cachedIterations += status.iterations;
-			btGjkPairDetector detector(p.a.bullet, p.b.bullet, &simplexSolver, &epa);
-			btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-			input.m_transformA = ToBullet(p.xfA);
-			input.m_transformB = ToBullet(p.xfB);
-			btPointCollector result;
-			detector.getClosestPoints(input, result, nullptr);
-			worst = std::max(worst, std::fabs(ours - (double)result.m_distance));
+			worst = std::max(worst, std::fabs(ours - BulletDetectorDistance(p, simplexSolver, epa)));
+			worstEpa2 = std::max(worstEpa2, std::fabs(ours - BulletGjkEpa2Distance(p)));
+		}
+		if (argc > 2 && std::strcmp(argv[1], "--count") == 0)
+		{
+			if (std::atoi(argv[2]) == kind)
+			{
+				std::printf("%s: sums %g %g\n", distanceNames[kind], CountCollide(pairs), CountBullet(pairs));
+			}
+			continue;
 		}
 		if (argc > 1 && std::strcmp(argv[1], "--profile-distance") == 0)
 		{
+			if (argc > 2 && std::atoi(argv[2]) != kind)
+			{
+				continue;
+			}
 			// Only the distance, for a profiler: 100 alternating runs of 10 ms, the fastest of each
 			// (the least disturbed by other processes).
 			double ours = 1e30, bullet = 1e30;
@@ -326,48 +419,36 @@ int main(int argc, char** argv)
 												  .distance;
 										  },
 										  0.01));
-				bullet = std::min(bullet, NsPerCall(
-											  [&](int i) {
-												  const DistancePair& p = pairs[(size_t)i];
-												  btGjkPairDetector detector(p.a.bullet, p.b.bullet, &simplexSolver,
-																			 &epa);
-												  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-												  input.m_transformA = ToBullet(p.xfA);
-												  input.m_transformB = ToBullet(p.xfB);
-												  btPointCollector result;
-												  detector.getClosestPoints(input, result, nullptr);
-												  return (double)result.m_distance;
-											  },
-											  0.01));
+				bullet = std::min(
+					bullet, NsPerCall([&](int i) { return BulletGjkEpa2Distance(pairs[(size_t)i]); }, 0.01));
 			}
-			std::printf("%s: fastest runs collide %.1f ns, Bullet %.1f ns, ratio %.2f\n", distanceNames[kind], ours,
-						bullet, ours / bullet);
+			std::printf("%s: fastest runs collide %.1f ns, btGjkEpaSolver2 %.1f ns, ratio %.2f\n",
+						distanceNames[kind], ours, bullet, ours / bullet);
 			continue;
 		}
 		std::vector<double> t = Compare(
 			runs, seconds,
-			[&](int i) { return (double)cd3Distance(&pairs[(size_t)i].worldA, &pairs[(size_t)i].worldB).distance; },
 			[&](int i) {
-				const DistancePair& p = pairs[(size_t)i];
-				btGjkPairDetector detector(p.a.bullet, p.b.bullet, &simplexSolver, &epa);
-				btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-				input.m_transformA = ToBullet(p.xfA);
-				input.m_transformB = ToBullet(p.xfB);
-				btPointCollector result;
-				detector.getClosestPoints(input, result, nullptr);
-				return (double)result.m_distance;
+				return (double)cd3Distance(&pairs[(size_t)i].worldA, &pairs[(size_t)i].worldB).distance;
 			},
+			[&](int i) { return BulletDetectorDistance(pairs[(size_t)i], simplexSolver, epa); },
 			[&](int i) {
 				const DistancePair& p = pairs[(size_t)i];
 				cd3SimplexCache cache = p.cache;
 				return (double)cd3DistanceCached(&p.worldA, &p.worldB, &cache, nullptr).distance;
-			});
+			},
+			[&](int i) { return BulletGjkEpa2Distance(pairs[(size_t)i]); });
 		PrintRow(distanceNames[kind], t, true);
-		std::printf("  (largest |collide - Bullet| distance %.2g; mean GJK iterations %.2f, cached %.2f)\n", worst,
-					(double)iterations / kPairs, (double)cachedIterations / kPairs);
+		std::printf("%-34s %10s %10s %10.1f %8.2f %8.2f   (btGjkEpaSolver2::Distance)\n", "", "", "", t[3],
+					t[0] / t[3], t[2] / t[3]);
+		std::printf(
+			"  (largest |collide - Bullet| distance: btGjkPairDetector %.2g, btGjkEpaSolver2 %.2g; mean GJK "
+			"iterations %.2f (max %d), cached %.2f)\n",
+			worst, worstEpa2, (double)iterations / kPairs, maxIterations, (double)cachedIterations / kPairs);
 	}
 
-	if (argc > 1 && std::strcmp(argv[1], "--profile-distance") == 0)
+	if (argc > 1 && (std::strcmp(argv[1], "--profile-distance") == 0 ||
+					 std::strcmp(argv[1], "--distance") == 0 || std::strcmp(argv[1], "--count") == 0))
 	{
 		return 0;
 	}
@@ -382,7 +463,8 @@ int main(int argc, char** argv)
 		btConvexCast::CastResult castResult;
 		bulletCastHits += cast.calcTimeOfImpact(p.fromA, p.castToA, p.fromB, p.fromB, castResult);
 		cdReal slop = CD_LINEAR_SLOP;
-		toiHits += cd3TimeOfImpact(&p.a.shape, &p.sa, &p.b.shape, &p.sb, slop, CD_R(0.25) * slop).state == CD_TOI_HIT;
+		toiHits += cd3TimeOfImpact(&p.a.shape, &p.sa, &p.b.shape, &p.sb, slop, CD_R(0.25) * slop).state ==
+				   CD_TOI_HIT;
 		btContinuousConvexCollision toi(p.a.bullet, p.b.bullet, &simplexSolver, &epa);
 		btConvexCast::CastResult toiResult;
 		bulletToiHits += toi.calcTimeOfImpact(p.fromA, p.toA, p.fromB, p.toB, toiResult);
@@ -416,8 +498,8 @@ int main(int argc, char** argv)
 			return (double)result.m_fraction;
 		});
 	PrintRow("3D time of impact (box, box/cyl16)", toi, false);
-	std::printf("  (hits: shape cast collide %d, Bullet %d; time of impact collide %d, Bullet %d)\n", castHits,
-				bulletCastHits, toiHits, bulletToiHits);
+	std::printf("  (hits: shape cast collide %d, Bullet %d; time of impact collide %d, Bullet %d)\n",
+				castHits, bulletCastHits, toiHits, bulletToiHits);
 
 	for (cd3Hull* hull : hulls)
 	{

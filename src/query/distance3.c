@@ -431,13 +431,26 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 			   : cd3Neg(v);
 }
 
+/* cd3CorePoint, with an oriented box's corner as centre + (+-1) axes: the same sums bit for bit
+ * (a product by +-1 is exact) without a branch per axis. */
+static cd3Vec CorePoint(const cd3Core* core, int i)
+{
+	if (core->lazyBox)
+	{
+		cd3Vec p = cd3MulAdd(core->center, (i & 1) ? CD_R(1.0) : CD_R(-1.0), core->axes[0]);
+		p = cd3MulAdd(p, (i & 2) ? CD_R(1.0) : CD_R(-1.0), core->axes[1]);
+		return cd3MulAdd(p, (i & 4) ? CD_R(1.0) : CD_R(-1.0), core->axes[2]);
+	}
+	return cd3CorePoint(core, i);
+}
+
 static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int indexB)
 {
 	GjkVertex vertex;
 	vertex.indexA = indexA;
 	vertex.indexB = indexB;
-	vertex.a = cd3CorePoint(a, indexA);
-	vertex.b = cd3CorePoint(b, indexB);
+	vertex.a = CorePoint(a, indexA);
+	vertex.b = CorePoint(b, indexB);
 	vertex.w = cd3Sub(vertex.a, vertex.b);
 	return vertex;
 }
@@ -528,6 +541,300 @@ static void WriteCache(cd3SimplexCache* cache, const GjkSimplex* simplex)
 	cache->metric = SimplexMetric(simplex);
 }
 
+/* ---- The lean solver ----
+ * Most steps are well-conditioned: a unit-scale simplex, not flat, whose closest point holds the
+ * newest vertex. For them GJK runs a lean solver (Ericson, Real-Time Collision Detection 5.1.5 and
+ * 5.1.6): the Voronoi regions are told apart by a few dot products, and of a tetrahedron only the
+ * three faces with the newest vertex are examined (the search direction put the origin on the
+ * newest vertex's side of the old face). A step that the lean solver cannot vouch for (a triangle
+ * or tetrahedron nearly flat, coordinates beyond a safe range, a closest feature without the
+ * newest vertex, an enclosed origin, a cached simplex whose vertices are all old) goes to the
+ * robust solver above, with its tie rules, tolerances and refinement. */
+
+/* Sine of a triangle's largest angle below which the lean solver leaves the face to the robust
+ * one: the face weights' round-off grows as epsilon over this sine. */
+#define GJK_LEAN_FLAT_TOLERANCE CD_R(1.0e-2)
+
+/* Sine of a triangle's largest angle above which its face weights come from Ericson's products of
+ * dot products (round-off at most 4 epsilon): every triangle with its largest angle below 150 degrees. */
+#define GJK_LEAN_ROUND_SINE CD_R(0.5)
+
+/* Round-off of a support value relative to the largest coordinate of the support points (w = a -
+ * b and its dot product each round at about one epsilon of their largest terms). */
+#define GJK_GAP_ROUNDOFF (CD_R(4.0) * CD_REAL_EPSILON)
+
+/* Range of the largest |coordinate| of a simplex's support points for the lean solver: products of
+ * up to six coordinates of w (a tetrahedron's squared volume, times a squared tolerance) do not
+ * overflow below the top. Below the bottom the shapes are small enough for underflow to matter;
+ * a vertex w much smaller than its support points only makes the flatness tests (strict
+ * comparisons, false for products that underflow to zero) hand the step to the robust solver. */
+#if CD_DOUBLE
+#define GJK_LEAN_HIGH 0x1p100
+#define GJK_LEAN_LOW 0x1p-100
+#else
+#define GJK_LEAN_HIGH 0x1p16f
+#define GJK_LEAN_LOW 0x1p-12f
+#endif
+
+/* The simplex's point closest to the origin: the vertices that support it (indices into the
+ * simplex), their weights, the point v and the search direction (towards the origin, any length). */
+typedef struct LeanSolution
+{
+	cd3Vec v, direction;
+	cdReal lambda[3];
+	int index[3];
+	int count;
+	bool usesNewest; /* the closest feature holds the newest vertex */
+} LeanSolution;
+
+static void LeanVertex(const GjkVertex* s, int i, LeanSolution* out)
+{
+	out->count = 1;
+	out->index[0] = i;
+	out->lambda[0] = CD_R(1.0);
+	out->v = s[i].w;
+	out->direction = cd3Neg(s[i].w);
+}
+
+/* Edge p-q at parameter t (from p). The direction is built from the edge (Catto): the part of
+ * -p perpendicular to the edge, exact to round-off even where -v cancels. */
+static void LeanEdge(const GjkVertex* s, int p, int q, cdReal t, LeanSolution* out)
+{
+	/* A zero-length edge (two index pairs with the same difference) gives 0/0: its first end. */
+	t = t >= CD_R(0.0) && t <= CD_R(1.0) ? t : CD_R(0.0);
+	cd3Vec wp = s[p].w, e = cd3Sub(s[q].w, wp);
+	out->count = 2;
+	out->index[0] = p;
+	out->index[1] = q;
+	out->lambda[0] = CD_R(1.0) - t;
+	out->lambda[1] = t;
+	out->v = cd3MulAdd(wp, t, e);
+	out->direction = cd3Cross(cd3Cross(e, cd3Neg(wp)), e);
+}
+
+/* Closest point of the segment p-q, q the newest vertex. */
+static void LeanSegment(const GjkVertex* s, int p, int q, LeanSolution* out)
+{
+	cd3Vec wp = s[p].w, wq = s[q].w, e = cd3Sub(wq, wp);
+	cdReal towardQ = -cd3Dot(wp, e); /* |e|^2 times the parameter of the origin's projection */
+	cdReal beyondQ = cd3Dot(wq, e);
+	if (towardQ <= CD_R(0.0))
+	{
+		LeanVertex(s, p, out);
+		out->usesNewest = false;
+	}
+	else if (beyondQ <= CD_R(0.0))
+	{
+		LeanVertex(s, q, out);
+		out->usesNewest = true;
+	}
+	else
+	{
+		LeanEdge(s, p, q, towardQ / (towardQ + beyondQ), out);
+		out->usesNewest = true;
+	}
+}
+
+/* Closest point of the triangle a-b-c, c the newest vertex (Ericson's region tests with the
+ * origin as the query point); false when the triangle is too flat for the lean path. The face
+ * weights are not Ericson's products of dot products (their round-off grows as 1/sine^2) but the
+ * projections on the normal taken from the two shorter edges, as the robust solver does. */
+static bool LeanTriangle(const GjkVertex* s, int ia, int ib, int ic, LeanSolution* out)
+{
+	cd3Vec a = s[ia].w, b = s[ib].w, c = s[ic].w;
+	cd3Vec ab = cd3Sub(b, a), ac = cd3Sub(c, a);
+	cdReal d1 = -cd3Dot(ab, a), d2 = -cd3Dot(ac, a);
+	if (d1 <= CD_R(0.0) && d2 <= CD_R(0.0))
+	{
+		LeanVertex(s, ia, out);
+		out->usesNewest = false;
+		return true;
+	}
+	cdReal d3 = -cd3Dot(ab, b), d4 = -cd3Dot(ac, b);
+	if (d3 >= CD_R(0.0) && d4 <= d3)
+	{
+		LeanVertex(s, ib, out);
+		out->usesNewest = false;
+		return true;
+	}
+	cdReal vc = d1 * d4 - d3 * d2;
+	if (vc <= CD_R(0.0) && d1 >= CD_R(0.0) && d3 <= CD_R(0.0))
+	{
+		LeanEdge(s, ia, ib, d1 / (d1 - d3), out);
+		out->usesNewest = false;
+		return true;
+	}
+	out->usesNewest = true;
+	cdReal d5 = -cd3Dot(ab, c), d6 = -cd3Dot(ac, c);
+	if (d6 >= CD_R(0.0) && d5 <= d6)
+	{
+		LeanVertex(s, ic, out);
+		return true;
+	}
+	cdReal vb = d5 * d2 - d1 * d6;
+	if (vb <= CD_R(0.0) && d2 >= CD_R(0.0) && d6 <= CD_R(0.0))
+	{
+		LeanEdge(s, ia, ic, d2 / (d2 - d6), out);
+		return true;
+	}
+	cdReal va = d3 * d6 - d5 * d4;
+	if (va <= CD_R(0.0) && d4 - d3 >= CD_R(0.0) && d5 - d6 >= CD_R(0.0))
+	{
+		LeanEdge(s, ib, ic, (d4 - d3) / ((d4 - d3) + (d5 - d6)), out);
+		return true;
+	}
+
+	/* The face. Ericson's va, vb, vc are its weights, accurate to about epsilon over the squared
+	 * sine of the triangle's largest angle (their sum is |ab x ac|^2); below GJK_LEAN_ROUND_SINE
+	 * the weights come from projections on the normal taken from the two shorter edges, as in the
+	 * robust solver, whose round-off grows only as epsilon over the sine. */
+	cd3Vec bc = cd3Sub(c, b);
+	cdReal lab = cd3LengthSquared(ab), lac = cd3LengthSquared(ac), lbc = cd3LengthSquared(bc);
+	int shorterEdges = lbc >= lab && lbc >= lac ? 0 : lac >= lab ? 1 : 2;
+	cdReal edgeProduct = shorterEdges == 0 ? lab * lac : shorterEdges == 1 ? lab * lbc : lac * lbc;
+	cdReal la = va, lb = vb, lc = vc, sum = va + vb + vc;
+	cd3Vec n = cd3Cross(ab, ac);
+	if (!(va >= CD_R(0.0) && vb >= CD_R(0.0) && vc >= CD_R(0.0) &&
+		  sum > GJK_LEAN_ROUND_SINE * GJK_LEAN_ROUND_SINE * edgeProduct))
+	{
+		n = shorterEdges == 0 ? n : shorterEdges == 1 ? cd3Cross(ab, bc) : cd3Cross(ac, bc);
+		if (!(cd3LengthSquared(n) > GJK_LEAN_FLAT_TOLERANCE * GJK_LEAN_FLAT_TOLERANCE * edgeProduct))
+		{
+			return false;
+		}
+		la = cd3Dot(n, cd3Cross(b, c));
+		lb = cd3Dot(n, cd3Cross(c, a));
+		lc = cd3Dot(n, cd3Cross(a, b));
+		sum = la + lb + lc;
+		if (!(la >= CD_R(0.0) && lb >= CD_R(0.0) && lc >= CD_R(0.0) && sum > CD_R(0.0)))
+		{
+			return false; /* the region tests and the weights disagree: round-off, robust path */
+		}
+	}
+	cdReal inverse = CD_R(1.0) / sum;
+	out->count = 3;
+	out->index[0] = ia;
+	out->index[1] = ib;
+	out->index[2] = ic;
+	out->lambda[0] = la * inverse;
+	out->lambda[1] = lb * inverse;
+	out->lambda[2] = lc * inverse;
+	out->v =
+		cd3Add(cd3Add(cd3Scale(out->lambda[0], a), cd3Scale(out->lambda[1], b)), cd3Scale(out->lambda[2], c));
+	out->direction = cd3Dot(n, a) > CD_R(0.0) ? cd3Neg(n) : n;
+	return true;
+}
+
+typedef enum LeanStatus
+{
+	LEAN_SOLVED,
+	LEAN_ENCLOSED,
+	LEAN_GIVE_UP
+} LeanStatus;
+
+/* Closest point of the tetrahedron s[0..3], s[3] the newest vertex. */
+static LeanStatus LeanTetrahedron(const GjkVertex* s, LeanSolution* out)
+{
+	cd3Vec a = s[0].w, b = s[1].w, c = s[2].w, d = s[3].w;
+	cd3Vec ab = cd3Sub(b, a), ac = cd3Sub(c, a), ad = cd3Sub(d, a);
+	cd3Vec abc = cd3Cross(ab, ac);
+	cdReal volume = cd3Dot(abc, ad);
+	cdReal edgeProduct = cd3LengthSquared(ab) * cd3LengthSquared(ac) * cd3LengthSquared(ad);
+	if (!(volume * volume > GJK_DEGENERATE_TOLERANCE * GJK_DEGENERATE_TOLERANCE * edgeProduct))
+	{
+		return LEAN_GIVE_UP;
+	}
+	/* The origin beyond the old face: impossible in exact arithmetic. */
+	if (cd3Dot(abc, a) * volume > CD_R(0.0))
+	{
+		return LEAN_GIVE_UP;
+	}
+	/* The faces with the newest vertex (old vertices in ascending order, as the compaction of the
+	 * simplex expects), each with the vertex opposite it. */
+	static const int faces[3][3] = {{0, 1, 2}, {1, 2, 0}, {0, 2, 1}};
+	bool found = false;
+	cdReal bestDistanceSquared = CD_REAL_MAX;
+	for (int f = 0; f < 3; ++f)
+	{
+		int i = faces[f][0], j = faces[f][1], opposite = faces[f][2];
+		cd3Vec wi = s[i].w;
+		cd3Vec n = cd3Cross(cd3Sub(s[j].w, wi), cd3Sub(d, wi));
+		cdReal originSide = -cd3Dot(n, wi), oppositeSide = cd3Dot(n, cd3Sub(s[opposite].w, wi));
+		if (!(originSide * oppositeSide < CD_R(0.0)))
+		{
+			continue;
+		}
+		LeanSolution face;
+		if (!LeanTriangle(s, i, j, 3, &face))
+		{
+			return LEAN_GIVE_UP;
+		}
+		cdReal distanceSquared = cd3LengthSquared(face.v);
+		if (distanceSquared < bestDistanceSquared)
+		{
+			bestDistanceSquared = distanceSquared;
+			*out = face;
+			found = true;
+		}
+	}
+	if (!found)
+	{
+		return LEAN_ENCLOSED;
+	}
+	return out->usesNewest ? LEAN_SOLVED : LEAN_GIVE_UP;
+}
+
+/* One solver step on the lean path: true when it applies (then the simplex is reduced, its weights
+ * set, and *v and *direction written); false leaves the simplex as it was, for the robust solver
+ * (which also gives the enclosing weights when the lean one finds the origin enclosed). */
+static bool SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec* direction)
+{
+	LeanSolution solution;
+	if (simplex->count == 2)
+	{
+		LeanSegment(simplex->v, 0, 1, &solution);
+	}
+	else if (simplex->count == 3)
+	{
+		if (!LeanTriangle(simplex->v, 0, 1, 2, &solution))
+		{
+			return false;
+		}
+	}
+	else if (LeanTetrahedron(simplex->v, &solution) != LEAN_SOLVED)
+	{
+		return false;
+	}
+	if (!solution.usesNewest)
+	{
+		return false;
+	}
+	/* The indices ascend: moving each kept vertex down never overwrites one still to move. */
+	for (int i = 0; i < solution.count; ++i)
+	{
+		int from = solution.index[i];
+		if (from != i)
+		{
+			simplex->v[i] = simplex->v[from];
+			size[i] = size[from];
+		}
+		simplex->lambda[i] = solution.lambda[i];
+	}
+	simplex->count = solution.count;
+	*v = solution.v;
+	/* The edge and face constructions vanish only with the origin (nearly) on the simplex's line
+	 * or plane, where -v is as good a direction as any. */
+	*direction = cd3Dot(solution.direction, solution.v) < CD_R(0.0) ? solution.direction : cd3Neg(solution.v);
+	return true;
+}
+
+/* The largest |coordinate| of a vertex's support points a and b: the scale of the tolerances,
+ * and (w = a - b being at most twice as large) of the lean solver's range. */
+static cdReal VertexSize(const GjkVertex* vertex)
+{
+	return cdMax(MaxAbsComponent(vertex->a), MaxAbsComponent(vertex->b));
+}
+
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
  * writes the final simplex back to it (cache may be NULL). */
@@ -535,8 +842,9 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 					cd3Vec* pointB, bool* touching, bool* hitIterationCap)
 {
 	GjkSimplex simplex;
-	memset(&simplex, 0, sizeof(simplex));
-	if (!ReadCache(cache, a, b, &simplex))
+	simplex.count = 0;
+	bool cached = ReadCache(cache, a, b, &simplex);
+	if (!cached)
 	{
 		/* A cold start from the supports along the line between the cores' centres (or first
 		 * points) is usually a step or two closer than an arbitrary pair of points. */
@@ -547,32 +855,67 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 								  usable ? cd3CoreSupport(b, cd3Neg(toB)) : 0);
 		simplex.lambda[0] = CD_R(1.0);
 	}
+	cdReal size[4];
+	for (int i = 0; i < simplex.count; ++i)
+	{
+		size[i] = VertexSize(&simplex.v[i]);
+	}
 
 	/* Round-off can make a step gain nothing (or lose a little) while the next ones still gain:
 	 * keep the closest simplex seen, and stop after a few steps without progress. */
-	GjkSimplex best = simplex;
+	GjkSimplex best;
+	best.count = 0;
 	cdReal bestDistanceSquared = CD_REAL_MAX;
 	int stalls = 0;
 	*touching = false;
+	/* The lean solver needs to know the newest vertex: not on a cached simplex. */
+	bool leanApplies = !cached;
 	int iteration = 0;
 	for (; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
-		if (SolveSimplex(&simplex))
+		cd3Vec v, direction;
+		bool solved = false;
+		if (simplex.count == 1)
 		{
-			*touching = true;
-			break;
+			simplex.lambda[0] = CD_R(1.0);
+			v = simplex.v[0].w;
+			direction = cd3Neg(v);
+			solved = true;
 		}
-		cd3Vec v = SimplexPoint(&simplex);
+		else if (leanApplies)
+		{
+			cdReal largest = size[0];
+			for (int i = 1; i < simplex.count; ++i)
+			{
+				largest = cdMax(largest, size[i]);
+			}
+			solved = largest <= GJK_LEAN_HIGH && largest >= GJK_LEAN_LOW &&
+					 SolveLean(&simplex, size, &v, &direction);
+		}
+		if (!solved)
+		{
+			if (SolveSimplex(&simplex))
+			{
+				*touching = true;
+				break;
+			}
+			for (int i = 0; i < simplex.count; ++i)
+			{
+				size[i] = VertexSize(&simplex.v[i]);
+			}
+			v = SimplexPoint(&simplex);
+			direction = SearchDirection(&simplex, v);
+		}
 		cdReal distanceSquared = cd3LengthSquared(v);
 		/* The largest coordinate of the support points, as the documented tolerance reads (16
 		 * epsilon of the largest coordinate involved): |w| = |a - b| can be 2 sqrt(3) times
 		 * larger and would call shapes that far apart touching. */
-		cdReal size = CD_R(0.0);
-		for (int i = 0; i < simplex.count; ++i)
+		cdReal simplexSize = size[0];
+		for (int i = 1; i < simplex.count; ++i)
 		{
-			size = cdMax(size, cdMax(MaxAbsComponent(simplex.v[i].a), MaxAbsComponent(simplex.v[i].b)));
+			simplexSize = cdMax(simplexSize, size[i]);
 		}
-		cdReal touch = GJK_TOUCH_TOLERANCE * size;
+		cdReal touch = GJK_TOUCH_TOLERANCE * simplexSize;
 		if (distanceSquared <= touch * touch)
 		{
 			*touching = true;
@@ -580,7 +923,13 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		if (distanceSquared < bestDistanceSquared)
 		{
-			best = simplex;
+			/* Only the live vertices (a whole-struct copy each step cost a tenth of the time). */
+			best.count = simplex.count;
+			for (int i = 0; i < simplex.count; ++i)
+			{
+				best.v[i] = simplex.v[i];
+				best.lambda[i] = simplex.lambda[i];
+			}
 			bestDistanceSquared = distanceSquared;
 			stalls = 0;
 		}
@@ -589,7 +938,6 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			break;
 		}
 
-		cd3Vec direction = SearchDirection(&simplex, v);
 		int indexA = cd3CoreSupport(a, direction);
 		int indexB = cd3CoreSupport(b, cd3Neg(direction));
 		bool duplicate = false;
@@ -602,26 +950,33 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			break;
 		}
 		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
-		/* The support plane bounds the distance from below: stop when it meets |v|:
-		 * lower = -dot(direction, w) / |direction| >= (1 - tolerance) * upper, squared and in double
-		 * (no square root per iteration; the squares overflow no float range). */
+		cdReal vertexSize = VertexSize(&vertex);
+		/* The support plane bounds the distance from below, |v| from above: stop when they meet
+		 * within GJK_GAP_TOLERANCE of |v| plus the round-off of the support values
+		 * (GJK_GAP_ROUNDOFF of the largest coordinate of the support points). Below that the
+		 * bound cannot tell support points apart: without it, pairs near contact (a gap far below
+		 * their size) stepped between ties until stalled. In double, where the squares and
+		 * products of any float range fit. */
 		double lowerTimesLength = -(double)cd3Dot(direction, vertex.w);
 		double directionX = (double)direction.x, directionY = (double)direction.y,
 			   directionZ = (double)direction.z;
-		double enough = (1.0 - (double)GJK_GAP_TOLERANCE) * (1.0 - (double)GJK_GAP_TOLERANCE) *
-						(double)distanceSquared *
-						(directionX * directionX + directionY * directionY + directionZ * directionZ);
-		if (lowerTimesLength > 0.0 && lowerTimesLength * lowerTimesLength >= enough)
+		double directionLength =
+			sqrt(directionX * directionX + directionY * directionY + directionZ * directionZ);
+		double enough = directionLength * (sqrt((double)distanceSquared) * (1.0 - (double)GJK_GAP_TOLERANCE) -
+										   (double)GJK_GAP_ROUNDOFF * (double)cdMax(simplexSize, vertexSize));
+		if (lowerTimesLength > 0.0 && lowerTimesLength >= enough)
 		{
 			break;
 		}
 		simplex.v[simplex.count] = vertex;
 		simplex.lambda[simplex.count] = CD_R(0.0);
+		size[simplex.count] = vertexSize;
 		++simplex.count;
+		leanApplies = true;
 	}
 	/* Every convergence test leaves the loop by break: running off its end is the cap. */
 	*hitIterationCap = iteration == GJK_MAX_ITERATIONS;
-	if (!*touching)
+	if (!*touching && best.count > 0)
 	{
 		simplex = best;
 	}
