@@ -2,6 +2,8 @@
  * and closest point. */
 #include "collide/query3.h"
 
+#include "distance3.h"
+
 #include <string.h>
 
 /* Relative tolerance of cd3PointInShape for the non-solid triangle and segment, the same as the
@@ -127,21 +129,11 @@ static bool OverlapOrdered(const cd3Shape* a, const cd3Shape* b)
 	return false;
 }
 
-/* Relative gap below which GJK's distance counts as touching for pairs with a hull: the
- * round-off of the support points, as in the other rotated tests (docs/API.md). */
-#define CD_HULL_OVERLAP_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
-
 /* Pairs with a hull, in canonical order (the hull second; two hulls by their bytes, so that
- * either argument order runs the very same computation). */
+ * either argument order runs the very same computation): the boolean GJK of distance3.c. */
 static bool OverlapWithHull(const cd3Shape* a, const cd3Shape* b)
 {
-	cd3ClosestPoints r = cd3Distance(a, b);
-	if (r.distance <= CD_R(0.0))
-	{
-		return true;
-	}
-	cdReal magnitude = cdMax(MaxAbsComponent(r.pointA), MaxAbsComponent(r.pointB));
-	return r.distance <= CD_HULL_OVERLAP_TOLERANCE * magnitude;
+	return cd3OverlapGjk(a, b);
 }
 
 bool cd3Overlap(const cd3Shape* a, const cd3Shape* b)

@@ -3,6 +3,7 @@
  * in closed form, since it has no finite support in most directions. */
 #include "collide/query3.h"
 
+#include "distance3.h"
 #include "support3.h"
 
 #include <math.h>
@@ -784,10 +785,11 @@ static LeanStatus LeanTetrahedron(const GjkVertex* s, LeanSolution* out)
 	return out->usesNewest ? LEAN_SOLVED : LEAN_GIVE_UP;
 }
 
-/* One solver step on the lean path: true when it applies (then the simplex is reduced, its weights
- * set, and *v and *direction written); false leaves the simplex as it was, for the robust solver
- * (which also gives the enclosing weights when the lean one finds the origin enclosed). */
-static bool SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec* direction)
+/* One solver step on the lean path: LEAN_SOLVED when it applies (then the simplex is reduced, its
+ * weights set, and *v and *direction written); otherwise the simplex is left as it was, for the
+ * robust solver (which also gives the enclosing weights when the lean one finds the origin
+ * enclosed, LEAN_ENCLOSED). */
+static LeanStatus SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec* direction)
 {
 	LeanSolution solution;
 	if (simplex->count == 2)
@@ -798,16 +800,20 @@ static bool SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec* dire
 	{
 		if (!LeanTriangle(simplex->v, 0, 1, 2, &solution))
 		{
-			return false;
+			return LEAN_GIVE_UP;
 		}
 	}
-	else if (LeanTetrahedron(simplex->v, &solution) != LEAN_SOLVED)
+	else
 	{
-		return false;
+		LeanStatus status = LeanTetrahedron(simplex->v, &solution);
+		if (status != LEAN_SOLVED)
+		{
+			return status;
+		}
 	}
 	if (!solution.usesNewest)
 	{
-		return false;
+		return LEAN_GIVE_UP;
 	}
 	/* The indices ascend: moving each kept vertex down never overwrites one still to move. */
 	for (int i = 0; i < solution.count; ++i)
@@ -825,7 +831,7 @@ static bool SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec* dire
 	/* The edge and face constructions vanish only with the origin (nearly) on the simplex's line
 	 * or plane, where -v is as good a direction as any. */
 	*direction = cd3Dot(solution.direction, solution.v) < CD_R(0.0) ? solution.direction : cd3Neg(solution.v);
-	return true;
+	return LEAN_SOLVED;
 }
 
 /* The largest |coordinate| of a vertex's support points a and b: the scale of the tolerances,
@@ -838,9 +844,10 @@ static cdReal VertexSize(const GjkVertex* vertex)
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
  * writes the final simplex back to it (cache may be NULL). */
-static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, cd3Vec* pointA,
-					cd3Vec* pointB, bool* touching, bool* hitIterationCap)
+static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, cdReal overlapRadius,
+					cd3Vec* pointA, cd3Vec* pointB, bool* touching, bool* hitIterationCap)
 {
+	bool overlapQuery = overlapRadius >= CD_R(0.0);
 	GjkSimplex simplex;
 	simplex.count = 0;
 	bool cached = ReadCache(cache, a, b, &simplex);
@@ -889,8 +896,16 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			{
 				largest = cdMax(largest, size[i]);
 			}
-			solved = largest <= GJK_LEAN_HIGH && largest >= GJK_LEAN_LOW &&
-					 SolveLean(&simplex, size, &v, &direction);
+			if (largest <= GJK_LEAN_HIGH && largest >= GJK_LEAN_LOW)
+			{
+				LeanStatus status = SolveLean(&simplex, size, &v, &direction);
+				if (status == LEAN_ENCLOSED && overlapQuery)
+				{
+					*touching = true; /* no weights needed for a yes */
+					break;
+				}
+				solved = status == LEAN_SOLVED;
+			}
 		}
 		if (!solved)
 		{
@@ -917,6 +932,13 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		cdReal touch = GJK_TOUCH_TOLERANCE * simplexSize;
 		if (distanceSquared <= touch * touch)
+		{
+			*touching = true;
+			break;
+		}
+		/* An overlap query stops as soon as a point of the cores' difference lies within the
+		 * radii (and the touching tolerance) of the origin. */
+		if (overlapQuery && distanceSquared <= (overlapRadius + touch) * (overlapRadius + touch))
 		{
 			*touching = true;
 			break;
@@ -965,6 +987,14 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		double enough = directionLength * (sqrt((double)distanceSquared) * (1.0 - (double)GJK_GAP_TOLERANCE) -
 										   (double)GJK_GAP_ROUNDOFF * (double)cdMax(simplexSize, vertexSize));
 		if (lowerTimesLength > 0.0 && lowerTimesLength >= enough)
+		{
+			break;
+		}
+		/* ... and as soon as a support plane keeps the cores farther apart than that: the
+		 * closest simplex so far then lies beyond it too, and the caller's test says no. */
+		if (overlapQuery && lowerTimesLength > directionLength * ((double)overlapRadius +
+																  (double)GJK_TOUCH_TOLERANCE *
+																	  (double)cdMax(simplexSize, vertexSize)))
 		{
 			break;
 		}
@@ -1080,12 +1110,10 @@ cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdD
 	return cd3DistanceCached(a, b, NULL, status);
 }
 
-cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd3SimplexCache* cache,
-								  cdDistanceStatus* status)
+/* The closest points of the shapes from those of their cores. */
+static cd3ClosestPoints AddRadii(const cd3Core* coreA, const cd3Core* coreB, cd3Vec pointA, cd3Vec pointB,
+								 bool touching)
 {
-	cd3Vec pointA, pointB;
-	bool touching, hitIterationCap;
-	int iterations = GjkCores(coreA, coreB, cache, &pointA, &pointB, &touching, &hitIterationCap);
 	cd3ClosestPoints result;
 	cdReal radius = coreA->radius + coreB->radius;
 	cd3Vec delta = cd3Sub(pointB, pointA);
@@ -1107,12 +1135,21 @@ cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd
 		result.pointB = cd3MulSub(pointB, coreB->radius, normal);
 		result.distance = coreDistance - radius;
 	}
+	return result;
+}
+
+cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd3SimplexCache* cache,
+								  cdDistanceStatus* status)
+{
+	cd3Vec pointA, pointB;
+	bool touching, hitIterationCap;
+	int iterations = GjkCores(coreA, coreB, cache, CD_R(-1.0), &pointA, &pointB, &touching, &hitIterationCap);
 	if (status != NULL)
 	{
 		status->iterations = iterations;
 		status->hitIterationCap = hitIterationCap;
 	}
-	return result;
+	return AddRadii(coreA, coreB, pointA, pointB, touching);
 }
 
 cd3ClosestPoints cd3DistanceCached(const cd3Shape* a, const cd3Shape* b, cd3SimplexCache* cache,
@@ -1146,4 +1183,35 @@ cd3ClosestPoints cd3DistanceCached(const cd3Shape* a, const cd3Shape* b, cd3Simp
 		return none;
 	}
 	return cd3DistanceCores(&coreA, &coreB, cache, status);
+}
+
+/* Overlap decided from closest points: touching within CD3_GJK_OVERLAP_TOLERANCE of the largest
+ * coordinate of the points, the round-off of the support points (as in the other rotated tests,
+ * docs/API.md). */
+static bool OverlapFromClosestPoints(cd3ClosestPoints r)
+{
+	if (r.distance <= CD_R(0.0))
+	{
+		return true;
+	}
+	cdReal magnitude = cdMax(MaxAbsComponent(r.pointA), MaxAbsComponent(r.pointB));
+	return r.distance <= CD3_GJK_OVERLAP_TOLERANCE * magnitude;
+}
+
+bool cd3OverlapGjk(const cd3Shape* a, const cd3Shape* b)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd3Core coreA, coreB;
+	if (!cd3MakeCore(a, &coreA) || !cd3MakeCore(b, &coreB))
+	{
+		return OverlapFromClosestPoints(cd3Distance(a, b)); /* a half-space: closed form */
+	}
+	/* GJK stops at the first point of the cores' difference within the radii (yes) or the first
+	 * support plane beyond them (no); the decision on the points it returns is then the one the
+	 * full distance would give, away from the touching tolerance. */
+	cd3Vec pointA, pointB;
+	bool touching, hitIterationCap;
+	GjkCores(&coreA, &coreB, NULL, coreA.radius + coreB.radius, &pointA, &pointB, &touching,
+			 &hitIterationCap);
+	return touching || OverlapFromClosestPoints(AddRadii(&coreA, &coreB, pointA, pointB, false));
 }
