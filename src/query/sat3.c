@@ -165,6 +165,8 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 {
 	cdReal best = -CD_REAL_MAX;
 	*bestFace = -1;
+	/* The rotation as a matrix once: two quaternion rotations per face cost more than this. */
+	cd3Mat33 rotation = cd3MakeMatFromQuat(rel.q);
 	for (int f = 0; f < p->faceCount; ++f)
 	{
 		cd3Plane plane = p->planes[f];
@@ -172,9 +174,10 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 		{
 			continue;
 		}
-		cd3Vec inQ = cd3InvRotateVector(rel.q, plane.normal);
+		cd3Vec inQ = cd3MulMTV(rotation, plane.normal);
 		int support = cd3SupportIndex(q->vertices, q->vertexCount, cd3Neg(inQ));
-		cdReal separation = cd3Dot(plane.normal, cd3TransformPoint(rel, q->vertices[support])) - plane.offset;
+		cd3Vec supportInP = cd3Add(cd3MulMV(rotation, q->vertices[support]), rel.p);
+		cdReal separation = cd3Dot(plane.normal, supportInP) - plane.offset;
 		if (separation > best)
 		{
 			best = separation;
@@ -315,12 +318,150 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	}
 }
 
+/* Vertices of B carried into A's frame once per query for the projections below, when B has at
+ * most this many (triangles and boxes; larger hulls project through the relative transform). */
+#define CARRIED_VERTICES 16
+
+/* The extent of A along an axis of A's frame: a box in closed form, the sum its extreme vertex
+ * gives term by term (so bit for bit the vertex loop's maximum); otherwise the vertex loop. */
+static void ProjectA(const cd3Polytope* a, cd3Vec axis, cdReal* lo, cdReal* hi)
+{
+	if (a->edges == BOX_EDGES)
+	{
+		cd3Vec h = a->vertices[7]; /* (+hx, +hy, +hz) */
+		cdReal r = cdAbs(axis.x) * h.x + cdAbs(axis.y) * h.y + cdAbs(axis.z) * h.z;
+		*lo = -r;
+		*hi = r;
+		return;
+	}
+	cdReal mn = cd3Dot(axis, a->vertices[0]);
+	cdReal mx = mn;
+	for (int i = 1; i < a->vertexCount; ++i)
+	{
+		cdReal d = cd3Dot(axis, a->vertices[i]);
+		mn = cdMin(mn, d);
+		mx = cdMax(mx, d);
+	}
+	*lo = mn;
+	*hi = mx;
+}
+
+static void ProjectPoints(const cd3Vec* points, int count, cd3Vec axis, cdReal* lo, cdReal* hi)
+{
+	cdReal mn = cd3Dot(axis, points[0]);
+	cdReal mx = mn;
+	for (int i = 1; i < count; ++i)
+	{
+		cdReal d = cd3Dot(axis, points[i]);
+		mn = cdMin(mn, d);
+		mx = cdMax(mx, d);
+	}
+	*lo = mn;
+	*hi = mx;
+}
+
+/* B's side of the projected edge pairs: its vertices (carried into A's frame when few) and the
+ * current edge of B in A's frame. */
+typedef struct ProjectedB
+{
+	const cd3Polytope* polytope;
+	cd3Transform rel;
+	const cd3Vec* carried; /* NULL: project through rel */
+	cd3Vec origin, edge;
+	cdReal parallel; /* PARALLEL_SINE * |edge| */
+	int index;
+} ProjectedB;
+
+/* A's edges parallel to edgeA (`members`, half-edge indices) against B's current edge: one
+ * projection on their common axis, then the first member that supports A along it. */
+static void TestProjectedPair(const cd3Polytope* a, cd3Vec edgeA, const int* members, int memberCount,
+							  const ProjectedB* pb, cd3SatResult* r, cd3Vec* bestAxis)
+{
+	/* Unnormalized: projections, separation and slack all scale with |axis|, so the one division
+	 * waits for a pair that beats the best so far. */
+	cd3Vec axis = cd3Cross(edgeA, pb->edge);
+	cdReal axisLength = cd3Length(axis);
+	if (!(axisLength > pb->parallel * cd3Length(edgeA)))
+	{
+		return;
+	}
+	cdReal loA, hiA, loB, hiB;
+	ProjectA(a, axis, &loA, &hiA);
+	if (pb->carried != NULL)
+	{
+		ProjectPoints(pb->carried, pb->polytope->vertexCount, axis, &loB, &hiB);
+	}
+	else
+	{
+		Project(pb->polytope, pb->rel, axis, &loB, &hiB);
+	}
+	cdReal separation = loB - hiA;
+	cdReal extremeA = hiA, extremeB = loB;
+	cdReal sign = CD_R(1.0);
+	if (loA - hiB > separation)
+	{
+		separation = loA - hiB;
+		sign = CD_R(-1.0);
+		extremeA = -loA;
+		extremeB = -hiB;
+	}
+	if (!(r->edgeA < 0 || separation > r->edgeSeparation * axisLength))
+	{
+		return;
+	}
+	/* Projection does not tell parallel edges apart: keep the pair only when both edges support
+	 * their polytopes along the axis, so the contact lies on them. */
+	cdReal slack =
+		SUPPORT_TOLERANCE * ((a->size + pb->polytope->size) * axisLength + cdAbs(extremeA) + cdAbs(extremeB));
+	if (sign * cd3Dot(axis, pb->origin) > extremeB + slack)
+	{
+		return;
+	}
+	for (int m = 0; m < memberCount; ++m)
+	{
+		if (sign * cd3Dot(axis, a->vertices[a->edges[members[m]].origin]) >= extremeA - slack)
+		{
+			cdReal inverse = CD_R(1.0) / axisLength;
+			r->edgeSeparation = separation * inverse;
+			r->edgeA = members[m];
+			r->edgeB = pb->index;
+			*bestAxis = cd3Scale(sign * inverse, axis);
+			return;
+		}
+	}
+}
+
 /* Edge pairs when a polytope is flat (a triangle's arcs are half circles): every pair, by
- * projecting both polytopes on the cross product. */
+ * projecting both polytopes on the cross product. A box's twelve edges run in three directions,
+ * and a pair's axis and projections depend only on the direction, so a box projects three times
+ * per edge of B instead of twelve. */
 static void QueryEdgesProjected(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB,
 								cd3SatResult* r, cd3Vec* bestAxis)
 {
-	cd3Transform identity = CD3_TRANSFORM_IDENTITY;
+	cd3Vec carried[CARRIED_VERTICES];
+	ProjectedB pb = {b, relB, NULL, CD3_VEC_ZERO, CD3_VEC_ZERO, CD_R(0.0), -1};
+	if (b->vertexCount <= CARRIED_VERTICES)
+	{
+		for (int i = 0; i < b->vertexCount; ++i)
+		{
+			carried[i] = cd3TransformPoint(relB, b->vertices[i]);
+		}
+		pb.carried = carried;
+	}
+	/* The box's unique half-edges by direction: their end vertices differ in bit 0, 1 or 2. */
+	bool box = a->edges == BOX_EDGES;
+	int groups[3][4];
+	int groupSize[3] = {0, 0, 0};
+	for (int i = 0; box && i < 24; ++i)
+	{
+		int twin = BOX_EDGES[i].twin;
+		if (twin > i)
+		{
+			int bit = BOX_EDGES[i].origin ^ BOX_EDGES[twin].origin;
+			int k = bit == 1 ? 0 : (bit == 2 ? 1 : 2);
+			groups[k][groupSize[k]++] = i;
+		}
+	}
 	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
 		const cd3HullHalfEdge* eb = &b->edges[j];
@@ -328,50 +469,23 @@ static void QueryEdgesProjected(const cd3Polytope* a, const cd3Polytope* b, cd3T
 		{
 			continue;
 		}
-		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
-		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]);
-		cd3Vec edgeB = cd3Sub(qb1, qb0);
-		for (int i = 0; i < a->edgeAxisCount; ++i)
+		pb.origin = cd3TransformPoint(relB, b->vertices[eb->origin]);
+		pb.edge = cd3Sub(cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]), pb.origin);
+		pb.parallel = PARALLEL_SINE * cd3Length(pb.edge);
+		pb.index = j;
+		for (int k = 0; box && k < 3; ++k)
+		{
+			const cd3HullHalfEdge* ea = &a->edges[groups[k][0]];
+			cd3Vec edgeA = cd3Sub(a->vertices[a->edges[ea->twin].origin], a->vertices[ea->origin]);
+			TestProjectedPair(a, edgeA, groups[k], groupSize[k], &pb, r, bestAxis);
+		}
+		for (int i = 0; !box && i < a->edgeAxisCount; ++i)
 		{
 			const cd3HullHalfEdge* ea = &a->edges[i];
-			if (ea->twin < i)
+			if (ea->twin > i)
 			{
-				continue;
-			}
-			cd3Vec pa0 = a->vertices[ea->origin];
-			cd3Vec edgeA = cd3Sub(a->vertices[a->edges[ea->twin].origin], pa0);
-			cd3Vec axis = cd3Cross(edgeA, edgeB);
-			cdReal axisLength = cd3Length(axis);
-			if (!(axisLength > PARALLEL_SINE * cd3Length(edgeA) * cd3Length(edgeB)))
-			{
-				continue;
-			}
-			axis = cd3Scale(CD_R(1.0) / axisLength, axis);
-			cdReal loA, hiA, loB, hiB;
-			Project(a, identity, axis, &loA, &hiA);
-			Project(b, relB, axis, &loB, &hiB);
-			cdReal separation = loB - hiA;
-			cdReal extremeA = hiA, extremeB = loB;
-			if (loA - hiB > separation)
-			{
-				separation = loA - hiB;
-				axis = cd3Neg(axis);
-				extremeA = -loA;
-				extremeB = -hiB;
-			}
-			/* Projection does not tell parallel edges apart: keep the pair only when both edges
-			 * support their polytopes along the axis, so the contact lies on them. */
-			cdReal slack = SUPPORT_TOLERANCE * (a->size + b->size + cdAbs(extremeA) + cdAbs(extremeB));
-			if (cd3Dot(axis, pa0) < extremeA - slack || cd3Dot(axis, qb0) > extremeB + slack)
-			{
-				continue;
-			}
-			if (separation > r->edgeSeparation)
-			{
-				r->edgeSeparation = separation;
-				r->edgeA = i;
-				r->edgeB = j;
-				*bestAxis = axis;
+				cd3Vec edgeA = cd3Sub(a->vertices[a->edges[ea->twin].origin], a->vertices[ea->origin]);
+				TestProjectedPair(a, edgeA, &i, 1, &pb, r, bestAxis);
 			}
 		}
 	}
