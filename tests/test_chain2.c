@@ -1145,6 +1145,9 @@ static double CoreDistance(const cd2Polygon* polygon, cd2Vec p)
 	return best;
 }
 
+static bool SameAsGeneric(int trial, const char* kind, const cd2Manifold* direct, const cd2Manifold* generic,
+						  double tolerance);
+
 /* cd2CollideChainSegmentPolygonDirect (what cd2CollideChain runs for polygons) against the generic
  * core-core path cd2CollideChainSegmentPolygon of manifold2.c on random segments, ghosts and
  * polygons at all distances: the same points, separations, normal and feature ids; every point
@@ -1165,30 +1168,7 @@ static void TestDirectSegmentPolygon(void)
 		cdReal distance = speculative[TestRngInt(&rng, 3)];
 		cd2Manifold direct = cd2CollideChainSegmentPolygonDirect(&s, &polygon, distance);
 		cd2Manifold generic = cd2CollideChainSegmentPolygon(&s, &polygon, distance);
-		bool same = direct.pointCount == generic.pointCount &&
-					(double)cd2VecDistance(direct.normal, generic.normal) <= tolerance;
-		for (int i = 0; same && i < direct.pointCount; ++i)
-		{
-			const cd2ManifoldPoint* d = &direct.points[i];
-			const cd2ManifoldPoint* g = &generic.points[i];
-			same = d->id == g->id && (double)cd2VecDistance(d->point, g->point) <= tolerance &&
-				   fabs((double)d->separation - (double)g->separation) <=
-					   tolerance * fmax(1.0, fabs((double)g->separation));
-		}
-		TEST_CHECKF(
-			same,
-			"trial %d: direct %d points normal (%.7g %.7g) id %x sep %.7g, generic %d points normal (%.7g "
-			"%.7g) id %x sep %.7g",
-			trial, direct.pointCount, (double)direct.normal.x, (double)direct.normal.y, direct.points[0].id,
-			(double)direct.points[0].separation, generic.pointCount, (double)generic.normal.x,
-			(double)generic.normal.y, generic.points[0].id, (double)generic.points[0].separation);
-		bool identical = same && cd2VecEqual(direct.normal, generic.normal);
-		for (int i = 0; identical && i < direct.pointCount; ++i)
-		{
-			identical = cd2VecEqual(direct.points[i].point, generic.points[i].point) &&
-						direct.points[i].separation == generic.points[i].separation;
-		}
-		exact += identical;
+		exact += SameAsGeneric(trial, "polygon", &direct, &generic, tolerance);
 		if (direct.pointCount == 0)
 		{
 			continue;
@@ -1301,6 +1281,127 @@ static void TestDirectSegmentPolygon(void)
 			   twoSidedCompared > cases / 10);
 }
 
+/* Checks a dedicated manifold against the generic one: same count, normal, points, separations and
+ * ids (within round-off); returns whether they agree bit for bit. */
+static bool SameAsGeneric(int trial, const char* kind, const cd2Manifold* direct, const cd2Manifold* generic,
+						  double tolerance)
+{
+	bool same = direct->pointCount == generic->pointCount &&
+				(double)cd2VecDistance(direct->normal, generic->normal) <= tolerance;
+	for (int i = 0; same && i < direct->pointCount; ++i)
+	{
+		const cd2ManifoldPoint* d = &direct->points[i];
+		const cd2ManifoldPoint* g = &generic->points[i];
+		same = d->id == g->id && (double)cd2VecDistance(d->point, g->point) <= tolerance &&
+			   fabs((double)d->separation - (double)g->separation) <=
+				   tolerance * fmax(1.0, fabs((double)g->separation));
+	}
+	TEST_CHECKF(
+		same,
+		"%s trial %d: direct %d points normal (%.7g %.7g) id %x sep %.7g, generic %d points normal (%.7g "
+		"%.7g) id %x sep %.7g",
+		kind, trial, direct->pointCount, (double)direct->normal.x, (double)direct->normal.y,
+		direct->points[0].id, (double)direct->points[0].separation, generic->pointCount,
+		(double)generic->normal.x, (double)generic->normal.y, generic->points[0].id,
+		(double)generic->points[0].separation);
+	bool identical = same && cd2VecEqual(direct->normal, generic->normal);
+	for (int i = 0; identical && i < direct->pointCount; ++i)
+	{
+		identical = cd2VecEqual(direct->points[i].point, generic->points[i].point) &&
+					direct->points[i].separation == generic->points[i].separation;
+	}
+	return identical;
+}
+
+/* The dedicated capsule and circle manifolds against the generic ones, on the same random
+ * segments and ghosts: capsules of every direction (now and then parallel to the segment, along
+ * its line, or of zero length) and circles (some of zero radius), placed as the polygons are.
+ * Every point lies midway between the surfaces. */
+static void TestDirectSegmentCapsuleCircle(void)
+{
+	TestRng rng = TestRngMake(0xCA95);
+	const double tolerance = CD_DOUBLE ? 1e-9 : 2e-4;
+	const cdReal speculative[3] = {CD_R(0.0), CD_R(0.02), CD_R(0.25)};
+	const int cases = 6000;
+	int capsuleContacts = 0, circleContacts = 0, capsuleExact = 0, circleExact = 0;
+	for (int trial = 0; trial < cases; ++trial)
+	{
+		cd2ChainSegment s;
+		cd2Polygon polygon;
+		RandomSegmentPolygon(&rng, &s, &polygon);
+		cdReal distance = speculative[TestRngInt(&rng, 3)];
+		cd2Vec center = polygon.centroid;
+		cd2Segment core = {s.p1, s.p2};
+		double segmentAngle = atan2((double)(s.p2.y - s.p1.y), (double)(s.p2.x - s.p1.x));
+
+		double half = TestRngRange(&rng, 0.05, 1.0);
+		int shape = TestRngInt(&rng, 5);
+		double angle = shape == 0	? segmentAngle
+					   : shape == 1 ? segmentAngle + 3.14159265358979
+									: TestRngRange(&rng, -3.2, 3.2);
+		cd2Capsule capsule = {V((double)center.x - half * cos(angle), (double)center.y - half * sin(angle)),
+							  V((double)center.x + half * cos(angle), (double)center.y + half * sin(angle)),
+							  TestRngInt(&rng, 4) == 0 ? CD_R(0.0) : (cdReal)TestRngRange(&rng, 0.0, 0.4)};
+		if (shape == 2)
+		{
+			capsule.p2 = capsule.p1; /* zero length: a circle */
+		}
+		else if (shape == 3)
+		{
+			/* Along the segment's line (collinear cores), within a hair of it, past either end. */
+			double t = TestRngRange(&rng, -1.0, 2.0),
+				   offset = TestRngInt(&rng, 2) == 0 ? 0.0 : TestRngRange(&rng, -1e-3, 1e-3);
+			cd2Vec d = cd2Sub(s.p2, s.p1);
+			cd2Vec normal = cd2RightPerp(cd2Normalize(d));
+			capsule.p1 = V((double)s.p1.x + t * (double)d.x + offset * (double)normal.x,
+						   (double)s.p1.y + t * (double)d.y + offset * (double)normal.y);
+			capsule.p2 = V((double)capsule.p1.x + half * cos(segmentAngle),
+						   (double)capsule.p1.y + half * sin(segmentAngle));
+		}
+		cd2Manifold direct = cd2CollideChainSegmentCapsuleDirect(&s, capsule, distance);
+		cd2Manifold generic = cd2CollideChainSegmentCapsule(&s, capsule, distance);
+		capsuleExact += SameAsGeneric(trial, "capsule", &direct, &generic, tolerance);
+		cd2Segment capsuleCore = {capsule.p1, capsule.p2};
+		for (int i = 0; i < direct.pointCount; ++i)
+		{
+			const cd2ManifoldPoint* p = &direct.points[i];
+			cd2Vec onA = cd2MulSub(p->point, CD_R(0.5) * p->separation, direct.normal);
+			cd2Vec onB = cd2MulAdd(p->point, CD_R(0.5) * p->separation, direct.normal);
+			double offA = (double)cd2VecDistance(onA, cd2ClosestPointOnSegment(core, onA));
+			double offB = (double)cd2VecDistance(onB, cd2ClosestPointOnSegment(capsuleCore, onB)) -
+						  (double)capsule.radius;
+			TEST_CHECKF(offA <= 10.0 * tolerance && fabs(offB) <= 10.0 * tolerance &&
+							p->separation <= distance,
+						"capsule trial %d point %d: %.3g off the segment, %.3g off the capsule", trial, i,
+						offA, offB);
+		}
+		capsuleContacts += direct.pointCount > 0;
+
+		cd2Circle circle = {center,
+							TestRngInt(&rng, 4) == 0 ? CD_R(0.0) : (cdReal)TestRngRange(&rng, 0.0, 0.8)};
+		direct = cd2CollideChainSegmentCircleDirect(&s, circle, distance);
+		generic = cd2CollideChainSegmentCircle(&s, circle, distance);
+		circleExact += SameAsGeneric(trial, "circle", &direct, &generic, tolerance);
+		for (int i = 0; i < direct.pointCount; ++i)
+		{
+			const cd2ManifoldPoint* p = &direct.points[i];
+			cd2Vec onA = cd2MulSub(p->point, CD_R(0.5) * p->separation, direct.normal);
+			cd2Vec onB = cd2MulAdd(p->point, CD_R(0.5) * p->separation, direct.normal);
+			double offA = (double)cd2VecDistance(onA, cd2ClosestPointOnSegment(core, onA));
+			double offB = (double)cd2VecDistance(onB, circle.center) - (double)circle.radius;
+			TEST_CHECKF(
+				offA <= 10.0 * tolerance && fabs(offB) <= 10.0 * tolerance && p->separation <= distance,
+				"circle trial %d point %d: %.3g off the segment, %.3g off the circle", trial, i, offA, offB);
+		}
+		circleContacts += direct.pointCount > 0;
+	}
+	printf("direct segment-capsule: %d of %d in contact, %d bit for bit; segment-circle: %d in contact, %d "
+		   "bit for "
+		   "bit\n",
+		   capsuleContacts, cases, capsuleExact, circleContacts, circleExact);
+	TEST_CHECK(capsuleContacts > cases / 8 && circleContacts > cases / 8);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1395,6 +1496,7 @@ int main(void)
 	TEST_RUN(TestRaycast);
 	TEST_RUN(TestCollideAgainstBruteForce);
 	TEST_RUN(TestDirectSegmentPolygon);
+	TEST_RUN(TestDirectSegmentCapsuleCircle);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

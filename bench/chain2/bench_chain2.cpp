@@ -353,6 +353,48 @@ int main(int argc, char** argv)
 								scene.b2boxTransforms[box]);
 		return manifold.pointCount;
 	};
+	// Circles and capsules on the same edges: the circle inscribed in each box, the capsule along
+	// its bottom half (Box2D 2.4 has circles, not capsules: the capsule row compares collide's
+	// dedicated routine with its generic path).
+	auto circleOf = [&](int k) {
+		const cd2Box& box = scene.boxes[(size_t)scene.pairBox[(size_t)k]].box;
+		cd2Circle circle = {box.center, CD_R(0.5)};
+		return circle;
+	};
+	auto capsuleOf = [&](int k) {
+		const cd2Box& box = scene.boxes[(size_t)scene.pairBox[(size_t)k]].box;
+		cd2Vec axis = cd2RotateVector(box.rotation, cd2MakeVec(CD_R(0.25), CD_R(0.0)));
+		cd2Capsule capsule = {cd2Sub(box.center, axis), cd2Add(box.center, axis), CD_R(0.5)};
+		return capsule;
+	};
+	auto collideCircleEdge = [&](int k) {
+		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		return cd2CollideChainSegmentCircleDirect(&segment, circleOf(k), speculative).pointCount;
+	};
+	auto box2dCircleEdge = [&](int k) {
+		b2EdgeShape edge;
+		scene.b2chain.GetChildEdge(&edge, scene.pairEdge[(size_t)k]);
+		b2CircleShape circle;
+		circle.m_radius = 0.5f;
+		b2Transform xf;
+		cd2Circle c = circleOf(k);
+		xf.Set(b2Vec2((float)c.center.x, (float)c.center.y), 0.0f);
+		b2Manifold manifold;
+		b2CollideEdgeAndCircle(&manifold, &edge, b2identity, &circle, xf);
+		return manifold.pointCount;
+	};
+	auto collideCircleEdgeGeneric = [&](int k) {
+		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		return cd2CollideChainSegmentCircle(&segment, circleOf(k), speculative).pointCount;
+	};
+	auto collideCapsuleEdge = [&](int k) {
+		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		return cd2CollideChainSegmentCapsuleDirect(&segment, capsuleOf(k), speculative).pointCount;
+	};
+	auto collideCapsuleEdgeGeneric = [&](int k) {
+		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		return cd2CollideChainSegmentCapsule(&segment, capsuleOf(k), speculative).pointCount;
+	};
 	auto collideRay = [&](int i) {
 		cd2RayHit hit;
 		return (int)cd2RaycastChain(scene.chain, identity, scene.rays[(size_t)i], &hit, nullptr);
@@ -398,7 +440,17 @@ int main(int argc, char** argv)
 		Compare(kBoxes, collideChain, box2dChain, runs, seconds));
 	// One manifold on the same child edge.
 	row("box vs one chain edge (same edges)", Compare(pairs, collideEdge, box2dEdge, runs, seconds));
-	row("  same, previous generic core-core path", Compare(pairs, collideEdgeGeneric, box2dEdge, runs, seconds));
+	row("  same, previous generic core-core path",
+		Compare(pairs, collideEdgeGeneric, box2dEdge, runs, seconds));
+	row("circle vs one chain edge (same edges)",
+		Compare(pairs, collideCircleEdge, box2dCircleEdge, runs, seconds));
+	row("  same, previous generic path",
+		Compare(pairs, collideCircleEdgeGeneric, box2dCircleEdge, runs, seconds));
+	{
+		Figures f = Compare(pairs, collideCapsuleEdge, collideCapsuleEdgeGeneric, runs, seconds);
+		std::printf("%-52s %10.1f %10.1f %8.2f  (second column: collide's previous generic path)\n",
+					"capsule vs one chain edge (same edges)", f.mine, f.theirs, f.mine / f.theirs);
+	}
 	// Ray casts: closest hit on the whole chain.
 	row("ray cast vs 10k-segment chain", Compare(kRays, collideRay, box2dRay, runs, seconds));
 

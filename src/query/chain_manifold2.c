@@ -22,16 +22,30 @@
 #define SEPARATED_SLOPS CD_R(0.1)
 #define FLIP_SLOPS CD_R(0.1)
 #define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
+#define VERTEX_FEATURE 0x100u
 #define CODE_VERTEX_VERTEX 4u
 #define CODE_EDGE_A 1u
 #define CODE_EDGE_B 2u
+
+/* The shape's core: a polygon's own arrays, or a capsule's segment as a two-sided core of two
+ * vertices with the normals n and -n (its radius rounds it either way). */
+typedef struct Core
+{
+	const cd2Vec* vertices;
+	const cd2Vec* normals;
+	int count;
+	cdReal radius;
+} Core;
 
 typedef struct Pair
 {
 	cd2Vec p1, p2;
 	cd2Vec n; /* the segment's front normal (unit); its back normal is -n */
-	const cd2Polygon* polygon;
+	const Core* polygon;
 	cdReal speculativeDistance;
+	/* The shape is a segment core (a capsule): two segments always take the closest-feature path
+	 * (collinear ones are apart along their common direction, which is neither one's normal). */
+	bool segments;
 } Pair;
 
 static cd2Manifold EmptyManifold(void)
@@ -65,7 +79,7 @@ static cdReal RoundingSlack(cd2Vec p, cd2Vec q, cd2Vec r)
 	return CD_R(8.0) * CD_REAL_EPSILON * magnitude;
 }
 
-static int NextVertex(const cd2Polygon* polygon, int i)
+static int NextVertex(const Core* polygon, int i)
 {
 	return i + 1 < polygon->count ? i + 1 : 0;
 }
@@ -197,7 +211,7 @@ ClipEdges(cd2Manifold* manifold, cd2Vec n, cd2Vec v1, cd2Vec v2, cdReal referenc
  * (p2 -> p1, normal -n); the polygon's edge facing it most is incident. */
 static void ClipOnSegment(cd2Manifold* manifold, const Pair* pair, int side, bool keepOutside)
 {
-	const cd2Polygon* polygon = pair->polygon;
+	const Core* polygon = pair->polygon;
 	cd2Vec n = side == 0 ? pair->n : cd2Neg(pair->n);
 	int incident = 0;
 	cdReal lowest = CD_REAL_MAX;
@@ -219,7 +233,7 @@ static void ClipOnSegment(cd2Manifold* manifold, const Pair* pair, int side, boo
 /* A polygon edge is the reference; the segment's side facing it is incident. */
 static void ClipOnPolygon(cd2Manifold* manifold, const Pair* pair, int edge, bool keepOutside)
 {
-	const cd2Polygon* polygon = pair->polygon;
+	const Core* polygon = pair->polygon;
 	cd2Vec n = polygon->normals[edge];
 	/* The back side (normal -n) faces n more exactly when the front one faces away from it. */
 	int incident = cd2Dot(n, pair->n) > CD_R(0.0) ? 1 : 0;
@@ -248,13 +262,13 @@ static int SegmentEndpoint(const Pair* pair, cd2Vec p)
 	return cd2VecEqual(p, pair->p1) ? 0 : cd2VecEqual(p, pair->p2) ? 1 : -1;
 }
 
-static int PolygonEndpoint(const cd2Polygon* polygon, int edge, cd2Vec p)
+static int PolygonEndpoint(const Core* polygon, int edge, cd2Vec p)
 {
 	int next = NextVertex(polygon, edge);
 	return EndpointIndex(polygon->vertices[edge], polygon->vertices[next], edge, next, p);
 }
 
-static cd2Segment PolygonEdge(const cd2Polygon* polygon, int edge)
+static cd2Segment PolygonEdge(const Core* polygon, int edge)
 {
 	cd2Segment segment = {polygon->vertices[edge], polygon->vertices[NextVertex(polygon, edge)]};
 	return segment;
@@ -299,7 +313,7 @@ static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
  * as the search over the edges in order did. */
 static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* edgeB)
 {
-	const cd2Polygon* polygon = pair->polygon;
+	const Core* polygon = pair->polygon;
 	cd2Vec d = cd2Sub(pair->p2, pair->p1);
 	cdReal lengthSquared = cd2Dot(d, d);
 	cd2ClosestPoints best = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_REAL_MAX};
@@ -370,7 +384,7 @@ static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* ed
 static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdReal separationB,
 									 int lowestVertex, int* edgeA, int* edgeB)
 {
-	const cd2Polygon* polygon = pair->polygon;
+	const Core* polygon = pair->polygon;
 	/* The cores are apart along an axis by clearly more than the round-off of the orientation
 	 * tests: the edge that gives it has the other core's edge wholly on one side of its line, so the
 	 * segment-segment test finds no crossing and its four candidates suffice. Those tests and the
@@ -389,11 +403,12 @@ static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdRea
 	}
 	if (separationA >= separationB)
 	{
-		if (*edgeA == 0)
+		if (*edgeA == 0 && clear)
 		{
-			return ClosestAbove(pair, lowestVertex, edgeB);
+			return ClosestAbove(pair, lowestVertex, edgeB); /* separationA > 0: clear above the line */
 		}
-		/* The polygon wholly behind the line (its centroid said in front: round-off): search. */
+		/* A capsule's core crossing or touching the segment, or a polygon wholly behind the line
+		 * (its centroid said in front: round-off): search every edge, crossings included. */
 		cd2Segment side = SegmentSide(pair, *edgeA);
 		cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, 0));
 		*edgeB = 0;
@@ -431,7 +446,7 @@ static void GapContact(cd2Manifold* manifold, const Pair* pair, cd2ClosestPoints
 	{
 		return;
 	}
-	const cd2Polygon* polygon = pair->polygon;
+	const Core* polygon = pair->polygon;
 	int vertexA = SegmentEndpoint(pair, closest.pointA);
 	int vertexB = PolygonEndpoint(polygon, edgeB, closest.pointB);
 	cd2Vec onB = cd2MulSub(closest.pointB, polygon->radius, u);
@@ -449,7 +464,7 @@ static void GapContact(cd2Manifold* manifold, const Pair* pair, cd2ClosestPoints
  * store-forwarding stalls. */
 static void CollideCores(const Pair* pair, cd2Manifold* out)
 {
-	const cd2Polygon* polygon = pair->polygon;
+	const Core* polygon = pair->polygon;
 	const cd2Vec* vertices = polygon->vertices;
 	const cd2Vec* normals = polygon->normals;
 	int count = polygon->count;
@@ -498,7 +513,7 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	int closestEdgeA = edgeA, closestEdgeB = edgeB;
 	bool haveClosest = false;
 	cdReal largest = cdMax(separationA, separationB);
-	if (largest > separatedTolerance)
+	if (pair->segments || largest > separatedTolerance)
 	{
 		closest = ClosestCores(pair, separationA, separationB, lowestVertex, &closestEdgeA, &closestEdgeB);
 		haveClosest = true;
@@ -567,7 +582,7 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 			ClipOnSegment(out, pair, edgeA, true);
 		}
 	}
-	bool apart = largest > CD_R(0.0);
+	bool apart = pair->segments || largest > CD_R(0.0);
 	if (!apart)
 	{
 		return;
@@ -624,8 +639,53 @@ static cd2Vec ConvexGhostDirection(cd2Vec first, cd2Vec second, bool ghostIsSeco
 	return convex ? u : zero;
 }
 
-static void CollideChainSegment(const cd2ChainSegment* a, const cd2Polygon* b, cdReal speculativeDistance,
-								cd2Manifold* manifold)
+/* The chain's check of the normal: the segment's own, or at a convex vertex one in the fan up to
+ * the neighbour's normal (past it, the neighbour reports the contact; *manifold is emptied). Returns
+ * whether the normal is allowed; when it is not, the caller replaces the contact by the one seen
+ * from the segment's face. */
+static bool AllowedNormal(const cd2ChainSegment* a, cd2Vec direction, cd2Manifold* manifold)
+{
+	cd2Vec n = cd2RightPerp(direction);
+	cd2Vec m = manifold->normal;
+	cdReal side = cd2Cross(n, m); /* > 0: tilted towards p2, < 0: towards p1 */
+	if (cd2Dot(m, n) < CD_R(0.0))
+	{
+		return false;
+	}
+	if (side > CD_R(0.0))
+	{
+		cd2Vec next = ConvexGhostDirection(direction, cd2Sub(a->ghost2, a->p2), true);
+		if (next.x == CD_R(0.0) && next.y == CD_R(0.0))
+		{
+			return false;
+		}
+		if (cd2Cross(m, cd2RightPerp(next)) >= CD_R(0.0))
+		{
+			return true;
+		}
+		*manifold = EmptyManifold();
+		return true;
+	}
+	if (side < CD_R(0.0))
+	{
+		cd2Vec previous = ConvexGhostDirection(cd2Sub(a->p1, a->ghost1), direction, false);
+		if (previous.x == CD_R(0.0) && previous.y == CD_R(0.0))
+		{
+			return false;
+		}
+		if (cd2Cross(cd2RightPerp(previous), m) >= CD_R(0.0))
+		{
+			return true;
+		}
+		*manifold = EmptyManifold();
+		return true;
+	}
+	return true;
+}
+
+/* The chain segment against a polygon or a capsule's segment core; `center` decides the side. */
+static void CollideChainSegment(const cd2ChainSegment* a, const Core* core, bool segments, cd2Vec center,
+								cdReal speculativeDistance, cd2Manifold* manifold)
 {
 	cd2Vec direction = cd2Normalize(cd2Sub(a->p2, a->p1));
 	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
@@ -637,83 +697,162 @@ static void CollideChainSegment(const cd2ChainSegment* a, const cd2Polygon* b, c
 	pair.p1 = a->p1;
 	pair.p2 = a->p2;
 	pair.n = cd2RightPerp(direction);
-	pair.polygon = b;
+	pair.polygon = core;
 	pair.speculativeDistance = speculativeDistance;
-	cd2Vec n = pair.n;
-	if (cd2Dot(n, cd2Sub(b->centroid, a->p1)) < CD_R(0.0))
+	pair.segments = segments;
+	if (cd2Dot(pair.n, cd2Sub(center, a->p1)) < CD_R(0.0))
 	{
 		*manifold = EmptyManifold();
 		return; /* behind the one-sided segment */
 	}
 	CollideCores(&pair, manifold);
-	if (manifold->pointCount == 0)
+	if (manifold->pointCount > 0 && !AllowedNormal(a, direction, manifold))
 	{
-		return;
+		/* Only the segment's own normal is allowed: the contact seen from its face, within its
+		 * extent. */
+		ClipOnSegment(manifold, &pair, 0, false);
 	}
+}
 
-	/* The normal must be one the chain allows here: the segment's own, or at a convex vertex one in
-	 * the fan up to the neighbour's normal (past it, the neighbour reports the contact). */
-	cd2Vec m = manifold->normal;
-	cdReal side = cd2Cross(n, m); /* > 0: tilted towards p2, < 0: towards p1 */
-	bool admissible;
-	if (cd2Dot(m, n) < CD_R(0.0))
-	{
-		admissible = false;
-	}
-	else if (side > CD_R(0.0))
-	{
-		cd2Vec next = ConvexGhostDirection(direction, cd2Sub(a->ghost2, a->p2), true);
-		bool convex = next.x != CD_R(0.0) || next.y != CD_R(0.0);
-		admissible = convex && cd2Cross(m, cd2RightPerp(next)) >= CD_R(0.0);
-		if (convex && !admissible)
-		{
-			*manifold = EmptyManifold();
-			return;
-		}
-	}
-	else if (side < CD_R(0.0))
-	{
-		cd2Vec previous = ConvexGhostDirection(cd2Sub(a->p1, a->ghost1), direction, false);
-		bool convex = previous.x != CD_R(0.0) || previous.y != CD_R(0.0);
-		admissible = convex && cd2Cross(cd2RightPerp(previous), m) >= CD_R(0.0);
-		if (convex && !admissible)
-		{
-			*manifold = EmptyManifold();
-			return;
-		}
-	}
-	else
-	{
-		admissible = true;
-	}
-	if (admissible)
+/* The chain segment against a point core (a circle, or a capsule of zero length) whose centre
+ * also decides the side (`center`: the capsule's midpoint). The generic path's point-core
+ * contact: the segment's normal over its extent, the end vertex's direction beyond it. */
+static void CollideChainSegmentPoint(const cd2ChainSegment* a, cd2Vec point, cdReal radius, cd2Vec center,
+									 cdReal speculativeDistance, cd2Manifold* manifold)
+{
+	*manifold = EmptyManifold();
+	cd2Vec edge = cd2Sub(a->p2, a->p1);
+	cd2Vec direction = cd2Normalize(edge);
+	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
 	{
 		return;
 	}
-	/* Only the segment's own normal is allowed: the contact seen from its face, within its extent. */
-	ClipOnSegment(manifold, &pair, 0, false);
+	cd2Vec n = cd2RightPerp(direction);
+	if (cd2Dot(n, cd2Sub(center, a->p1)) < CD_R(0.0))
+	{
+		return;
+	}
+	cdReal limit = radius + speculativeDistance;
+	/* The segment core's two edges: the front one (normal n from p1) and the back one (-n from p2);
+	 * the point's closest feature is on the one it stands farther outside of. */
+	cdReal frontSeparation = cd2Dot(n, cd2Sub(point, a->p1));
+	if (frontSeparation > limit)
+	{
+		return;
+	}
+	cd2Vec back = cd2LeftPerp(direction);
+	cdReal backSeparation = cd2Dot(back, cd2Sub(point, a->p2));
+	bool front = !(backSeparation > frontSeparation);
+	if (!front && backSeparation > limit)
+	{
+		return;
+	}
+	cd2Vec v1 = front ? a->p1 : a->p2, v2 = front ? a->p2 : a->p1;
+	cd2Vec normal = front ? n : back;
+	cdReal coreSeparation = front ? frontSeparation : backSeparation;
+	uint32_t id = front ? 0u : 1u;
+	/* Beyond an end along the normal's own tangent: that vertex's direction. */
+	cd2Vec tangent = cd2LeftPerp(normal);
+	cdReal along = cd2Dot(tangent, cd2Sub(point, v1));
+	int vertex = along <= CD_R(0.0)							? (front ? 0 : 1)
+				 : along >= cd2Dot(tangent, cd2Sub(v2, v1)) ? (front ? 1 : 0)
+															: -1;
+	if (vertex >= 0)
+	{
+		cdReal distance;
+		cd2Vec toPoint = cd2GetLengthAndNormalize(&distance, cd2Sub(point, vertex == 0 ? a->p1 : a->p2));
+		if (toPoint.x != CD_R(0.0) || toPoint.y != CD_R(0.0))
+		{
+			normal = toPoint;
+			coreSeparation = distance;
+			id = VERTEX_FEATURE | (uint32_t)vertex;
+		}
+	}
+	cdReal separation = coreSeparation - radius;
+	if (separation > speculativeDistance)
+	{
+		return;
+	}
+	manifold->normal = normal;
+	AddPoint(manifold, cd2MulAdd(point, CD_R(0.5) * (CD_R(0.0) - radius - coreSeparation), normal),
+			 separation, id);
+	if (AllowedNormal(a, direction, manifold))
+	{
+		return;
+	}
+	/* The face contact within the segment's extent. */
+	*manifold = EmptyManifold();
+	cdReal onEdge = cd2Dot(cd2Sub(point, a->p1), edge);
+	if (onEdge < CD_R(0.0) || onEdge > cd2Dot(edge, edge))
+	{
+		return;
+	}
+	coreSeparation = cd2Dot(n, cd2Sub(point, a->p1));
+	separation = coreSeparation - radius;
+	if (separation <= speculativeDistance)
+	{
+		manifold->normal = n;
+		AddPoint(manifold, cd2MulSub(point, CD_R(0.5) * (radius + coreSeparation), n), separation, 0u);
+	}
+}
+
+/* Copied field by field into a local whose address is never taken, so that it is built in the
+ * caller's return slot: a whole-struct copy of the scratch manifold loads 16 bytes at a time
+ * across the narrower stores just made into it, which the store buffer cannot forward (a stall of
+ * about a tenth of the polygon routine's time). */
+static cd2Manifold Returned(const cd2Manifold* scratch)
+{
+	cd2Manifold result;
+	result.normal.x = scratch->normal.x;
+	result.normal.y = scratch->normal.y;
+	for (int i = 0; i < 2; ++i)
+	{
+		result.points[i].point.x = scratch->points[i].point.x;
+		result.points[i].point.y = scratch->points[i].point.y;
+		result.points[i].separation = scratch->points[i].separation;
+		result.points[i].id = scratch->points[i].id;
+	}
+	result.pointCount = scratch->pointCount;
+	return result;
 }
 
 cd2Manifold cd2CollideChainSegmentPolygonDirect(const cd2ChainSegment* a, const cd2Polygon* b,
 												cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
+	CD_ASSERT(b->count >= 3 && b->count <= CD2_MAX_POLYGON_VERTICES);
+	Core core = {b->vertices, b->normals, b->count, b->radius};
 	cd2Manifold scratch;
-	CollideChainSegment(a, b, speculativeDistance, &scratch);
-	/* Copied field by field into a local whose address is never taken, so that it is built in the
-	 * caller's return slot: a whole-struct copy of the scratch loads 16 bytes at a time across
-	 * the narrower stores just made into it, which the store buffer cannot forward (a stall of
-	 * about a tenth of this function's time). */
-	cd2Manifold result;
-	result.normal.x = scratch.normal.x;
-	result.normal.y = scratch.normal.y;
-	for (int i = 0; i < 2; ++i)
+	CollideChainSegment(a, &core, false, b->centroid, speculativeDistance, &scratch);
+	return Returned(&scratch);
+}
+
+cd2Manifold cd2CollideChainSegmentCapsuleDirect(const cd2ChainSegment* a, cd2Capsule b,
+												cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL);
+	cd2Manifold scratch;
+	cd2Vec center = cd2Lerp(b.p1, b.p2, CD_R(0.5));
+	cd2Vec direction = cd2Normalize(cd2Sub(b.p2, b.p1));
+	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
 	{
-		result.points[i].point.x = scratch.points[i].point.x;
-		result.points[i].point.y = scratch.points[i].point.y;
-		result.points[i].separation = scratch.points[i].separation;
-		result.points[i].id = scratch.points[i].id;
+		CollideChainSegmentPoint(a, b.p1, b.radius, center, speculativeDistance, &scratch);
 	}
-	result.pointCount = scratch.pointCount;
-	return result;
+	else
+	{
+		cd2Vec vertices[2] = {b.p1, b.p2};
+		cd2Vec normals[2] = {cd2RightPerp(direction), cd2LeftPerp(direction)};
+		Core core = {vertices, normals, 2, b.radius};
+		CollideChainSegment(a, &core, true, center, speculativeDistance, &scratch);
+	}
+	return Returned(&scratch);
+}
+
+cd2Manifold cd2CollideChainSegmentCircleDirect(const cd2ChainSegment* a, cd2Circle b,
+											   cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL);
+	cd2Manifold scratch;
+	CollideChainSegmentPoint(a, b.center, b.radius, b.center, speculativeDistance, &scratch);
+	return Returned(&scratch);
 }

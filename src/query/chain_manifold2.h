@@ -1,5 +1,5 @@
-/* collide: the dedicated manifold of a one-sided chain segment against a polygon (internal, not
- * installed). */
+/* collide: the dedicated manifolds of a one-sided chain segment against a polygon, a capsule or a
+ * circle (internal, not installed). */
 #ifndef COLLIDE_CHAIN_MANIFOLD2_H
 #define COLLIDE_CHAIN_MANIFOLD2_H
 
@@ -17,6 +17,13 @@ extern "C" {
  * segment-segment search over every edge. cd2CollideChain uses it for polygons, boxes and AABBs. */
 cd2Manifold cd2CollideChainSegmentPolygonDirect(const cd2ChainSegment* a, const cd2Polygon* b,
 												cdReal speculativeDistance);
+
+/* The same for cd2CollideChainSegmentCapsule (the capsule's segment is a two-sided core of two
+ * vertices; a zero-length one is a point) and cd2CollideChainSegmentCircle. */
+cd2Manifold cd2CollideChainSegmentCapsuleDirect(const cd2ChainSegment* a, cd2Capsule b,
+												cdReal speculativeDistance);
+cd2Manifold cd2CollideChainSegmentCircleDirect(const cd2ChainSegment* a, cd2Circle b,
+											   cdReal speculativeDistance);
 
 #ifdef __cplusplus
 }

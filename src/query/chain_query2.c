@@ -479,10 +479,10 @@ static bool CollideSegment(int index, void* userContext)
 	switch (shape->kind)
 	{
 		case LOCAL_CIRCLE:
-			m = cd2CollideChainSegmentCircle(&segment, shape->circle, context->speculativeDistance);
+			m = cd2CollideChainSegmentCircleDirect(&segment, shape->circle, context->speculativeDistance);
 			break;
 		case LOCAL_CAPSULE:
-			m = cd2CollideChainSegmentCapsule(&segment, shape->capsule, context->speculativeDistance);
+			m = cd2CollideChainSegmentCapsuleDirect(&segment, shape->capsule, context->speculativeDistance);
 			break;
 		default:
 			m = cd2CollideChainSegmentPolygonDirect(&segment, &shape->polygon, context->speculativeDistance);
