@@ -639,48 +639,44 @@ static cd2Vec ConvexGhostDirection(cd2Vec first, cd2Vec second, bool ghostIsSeco
 	return convex ? u : zero;
 }
 
-/* The chain's check of the normal: the segment's own, or at a convex vertex one in the fan up to
- * the neighbour's normal (past it, the neighbour reports the contact; *manifold is emptied). Returns
- * whether the normal is allowed; when it is not, the caller replaces the contact by the one seen
- * from the segment's face. */
-static bool AllowedNormal(const cd2ChainSegment* a, cd2Vec direction, cd2Manifold* manifold)
+/* The chain's check of a contact normal m: the segment's own, or at a convex vertex one in the
+ * fan up to the neighbour's normal, is allowed; past the neighbour's normal at a convex vertex the
+ * contact is dropped (the neighbour reports it); anything else (tilted at a flat or concave vertex,
+ * or facing back) is replaced by the contact seen from the segment's face. */
+typedef enum NormalCheck
+{
+	NORMAL_ALLOWED,
+	NORMAL_DROPPED,
+	NORMAL_FACE
+} NormalCheck;
+
+static NormalCheck CheckNormal(const cd2ChainSegment* a, cd2Vec direction, cd2Vec m)
 {
 	cd2Vec n = cd2RightPerp(direction);
-	cd2Vec m = manifold->normal;
 	cdReal side = cd2Cross(n, m); /* > 0: tilted towards p2, < 0: towards p1 */
 	if (cd2Dot(m, n) < CD_R(0.0))
 	{
-		return false;
+		return NORMAL_FACE;
 	}
 	if (side > CD_R(0.0))
 	{
 		cd2Vec next = ConvexGhostDirection(direction, cd2Sub(a->ghost2, a->p2), true);
 		if (next.x == CD_R(0.0) && next.y == CD_R(0.0))
 		{
-			return false;
+			return NORMAL_FACE;
 		}
-		if (cd2Cross(m, cd2RightPerp(next)) >= CD_R(0.0))
-		{
-			return true;
-		}
-		*manifold = EmptyManifold();
-		return true;
+		return cd2Cross(m, cd2RightPerp(next)) >= CD_R(0.0) ? NORMAL_ALLOWED : NORMAL_DROPPED;
 	}
 	if (side < CD_R(0.0))
 	{
 		cd2Vec previous = ConvexGhostDirection(cd2Sub(a->p1, a->ghost1), direction, false);
 		if (previous.x == CD_R(0.0) && previous.y == CD_R(0.0))
 		{
-			return false;
+			return NORMAL_FACE;
 		}
-		if (cd2Cross(cd2RightPerp(previous), m) >= CD_R(0.0))
-		{
-			return true;
-		}
-		*manifold = EmptyManifold();
-		return true;
+		return cd2Cross(cd2RightPerp(previous), m) >= CD_R(0.0) ? NORMAL_ALLOWED : NORMAL_DROPPED;
 	}
-	return true;
+	return NORMAL_ALLOWED;
 }
 
 /* The chain segment against a polygon or a capsule's segment core; `center` decides the side. */
@@ -706,7 +702,16 @@ static void CollideChainSegment(const cd2ChainSegment* a, const Core* core, bool
 		return; /* behind the one-sided segment */
 	}
 	CollideCores(&pair, manifold);
-	if (manifold->pointCount > 0 && !AllowedNormal(a, direction, manifold))
+	if (manifold->pointCount == 0)
+	{
+		return;
+	}
+	NormalCheck check = CheckNormal(a, direction, manifold->normal);
+	if (check == NORMAL_DROPPED)
+	{
+		*manifold = EmptyManifold();
+	}
+	else if (check == NORMAL_FACE)
 	{
 		/* Only the segment's own normal is allowed: the contact seen from its face, within its
 		 * extent. */
@@ -714,23 +719,29 @@ static void CollideChainSegment(const cd2ChainSegment* a, const Core* core, bool
 	}
 }
 
+static cd2Manifold OnePoint(cd2Vec normal, cd2Vec point, cdReal separation, uint32_t id)
+{
+	cd2Manifold manifold = {normal, {{point, separation, id}, {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u}}, 1};
+	return manifold;
+}
+
 /* The chain segment against a point core (a circle, or a capsule of zero length) whose centre
  * also decides the side (`center`: the capsule's midpoint). The generic path's point-core
- * contact: the segment's normal over its extent, the end vertex's direction beyond it. */
-static void CollideChainSegmentPoint(const cd2ChainSegment* a, cd2Vec point, cdReal radius, cd2Vec center,
-									 cdReal speculativeDistance, cd2Manifold* manifold)
+ * contact: the segment's normal over its extent, the end vertex's direction beyond it. Returned
+ * by value, built in the return slot (no scratch manifold to copy). */
+static cd2Manifold CollideChainSegmentPoint(const cd2ChainSegment* a, cd2Vec point, cdReal radius,
+											cd2Vec center, cdReal speculativeDistance)
 {
-	*manifold = EmptyManifold();
 	cd2Vec edge = cd2Sub(a->p2, a->p1);
 	cd2Vec direction = cd2Normalize(edge);
 	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
 	{
-		return;
+		return EmptyManifold();
 	}
 	cd2Vec n = cd2RightPerp(direction);
 	if (cd2Dot(n, cd2Sub(center, a->p1)) < CD_R(0.0))
 	{
-		return;
+		return EmptyManifold();
 	}
 	cdReal limit = radius + speculativeDistance;
 	/* The segment core's two edges: the front one (normal n from p1) and the back one (-n from p2);
@@ -738,14 +749,14 @@ static void CollideChainSegmentPoint(const cd2ChainSegment* a, cd2Vec point, cdR
 	cdReal frontSeparation = cd2Dot(n, cd2Sub(point, a->p1));
 	if (frontSeparation > limit)
 	{
-		return;
+		return EmptyManifold();
 	}
 	cd2Vec back = cd2LeftPerp(direction);
 	cdReal backSeparation = cd2Dot(back, cd2Sub(point, a->p2));
 	bool front = !(backSeparation > frontSeparation);
 	if (!front && backSeparation > limit)
 	{
-		return;
+		return EmptyManifold();
 	}
 	cd2Vec v1 = front ? a->p1 : a->p2, v2 = front ? a->p2 : a->p1;
 	cd2Vec normal = front ? n : back;
@@ -771,29 +782,31 @@ static void CollideChainSegmentPoint(const cd2ChainSegment* a, cd2Vec point, cdR
 	cdReal separation = coreSeparation - radius;
 	if (separation > speculativeDistance)
 	{
-		return;
+		return EmptyManifold();
 	}
-	manifold->normal = normal;
-	AddPoint(manifold, cd2MulAdd(point, CD_R(0.5) * (CD_R(0.0) - radius - coreSeparation), normal),
-			 separation, id);
-	if (AllowedNormal(a, direction, manifold))
+	NormalCheck check = CheckNormal(a, direction, normal);
+	if (check == NORMAL_ALLOWED)
 	{
-		return;
+		return OnePoint(normal, cd2MulAdd(point, CD_R(0.5) * (CD_R(0.0) - radius - coreSeparation), normal),
+						separation, id);
+	}
+	if (check == NORMAL_DROPPED)
+	{
+		return EmptyManifold();
 	}
 	/* The face contact within the segment's extent. */
-	*manifold = EmptyManifold();
 	cdReal onEdge = cd2Dot(cd2Sub(point, a->p1), edge);
 	if (onEdge < CD_R(0.0) || onEdge > cd2Dot(edge, edge))
 	{
-		return;
+		return EmptyManifold();
 	}
 	coreSeparation = cd2Dot(n, cd2Sub(point, a->p1));
 	separation = coreSeparation - radius;
-	if (separation <= speculativeDistance)
+	if (separation > speculativeDistance)
 	{
-		manifold->normal = n;
-		AddPoint(manifold, cd2MulSub(point, CD_R(0.5) * (radius + coreSeparation), n), separation, 0u);
+		return EmptyManifold();
 	}
+	return OnePoint(n, cd2MulSub(point, CD_R(0.5) * (radius + coreSeparation), n), separation, 0u);
 }
 
 /* Copied field by field into a local whose address is never taken, so that it is built in the
@@ -831,20 +844,17 @@ cd2Manifold cd2CollideChainSegmentCapsuleDirect(const cd2ChainSegment* a, cd2Cap
 												cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL);
-	cd2Manifold scratch;
 	cd2Vec center = cd2Lerp(b.p1, b.p2, CD_R(0.5));
 	cd2Vec direction = cd2Normalize(cd2Sub(b.p2, b.p1));
 	if (direction.x == CD_R(0.0) && direction.y == CD_R(0.0))
 	{
-		CollideChainSegmentPoint(a, b.p1, b.radius, center, speculativeDistance, &scratch);
+		return CollideChainSegmentPoint(a, b.p1, b.radius, center, speculativeDistance);
 	}
-	else
-	{
-		cd2Vec vertices[2] = {b.p1, b.p2};
-		cd2Vec normals[2] = {cd2RightPerp(direction), cd2LeftPerp(direction)};
-		Core core = {vertices, normals, 2, b.radius};
-		CollideChainSegment(a, &core, true, center, speculativeDistance, &scratch);
-	}
+	cd2Vec vertices[2] = {b.p1, b.p2};
+	cd2Vec normals[2] = {cd2RightPerp(direction), cd2LeftPerp(direction)};
+	Core core = {vertices, normals, 2, b.radius};
+	cd2Manifold scratch;
+	CollideChainSegment(a, &core, true, center, speculativeDistance, &scratch);
 	return Returned(&scratch);
 }
 
@@ -852,7 +862,5 @@ cd2Manifold cd2CollideChainSegmentCircleDirect(const cd2ChainSegment* a, cd2Circ
 											   cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL);
-	cd2Manifold scratch;
-	CollideChainSegmentPoint(a, b.center, b.radius, b.center, speculativeDistance, &scratch);
-	return Returned(&scratch);
+	return CollideChainSegmentPoint(a, b.center, b.radius, b.center, speculativeDistance);
 }

@@ -463,7 +463,9 @@ static bool ClearlyAbove(const LocalShape* shape, cd2Vec p1, cd2Vec p2, cdReal s
 	cdReal scale = cdMax(cdMax(cdAbs(p1.x), cdAbs(p1.y)), cdMax(cdAbs(vertices[0].x), cdAbs(vertices[0].y)));
 	cdReal margin =
 		speculativeDistance + radius + CD_R(0.1) * CD_LINEAR_SLOP + CD_R(64.0) * CD_REAL_EPSILON * scale;
-	return lowest > margin * cd2Length(e);
+	/* Squared, without the square root of |e| (lowest > 0 first; an overflow to infinity still
+	 * compares right: only a shape far above the line overflows). */
+	return lowest > CD_R(0.0) && lowest * lowest > margin * margin * cd2Dot(e, e);
 }
 
 static bool CollideSegment(int index, void* userContext)
