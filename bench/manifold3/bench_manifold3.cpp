@@ -1,5 +1,5 @@
 // collide_bench_manifold3: ns per call of 3D convex pair queries (distance, overlap, depth,
-// manifold) on box-box and hull(32)-hull(32) pairs, with the peers that do the same job, on the
+// manifold) on box-box, hull(32)-hull(32) and box-triangle pairs, with the peers that do the same job, on the
 // same pairs in the same run: Bullet (btGjkEpaSolver2 for distance/overlap/depth,
 // btBoxBoxDetector = ODE's box-box SAT and clipping, btGjkPairDetector + btGjkEpaPenetrationDepthSolver
 // for the hull manifold), libccd (ccdGJKIntersect, ccdMPRIntersect, ccdGJKPenetration,
@@ -10,8 +10,10 @@
 // overlapping pairs (depth 0.005 to 0.05) and kPairs separated pairs (gap 0.005 to 0.05):
 // distance runs on the separated ones, depth and manifold on the overlapping ones, overlap on
 // all. Half the box pairs rest face on face (a stack), half are at random; hulls have 32 vertices
-// on random ellipsoids. collide has no depth-only query: its depth row is the manifold call (the
-// depth is the manifold's smallest separation), so depth and manifold rows time the same call.
+// on random ellipsoids; half the boxes on triangles (terrain pieces about the box's size) rest a
+// face on the triangle, half are at random. Bullet's box-triangle manifold is its GJK-EPA pair
+// detector on a btTriangleShape, as for hulls. collide has no depth-only query: its depth row is the manifold
+// call (the depth is the manifold's smallest separation), so depth and manifold rows time the same call.
 //
 // Answers are checked against an exact reference computed here in double: the separating axis
 // test over every face normal and every edge pair (a superset of the critical axes, so its
@@ -25,6 +27,7 @@
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
@@ -35,6 +38,7 @@
 #ifdef COLLIDE_BENCH_HAVE_FCL
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/convex.h>
+#include <fcl/geometry/shape/triangle_p.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 #endif
@@ -182,6 +186,23 @@ RefPolytope RefHull(cd3HullShape s)
 	return p;
 }
 
+RefPolytope RefTriangle(cd3Triangle t)
+{
+	RefPolytope p;
+	for (cd3Vec v : {t.a, t.b, t.c})
+	{
+		p.vertices.push_back({(double)v.x, (double)v.y, (double)v.z});
+	}
+	p.normals.push_back(Cross(Sub(p.vertices[1], p.vertices[0]), Sub(p.vertices[2], p.vertices[0])));
+	double l = std::sqrt(Dot(p.normals[0], p.normals[0]));
+	p.normals[0] = {p.normals[0].x / l, p.normals[0].y / l, p.normals[0].z / l};
+	for (int e = 0; e < 3; ++e)
+	{
+		p.edges.push_back(Sub(p.vertices[(size_t)(e + 1) % 3], p.vertices[(size_t)e]));
+	}
+	return p;
+}
+
 double AxisSeparation(const RefPolytope& a, const RefPolytope& b, D3 n)
 {
 	double loA = INFINITY, hiA = -INFINITY, loB = INFINITY, hiB = -INFINITY;
@@ -298,9 +319,11 @@ struct CountResult : btDiscreteCollisionDetectorInterface::Result
 // vertices (hull) or picks the corner by signs (box), in the shape's frame, like collide's.
 struct CcdObject
 {
-	const cd3Hull* hull; // NULL: a box
+	const cd3Hull* hull; // NULL: a box, or a triangle when isTriangle
 	cd3Vec halfExtents;
 	cd3Transform transform;
+	bool isTriangle;
+	cd3Vec corners[3]; // the triangle's, in its frame
 };
 
 void CcdSupport(const void* object, const ccd_vec3_t* dir, ccd_vec3_t* out)
@@ -309,7 +332,16 @@ void CcdSupport(const void* object, const ccd_vec3_t* dir, ccd_vec3_t* out)
 	cd3Vec d = cd3InvRotateVector(o->transform.q,
 								  cd3MakeVec((cdReal)dir->v[0], (cdReal)dir->v[1], (cdReal)dir->v[2]));
 	cd3Vec local;
-	if (o->hull == nullptr)
+	if (o->isTriangle)
+	{
+		int best = 0;
+		for (int i = 1; i < 3; ++i)
+		{
+			best = cd3Dot(d, o->corners[i]) > cd3Dot(d, o->corners[best]) ? i : best;
+		}
+		local = o->corners[best];
+	}
+	else if (o->hull == nullptr)
 	{
 		cd3Vec h = o->halfExtents;
 		local = cd3MakeVec(d.x >= 0 ? h.x : -h.x, d.y >= 0 ? h.y : -h.y, d.z >= 0 ? h.z : -h.z);
@@ -336,7 +368,12 @@ void CcdSupport(const void* object, const ccd_vec3_t* dir, ccd_vec3_t* out)
 void CcdCenter(const void* object, ccd_vec3_t* out)
 {
 	const CcdObject* o = (const CcdObject*)object;
-	cd3Vec c = o->hull == nullptr ? o->transform.p : cd3TransformPoint(o->transform, o->hull->centroid);
+	cd3Vec c = o->isTriangle
+				   ? cd3TransformPoint(o->transform,
+									   cd3Scale(CD_R(1.0) / CD_R(3.0),
+												cd3Add(o->corners[0], cd3Add(o->corners[1], o->corners[2]))))
+			   : o->hull == nullptr ? o->transform.p
+									: cd3TransformPoint(o->transform, o->hull->centroid);
 	ccdVec3Set(out, c.x, c.y, c.z);
 }
 #endif
@@ -375,10 +412,12 @@ std::shared_ptr<fcl::CollisionGeometryd> FclHull(const cd3Hull* h)
 }
 #endif
 
-// One pair kind (box-box or hull-hull): the shapes in every library's form.
+// One pair kind (box-box, hull-hull or box-triangle): the shapes in every library's form.
 struct PairSet
 {
 	std::string name;
+	std::string collideManifold;   // the function the manifold row times
+	bool boxBoxPeer = false;	   // Bullet's manifold: btBoxBoxDetector, else its GJK-EPA pair detector
 	std::vector<cd3Shape> a, b;	   // 2 kPairs: even overlapping, odd separated
 	std::vector<double> reference; // exact signed separation (SAT), as above
 	std::vector<const btConvexShape*> btA, btB;
@@ -394,6 +433,10 @@ struct PairSet
 
 cd3Manifold CollideShapes(const cd3Shape& a, const cd3Shape& b, cdReal speculative)
 {
+	if (a.type == CD3_SHAPE_BOX && b.type == CD3_SHAPE_TRIANGLE)
+	{
+		return cd3CollideBoxTriangle(a.box, b.triangle, speculative);
+	}
 	if (a.type == CD3_SHAPE_BOX)
 	{
 		return cd3CollideBoxBox(a.box, b.box, speculative);
@@ -436,6 +479,8 @@ int main(int argc, char** argv)
 	// ---- box-box ----
 	PairSet boxes;
 	boxes.name = "box-box";
+	boxes.collideManifold = "cd3CollideBoxBox";
+	boxes.boxBoxPeer = true;
 	std::vector<std::unique_ptr<btBoxShape>> btBoxes;
 	for (int i = 0; i < n; ++i)
 	{
@@ -467,8 +512,8 @@ int main(int argc, char** argv)
 		boxes.xa.push_back(ToBullet({a.center, a.rotation}));
 		boxes.xb.push_back(ToBullet({b.center, b.rotation}));
 #ifdef COLLIDE_BENCH_HAVE_CCD
-		boxes.ccdA.push_back({nullptr, a.halfExtents, {a.center, a.rotation}});
-		boxes.ccdB.push_back({nullptr, b.halfExtents, {b.center, b.rotation}});
+		boxes.ccdA.push_back({nullptr, a.halfExtents, {a.center, a.rotation}, false, {}});
+		boxes.ccdB.push_back({nullptr, b.halfExtents, {b.center, b.rotation}, false, {}});
 #endif
 #ifdef COLLIDE_BENCH_HAVE_FCL
 		boxes.fclA.push_back(
@@ -520,6 +565,7 @@ int main(int argc, char** argv)
 	}
 	PairSet hullPairs;
 	hullPairs.name = "hull(32)-hull(32)";
+	hullPairs.collideManifold = "cd3CollideHullHull";
 	for (int i = 0; i < n; ++i)
 	{
 		int ia = (int)(rng() % kHulls), ib = (int)(rng() % kHulls);
@@ -535,14 +581,79 @@ int main(int argc, char** argv)
 		hullPairs.xa.push_back(ToBullet(a.transform));
 		hullPairs.xb.push_back(ToBullet(b.transform));
 #ifdef COLLIDE_BENCH_HAVE_CCD
-		hullPairs.ccdA.push_back({a.hull, cd3MakeVec(0, 0, 0), a.transform});
-		hullPairs.ccdB.push_back({b.hull, cd3MakeVec(0, 0, 0), b.transform});
+		hullPairs.ccdA.push_back({a.hull, cd3MakeVec(0, 0, 0), a.transform, false, {}});
+		hullPairs.ccdB.push_back({b.hull, cd3MakeVec(0, 0, 0), b.transform, false, {}});
 #endif
 #ifdef COLLIDE_BENCH_HAVE_FCL
 		hullPairs.fclA.push_back(fclHulls[(size_t)ia]);
 		hullPairs.fclB.push_back(fclHulls[(size_t)ib]);
 		hullPairs.fxa.push_back(ToFcl(a.transform));
 		hullPairs.fxb.push_back(ToFcl(b.transform));
+#endif
+	}
+
+	// ---- box-triangle: a box on a piece of terrain ----
+	PairSet boxTriangles;
+	boxTriangles.name = "box-triangle";
+	boxTriangles.collideManifold = "cd3CollideBoxTriangle";
+	boxTriangles.fclPairs = false;
+	std::vector<std::unique_ptr<btTriangleShape>> btTriangles;
+	for (int i = 0; i < n; ++i)
+	{
+		cd3Box a;
+		a.halfExtents = cd3MakeVec((cdReal)(0.3 + 0.4 * u(rng)), (cdReal)(0.3 + 0.4 * u(rng)),
+								   (cdReal)(0.3 + 0.4 * u(rng)));
+		a.center = cd3MakeVec(0, 0, 0);
+		a.rotation = RandomRotation(rng);
+		// A triangle of about the box's size under it: its plane through a point 1.5 below the box
+		// centre, facing up (along the box's y axis when resting, at random otherwise).
+		bool resting = (i / 2) % 2 == 0;
+		cd3Vec up = resting ? cd3RotateVector(a.rotation, cd3MakeVec(0, 1, 0)) : RandomUnit(rng);
+		cd3Vec side = cd3Normalize(cd3Cross(up, RandomUnit(rng)));
+		cd3Vec other = cd3Cross(up, side);
+		cd3Vec base = cd3Scale(CD_R(-1.5), up);
+		cd3Triangle b;
+		cd3Vec corners[3];
+		for (int k = 0; k < 3; ++k)
+		{
+			double angle = 2.0943951023931957 * k + 0.4 * (u(rng) - 0.5);
+			double radius = 0.8 + 0.8 * u(rng);
+			corners[k] = cd3Add(base, cd3Add(cd3Scale((cdReal)(radius * std::cos(angle)), side),
+											 cd3Scale((cdReal)(radius * std::sin(angle)), other)));
+		}
+		b = {corners[0], corners[1], corners[2]};
+		PlaceAtSeparation([&](cdReal sp) { return cd3CollideBoxTriangle(a, b, sp); },
+						  [&](cd3Vec d) {
+							  b.a = cd3Add(b.a, d);
+							  b.b = cd3Add(b.b, d);
+							  b.c = cd3Add(b.c, d);
+						  },
+						  signedGap(i));
+		boxTriangles.a.push_back(cd3MakeBoxShape(a));
+		boxTriangles.b.push_back(cd3MakeTriangleShape(b));
+		boxTriangles.reference.push_back(ReferenceSeparation(RefBox(a), RefTriangle(b)));
+		btBoxes.emplace_back(new btBoxShape(
+			btVector3((btScalar)a.halfExtents.x, (btScalar)a.halfExtents.y, (btScalar)a.halfExtents.z)));
+		btBoxes.back()->setMargin(0);
+		auto toBt = [](cd3Vec v) { return btVector3((btScalar)v.x, (btScalar)v.y, (btScalar)v.z); };
+		btTriangles.emplace_back(new btTriangleShape(toBt(b.a), toBt(b.b), toBt(b.c)));
+		btTriangles.back()->setMargin(0);
+		boxTriangles.btA.push_back(btBoxes.back().get());
+		boxTriangles.btB.push_back(btTriangles.back().get());
+		boxTriangles.xa.push_back(ToBullet({a.center, a.rotation}));
+		boxTriangles.xb.push_back(ToBullet(CD3_TRANSFORM_IDENTITY));
+#ifdef COLLIDE_BENCH_HAVE_CCD
+		boxTriangles.ccdA.push_back({nullptr, a.halfExtents, {a.center, a.rotation}, false, {}});
+		boxTriangles.ccdB.push_back(
+			{nullptr, cd3MakeVec(0, 0, 0), CD3_TRANSFORM_IDENTITY, true, {b.a, b.b, b.c}});
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+		boxTriangles.fclA.push_back(
+			std::make_shared<fcl::Boxd>(2.0 * a.halfExtents.x, 2.0 * a.halfExtents.y, 2.0 * a.halfExtents.z));
+		auto toFcl = [](cd3Vec v) { return Eigen::Vector3d((double)v.x, (double)v.y, (double)v.z); };
+		boxTriangles.fclB.push_back(std::make_shared<fcl::TrianglePd>(toFcl(b.a), toFcl(b.b), toFcl(b.c)));
+		boxTriangles.fxa.push_back(ToFcl({a.center, a.rotation}));
+		boxTriangles.fxb.push_back(ToFcl(CD3_TRANSFORM_IDENTITY));
 #endif
 	}
 
@@ -578,10 +689,9 @@ int main(int argc, char** argv)
 	};
 	std::vector<Row> rows;
 
-	for (PairSet* set : {&boxes, &hullPairs})
+	for (PairSet* set : {&boxes, &hullPairs, &boxTriangles})
 	{
 		PairSet& s = *set;
-		bool isBox = set == &boxes;
 		// Checks first (untimed): overlap counts, distances and depths against the reference.
 		int refOverlaps = 0;
 		for (int i = 0; i < n; ++i)
@@ -601,7 +711,11 @@ int main(int argc, char** argv)
 		Row manifold;
 		manifold.pair = s.name;
 		manifold.query = "manifold";
-		auto set_ = [](Row& row, int column, std::function<int()> body, int calls, std::string note) {
+		auto set_ = [&s](Row& row, int column, std::function<int()> body, int calls, std::string note) {
+			if (column == FCL && !s.fclPairs)
+			{
+				return;
+			}
 			row.cells[column] = {body, calls, 0.0};
 			row.present[column] = true;
 			row.notes[column] = note;
@@ -769,8 +883,7 @@ int main(int argc, char** argv)
 			};
 			set_(depth, COLLIDE, collideManifold, kPairs, "the manifold call; depth error " + cs.Text());
 			set_(manifold, COLLIDE, collideManifold, kPairs,
-				 std::string(isBox ? "cd3CollideBoxBox" : "cd3CollideHullHull") + "; depth error " +
-					 cs.Text());
+				 s.collideManifold + "; depth error " + cs.Text());
 
 			Stats bt;
 			for (int i = 0; i < n; i += 2)
@@ -802,7 +915,7 @@ int main(int argc, char** argv)
 
 			Stats bm;
 			std::function<int(int, double*)> bulletManifold;
-			if (isBox)
+			if (s.boxBoxPeer)
 			{
 				bulletManifold = [&s](int i, double* d) {
 					btBoxBoxDetector detector((btBoxShape*)s.btA[(size_t)i], (btBoxShape*)s.btB[(size_t)i]);
@@ -853,8 +966,8 @@ int main(int argc, char** argv)
 					return k;
 				},
 				kPairs,
-				std::string(isBox ? "btBoxBoxDetector"
-								  : "btGjkPairDetector + btGjkEpaPenetrationDepthSolver") +
+				std::string(s.boxBoxPeer ? "btBoxBoxDetector"
+										 : "btGjkPairDetector + btGjkEpaPenetrationDepthSolver") +
 					"; depth error " + bm.Text());
 #ifdef COLLIDE_BENCH_HAVE_CCD
 			for (int column : {CCD_GJK, CCD_MPR})
@@ -1015,6 +1128,7 @@ int main(int argc, char** argv)
 	const Row& boxManifold = rows[3];
 	const Row& hullDepth = rows[6];
 	const Row& hullManifold = rows[7];
+	const Row& boxTriangleManifold = rows[11];
 	std::printf(
 		"\ntargets: box-box manifold collide / btBoxBoxDetector %.2f (<= 1); hull-hull manifold collide / "
 		"Bullet GJK-EPA %.2f (<= 0.5)",
@@ -1025,7 +1139,8 @@ int main(int argc, char** argv)
 		std::printf("; collide / ccdMPRPenetration %.2f (<= 1)",
 					hullManifold.cells[COLLIDE].ns / hullDepth.cells[CCD_MPR].ns);
 	}
-	std::printf("\n");
+	std::printf("; box-triangle manifold collide / Bullet GJK-EPA %.2f\n",
+				boxTriangleManifold.cells[COLLIDE].ns / boxTriangleManifold.cells[BULLET].ns);
 	for (cd3Hull* h : hulls)
 	{
 		cd3DestroyHull(h);
