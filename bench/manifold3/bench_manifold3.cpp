@@ -418,6 +418,7 @@ struct PairSet
 	std::string name;
 	std::string collideManifold;   // the function the manifold row times
 	bool boxBoxPeer = false;	   // Bullet's manifold: btBoxBoxDetector, else its GJK-EPA pair detector
+	bool fclPairs = true;		   // false: FCL has no such pair (its box-triangle answers no contact)
 	std::vector<cd3Shape> a, b;	   // 2 kPairs: even overlapping, odd separated
 	std::vector<double> reference; // exact signed separation (SAT), as above
 	std::vector<const btConvexShape*> btA, btB;
