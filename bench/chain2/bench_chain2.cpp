@@ -14,7 +14,7 @@
 // The edge rows time cd2CollideChainSegmentPolygonDirect (the dedicated routine cd2CollideChain
 // runs) and, for comparison, the public cd2CollideChainSegmentPolygon (manifold2.c's generic path).
 // Usage: collide_bench_chain2 [--quick | --profile <chain|edge|ray>-<collide|box2d> | --profile
-// edge-generic | --profile none]
+// edge-generic | --profile circle-<collide|box2d> | --profile capsule-collide | --profile none]
 #include <box2d/box2d.h>
 
 #include "collide/chain2.h"
@@ -420,6 +420,12 @@ int main(int argc, char** argv)
 			ns = TimeOnce(pairs, collideEdge, reps);
 		else if (which == "edge-generic")
 			ns = TimeOnce(pairs, collideEdgeGeneric, reps);
+		else if (which == "circle-collide")
+			ns = TimeOnce(pairs, collideCircleEdge, reps);
+		else if (which == "circle-box2d")
+			ns = TimeOnce(pairs, box2dCircleEdge, reps);
+		else if (which == "capsule-collide")
+			ns = TimeOnce(pairs, collideCapsuleEdge, reps);
 		else if (which == "edge-box2d")
 			ns = TimeOnce(pairs, box2dEdge, reps);
 		else if (which == "ray-collide")
