@@ -842,6 +842,34 @@ static void TestRaycast(void)
 	cd2DestroyChain(chain);
 }
 
+/* A ray along a segment's line, far short of it, under a rotation a hair off 90 degrees: the
+ * crossing test's two cross products are both round-off there (fuzz_chain2 found a hit at the
+ * ray's origin, 1.4e9 from the segment). Any hit must lie on its segment. */
+static void TestRayAlongSegmentLine(void)
+{
+	cd2Vec a = V(-1e9, -1e9), b = V(1e9, 1e9), c = V(1e9, -1e9);
+	cd2Vec points[6] = {a, b, a, b, c, a};
+	cd2Chain* chain = MakeChain(points, 6, false);
+	if (chain == NULL)
+	{
+		return;
+	}
+	cd2Transform frame = {V(1e9, -1e9), {(cdReal)7.64355548e-08, CD_R(-1.0)}};
+	cd2Ray ray = {V(-1e9, 1e9), V(1e9, -1e9)};
+	cd2RayHit hit = {CD_R(-1.0), V(0, 0), V(0, 0)};
+	int index = -1;
+	if (cd2RaycastChain(chain, frame, ray, &hit, &index))
+	{
+		cd2ChainSegment s = cd2GetChainSegment(chain, index);
+		cd2Segment world = {cd2TransformPoint(frame, s.p1), cd2TransformPoint(frame, s.p2)};
+		cd2Vec onSegment = cd2ClosestPointOnSegment(world, hit.point);
+		double off = hypot((double)(onSegment.x - hit.point.x), (double)(onSegment.y - hit.point.y));
+		TEST_CHECKF(off <= 1e-3 * 1e9, "hit segment %d at fraction %g, %g off it", index,
+					(double)hit.fraction, off);
+	}
+	cd2DestroyChain(chain);
+}
+
 /* cd2CollideChain against every segment's own manifold. */
 static void TestCollideAgainstBruteForce(void)
 {
@@ -1494,6 +1522,7 @@ int main(void)
 	TEST_RUN(TestLoops);
 	TEST_RUN(TestQueryAabb);
 	TEST_RUN(TestRaycast);
+	TEST_RUN(TestRayAlongSegmentLine);
 	TEST_RUN(TestCollideAgainstBruteForce);
 	TEST_RUN(TestDirectSegmentPolygon);
 	TEST_RUN(TestDirectSegmentCapsuleCircle);

@@ -150,7 +150,21 @@ static bool RaycastSegment(cd2Vec p1, cd2Vec p2, cd2Vec origin, cd2Vec d, cdReal
 	{
 		return false;
 	}
-	*fraction = cdMin(along / denominator, maxFraction);
+	cdReal t = cdMin(along / denominator, maxFraction);
+	/* For a ray almost along the segment's line, across and denominator are both round-off and
+	 * their ratio says nothing (fuzz_chain2: a ray along a segment's line, 1e9 short of it, hit at
+	 * fraction 0); so the hit point itself must lie over the segment, within its round-off. */
+	cd2Vec hit = cd2MulAdd(r, t, d); /* relative to p1 */
+	cdReal position = cd2Dot(hit, e);
+	cdReal lengthSquared = cd2Dot(e, e);
+	cdReal slack = CD_R(8.0) * CD_REAL_EPSILON *
+				   (cdAbs(r.x) + cdAbs(r.y) + cdAbs(d.x) + cdAbs(d.y) + cdAbs(e.x) + cdAbs(e.y)) *
+				   (cdAbs(e.x) + cdAbs(e.y));
+	if (position < -slack || position > lengthSquared + slack)
+	{
+		return false;
+	}
+	*fraction = t;
 	*normal = cd2Normalize(cd2RightPerp(e));
 	return true;
 }
