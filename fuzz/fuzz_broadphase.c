@@ -187,6 +187,37 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 				break;
 			}
 			default:
+				if (code >= 200 && live > 0)
+				{
+					/* Several moves in one MoveProxies call (ids may repeat). */
+					int count = 1 + Byte(&r) % 16;
+					int ids[16];
+					OBox boxes[16];
+					cdReal d[16][3];
+					for (int k = 0; k < count; ++k)
+					{
+						int id = s_ids[Byte(&r) % live];
+						uint8_t how = Byte(&r);
+						OBox b = (how & 1) ? ReadBox(&r, dim) : s_tight[id];
+						for (int i = 0; i < 3; ++i)
+						{
+							d[k][i] = i < dim ? (cdReal)((int)Byte(&r) - 128) * CD_R(0.0625) : CD_R(0.0);
+							if (!(how & 1) && i < dim)
+							{
+								b.min[i] += d[k][i];
+								b.max[i] += d[k][i];
+							}
+						}
+						ids[k] = id;
+						boxes[k] = b;
+						if (OracleBoxValid(o, b))
+						{
+							s_tight[id] = b;
+						}
+					}
+					ok = OracleMoveMany(o, count, ids, boxes, (const cdReal(*)[3])d);
+					break;
+				}
 				ok = OracleRebuild(o);
 				break;
 		}

@@ -301,6 +301,83 @@ static inline bool OracleMove(Oracle* o, int id, OBox tight, const cdReal* displ
 	return true;
 }
 
+/* MoveProxies over `count` moves (ids may repeat): every entry must answer what MoveProxy would
+ * have answered in turn, and the return value must count the changed entries. */
+static inline bool OracleMoveMany(Oracle* o, int count, const int* ids, const OBox* tight,
+								  const cdReal (*displacement)[3])
+{
+	enum
+	{
+		MOST = 2 * ORACLE_MAX_PROXIES
+	};
+	static cd2Aabb boxes2[MOST];
+	static cd3Aabb boxes3[MOST];
+	static cd2Vec d2[MOST];
+	static cd3Vec d3[MOST];
+	static bool changed[MOST];
+	if (count > MOST)
+	{
+		ORACLE_FAIL(o, "OracleMoveMany: %d moves, at most %d", count, (int)MOST);
+	}
+	int returned;
+	for (int i = 0; i < count; ++i)
+	{
+		boxes2[i] = OracleTo2(tight[i]);
+		boxes3[i] = OracleTo3(tight[i]);
+		d2[i] = cd2MakeVec(displacement[i][0], displacement[i][1]);
+		d3[i] = cd3MakeVec(displacement[i][0], displacement[i][1], displacement[i][2]);
+		changed[i] = !(i & 1); /* overwritten */
+	}
+	if (o->dim == 2)
+	{
+		returned = cd2BroadPhase_MoveProxies(o->bp2, count, ids, boxes2, d2, changed);
+	}
+	else
+	{
+		returned = cd3BroadPhase_MoveProxies(o->bp3, count, ids, boxes3, d3, changed);
+	}
+	int expectedCount = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		int id = ids[i];
+		bool validDisplacement = true;
+		for (int k = 0; k < o->dim; ++k)
+		{
+			validDisplacement = validDisplacement && isfinite(displacement[i][k]);
+		}
+		bool expected = false;
+		if (OracleBoxValid(o, tight[i]) && validDisplacement)
+		{
+			OBox old = o->fat[id];
+			expected = !(OracleContains(o, old, tight[i]) &&
+						 OracleContains(o, OracleFat(o, tight[i], displacement[i], CD_R(4.0)), old));
+			if (expected)
+			{
+				o->fat[id] = OracleFat(o, tight[i], displacement[i], CD_R(1.0));
+				o->moved[id] = true;
+			}
+		}
+		expectedCount += expected ? 1 : 0;
+		if (changed[i] != expected)
+		{
+			ORACLE_FAIL(o, "MoveProxies entry %d (proxy %d) reported %d, expected %d", i, id, (int)changed[i],
+						(int)expected);
+		}
+	}
+	if (returned != expectedCount)
+	{
+		ORACLE_FAIL(o, "MoveProxies returned %d, expected %d", returned, expectedCount);
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		if (!OracleBoxEqual(o, OracleGetFat(o, ids[i]), o->fat[ids[i]]))
+		{
+			ORACLE_FAIL(o, "fat box of proxy %d after MoveProxies differs from the rule", ids[i]);
+		}
+	}
+	return true;
+}
+
 static void OraclePairFcn(int a, int b, uint64_t userDataA, uint64_t userDataB, void* context)
 {
 	Oracle* o = (Oracle*)context;

@@ -141,7 +141,7 @@ static bool RunRandom(int dim, cdBroadPhaseType type, uint64_t seed, const Scene
 					++live;
 				}
 			}
-			else if (kind < 7)
+			else if (kind < 6)
 			{
 				int id = ids[TestRngInt(&rng, live)];
 				cdReal d[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
@@ -152,6 +152,31 @@ static bool RunRandom(int dim, cdBroadPhaseType type, uint64_t seed, const Scene
 				OBox b = Shift(tight[id], dim, d);
 				ok = OracleMove(o, id, b, d);
 				tight[id] = b;
+			}
+			else if (kind < 7)
+			{
+				/* A few moves at once through MoveProxies (ids may repeat). */
+				enum
+				{
+					MOST = 24
+				};
+				int batchIds[MOST];
+				OBox boxes[MOST];
+				cdReal d[MOST][3];
+				int count = 1 + TestRngInt(&rng, MOST);
+				for (int k = 0; k < count; ++k)
+				{
+					int id = ids[TestRngInt(&rng, live)];
+					for (int i = 0; i < 3; ++i)
+					{
+						d[k][i] = i < dim ? R(&rng, -s->smallMove, s->smallMove) : CD_R(0.0);
+					}
+					boxes[k] = TestRngInt(&rng, 6) == 0 ? RandomBox(&rng, dim, s->lo, s->hi, s->maxSize)
+														: Shift(tight[id], dim, d[k]);
+					batchIds[k] = id;
+					tight[id] = boxes[k];
+				}
+				ok = OracleMoveMany(o, count, batchIds, boxes, (const cdReal(*)[3])d);
 			}
 			else if (kind < 8)
 			{
@@ -593,6 +618,104 @@ static void TestTeleportFrames(void)
 	}
 }
 
+/* Frames moved through MoveProxies with enough changed boxes (hundreds) that the structure takes
+ * them in curve order: every proxy moves each frame, half of them teleport; duplicates (whose
+ * later entries see the earlier ones' fat boxes) and invalid entries are mixed in. The answers
+ * must match MoveProxy called in turn, and the structure must stay exact. */
+static void TestBatchMoves(void)
+{
+	for (int dim = 2; dim <= 3; ++dim)
+	{
+		for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+		{
+			Oracle* o = (Oracle*)malloc(sizeof(Oracle));
+			if (!OracleInit(o, dim, (cdBroadPhaseType)type, CD_R(0.1), CD_R(4.0)))
+			{
+				free(o);
+				continue;
+			}
+			TestRng rng = TestRngMake(4242 + (uint64_t)(dim * 10 + type));
+			Scene s = {0.0, 60.0, 2.0, 0.3};
+			enum
+			{
+				COUNT = 600,
+				EXTRA = 40,
+				MOVES = COUNT + EXTRA
+			};
+			static OBox tight[COUNT];
+			static int batchIds[MOVES];
+			static OBox boxes[MOVES];
+			static cdReal d[MOVES][3];
+			bool ok = true;
+			for (int i = 0; i < COUNT && ok; ++i)
+			{
+				tight[i] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
+				int id;
+				ok = OracleCreate(o, tight[i], (uint64_t)i, &id);
+				ok = ok && id == i;
+			}
+			ok = ok && OracleUpdatePairs(o);
+			int changedMost = 0;
+			for (int frame = 0; frame < 3 && ok; ++frame)
+			{
+				for (int k = 0; k < MOVES; ++k)
+				{
+					/* All proxies in id order, then random repeats. */
+					int id = k < COUNT ? k : TestRngInt(&rng, COUNT);
+					for (int i = 0; i < 3; ++i)
+					{
+						d[k][i] = i < dim ? R(&rng, -s.smallMove, s.smallMove) : CD_R(0.0);
+					}
+					if (TestRngInt(&rng, 2) == 0)
+					{
+						tight[id] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
+					}
+					else if (TestRngInt(&rng, 4) != 0)
+					{
+						tight[id] = Shift(tight[id], dim, d[k]);
+					}
+					batchIds[k] = id;
+					boxes[k] = tight[id];
+					if (k >= COUNT && TestRngInt(&rng, 10) == 0)
+					{
+						boxes[k].min[0] = (cdReal)NAN; /* ignored entry */
+					}
+				}
+				int before = 0;
+				for (int id = 0; id < COUNT; ++id)
+				{
+					before += o->moved[id] ? 1 : 0;
+				}
+				ok = OracleMoveMany(o, MOVES, batchIds, boxes, (const cdReal(*)[3])d);
+				int after = 0;
+				for (int id = 0; id < COUNT; ++id)
+				{
+					after += o->moved[id] ? 1 : 0;
+				}
+				changedMost = after - before > changedMost ? after - before : changedMost;
+				if (frame == 2)
+				{
+					/* A query between the moves and the pair update sees the new boxes. */
+					OBox box = RandomBox(&rng, dim, s.lo, s.hi, 0.3 * (s.hi - s.lo));
+					ok = ok && OracleQueryBox(o, box, 0);
+				}
+				ok = ok && OracleValidate(o) && OracleUpdatePairs(o);
+				TEST_CHECKF(ok, "%s %dD batch frame %d: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type),
+							dim, frame, o->error);
+			}
+			/* The curve-ordered path runs from 256 changed boxes on. */
+			TEST_CHECKF(changedMost >= 256, "%s %dD: only %d proxies changed in a batch",
+						cdBroadPhaseTypeName((cdBroadPhaseType)type), dim, changedMost);
+			if (ok)
+			{
+				ok = CheckAll(o, &rng, &s, true);
+			}
+			OracleFree(o);
+			free(o);
+		}
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestArguments);
@@ -600,5 +723,6 @@ int main(void)
 	TEST_RUN(TestDegenerateSets);
 	TEST_RUN(TestFrames);
 	TEST_RUN(TestTeleportFrames);
+	TEST_RUN(TestBatchMoves);
 	return TEST_SUMMARY();
 }

@@ -194,4 +194,8 @@ std::unique_ptr<Adapter> MakeCollideAdapter(const std::string& name);
 std::unique_ptr<Adapter> MakePeerAdapter(const std::string& name);
 std::vector<std::string> PeerNames();
 
+// Seconds on the clock frames are timed with: steady wall clock, or the thread's CPU clock with
+// --cpu-time (bench_broad.cpp).
+double FrameClock();
+
 } // namespace bench

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -75,8 +76,8 @@ void AddPair(int, int, uint64_t userDataA, uint64_t userDataB, void* context)
 class CollideAdapter : public Adapter
 {
   public:
-	CollideAdapter(const std::string& name, cdBroadPhaseType type, bool oneByOne)
-		: name_(name), type_(type), oneByOne_(oneByOne)
+	CollideAdapter(const std::string& name, cdBroadPhaseType type, bool oneByOne, bool batch)
+		: name_(name), type_(type), oneByOne_(oneByOne), batch_(batch)
 	{
 	}
 	~CollideAdapter() override
@@ -177,52 +178,102 @@ class CollideAdapter : public Adapter
 	size_t UpdateAndCountPairs(const Scene& scene) override
 	{
 		size_t count = 0;
-		using Clock = std::chrono::steady_clock;
 #ifdef CD_BROAD_COUNT_OPS
 		unsigned long long opsBefore[8];
 		std::copy(cdBroadOpCounts, cdBroadOpCounts + 8, opsBefore);
 #endif
-		Clock::time_point t0 = Clock::now(), t1, t2;
+		double t0 = FrameClock(), t1, t2;
 		size_t movedNow = 0;
+		size_t movedCount = scene.moved.count;
+		ids_.resize(movedCount);
+		if (changedCapacity_ < movedCount)
+		{
+			changed_.reset(new bool[movedCount]);
+			changedCapacity_ = movedCount;
+		}
+		for (size_t k = 0; k < movedCount; ++k)
+		{
+			ids_[k] = proxies_[size_t(scene.moved[k])];
+		}
 		if (dim_ == 3)
 		{
-			for (int i : scene.moved)
+			if (batch_)
 			{
-				const float* d = &scene.displacement[size_t(i) * 3];
-				if (cd3BroadPhase_MoveProxy(bp3_, proxies_[size_t(i)], To3(scene.boxes[size_t(i)]),
-											cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])}))
+				// All moved boxes in one call (the way a physics step hands over its bodies).
+				boxes3_.resize(movedCount);
+				displacements3_.resize(movedCount);
+				for (size_t k = 0; k < movedCount; ++k)
 				{
-					pairs_.MarkMoved(i);
-					++movedNow;
+					size_t i = size_t(scene.moved[k]);
+					const float* d = &scene.displacement[i * 3];
+					boxes3_[k] = To3(scene.boxes[i]);
+					displacements3_[k] = cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])};
+				}
+				cd3BroadPhase_MoveProxies(bp3_, int(movedCount), ids_.data(), boxes3_.data(),
+										  displacements3_.data(), changed_.get());
+			}
+			else
+			{
+				for (size_t k = 0; k < movedCount; ++k)
+				{
+					size_t i = size_t(scene.moved[k]);
+					const float* d = &scene.displacement[i * 3];
+					changed_[k] = cd3BroadPhase_MoveProxy(bp3_, ids_[k], To3(scene.boxes[i]),
+														  cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])});
 				}
 			}
-			t1 = Clock::now();
-			cd3BroadPhase_UpdatePairs(bp3_, AddPair, &pairs_);
-			t2 = Clock::now();
-			count = pairs_.EndFrame(scene);
 		}
 		else
 		{
-			for (int i : scene.moved)
+			if (batch_)
 			{
-				const float* d = &scene.displacement[size_t(i) * 3];
-				if (cd2BroadPhase_MoveProxy(bp2_, proxies_[size_t(i)], To2(scene.boxes[size_t(i)]),
-											cd2Vec{cdReal(d[0]), cdReal(d[1])}))
+				boxes2_.resize(movedCount);
+				displacements2_.resize(movedCount);
+				for (size_t k = 0; k < movedCount; ++k)
 				{
-					pairs_.MarkMoved(i);
-					++movedNow;
+					size_t i = size_t(scene.moved[k]);
+					const float* d = &scene.displacement[i * 3];
+					boxes2_[k] = To2(scene.boxes[i]);
+					displacements2_[k] = cd2Vec{cdReal(d[0]), cdReal(d[1])};
+				}
+				cd2BroadPhase_MoveProxies(bp2_, int(movedCount), ids_.data(), boxes2_.data(),
+										  displacements2_.data(), changed_.get());
+			}
+			else
+			{
+				for (size_t k = 0; k < movedCount; ++k)
+				{
+					size_t i = size_t(scene.moved[k]);
+					const float* d = &scene.displacement[i * 3];
+					changed_[k] = cd2BroadPhase_MoveProxy(bp2_, ids_[k], To2(scene.boxes[i]),
+														  cd2Vec{cdReal(d[0]), cdReal(d[1])});
 				}
 			}
-			t1 = Clock::now();
-			cd2BroadPhase_UpdatePairs(bp2_, AddPair, &pairs_);
-			t2 = Clock::now();
-			count = pairs_.EndFrame(scene);
 		}
-		Clock::time_point t3 = Clock::now();
+		for (size_t k = 0; k < movedCount; ++k)
 		{
-			moveSeconds_ += std::chrono::duration<double>(t1 - t0).count();
-			pairSeconds_ += std::chrono::duration<double>(t2 - t1).count();
-			sweepSeconds_ += std::chrono::duration<double>(t3 - t2).count();
+			if (changed_[k])
+			{
+				pairs_.MarkMoved(scene.moved[k]);
+				++movedNow;
+			}
+		}
+		t1 = FrameClock();
+		if (dim_ == 3)
+		{
+			cd3BroadPhase_UpdatePairs(bp3_, AddPair, &pairs_);
+		}
+		else
+		{
+			cd2BroadPhase_UpdatePairs(bp2_, AddPair, &pairs_);
+		}
+		t2 = FrameClock();
+		count = pairs_.EndFrame(scene);
+		double t3 = FrameClock();
+		{
+			moveSeconds_ += t1 - t0;
+			pairSeconds_ += t2 - t1;
+			sweepSeconds_ += t3 - t2;
 			moved_ += movedNow;
 			++frames_;
 		}
@@ -334,7 +385,15 @@ class CollideAdapter : public Adapter
 	std::string name_;
 	cdBroadPhaseType type_;
 	bool oneByOne_;
+	bool batch_; // moves through MoveProxies (else one MoveProxy call per box)
 	int dim_ = 3;
+	std::vector<int> ids_;
+	std::unique_ptr<bool[]> changed_; // (std::vector<bool> has no bool array to hand over)
+	size_t changedCapacity_ = 0;
+	std::vector<cd3Aabb> boxes3_;
+	std::vector<cd3Vec> displacements3_;
+	std::vector<cd2Aabb> boxes2_;
+	std::vector<cd2Vec> displacements2_;
 	cd3BroadPhase* bp3_ = nullptr;
 	cd2BroadPhase* bp2_ = nullptr;
 	std::vector<int> proxies_;
@@ -356,18 +415,22 @@ std::unique_ptr<Adapter> MakeCollideAdapter(const std::string& name)
 		const char* name;
 		cdBroadPhaseType type;
 		bool oneByOne;
-	} kTypes[] = {{"tree", CD_BROADPHASE_TREE, false},
-				  {"sap", CD_BROADPHASE_SAP, false},
-				  {"grid", CD_BROADPHASE_GRID, false},
-				  {"octree", CD_BROADPHASE_SPATIAL_TREE, false},
+		bool batch;
+	} kTypes[] = {{"tree", CD_BROADPHASE_TREE, false, true},
+				  {"sap", CD_BROADPHASE_SAP, false, true},
+				  {"grid", CD_BROADPHASE_GRID, false, true},
+				  {"octree", CD_BROADPHASE_SPATIAL_TREE, false, true},
 				  // The incremental path: proxies created one by one in the scene's (random) order.
-				  {"tree-inc", CD_BROADPHASE_TREE, true},
-				  {"sap-inc", CD_BROADPHASE_SAP, true}};
+				  {"tree-inc", CD_BROADPHASE_TREE, true, true},
+				  {"sap-inc", CD_BROADPHASE_SAP, true, true},
+				  // Moves one MoveProxy call at a time, in the scene's order (no batch).
+				  {"tree-single", CD_BROADPHASE_TREE, false, false},
+				  {"grid-single", CD_BROADPHASE_GRID, false, false}};
 	for (const auto& t : kTypes)
 	{
 		if (name == t.name)
 		{
-			return std::unique_ptr<Adapter>(new CollideAdapter(name, t.type, t.oneByOne));
+			return std::unique_ptr<Adapter>(new CollideAdapter(name, t.type, t.oneByOne, t.batch));
 		}
 	}
 	return nullptr;

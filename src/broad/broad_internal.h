@@ -38,6 +38,16 @@ extern unsigned long long cdBroadOpCounts[CD_BROAD_OP_COUNT];
 #define CD_BROAD_COUNT(op, k) ((void)0)
 #endif
 
+/* Starts loading the cache line at p without waiting for it (a hint; nothing elsewhere). At 1M
+ * proxies the tree's nodes and the proxy table no longer fit the last-level cache, so a node
+ * read is a main-memory miss: issuing the reads of both children (or of the next query's box)
+ * before they are needed lets several misses overlap instead of waiting for each in turn. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CD_BROAD_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define CD_BROAD_PREFETCH(p) ((void)0)
+#endif
+
 /* ---- callbacks from a backend to the frontend ------------------------------------------------- */
 
 /* Box query hit: return false to stop. */
@@ -122,6 +132,8 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		void (*getStats)(const void* self, cdBroadPhaseStats* stats);                                        \
 		/* Checks every invariant, including agreement with the proxy table. */                              \
 		bool (*validate)(const void* self);                                                                  \
+		/* Optional: starts loading what moveProxy(proxyId) will read first (a cache hint only). */          \
+		void (*prefetchMove)(const void* self, int proxyId);                                                 \
 	} P##BroadBackend;
 
 CD_BROAD_DECLARE_BACKEND(cd2, cd2Aabb, cd2Ray, cd2BroadPhaseDef)
@@ -154,6 +166,10 @@ void cdBroadAdviseLarge(void* memory, size_t bytes);
 /* Sorts `count` keys ascending (LSD radix sort over the bits in use). `scratch` holds `count`
  * keys. The result may land in either buffer: the function returns the one that holds it. */
 uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count);
+
+/* The same, ordering by the bits from `lowestBit` up only (keys equal there keep their order;
+ * below the radix-sort size the whole key is compared). */
+uint64_t* cdBroadSortKeysFrom(uint64_t* keys, uint64_t* scratch, int count, int lowestBit);
 
 /* Number of bits needed for values below `count` (at least 1). */
 int cdBroadBitsFor(int count);

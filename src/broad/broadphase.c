@@ -98,6 +98,11 @@ enum
 
 uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count)
 {
+	return cdBroadSortKeysFrom(keys, scratch, count, 0);
+}
+
+uint64_t* cdBroadSortKeysFrom(uint64_t* keys, uint64_t* scratch, int count, int lowestBit)
+{
 	if (count < CD_INSERTION_SORT_LIMIT)
 	{
 		for (int i = 1; i < count; ++i)
@@ -128,7 +133,7 @@ uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count)
 	uint32_t histogram[CD_RADIX_BUCKETS];
 	uint64_t* from = keys;
 	uint64_t* to = scratch;
-	for (int shift = 0; shift < bits; shift += CD_RADIX_BITS)
+	for (int shift = lowestBit; shift < bits; shift += CD_RADIX_BITS)
 	{
 		memset(histogram, 0, sizeof(histogram));
 		for (int i = 0; i < count; ++i)
