@@ -280,15 +280,30 @@ static cd2Segment SegmentSide(const Pair* pair, int side)
 	return segment;
 }
 
+/* cd2ClosestPointOnSegment (closest2.c), the same arithmetic in this file so that it inlines. */
+static cd2Vec ClosestOnSegment(cd2Segment g, cd2Vec p)
+{
+	cd2Vec d = cd2Sub(g.p2, g.p1);
+	cdReal lengthSquared = cd2Dot(d, d);
+	cdReal t = cd2Dot(cd2Sub(p, g.p1), d);
+	if (t <= CD_R(0.0) || lengthSquared <= CD_R(0.0))
+	{
+		return g.p1;
+	}
+	if (t >= lengthSquared)
+	{
+		return g.p2;
+	}
+	return cd2MulAdd(g.p1, t / lengthSquared, d);
+}
+
 /* cd2ClosestPointsSegmentSegment(a, b) for segments that do not cross because b lies on one side
  * of a's line (neither end strictly on the other side): the same candidates in the same order,
  * without the orientation tests that look for a crossing. */
 static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
 {
-	cd2Vec candidatesA[4] = {a.p1, a.p2, cd2ClosestPointOnSegment(a, b.p1),
-							 cd2ClosestPointOnSegment(a, b.p2)};
-	cd2Vec candidatesB[4] = {cd2ClosestPointOnSegment(b, a.p1), cd2ClosestPointOnSegment(b, a.p2), b.p1,
-							 b.p2};
+	cd2Vec candidatesA[4] = {a.p1, a.p2, ClosestOnSegment(a, b.p1), ClosestOnSegment(a, b.p2)};
+	cd2Vec candidatesB[4] = {ClosestOnSegment(b, a.p1), ClosestOnSegment(b, a.p2), b.p1, b.p2};
 	int best = 0;
 	cdReal bestDistanceSquared = cd2VecDistanceSquared(candidatesA[0], candidatesB[0]);
 	for (int i = 1; i < 4; ++i)
@@ -363,7 +378,7 @@ static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* ed
 			{
 				continue; /* the end is behind this edge's line: not its closest edge */
 			}
-			cd2Vec onEdge = cd2ClosestPointOnSegment(PolygonEdge(polygon, i), p);
+			cd2Vec onEdge = ClosestOnSegment(PolygonEdge(polygon, i), p);
 			cdReal squared = cd2VecDistanceSquared(p, onEdge);
 			if (squared < bestSquared || (squared == bestSquared && i < bestEdge))
 			{
