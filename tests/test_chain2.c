@@ -1430,6 +1430,43 @@ static void TestDirectSegmentCapsuleCircle(void)
 	TEST_CHECK(capsuleContacts > cases / 8 && circleContacts > cases / 8);
 }
 
+/* fuzz_chain2 (fuzz/corpus/fuzz_chain2/regression-capsule-end-on-segment-end-1e9): a loop reaching
+ * x = -1e9 and a zero-radius capsule whose end lies 5.8e-4 from the end of the long segment 7.
+ * The capsule's core separates more than the segment's face, and its closest points to the
+ * segment come out 5.8e-4 apart one way round the segment and 5.8e-10 the other (a crossing found
+ * by rounding); the generic path takes the nearer and so the face contact. The dedicated routine
+ * tried only one way round and reported a gap contact along -x: now both, as the generic path. */
+static void TestDirectCapsuleEndOnSegmentEnd(void)
+{
+	const double xy[26] = {587500,	0,		 0,		  0,		0,		 1137500, 0,	   0,		-1100000,
+						   -175000, 437500,	 -525000, -950000,	1050000, -1e9,	  1212500, 0,		200000,
+						   -962500, -400000, -862500, -1112500, 50000,	 -237500, 1087500, -1237500};
+	cd2Vec points[13];
+	for (int i = 0; i < 13; ++i)
+	{
+		points[i] = V(xy[2 * i], xy[2 * i + 1]);
+	}
+	cd2Chain* chain = MakeChain(points, 13, true);
+	if (chain == NULL)
+	{
+		return;
+	}
+	cd2Capsule capsule = {V(-0.000580846914, 200000), V(-962500, -1112500), CD_R(0.0)};
+	for (int i = 0; i < cd2GetChainSegmentCount(chain); ++i)
+	{
+		cd2ChainSegment s = cd2GetChainSegment(chain, i);
+		cd2Manifold direct = cd2CollideChainSegmentCapsuleDirect(&s, capsule, CD_R(637500.0));
+		cd2Manifold generic = cd2CollideChainSegmentCapsule(&s, capsule, CD_R(637500.0));
+		TEST_CHECKF(direct.pointCount == generic.pointCount &&
+						(double)cd2VecDistance(direct.normal, generic.normal) <= 1e-6 &&
+						(direct.pointCount == 0 || direct.points[0].id == generic.points[0].id),
+					"segment %d: direct %d points normal (%.9g %.9g), generic %d points normal (%.9g %.9g)",
+					i, direct.pointCount, (double)direct.normal.x, (double)direct.normal.y,
+					generic.pointCount, (double)generic.normal.x, (double)generic.normal.y);
+	}
+	cd2DestroyChain(chain);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1526,6 +1563,7 @@ int main(void)
 	TEST_RUN(TestCollideAgainstBruteForce);
 	TEST_RUN(TestDirectSegmentPolygon);
 	TEST_RUN(TestDirectSegmentCapsuleCircle);
+	TEST_RUN(TestDirectCapsuleEndOnSegmentEnd);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

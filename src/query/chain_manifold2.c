@@ -438,13 +438,21 @@ static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdRea
 		}
 		return best;
 	}
-	/* The polygon's edge separates more: its closest feature is on that edge. The generic path
-	 * also tried the segment's back side (the same points reversed), which differs only by
-	 * rounding; the front side is taken. */
-	cd2Segment edge = PolygonEdge(polygon, *edgeB), front = SegmentSide(pair, 0);
+	/* The polygon's edge separates more: its closest feature is on that edge. Both sides of the
+	 * segment (the same points in either order) are tried, as the generic path does: they differ
+	 * only by rounding, which decides near a crossing (a capsule's end on the segment's end at
+	 * coordinates of 1e9 is 6e-4 away one way and 6e-10 the other). */
+	cd2Segment edge = PolygonEdge(polygon, *edgeB), front = SegmentSide(pair, 0), back = SegmentSide(pair, 1);
 	cd2ClosestPoints closest =
 		clear ? ClosestNotCrossing(edge, front) : cd2ClosestPointsSegmentSegment(edge, front);
+	cd2ClosestPoints reversed =
+		clear ? ClosestNotCrossing(edge, back) : cd2ClosestPointsSegmentSegment(edge, back);
 	*edgeA = 0;
+	if (reversed.distance < closest.distance)
+	{
+		closest = reversed;
+		*edgeA = 1;
+	}
 	cd2Vec swap = closest.pointA;
 	closest.pointA = closest.pointB;
 	closest.pointB = swap;
