@@ -1467,6 +1467,28 @@ static void TestDirectCapsuleEndOnSegmentEnd(void)
 	cd2DestroyChain(chain);
 }
 
+/* fuzz_chain2 (fuzz/corpus/fuzz_chain2/regression-capsule-end-on-core-line): a capsule standing
+ * upright below the end p2 = (0, 0) of a floor segment, its core on the line x = 0 through p2.
+ * The closest points are p2 and the capsule's top end (a gap contact along -y); the dedicated
+ * routine searched only the capsule edges facing each segment end, and p2, on the core's line,
+ * faces neither: it took p1 instead, whose tilted normal then fell back to the face contact. */
+static void TestDirectCapsuleEndOnCoreLine(void)
+{
+	cd2ChainSegment s = {V(-875000, 0), V(-437500, 0), V(0, 0), V(0, -1100000)};
+	cd2Capsule capsule = {V(0, -862500), V(0, -1237500), CD_R(400000.0)};
+	cd2Manifold direct = cd2CollideChainSegmentCapsuleDirect(&s, capsule, CD_R(725000.0));
+	cd2Manifold generic = cd2CollideChainSegmentCapsule(&s, capsule, CD_R(725000.0));
+	TEST_CHECKF(direct.pointCount == 1 && generic.pointCount == 1 &&
+					direct.points[0].id == generic.points[0].id &&
+					(double)cd2VecDistance(direct.normal, generic.normal) <= 1e-6,
+				"direct %d points id %x normal (%.9g %.9g), generic %d points id %x normal (%.9g %.9g)",
+				direct.pointCount, direct.points[0].id, (double)direct.normal.x, (double)direct.normal.y,
+				generic.pointCount, generic.points[0].id, (double)generic.normal.x, (double)generic.normal.y);
+	/* The contact is the gap between the segment's end and the capsule's top end. */
+	TEST_CHECK_NEAR((double)direct.normal.y, -1.0, 1e-6);
+	TEST_CHECK_NEAR((double)direct.points[0].separation, 862500.0 - 400000.0, 1e-3);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1564,6 +1586,7 @@ int main(void)
 	TEST_RUN(TestDirectSegmentPolygon);
 	TEST_RUN(TestDirectSegmentCapsuleCircle);
 	TEST_RUN(TestDirectCapsuleEndOnSegmentEnd);
+	TEST_RUN(TestDirectCapsuleEndOnCoreLine);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

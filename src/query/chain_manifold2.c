@@ -1,4 +1,5 @@
-/* collide: a one-sided chain segment (shape A) against a polygon, rounded or not (shape B).
+/* collide: a one-sided chain segment (shape A) against a polygon (rounded or not), a capsule or a
+ * circle (shape B).
  *
  * The answer is the one manifold2.c gives (see the comment at its top): the segment's two-sided
  * core against the polygon's core by the separating axis test, the closest-feature path for cores
@@ -6,14 +7,14 @@
  * directions the ghosts allow, falling back to the contact seen from the segment's own face. The
  * same decisions are taken in the same order with the same tolerances, so points, separations,
  * normals and feature ids match; what changes is the work:
- * - the segment's two normals need no core: its front separation is one pass over the polygon's
- *   vertices, its back one stops at the first vertex clearly above the line;
+ * - the segment's two normals need no core: one pass over the polygon's vertices gives its two
+ *   separations and the polygon's own;
  * - clipping is written once per reference side: the segment's face (the polygon's edge facing
  *   it is incident) or a polygon edge (the segment is incident);
  * - when the segment's front normal separates the polygon (every vertex above the line) and the
  *   polygon's own normals do not, the closest points come from the vertices' heights: a lowest
  *   vertex that projects onto the segment is the closest feature; otherwise the segment's ends
- *   against the polygon edges that face them. The generic path ran a segment-segment closest
+ *   against the polygon's edges (point-segment tests). The generic path ran a segment-segment closest
  *   point search against every polygon edge there, the most costly step of a box resting on
  *   terrain next to a segment it does not quite touch. */
 #include "chain_manifold2.h"
@@ -324,8 +325,10 @@ static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
  * closest point test here). A closest pair either has its segment point inside the segment, and
  * then its polygon point is a vertex of least height among those that project onto the segment
  * (no point of the polygon is lower), or has it at an end, and then its polygon point is that
- * end's closest point on the polygon, on an edge facing the end. Ties go to the lower edge index,
- * as the search over the edges in order did. */
+ * end's closest point on the polygon's boundary. Every edge is tried for the ends: an end on the
+ * line of a capsule's core (a two-edge core) is in front of neither edge, and a filter on facing
+ * edges dropped its true closest point (fuzz_chain2). Ties go to the lower edge index, as the
+ * search over the edges in order did. */
 static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* edgeB)
 {
 	const Core* polygon = pair->polygon;
@@ -374,10 +377,6 @@ static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* ed
 		cd2Vec p = end == 0 ? pair->p1 : pair->p2;
 		for (int i = 0; i < count; ++i)
 		{
-			if (cd2Dot(polygon->normals[i], cd2Sub(p, polygon->vertices[i])) <= CD_R(0.0))
-			{
-				continue; /* the end is behind this edge's line: not its closest edge */
-			}
 			cd2Vec onEdge = ClosestOnSegment(PolygonEdge(polygon, i), p);
 			cdReal squared = cd2VecDistanceSquared(p, onEdge);
 			if (squared < bestSquared || (squared == bestSquared && i < bestEdge))
