@@ -1489,6 +1489,25 @@ static void TestDirectCapsuleEndOnCoreLine(void)
 	TEST_CHECK_NEAR((double)direct.points[0].separation, 862500.0 - 400000.0, 1e-3);
 }
 
+/* fuzz_chain2 (fuzz/corpus/fuzz_chain2/regression-capsule-ends-tie-1e9): a capsule of radius 1e9
+ * whose short core lies 6.7e8 above a segment 1.5e9 long. Its two ends are equally far from the
+ * segment up to the rounding at that scale (64), and the generic path's search over the core's
+ * edges picks the second end; the dedicated routine took the lowest end by height (the first):
+ * now it runs the same search, candidate for candidate, and picks the same end. */
+static void TestDirectCapsuleEndsTie(void)
+{
+	cd2ChainSegment s = {V(-26841788, -58.75), V(116848000, -1e9), V(-1e9, -28.75), V(-71.25, 67.5)};
+	cd2Capsule capsule = {V(35, 13.75), V(-22.5, 2.5), CD_R(1e9)};
+	cd2Manifold direct = cd2CollideChainSegmentCapsuleDirect(&s, capsule, CD_R(97.5));
+	cd2Manifold generic = cd2CollideChainSegmentCapsule(&s, capsule, CD_R(97.5));
+	TEST_CHECKF(direct.pointCount == generic.pointCount && direct.pointCount == 1 &&
+					direct.points[0].id == generic.points[0].id &&
+					direct.points[0].separation == generic.points[0].separation,
+				"direct %d points id %x separation %.9g, generic %d points id %x separation %.9g",
+				direct.pointCount, direct.points[0].id, (double)direct.points[0].separation,
+				generic.pointCount, generic.points[0].id, (double)generic.points[0].separation);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1587,6 +1606,7 @@ int main(void)
 	TEST_RUN(TestDirectSegmentCapsuleCircle);
 	TEST_RUN(TestDirectCapsuleEndOnSegmentEnd);
 	TEST_RUN(TestDirectCapsuleEndOnCoreLine);
+	TEST_RUN(TestDirectCapsuleEndsTie);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

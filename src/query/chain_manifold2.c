@@ -11,12 +11,10 @@
  *   separations and the polygon's own;
  * - clipping is written once per reference side: the segment's face (the polygon's edge facing
  *   it is incident) or a polygon edge (the segment is incident);
- * - when the segment's front normal separates the polygon (every vertex above the line) and the
- *   polygon's own normals do not, the closest points come from the vertices' heights: a lowest
- *   vertex that projects onto the segment is the closest feature; otherwise the segment's ends
- *   against the polygon's edges (point-segment tests). The generic path ran a segment-segment closest
- *   point search against every polygon edge there, the most costly step of a box resting on
- *   terrain next to a segment it does not quite touch. */
+ * - where a separating axis keeps the two cores clearly apart (by more than the round-off of the
+ *   orientation tests), the closest points come from the four-candidate segment-segment test:
+ *   no crossing to look for. The candidates, their order and the search over the edges are the
+ *   generic path's, so its choices on near ties are kept. */
 #include "chain_manifold2.h"
 
 /* The tolerances of manifold2.c, which this routine must follow to take the same decisions. */
@@ -320,83 +318,10 @@ static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
 	return result;
 }
 
-/* The closest points of the segment and a polygon core that stands wholly above the segment's
- * line (every vertex height > 0; manifold2.c searched every polygon edge with a segment-segment
- * closest point test here). A closest pair either has its segment point inside the segment, and
- * then its polygon point is a vertex of least height among those that project onto the segment
- * (no point of the polygon is lower), or has it at an end, and then its polygon point is that
- * end's closest point on the polygon's boundary. Every edge is tried for the ends: an end on the
- * line of a capsule's core (a two-edge core) is in front of neither edge, and a filter on facing
- * edges dropped its true closest point (fuzz_chain2). Ties go to the lower edge index, as the
- * search over the edges in order did. */
-static cd2ClosestPoints ClosestAbove(const Pair* pair, int lowestVertex, int* edgeB)
-{
-	const Core* polygon = pair->polygon;
-	cd2Vec d = cd2Sub(pair->p2, pair->p1);
-	cdReal lengthSquared = cd2Dot(d, d);
-	cd2ClosestPoints best = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_REAL_MAX};
-	int count = polygon->count;
-	/* The lowest vertex projecting inside the segment: nothing is closer (up to round-off). */
-	{
-		cd2Vec v = polygon->vertices[lowestVertex];
-		cdReal t = cd2Dot(cd2Sub(v, pair->p1), d);
-		if (t > CD_R(0.0) && t < lengthSquared)
-		{
-			best.pointA = cd2MulAdd(pair->p1, t / lengthSquared, d);
-			best.pointB = v;
-			best.distance = cdSqrt(cd2VecDistanceSquared(best.pointA, v));
-			*edgeB = lowestVertex == 0 ? 0 : lowestVertex - 1;
-			return best;
-		}
-	}
-	cdReal bestSquared = CD_REAL_MAX;
-	int bestEdge = 0;
-	for (int j = 0; j < count; ++j)
-	{
-		cd2Vec v = polygon->vertices[j];
-		cdReal t = cd2Dot(cd2Sub(v, pair->p1), d);
-		if (t <= CD_R(0.0) || t >= lengthSquared)
-		{
-			continue; /* projects onto an end: the ends' own search below covers it */
-		}
-		cd2Vec onSegment = cd2MulAdd(pair->p1, t / lengthSquared, d);
-		cdReal squared = cd2VecDistanceSquared(onSegment, v);
-		/* Vertex j ends edge j - 1 and starts edge j; the edge search met edge j - 1 first (edge 0
-		 * before the last one for vertex 0). */
-		int edge = j == 0 ? 0 : j - 1;
-		if (squared < bestSquared || (squared == bestSquared && edge < bestEdge))
-		{
-			bestSquared = squared;
-			bestEdge = edge;
-			best.pointA = onSegment;
-			best.pointB = v;
-		}
-	}
-	for (int end = 0; end < 2; ++end)
-	{
-		cd2Vec p = end == 0 ? pair->p1 : pair->p2;
-		for (int i = 0; i < count; ++i)
-		{
-			cd2Vec onEdge = ClosestOnSegment(PolygonEdge(polygon, i), p);
-			cdReal squared = cd2VecDistanceSquared(p, onEdge);
-			if (squared < bestSquared || (squared == bestSquared && i < bestEdge))
-			{
-				bestSquared = squared;
-				bestEdge = i;
-				best.pointA = p;
-				best.pointB = onEdge;
-			}
-		}
-	}
-	best.distance = cdSqrt(bestSquared);
-	*edgeB = bestEdge;
-	return best;
-}
-
 /* The closest points of the two cores (pointA on the segment) and the edges holding them (in: the
  * max-separation edges), as manifold2.c's ClosestCores finds them. */
-static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdReal separationB,
-									 int lowestVertex, int* edgeA, int* edgeB)
+static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdReal separationB, int* edgeA,
+									 int* edgeB)
 {
 	const Core* polygon = pair->polygon;
 	/* The cores are apart along an axis by clearly more than the round-off of the orientation
@@ -417,18 +342,33 @@ static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdRea
 	}
 	if (separationA >= separationB)
 	{
-		if (*edgeA == 0 && clear)
-		{
-			return ClosestAbove(pair, lowestVertex, edgeB); /* separationA > 0: clear above the line */
-		}
-		/* A capsule's core crossing or touching the segment, or a polygon wholly behind the line
-		 * (its centroid said in front: round-off): search every edge, crossings included. */
+		/* The segment's side separates the whole core: no core edge crosses its line, so the
+		 * four-candidate test stands for the segment-segment test against each edge when that
+		 * separation clearly exceeds the round-off of the orientation tests, here relative to the
+		 * farthest vertex. The generic path's search, candidate for candidate and edge for edge:
+		 * its choices on near ties (which end of a capsule, which vertex of a flat bottom) are
+		 * the same. A core crossing or touching the line (a capsule) takes the full test. */
 		cd2Segment side = SegmentSide(pair, *edgeA);
-		cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, 0));
+		bool sideClear = false;
+		if (separationA > CD_R(0.0))
+		{
+			cdReal farthest = CD_R(0.0);
+			for (int j = 0; j < polygon->count; ++j)
+			{
+				cd2Vec r = cd2Sub(polygon->vertices[j], side.p1);
+				farthest = cdMax(farthest, cdAbs(r.x) + cdAbs(r.y));
+			}
+			cdReal size = cdAbs(d.x) + cdAbs(d.y) + farthest;
+			sideClear = separationA > CD_R(64.0) * CD_REAL_EPSILON * size;
+		}
+		cd2ClosestPoints best = sideClear ? ClosestNotCrossing(side, PolygonEdge(polygon, 0))
+										  : cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, 0));
 		*edgeB = 0;
 		for (int i = 1; i < polygon->count; ++i)
 		{
-			cd2ClosestPoints candidate = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, i));
+			cd2Segment edge = PolygonEdge(polygon, i);
+			cd2ClosestPoints candidate =
+				sideClear ? ClosestNotCrossing(side, edge) : cd2ClosestPointsSegmentSegment(side, edge);
 			if (candidate.distance < best.distance)
 			{
 				best = candidate;
@@ -503,14 +443,11 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	 * to mispredict (selects, not branches: which vertex is lowest is data, not a pattern). */
 	cd2Vec back = cd2Neg(n);
 	cdReal separationA = CD_REAL_MAX, separationBack = CD_REAL_MAX, separationB = -CD_REAL_MAX;
-	int lowestVertex = 0, edgeB = 0;
+	int edgeB = 0;
 	for (int j = 0; j < count; ++j)
 	{
 		cd2Vec v = vertices[j];
-		cdReal h = cd2Dot(n, cd2Sub(v, p1));
-		bool lower = h < separationA;
-		lowestVertex = lower ? j : lowestVertex;
-		separationA = lower ? h : separationA;
+		separationA = cdMin(separationA, cd2Dot(n, cd2Sub(v, p1)));
 		separationBack = cdMin(separationBack, cd2Dot(back, cd2Sub(v, p2)));
 		cdReal s = cdMin(cd2Dot(normals[j], cd2Sub(p1, v)), cd2Dot(normals[j], cd2Sub(p2, v)));
 		bool higher = s > separationB;
@@ -537,7 +474,7 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	cdReal largest = cdMax(separationA, separationB);
 	if (pair->segments || largest > separatedTolerance)
 	{
-		closest = ClosestCores(pair, separationA, separationB, lowestVertex, &closestEdgeA, &closestEdgeB);
+		closest = ClosestCores(pair, separationA, separationB, &closestEdgeA, &closestEdgeB);
 		haveClosest = true;
 		if (closest.distance > separatedTolerance)
 		{
@@ -615,8 +552,7 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 	{
 		if (!haveClosest)
 		{
-			closest =
-				ClosestCores(pair, separationA, separationB, lowestVertex, &closestEdgeA, &closestEdgeB);
+			closest = ClosestCores(pair, separationA, separationB, &closestEdgeA, &closestEdgeB);
 		}
 		if (closest.distance > CD_R(0.0))
 		{
