@@ -1508,6 +1508,28 @@ static void TestDirectCapsuleEndsTie(void)
 				generic.pointCount, generic.points[0].id, (double)generic.points[0].separation);
 }
 
+/* fuzz_chain2 (fuzz/corpus/fuzz_chain2/regression-capsule-face-side-1e9): a segment ending 0.125
+ * below the upright core of a capsule of radius 1e9. The closest points are the segment's end and
+ * a point inside the core, so the capsule's face is tried; the generic path takes the side of the
+ * two-sided core that faces the gap (here square to both sides: the first), the dedicated routine
+ * took the side that separated most and reported that face's contact (normal +x) where the
+ * generic path reports the segment's face. */
+static void TestDirectCapsuleFaceSide(void)
+{
+	cd2ChainSegment s = {V(0, 0), V(0, -1e9), V(1e9, -0.125001937), V(-1e9, -1e9)};
+	cd2Capsule capsule = {V(1e9, -1e9), V(1e9, 1e9), CD_R(1e9)};
+	cd2Manifold direct = cd2CollideChainSegmentCapsuleDirect(&s, capsule, CD_R(0.0));
+	cd2Manifold generic = cd2CollideChainSegmentCapsule(&s, capsule, CD_R(0.0));
+	/* In double the segment's end (rounded from the fuzzer's floats) ends just clear of the capsule:
+	 * no contact either way. */
+	TEST_CHECKF(direct.pointCount == generic.pointCount && (CD_DOUBLE || direct.pointCount > 0) &&
+					direct.points[0].id == generic.points[0].id &&
+					(double)cd2VecDistance(direct.normal, generic.normal) <= 1e-6,
+				"direct %d points id %x normal (%.9g %.9g), generic %d points id %x normal (%.9g %.9g)",
+				direct.pointCount, direct.points[0].id, (double)direct.normal.x, (double)direct.normal.y,
+				generic.pointCount, generic.points[0].id, (double)generic.normal.x, (double)generic.normal.y);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1607,6 +1629,7 @@ int main(void)
 	TEST_RUN(TestDirectCapsuleEndOnSegmentEnd);
 	TEST_RUN(TestDirectCapsuleEndOnCoreLine);
 	TEST_RUN(TestDirectCapsuleEndsTie);
+	TEST_RUN(TestDirectCapsuleFaceSide);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

@@ -502,7 +502,16 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 				}
 				else
 				{
-					ClipOnPolygon(out, pair, closestEdgeB, false);
+					/* The shape's face holding its closest point; of a capsule's two-sided core, the
+					 * side facing the gap (against u), as the generic path picks it. */
+					int face = closestEdgeB;
+					if (pair->segments)
+					{
+						cd2Vec u =
+							cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
+						face = cd2Dot(polygon->normals[0], cd2Neg(u)) >= CD_R(0.0) ? 0 : 1;
+					}
+					ClipOnPolygon(out, pair, face, false);
 				}
 				if (out->pointCount > 0 &&
 					SmallestSeparation(out) <= closest.distance - total + separatedTolerance)
