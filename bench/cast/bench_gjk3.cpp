@@ -1,17 +1,26 @@
 // collide_bench_gjk3: 3D GJK distance, shape cast and time of impact against Bullet (Debian
 // libbullet-dev) on the same pairs in the same run.
 //
-// Distance: cd3Distance against btGjkPairDetector::getClosestPoints (btVoronoiSimplexSolver, margins
-// 0) on separated pairs: box-box (half extents 0.2-0.7) and hull(32)-hull(32) (32 points on random
-// ellipsoids), random orientations, centres 1.5-3 apart (pairs that touch are redrawn: Bullet would
-// run EPA). A third column: cd3DistanceCached with the cache of the same pair one frame earlier
-// (the pair turned by 0.02 rad and moved by 0.01), as a simulation calls it.
+// Distance: cd3Distance against Bullet's two GJK distance routines on the same separated pairs:
+// btGjkPairDetector::getClosestPoints (btVoronoiSimplexSolver) and btGjkEpaSolver2::Distance (the
+// GJK of btGjkEpa2.h, usually the faster; its first support is along the line between the centres,
+// as collide's). Same shapes on both sides: Bullet's boxes and hulls get margin 0 (btBoxShape keeps
+// its full half extents when its margin is set to 0, and btGjkEpaSolver2::Distance reads supports
+// without margin anyway), so both compute the exact distance between the same solids. Pairs:
+// box-box (half extents 0.2-0.7) and hull(32)-hull(32) (32 points on random ellipsoids), random
+// orientations; "spread": centres 1.5-3 apart, "near contact": gaps 0.005-0.05, half the box pairs
+// face on face (as collide_bench_manifold3's distance rows, the case a physics step sees; pairs
+// that touch are redrawn: Bullet would run EPA). A third column: cd3DistanceCached with the cache
+// of the same pair one frame earlier (the pair turned by 0.02 rad and moved by 0.01), as a
+// simulation calls it. Bullet's GJKs stop at relative tolerances of about 1e-4 (btGjkEpa2) and
+// 1e-6 (btGjkPairDetector); collide at 8 epsilon plus the round-off of its support values, so it
+// does at least the same work.
 // Shape cast: cd3ShapeCast against btGjkConvexCast (A moves 4 units towards B, B static);
 // time of impact: cd3TimeOfImpact (collide's target 1 slop, tolerance 0.25 slop) against
 // btContinuousConvexCollision (A moves and turns, B turns), both on box/box and box/cylinder(16).
 // Bullet's cast and TOI stop at their own fixed tolerances, so the work is comparable but not
-// identical. Each figure is the median of 9 runs of about 20 ms, collide's and Bullet's runs
-// alternating so that both see the same machine load.
+// identical. Each figure is the median of 9 runs of about 20 ms of thread CPU time, collide's and
+// Bullet's runs alternating so that both see the same machine load.
 // Usage: collide_bench_gjk3 [--quick | --distance (the distance rows only) | --profile-distance [kind 0-3] |
 // --count kind]
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
@@ -27,11 +36,11 @@
 #include "collide/collide.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <memory>
 #include <random>
 #include <vector>
@@ -40,12 +49,19 @@ namespace
 {
 const int kPairs = 1024;
 
-using Clock = std::chrono::steady_clock;
+// Thread CPU time: other processes on a shared machine do not stall this clock (they still share
+// its caches).
+double ThreadSeconds()
+{
+	timespec t;
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
 
 template <typename F> double NsPerCall(F&& body, double seconds)
 {
 	long long calls = 0;
-	auto start = Clock::now();
+	double start = ThreadSeconds();
 	double elapsed = 0.0;
 	volatile double sink = 0.0;
 	do
@@ -55,7 +71,7 @@ template <typename F> double NsPerCall(F&& body, double seconds)
 			sink = sink + body(i);
 		}
 		calls += kPairs;
-		elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+		elapsed = ThreadSeconds() - start;
 	} while (elapsed < seconds);
 	return 1e9 * elapsed / (double)calls;
 }

@@ -434,7 +434,7 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 
 /* cd3CorePoint, with an oriented box's corner as centre + (+-1) axes: the same sums bit for bit
  * (a product by +-1 is exact) without a branch per axis. */
-static cd3Vec CorePoint(const cd3Core* core, int i)
+static inline cd3Vec CorePoint(const cd3Core* core, int i)
 {
 	if (core->lazyBox)
 	{
@@ -849,7 +849,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 {
 	bool overlapQuery = overlapRadius >= CD_R(0.0);
 	GjkSimplex simplex;
-	simplex.count = 0;
+	memset(&simplex, 0, sizeof(simplex));
 	bool cached = ReadCache(cache, a, b, &simplex);
 	if (!cached)
 	{
@@ -945,9 +945,10 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		if (distanceSquared < bestDistanceSquared)
 		{
-			/* Only the live vertices (a whole-struct copy each step cost a tenth of the time). */
+			/* Three vertices, live or not, in a copy of fixed size (a whole-struct copy each step,
+			 * or one of the live vertices only, went through memcpy calls: a tenth of the time). */
 			best.count = simplex.count;
-			for (int i = 0; i < simplex.count; ++i)
+			for (int i = 0; i < 3; ++i)
 			{
 				best.v[i] = simplex.v[i];
 				best.lambda[i] = simplex.lambda[i];
@@ -971,15 +972,22 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		{
 			break;
 		}
-		GjkVertex vertex = MakeVertex(a, b, indexA, indexB);
-		cdReal vertexSize = VertexSize(&vertex);
+		/* Built in place, in the free slot after the simplex's vertices (at most three remain
+		 * after a solve that does not enclose the origin). */
+		GjkVertex* vertex = &simplex.v[simplex.count];
+		vertex->indexA = indexA;
+		vertex->indexB = indexB;
+		vertex->a = CorePoint(a, indexA);
+		vertex->b = CorePoint(b, indexB);
+		vertex->w = cd3Sub(vertex->a, vertex->b);
+		cdReal vertexSize = VertexSize(vertex);
 		/* The support plane bounds the distance from below, |v| from above: stop when they meet
 		 * within GJK_GAP_TOLERANCE of |v| plus the round-off of the support values
 		 * (GJK_GAP_ROUNDOFF of the largest coordinate of the support points). Below that the
 		 * bound cannot tell support points apart: without it, pairs near contact (a gap far below
 		 * their size) stepped between ties until stalled. In double, where the squares and
 		 * products of any float range fit. */
-		double lowerTimesLength = -(double)cd3Dot(direction, vertex.w);
+		double lowerTimesLength = -(double)cd3Dot(direction, vertex->w);
 		double directionX = (double)direction.x, directionY = (double)direction.y,
 			   directionZ = (double)direction.z;
 		double directionLength =
@@ -998,7 +1006,6 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		{
 			break;
 		}
-		simplex.v[simplex.count] = vertex;
 		simplex.lambda[simplex.count] = CD_R(0.0);
 		size[simplex.count] = vertexSize;
 		++simplex.count;
