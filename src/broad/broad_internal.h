@@ -132,8 +132,9 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		void (*getStats)(const void* self, cdBroadPhaseStats* stats);                                        \
 		/* Checks every invariant, including agreement with the proxy table. */                              \
 		bool (*validate)(const void* self);                                                                  \
-		/* Optional: starts loading what moveProxy(proxyId) will read first (a cache hint only). */          \
-		void (*prefetchMove)(const void* self, int proxyId);                                                 \
+		/* Optional cache hint: starts loading what moveProxy(proxyId) will read first (stage 0), then,      \
+		 * called again a few moves later, what it reads next (stage 1). */                                  \
+		void (*prefetchMove)(const void* self, int proxyId, int stage);                                      \
 	} P##BroadBackend;
 
 CD_BROAD_DECLARE_BACKEND(cd2, cd2Aabb, cd2Ray, cd2BroadPhaseDef)
