@@ -149,7 +149,8 @@ void Usage()
 		"[--max-frame-seconds S]\n"
 		"                           [--cpu-time] [--quick] [--svg file] [--csv file] [--markdown file] "
 		"[--merge-csv a.csv,b.csv]\n"
-		"structures: tree sap grid octree (tree-inc sap-inc: created one by one)");
+		"structures: tree sap grid octree (tree-inc sap-inc: created one by one; tree-single grid-single: "
+		"moved by one MoveProxy call per box instead of MoveProxies)");
 	for (const std::string& name : PeerNames())
 	{
 		std::printf(" %s", name.c_str());
