@@ -318,6 +318,85 @@ static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
 	return result;
 }
 
+/* The search of the generic path over the core's edges for a core wholly and clearly on the front
+ * of the segment's side `side` (size: the coordinate differences' extent): the four-candidate
+ * test per edge, and the answer the generic path's scan in edge order gives (the smallest
+ * distance, the first edge on a tie). Edges are visited from the one ending at the lowest vertex,
+ * whose distance is near the answer, and an edge is skipped when its lower vertex stands higher
+ * above the line than the best distance so far by more than the rounding of the candidates'
+ * distances and of the heights (64 epsilons of the coordinates' size): every candidate of it is
+ * then farther than the best, so it can neither win nor tie. For a box resting just above the
+ * segment that skips the top edge and usually the far side. */
+static cd2ClosestPoints ClosestClearSide(const Pair* pair, cd2Segment side, int sideIndex, cdReal size,
+										 int* edgeB)
+{
+	const Core* polygon = pair->polygon;
+	int count = polygon->count;
+	cd2Vec normal = sideIndex == 0 ? pair->n : cd2Neg(pair->n);
+	cdReal heights[CD2_MAX_POLYGON_VERTICES] = {CD_R(0.0)};
+	int lowest = 0;
+	for (int j = 0; j < count; ++j)
+	{
+		heights[j] = cd2Dot(normal, cd2Sub(polygon->vertices[j], side.p1));
+		lowest = heights[j] < heights[lowest] ? j : lowest;
+	}
+	cdReal margin = CD_R(32.0) * CD_REAL_EPSILON * (cdAbs(side.p1.x) + cdAbs(side.p1.y) + size);
+	int first = lowest == 0 ? count - 1 : lowest - 1;
+	/* Each vertex's candidate (its projection on the side) serves the two edges it ends. */
+	cd2Vec projections[CD2_MAX_POLYGON_VERTICES];
+	cdReal squares[CD2_MAX_POLYGON_VERTICES];
+	for (int j = 0; j < count; ++j)
+	{
+		projections[j] = ClosestOnSegment(side, polygon->vertices[j]);
+		squares[j] = cd2VecDistanceSquared(projections[j], polygon->vertices[j]);
+	}
+	cd2ClosestPoints best = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_REAL_MAX};
+	int bestEdge = count;
+	for (int k = 0; k < count; ++k)
+	{
+		int i = k == 0 ? first : (k <= first ? k - 1 : k); /* first, then the others in order */
+		int next = NextVertex(polygon, i);
+		if (k > 0 && cdMin(heights[i], heights[next]) - margin > best.distance)
+		{
+			continue;
+		}
+		/* ClosestNotCrossing(side, edge i): the candidates in its order, the first strict least. */
+		cd2Segment edge = PolygonEdge(polygon, i);
+		cd2Vec onEdge1 = ClosestOnSegment(edge, side.p1), onEdge2 = ClosestOnSegment(edge, side.p2);
+		cd2Vec pointA = side.p1, pointB = onEdge1;
+		cdReal square = cd2VecDistanceSquared(side.p1, onEdge1);
+		cdReal s1 = cd2VecDistanceSquared(side.p2, onEdge2);
+		if (s1 < square)
+		{
+			square = s1;
+			pointA = side.p2;
+			pointB = onEdge2;
+		}
+		if (squares[i] < square)
+		{
+			square = squares[i];
+			pointA = projections[i];
+			pointB = polygon->vertices[i];
+		}
+		if (squares[next] < square)
+		{
+			square = squares[next];
+			pointA = projections[next];
+			pointB = polygon->vertices[next];
+		}
+		cdReal distance = cdSqrt(square);
+		if (distance < best.distance || (distance == best.distance && i < bestEdge))
+		{
+			best.pointA = pointA;
+			best.pointB = pointB;
+			best.distance = distance;
+			bestEdge = i;
+		}
+	}
+	*edgeB = bestEdge;
+	return best;
+}
+
 /* The closest points of the two cores (pointA on the segment) and the edges holding them (in: the
  * max-separation edges), as manifold2.c's ClosestCores finds them. */
 static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdReal separationB, int* edgeA,
@@ -350,6 +429,7 @@ static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdRea
 		 * the same. A core crossing or touching the line (a capsule) takes the full test. */
 		cd2Segment side = SegmentSide(pair, *edgeA);
 		bool sideClear = false;
+		cdReal size = CD_R(0.0);
 		if (separationA > CD_R(0.0))
 		{
 			cdReal farthest = CD_R(0.0);
@@ -358,17 +438,18 @@ static cd2ClosestPoints ClosestCores(const Pair* pair, cdReal separationA, cdRea
 				cd2Vec r = cd2Sub(polygon->vertices[j], side.p1);
 				farthest = cdMax(farthest, cdAbs(r.x) + cdAbs(r.y));
 			}
-			cdReal size = cdAbs(d.x) + cdAbs(d.y) + farthest;
+			size = cdAbs(d.x) + cdAbs(d.y) + farthest;
 			sideClear = separationA > CD_R(64.0) * CD_REAL_EPSILON * size;
 		}
-		cd2ClosestPoints best = sideClear ? ClosestNotCrossing(side, PolygonEdge(polygon, 0))
-										  : cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, 0));
+		if (sideClear)
+		{
+			return ClosestClearSide(pair, side, *edgeA, size, edgeB);
+		}
+		cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, 0));
 		*edgeB = 0;
 		for (int i = 1; i < polygon->count; ++i)
 		{
-			cd2Segment edge = PolygonEdge(polygon, i);
-			cd2ClosestPoints candidate =
-				sideClear ? ClosestNotCrossing(side, edge) : cd2ClosestPointsSegmentSegment(side, edge);
+			cd2ClosestPoints candidate = cd2ClosestPointsSegmentSegment(side, PolygonEdge(polygon, i));
 			if (candidate.distance < best.distance)
 			{
 				best = candidate;
