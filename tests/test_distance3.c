@@ -422,6 +422,29 @@ static void TestPointInsideLongBox(void)
 				forward, backward, tolerance);
 }
 
+/* fuzz_query3 (fuzz/corpus/fuzz_query3/regression-gjk-lean-needle-triangle): a point 1.75e-4 from
+ * a box 1.6e-3 x 1 x 2.5e-3. GJK's lean solver took the face weights of a needle triangle (0.0025
+ * by 1) from products of dot products whose round-off exceeded them, stepped away, and the next
+ * support, a duplicate, stopped it at the previous segment's 5.95e-4. Checked against the closest
+ * point on the box and the brute-force reference, in both orders. */
+static void TestPointNearThinBox(void)
+{
+	cd3Box box = {{CD_R(0.000125000006), CD_R(-0.000274999999), CD_R(-0.00124999997)},
+				  {CD_R(0.00079999998), CD_R(0.5), CD_R(0.00123749999)},
+				  {CD_R(-0.5), CD_R(-0.5), CD_R(-0.5), CD_R(-0.5)}};
+	cd3Vec p = {CD_R(-0.000449999992), CD_R(0.000699999975), CD_R(0.00121250004)};
+	cd3Shape boxShape = cd3MakeBoxShape(box);
+	cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
+	double closest = (double)cd3Length(cd3Sub(cd3ClosestPointOnBox(box, p), p));
+	double expected = RefDistance(&boxShape, &point);
+	double forward = (double)cd3Distance(&boxShape, &point).distance;
+	double backward = (double)cd3Distance(&point, &boxShape).distance;
+	TEST_CHECKF(fabs(closest - expected) <= 1e-6, "closest point %.9g away, reference %.9g", closest,
+				expected);
+	TEST_CHECKF(fabs(forward - expected) <= 1e-6 && fabs(backward - expected) <= 1e-6,
+				"distances %.9g, %.9g, reference %.9g", forward, backward, expected);
+}
+
 /* ---- simplex cache --------------------------------------------------------------------------- */
 #if CD_DOUBLE
 #define CACHE_AGREEMENT 1e-9
@@ -544,6 +567,7 @@ int main(void)
 	TEST_RUN(TestHullVertexCounts);
 	TEST_RUN(TestDistanceStatus);
 	TEST_RUN(TestPointInsideLongBox);
+	TEST_RUN(TestPointNearThinBox);
 	TEST_RUN(TestCacheAgrees);
 	TEST_RUN(TestCacheSavesIterations);
 	return TEST_SUMMARY();

@@ -552,13 +552,9 @@ static void WriteCache(cd3SimplexCache* cache, const GjkSimplex* simplex)
  * newest vertex, an enclosed origin, a cached simplex whose vertices are all old) goes to the
  * robust solver above, with its tie rules, tolerances and refinement. */
 
-/* Sine of a triangle's largest angle below which the lean solver leaves the face to the robust
- * one: the face weights' round-off grows as epsilon over this sine. */
-#define GJK_LEAN_FLAT_TOLERANCE CD_R(1.0e-2)
-
-/* Sine of a triangle's largest angle above which its face weights come from Ericson's products of
- * dot products (round-off at most 4 epsilon): every triangle with its largest angle below 150 degrees. */
-#define GJK_LEAN_ROUND_SINE CD_R(0.5)
+/* How fat a triangle or tetrahedron must be for the lean solver (LeanTriangle,
+ * LeanTetrahedron): about the sine of its angles, relative to the scale of its coordinates. */
+#define GJK_LEAN_FAT CD_R(0.1)
 
 /* Round-off of a support value relative to the largest coordinate of the support points (w = a -
  * b and its dot product each round at about one epsilon of their largest terms). */
@@ -637,28 +633,39 @@ static void LeanSegment(const GjkVertex* s, int p, int q, LeanSolution* out)
 }
 
 /* Closest point of the triangle a-b-c, c the newest vertex (Ericson's region tests with the
- * origin as the query point); false when the triangle is too flat for the lean path. The face
- * weights are not Ericson's products of dot products (their round-off grows as 1/sine^2) but the
- * projections on the normal taken from the two shorter edges, as the robust solver does. */
+ * origin as the query point); false when the triangle is too thin for them. Their products of dot
+ * products round at about epsilon times the largest edge squared times the largest squared length
+ * of an edge or a vertex, while the face weights they give add up to |ab x ac|^2: the tests are
+ * trusted when that sum exceeds GJK_LEAN_FAT^2 times this scale (a needle, or a triangle far from
+ * the origin compared with its size, goes to the robust solver: fuzz_query3 found a needle of
+ * 0.0025 by 1 whose face weights came out wrong and made GJK stop 4e-4 off). */
 static bool LeanTriangle(const GjkVertex* s, int ia, int ib, int ic, LeanSolution* out)
 {
 	cd3Vec a = s[ia].w, b = s[ib].w, c = s[ic].w;
-	cd3Vec ab = cd3Sub(b, a), ac = cd3Sub(c, a);
+	cd3Vec ab = cd3Sub(b, a), ac = cd3Sub(c, a), bc = cd3Sub(c, b);
 	cdReal d1 = -cd3Dot(ab, a), d2 = -cd3Dot(ac, a);
+	cdReal d3 = -cd3Dot(ab, b), d4 = -cd3Dot(ac, b);
+	cdReal d5 = -cd3Dot(ab, c), d6 = -cd3Dot(ac, c);
+	cdReal va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+	cdReal longestEdge = cdMax(cd3LengthSquared(ab), cdMax(cd3LengthSquared(ac), cd3LengthSquared(bc)));
+	cdReal farthest = cdMax(cd3LengthSquared(a), cdMax(cd3LengthSquared(b), cd3LengthSquared(c)));
+	cdReal sum = va + vb + vc;
+	if (!(sum > GJK_LEAN_FAT * GJK_LEAN_FAT * longestEdge * cdMax(longestEdge, farthest)))
+	{
+		return false;
+	}
 	if (d1 <= CD_R(0.0) && d2 <= CD_R(0.0))
 	{
 		LeanVertex(s, ia, out);
 		out->usesNewest = false;
 		return true;
 	}
-	cdReal d3 = -cd3Dot(ab, b), d4 = -cd3Dot(ac, b);
 	if (d3 >= CD_R(0.0) && d4 <= d3)
 	{
 		LeanVertex(s, ib, out);
 		out->usesNewest = false;
 		return true;
 	}
-	cdReal vc = d1 * d4 - d3 * d2;
 	if (vc <= CD_R(0.0) && d1 >= CD_R(0.0) && d3 <= CD_R(0.0))
 	{
 		LeanEdge(s, ia, ib, d1 / (d1 - d3), out);
@@ -666,62 +673,37 @@ static bool LeanTriangle(const GjkVertex* s, int ia, int ib, int ic, LeanSolutio
 		return true;
 	}
 	out->usesNewest = true;
-	cdReal d5 = -cd3Dot(ab, c), d6 = -cd3Dot(ac, c);
 	if (d6 >= CD_R(0.0) && d5 <= d6)
 	{
 		LeanVertex(s, ic, out);
 		return true;
 	}
-	cdReal vb = d5 * d2 - d1 * d6;
 	if (vb <= CD_R(0.0) && d2 >= CD_R(0.0) && d6 <= CD_R(0.0))
 	{
 		LeanEdge(s, ia, ic, d2 / (d2 - d6), out);
 		return true;
 	}
-	cdReal va = d3 * d6 - d5 * d4;
 	if (va <= CD_R(0.0) && d4 - d3 >= CD_R(0.0) && d5 - d6 >= CD_R(0.0))
 	{
 		LeanEdge(s, ib, ic, (d4 - d3) / ((d4 - d3) + (d5 - d6)), out);
 		return true;
 	}
-
-	/* The face. Ericson's va, vb, vc are its weights, accurate to about epsilon over the squared
-	 * sine of the triangle's largest angle (their sum is |ab x ac|^2); below GJK_LEAN_ROUND_SINE
-	 * the weights come from projections on the normal taken from the two shorter edges, as in the
-	 * robust solver, whose round-off grows only as epsilon over the sine. */
-	cd3Vec bc = cd3Sub(c, b);
-	cdReal lab = cd3LengthSquared(ab), lac = cd3LengthSquared(ac), lbc = cd3LengthSquared(bc);
-	int shorterEdges = lbc >= lab && lbc >= lac ? 0 : lac >= lab ? 1 : 2;
-	cdReal edgeProduct = shorterEdges == 0 ? lab * lac : shorterEdges == 1 ? lab * lbc : lac * lbc;
-	cdReal la = va, lb = vb, lc = vc, sum = va + vb + vc;
-	cd3Vec n = cd3Cross(ab, ac);
-	if (!(va >= CD_R(0.0) && vb >= CD_R(0.0) && vc >= CD_R(0.0) &&
-		  sum > GJK_LEAN_ROUND_SINE * GJK_LEAN_ROUND_SINE * edgeProduct))
+	/* The face: the weights va, vb, vc (non-negative here up to round-off). */
+	if (!(va >= CD_R(0.0) && vb >= CD_R(0.0) && vc >= CD_R(0.0)))
 	{
-		n = shorterEdges == 0 ? n : shorterEdges == 1 ? cd3Cross(ab, bc) : cd3Cross(ac, bc);
-		if (!(cd3LengthSquared(n) > GJK_LEAN_FLAT_TOLERANCE * GJK_LEAN_FLAT_TOLERANCE * edgeProduct))
-		{
-			return false;
-		}
-		la = cd3Dot(n, cd3Cross(b, c));
-		lb = cd3Dot(n, cd3Cross(c, a));
-		lc = cd3Dot(n, cd3Cross(a, b));
-		sum = la + lb + lc;
-		if (!(la >= CD_R(0.0) && lb >= CD_R(0.0) && lc >= CD_R(0.0) && sum > CD_R(0.0)))
-		{
-			return false; /* the region tests and the weights disagree: round-off, robust path */
-		}
+		return false;
 	}
 	cdReal inverse = CD_R(1.0) / sum;
 	out->count = 3;
 	out->index[0] = ia;
 	out->index[1] = ib;
 	out->index[2] = ic;
-	out->lambda[0] = la * inverse;
-	out->lambda[1] = lb * inverse;
-	out->lambda[2] = lc * inverse;
+	out->lambda[0] = va * inverse;
+	out->lambda[1] = vb * inverse;
+	out->lambda[2] = vc * inverse;
 	out->v =
 		cd3Add(cd3Add(cd3Scale(out->lambda[0], a), cd3Scale(out->lambda[1], b)), cd3Scale(out->lambda[2], c));
+	cd3Vec n = cd3Cross(ab, ac);
 	out->direction = cd3Dot(n, a) > CD_R(0.0) ? cd3Neg(n) : n;
 	return true;
 }
@@ -741,7 +723,7 @@ static LeanStatus LeanTetrahedron(const GjkVertex* s, LeanSolution* out)
 	cd3Vec abc = cd3Cross(ab, ac);
 	cdReal volume = cd3Dot(abc, ad);
 	cdReal edgeProduct = cd3LengthSquared(ab) * cd3LengthSquared(ac) * cd3LengthSquared(ad);
-	if (!(volume * volume > GJK_DEGENERATE_TOLERANCE * GJK_DEGENERATE_TOLERANCE * edgeProduct))
+	if (!(volume * volume > GJK_LEAN_FAT * GJK_LEAN_FAT * edgeProduct))
 	{
 		return LEAN_GIVE_UP;
 	}
@@ -789,7 +771,8 @@ static LeanStatus LeanTetrahedron(const GjkVertex* s, LeanSolution* out)
  * weights set, and *v and *direction written); otherwise the simplex is left as it was, for the
  * robust solver (which also gives the enclosing weights when the lean one finds the origin
  * enclosed, LEAN_ENCLOSED). */
-static LeanStatus SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec* direction)
+static LeanStatus SolveLean(GjkSimplex* simplex, cdReal* size, cdReal bestDistanceSquared, cd3Vec* v,
+							cd3Vec* direction)
 {
 	LeanSolution solution;
 	if (simplex->count == 2)
@@ -811,7 +794,9 @@ static LeanStatus SolveLean(GjkSimplex* simplex, cdReal* size, cd3Vec* v, cd3Vec
 			return status;
 		}
 	}
-	if (!solution.usesNewest)
+	/* Exact GJK gets closer at every step: a lean step that does not is round-off, which the
+	 * robust solver (its tie rules) handles. */
+	if (!solution.usesNewest || !(cd3LengthSquared(solution.v) < bestDistanceSquared))
 	{
 		return LEAN_GIVE_UP;
 	}
@@ -898,7 +883,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			}
 			if (largest <= GJK_LEAN_HIGH && largest >= GJK_LEAN_LOW)
 			{
-				LeanStatus status = SolveLean(&simplex, size, &v, &direction);
+				LeanStatus status = SolveLean(&simplex, size, bestDistanceSquared, &v, &direction);
 				if (status == LEAN_ENCLOSED && overlapQuery)
 				{
 					*touching = true; /* no weights needed for a yes */
