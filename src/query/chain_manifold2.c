@@ -301,20 +301,33 @@ static cd2Vec ClosestOnSegment(cd2Segment g, cd2Vec p)
  * without the orientation tests that look for a crossing. */
 static cd2ClosestPoints ClosestNotCrossing(cd2Segment a, cd2Segment b)
 {
-	cd2Vec candidatesA[4] = {a.p1, a.p2, ClosestOnSegment(a, b.p1), ClosestOnSegment(a, b.p2)};
-	cd2Vec candidatesB[4] = {ClosestOnSegment(b, a.p1), ClosestOnSegment(b, a.p2), b.p1, b.p2};
-	int best = 0;
-	cdReal bestDistanceSquared = cd2VecDistanceSquared(candidatesA[0], candidatesB[0]);
-	for (int i = 1; i < 4; ++i)
+	/* Scalars in the candidates' order (a's ends, then b's), the first strict least kept. */
+	cd2Vec onB1 = ClosestOnSegment(b, a.p1), onB2 = ClosestOnSegment(b, a.p2);
+	cd2Vec onA1 = ClosestOnSegment(a, b.p1), onA2 = ClosestOnSegment(a, b.p2);
+	cd2ClosestPoints result = {a.p1, onB1, CD_R(0.0)};
+	cdReal best = cd2VecDistanceSquared(a.p1, onB1);
+	cdReal s = cd2VecDistanceSquared(a.p2, onB2);
+	if (s < best)
 	{
-		cdReal distanceSquared = cd2VecDistanceSquared(candidatesA[i], candidatesB[i]);
-		if (distanceSquared < bestDistanceSquared)
-		{
-			best = i;
-			bestDistanceSquared = distanceSquared;
-		}
+		best = s;
+		result.pointA = a.p2;
+		result.pointB = onB2;
 	}
-	cd2ClosestPoints result = {candidatesA[best], candidatesB[best], cdSqrt(bestDistanceSquared)};
+	s = cd2VecDistanceSquared(onA1, b.p1);
+	if (s < best)
+	{
+		best = s;
+		result.pointA = onA1;
+		result.pointB = b.p1;
+	}
+	s = cd2VecDistanceSquared(onA2, b.p2);
+	if (s < best)
+	{
+		best = s;
+		result.pointA = onA2;
+		result.pointB = b.p2;
+	}
+	result.distance = cdSqrt(best);
 	return result;
 }
 
