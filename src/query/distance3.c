@@ -552,9 +552,18 @@ static void WriteCache(cd3SimplexCache* cache, const GjkSimplex* simplex)
  * newest vertex, an enclosed origin, a cached simplex whose vertices are all old) goes to the
  * robust solver above, with its tie rules, tolerances and refinement. */
 
-/* How fat a triangle or tetrahedron must be for the lean solver (LeanTriangle,
- * LeanTetrahedron): about the sine of its angles, relative to the scale of its coordinates. */
+/* How fat a triangle must be for the lean solver (LeanTriangle): about the sine of its angles,
+ * relative to the scale of its coordinates. Its weights then round at about epsilon / 0.01 of
+ * that scale: moved within its plane by that much, the closest point is farther by the square of
+ * it over twice the distance, below the float tolerances above the touching distance. */
 #define GJK_LEAN_FAT CD_R(0.1)
+
+/* Volume of a tetrahedron relative to the product of three edges below which the lean solver
+ * leaves it to the robust one. The lean tetrahedron only reads signs (which side of each face the
+ * origin lies) and hands its faces to LeanTriangle: a wrong sign where the origin is within
+ * round-off of a face costs nothing (that face's point is then as close, or the robust solver
+ * checks an enclosure), so a sign needs only to be well above the volume's round-off. */
+#define GJK_LEAN_THIN_VOLUME CD_R(1.0e-3)
 
 /* Round-off of a support value relative to the largest coordinate of the support points (w = a -
  * b and its dot product each round at about one epsilon of their largest terms). */
@@ -723,7 +732,7 @@ static LeanStatus LeanTetrahedron(const GjkVertex* s, LeanSolution* out)
 	cd3Vec abc = cd3Cross(ab, ac);
 	cdReal volume = cd3Dot(abc, ad);
 	cdReal edgeProduct = cd3LengthSquared(ab) * cd3LengthSquared(ac) * cd3LengthSquared(ad);
-	if (!(volume * volume > GJK_LEAN_FAT * GJK_LEAN_FAT * edgeProduct))
+	if (!(volume * volume > GJK_LEAN_THIN_VOLUME * GJK_LEAN_THIN_VOLUME * edgeProduct))
 	{
 		return LEAN_GIVE_UP;
 	}
