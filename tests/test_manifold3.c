@@ -1267,6 +1267,155 @@ static void TestFuzzRegressions(void)
 	}
 }
 
+#if defined(COLLIDE_DOUBLE)
+#define REGRESSION_REL 1e-8
+#else
+#define REGRESSION_REL 1e-4
+#endif
+
+/* One fuzz case in both orders: every point on both surfaces and within the speculative distance,
+ * within REGRESSION_REL of the case's magnitude `scale`; against the reference distance (computed
+ * independently in double; 0: overlapping): a contact exactly when it is within the speculative
+ * distance, the smallest separation the distance (at most 0 when overlapping). A negative
+ * reference: only the surfaces, the speculative bound and cd3Distance's contact decision. */
+static void CheckFuzzCase(const char* name, const cd3Shape* a, const cd3Shape* b, double speculative,
+						  double reference, double scale)
+{
+	double tol = REGRESSION_REL * scale;
+	for (int order = 0; order < 2; ++order)
+	{
+		const cd3Shape* first = order == 0 ? a : b;
+		const cd3Shape* second = order == 0 ? b : a;
+		cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
+		double off = WorstOffSurface(&m, first, second);
+		double smallest = MinSeparation(&m);
+		TEST_CHECKF(off <= tol, "%s, order %d: %d points, %.3g off a surface", name, order, m.pointCount,
+					off);
+		TEST_CHECKF(m.pointCount == 0 || smallest <= speculative + tol, "%s, order %d: separation %.9g", name,
+					order, smallest);
+		double distance = reference >= 0.0 ? reference : (double)cd3Distance(first, second).distance;
+		if (fabs(distance - speculative) > tol)
+		{
+			TEST_CHECKF((m.pointCount > 0) == (distance <= speculative),
+						"%s, order %d: %d points, distance %.9g", name, order, m.pointCount, distance);
+		}
+		if (reference > 0.0 && m.pointCount > 0)
+		{
+			TEST_CHECKF(fabs(smallest - reference) <= tol, "%s, order %d: separation %.9g, reference %.9g",
+						name, order, smallest, reference);
+		}
+		if (reference == 0.0)
+		{
+			TEST_CHECKF(m.pointCount > 0 && smallest <= tol, "%s, order %d: %d points, separation %.9g", name,
+						order, m.pointCount, smallest);
+		}
+	}
+}
+
+/* Boxes and AABBs with zero extents (a segment, a flat box): a reference face with no area is
+ * clipped along its length (SegmentFaceContact), and an edge pair lying in a triangle's plane is
+ * no edge contact (EdgeContact's realized). The exact fuzz inputs; references from closed forms
+ * in double (segment-triangle: endpoints against the triangle, segment against its edges). */
+static void TestZeroExtentRegressions(void)
+{
+	/* regression-segment-box-aabb-speculative: a box segment 0.01875 below an AABB's -y face:
+	 * the segment's face did not clip the AABB's face along its length (a point 0.111 off). */
+	cd3Shape aabb = AabbShape(-0.12125, 0.01125, -0.00375, 0.02, 0.01375, 0.00625);
+	cd3Shape segment = BoxShape(-0.00625, -0.0075, 0.005, 0.00375, 0, 0, 0, 0, 0, 1);
+	CheckFuzzCase("segment-box-aabb", &segment, &aabb, 0.12125, 0.01875, 0.12125);
+	/* regression-flat-aabbs-far-speculative: two flat AABBs 5e8 apart, speculative 1e9. */
+	cd3Shape flatA = AabbShape(-5e8, -2.5e8, 0, 1e9, 1e9, 0);
+	cd3Shape flatB = AabbShape(-1e9, -1e9, -1e9, -1e9, -2.5e8, 0);
+	CheckFuzzCase("flat-aabbs", &flatA, &flatB, 1e9, 5e8, 1e9);
+	/* regression-coplanar-triangle-segment-box: an AABB segment in a triangle's plane, 4.88e-4
+	 * from it in the plane: 3 points at separation 0 on the triangle's corner. */
+	cd3Shape triangle =
+		TriangleShape(7.625e-4, 7.625e-4, 0, 7.625e-4, 1.375e-4, -6.25e-5, 7.625e-4, -1.225e-3, 7.625e-4);
+	segment = AabbShape(7.625e-4, 1.375e-4, 7.625e-4, 7.625e-4, 7.625e-4, 7.625e-4);
+	CheckFuzzCase("coplanar-triangle-segment", &triangle, &segment, 7.625e-4, 0.0004880365763868388,
+				  1.225e-3);
+	/* regression-segment-aabb-triangle: an AABB segment in a triangle's plane, through it. */
+	segment = AabbShape(-7.875e-6, 6.125e-6, 6.125e-6, 0, 6.125e-6, 6.125e-6);
+	triangle = TriangleShape(-1.375e-6, 6.125e-6, 6.125e-6, 6.125e-6, 6.125e-6, 6.125e-6, 1.125e-6, 6.125e-6,
+							 1.5e-6);
+	CheckFuzzCase("segment-aabb-triangle", &segment, &triangle, 0.0, 0.0, 7.875e-6);
+	/* regression-segment-aabb-triangle-overlap: the same 648194.6 apart in the plane: 3 points. */
+	segment = AabbShape(612500, 612500, 612500, 612500, 612500, 1050000);
+	triangle = TriangleShape(612500, -987500, 612500, 612500, 612500, -1225000, 612500, 112500, 200000);
+	CheckFuzzCase("segment-aabb-triangle-apart", &segment, &triangle, 0.0, 648194.6081232086, 1.225e6);
+	/* regression-huge-segment-box-triangle: a segment 1e9 long in a triangle's plane, 8.16e8
+	 * from it: a point at separation 0. */
+	segment = AabbShape(-1e9, -1e9, -1e9, 1.25e-7, -1e9, -1e9);
+	triangle = TriangleShape(1e9, -1e9, -1e9, 1e9, -1.25e-6, -1.25e-6, -1.25e-6, -1.25e-6, -1.25e-6);
+	CheckFuzzCase("huge-segment-triangle", &segment, &triangle, 0.0, 816496580.9277252, 1e9);
+	/* regression-huge-triangle-flat-aabb-speculative: a flat AABB 1e9 long and 1.2e-7 wide against
+	 * a triangle reaching 1e9, speculative 1e9: a point 1e9 off the AABB. */
+	triangle = TriangleShape(3.75e-9, -1e-8, 8.75e-9, 5e-9, -900969344, 1e9, -1e9, -1e9, -1e9);
+	cd3Shape flat = AabbShape(1e-9, -1e-9, -1e9, 1e-9, 1.1625e-7, 1e-9);
+	CheckFuzzCase("huge-triangle-flat-aabb", &triangle, &flat, 1e9, -1.0, 1e9);
+	/* regression-huge-triangle-aabb-edge: a unit AABB against a triangle reaching 1e9: the SAT's
+	 * edge axis is round-off, the edges' closest points 5e8 apart (separation +2.74 reported). */
+	cd3Shape box = AabbShape(-12.375, 0.125, -0.75, -12.125, 1.375, 0.125);
+	triangle = TriangleShape(-8.125, 0.25, 0.5, 1, -0.125, -1e9, -1e9, -1e9, -1e9);
+	CheckFuzzCase("huge-triangle-aabb-edge", &box, &triangle, 1e9, -1.0, 1e9);
+}
+
+/* Cores (capsules, spheres) and cases found by fuzz_manifold3 once the zero-extent fixes changed
+ * its path: a core 1e9 long, whose GJK distance and SAT axes are round-off near a small
+ * polytope, takes GJK's nearest core point when its segment passes beside the SAT's face; boxes
+ * with zero extents against each other take the closest points of their faces. References in
+ * double: the segment's distance to the point in closed form; 0 where the core (1.003 and 6
+ * from the box, double sampling) is well inside the capsule's radius. */
+static void TestLongCoreRegressions(void)
+{
+	/* regression-box-long-capsule-point: a capsule 1e9 long, radius 12.5, its core 1.003 from a
+	 * small box: GJK says 0, so the SAT path; the SAT face's prism is beside the segment, and its
+	 * one point was the far end, 1e9 off the box. */
+	cd3Shape box =
+		BoxShape(1.125, -0.375, 0.625, 0.625, 2, 0.125, 0.664534271, 0.241648823, 0.241648823, 0.664534271);
+	cd3Shape capsule = CapsuleShape(-12.25, -1.875, 1, 1e9, -12.5, -12.5, 12.5);
+	CheckFuzzCase("box-long-capsule", &box, &capsule, 0.0, 0.0, 1e9);
+	/* regression-long-capsule-beside-box: the core passes 6 beside a box (radius 12.25): the
+	 * segment's part over the SAT face lies 5e8 below the box; a point at separation +4.2e8. */
+	capsule = CapsuleShape(-10.75, 1e-9, -1e9, 0, -12.5, -10.75, 12.25);
+	box = BoxShape(0, -4.625, -12.5, 11.875, 1.875, 1.125, 8.75e-10, -1.875e-9, 0, -1);
+	CheckFuzzCase("long-capsule-beside-box", &capsule, &box, 1e9, 0.0, 1e9);
+	/* regression-long-segment-point-box: a segment 1e9 long ending 70 from a point box; its far
+	 * end was the contact (separation 17.5 along the SAT's x face). */
+	cd3Shape segment = CapsuleShape(-17.5, 103.75, -1e9, -70, 0, 0, 0);
+	cd3Shape point = BoxShape(0, 0, 0, 0, 0, 0, 0, 0, 0, 1);
+	CheckFuzzCase("long-segment-point-box", &segment, &point, 1e9, 69.9999999999999, 1e9);
+	/* regression-segment-flat-aabb-corner: a segment AABB whose end touches a flat AABB's edge:
+	 * the flat face's clip against the segment's end face (a point, no side planes) kept all of
+	 * it (a point 6e-8 off the segment). */
+	segment = AabbShape(-1.225e-7, -1.225e-7, -1.25e-7, -1.225e-7, -1.225e-7, -1.225e-7);
+	cd3Shape flat = AabbShape(-1.225e-7, -1.225e-7, -1.225e-7, -6.25e-8, -1.225e-7, -1.2125e-7);
+	CheckFuzzCase("segment-flat-aabb-corner", &segment, &flat, 3.25e-8, 0.0, 1.25e-7);
+	/* regression-segment-tiny-far-box: a box of half size 9e-7 at 1e9 (a point in float), 1e9
+	 * above a segment 1e9 long: its face's edges vanish in world coordinates. */
+	segment = AabbShape(-1e9, -1e9, -1e9, 1.25e-7, -1e9, -1e9);
+	cd3Shape tiny = BoxShape(-1e9, -1e9, -9e-7, 9e-7, 9e-7, 9e-7, 0, 0, -0.717791617, -0.696257889);
+	CheckFuzzCase("segment-tiny-far-box", &segment, &tiny, 1e9, 1e9, 1e9);
+	/* regression-huge-slab-triangle-point: a slab 1e9 wide and 2e-9 thin against a triangle
+	 * reaching 1e9: one point 5e8 off the triangle. */
+	cd3Shape slab = BoxShape(0, 0, 0, 1e-9, 1e9, 1e9, 0.5, 0.5, 0.5, 0.5);
+	cd3Shape triangle = TriangleShape(1e9, -12.5, -12.5, -12.5, -12.5, -9.75, -12.5, -1e9, -1e9);
+	CheckFuzzCase("huge-slab-triangle", &slab, &triangle, 0.0, -1.0, 1e9);
+	/* regression-sphere-collinear-triangle: a triangle collinear within round-off (1e3 wide, 1e9
+	 * long: a segment, no face axis) inside a sphere of radius 1e9 centred on its corner: the
+	 * point was the centre, 5e8 off both surfaces. */
+	triangle = TriangleShape(-1187.5, -1150, -675, -175, -787.5, -1e9, -1250, -1250, -1250);
+	cd3Sphere ball = {cd3MakeVec(CD_R(-1250.0), CD_R(-1250.0), CD_R(-1250.0)), CD_R(1e9)};
+	cd3Shape sphere = cd3MakeSphereShape(ball);
+	CheckFuzzCase("sphere-collinear-triangle", &triangle, &sphere, 0.0, 0.0, 1e9);
+	/* regression-double-long-capsule-aabb (double build): a capsule 2.5e14 long whose end passes
+	 * 6.7e6 from an AABB, speculative 1.25e7: the SAT path's tolerance (1e-4 of the core's
+	 * length) called them touching; a point 6.3e6 off the AABB. */
+	cd3Shape aabb = AabbShape(-12375000, -1000000, 1625000, 1125000, -500000, 7125000);
+	cd3Shape capsule2 = CapsuleShape(7250000, 1625000, 0, 0, 2.45635236e+14, 1375000, 1000000);
+	CheckFuzzCase("double-long-capsule-aabb", &aabb, &capsule2, 12500000, -1.0, 2.5e14);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -1284,5 +1433,7 @@ int main(void)
 	TEST_RUN(TestEpaLargeHulls);
 	TEST_RUN(TestFuzzFindings);
 	TEST_RUN(TestFuzzRegressions);
+	TEST_RUN(TestZeroExtentRegressions);
+	TEST_RUN(TestLongCoreRegressions);
 	return TEST_SUMMARY();
 }

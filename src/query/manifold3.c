@@ -36,6 +36,8 @@
 #define PARALLEL_CAPSULE CD_R(1.0e-2)
 /* The closest-point normal is aligned with a face when their cosine exceeds this. */
 #define FACE_ALIGNED CD_R(0.9999)
+/* Round-off of a point computed from the shapes' coordinates, relative to their magnitude. */
+#define ROUND_OFF_TOLERANCE (CD_R(64.0) * CD_REAL_EPSILON)
 
 /* Clip buffers: the incident face's vertices plus one per reference side. Faces of more vertices
  * (cylinder caps of hundreds of segments) lose the vertices beyond the buffer. */
@@ -43,6 +45,14 @@
 #define SIDE_TAG 64u
 
 #define ID_VERTEX_PAIR 0x3fffffffu
+
+/* Out of line: the polytope path is cd3CollideBoxBox's rare fallback, and inlined there it made
+ * the common box-box manifold ~10% slower (bench/manifold3: layout of the hot path). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MANIFOLD_NOINLINE __attribute__((noinline))
+#else
+#define MANIFOLD_NOINLINE
+#endif
 
 typedef struct ClipVertex
 {
@@ -301,26 +311,75 @@ static cd3Vec FaceCentre(const cd3Polytope* p, int face)
 	return cd3Scale(CD_R(1.0) / (cdReal)count, sum);
 }
 
-/* The outward normal of the side plane through edge v0-v1 of face `face` (world normal n): zero
- * (no clipping) for a zero-length edge of a face with no area in that direction (a flat box's end;
- * bounding the face there would clip the incident polygon to a sliver that round-off loses). False
- * for a face that is a point (a zero-size box): it has no side planes at all. */
-static bool FaceSideNormal(const cd3Polytope* p, int face, cd3Vec v0, cd3Vec v1, cd3Vec n, cd3Vec* side)
+/* The ends of a face with no area (a box with zero extents): its first vertex and the vertex
+ * farthest from it (the same vertex for a face that is a point). */
+static void FaceEnds(const cd3Polytope* p, int face, cd3Vec* r0, cd3Vec* r1)
 {
-	*side = cd3Cross(cd3Sub(v1, v0), n);
-	if (cd3LengthSquared(*side) > CD_R(0.0))
+	int e = p->faceEdges[face];
+	*r0 = WorldVertex(p, p->edges[e].origin);
+	*r1 = *r0;
+	cdReal farthest = CD_R(0.0);
+	int guard = 0;
+	do
 	{
-		return true;
-	}
-	cd3Vec outward = cd3Sub(cd3Lerp(v0, v1, CD_R(0.5)), FaceCentre(p, face));
-	return cd3LengthSquared(cd3MulSub(outward, cd3Dot(outward, n), n)) > CD_R(0.0);
+		cd3Vec v = WorldVertex(p, p->edges[e].origin);
+		cdReal d = cd3LengthSquared(cd3Sub(v, *r0));
+		if (d > farthest)
+		{
+			farthest = d;
+			*r1 = v;
+		}
+		e = p->edges[e].next;
+	} while (e != p->faceEdges[face] && ++guard < p->edgeCount);
 }
 
-/* A reference face that is a point r (a zero-size box): the incident face clipped to it is where
- * the line through r along the face normal n crosses it; none when the line passes beside it.
- * flip: ref is B. */
-static cd3Manifold PointFaceContact(cd3Vec r, cd3Vec n, int face, const cd3Polytope* inc, int incident,
-									bool flip, cdReal speculativeDistance, cdReal size)
+/* A face with an edge of zero length in world coordinates (normal n): a face of a box with zero
+ * extents (a segment or a point), or of a box tiny against its coordinates (1e-6 at 1e9). */
+static bool FaceHasNoArea(const cd3Polytope* p, int face, cd3Vec n)
+{
+	int guard = 0;
+	int e = p->faceEdges[face];
+	do
+	{
+		cd3Vec v0 = WorldVertex(p, p->edges[e].origin);
+		cd3Vec v1 = WorldVertex(p, p->edges[p->edges[e].next].origin);
+		if (!(cd3LengthSquared(cd3Cross(cd3Sub(v1, v0), n)) > CD_R(0.0)))
+		{
+			return true;
+		}
+		e = p->edges[e].next;
+	} while (e != p->faceEdges[face] && ++guard < p->edgeCount);
+	return false;
+}
+
+/* Narrows [*lo, *hi] to the t with start + t * rate <= limit. */
+static void ClipInterval(cdReal start, cdReal rate, cdReal limit, cdReal* lo, cdReal* hi)
+{
+	if (rate > CD_R(0.0))
+	{
+		*hi = cdMin(*hi, (limit - start) / rate);
+	}
+	else if (rate < CD_R(0.0))
+	{
+		*lo = cdMax(*lo, (limit - start) / rate);
+	}
+	else if (!(start <= limit))
+	{
+		*lo = CD_R(1.0);
+		*hi = CD_R(0.0);
+	}
+}
+
+/* A reference face with no area (a box with zero extents): the segment r0-r1, or the point r0
+ * when r1 == r0. Its side planes would be a slab of zero width, which round-off of the incident
+ * polygon's coordinates crosses, and its ends have zero-length edges, so clipping the incident
+ * polygon does not work. Instead the segment is clipped to where the lines along the face normal
+ * n cross the incident face: up to two points, none when every line passes beside it (the
+ * callers then try the other features, or the distance). A point's line may pass within a slack
+ * of the shapes' size (REALIZED_TOLERANCE) beside the face; a segment clips exactly: at 1e9 the
+ * slack is 1e5, enough to take a point well outside a triangle. flip: ref is B. */
+static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, const cd3Polytope* inc,
+									  int incident, bool flip, cdReal speculativeDistance, cdReal size)
 {
 	cd3Manifold m = EmptyManifold();
 	cd3Plane local = inc->planes[incident];
@@ -331,13 +390,39 @@ static cd3Manifold PointFaceContact(cd3Vec r, cd3Vec n, int face, const cd3Polyt
 	{
 		return m;
 	}
-	cdReal separation = (incOffset - cd3Dot(incNormal, r)) / rate;
-	if (!(separation <= speculativeDistance))
+	if (FaceHasNoArea(inc, incident, incNormal))
+	{
+		/* The incident face is a segment or a point too (two boxes with zero extents): its side
+		 * planes bound nothing. The closest points of the two, when they lie along n within
+		 * round-off (otherwise the SAT's axis is not the contact's: none). */
+		cd3Segment reference = {r0, r1}, other;
+		FaceEnds(inc, incident, &other.p1, &other.p2);
+		cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(reference, other);
+		cd3Vec gap = cd3Sub(cp.pointB, cp.pointA);
+		cdReal separation = cd3Dot(n, gap);
+		cdReal magnitude = size + cdMax(cd3Length(cp.pointA), cd3Length(cp.pointB));
+		if (separation <= speculativeDistance &&
+			cd3Length(cd3MulSub(gap, separation, n)) <= ROUND_OFF_TOLERANCE * magnitude)
+		{
+			AddPoint(&m, cd3MulAdd(cp.pointA, CD_R(0.5) * separation, n), separation,
+					 PackFaceId(face, incident, 0u, 0u, flip));
+			m.normal = flip ? cd3Neg(n) : n;
+		}
+		return m;
+	}
+	/* Along the segment (t in [0, 1]) the separation to the incident plane is s0 + t * sRate and
+	 * the crossing c0 + t * dc. */
+	cd3Vec d = cd3Sub(r1, r0);
+	cdReal s0 = (incOffset - cd3Dot(incNormal, r0)) / rate;
+	cdReal sRate = -cd3Dot(incNormal, d) / rate;
+	if (!(s0 <= speculativeDistance) && !(s0 + sRate <= speculativeDistance))
 	{
 		return m;
 	}
-	cd3Vec crossing = cd3MulAdd(r, separation, n);
-	/* Inside every side plane of the incident face, within round-off of the shapes' size. */
+	cd3Vec c0 = cd3MulAdd(r0, s0, n);
+	cd3Vec dc = cd3MulAdd(d, sRate, n);
+	cdReal lo = CD_R(0.0), hi = CD_R(1.0);
+	cdReal slackLo = CD_R(0.0), slackHi = CD_R(1.0);
 	int guard = 0;
 	int e = inc->faceEdges[incident];
 	do
@@ -346,16 +431,45 @@ static cd3Manifold PointFaceContact(cd3Vec r, cd3Vec n, int face, const cd3Polyt
 		cd3Vec v1 = WorldVertex(inc, inc->edges[inc->edges[e].next].origin);
 		cd3Vec edge = cd3Sub(v1, v0);
 		cd3Vec side = cd3Cross(edge, incNormal);
-		if (cd3Dot(side, cd3Sub(crossing, v0)) > REALIZED_TOLERANCE * size * cd3Length(edge))
+		cdReal start = cd3Dot(side, cd3Sub(c0, v0));
+		cdReal along = cd3Dot(side, dc);
+		ClipInterval(start, along, CD_R(0.0), &lo, &hi);
+		ClipInterval(start, along, REALIZED_TOLERANCE * size * cd3Length(edge), &slackLo, &slackHi);
+		e = inc->edges[e].next;
+	} while (e != inc->faceEdges[incident] && ++guard < inc->edgeCount);
+	if (!(lo <= hi))
+	{
+		if (cd3LengthSquared(d) > CD_R(0.0) || !(slackLo <= slackHi))
 		{
 			return m;
 		}
-		e = inc->edges[e].next;
-	} while (e != inc->faceEdges[incident] && ++guard < inc->edgeCount);
-	m.normal = flip ? cd3Neg(n) : n;
-	AddPoint(&m, cd3MulAdd(r, CD_R(0.5) * separation, n), separation,
-			 PackFaceId(face, incident, 0u, 0u, flip));
+		lo = CD_R(0.5) * (slackLo + slackHi);
+		hi = lo;
+	}
+	cdReal ts[2] = {lo, hi};
+	int count = hi > lo && cd3LengthSquared(d) > CD_R(0.0) ? 2 : 1;
+	for (int i = 0; i < count; ++i)
+	{
+		cdReal separation = s0 + ts[i] * sRate;
+		if (separation <= speculativeDistance)
+		{
+			AddPoint(&m, cd3MulAdd(cd3MulAdd(r0, ts[i], d), CD_R(0.5) * separation, n), separation,
+					 PackFaceId(face, incident, (uint32_t)i, (uint32_t)i, flip));
+		}
+	}
+	if (m.pointCount > 0)
+	{
+		m.normal = flip ? cd3Neg(n) : n;
+	}
 	return m;
+}
+
+/* The outward normal of the side plane through edge v0-v1 of face `face` (world normal n). False
+ * for a zero-length edge: the face has no area (SegmentFaceContact). */
+static bool FaceSideNormal(cd3Vec v0, cd3Vec v1, cd3Vec n, cd3Vec* side)
+{
+	*side = cd3Cross(cd3Sub(v1, v0), n);
+	return cd3LengthSquared(*side) > CD_R(0.0);
 }
 
 /* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
@@ -391,10 +505,12 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 		int next = ref->edges[e].next;
 		v1 = next == ref->faceEdges[face] ? first : WorldVertex(ref, ref->edges[next].origin);
 		cd3Vec sideNormal;
-		if (!FaceSideNormal(ref, face, v0, v1, n, &sideNormal))
+		if (!FaceSideNormal(v0, v1, n, &sideNormal))
 		{
-			return PointFaceContact(first, n, face, inc, incident, flip, speculativeDistance,
-									ref->size + inc->size);
+			cd3Vec r0, r1;
+			FaceEnds(ref, face, &r0, &r1);
+			return SegmentFaceContact(r0, r1, n, face, inc, incident, flip, speculativeDistance,
+									  ref->size + inc->size);
 		}
 		uint32_t tag = SIDE_TAG + (uint32_t)(side < (int)SIDE_TAG - 1 ? side : (int)SIDE_TAG - 1);
 		count = ClipToPlane(in, count, sideNormal, v0, tag, out);
@@ -453,9 +569,15 @@ static cd3Manifold VertexContact(cd3ClosestPoints cp)
 	return m;
 }
 
-static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat)
+/* realized: the edges' closest points lie along the axis (they are |separation| apart within
+ * `tolerance`), i.e. the edges cross as seen along it. An edge pair of a flat polytope's plane (a
+ * segment box lying in a triangle's plane) has the plane's normal for axis and need not: its
+ * separation is that of the face, and the pair can be apart in the plane. */
+static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat,
+							   cdReal tolerance, bool* realized)
 {
 	cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(WorldEdge(a, sat->edgeA), WorldEdge(b, sat->edgeB));
+	*realized = cp.distance <= cdAbs(sat->edgeSeparation) + tolerance;
 	cd3Manifold m = EmptyManifold();
 	m.normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
@@ -465,38 +587,55 @@ static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const
 }
 
 /* The manifold the separating axis test picks: a face contact, or an edge contact when an edge
- * pair separates noticeably more (or the face's incident polygon clips away). */
+ * pair separates noticeably more (or the face's incident polygon clips away). checkEdges: an edge
+ * pair whose edges do not cross along its axis (EdgeContact) gives no contact (the caller then
+ * takes the distance); without it, its closest points stand. */
 static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat,
-							  cdReal speculativeDistance)
+							  cdReal speculativeDistance, bool checkEdges)
 {
 	cdReal size = a->size + b->size;
 	bool useB =
 		sat->faceA < 0 || (sat->faceB >= 0 && sat->faceSeparationB > sat->faceSeparationA + FACE_BIAS * size);
 	int face = useB ? sat->faceB : sat->faceA;
 	cdReal faceSeparation = useB ? sat->faceSeparationB : sat->faceSeparationA;
-	bool useEdges = sat->edgeA >= 0 && (face < 0 || sat->edgeSeparation > faceSeparation + EDGE_BIAS * size);
+	bool edges = sat->edgeA >= 0;
+	bool useEdges = edges && (face < 0 || sat->edgeSeparation > faceSeparation + EDGE_BIAS * size);
+	bool realized = true;
+	cd3Manifold edge;
+	if (useEdges && sat->edgeSeparation <= speculativeDistance)
+	{
+		edge = EdgeContact(a, b, sat, REALIZED_TOLERANCE * size, &realized);
+		if (realized || !checkEdges)
+		{
+			return edge;
+		}
+		/* Not an edge contact after all: the faces decide. */
+		edges = false;
+		useEdges = false;
+	}
 	if (!useEdges && face >= 0)
 	{
 		cd3Manifold m = useB ? FaceContact(b, face, a, true, speculativeDistance)
 							 : FaceContact(a, face, b, false, speculativeDistance);
 		int other = useB ? sat->faceA : sat->faceB;
-		if (m.pointCount == 0 && sat->edgeA < 0 && other >= 0)
+		if (m.pointCount == 0 && !edges && other >= 0)
 		{
 			/* The incident polygon clipped away against a sliver of a face (a box 1e-9 thin whose
 			 * side planes round-off of the incident coordinates crosses): the other shape's face. */
 			m = useB ? FaceContact(a, other, b, false, speculativeDistance)
 					 : FaceContact(b, other, a, true, speculativeDistance);
 		}
-		if (m.pointCount > 0 || sat->edgeA < 0)
+		if (m.pointCount > 0 || !edges)
 		{
 			return m;
 		}
 	}
-	if (sat->edgeA < 0 || sat->edgeSeparation > speculativeDistance)
+	if (!edges || sat->edgeSeparation > speculativeDistance)
 	{
 		return EmptyManifold();
 	}
-	return EdgeContact(a, b, sat);
+	edge = EdgeContact(a, b, sat, REALIZED_TOLERANCE * size, &realized);
+	return realized || !checkEdges ? edge : EmptyManifold();
 }
 
 static cdReal ManifoldMinSeparation(const cd3Manifold* m)
@@ -583,8 +722,8 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 	return m;
 }
 
-static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b, cd3SatResult sat,
-									   cdReal speculativeDistance);
+MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b,
+														 cd3SatResult sat, cdReal speculativeDistance);
 
 static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
 {
@@ -605,16 +744,24 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	}
 	if (separation <= CD_R(0.0))
 	{
-		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance);
+		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		if (m.pointCount == 0)
+		{
+			/* No contact on the SAT's axis: a degenerate polytope (a point box against a triangle,
+			 * a segment box in a triangle's plane) can lack the separating axis, so the distance
+			 * decides; overlapping, the SAT's edge pair stands. */
+			cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
+			if (cp.distance > CD_R(0.0))
+			{
+				return cp.distance <= speculativeDistance ? VertexContact(cp) : m;
+			}
+			m = SatContact(a, b, &sat, speculativeDistance, false);
+		}
 		if (m.pointCount > 0)
 		{
 			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size));
-			return m;
 		}
-		/* No contact on the SAT's axis: a degenerate polytope (a point box against a triangle) can
-		 * lack the separating axis, so the distance decides. */
-		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
-		return cp.distance > CD_R(0.0) && cp.distance <= speculativeDistance ? VertexContact(cp) : m;
+		return m;
 	}
 	/* Apart: the SAT separation only bounds the distance from below. The SAT manifold stands when
 	 * its deepest point realizes the distance (closest features face-vertex or edge-edge);
@@ -627,7 +774,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	cdReal tolerance = REALIZED_TOLERANCE * (a->size + b->size);
 	if (cp.distance <= separation + tolerance)
 	{
-		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance);
+		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
 		if (m.pointCount > 0 && cdAbs(ManifoldMinSeparation(&m) - cp.distance) <= tolerance)
 		{
 			if (m.pointCount == 1 && (m.points[0].id & CD3_FEATURE_EDGES) != 0u && cp.distance > tolerance)
@@ -648,7 +795,9 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 
 /* ---- rounded core against polytope ------------------------------------------------------------ */
 
-/* Clips segment p1-p2 to the side planes of polytope face `face` (world). */
+/* Clips segment p1-p2 to the side planes of polytope face `face` (world). A zero-length edge
+ * of a face that is a segment (a box with zero extents) bounds it at that end: its plane is
+ * across the face, through the end. A face that is a point has no side planes: false. */
 static bool ClipSegmentToFace(const cd3Polytope* p, int face, cd3Vec n, cd3Vec* p1, cd3Vec* p2)
 {
 	cdReal t0 = CD_R(0.0), t1 = CD_R(1.0);
@@ -659,9 +808,14 @@ static bool ClipSegmentToFace(const cd3Polytope* p, int face, cd3Vec n, cd3Vec* 
 		cd3Vec v0 = WorldVertex(p, p->edges[e].origin);
 		cd3Vec v1 = WorldVertex(p, p->edges[p->edges[e].next].origin);
 		cd3Vec side;
-		if (!FaceSideNormal(p, face, v0, v1, n, &side))
+		if (!FaceSideNormal(v0, v1, n, &side))
 		{
-			return false;
+			cd3Vec outward = cd3Sub(v0, FaceCentre(p, face));
+			side = cd3MulSub(outward, cd3Dot(outward, n), n);
+			if (!(cd3LengthSquared(side) > CD_R(0.0)))
+			{
+				return false;
+			}
 		}
 		cdReal start = cd3Dot(side, cd3Sub(*p1, v0));
 		cdReal rate = cd3Dot(side, d);
@@ -699,7 +853,8 @@ static bool ClipSegmentToFace(const cd3Polytope* p, int face, cd3Vec n, cd3Vec* 
 /* Face contact of the core segment p1-p2 (radius r) with face `face` of b; normal -n (world) from
  * the core to b. Returns false when the segment clips away. */
 static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b, int face,
-							cdReal speculativeDistance, bool twoPoints, cd3Manifold* m)
+							cdReal speculativeDistance, bool twoPoints, cdReal tolerance, cd3Vec nearest,
+							cd3Manifold* m)
 {
 	cd3Plane local = b->planes[face];
 	cd3Vec n = cd3RotateVector(b->transform.q, local.normal);
@@ -715,20 +870,32 @@ static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b
 	}
 	else
 	{
-		/* One point: the deepest along n of the segment's part over the face. The deepest end can
-		 * lie beside the face when an edge axis separates within EDGE_BIAS of it (a capsule's
-		 * end past the face's side, at a slant): its projection on the face plane is then off
-		 * the face. A segment that passes beside the face keeps its deepest end. */
+		/* One point: the deepest along n of the segment's part over the face, when it is as deep
+		 * as the deepest end within `tolerance`. The deepest end can lie beside the face when an
+		 * edge axis separates within EDGE_BIAS of it (a capsule's end past the face's side, at a
+		 * slant): its projection on the face plane is then off the face. The part over the face
+		 * can also lie far outside the polytope (a long segment at a slant, whose SAT face is
+		 * round-off): the deepest end stays then. A segment that passes beside the face (or a face
+		 * that is a point: a zero-size box) gives the core's point nearest b (`nearest`, GJK's):
+		 * the deepest end can be 1e9 away along a long core that the SAT calls touching a point
+		 * 70 away (the SAT path's tolerance is relative to the core's length). */
 		count = 1;
+		if (cd3Dot(n, p2) < cd3Dot(n, p1))
+		{
+			q[0] = p2;
+		}
 		cd3Vec c1 = p1, c2 = p2;
 		if (ClipSegmentToFace(b, face, n, &c1, &c2))
 		{
-			q[0] = c1;
-			q[1] = c2;
+			cd3Vec c = cd3Dot(n, c2) < cd3Dot(n, c1) ? c2 : c1;
+			if (cd3Dot(n, c) - cd3Dot(n, q[0]) <= tolerance)
+			{
+				q[0] = c;
+			}
 		}
-		if (cd3Dot(n, q[1]) < cd3Dot(n, q[0]))
+		else
 		{
-			q[0] = q[1];
+			q[0] = nearest;
 		}
 	}
 	*m = EmptyManifold();
@@ -748,9 +915,44 @@ static bool CoreFaceContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b
 	return true;
 }
 
+/* A core much longer than its reach to b keeps only the part within that reach of b's centroid:
+ * the rest lies farther than r + speculativeDistance from every point of b (b lies within its
+ * size of the centroid), so the contact is the same. Along a core 1e9 long beside a unit box
+ * (1e14 in double), GJK and the SAT's edge axes are round-off, and every tolerance relative to
+ * the pair's size (REALIZED_TOLERANCE) would take gaps of 1e5 for touching. False when no part
+ * is within reach. Ordinary cores are left as they are. */
+static bool TrimCore(cd3Vec* p1, cd3Vec* p2, cdReal r, const cd3Polytope* b, cdReal speculativeDistance)
+{
+	cd3Vec axis = cd3Sub(*p2, *p1);
+	cdReal length = cd3Length(axis);
+	cdReal reach = CD_R(2.0) * b->size + r + cdMax(speculativeDistance, CD_R(0.0));
+	if (!(length > CD_R(4.0) * reach))
+	{
+		return true;
+	}
+	cd3Vec u = cd3Scale(CD_R(1.0) / length, axis);
+	cd3Vec centre = cd3TransformPoint(b->transform, b->centroid);
+	cdReal along = cd3Dot(cd3Sub(centre, *p1), u);
+	cdReal lo = cdMax(along - reach, CD_R(0.0));
+	cdReal hi = cdMin(along + reach, length);
+	if (!(lo < hi))
+	{
+		return false;
+	}
+	/* Each cut from the nearer end: its round-off is then that of the short distance. */
+	cd3Vec start = *p1, end = *p2;
+	*p1 = lo <= CD_R(0.5) * length ? cd3MulAdd(start, lo, u) : cd3MulSub(end, length - lo, u);
+	*p2 = hi <= CD_R(0.5) * length ? cd3MulAdd(start, hi, u) : cd3MulSub(end, length - hi, u);
+	return true;
+}
+
 static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b,
 									   cdReal speculativeDistance)
 {
+	if (!TrimCore(&p1, &p2, r, b, speculativeDistance))
+	{
+		return EmptyManifold();
+	}
 	cd3Capsule coreCapsule = {p1, p2, CD_R(0.0)};
 	cd3Shape core = cd3MakeCapsuleShape(coreCapsule);
 	cd3ClosestPoints cp = cd3Distance(&core, &b->shape);
@@ -772,7 +974,8 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 			int face = IncidentFace(b, u); /* the face whose normal is closest to -u */
 			cd3Vec n = cd3RotateVector(b->transform.q, b->planes[face].normal);
 			if (cd3Dot(n, u) <= -FACE_ALIGNED && cdAbs(cd3Dot(n, axis)) <= PARALLEL_CAPSULE * axisLength &&
-				CoreFaceContact(p1, p2, r, b, face, speculativeDistance, true, &m) && m.pointCount == 2)
+				CoreFaceContact(p1, p2, r, b, face, speculativeDistance, true, CD_R(0.0), p1, &m) &&
+				m.pointCount == 2)
 			{
 				return m;
 			}
@@ -803,19 +1006,32 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 	}
 	if (sat.faceB < 0)
 	{
-		/* A degenerate triangle with no axis: the closest points are all there is. */
-		m.normal = DefaultNormal();
-		AddPoint(&m, cp.pointA, -r, ID_VERTEX_PAIR);
+		/* A degenerate triangle with no axis (collinear: its longest edge a-b is all of it): the
+		 * closest points, along the gap, or across the edge (and the core's axis) when they
+		 * touch. The point is midway between the surfaces, as everywhere (it was the core's
+		 * point, r / 2 off both surfaces: 5e8 for a sphere of radius 1e9). */
+		cd3Vec u = cd3Normalize(gap);
+		if (cd3LengthSquared(u) == CD_R(0.0))
+		{
+			cd3Vec edge = cd3Sub(WorldVertex(b, 1), WorldVertex(b, 0));
+			u = cd3Normalize(cd3Cross(axis, edge));
+			u = cd3LengthSquared(u) > CD_R(0.0) ? u : cd3Perpendicular(edge);
+			u = cd3LengthSquared(u) > CD_R(0.0) ? u : DefaultNormal();
+		}
+		m.normal = u;
+		cdReal separation = cp.distance - r;
+		AddPoint(&m, cd3MulAdd(cp.pointA, r + CD_R(0.5) * separation, u), separation, ID_VERTEX_PAIR);
 		return m;
 	}
 	cd3Vec n = cd3RotateVector(b->transform.q, b->planes[sat.faceB].normal);
 	bool parallel = capsule && cdAbs(cd3Dot(n, axis)) <= PARALLEL_CAPSULE * axisLength;
-	if (parallel && CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, true, &m) &&
+	if (parallel && CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, true, CD_R(0.0), p1, &m) &&
 		m.pointCount > 0)
 	{
 		return m;
 	}
-	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, &m);
+	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, REALIZED_TOLERANCE * size, cp.pointA,
+					&m);
 	return m;
 }
 
