@@ -135,6 +135,11 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		/* Optional cache hint: starts loading what moveProxy(proxyId) will read first (stage 0), then,      \
 		 * called again a few moves later, what it reads next (stage 1). */                                  \
 		void (*prefetchMove)(const void* self, int proxyId, int stage);                                      \
+		/* Optional: the box query of each proxyIds[i] with its own fat box, calling fcn(proxyIds[i],        \
+		 * other, context) for every proxy `other` whose fat box overlaps it (itself included), in any       \
+		 * order. NULL: the frontend calls query once per proxy. */                                          \
+		void (*queryMany)(const void* self, const int* proxyIds, int count, cdBroadPairSinkFcn* fcn,         \
+						  void* context);                                                                    \
 	} P##BroadBackend;
 
 CD_BROAD_DECLARE_BACKEND(cd2, cd2Aabb, cd2Ray, cd2BroadPhaseDef)
