@@ -784,6 +784,8 @@ static void CopyHull(MutableHull* m, const cd3Hull* source)
 	memcpy(m->faceEdges, source->faceEdges, 6 * sizeof(int32_t));
 	memcpy(m->planes, source->planes, 6 * sizeof(cd3Plane));
 	m->hull.vertices = m->vertices;
+	/* Assembled by hand: no columns (they would be the source's). */
+	m->hull.vertexColumns = NULL;
 	m->hull.edges = m->edges;
 	m->hull.faceEdges = m->faceEdges;
 	m->hull.planes = m->planes;
@@ -981,7 +983,64 @@ static void TestValidator(void)
 	CopyHull(&m, box);
 	m.hull.faceCount = 5; /* open surface */
 	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_INVALID_ARGUMENT);
+	/* The support columns: the builder's match its vertices (padding: vertex 0), and columns
+	 * that say otherwise (a vertex moved in `vertices` only) are refused. */
+	TEST_CHECK(box->vertexColumns != NULL);
+	cdReal columns[3 * CD3_HULL_COLUMN_STRIDE(8)];
+	for (int i = 0; i < 3 * CD3_HULL_COLUMN_STRIDE(8); ++i)
+	{
+		columns[i] = box->vertexColumns[i];
+	}
+	CopyHull(&m, box);
+	m.hull.vertexColumns = columns;
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_OK);
+	m.vertices[6] = cd3Scale(CD_R(0.5), m.vertices[6]);
+	TEST_CHECK(cd3ValidateHull(&m.hull) == CD_ERROR_INVALID_ARGUMENT);
 	cd3DestroyHull(box);
+	/* Padding repeats vertex 0: a hull of 5 vertices has 3 padding entries per column. */
+	static const cd3Vec pyramid[5] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5f, 0.5f, 1}};
+	cd3Hull* hull = NULL;
+	TEST_CHECK(cd3ComputeHull(pyramid, 5, &hull) == CD_OK);
+	if (hull != NULL)
+	{
+		int stride = CD3_HULL_COLUMN_STRIDE(hull->vertexCount);
+		TEST_CHECK(hull->vertexCount == 5 && stride == 8);
+		for (int i = 0; i < stride; ++i)
+		{
+			cd3Vec v = hull->vertices[i < hull->vertexCount ? i : 0];
+			TEST_CHECKF(hull->vertexColumns[i] == v.x && hull->vertexColumns[stride + i] == v.y &&
+							hull->vertexColumns[2 * stride + i] == v.z,
+						"column entry %d", i);
+		}
+	}
+	cd3DestroyHull(hull);
+}
+
+/* GJK's hull supports read the vertex columns; a hull without them (assembled by hand) is read
+ * from its vertices. Both must give the very same answers: the same first-maximum vertex. */
+static void TestColumnsAgreeWithVertices(void)
+{
+	TestRng rng = TestRngMake(0xc01u);
+	int compared = 0;
+	for (int i = 0; i < 2000; ++i)
+	{
+		cd3Shape a = RandomShape(&rng, CD3_SHAPE_HULL);
+		cd3Shape b = RandomShape(&rng, i % 3 == 0 ? CD3_SHAPE_BOX : CD3_SHAPE_HULL);
+		cd3Hull plainA = *a.hull.hull;
+		plainA.vertexColumns = NULL;
+		cd3Shape plain = a;
+		plain.hull.hull = &plainA;
+		TEST_CHECK(a.hull.hull->vertexColumns != NULL);
+		cd3ClosestPoints withColumns = cd3Distance(&a, &b);
+		cd3ClosestPoints withVertices = cd3Distance(&plain, &b);
+		TEST_CHECKF(withColumns.distance == withVertices.distance &&
+						cd3VecEqual(withColumns.pointA, withVertices.pointA) &&
+						cd3VecEqual(withColumns.pointB, withVertices.pointB),
+					"pair %d: distance %.9g with the columns, %.9g without", i, (double)withColumns.distance,
+					(double)withVertices.distance);
+		++compared;
+	}
+	TEST_CHECK(compared == 2000);
 }
 
 /* ---- allocation failures ------------------------------------------------------------------------- */
@@ -1050,6 +1109,7 @@ int main(void)
 	TEST_RUN(TestValidator);
 	TEST_RUN(TestHullShapeBasics);
 	TEST_RUN(TestHullShapeProperties);
+	TEST_RUN(TestColumnsAgreeWithVertices);
 	TEST_RUN(TestOutOfMemory);
 	return TEST_SUMMARY();
 }

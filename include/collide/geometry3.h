@@ -101,7 +101,15 @@ typedef struct cd3Hull
 	cd3Vec centroid;		  /* centre of volume */
 	cdReal volume;
 	cd3Aabb bounds; /* tight bounds of the vertices */
+	/* The vertices again as three columns (all x, then all y, then all z), each of
+	 * CD3_HULL_COLUMN_STRIDE(vertexCount) entries, the padding repeating vertex 0: support
+	 * searches read them four vertices at a time. Must match `vertices` (cd3ValidateHull checks);
+	 * NULL in a hull assembled by hand, which the searches then read from `vertices`. */
+	const cdReal* vertexColumns;
 } cd3Hull;
+
+/* Entries per column of cd3Hull.vertexColumns: the vertex count rounded up to a multiple of 4. */
+#define CD3_HULL_COLUMN_STRIDE(vertexCount) (((vertexCount) + 3) & ~3)
 
 /* The convex hull of `count` points. On success *hull receives a new hull (free it with
  * cd3DestroyHull); on failure *hull is NULL and the result says why: CD_ERROR_INVALID_ARGUMENT
@@ -125,7 +133,8 @@ CD_API cdResult cd3MakeConeHull(cdReal halfHeight, cdReal radius, int segments, 
  * eps E in double) plus 16 eps times the largest coordinate (E: the diagonal of the bounds). */
 CD_API cdReal cd3GetHullTolerance(const cd3Hull* hull);
 
-/* Checks a hull: finite data, indices in range, a closed 2-manifold (twins consistent, each
+/* Checks a hull: finite data, indices in range, vertexColumns (when not NULL) equal to the
+ * vertices, a closed 2-manifold (twins consistent, each
  * face a cycle, V - E + F = 2), unit outward normals, planar convex faces, and every vertex
  * below every face plane, all within cd3GetHullTolerance. CD_OK, CD_ERROR_INVALID_ARGUMENT
  * (NULL, broken indices or topology), CD_ERROR_NOT_FINITE, CD_ERROR_NOT_NORMALIZED or

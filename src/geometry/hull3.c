@@ -903,7 +903,9 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	size_t edgesSize = AlignUp((size_t)halfEdgeCount * sizeof(cd3HullHalfEdge));
 	size_t faceEdgesSize = AlignUp((size_t)faceCount * sizeof(int32_t));
 	size_t planesSize = AlignUp((size_t)faceCount * sizeof(cd3Plane));
-	char* memory = (char*)cdAlloc(headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize);
+	size_t columnsSize = AlignUp(3 * (size_t)CD3_HULL_COLUMN_STRIDE(vertexCount) * sizeof(cdReal));
+	char* memory =
+		(char*)cdAlloc(headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize + columnsSize);
 	/* Each half-edge covers a chain of boundary slots (the dropped vertices in between); its
 	 * twin is the half-edge covering the twin of its chain's last slot. */
 	int* slotEdge = m->slotEdge;
@@ -918,6 +920,7 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	cd3HullHalfEdge* edges = (cd3HullHalfEdge*)(memory + headerSize + verticesSize);
 	int32_t* faceEdges = (int32_t*)(memory + headerSize + verticesSize + edgesSize);
 	cd3Plane* planes = (cd3Plane*)(memory + headerSize + verticesSize + edgesSize + faceEdgesSize);
+	cdReal* columns = (cdReal*)(memory + headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize);
 	memset(hull, 0, sizeof(*hull));
 	int numbered = 0;
 
@@ -1075,6 +1078,15 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	}
 	HVec centroid = volume > 0.0 ? HAdd(reference, HScale(1.0 / (4.0 * volume), moment)) : reference;
 
+	int stride = CD3_HULL_COLUMN_STRIDE(vertexCount);
+	for (int i = 0; i < stride; ++i)
+	{
+		cd3Vec v = vertices[i < vertexCount ? i : 0];
+		columns[i] = v.x;
+		columns[stride + i] = v.y;
+		columns[2 * stride + i] = v.z;
+	}
+	hull->vertexColumns = columns;
 	hull->vertexCount = vertexCount;
 	hull->edgeCount = halfEdgeCount;
 	hull->faceCount = faceCount;
@@ -1497,6 +1509,20 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 	if (!IsFinite(hull))
 	{
 		return CD_ERROR_NOT_FINITE;
+	}
+	/* The support searches read the columns, the rest the vertices: they must say the same. */
+	if (hull->vertexColumns != NULL)
+	{
+		int stride = CD3_HULL_COLUMN_STRIDE(v);
+		for (int i = 0; i < stride; ++i)
+		{
+			cd3Vec p = hull->vertices[i < v ? i : 0];
+			if (!(hull->vertexColumns[i] == p.x && hull->vertexColumns[stride + i] == p.y &&
+				  hull->vertexColumns[2 * stride + i] == p.z))
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+		}
 	}
 	/* Topology: indices in range, twins paired, each face a cycle of its own half-edges. */
 	for (int i = 0; i < e; ++i)

@@ -189,6 +189,7 @@ static void PlaceCore(const cd3Core* local, cd3Transform xf, PlacedCore* placed)
 	core->count = local->count;
 	core->radius = CD_R(0.0);
 	core->localPoints = local->localPoints;
+	core->localColumns = local->localColumns;
 	core->box = local->box;
 	core->lazyBox = local->lazyBox;
 	if (local->box)

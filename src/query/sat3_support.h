@@ -256,39 +256,50 @@ static inline cd3Vec cd3SoaPoint(const cd3SoaPoints* s, int i)
 	return cd3MakeVec(s->x[i], s->y[i], s->z[i]);
 }
 
-/* cd3SupportIndex over the arrays. */
-static inline int cd3SoaSupportIndex(const cd3SoaPoints* s, cd3Vec direction)
+/* cd3SupportIndex over points stored as three coordinate arrays of `padded` entries (a multiple
+ * of 4, padded with copies of point 0): the same index, bit for bit (the same products and sums,
+ * the same first-maximum rule; a padding copy never beats point 0's smaller index). A hull's
+ * vertexColumns have this form. */
+static inline int cd3ColumnsSupportIndex(const cdReal* xs, const cdReal* ys, const cdReal* zs, int count,
+										 int padded, cd3Vec direction)
 {
 #if CD3_SUPPORT_SSE
+	(void)count;
 	__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y), dz = _mm_set1_ps(direction.z);
 	__m128i index = _mm_set_epi32(3, 2, 1, 0);
 	__m128i four = _mm_set1_epi32(4);
-	__m128 best =
-		_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(s->x)), _mm_mul_ps(dy, _mm_loadu_ps(s->y))),
-				   _mm_mul_ps(dz, _mm_loadu_ps(s->z)));
+	__m128 best = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(xs)), _mm_mul_ps(dy, _mm_loadu_ps(ys))),
+							 _mm_mul_ps(dz, _mm_loadu_ps(zs)));
 	__m128i bestIndex = index;
-	for (int i = 4; i < s->padded; i += 4)
+	for (int i = 4; i < padded; i += 4)
 	{
 		index = _mm_add_epi32(index, four);
-		__m128 d = _mm_add_ps(
-			_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(s->x + i)), _mm_mul_ps(dy, _mm_loadu_ps(s->y + i))),
-			_mm_mul_ps(dz, _mm_loadu_ps(s->z + i)));
+		__m128 d =
+			_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(xs + i)), _mm_mul_ps(dy, _mm_loadu_ps(ys + i))),
+					   _mm_mul_ps(dz, _mm_loadu_ps(zs + i)));
 		cd3SupportKeepHigher(d, index, &best, &bestIndex);
 	}
 	float highest;
 	return cd3SupportFirstMaximum(best, bestIndex, &highest);
 #else
+	(void)padded;
 	int best = 0;
-	cdReal highest = direction.x * s->x[0] + direction.y * s->y[0] + direction.z * s->z[0];
-	for (int i = 1; i < s->count; ++i)
+	cdReal highest = direction.x * xs[0] + direction.y * ys[0] + direction.z * zs[0];
+	for (int i = 1; i < count; ++i)
 	{
-		cdReal d = direction.x * s->x[i] + direction.y * s->y[i] + direction.z * s->z[i];
+		cdReal d = direction.x * xs[i] + direction.y * ys[i] + direction.z * zs[i];
 		bool higher = d > highest;
 		best = higher ? i : best;
 		highest = higher ? d : highest;
 	}
 	return best;
 #endif
+}
+
+/* cd3SupportIndex over the arrays. */
+static inline int cd3SoaSupportIndex(const cd3SoaPoints* s, cd3Vec direction)
+{
+	return cd3ColumnsSupportIndex(s->x, s->y, s->z, s->count, s->padded, direction);
 }
 
 #endif

@@ -19,6 +19,7 @@ typedef struct cd3Core
 	int count;
 	cdReal radius;
 	const cd3Vec* localPoints; /* a hull's vertices (count of them), or NULL */
+	const cdReal* localColumns; /* the same as columns (cd3Hull.vertexColumns), or NULL */
 	bool box;				   /* corner i = centre +- axes[0] +- axes[1] +- axes[2], bit k of i: + */
 	bool lazyBox;			   /* an oriented box: its corners are made on demand from centre, axes */
 	cd3Vec center;
@@ -33,6 +34,7 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 {
 	core->radius = CD_R(0.0);
 	core->localPoints = NULL;
+	core->localColumns = NULL;
 	core->box = false;
 	core->lazyBox = false;
 	switch (shape->type)
@@ -94,6 +96,7 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 			return true;
 		case CD3_SHAPE_HULL:
 			core->localPoints = shape->hull.hull->vertices;
+			core->localColumns = shape->hull.hull->vertexColumns;
 			core->count = shape->hull.hull->vertexCount;
 			core->rotation = cd3MakeMatFromQuat(shape->hull.transform.q);
 			core->translation = shape->hull.transform.p;
@@ -159,6 +162,23 @@ static inline int cd3SupportScan(const cd3Vec* points, int count, cd3Vec directi
 	return cd3SupportIndex(points, count, direction);
 }
 
+/* A hull core's support: its vertex farthest along the direction carried into its frame. Kept
+ * out of cd3CoreSupport, so that the box and point paths stay small enough to inline. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, unused))
+#endif
+static int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
+{
+	cd3Vec local = cd3MulMTV(core->rotation, direction);
+	if (core->localColumns == NULL)
+	{
+		return cd3SupportScan(core->localPoints, core->count, local);
+	}
+	int stride = CD3_HULL_COLUMN_STRIDE(core->count);
+	const cdReal* xs = core->localColumns;
+	return cd3ColumnsSupportIndex(xs, xs + stride, xs + 2 * stride, core->count, stride, local);
+}
+
 /* Index of the core point farthest along `direction` (the first one on ties). A box's corner is
  * chosen by the signs of its three axes along the direction (three products instead of eight;
  * a zero product, a tie, keeps the lower corner as the scan would). */
@@ -172,7 +192,7 @@ static inline int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
 	}
 	if (core->localPoints != NULL)
 	{
-		return cd3SupportScan(core->localPoints, core->count, cd3MulMTV(core->rotation, direction));
+		return cd3HullCoreSupport(core, direction);
 	}
 	int best = 0;
 	cdReal bestValue = cd3Dot(core->points[0], direction);
