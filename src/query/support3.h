@@ -162,12 +162,8 @@ static inline int cd3SupportScan(const cd3Vec* points, int count, cd3Vec directi
 	return cd3SupportIndex(points, count, direction);
 }
 
-/* A hull core's support: its vertex farthest along the direction carried into its frame. Kept
- * out of cd3CoreSupport, so that the box and point paths stay small enough to inline. */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline, unused))
-#endif
-static int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
+/* A hull core's support: its vertex farthest along the direction carried into its frame. */
+static inline int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
 {
 	cd3Vec local = cd3MulMTV(core->rotation, direction);
 	if (core->localColumns == NULL)
@@ -182,6 +178,11 @@ static int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
 /* Index of the core point farthest along `direction` (the first one on ties). A box's corner is
  * chosen by the signs of its three axes along the direction (three products instead of eight;
  * a zero product, a tie, keeps the lower corner as the scan would). */
+/* Always inlined: with the hull's scan in it, GCC 12 stopped inlining it into GJK's loop, and a
+ * call there costs the box path more than the scan saves the hull path. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((always_inline))
+#endif
 static inline int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
 {
 	if (core->box)
