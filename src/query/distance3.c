@@ -432,15 +432,12 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 			   : cd3Neg(v);
 }
 
-/* cd3CorePoint, with an oriented box's corner as centre + (+-1) axes: the same sums bit for bit
- * (a product by +-1 is exact) without a branch per axis. */
+/* cd3CorePoint, with the oriented box's corner (the common case) tested first. */
 static inline cd3Vec CorePoint(const cd3Core* core, int i)
 {
 	if (core->lazyBox)
 	{
-		cd3Vec p = cd3MulAdd(core->center, (i & 1) ? CD_R(1.0) : CD_R(-1.0), core->axes[0]);
-		p = cd3MulAdd(p, (i & 2) ? CD_R(1.0) : CD_R(-1.0), core->axes[1]);
-		return cd3MulAdd(p, (i & 4) ? CD_R(1.0) : CD_R(-1.0), core->axes[2]);
+		return cd3BoxCorner(core, i);
 	}
 	return cd3CorePoint(core, i);
 }
@@ -957,10 +954,12 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 
 		int indexA = cd3CoreSupport(a, direction);
 		int indexB = cd3CoreSupport(b, cd3Neg(direction));
-		bool duplicate = false;
-		for (int i = 0; i < simplex.count; ++i)
+		/* Against the (at most three) vertices without a branch per vertex: the slots past the count
+		 * hold defined, masked-out values (the simplex starts zeroed). */
+		int duplicate = 0;
+		for (int i = 0; i < 3; ++i)
 		{
-			duplicate = duplicate || (simplex.v[i].indexA == indexA && simplex.v[i].indexB == indexB);
+			duplicate |= (i < simplex.count) & (simplex.v[i].indexA == indexA) & (simplex.v[i].indexB == indexB);
 		}
 		if (duplicate)
 		{

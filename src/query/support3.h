@@ -107,14 +107,18 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 	}
 }
 
-/* Corner i of a box core, centre +- axes in this order (the same bits whenever it is built). */
+/* Corner i of a box core, centre +- axes in this order (the same bits whenever it is built: a
+ * product by +-1 is exact). The signs come from the index bits by integer arithmetic: written as
+ * a choice, GCC 12 branched on each bit, and the bits of a support corner are as good as random
+ * (mispredicted branches were a third of GJK's time on box pairs). */
 static inline cd3Vec cd3BoxCorner(const cd3Core* core, int i)
 {
-	cd3Vec p = core->center;
-	p = (i & 1) ? cd3Add(p, core->axes[0]) : cd3Sub(p, core->axes[0]);
-	p = (i & 2) ? cd3Add(p, core->axes[1]) : cd3Sub(p, core->axes[1]);
-	p = (i & 4) ? cd3Add(p, core->axes[2]) : cd3Sub(p, core->axes[2]);
-	return p;
+	cdReal signX = (cdReal)(((i & 1) << 1) - 1);
+	cdReal signY = (cdReal)((i & 2) - 1);
+	cdReal signZ = (cdReal)(((i & 4) >> 1) - 1);
+	cd3Vec p = cd3MulAdd(core->center, signX, core->axes[0]);
+	p = cd3MulAdd(p, signY, core->axes[1]);
+	return cd3MulAdd(p, signZ, core->axes[2]);
 }
 
 /* Core point i in world space. */
