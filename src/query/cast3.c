@@ -191,7 +191,8 @@ static void PlaceCore(const cd3Core* local, cd3Transform xf, PlacedCore* placed)
 	core->localPoints = local->localPoints;
 	core->localColumns = local->localColumns;
 	core->box = local->box;
-	core->lazyBox = local->lazyBox;
+	core->lazyBox = local->lazyBox || local->orientedBox;
+	core->orientedBox = false;
 	if (local->box)
 	{
 		for (int k = 0; k < 3; ++k)
@@ -199,7 +200,7 @@ static void PlaceCore(const cd3Core* local, cd3Transform xf, PlacedCore* placed)
 			core->axes[k] = cd3RotateVector(xf.q, local->axes[k]);
 		}
 	}
-	if (local->lazyBox)
+	if (core->lazyBox)
 	{
 		core->center = cd3TransformPoint(xf, local->center);
 		return;

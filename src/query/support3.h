@@ -22,6 +22,7 @@ typedef struct cd3Core
 	const cdReal* localColumns; /* the same as columns (cd3Hull.vertexColumns), or NULL */
 	bool box;				   /* corner i = centre +- axes[0] +- axes[1] +- axes[2], bit k of i: + */
 	bool lazyBox;			   /* an oriented box: its corners are made on demand from centre, axes */
+	bool orientedBox;		   /* an oriented box whose points hold its corners (centre, axes valid) */
 	cd3Vec center;
 	cd3Vec axes[3];
 	cd3Mat33 rotation; /* world = rotation * local + translation, for localPoints */
@@ -37,6 +38,7 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 	core->localColumns = NULL;
 	core->box = false;
 	core->lazyBox = false;
+	core->orientedBox = false;
 	switch (shape->type)
 	{
 		case CD3_SHAPE_SPHERE:
@@ -73,14 +75,23 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 			cd3Vec axisX = cd3Scale(box->halfExtents.x, rotation.cx);
 			cd3Vec axisY = cd3Scale(box->halfExtents.y, rotation.cy);
 			cd3Vec axisZ = cd3Scale(box->halfExtents.z, rotation.cz);
-			/* GJK reads a handful of corners: they are built when read (cd3CorePoint). */
 			core->count = 8;
 			core->box = true;
-			core->lazyBox = true;
+			core->orientedBox = true;
 			core->center = box->center;
 			core->axes[0] = axisX;
 			core->axes[1] = axisY;
 			core->axes[2] = axisZ;
+			cd3Vec alongX[2] = {cd3Sub(box->center, axisX), cd3Add(box->center, axisX)};
+			cd3Vec alongXY[4];
+			for (int i = 0; i < 4; ++i)
+			{
+				alongXY[i] = (i & 2) ? cd3Add(alongX[i & 1], axisY) : cd3Sub(alongX[i & 1], axisY);
+			}
+			for (int i = 0; i < 8; ++i)
+			{
+				core->points[i] = (i & 4) ? cd3Add(alongXY[i & 3], axisZ) : cd3Sub(alongXY[i & 3], axisZ);
+			}
 			return true;
 		}
 		case CD3_SHAPE_TRIANGLE:
@@ -139,7 +150,7 @@ static inline cd3Vec cd3CorePoint(const cd3Core* core, int i)
  * point): GJK's cold start looks for supports along the line between two of them. */
 static inline cd3Vec cd3CoreCenter(const cd3Core* core)
 {
-	if (core->lazyBox)
+	if (core->lazyBox || core->orientedBox)
 	{
 		return core->center;
 	}
