@@ -13,6 +13,7 @@
  * Pairs within BAND of a decision boundary (touching, the speculative distance) are skipped for
  * the checks that depend on that decision. */
 #include "collide/manifold2.h"
+#include "../src/query/sat2_separation.h" /* internal: the separating-axis scan */
 #include "random_shapes2.h"
 #include "test.h"
 
@@ -1215,6 +1216,55 @@ static void TestChainNoGhosts(void)
 	TEST_CHECK(cd2CollideCircleSegment(ball, twoSided, CD_R(0.0)).pointCount == 1);
 }
 
+/* The separating-axis scan (SSE2 four edges at a time in the float build, a plain loop elsewhere)
+ * against the early-exit scan the manifolds used before: the same edge and the same value bit for
+ * bit, for every pair of counts 1..8, with coordinates drawn from a few values in half the rounds
+ * so that edges tie (the first one wins) and separations come out as zeros of either sign. */
+static void TestSeparationScan(void)
+{
+	TestRng rng = {0x5e9a7u};
+	static const double levels[4] = {-0.5, 0.0, 0.25, 1.0};
+	for (int round = 0; round < 6400; ++round)
+	{
+		int count = 1 + round % 8, otherCount = 1 + (round / 8) % 8;
+		bool coarse = round % 2 == 0;
+		cd2Vec normals[8], vertices[8], others[8];
+		for (int i = 0; i < 8; ++i)
+		{
+			normals[i] = coarse ? V(levels[TestRngInt(&rng, 4)], levels[TestRngInt(&rng, 4)])
+								: V(TestRngRange(&rng, -1, 1), TestRngRange(&rng, -1, 1));
+			vertices[i] = coarse ? V(levels[TestRngInt(&rng, 4)], -levels[TestRngInt(&rng, 4)])
+								 : V(TestRngRange(&rng, -2, 2), TestRngRange(&rng, -2, 2));
+			others[i] = coarse ? V(-levels[TestRngInt(&rng, 4)], levels[TestRngInt(&rng, 4)])
+							   : V(TestRngRange(&rng, -2, 2), TestRngRange(&rng, -2, 2));
+		}
+		cdReal expected = -CD_REAL_MAX;
+		int expectedEdge = 0;
+		for (int i = 0; i < count; ++i)
+		{
+			cdReal lowest = CD_REAL_MAX;
+			for (int j = 0; j < otherCount && lowest > expected; ++j)
+			{
+				lowest = cdMin(lowest, cd2Dot(normals[i], cd2Sub(others[j], vertices[i])));
+			}
+			if (lowest > expected)
+			{
+				expected = lowest;
+				expectedEdge = i;
+			}
+		}
+		int edge = -1, plainEdge = -1;
+		cdReal got = cd2MaxSeparation(normals, vertices, count, others, otherCount, &edge);
+		cdReal plain = cd2MaxSeparationScalar(normals, vertices, count, others, otherCount, &plainEdge);
+		TEST_CHECKF(edge == expectedEdge && memcmp(&got, &expected, sizeof got) == 0,
+					"round %d (%d edges, %d points): edge %d separation %.9g, expected edge %d %.9g", round, count,
+					otherCount, edge, (double)got, expectedEdge, (double)expected);
+		TEST_CHECKF(plainEdge == expectedEdge && memcmp(&plain, &expected, sizeof plain) == 0,
+					"round %d (%d edges, %d points): plain scan edge %d separation %.9g, expected edge %d %.9g",
+					round, count, otherCount, plainEdge, (double)plain, expectedEdge, (double)expected);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxes);
@@ -1233,5 +1283,6 @@ int main(void)
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestSymmetryAndInvariance);
 	TEST_RUN(TestChainNoGhosts);
+	TEST_RUN(TestSeparationScan);
 	return TEST_SUMMARY();
 }

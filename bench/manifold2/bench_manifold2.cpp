@@ -8,6 +8,11 @@
 // 2 * b2_polygonRadius on sharp polygons). Each figure is the median of 9 runs of about 20 ms,
 // collide's and Box2D's runs alternating so that both see the same machine load.
 // Usage: collide_bench_manifold2 [--quick]
+//        collide_bench_manifold2 --once ROW   (ROW: box, octagon, circle-octagon, circle-box)
+// --once calls collide's and Box2D's function of that row once per pair and prints nothing else:
+// run it under `valgrind --tool=callgrind` and divide the inclusive instruction counts of the two
+// functions by the pair count for instructions per call (repeatable on a loaded machine, where
+// the timings are not).
 #include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 
@@ -192,13 +197,14 @@ Figures Compare(const std::vector<Pair>& pairs, F mine, G theirs, int runs, doub
 int main(int argc, char** argv)
 {
 	bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+	const char* once = argc > 2 && std::strcmp(argv[1], "--once") == 0 ? argv[2] : nullptr;
 	int runs = quick ? 3 : 9;
 	double seconds = quick ? 0.002 : 0.02;
 	const cdReal speculative = (cdReal)(2.0 * b2_polygonRadius);
 
 	std::vector<Pair> boxes = MakePairs(4, true, -0.05, 0.01, 1);
 	std::vector<Pair> octagons = MakePairs(8, false, -0.05, 0.01, 2);
-	std::vector<Pair> apart = MakePairs(8, false, 0.1, 1.0, 3);
+	std::vector<Pair> apart = once != nullptr ? std::vector<Pair>() : MakePairs(8, false, 0.1, 1.0, 3);
 
 	std::printf("collide_bench_manifold2 (%s, cdReal = %s): ns per call, median of %d runs, %d pairs\n",
 				quick ? "quick" : "full", sizeof(cdReal) == sizeof(double) ? "double" : "float", runs,
@@ -242,6 +248,19 @@ int main(int argc, char** argv)
 		return (int)(output.distance > 0.5f);
 	};
 
+	if (once != nullptr)
+	{
+		bool box = std::strcmp(once, "box") == 0 || std::strcmp(once, "circle-box") == 0;
+		bool circle = std::strncmp(once, "circle", 6) == 0;
+		const std::vector<Pair>& pairs = box ? boxes : octagons;
+		for (const Pair& p : pairs)
+		{
+			g_sink += circle ? collideCircle(p) : collidePolygons(p);
+			g_sink += circle ? box2dCircle(p) : box2dPolygons(p);
+		}
+		std::printf("%s: %zu pairs, %ld points\n", once, pairs.size(), g_sink);
+		return 0;
+	}
 	row("polygon manifold, box-box", Compare(boxes, collidePolygons, box2dPolygons, runs, seconds));
 	row("polygon manifold, 8-gon-8-gon", Compare(octagons, collidePolygons, box2dPolygons, runs, seconds));
 	row("circle-polygon manifold, circle-8-gon",

@@ -20,6 +20,8 @@
  * Points are reported midway between the surfaces; the normal points from A to B. */
 #include "collide/manifold2.h"
 
+#include "sat2_separation.h"
+
 /* Cores apart by more than this many linear slops take the closest-feature path (and
  * vertex-vertex normals are then safe to normalize); below it the separating axis answer is used
  * as is. B's reference edge is preferred over A's only when it separates by this many slops more:
@@ -224,33 +226,11 @@ static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal specula
 
 /* ---- core against core ------------------------------------------------------------------------ */
 
-/* The largest separation of b from a over a's edge normals, and its edge. */
-static cdReal MaxSeparation(const Core* a, const Core* b, int* edge, cdReal limit)
+/* The largest separation of b from a over a's edge normals, and its edge (sat2_separation.h: all
+ * edges scanned without branches; the callers only compare the answer with their limit). */
+static cdReal MaxSeparation(const Core* a, const Core* b, int* edge)
 {
-	cdReal best = -CD_REAL_MAX;
-	int bestEdge = 0;
-	for (int i = 0; i < a->count; ++i)
-	{
-		cd2Vec n = a->normals[i];
-		cd2Vec v = a->vertices[i];
-		cdReal lowest = CD_REAL_MAX;
-		/* An edge whose running minimum falls to the best so far cannot win: stop early. */
-		for (int j = 0; j < b->count && lowest > best; ++j)
-		{
-			lowest = cdMin(lowest, cd2Dot(n, cd2Sub(b->vertices[j], v)));
-		}
-		if (lowest > best)
-		{
-			best = lowest;
-			bestEdge = i;
-			if (best > limit)
-			{
-				break; /* separated beyond the limit: the caller stops here */
-			}
-		}
-	}
-	*edge = bestEdge;
-	return best;
+	return cd2MaxSeparation(a->normals, a->vertices, a->count, b->vertices, b->count, edge);
 }
 
 /* A bound on the rounding of positions along an edge computed from these points: closer than
@@ -495,12 +475,12 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	cdReal total = a->radius + b->radius;
 	int edgeA, edgeB;
 	cdReal limit = total + speculativeDistance;
-	cdReal separationA = MaxSeparation(a, b, &edgeA, limit);
+	cdReal separationA = MaxSeparation(a, b, &edgeA);
 	if (separationA > limit)
 	{
 		return EmptyManifold();
 	}
-	cdReal separationB = MaxSeparation(b, a, &edgeB, limit);
+	cdReal separationB = MaxSeparation(b, a, &edgeB);
 	if (separationB > limit)
 	{
 		return EmptyManifold();
