@@ -7,7 +7,7 @@
 // Both report contacts up to Box2D's polygon radius apart (collide: speculative distance
 // 2 * b2_polygonRadius on sharp polygons). Each figure is the median of 9 runs of about 20 ms,
 // collide's and Box2D's runs alternating so that both see the same machine load.
-// Usage: collide_bench_manifold2 [--quick]
+// Usage: collide_bench_manifold2 [--quick] [--filter TEXT]   (only the rows whose name holds TEXT)
 //        collide_bench_manifold2 --once ROW   (ROW: box, octagon, circle-octagon, circle-box)
 // --once calls collide's and Box2D's function of that row once per pair and prints nothing else:
 // run it under `valgrind --tool=callgrind` and divide the inclusive instruction counts of the two
@@ -198,6 +198,14 @@ int main(int argc, char** argv)
 {
 	bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
 	const char* once = argc > 2 && std::strcmp(argv[1], "--once") == 0 ? argv[2] : nullptr;
+	const char* filter = nullptr;
+	for (int i = 1; i + 1 < argc; ++i)
+	{
+		if (std::strcmp(argv[i], "--filter") == 0)
+		{
+			filter = argv[i + 1];
+		}
+	}
 	int runs = quick ? 3 : 9;
 	double seconds = quick ? 0.002 : 0.02;
 	const cdReal speculative = (cdReal)(2.0 * b2_polygonRadius);
@@ -211,7 +219,12 @@ int main(int argc, char** argv)
 				kPairs);
 	std::printf("%-44s %10s %10s %8s\n", "case", "collide", "box2d 2.4", "ratio");
 
-	auto row = [&](const char* name, Figures f) {
+	auto row = [&](const char* name, auto compare) {
+		if (filter != nullptr && std::strstr(name, filter) == nullptr)
+		{
+			return;
+		}
+		Figures f = compare();
 		std::printf("%-44s %10.1f %10.1f %8.2f\n", name, f.mine, f.theirs, f.mine / f.theirs);
 	};
 
@@ -261,33 +274,38 @@ int main(int argc, char** argv)
 		std::printf("%s: %zu pairs, %ld points\n", once, pairs.size(), g_sink);
 		return 0;
 	}
-	row("polygon manifold, box-box", Compare(boxes, collidePolygons, box2dPolygons, runs, seconds));
-	row("polygon manifold, 8-gon-8-gon", Compare(octagons, collidePolygons, box2dPolygons, runs, seconds));
+	row("polygon manifold, box-box", [&] { return Compare(boxes, collidePolygons, box2dPolygons, runs, seconds); });
+	row("polygon manifold, 8-gon-8-gon",
+		[&] { return Compare(octagons, collidePolygons, box2dPolygons, runs, seconds); });
 	row("circle-polygon manifold, circle-8-gon",
-		Compare(octagons, collideCircle, box2dCircle, runs, seconds));
-	row("circle-polygon manifold, circle-box", Compare(boxes, collideCircle, box2dCircle, runs, seconds));
-	row("distance (GJK), 8-gon-8-gon apart", Compare(apart, collideDistance, box2dDistance, runs, seconds));
-	long iterationsMine = 0, iterationsTheirs = 0;
-	for (const Pair& p : apart)
+		[&] { return Compare(octagons, collideCircle, box2dCircle, runs, seconds); });
+	row("circle-polygon manifold, circle-box", [&] { return Compare(boxes, collideCircle, box2dCircle, runs, seconds); });
+	row("distance (GJK), 8-gon-8-gon apart",
+		[&] { return Compare(apart, collideDistance, box2dDistance, runs, seconds); });
+	if (filter == nullptr || std::strstr("distance", filter) != nullptr)
 	{
-		cdDistanceStatus status;
-		cd2DistanceWithStatus(&p.sa, &p.sb, &status);
-		iterationsMine += status.iterations;
-		b2DistanceInput input;
-		input.proxyA.Set(&p.pa, 0);
-		input.proxyB.Set(&p.pb, 0);
-		input.transformA = p.xa;
-		input.transformB = p.xb;
-		input.useRadii = false;
-		b2SimplexCache cache;
-		cache.count = 0;
-		b2DistanceOutput output;
-		b2Distance(&output, &cache, &input);
-		iterationsTheirs += output.iterations;
+		long iterationsMine = 0, iterationsTheirs = 0;
+		for (const Pair& p : apart)
+		{
+			cdDistanceStatus status;
+			cd2DistanceWithStatus(&p.sa, &p.sb, &status);
+			iterationsMine += status.iterations;
+			b2DistanceInput input;
+			input.proxyA.Set(&p.pa, 0);
+			input.proxyB.Set(&p.pb, 0);
+			input.transformA = p.xa;
+			input.transformB = p.xb;
+			input.useRadii = false;
+			b2SimplexCache cache;
+			cache.count = 0;
+			b2DistanceOutput output;
+			b2Distance(&output, &cache, &input);
+			iterationsTheirs += output.iterations;
+		}
+		std::printf("GJK iterations per call: collide %.2f, box2d %.2f\n",
+					(double)iterationsMine / (double)apart.size(),
+					(double)iterationsTheirs / (double)apart.size());
 	}
-	std::printf("GJK iterations per call: collide %.2f, box2d %.2f\n",
-				(double)iterationsMine / (double)apart.size(),
-				(double)iterationsTheirs / (double)apart.size());
 	if (g_sink == 42)
 	{
 		std::printf("\n");
