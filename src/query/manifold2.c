@@ -158,12 +158,14 @@ static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativ
 	return manifold;
 }
 
-/* The point core p against the segment or polygon core k; the normal points from k to p. */
-static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal speculativeDistance, bool flip)
+/* The point `center` grown by pointRadius against the segment or polygon core k; the normal
+ * points from k to the point. Takes the point's fields rather than a point core so that
+ * cd2CollideCirclePolygon, whose whole cost is this function, builds no cores. */
+static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal pointRadius,
+											cdReal speculativeDistance, bool flip)
 {
 	cd2Manifold manifold = EmptyManifold();
-	cd2Vec center = p->vertices[0];
-	cdReal total = k->radius + p->radius;
+	cdReal total = k->radius + pointRadius;
 	cdReal limit = total + speculativeDistance;
 
 	/* The edge whose line the point stands farthest outside of; for a point outside the core the
@@ -219,9 +221,15 @@ static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal specula
 		return manifold;
 	}
 	manifold.normal = flip ? cd2Neg(normal) : normal;
-	AddPoint(&manifold, cd2MulAdd(center, CD_R(0.5) * (k->radius - p->radius - coreSeparation), normal),
+	AddPoint(&manifold, cd2MulAdd(center, CD_R(0.5) * (k->radius - pointRadius - coreSeparation), normal),
 			 separation, id);
 	return manifold;
+}
+
+/* The point core p against the segment or polygon core k; the normal points from k to p. */
+static cd2Manifold CollideCorePoint(const Core* k, const Core* p, cdReal speculativeDistance, bool flip)
+{
+	return CollideCoreCenter(k, p->vertices[0], p->radius, speculativeDistance, flip);
 }
 
 /* ---- core against core ------------------------------------------------------------------------ */
@@ -641,10 +649,9 @@ cd2Manifold cd2CollideCircleCapsule(cd2Circle a, cd2Capsule b, cdReal speculativ
 
 cd2Manifold cd2CollideCirclePolygon(cd2Circle a, const cd2Polygon* b, cdReal speculativeDistance)
 {
-	Core coreA, coreB;
-	InitPointCore(&coreA, a.center, a.radius);
+	Core coreB;
 	InitPolygonCore(&coreB, b);
-	return CollideAny(&coreA, &coreB, speculativeDistance);
+	return CollideCoreCenter(&coreB, a.center, a.radius, speculativeDistance, true);
 }
 
 cd2Manifold cd2CollideCircleSegment(cd2Circle a, cd2Segment b, cdReal speculativeDistance)
