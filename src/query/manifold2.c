@@ -405,20 +405,67 @@ static cd2Segment EdgeSegment(const Core* core, int edge)
 	return segment;
 }
 
-/* The edge of `core` closest to the segment; pointA on the segment, pointB on that edge. */
-static cd2ClosestPoints ClosestEdge(cd2Segment segment, const Core* core, int* edge)
+/* The edge of `core` closest to edge `ownerEdge` of `owner` (the first of the closest ones, in
+ * index order); pointA on the owner's edge, pointB on the core's.
+ *
+ * The answer is that of cd2ClosestPointsSegmentSegment against every edge, but most edges are
+ * ruled out without it: seen along the owner edge's normal n, every point of a core edge lies at
+ * least min(h_i, h_i+1) above the owner edge's line (h_j the height of vertex j), and every point
+ * of the owner edge at most max(0, n . (s2 - s1)), so the two are at least that gap apart divided
+ * by |n| <= |n.x| + |n.y|. The gap is reduced by a bound on the rounding of everything involved
+ * (heights, the closest points' positions, which lie within a few ulps of the coordinates'
+ * magnitude of their segments; at most 30 ulps of magnitude * |n|, 128 taken), and the distance
+ * an edge would report differs from the true one by a few ulps more (64 taken). An edge whose gap
+ * exceeds the best distance found so far is therefore skipped: it would have reported a larger
+ * distance, and so could not have been chosen. The two edges at the lowest vertex go first (the
+ * closest feature is nearly always there), so that the best distance is small from the start;
+ * ties go to the lower index, as in a scan in index order. */
+static cd2ClosestPoints ClosestEdge(const Core* owner, int ownerEdge, const Core* core, int* edge)
 {
-	cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(segment, EdgeSegment(core, 0));
-	*edge = 0;
-	for (int i = 1; i < core->count; ++i)
+	cd2Segment segment = EdgeSegment(owner, ownerEdge);
+	cd2Vec n = owner->normals[ownerEdge];
+	int count = core->count;
+	cdReal height[CD2_MAX_POLYGON_VERTICES];
+	cdReal magnitude = cdMax(cdMax(cdAbs(segment.p1.x), cdAbs(segment.p1.y)),
+							 cdMax(cdAbs(segment.p2.x), cdAbs(segment.p2.y)));
+	int lowest = 0;
+	for (int j = 0; j < count; ++j)
 	{
+		cd2Vec v = core->vertices[j];
+		height[j] = cd2Dot(n, cd2Sub(v, segment.p1));
+		magnitude = cdMax(magnitude, cdMax(cdAbs(v.x), cdAbs(v.y)));
+		lowest = height[j] < height[lowest] ? j : lowest;
+	}
+	cdReal rise = cdMax(cd2Dot(n, cd2Sub(segment.p2, segment.p1)), CD_R(0.0));
+	cdReal normBound = cdAbs(n.x) + cdAbs(n.y);
+	cdReal slack = CD_R(128.0) * CD_REAL_EPSILON * magnitude * normBound;
+	cdReal shrink = CD_R(1.0) - CD_R(64.0) * CD_REAL_EPSILON;
+
+	int before = lowest > 0 ? lowest - 1 : count - 1; /* the edge that ends at the lowest vertex */
+	cd2ClosestPoints best = cd2ClosestPointsSegmentSegment(segment, EdgeSegment(core, before));
+	int bestEdge = before;
+	for (int k = 0; k < count; ++k)
+	{
+		/* lowest first, then every other edge but `before` */
+		int i = k == 0 ? lowest : k <= lowest ? k - 1 : k;
+		if (i == before)
+		{
+			continue;
+		}
+		int next = i + 1 < count ? i + 1 : 0;
+		cdReal gap = cdMin(height[i], height[next]) - rise - slack;
+		if (gap * shrink > best.distance * normBound)
+		{
+			continue;
+		}
 		cd2ClosestPoints candidate = cd2ClosestPointsSegmentSegment(segment, EdgeSegment(core, i));
-		if (candidate.distance < best.distance)
+		if (candidate.distance < best.distance || (candidate.distance == best.distance && i < bestEdge))
 		{
 			best = candidate;
-			*edge = i;
+			bestEdge = i;
 		}
 	}
+	*edge = bestEdge;
 	return best;
 }
 
@@ -469,9 +516,9 @@ static cd2ClosestPoints ClosestCores(const Core* a, const Core* b, cdReal separa
 	}
 	if (separationA >= separationB)
 	{
-		return ClosestEdge(EdgeSegment(a, *edgeA), b, edgeB);
+		return ClosestEdge(a, *edgeA, b, edgeB);
 	}
-	cd2ClosestPoints closest = ClosestEdge(EdgeSegment(b, *edgeB), a, edgeA);
+	cd2ClosestPoints closest = ClosestEdge(b, *edgeB, a, edgeA);
 	cd2Vec swap = closest.pointA;
 	closest.pointA = closest.pointB;
 	closest.pointB = swap;
