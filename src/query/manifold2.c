@@ -169,21 +169,42 @@ static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal
 	cdReal limit = total + speculativeDistance;
 
 	/* The edge whose line the point stands farthest outside of; for a point outside the core the
-	 * closest feature is on it (or at one of its ends). */
-	int edge = 0;
-	cdReal edgeSeparation = -CD_REAL_MAX;
-	for (int i = 0; i < k->count; ++i)
+	 * closest feature is on it (or at one of its ends). The first maximum is found by a tree of
+	 * pairwise comparisons (the right one wins only when strictly larger, so the first of equal
+	 * values wins, as in a scan from -CD_REAL_MAX) over 4 or 8 values, the missing ones -CD_REAL_MAX:
+	 * three levels instead of a chain of eight compare-and-branch steps, whose winner a branch
+	 * predictor cannot know (the 8-gon row of collide_bench_manifold2 ran 0.87 -> 0.69 of Box2D). */
+	cdReal s[CD2_MAX_POLYGON_VERTICES];
+	int width = k->count > 4 ? CD2_MAX_POLYGON_VERTICES : 4;
+	for (int i = 0; i < width; ++i)
 	{
-		cdReal s = cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i]));
-		if (s > edgeSeparation)
-		{
-			if (s > limit)
-			{
-				return manifold;
-			}
-			edgeSeparation = s;
-			edge = i;
-		}
+		s[i] = i < k->count ? cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i])) : -CD_REAL_MAX;
+	}
+	int edge = s[1] > s[0] ? 1 : 0;
+	cdReal edgeSeparation = s[1] > s[0] ? s[1] : s[0];
+	int e23 = s[3] > s[2] ? 3 : 2;
+	cdReal s23 = s[3] > s[2] ? s[3] : s[2];
+	edge = s23 > edgeSeparation ? e23 : edge;
+	edgeSeparation = s23 > edgeSeparation ? s23 : edgeSeparation;
+	if (width > 4)
+	{
+		int e45 = s[5] > s[4] ? 5 : 4, e67 = s[7] > s[6] ? 7 : 6;
+		cdReal s45 = s[5] > s[4] ? s[5] : s[4], s67 = s[7] > s[6] ? s[7] : s[6];
+		int e47 = s67 > s45 ? e67 : e45;
+		cdReal s47 = s67 > s45 ? s67 : s45;
+		edge = s47 > edgeSeparation ? e47 : edge;
+		edgeSeparation = s47 > edgeSeparation ? s47 : edgeSeparation;
+	}
+	if (!(edgeSeparation > -CD_REAL_MAX))
+	{
+		edge = 0;
+		edgeSeparation = -CD_REAL_MAX;
+	}
+	/* The scan returned at the first edge beyond the limit: there is one exactly when the
+	 * maximum is beyond it. */
+	if (edgeSeparation > limit)
+	{
+		return manifold;
 	}
 	int next = edge + 1 < k->count ? edge + 1 : 0;
 	cd2Vec v1 = k->vertices[edge];
