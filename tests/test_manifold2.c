@@ -1257,11 +1257,12 @@ static void TestSeparationScan(void)
 		cdReal got = cd2MaxSeparation(normals, vertices, count, others, otherCount, &edge);
 		cdReal plain = cd2MaxSeparationScalar(normals, vertices, count, others, otherCount, &plainEdge);
 		TEST_CHECKF(edge == expectedEdge && memcmp(&got, &expected, sizeof got) == 0,
-					"round %d (%d edges, %d points): edge %d separation %.9g, expected edge %d %.9g", round, count,
-					otherCount, edge, (double)got, expectedEdge, (double)expected);
-		TEST_CHECKF(plainEdge == expectedEdge && memcmp(&plain, &expected, sizeof plain) == 0,
-					"round %d (%d edges, %d points): plain scan edge %d separation %.9g, expected edge %d %.9g",
-					round, count, otherCount, plainEdge, (double)plain, expectedEdge, (double)expected);
+					"round %d (%d edges, %d points): edge %d separation %.9g, expected edge %d %.9g", round,
+					count, otherCount, edge, (double)got, expectedEdge, (double)expected);
+		TEST_CHECKF(
+			plainEdge == expectedEdge && memcmp(&plain, &expected, sizeof plain) == 0,
+			"round %d (%d edges, %d points): plain scan edge %d separation %.9g, expected edge %d %.9g",
+			round, count, otherCount, plainEdge, (double)plain, expectedEdge, (double)expected);
 	}
 }
 

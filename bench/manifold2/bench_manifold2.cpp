@@ -274,12 +274,14 @@ int main(int argc, char** argv)
 		std::printf("%s: %zu pairs, %ld points\n", once, pairs.size(), g_sink);
 		return 0;
 	}
-	row("polygon manifold, box-box", [&] { return Compare(boxes, collidePolygons, box2dPolygons, runs, seconds); });
+	row("polygon manifold, box-box",
+		[&] { return Compare(boxes, collidePolygons, box2dPolygons, runs, seconds); });
 	row("polygon manifold, 8-gon-8-gon",
 		[&] { return Compare(octagons, collidePolygons, box2dPolygons, runs, seconds); });
 	row("circle-polygon manifold, circle-8-gon",
 		[&] { return Compare(octagons, collideCircle, box2dCircle, runs, seconds); });
-	row("circle-polygon manifold, circle-box", [&] { return Compare(boxes, collideCircle, box2dCircle, runs, seconds); });
+	row("circle-polygon manifold, circle-box",
+		[&] { return Compare(boxes, collideCircle, box2dCircle, runs, seconds); });
 	row("distance (GJK), 8-gon-8-gon apart",
 		[&] { return Compare(apart, collideDistance, box2dDistance, runs, seconds); });
 	if (filter == nullptr || std::strstr("distance", filter) != nullptr)
