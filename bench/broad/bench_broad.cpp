@@ -173,6 +173,13 @@ std::unique_ptr<Adapter> MakeAdapter(const std::string& name, bool* peer)
 	return adapter;
 }
 
+// The cost per frame the plot and the tables show: the mean over the timed frames (rows from an
+// older CSV without it: the median).
+double FrameCost(const Result& r)
+{
+	return r.frameMeanMs > 0 ? r.frameMeanMs : r.frameMs;
+}
+
 double Median(std::vector<double> values)
 {
 	if (values.empty())
@@ -408,7 +415,7 @@ void WriteSvg(const std::string& path, const std::vector<Result>& results, Scene
 	double minN = 1e30, maxN = 0, minT = 1e30, maxT = 0;
 	for (const Result& r : results)
 	{
-		if (r.kind != kind || r.frameMs <= 0)
+		if (r.kind != kind || FrameCost(r) <= 0)
 		{
 			continue;
 		}
@@ -422,8 +429,8 @@ void WriteSvg(const std::string& path, const std::vector<Result>& results, Scene
 		}
 		minN = std::min(minN, double(r.n));
 		maxN = std::max(maxN, double(r.n));
-		minT = std::min(minT, r.frameMs);
-		maxT = std::max(maxT, r.frameMs);
+		minT = std::min(minT, FrameCost(r));
+		maxT = std::max(maxT, FrameCost(r));
 	}
 	std::sort(dims.begin(), dims.end());
 	if (dims.empty())
@@ -480,7 +487,7 @@ void WriteSvg(const std::string& path, const std::vector<Result>& results, Scene
 			std::vector<const Result*> line;
 			for (const Result& r : results)
 			{
-				if (r.kind == kind && r.dim == dims[p] && r.name == names[s] && r.frameMs > 0)
+				if (r.kind == kind && r.dim == dims[p] && r.name == names[s] && FrameCost(r) > 0)
 				{
 					line.push_back(&r);
 				}
@@ -495,13 +502,13 @@ void WriteSvg(const std::string& path, const std::vector<Result>& results, Scene
 						 line.front()->peer ? " stroke-dasharray=\"6,3\"" : "");
 			for (const Result* r : line)
 			{
-				std::fprintf(file, "%.1f,%.1f ", X(r->n), Y(r->frameMs));
+				std::fprintf(file, "%.1f,%.1f ", X(r->n), Y(FrameCost(*r)));
 			}
 			std::fprintf(file, "\"/>\n");
 			for (const Result* r : line)
 			{
 				std::fprintf(file, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>\n", X(r->n),
-							 Y(r->frameMs), color);
+							 Y(FrameCost(*r)), color);
 			}
 		}
 	}
@@ -527,7 +534,7 @@ void WriteSvg(const std::string& path, const std::vector<Result>& results, Scene
 	}
 	std::fprintf(
 		file,
-		"<text x=\"%.0f\" y=\"%.0f\" fill=\"#555\">solid: collide; dashed: peers. Median time per frame; "
+		"<text x=\"%.0f\" y=\"%.0f\" fill=\"#555\">solid: collide; dashed: peers. Mean time per frame; "
 		"pair counts checked equal across structures (see docs/BROADPHASE.md).</text>\n</svg>\n",
 		left, height - 8);
 	std::fclose(file);
@@ -577,7 +584,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 		for (SceneKind kind : {SceneKind::Moving, SceneKind::Mix})
 		{
 			std::fprintf(file,
-						 "\n**%dD, scene %s: ms per frame (update + complete pair set)**\n\n| structure |",
+						 "\n**%dD, scene %s: mean ms per frame (update + complete pair set)**\n\n| structure |",
 						 dim, SceneName(kind));
 			for (int n : ns)
 			{
@@ -611,7 +618,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 					const Result* r = find(dim, kind, name, n);
 					if (r)
 					{
-						std::fprintf(file, " %.3g%s |", r->frameMs, r->framesRun <= 1 ? "*" : "");
+						std::fprintf(file, " %.3g%s |", FrameCost(*r), r->framesRun <= 1 ? "*" : "");
 					}
 					else
 					{
@@ -671,7 +678,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 		{
 			std::fprintf(
 				file,
-				"\n**%dD, scene %s, N = %d**\n\n| structure | build ms | frame ms | query us | ray us | "
+				"\n**%dD, scene %s, N = %d**\n\n| structure | build ms | mean frame ms | query us | ray us | "
 				"bytes/proxy (heap) | bytes/proxy (stats) | pairs "
 				"|\n|---|---:|---:|---:|---:|---:|---:|---:|\n",
 				dim, SceneName(kind), detailN);
@@ -692,7 +699,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 					std::snprintf(stat, sizeof stat, "%.0f", r->reportedBytesPerProxy);
 				}
 				std::fprintf(file, "| %s%s | %.1f | %.3g | %.2f | %s | %.0f | %s | %zu |\n", r->name.c_str(),
-							 r->peer ? " (peer)" : "", r->buildMs, r->frameMs, r->queryUs, ray,
+							 r->peer ? " (peer)" : "", r->buildMs, FrameCost(*r), r->queryUs, ray,
 							 r->heapBytesPerProxy, stat, r->pairs);
 			}
 		}
@@ -711,18 +718,20 @@ void ReadCsv(const std::string& path, std::vector<Result>& results)
 	}
 	char line[1024];
 	bool header = true;
+	size_t fixed = 13; // fields before the notes; 15 when the mean and slowest frame are there
 	while (std::fgets(line, sizeof line, file))
 	{
 		if (header)
 		{
 			header = false;
+			fixed = std::strstr(line, "frame_mean_ms") != nullptr ? 15 : 13;
 			continue;
 		}
 		std::vector<std::string> f;
 		std::string field;
 		for (const char* c = line; *c && *c != '\n'; ++c)
 		{
-			if (*c == ',' && f.size() < 13)
+			if (*c == ',' && f.size() < fixed)
 			{
 				f.push_back(field);
 				field.clear();
@@ -733,7 +742,7 @@ void ReadCsv(const std::string& path, std::vector<Result>& results)
 			}
 		}
 		f.push_back(field);
-		if (f.size() < 13)
+		if (f.size() < fixed)
 		{
 			continue;
 		}
@@ -752,6 +761,11 @@ void ReadCsv(const std::string& path, std::vector<Result>& results)
 		r.reportedBytesPerProxy = std::atof(f[10].c_str());
 		r.pairs = size_t(std::atoll(f[11].c_str()));
 		r.framesRun = std::atoi(f[12].c_str());
+		if (fixed == 15)
+		{
+			r.frameMeanMs = std::atof(f[13].c_str());
+			r.frameMaxMs = std::atof(f[14].c_str());
+		}
 		results.push_back(r);
 	}
 	std::fclose(file);
@@ -765,13 +779,13 @@ void WriteCsv(const std::string& path, const std::vector<Result>& results)
 		return;
 	}
 	std::fprintf(file, "dim,n,scene,structure,peer,build_ms,frame_ms,query_us,ray_us,heap_bytes_per_proxy,"
-					   "stats_bytes_per_proxy,pairs,frames,notes\n");
+					   "stats_bytes_per_proxy,pairs,frames,frame_mean_ms,frame_slowest_ms,notes\n");
 	for (const Result& r : results)
 	{
-		std::fprintf(file, "%d,%d,%s,%s,%d,%.3f,%.4f,%.3f,%s,%.1f,%.1f,%zu,%d,\"%s\"\n", r.dim, r.n,
+		std::fprintf(file, "%d,%d,%s,%s,%d,%.3f,%.4f,%.3f,%s,%.1f,%.1f,%zu,%d,%.4f,%.4f,\"%s\"\n", r.dim, r.n,
 					 SceneName(r.kind), r.name.c_str(), r.peer ? 1 : 0, r.buildMs, r.frameMs, r.queryUs,
 					 r.rayMeasured ? std::to_string(r.rayUs).c_str() : "", r.heapBytesPerProxy,
-					 r.reportedBytesPerProxy, r.pairs, r.framesRun, r.extra.c_str());
+					 r.reportedBytesPerProxy, r.pairs, r.framesRun, r.frameMeanMs, r.frameMaxMs, r.extra.c_str());
 	}
 	std::fclose(file);
 }
