@@ -432,23 +432,13 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 			   : cd3Neg(v);
 }
 
-/* cd3CorePoint, with the oriented box's corner (the common case) tested first. */
-static inline cd3Vec CorePoint(const cd3Core* core, int i)
-{
-	if (core->lazyBox)
-	{
-		return cd3BoxCorner(core, i);
-	}
-	return cd3CorePoint(core, i);
-}
-
 static GjkVertex MakeVertex(const cd3Core* a, const cd3Core* b, int indexA, int indexB)
 {
 	GjkVertex vertex;
 	vertex.indexA = indexA;
 	vertex.indexB = indexB;
-	vertex.a = CorePoint(a, indexA);
-	vertex.b = CorePoint(b, indexB);
+	vertex.a = cd3CorePoint(a, indexA);
+	vertex.b = cd3CorePoint(b, indexB);
 	vertex.w = cd3Sub(vertex.a, vertex.b);
 	return vertex;
 }
@@ -970,8 +960,8 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		GjkVertex* vertex = &simplex.v[simplex.count];
 		vertex->indexA = indexA;
 		vertex->indexB = indexB;
-		vertex->a = CorePoint(a, indexA);
-		vertex->b = CorePoint(b, indexB);
+		vertex->a = cd3CorePoint(a, indexA);
+		vertex->b = cd3CorePoint(b, indexB);
 		vertex->w = cd3Sub(vertex->a, vertex->b);
 		cdReal vertexSize = VertexSize(vertex);
 		/* The support plane bounds the distance from below, |v| from above: stop when they meet

@@ -19,7 +19,7 @@ typedef struct cd3Core
 	int count;
 	cdReal radius;
 	const cd3Vec* localPoints; /* a hull's vertices (count of them), or NULL */
-	const cdReal* localColumns; /* the same as columns (cd3Hull.vertexColumns), or NULL */
+	const cdReal* localColumns; /* the same vertices as columns (cd3Hull.vertexColumns), or NULL */
 	bool box;				   /* corner i = centre +- axes[0] +- axes[1] +- axes[2], bit k of i: + */
 	bool lazyBox;			   /* an oriented box: its corners are made on demand from centre, axes */
 	bool orientedBox;		   /* an oriented box whose points hold its corners (centre, axes valid) */
@@ -75,6 +75,8 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 			cd3Vec axisX = cd3Scale(box->halfExtents.x, rotation.cx);
 			cd3Vec axisY = cd3Scale(box->halfExtents.y, rotation.cy);
 			cd3Vec axisZ = cd3Scale(box->halfExtents.z, rotation.cz);
+			/* All eight corners at once, sharing their partial sums (the same bits as cd3BoxCorner):
+			 * cheaper than building the handful GJK reads one by one. */
 			core->count = 8;
 			core->box = true;
 			core->orientedBox = true;
@@ -192,9 +194,9 @@ static inline int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
 
 /* Index of the core point farthest along `direction` (the first one on ties). A box's corner is
  * chosen by the signs of its three axes along the direction (three products instead of eight;
- * a zero product, a tie, keeps the lower corner as the scan would). */
-/* Always inlined: with the hull's scan in it, GCC 12 stopped inlining it into GJK's loop, and a
- * call there costs the box path more than the scan saves the hull path. */
+ * a zero product, a tie, keeps the lower corner as the scan would). Always inlined: with the
+ * hull's scan in it, GCC 12 stopped inlining it into GJK's loop, and a call there costs the box
+ * path more than the scan saves the hull path. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((always_inline))
 #endif
