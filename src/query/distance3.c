@@ -858,6 +858,10 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 	*touching = false;
 	/* The lean solver needs to know the newest vertex: not on a cached simplex. */
 	bool leanApplies = !cached;
+	/* The largest vertex size of the simplex about to be solved: that of the last solve's simplex
+	 * and of the vertex appended to it (set at each append; the lean path runs only after one).
+	 * Kept as it goes: a loop over the simplex's changing count mispredicted its exit. */
+	cdReal appendedSize = CD_R(0.0);
 	int iteration = 0;
 	for (; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
@@ -872,12 +876,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		else if (leanApplies)
 		{
-			cdReal largest = size[0];
-			for (int i = 1; i < simplex.count; ++i)
-			{
-				largest = cdMax(largest, size[i]);
-			}
-			if (largest <= GJK_LEAN_HIGH && largest >= GJK_LEAN_LOW)
+			if (appendedSize <= GJK_LEAN_HIGH && appendedSize >= GJK_LEAN_LOW)
 			{
 				LeanStatus status = SolveLean(&simplex, size, bestDistanceSquared, &v, &direction);
 				if (status == LEAN_ENCLOSED && overlapQuery)
@@ -991,6 +990,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		simplex.lambda[simplex.count] = CD_R(0.0);
 		size[simplex.count] = vertexSize;
+		appendedSize = cdMax(simplexSize, vertexSize);
 		++simplex.count;
 		leanApplies = true;
 	}
