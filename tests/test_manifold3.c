@@ -397,6 +397,23 @@ static void BruteFromShape(Brute* b, const cd3Shape* s)
 			}
 			break;
 		}
+		case CD3_SHAPE_AABB:
+		{
+			cd3Aabb box = s->aabb;
+			for (int i = 0; i < 8; ++i)
+			{
+				BAdd(b->v, &b->vertexCount,
+					 cd3MakeVec((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+								(i & 4) ? box.max.z : box.min.z));
+			}
+			cd3Vec axes[3] = {cd3MakeVec(1, 0, 0), cd3MakeVec(0, 1, 0), cd3MakeVec(0, 0, 1)};
+			for (int k = 0; k < 3; ++k)
+			{
+				BAdd(b->e, &b->edgeCount, axes[k]);
+				BAdd(b->n, &b->faceCount, axes[k]);
+			}
+			break;
+		}
 		case CD3_SHAPE_HULL:
 		{
 			const cd3Hull* h = s->hull.hull;
@@ -433,7 +450,10 @@ static void BruteFromShape(Brute* b, const cd3Shape* s)
 				b->n[0][0] = u[1] * w[2] - u[2] * w[1];
 				b->n[0][1] = u[2] * w[0] - u[0] * w[2];
 				b->n[0][2] = u[0] * w[1] - u[1] * w[0];
-				b->faceCount = 1;
+				double ln = sqrt(b->n[0][0] * b->n[0][0] + b->n[0][1] * b->n[0][1] + b->n[0][2] * b->n[0][2]);
+				double lu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+				double lw = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+				b->faceCount = ln > 1e-12 * lu * lw ? 1 : 0; /* a collinear triangle has no face axis */
 			}
 			break;
 		default:
@@ -443,8 +463,10 @@ static void BruteFromShape(Brute* b, const cd3Shape* s)
 
 static double AxisSeparation(const Brute* a, const Brute* b, const double* axis)
 {
+	/* Any nonzero axis: the callers drop parallel edge pairs relative to the edges' lengths (an
+	 * absolute floor dropped every edge axis of shapes of size 1e-8). */
 	double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-	if (!(len > 1e-9))
+	if (!(len > 0.0))
 	{
 		return -INFINITY;
 	}
@@ -1267,7 +1289,7 @@ static void TestFuzzRegressions(void)
 	}
 }
 
-#if defined(COLLIDE_DOUBLE)
+#if CD_DOUBLE
 #define REGRESSION_REL 1e-8
 #else
 #define REGRESSION_REL 1e-4
@@ -1416,6 +1438,155 @@ static void TestLongCoreRegressions(void)
 	CheckFuzzCase("double-long-capsule-aabb", &aabb, &capsule2, 12500000, -1.0, 2.5e14);
 }
 
+/* One overlapping fuzz case in both orders, to round-off (256 epsilon of the case's magnitude
+ * `scale`, the fuzz audit's bound): every point on both surfaces and within the speculative
+ * distance, and (exactDepth) the smallest separation the exact depth (BruteSat: every face normal
+ * and edge cross product, in double). */
+static void CheckDepthCase(const char* name, const cd3Shape* a, const cd3Shape* b, double speculative,
+						   double scale, bool exactDepth)
+{
+	Brute ba, bb;
+	BruteFromShape(&ba, a);
+	BruteFromShape(&bb, b);
+	double exact = BruteSat(&ba, &bb);
+	double tol = 256.0 * (double)CD_REAL_EPSILON * scale;
+	TEST_CHECKF(exact < 0.0, "%s: exact depth %.9g", name, exact);
+	for (int order = 0; order < 2; ++order)
+	{
+		const cd3Shape* first = order == 0 ? a : b;
+		const cd3Shape* second = order == 0 ? b : a;
+		cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
+		double off = WorstOffSurface(&m, first, second);
+		TEST_CHECKF(m.pointCount > 0 && off <= tol,
+					"%s, order %d: %d points, %.3g off a surface (tolerance %.3g)", name, order, m.pointCount,
+					off, tol);
+		for (int i = 0; i < m.pointCount; ++i)
+		{
+			TEST_CHECKF((double)m.points[i].separation <= speculative + tol,
+						"%s, order %d: point %d separation %.9g beyond the speculative distance", name, order,
+						i, (double)m.points[i].separation);
+		}
+		TEST_CHECKF(!exactDepth || fabs(MinSeparation(&m) - exact) <= tol,
+					"%s, order %d: smallest separation %.17g, exact %.17g", name, order, MinSeparation(&m),
+					exact);
+		TEST_CHECKF(MinSeparation(&m) <= exact + tol,
+					"%s, order %d: smallest separation %.17g above the exact %.17g", name, order,
+					MinSeparation(&m), exact);
+	}
+}
+
+static cd3Shape HullShapeOf(const double* xyz, int count, const double* pq, cd3Hull** hull)
+{
+	cd3Vec points[16];
+	for (int i = 0; i < count && i < 16; ++i)
+	{
+		points[i] = cd3MakeVec((cdReal)xyz[3 * i], (cdReal)xyz[3 * i + 1], (cdReal)xyz[3 * i + 2]);
+	}
+	*hull = NULL;
+	TEST_CHECK(cd3ComputeHull(points, count, hull) == CD_OK);
+	cd3Transform t = {
+		cd3MakeVec((cdReal)pq[0], (cdReal)pq[1], (cdReal)pq[2]),
+		cd3NormalizeQuat(cd3MakeQuat((cdReal)pq[3], (cdReal)pq[4], (cdReal)pq[5], (cdReal)pq[6]))};
+	return cd3MakeHullShape(*hull, t);
+}
+
+/* The reference feature chosen with a bias (within 1e-4 of the size of the exact axis) is deeper
+ * than the exact depth; matching the depth shifted every point, moving B's side off B: off a
+ * triangle (not solid), points of separation 0 pushed beyond the speculative distance 0, and off
+ * a hull's edge. Now only the points deeper than the exact depth are lifted to it, each by moving
+ * the side that stays in its shape (fuzz_manifold3, double build; the inputs are
+ * fuzz/corpus/fuzz_manifold3/regression-double-*). */
+static void TestDepthMatchRegressions(void)
+{
+	/* regression-double-aabb-triangle-corner-depth: B's face 4.7e-4 deeper than the exact edge
+	 * axis (-0.07774): the points were 4.7e-4 off the triangle. */
+	cd3Shape aabb = AabbShape(-0.375, -12.25, 0.125, 0.5, -1.875, 0.25);
+	cd3Shape triangle = TriangleShape(0.5, -1.875, 0.25, -12.25, 0.125, 0.5, -1.875, -12, -12.5);
+	CheckDepthCase("aabb-triangle-corner-depth", &aabb, &triangle, 0.0, 12.5, true);
+	/* regression-double-aabb-triangle-valid: 3.45e-13 deeper: two corners touching at separation
+	 * 0 got +3.45e-13 > speculative 0. */
+	aabb = AabbShape(-0.000115, -0.000125, -0.000125, 7.5e-06, -1.25e-06, 5e-06);
+	triangle = TriangleShape(5e-06, 1.375e-05, -0.00012375, 3.75e-06, -0.000125, -0.000125, -0.000125,
+							 -0.00011375, -0.000125);
+	CheckDepthCase("aabb-triangle-valid", &aabb, &triangle, 0.0, 1.25e-4, true);
+	/* regression-double-triangle-hull-depth: a triangle and a hull of size 1e-8; points 2e-12 off
+	 * the triangle. */
+	static const double hullPoints1[] = {-2.5e-09,	-1.25e-09, -2.5e-09,   -1.375e-08, 5e-09,	 8.75e-09,
+										 -1.25e-08, 1.25e-08,  -2.5e-09,   -3.75e-09,  -1.5e-08, 1.375e-08,
+										 8.75e-09,	-2.5e-09,  -1.375e-08, 6.25e-09,   -2.5e-09, -7.25e-08,
+										 -1.25e-08, -2.5e-09,  1.375e-08,  1.375e-08,  -1e-08,	 1.25e-08};
+	static const double pq1[] = {2.5e-09,
+								 -6.25e-09,
+								 1.125e-08,
+								 -0.47140452079103173,
+								 -0.47140452079103173,
+								 -0.23570226039551587,
+								 0.70710678118654757};
+	cd3Hull* hull = NULL;
+	cd3Shape hullShape = HullShapeOf(hullPoints1, 8, pq1, &hull);
+	triangle =
+		TriangleShape(3.75e-09, -1e-08, 8.75e-09, 5e-09, -1.75e-08, 1e-08, -1.125e-08, 2e-08, -1.375e-08);
+	if (hull != NULL)
+	{
+		CheckDepthCase("triangle-hull-depth", &triangle, &hullShape, 5e-9, 1.45e-7, true);
+		cd3DestroyHull(hull);
+	}
+	/* regression-double-aabb-hull-edge-depth: the deepest point lies on the hull's edge, where
+	 * moving B's side inward along the normal leaves the hull (it was 8.6e-4 off); A's side moves
+	 * instead, along the AABB's side face. */
+	static const double hullPoints2[] = {-0.25, 0.25,  -0.375, 0.625,  -0.625,	-0.125, 0.25, -0.5,
+										 -0.5,	1.375, 0.125,  -1.375, -12.125, -1.875, 0.375};
+	static const double pq2[] = {0.25,
+								 -0.875,
+								 0.25,
+								 -0.050775160692848154,
+								 -0.99519314957982385,
+								 0.020310064277139262,
+								 -0.081240257108557049};
+	hullShape = HullShapeOf(hullPoints2, 5, pq2, &hull);
+	aabb = AabbShape(-12, -1, -11.5, 1.25, -0.75, 1.375);
+	if (hull != NULL)
+	{
+		CheckDepthCase("aabb-hull-edge-depth", &aabb, &hullShape, 0.0, 25.0, true);
+		cd3DestroyHull(hull);
+	}
+	/* regression-double-needle-hulls: a needle hull (its points within 1.3e-7 of its origin but
+	 * one at z = 1) against a hull of size 1.25e-7. At size 1 the bias (1e-4) covers every axis
+	 * of the contact: B's face was 2e-8 deeper than the exact depth, and the shift left points
+	 * 1.6e-8 off the needle and 2.3e-8 beyond the speculative distance 5e-9. Moving inward along
+	 * the normal leaves the needle at one point and the small hull too: that point keeps its depth
+	 * (the smallest separation is then deeper than the exact depth, with both sides on their
+	 * surfaces). Double only: in float the needle's points within 1e-8 of each other next to
+	 * one at 1 make no hull. */
+#if CD_DOUBLE
+	static const double needlePoints[] = {
+		-3.75e-09, -1e-08,	  -3.75e-09, 5e-09,		  -7.5e-09,	  1.25e-08,	 -1.25e-09,	 -6.25e-09,
+		2.5e-09,   1.375e-08, -2.5e-09,	 -1.2125e-07, 5e-09,	  -8.75e-09, 8.75e-09,	 1.875e-08,
+		2.5e-09,   1,		  -5e-09,	 -5e-09,	  -1.125e-08, 1.125e-08, -1.125e-08, -1.25e-08};
+	static const double needlePq[] = {-5e-09,
+									  -1.175e-07,
+									  7.5e-09,
+									  -0.41931393468876732,
+									  -0.10482848367219183,
+									  -0.52414241836095921,
+									  -0.73379938570534287};
+	static const double smallPoints[] = {1.25e-08,	-1.25e-09, -6.25e-09,	-1.25e-07, -1.25e-07,
+										 -1.25e-07, -1.25e-07, -1.25e-07,	-1.25e-07, -1.25e-07,
+										 2.5e-09,	2.5e-09,   -1.2125e-07, 1.875e-08, -2.5e-09};
+	static const double smallPq[] = {
+		-5e-09, -1.125e-08, 1e-08, -0.4838429975134233, -0.59136366362751736, 0, 0.64512399668456444};
+	cd3Hull* small = NULL;
+	cd3Shape needle = HullShapeOf(needlePoints, 8, needlePq, &hull);
+	cd3Shape smallShape = HullShapeOf(smallPoints, 5, smallPq, &small);
+	if (hull != NULL && small != NULL)
+	{
+		CheckDepthCase("needle-hulls", &needle, &smallShape, 5e-9, 2.0, false);
+	}
+	cd3DestroyHull(hull);
+	cd3DestroyHull(small);
+#endif
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -1435,5 +1606,6 @@ int main(void)
 	TEST_RUN(TestFuzzRegressions);
 	TEST_RUN(TestZeroExtentRegressions);
 	TEST_RUN(TestLongCoreRegressions);
+	TEST_RUN(TestDepthMatchRegressions);
 	return TEST_SUMMARY();
 }

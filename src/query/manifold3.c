@@ -77,17 +77,53 @@ static void AddPoint(cd3Manifold* m, cd3Vec point, cdReal separation, uint32_t i
 	p->id = id;
 }
 
+/* p lies in the solid shape s, or on the triangle s, within `tolerance` (per face plane). */
+static bool InsideShape(const cd3Shape* s, cd3Vec p, cdReal tolerance)
+{
+	switch (s->type)
+	{
+		case CD3_SHAPE_AABB:
+			return p.x >= s->aabb.min.x - tolerance && p.x <= s->aabb.max.x + tolerance &&
+				   p.y >= s->aabb.min.y - tolerance && p.y <= s->aabb.max.y + tolerance &&
+				   p.z >= s->aabb.min.z - tolerance && p.z <= s->aabb.max.z + tolerance;
+		case CD3_SHAPE_BOX:
+		{
+			cd3Vec l = cd3InvRotateVector(s->box.rotation, cd3Sub(p, s->box.center));
+			cd3Vec h = s->box.halfExtents;
+			return cdAbs(l.x) <= h.x + tolerance && cdAbs(l.y) <= h.y + tolerance &&
+				   cdAbs(l.z) <= h.z + tolerance;
+		}
+		case CD3_SHAPE_HULL:
+		{
+			const cd3Hull* hull = s->hull.hull;
+			cd3Vec l = cd3InvTransformPoint(s->hull.transform, p);
+			for (int i = 0; i < hull->faceCount; ++i)
+			{
+				if (!(cd3Dot(hull->planes[i].normal, l) - hull->planes[i].offset <= tolerance))
+				{
+					return false;
+				}
+			}
+			return true;
+		}
+		case CD3_SHAPE_TRIANGLE:
+			return cd3VecDistance(cd3ClosestPointOnTriangle(s->triangle, p), p) <= tolerance;
+		default:
+			return false;
+	}
+}
+
 /* The reference feature is chosen with a bias for stability from frame to frame (FACE_BIAS,
  * EDGE_BIAS), so a face contact can be deeper along its normal than the exact depth by up to the
- * bias; and clipping can lose the deepest vertex at a tie of incident faces. The points'
- * separations are shifted so that the smallest is the exact signed separation the separating axis
- * test (or EPA) proves, with A's side of each point kept in place; a larger mismatch than `limit`
- * is a different contact and is left alone. */
-static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit)
+ * bias; and clipping can lose the deepest vertex at a tie of incident faces. The smallest
+ * separation is made the exact signed separation the separating axis test (or EPA) proves (`exact`,
+ * within `limit` of the manifold's; a larger mismatch is a different contact and is left alone).
+ * Returns the mismatch exact - deepest (zero: nothing to do). */
+static cdReal DepthMismatch(const cd3Manifold* m, cdReal exact, cdReal limit)
 {
 	if (m->pointCount == 0)
 	{
-		return;
+		return CD_R(0.0);
 	}
 	cdReal deepest = m->points[0].separation;
 	for (int i = 1; i < m->pointCount; ++i)
@@ -95,15 +131,122 @@ static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit)
 		deepest = cdMin(deepest, m->points[i].separation);
 	}
 	cdReal delta = exact - deepest;
-	if (delta == CD_R(0.0) || !(cdAbs(delta) <= limit))
-	{
-		return;
-	}
+	return cdAbs(delta) <= limit ? delta : CD_R(0.0);
+}
+
+/* Every point shifted by delta along the normal, A's side staying in place. */
+static void ShiftDepth(cd3Manifold* m, cdReal delta)
+{
 	for (int i = 0; i < m->pointCount; ++i)
 	{
 		m->points[i].separation += delta;
 		m->points[i].point = cd3MulAdd(m->points[i].point, CD_R(0.5) * delta, m->normal);
 	}
+}
+
+/* A mismatch within the round-off of the points' coordinates (the SAT's closed form and the
+ * clipping's arithmetic differ in their last bits): any side may move. */
+static bool DepthWithinRoundOff(const cd3Manifold* m, cdReal delta, cdReal size)
+{
+	cdReal bound = ROUND_OFF_TOLERANCE * size;
+	if (cdAbs(delta) <= bound)
+	{
+		return true; /* the common case, without the coordinates */
+	}
+	cd3Vec abs = cd3Abs(m->points[0].point);
+	return cdAbs(delta) <= bound + ROUND_OFF_TOLERANCE * cdMax(abs.x, cdMax(abs.y, abs.z));
+}
+
+/* MatchDepth's work for a mismatch delta (from DepthMismatch, nonzero) beyond round-off.
+ * - Too deep (delta > 0, the biased normal): each point deeper than the exact depth is lifted to
+ *   it, the others are left as they are. Lifting moves one side of the point along the normal,
+ *   into its shape: B's side when it stays in B, else A's when it stays in A (checked: at an edge
+ *   of the incident face, or on a needle, moving inward along the normal can leave the shape; and a
+ *   triangle has no inside). A point that neither side allows stays deeper than the exact depth,
+ *   but on both surfaces. Shifting every point instead moved the shallow ones' sides off the
+ *   surfaces or beyond the speculative distance (double-build fuzz findings: 4.7e-4 off a triangle
+ *   at size 12.5; 8.6e-4 off a hull at size 25 when moved off an edge).
+ * - Too shallow (the deepest vertex clipped away): every point is shifted deeper by the
+ *   difference, A's side staying in place. */
+static void LiftDepth(cd3Manifold* m, cdReal exact, cdReal delta, const cd3Shape* a, const cd3Shape* b,
+					  cdReal size)
+{
+	if (delta < CD_R(0.0))
+	{
+		ShiftDepth(m, delta);
+		return;
+	}
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		cd3ManifoldPoint* p = &m->points[i];
+		cdReal lift = exact - p->separation;
+		if (!(lift > CD_R(0.0)))
+		{
+			continue;
+		}
+		cd3Vec onA = cd3MulSub(p->point, CD_R(0.5) * p->separation, m->normal);
+		cd3Vec onB = cd3MulAdd(p->point, CD_R(0.5) * p->separation, m->normal);
+		cd3Vec abs = cd3Abs(p->point);
+		cdReal tolerance = ROUND_OFF_TOLERANCE * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
+		cd3Vec movedB = cd3MulAdd(onB, lift, m->normal);
+		cd3Vec movedA = cd3MulSub(onA, lift, m->normal);
+		if (InsideShape(b, movedB, tolerance))
+		{
+			p->point = cd3Lerp(onA, movedB, CD_R(0.5));
+		}
+		else if (InsideShape(a, movedA, tolerance))
+		{
+			p->point = cd3Lerp(movedA, onB, CD_R(0.5));
+		}
+		else
+		{
+			continue;
+		}
+		p->separation = exact;
+	}
+}
+
+/* MatchDepth for a nonzero mismatch delta: out of line (rare beyond round-off). */
+MANIFOLD_NOINLINE static void MatchDepthBy(cd3Manifold* m, cdReal exact, cdReal delta, const cd3Polytope* a,
+										   const cd3Polytope* b)
+{
+	cdReal size = a->size + b->size;
+	if (DepthWithinRoundOff(m, delta, size))
+	{
+		ShiftDepth(m, delta);
+		return;
+	}
+	LiftDepth(m, exact, delta, &a->shape, &b->shape, size);
+}
+
+static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit, const cd3Polytope* a, const cd3Polytope* b)
+{
+	cdReal delta = DepthMismatch(m, exact, limit);
+	if (delta != CD_R(0.0))
+	{
+		MatchDepthBy(m, exact, delta, a, b);
+	}
+}
+
+/* MatchDepth for two boxes (cd3CollideBoxBox), called when the deepest point is not at the exact
+ * depth: out of line, with the size and the shapes for the checks built only then. */
+MANIFOLD_NOINLINE static void MatchBoxDepth(cd3Manifold* m, cdReal exact, const cd3Box* a, const cd3Box* b)
+{
+	/* The size bound from the 1-norms: no square roots. */
+	cdReal size = CD_R(2.0) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
+							   cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
+	cdReal delta = DepthMismatch(m, exact, (FACE_BIAS + EDGE_BIAS) * size);
+	if (delta == CD_R(0.0))
+	{
+		return;
+	}
+	if (DepthWithinRoundOff(m, delta, size))
+	{
+		ShiftDepth(m, delta);
+		return;
+	}
+	cd3Shape sa = cd3MakeBoxShape(*a), sb = cd3MakeBoxShape(*b);
+	LiftDepth(m, exact, delta, &sa, &sb, size);
 }
 
 static cd3Manifold Flipped(cd3Manifold m)
@@ -711,7 +854,7 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 		{
 			if (epa.overlapping)
 			{
-				MatchDepth(&m, separation, tolerance);
+				MatchDepth(&m, separation, tolerance, a, b);
 			}
 			return m;
 		}
@@ -759,7 +902,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 		}
 		if (m.pointCount > 0)
 		{
-			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size));
+			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size), a, b);
 		}
 		return m;
 	}
@@ -1405,11 +1548,15 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 		}
 		if (m.pointCount > 0)
 		{
-			/* The size bound from the 1-norms: no square roots on the common path. */
-			cdReal sizeBound =
-				CD_R(2.0) * (cdAbs(a.halfExtents.x) + cdAbs(a.halfExtents.y) + cdAbs(a.halfExtents.z) +
-							 cdAbs(b.halfExtents.x) + cdAbs(b.halfExtents.y) + cdAbs(b.halfExtents.z));
-			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * sizeBound);
+			cdReal deepest = m.points[0].separation;
+			for (int i = 1; i < m.pointCount; ++i)
+			{
+				deepest = cdMin(deepest, m.points[i].separation);
+			}
+			if (deepest != separation)
+			{
+				MatchBoxDepth(&m, separation, &a, &b);
+			}
 			return m;
 		}
 	}
