@@ -865,6 +865,13 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 	return m;
 }
 
+/* Round-off of the points at p and of the shapes of sizes `size`. */
+static cdReal RoundOff(cd3Vec p, cdReal size)
+{
+	cd3Vec abs = cd3Abs(p);
+	return ROUND_OFF_TOLERANCE * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
+}
+
 MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b,
 														 cd3SatResult sat, cdReal speculativeDistance);
 
@@ -1109,7 +1116,13 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 	cd3Vec gap = cd3Sub(cp.pointB, cp.pointA);
 	cdReal size = b->size + axisLength + r;
 	cd3Manifold m = EmptyManifold();
-	if (cp.distance > REALIZED_TOLERANCE * size && cd3LengthSquared(gap) > CD_R(0.0))
+	/* The core is apart from b when GJK's distance exceeds the round-off of the coordinates of the
+	 * core and b (the radius plays no part in where they are): their closest points then give the
+	 * normal; the SAT below is for a core that touches or enters b. The bound was 1e-4 of the
+	 * size, radius included: a sphere's centre 1.43 outside a hull of size 4.6e7 (double) took the
+	 * SAT's nearest face plane, whose projection lay 1.08 beside the face, and a radius of 2.5e14
+	 * took a core 4.5e6 from a box of size 1e7 for touching (a point 3e6 off the box). */
+	if (cp.distance > RoundOff(cp.pointB, b->size + axisLength) && cd3LengthSquared(gap) > CD_R(0.0))
 	{
 		cd3Vec u = cd3Normalize(gap);
 		if (capsule)
