@@ -1780,6 +1780,33 @@ static void TestCoreApartRegressions(void)
 #endif
 }
 
+/* Polytopes whose SAT features give no contact on both surfaces (float, at 1e9): the reference
+ * face clipped away and the edge pair's edges do not cross along its axis, so the fallback took
+ * the edges' closest points, 1e9 apart (a point 5e8 off both shapes). Now the other shape's face
+ * (which the bias, relative to the size 1e9, passed over) and, touching within round-off or
+ * overlapping, the witnesses of GJK or EPA (fuzz_manifold3, float build;
+ * regression-box-sliver-face-huge-triangle, -aabb-huge-triangle-touching,
+ * -flat-aabb-huge-triangle-touching). */
+static void TestSatFallbackRegressions(void)
+{
+	/* A box 2e-9 thin (a sliver face after rotation in float) through a triangle's plane x = y,
+	 * the triangle reaching 1e9: overlapping by 0.44 along the triangle's normal. */
+	cd3Shape box = BoxShape(0, 0, 0, 9.9999997171806854e-10, 0.625, 0.625, -0.5, -0.5, -0.5, -0.5);
+	cd3Shape triangle = TriangleShape(-0.625, -0.625, -0.625, -12.5, -12.5, 1e9, 1e9, 1e9, 1e9);
+	CheckFuzzCase("box-sliver-face-huge-triangle", &box, &triangle, 8.375, 0.0, 1e9);
+	/* A triangle's corner 1.2e-6 above an AABB 1e9 long (touching at this scale). */
+	cd3Shape aabb = AabbShape(-8.9999997499035089e-07, -1e9, -1e9, 1.2499999968440534e-07,
+							  -8.9999997499035089e-07, -8.9999997499035089e-07);
+	triangle = TriangleShape(-1e9, 37374.49609375, -1.249999968422344e-06, -1.249999968422344e-06, 1e9,
+							 -400.55520629882812, 0, 3.3750001193766366e-07, -1.249999968422344e-06);
+	CheckFuzzCase("aabb-huge-triangle-touching", &aabb, &triangle, 0.0, -1.0, 1e9);
+	/* A triangle's edge in a flat AABB's plane, 1.2e-4 past its edge. */
+	aabb = AabbShape(-1e9, -1e9, -1e9, 1.249999968422344e-05, -1e9, 0);
+	triangle = TriangleShape(258061.125, 2.9999999242136255e-05, -0.00012124999921070412, -1e9, -1e9, 1e9,
+							 -1e9, -1e9, 0.00011875000200234354);
+	CheckFuzzCase("flat-aabb-huge-triangle-touching", &aabb, &triangle, 0.0, -1.0, 1e9);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -1801,5 +1828,6 @@ int main(void)
 	TEST_RUN(TestLongCoreRegressions);
 	TEST_RUN(TestDepthMatchRegressions);
 	TEST_RUN(TestCoreApartRegressions);
+	TEST_RUN(TestSatFallbackRegressions);
 	return TEST_SUMMARY();
 }

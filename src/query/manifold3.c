@@ -740,6 +740,8 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 	bool useB =
 		sat->faceA < 0 || (sat->faceB >= 0 && sat->faceSeparationB > sat->faceSeparationA + FACE_BIAS * size);
 	int face = useB ? sat->faceB : sat->faceA;
+	int other = useB ? sat->faceA : sat->faceB;
+	bool otherTried = false;
 	cdReal faceSeparation = useB ? sat->faceSeparationB : sat->faceSeparationA;
 	bool edges = sat->edgeA >= 0;
 	bool useEdges = edges && (face < 0 || sat->edgeSeparation > faceSeparation + EDGE_BIAS * size);
@@ -760,13 +762,13 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 	{
 		cd3Manifold m = useB ? FaceContact(b, face, a, true, speculativeDistance)
 							 : FaceContact(a, face, b, false, speculativeDistance);
-		int other = useB ? sat->faceA : sat->faceB;
 		if (m.pointCount == 0 && !edges && other >= 0)
 		{
 			/* The incident polygon clipped away against a sliver of a face (a box 1e-9 thin whose
 			 * side planes round-off of the incident coordinates crosses): the other shape's face. */
 			m = useB ? FaceContact(a, other, b, false, speculativeDistance)
 					 : FaceContact(b, other, a, true, speculativeDistance);
+			otherTried = true;
 		}
 		if (m.pointCount > 0 || !edges)
 		{
@@ -778,7 +780,20 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 		return EmptyManifold();
 	}
 	edge = EdgeContact(a, b, sat, REALIZED_TOLERANCE * size, &realized);
-	return realized || !checkEdges ? edge : EmptyManifold();
+	if (realized || !checkEdges)
+	{
+		return edge;
+	}
+	/* The face clipped away and the edges do not cross: the other shape's face, which the bias
+	 * (relative to the pair's size) can pass over though it separates the most (a box of size 1
+	 * whose face is a sliver in float coordinates, against a triangle of size 1e9 whose face is
+	 * the axis). */
+	if (!otherTried && face >= 0 && other >= 0)
+	{
+		return useB ? FaceContact(a, other, b, false, speculativeDistance)
+					: FaceContact(b, other, a, true, speculativeDistance);
+	}
+	return EmptyManifold();
 }
 
 static cdReal ManifoldMinSeparation(const cd3Manifold* m)
@@ -872,6 +887,69 @@ static cdReal RoundOff(cd3Vec p, cdReal size)
 	return ROUND_OFF_TOLERANCE * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
 }
 
+/* Every point's A side lies in A and its B side in B, within round-off. */
+static bool PointsOnShapes(const cd3Manifold* m, const cd3Polytope* a, const cd3Polytope* b)
+{
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		const cd3ManifoldPoint* p = &m->points[i];
+		cdReal tolerance = RoundOff(p->point, a->size + b->size);
+		if (!InsideShape(&a->shape, cd3MulSub(p->point, CD_R(0.5) * p->separation, m->normal), tolerance) ||
+			!InsideShape(&b->shape, cd3MulAdd(p->point, CD_R(0.5) * p->separation, m->normal), tolerance))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* The world normal (from A to B) of the SAT's axis of largest separation. */
+static cd3Vec SatNormal(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat)
+{
+	cdReal separation = cd3SatSeparation(sat);
+	if (sat->faceA >= 0 && sat->faceSeparationA == separation)
+	{
+		return cd3RotateVector(a->transform.q, a->planes[sat->faceA].normal);
+	}
+	if (sat->faceB >= 0 && sat->faceSeparationB == separation)
+	{
+		return cd3Neg(cd3RotateVector(b->transform.q, b->planes[sat->faceB].normal));
+	}
+	return cd3Normalize(sat->edgeNormal);
+}
+
+/* Overlapping or touching polytopes (GJK's distance 0) whose SAT features give no contact on both
+ * surfaces: the incident polygon clipped away in round-off and the edge pair's edges do not cross
+ * (at 1e9 in float, a triangle's vertex touching a box's face, or its edge a box's edge, within
+ * the coordinates' round-off: the edges' closest points were 1e9 apart, the point 5e8 off both).
+ * One point where they meet: touching (the SAT's separation within round-off of zero), GJK's
+ * point, on both shapes, with the SAT's axis and separation; deeper, EPA's witnesses and depth.
+ * Empty when EPA fails too. */
+static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat,
+								  cd3ClosestPoints cp)
+{
+	cd3Manifold m = EmptyManifold();
+	cdReal separation = cd3SatSeparation(sat);
+	cd3Vec point = cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5));
+	if (separation >= -RoundOff(point, a->size + b->size))
+	{
+		m.normal = SatNormal(a, b, sat);
+		if (cd3LengthSquared(m.normal) > CD_R(0.0))
+		{
+			AddPoint(&m, point, separation, ID_VERTEX_PAIR);
+			return m;
+		}
+		m.normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	}
+	cd3Penetration epa = cd3Epa(a, cd3PolytopeSupport, b, cd3PolytopeSupport);
+	if (epa.overlapping && !epa.hitIterationCap)
+	{
+		m.normal = epa.normal;
+		AddPoint(&m, cd3Lerp(epa.pointA, epa.pointB, CD_R(0.5)), -epa.depth, ID_VERTEX_PAIR);
+	}
+	return m;
+}
+
 MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b,
 														 cd3SatResult sat, cdReal speculativeDistance);
 
@@ -906,6 +984,10 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 				return cp.distance <= speculativeDistance ? VertexContact(cp) : m;
 			}
 			m = SatContact(a, b, &sat, speculativeDistance, false);
+			if (!PointsOnShapes(&m, a, b))
+			{
+				return WitnessContact(a, b, &sat, cp);
+			}
 		}
 		if (m.pointCount > 0)
 		{
