@@ -1807,6 +1807,35 @@ static void TestSatFallbackRegressions(void)
 	CheckFuzzCase("flat-aabb-huge-triangle-touching", &aabb, &triangle, 0.0, -1.0, 1e9);
 }
 
+/* Boxes tiny against their coordinates (float, at 1e9): the rotated reference face's edges are
+ * round-off, 6e-8 long in a direction the box does not have, and their side planes kept the whole
+ * incident face (a flat AABB's corner 1e9 away). Such a face is now a segment or a point
+ * (SegmentFaceContact); an edge of round-off length in a face with area gets a supporting plane
+ * from its neighbours (fuzz_manifold3, float build; regression-flat-aabb-tiny-far-box,
+ * -flat-aabb-far-tiny-box, -huge-triangle-segment-aabb-separation). */
+static void TestRoundOffFaceRegressions(void)
+{
+	/* A box 2.5e-4 wide (zero x extent) at (-1e9, -1e9, 0) on a flat AABB's edge: a point 1e9 off
+	 * the AABB, separation +2.5e5. */
+	cd3Shape flat = AabbShape(-1e9, -1e9, -1e9, 1.249999968422344e-05, -1e9, -0.00012500000593718141);
+	cd3Shape box =
+		BoxShape(-1e9, -1e9, -0.00011500000255182385, 0, 0.0001237499964190647, 9.0000001364387572e-05, 1,
+				 -0.00011375001486157998, -0.00012500002048909664, -0.00012125001376261935);
+	CheckFuzzCase("flat-aabb-tiny-far-box", &flat, &box, 1e9, -1.0, 1e9);
+	/* A box of size 16 at 1e9 against a flat AABB: a point 8.95e8 off the AABB. */
+	flat = AabbShape(-1e9, -1e9, -1e9, 9.9999997171806854e-10, -1e9, -11.375);
+	box = BoxShape(-1e9, -1e9, 0.125, 0.125, 1.375, 8.125, 0.20628423988819122, 0.51571059226989746,
+				   0.82513695955276489, -0.10314211994409561);
+	CheckFuzzCase("flat-aabb-far-tiny-box", &flat, &box, 1e9, -1.0, 1e9);
+	/* An AABB 1e9 long and 1e-3 across through a triangle reaching 1e9 (overlapping): four points
+	 * at separation 1e9. */
+	cd3Shape triangle =
+		TriangleShape(-1e9, -1e9, -1e9, -1e9, 0, 0, 0, 0.0061249998398125172, 0.0088750002905726433);
+	cd3Shape aabb = AabbShape(-0.0013749999925494194, -0.00037500000325962901, -1e9, -0.00025000001187436283,
+							  0.00087500002700835466, -0.0020000000949949026);
+	CheckFuzzCase("huge-triangle-segment-aabb", &triangle, &aabb, 1e9, 0.0, 1e9);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -1829,5 +1858,6 @@ int main(void)
 	TEST_RUN(TestDepthMatchRegressions);
 	TEST_RUN(TestCoreApartRegressions);
 	TEST_RUN(TestSatFallbackRegressions);
+	TEST_RUN(TestRoundOffFaceRegressions);
 	return TEST_SUMMARY();
 }

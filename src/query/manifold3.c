@@ -608,11 +608,99 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 }
 
 /* The outward normal of the side plane through edge v0-v1 of face `face` (world normal n). False
- * for a zero-length edge: the face has no area (SegmentFaceContact). */
-static bool FaceSideNormal(cd3Vec v0, cd3Vec v1, cd3Vec n, cd3Vec* side)
+ * for an edge of length at most sqrt(floorSquared) (zero: a box with zero extents; see
+ * EDGE_ROUND_OFF). */
+static bool FaceSideNormal(cd3Vec v0, cd3Vec v1, cd3Vec n, cdReal floorSquared, cd3Vec* side)
 {
 	*side = cd3Cross(cd3Sub(v1, v0), n);
-	return cd3LengthSquared(*side) > CD_R(0.0);
+	return cd3LengthSquared(*side) > floorSquared;
+}
+
+/* An edge of a face in world coordinates shorter than this, relative to the magnitude of the
+ * coordinates, is round-off (each world vertex carries a few epsilon of it from the rotation):
+ * its direction, and so its side plane, is noise (a box 2.5e-4 wide at 1e9 in float had a face
+ * edge 6e-8 long, in a direction the box does not have). One epsilon: a face a few units of the
+ * last place wide still clips as a face (a box of size 2 at 1e7 in float keeps its 4 points), and
+ * a hull's edges (at least the builder's weld distance, 16 epsilon of its extent) stay above it
+ * unless the hull lies 10 extents from the origin. */
+#define EDGE_ROUND_OFF CD_REAL_EPSILON
+
+/* The square of that length for a face with vertex v of a polytope of the given size: from the
+ * Euclidean magnitudes, (size + |v|)^2 <= 2 (size^2 + |v|^2), without branches (hot path). */
+static cdReal EdgeFloorSquared(cd3Vec v, cdReal size)
+{
+	return CD_R(2.0) * EDGE_ROUND_OFF * EDGE_ROUND_OFF * (size * size + cd3LengthSquared(v));
+}
+
+/* The face (world normal n) lies within sqrt(floorSquared) of a segment (or a point) in world
+ * coordinates: a box with zero extents, or one tiny against its coordinates (2.5e-4 at 1e9 in
+ * float, whose rotated face is a segment with round-off edges 6e-8 long). */
+static bool FaceIsThin(const cd3Polytope* p, int face, cdReal floorSquared)
+{
+	cd3Vec r0, r1;
+	FaceEnds(p, face, &r0, &r1);
+	cd3Vec axis = cd3Sub(r1, r0);
+	cdReal length2 = cd3LengthSquared(axis);
+	if (!(length2 > floorSquared))
+	{
+		return true;
+	}
+	int guard = 0;
+	int e = p->faceEdges[face];
+	do
+	{
+		/* |cross(v - r0, axis)| / |axis|: the distance from the line, compared squared. */
+		cd3Vec v = WorldVertex(p, p->edges[e].origin);
+		if (cd3LengthSquared(cd3Cross(cd3Sub(v, r0), axis)) > floorSquared * length2)
+		{
+			return false;
+		}
+		e = p->edges[e].next;
+	} while (e != p->faceEdges[face] && ++guard < p->edgeCount);
+	return true;
+}
+
+/* The side plane of the face's edge `edge` when the edge has round-off length (out of line:
+ * rare; returned by value, so the hot loop's normal stays in registers). thin: the face has no
+ * area (SegmentFaceContact). Otherwise the edge is too short for its direction to bound the
+ * face: the normal is the sum of its neighbours' unit side normals, a direction within the face's
+ * normal cone at that corner, so the plane through the edge's origin supports the face there (a
+ * plane across the face from its centre need not: it cuts a parallelogram's obtuse corner).
+ * Neighbours of round-off length too: no plane (zero normal). */
+typedef struct RoundOffPlane
+{
+	cd3Vec side;
+	bool thin;
+} RoundOffPlane;
+
+MANIFOLD_NOINLINE static RoundOffPlane RoundOffSide(const cd3Polytope* p, int face, int edge, cd3Vec n,
+													cdReal floorSquared)
+{
+	RoundOffPlane plane = {cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)), FaceIsThin(p, face, floorSquared)};
+	if (plane.thin)
+	{
+		return plane;
+	}
+	int previous = edge;
+	int guard = 0;
+	while (p->edges[previous].next != edge && ++guard < p->edgeCount)
+	{
+		previous = p->edges[previous].next;
+	}
+	int next = p->edges[edge].next;
+	cd3Vec v0 = WorldVertex(p, p->edges[edge].origin);
+	cd3Vec v1 = WorldVertex(p, p->edges[next].origin);
+	cd3Vec sidePrevious = cd3Cross(cd3Sub(v0, WorldVertex(p, p->edges[previous].origin)), n);
+	cd3Vec sideNext = cd3Cross(cd3Sub(WorldVertex(p, p->edges[p->edges[next].next].origin), v1), n);
+	if (cd3LengthSquared(sidePrevious) > floorSquared)
+	{
+		plane.side = cd3Normalize(sidePrevious);
+	}
+	if (cd3LengthSquared(sideNext) > floorSquared)
+	{
+		plane.side = cd3Add(plane.side, cd3Normalize(sideNext));
+	}
+	return plane;
 }
 
 /* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
@@ -642,18 +730,24 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	e = ref->faceEdges[face];
 	cd3Vec first = WorldVertex(ref, ref->edges[e].origin);
 	cd3Vec v1 = first;
+	cdReal floorSquared = EdgeFloorSquared(first, ref->size);
 	do
 	{
 		cd3Vec v0 = v1;
 		int next = ref->edges[e].next;
 		v1 = next == ref->faceEdges[face] ? first : WorldVertex(ref, ref->edges[next].origin);
 		cd3Vec sideNormal;
-		if (!FaceSideNormal(v0, v1, n, &sideNormal))
+		if (!FaceSideNormal(v0, v1, n, floorSquared, &sideNormal))
 		{
-			cd3Vec r0, r1;
-			FaceEnds(ref, face, &r0, &r1);
-			return SegmentFaceContact(r0, r1, n, face, inc, incident, flip, speculativeDistance,
-									  ref->size + inc->size);
+			RoundOffPlane plane = RoundOffSide(ref, face, e, n, floorSquared);
+			sideNormal = plane.side;
+			if (plane.thin)
+			{
+				cd3Vec r0, r1;
+				FaceEnds(ref, face, &r0, &r1);
+				return SegmentFaceContact(r0, r1, n, face, inc, incident, flip, speculativeDistance,
+										  ref->size + inc->size);
+			}
 		}
 		uint32_t tag = SIDE_TAG + (uint32_t)(side < (int)SIDE_TAG - 1 ? side : (int)SIDE_TAG - 1);
 		count = ClipToPlane(in, count, sideNormal, v0, tag, out);
@@ -1040,7 +1134,7 @@ static bool ClipSegmentToFace(const cd3Polytope* p, int face, cd3Vec n, cd3Vec* 
 		cd3Vec v0 = WorldVertex(p, p->edges[e].origin);
 		cd3Vec v1 = WorldVertex(p, p->edges[p->edges[e].next].origin);
 		cd3Vec side;
-		if (!FaceSideNormal(v0, v1, n, &side))
+		if (!FaceSideNormal(v0, v1, n, CD_R(0.0), &side))
 		{
 			cd3Vec outward = cd3Sub(v0, FaceCentre(p, face));
 			side = cd3MulSub(outward, cd3Dot(outward, n), n);
