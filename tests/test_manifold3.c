@@ -1836,6 +1836,19 @@ static void TestRoundOffFaceRegressions(void)
 	CheckFuzzCase("huge-triangle-segment-aabb", &triangle, &aabb, 1e9, 0.0, 1e9);
 }
 
+/* A box segment (zero x and y extents) whose line, seen along the SAT's axis, lies on a triangle's
+ * edge: the side plane of that edge gave start and rate both round-off, whose ratio cut the
+ * segment 1.6e6 from the corner where it touches the triangle (float: the overlapping pair's
+ * smallest separation was 5.15e5). The clip allows round-off (fuzz_manifold3, float build;
+ * regression-segment-grazing-triangle-corner). */
+static void TestGrazingSegmentRegression(void)
+{
+	cd3Shape segment = AabbShape(612500, 612500, -1250000, 612500, 612500, 1050000);
+	cd3Shape triangle =
+		TriangleShape(37500, 612500, 612500, 612500, -987500, -700000, 612500, 612500, -1225000);
+	CheckFuzzCase("segment-grazing-triangle-corner", &segment, &triangle, 900000, 0.0, 1.25e6);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -1859,5 +1872,6 @@ int main(void)
 	TEST_RUN(TestCoreApartRegressions);
 	TEST_RUN(TestSatFallbackRegressions);
 	TEST_RUN(TestRoundOffFaceRegressions);
+	TEST_RUN(TestGrazingSegmentRegression);
 	return TEST_SUMMARY();
 }

@@ -77,6 +77,13 @@ static void AddPoint(cd3Manifold* m, cd3Vec point, cdReal separation, uint32_t i
 	p->id = id;
 }
 
+/* Round-off of the points at p and of the shapes of sizes `size`. */
+static cdReal RoundOff(cd3Vec p, cdReal size)
+{
+	cd3Vec abs = cd3Abs(p);
+	return ROUND_OFF_TOLERANCE * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
+}
+
 /* p lies in the solid shape s, or on the triangle s, within `tolerance` (per face plane). */
 static bool InsideShape(const cd3Shape* s, cd3Vec p, cdReal tolerance)
 {
@@ -576,7 +583,13 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 		cd3Vec side = cd3Cross(edge, incNormal);
 		cdReal start = cd3Dot(side, cd3Sub(c0, v0));
 		cdReal along = cd3Dot(side, dc);
-		ClipInterval(start, along, CD_R(0.0), &lo, &hi);
+		/* Within round-off of the side (8 epsilon of the magnitudes: start's own error is a few):
+		 * a segment that grazes it (lying along the edge as seen along n) has start and rate both
+		 * round-off, whose ratio would cut it anywhere (a segment touching a triangle's corner
+		 * was cut 1.6e6 from it, in float at 1.2e6). */
+		cd3Vec abs = cd3Abs(v0);
+		cdReal slack = CD_R(8.0) * CD_REAL_EPSILON * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
+		ClipInterval(start, along, slack * cd3Length(edge), &lo, &hi);
 		ClipInterval(start, along, REALIZED_TOLERANCE * size * cd3Length(edge), &slackLo, &slackHi);
 		e = inc->edges[e].next;
 	} while (e != inc->faceEdges[incident] && ++guard < inc->edgeCount);
@@ -972,13 +985,6 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 	m.normal = normal;
 	AddPoint(&m, cd3Lerp(pointA, pointB, CD_R(0.5)), separation, ID_VERTEX_PAIR);
 	return m;
-}
-
-/* Round-off of the points at p and of the shapes of sizes `size`. */
-static cdReal RoundOff(cd3Vec p, cdReal size)
-{
-	cd3Vec abs = cd3Abs(p);
-	return ROUND_OFF_TOLERANCE * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
 }
 
 /* Every point's A side lies in A and its B side in B, within round-off. */
