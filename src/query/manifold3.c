@@ -836,6 +836,17 @@ static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const
 	return m;
 }
 
+/* The size FACE_BIAS is relative to when choosing between A's face and B's: twice the smaller
+ * polytope's (the sum for two of one size), plus the round-off of both. Both faces touch the
+ * contact, which is no larger than the smaller polytope, and so are their separations' differences;
+ * relative to the sum, a needle 1 long made the faces of a contact 1e-7 across a tie (a face 4e-8
+ * deeper than the other was taken, its point 7e-9 off the needle; double build). The edge axes keep
+ * the sum: a box on a larger triangle then keeps its face contact. */
+static cdReal FaceTieSize(const cd3Polytope* a, const cd3Polytope* b)
+{
+	return CD_R(2.0) * cdMin(a->size, b->size) + (ROUND_OFF_TOLERANCE / FACE_BIAS) * (a->size + b->size);
+}
+
 /* The manifold the separating axis test picks: a face contact, or an edge contact when an edge
  * pair separates noticeably more (or the face's incident polygon clips away). checkEdges: an edge
  * pair whose edges do not cross along its axis (EdgeContact) gives no contact (the caller then
@@ -845,7 +856,8 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 {
 	cdReal size = a->size + b->size;
 	bool useB =
-		sat->faceA < 0 || (sat->faceB >= 0 && sat->faceSeparationB > sat->faceSeparationA + FACE_BIAS * size);
+		sat->faceA < 0 ||
+		(sat->faceB >= 0 && sat->faceSeparationB > sat->faceSeparationA + FACE_BIAS * FaceTieSize(a, b));
 	int face = useB ? sat->faceB : sat->faceA;
 	int other = useB ? sat->faceA : sat->faceB;
 	bool otherTried = false;
