@@ -2004,6 +2004,21 @@ static void TestNeedleFaceTieRegression(void)
 #endif
 }
 
+/* A triangle 1e9 long and 1e-4 across through an AABB 1.4e-4 wide (float): clipped against the
+ * AABB's face, whose side planes are 1e-4 apart, the lerps along its edges need 1e-13 of
+ * precision, and only its far part was kept: 4 points at separations 2.7e8 to 1e9 for shapes that
+ * overlap. A contact farther apart than the SAT's separation allows is now replaced by the
+ * witnesses (fuzz_manifold3, float build; regression-tiny-aabb-long-triangle). */
+static void TestMissedOverlapRegression(void)
+{
+	cd3Shape aabb = AabbShape(-0.00012500000593718141, -0.00012500000593718141, -0.00012500000593718141,
+							  1.249999968422344e-05, 0, -3.5000000934815034e-05);
+	cd3Shape triangle = TriangleShape(
+		-2.4999999368446879e-06, 8.7500002337037586e-06, -1e9, -1e9, -0.0001237499964190647,
+		-0.00012500000593718141, -0.00012500000593718141, -0.00012124999921070412, -1.249999968422344e-06);
+	CheckFuzzCase("tiny-aabb-long-triangle", &aabb, &triangle, 1e9, 0.0, 1e9);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -2029,5 +2044,6 @@ int main(void)
 	TEST_RUN(TestRoundOffFaceRegressions);
 	TEST_RUN(TestGrazingSegmentRegression);
 	TEST_RUN(TestNeedleFaceTieRegression);
+	TEST_RUN(TestMissedOverlapRegression);
 	return TEST_SUMMARY();
 }

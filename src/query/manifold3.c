@@ -1085,7 +1085,13 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	if (separation <= CD_R(0.0))
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
-		if (m.pointCount == 0)
+		cdReal limit = (FACE_BIAS + EDGE_BIAS) * (a->size + b->size);
+		/* A contact whose points all lie farther apart than the SAT's separation allows missed the
+		 * overlap: a triangle 1e9 long and 1e-4 across clipped, in float, against a box's face
+		 * 1e-4 wide (lerps along its edges need 1e-13 of precision) kept only its far part, at
+		 * separation 2.7e8 for shapes that overlap. */
+		bool missed = m.pointCount > 0 && ManifoldMinSeparation(&m) > separation + limit;
+		if (m.pointCount == 0 || missed)
 		{
 			/* No contact on the SAT's axis: a degenerate polytope (a point box against a triangle,
 			 * a segment box in a triangle's plane) can lack the separating axis, so the distance
@@ -1093,7 +1099,11 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 			cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
 			if (cp.distance > CD_R(0.0))
 			{
-				return cp.distance <= speculativeDistance ? VertexContact(cp) : m;
+				return cp.distance <= speculativeDistance ? VertexContact(cp) : EmptyManifold();
+			}
+			if (missed)
+			{
+				return WitnessContact(a, b, &sat, cp);
 			}
 			m = SatContact(a, b, &sat, speculativeDistance, false);
 			if (!PointsOnShapes(&m, a, b))
@@ -1103,7 +1113,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 		}
 		if (m.pointCount > 0)
 		{
-			MatchDepth(&m, separation, (FACE_BIAS + EDGE_BIAS) * (a->size + b->size), a, b);
+			MatchDepth(&m, separation, limit, a, b);
 		}
 		return m;
 	}
