@@ -1944,6 +1944,14 @@ static void TestRoundOffFaceRegressions(void)
 	cd3Shape aabb = AabbShape(-0.0013749999925494194, -0.00037500000325962901, -1e9, -0.00025000001187436283,
 							  0.00087500002700835466, -0.0020000000949949026);
 	CheckFuzzCase("huge-triangle-segment-aabb", &triangle, &aabb, 1e9, 0.0, 1e9);
+	/* The same tiny box as the incident face of a flat AABB's segment face (the AABB's x face, its
+	 * y extent zero): its world vertices differ by round-off only, and clipped as a face it gave a
+	 * point 8.4e6 off the box (regression-flat-aabb-segment-face-tiny-box). */
+	flat =
+		AabbShape(9.9999997171806854e-10, -1e9, -1e9, 1.249999968422344e-05, -1e9, -0.00012500000593718141);
+	box = BoxShape(0.00011875000200234354, -1e9, -1e9, 0, 0.0001237499964190647, 9.0000001364387572e-05, 1,
+				   -0.00011375001486157998, -0.00012500002048909664, -0.00012125001376261935);
+	CheckFuzzCase("flat-aabb-segment-face-tiny-box", &flat, &box, 1e9, -1.0, 1e9);
 }
 
 /* A box segment (zero x and y extents) whose line, seen along the SAT's axis, lies on a triangle's

@@ -483,23 +483,58 @@ static void FaceEnds(const cd3Polytope* p, int face, cd3Vec* r0, cd3Vec* r1)
 	} while (e != p->faceEdges[face] && ++guard < p->edgeCount);
 }
 
-/* A face with an edge of zero length in world coordinates (normal n): a face of a box with zero
- * extents (a segment or a point), or of a box tiny against its coordinates (1e-6 at 1e9). */
-static bool FaceHasNoArea(const cd3Polytope* p, int face, cd3Vec n)
+/* An edge of a face in world coordinates shorter than this, relative to the magnitude of the
+ * coordinates, is round-off (each world vertex carries a few epsilon of it from the rotation):
+ * its direction, and so its side plane, is noise (a box 2.5e-4 wide at 1e9 in float had a face
+ * edge 6e-8 long, in a direction the box does not have). One epsilon: a face a few units of the
+ * last place wide still clips as a face (a box of size 2 at 1e7 in float keeps its 4 points), and
+ * a hull's edges (at least the builder's weld distance, 16 epsilon of its extent) stay above it
+ * unless the hull lies 10 extents from the origin. */
+#define EDGE_ROUND_OFF CD_REAL_EPSILON
+
+/* The square of that length for a face with vertex v of a polytope of the given size: from the
+ * Euclidean magnitudes, (size + |v|)^2 <= 2 (size^2 + |v|^2), without branches (hot path). */
+static cdReal EdgeFloorSquared(cd3Vec v, cdReal size)
 {
+	return CD_R(2.0) * EDGE_ROUND_OFF * EDGE_ROUND_OFF * (size * size + cd3LengthSquared(v));
+}
+
+/* The face (world normal n) lies within sqrt(floorSquared) of a segment (or a point) in world
+ * coordinates: a box with zero extents, or one tiny against its coordinates (2.5e-4 at 1e9 in
+ * float, whose rotated face is a segment with round-off edges 6e-8 long). */
+static bool FaceIsThin(const cd3Polytope* p, int face, cdReal floorSquared)
+{
+	cd3Vec r0, r1;
+	FaceEnds(p, face, &r0, &r1);
+	cd3Vec axis = cd3Sub(r1, r0);
+	cdReal length2 = cd3LengthSquared(axis);
+	if (!(length2 > floorSquared))
+	{
+		return true;
+	}
 	int guard = 0;
 	int e = p->faceEdges[face];
 	do
 	{
-		cd3Vec v0 = WorldVertex(p, p->edges[e].origin);
-		cd3Vec v1 = WorldVertex(p, p->edges[p->edges[e].next].origin);
-		if (!(cd3LengthSquared(cd3Cross(cd3Sub(v1, v0), n)) > CD_R(0.0)))
+		/* |cross(v - r0, axis)| / |axis|: the distance from the line, compared squared. */
+		cd3Vec v = WorldVertex(p, p->edges[e].origin);
+		if (cd3LengthSquared(cd3Cross(cd3Sub(v, r0), axis)) > floorSquared * length2)
 		{
-			return true;
+			return false;
 		}
 		e = p->edges[e].next;
 	} while (e != p->faceEdges[face] && ++guard < p->edgeCount);
-	return false;
+	return true;
+}
+
+/* The incident face of SegmentFaceContact has no area either (FaceIsThin with the floor of its
+ * own coordinates): a face of a box with zero extents, or of a box tiny against its coordinates
+ * (2.5e-4 at 1e9 in float, whose world vertices differ by round-off only: clipped as a face, it
+ * gave a point 8.4e6 off the box). */
+static bool FaceHasNoArea(const cd3Polytope* p, int face)
+{
+	return FaceIsThin(p, face,
+					  EdgeFloorSquared(WorldVertex(p, p->edges[p->faceEdges[face]].origin), p->size));
 }
 
 /* Narrows [*lo, *hi] to the t with start + t * rate <= limit. */
@@ -540,7 +575,7 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 	{
 		return m;
 	}
-	if (FaceHasNoArea(inc, incident, incNormal))
+	if (FaceHasNoArea(inc, incident))
 	{
 		/* The incident face is a segment or a point too (two boxes with zero extents): its side
 		 * planes bound nothing. The closest points of the two, when they lie along n within
@@ -627,50 +662,6 @@ static bool FaceSideNormal(cd3Vec v0, cd3Vec v1, cd3Vec n, cdReal floorSquared, 
 {
 	*side = cd3Cross(cd3Sub(v1, v0), n);
 	return cd3LengthSquared(*side) > floorSquared;
-}
-
-/* An edge of a face in world coordinates shorter than this, relative to the magnitude of the
- * coordinates, is round-off (each world vertex carries a few epsilon of it from the rotation):
- * its direction, and so its side plane, is noise (a box 2.5e-4 wide at 1e9 in float had a face
- * edge 6e-8 long, in a direction the box does not have). One epsilon: a face a few units of the
- * last place wide still clips as a face (a box of size 2 at 1e7 in float keeps its 4 points), and
- * a hull's edges (at least the builder's weld distance, 16 epsilon of its extent) stay above it
- * unless the hull lies 10 extents from the origin. */
-#define EDGE_ROUND_OFF CD_REAL_EPSILON
-
-/* The square of that length for a face with vertex v of a polytope of the given size: from the
- * Euclidean magnitudes, (size + |v|)^2 <= 2 (size^2 + |v|^2), without branches (hot path). */
-static cdReal EdgeFloorSquared(cd3Vec v, cdReal size)
-{
-	return CD_R(2.0) * EDGE_ROUND_OFF * EDGE_ROUND_OFF * (size * size + cd3LengthSquared(v));
-}
-
-/* The face (world normal n) lies within sqrt(floorSquared) of a segment (or a point) in world
- * coordinates: a box with zero extents, or one tiny against its coordinates (2.5e-4 at 1e9 in
- * float, whose rotated face is a segment with round-off edges 6e-8 long). */
-static bool FaceIsThin(const cd3Polytope* p, int face, cdReal floorSquared)
-{
-	cd3Vec r0, r1;
-	FaceEnds(p, face, &r0, &r1);
-	cd3Vec axis = cd3Sub(r1, r0);
-	cdReal length2 = cd3LengthSquared(axis);
-	if (!(length2 > floorSquared))
-	{
-		return true;
-	}
-	int guard = 0;
-	int e = p->faceEdges[face];
-	do
-	{
-		/* |cross(v - r0, axis)| / |axis|: the distance from the line, compared squared. */
-		cd3Vec v = WorldVertex(p, p->edges[e].origin);
-		if (cd3LengthSquared(cd3Cross(cd3Sub(v, r0), axis)) > floorSquared * length2)
-		{
-			return false;
-		}
-		e = p->edges[e].next;
-	} while (e != p->faceEdges[face] && ++guard < p->edgeCount);
-	return true;
 }
 
 /* The side plane of the face's edge `edge` when the edge has round-off length (out of line:
