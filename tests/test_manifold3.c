@@ -1967,12 +1967,14 @@ static void TestGrazingSegmentRegression(void)
 	CheckFuzzCase("segment-grazing-triangle-corner", &segment, &triangle, 900000, 0.0, 1.25e6);
 }
 
-/* A needle hull (points within 1.3e-7 but one at z = 1) 2.3e-9 from a small hull (size 1.25e-7),
- * speculative 5e-9: relative to the pair's size (1) the face bias (1e-4) let the needle's face,
- * 4e-8 worse than the small hull's, be the reference; its edge contact's point was 7.2e-9 off the
- * needle and its separation 1.4e-9. The choice between the two faces is now relative to the
- * smaller hull: the small hull's face, the distance (fuzz_manifold3, double build;
- * regression-double-needle-face-tie; float cannot build the needle). */
+/* Needles (double build): tolerances relative to the pair's size sum (1, the needle's length) are
+ * far above a contact 1e-4 or 1e-7 across; they are now relative to the smaller shape.
+ * - regression-double-needle-face-tie: a needle hull (points within 1.3e-7 but one at z = 1)
+ *   2.3e-9 from a small hull (size 1.25e-7), speculative 5e-9: the face bias (1e-4) let the
+ *   needle's face, 4e-8 worse than the small hull's, be the reference; its edge contact's point
+ *   was 7.2e-9 off the needle and its separation 1.4e-9. Now the small hull's face, at the
+ *   distance. Float cannot build the needle.
+ * - regression-double-point-box-needle-triangle: see below. */
 static void TestNeedleFaceTieRegression(void)
 {
 #if CD_DOUBLE
@@ -2009,6 +2011,18 @@ static void TestNeedleFaceTieRegression(void)
 	}
 	cd3DestroyHull(needle);
 	cd3DestroyHull(small);
+	/* regression-double-point-box-needle-triangle: a point box 5.4e-5 from a triangle with a
+	 * vertex at z = 1: the SAT's contact (the point box's face, separation 4.2e-5, its point
+	 * 1.6e-5 off the triangle) passed for realizing the distance within 1e-4 of the size sum. */
+	cd3Shape point = BoxShape(1.25e-05, 0, 0, 0, 0, 0, 0, 0, 0, 1);
+	cd3Shape triangle = TriangleShape(0.000105, 6.125e-05, 1, -2.5853655840063055e-26, -5.25e-05, -0.000125,
+									  -8.375e-05, -0.00012, -8.375e-05);
+	double p[3] = {1.25e-05, 0, 0};
+	double ta[3] = {0.000105, 6.125e-05, 1}, tb[3] = {-2.5853655840063055e-26, -5.25e-05, -0.000125},
+		   tc[3] = {-8.375e-05, -0.00012, -8.375e-05};
+	double distance = PointTriangleDistance(p, ta, tb, tc);
+	TEST_CHECKF(distance > 5e-5 && distance < 6e-5, "point-box-needle-triangle: distance %.17g", distance);
+	CheckCoreCase("point-box-needle-triangle", &point, &triangle, 1.25e-4, distance, 1.0);
 #endif
 }
 
