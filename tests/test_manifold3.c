@@ -2041,6 +2041,22 @@ static void TestMissedOverlapRegression(void)
 	CheckFuzzCase("tiny-aabb-long-triangle", &aabb, &triangle, 1e9, 0.0, 1e9);
 }
 
+/* Edge contacts are realized within the round-off of their closest points: an AABB 1.3e22 across
+ * and a triangle 8.4e21 long and 1e-4 across (a segment within round-off) that touch within the
+ * round-off of 1e22 (double): the edge pair's closest points, 6.8e16 apart, passed within 1e-4 of
+ * the sizes (2e18), and the point lay 3.4e16 off the triangle (fuzz_manifold3, double build;
+ * regression-double-huge-aabb-segment-triangle; beyond the float range). */
+static void TestEdgeRealizedRegression(void)
+{
+#if CD_DOUBLE
+	cd3Shape aabb = AabbShape(-4.6465537311674204e+21, -8.4076637467967824e+21, -8.4076637467967824e+21,
+							  1.25e-05, -401.77255249023438, 0);
+	cd3Shape triangle = TriangleShape(1, -3.5e-05, 3e-05, -0.00012125, -3.5e-05, 3e-05, -0.00012125,
+									  -8.4075961928023718e+21, 7.1215682029724121);
+	CheckFuzzCase("huge-aabb-segment-triangle", &aabb, &triangle, 8.75e-06, -1.0, 8.41e21);
+#endif
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -2067,5 +2083,6 @@ int main(void)
 	TEST_RUN(TestGrazingSegmentRegression);
 	TEST_RUN(TestNeedleFaceTieRegression);
 	TEST_RUN(TestMissedOverlapRegression);
+	TEST_RUN(TestEdgeRealizedRegression);
 	return TEST_SUMMARY();
 }

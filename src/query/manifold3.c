@@ -818,7 +818,14 @@ static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const
 							   cdReal tolerance, bool* realized)
 {
 	cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(WorldEdge(a, sat->edgeA), WorldEdge(b, sat->edgeB));
-	*realized = cp.distance <= cdAbs(sat->edgeSeparation) + tolerance;
+	/* Also within the round-off of the closest points: the tolerance, relative to the sizes, can
+	 * be far above the round-off of shapes 1e22 across in double (2e18 against a band of 8e12),
+	 * and the point, midway between the closest points, lies off both surfaces by half their
+	 * lateral offset. The coordinates' part only when the sizes' is not enough (hot path). */
+	cdReal lateral = cp.distance - cdAbs(sat->edgeSeparation);
+	cdReal sizeRoundOff = ROUND_OFF_TOLERANCE * (a->size + b->size);
+	*realized = lateral <= cdMin(tolerance, sizeRoundOff) ||
+				(lateral <= tolerance && lateral <= RoundOff(cp.pointA, a->size + b->size));
 	cd3Manifold m = EmptyManifold();
 	m.normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
