@@ -1974,7 +1974,7 @@ static void TestGrazingSegmentRegression(void)
  *   needle's face, 4e-8 worse than the small hull's, be the reference; its edge contact's point
  *   was 7.2e-9 off the needle and its separation 1.4e-9. Now the small hull's face, at the
  *   distance. Float cannot build the needle.
- * - regression-double-point-box-needle-triangle: see below. */
+ * - regression-double-point-box-needle-triangle, -needle-edge-tie: see below. */
 static void TestNeedleFaceTieRegression(void)
 {
 #if CD_DOUBLE
@@ -2023,6 +2023,25 @@ static void TestNeedleFaceTieRegression(void)
 	double distance = PointTriangleDistance(p, ta, tb, tc);
 	TEST_CHECKF(distance > 5e-5 && distance < 6e-5, "point-box-needle-triangle: distance %.17g", distance);
 	CheckCoreCase("point-box-needle-triangle", &point, &triangle, 1.25e-4, distance, 1.0);
+	/* regression-double-needle-edge-tie: the needle (one point moved) overlapping the small hull
+	 * by 2.1e-8 along an edge pair: relative to the sum of the sizes the edge bias (1e-4) kept the
+	 * needle's face, 1e-8 worse, whose clipped points were too shallow by 4.3e-9; the depth match
+	 * then moved the small hull's side of each point 3.6e-9 out of it. */
+	static const double needle2Points[8][3] = {
+		{-3.75e-09, -1e-08, -3.75e-09},	 {-6.5e-08, -7.5e-09, 1.25e-08},
+		{-1.25e-09, -6.25e-09, 2.5e-09}, {1.375e-08, -2.5e-09, -1.2125e-07},
+		{5e-09, -8.75e-09, 8.75e-09},	 {1.875e-08, 2.5e-09, 1},
+		{-5e-09, -5e-09, -1.125e-08},	 {1.125e-08, -1.125e-08, -1.25e-08}};
+	cd3Hull* needle2 = NULL;
+	small = NULL;
+	a = HullShapeOf(&needle2Points[0][0], 8, needlePq, &needle2);
+	b = HullShapeOf(&smallPoints[0][0], 5, smallPq, &small);
+	if (needle2 != NULL && small != NULL)
+	{
+		CheckDepthCase("needle-edge-tie", &a, &b, 5e-9, 2.0, true);
+	}
+	cd3DestroyHull(needle2);
+	cd3DestroyHull(small);
 #endif
 }
 

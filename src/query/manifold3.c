@@ -835,14 +835,26 @@ static cd3Manifold EdgeContact(const cd3Polytope* a, const cd3Polytope* b, const
 }
 
 /* The size FACE_BIAS is relative to when choosing between A's face and B's: twice the smaller
- * polytope's (the sum for two of one size), plus the round-off of both. Both faces touch the
+ * polytope's (the sum for two of one size), at least the round-off of both. Both faces touch the
  * contact, which is no larger than the smaller polytope, and so are their separations' differences;
  * relative to the sum, a needle 1 long made the faces of a contact 1e-7 across a tie (a face 4e-8
- * deeper than the other was taken, its point 7e-9 off the needle; double build). The edge axes keep
- * the sum: a box on a larger triangle then keeps its face contact. */
+ * deeper than the other was taken, its point 7e-9 off the needle; double build). */
 static cdReal FaceTieSize(const cd3Polytope* a, const cd3Polytope* b)
 {
-	return CD_R(2.0) * cdMin(a->size, b->size) + (ROUND_OFF_TOLERANCE / FACE_BIAS) * (a->size + b->size);
+	return cdMax(CD_R(2.0) * cdMin(a->size, b->size),
+				 (ROUND_OFF_TOLERANCE / FACE_BIAS) * (a->size + b->size));
+}
+
+/* The size EDGE_BIAS is relative to when choosing an edge pair over the faces: the sum, unless it
+ * is more than 16 times the smaller polytope's size (then that), at least the round-off of both.
+ * With the smaller size alone, boxes resting on triangles a few times larger took one-point edge
+ * contacts for face contacts (8 of 2000 pairs near contact); with the sum alone, a needle 1 long
+ * against a hull 2.4e-7 across took a face 1e-8 worse than the edge pair (the exact axis), and
+ * its deepest point was clipped away. */
+static cdReal EdgeTieSize(const cd3Polytope* a, const cd3Polytope* b)
+{
+	cdReal sum = a->size + b->size;
+	return cdMax(cdMin(sum, CD_R(16.0) * cdMin(a->size, b->size)), (ROUND_OFF_TOLERANCE / EDGE_BIAS) * sum);
 }
 
 /* The manifold the separating axis test picks: a face contact, or an edge contact when an edge
@@ -861,7 +873,8 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 	bool otherTried = false;
 	cdReal faceSeparation = useB ? sat->faceSeparationB : sat->faceSeparationA;
 	bool edges = sat->edgeA >= 0;
-	bool useEdges = edges && (face < 0 || sat->edgeSeparation > faceSeparation + EDGE_BIAS * size);
+	bool useEdges =
+		edges && (face < 0 || sat->edgeSeparation > faceSeparation + EDGE_BIAS * EdgeTieSize(a, b));
 	bool realized = true;
 	cd3Manifold edge;
 	if (useEdges && sat->edgeSeparation <= speculativeDistance)
