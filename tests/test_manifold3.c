@@ -2060,12 +2060,13 @@ static void TestMissedOverlapRegression(void)
 	CheckFuzzCase("tiny-aabb-long-triangle", &aabb, &triangle, 1e9, 0.0, 1e9);
 }
 
-/* Edge contacts are realized within the round-off of their closest points: an AABB 1.3e22 across
+/* Shapes 1e21 across (double build; beyond the float range).
+ * Edge contacts are realized within the round-off of their closest points: an AABB 1.3e22 across
  * and a triangle 8.4e21 long and 1e-4 across (a segment within round-off) that touch within the
  * round-off of 1e22 (double): the edge pair's closest points, 6.8e16 apart, passed within 1e-4 of
  * the sizes (2e18), and the point lay 3.4e16 off the triangle (fuzz_manifold3, double build;
  * regression-double-huge-aabb-segment-triangle; beyond the float range). */
-static void TestEdgeRealizedRegression(void)
+static void TestHugeDoubleRegressions(void)
 {
 #if CD_DOUBLE
 	cd3Shape aabb = AabbShape(-4.6465537311674204e+21, -8.4076637467967824e+21, -8.4076637467967824e+21,
@@ -2073,6 +2074,14 @@ static void TestEdgeRealizedRegression(void)
 	cd3Shape triangle = TriangleShape(1, -3.5e-05, 3e-05, -0.00012125, -3.5e-05, 3e-05, -0.00012125,
 									  -8.4075961928023718e+21, 7.1215682029724121);
 	CheckFuzzCase("huge-aabb-segment-triangle", &aabb, &triangle, 8.75e-06, -1.0, 8.41e21);
+	/* regression-double-segment-aabb-needle-triangle: an AABB 8.4e21 long and 8 across (a segment
+	 * within round-off, clipped as one) against a triangle 2.4e21 long and 1e9 across, whose plane
+	 * is tilted by 6e-4 rad in round-off: an end of the clipped segment crossed it 5e19 beyond the
+	 * triangle. Ends off the incident face are now dropped. */
+	aabb = AabbShape(-25.850978851318359, -8.3794171699339146e+21, -8.125, -8.125, -8.125, 0);
+	triangle =
+		TriangleShape(-8.25, -2.4349702177296608e+21, -12.25, -12.5, -7.625, -0.5, -12.5, -1.125, -949738432);
+	CheckFuzzCase("segment-aabb-needle-triangle", &aabb, &triangle, 0.0, 0.0, 8.38e21);
 #endif
 }
 
@@ -2102,6 +2111,6 @@ int main(void)
 	TEST_RUN(TestGrazingSegmentRegression);
 	TEST_RUN(TestNeedleFaceTieRegression);
 	TEST_RUN(TestMissedOverlapRegression);
-	TEST_RUN(TestEdgeRealizedRegression);
+	TEST_RUN(TestHugeDoubleRegressions);
 	return TEST_SUMMARY();
 }

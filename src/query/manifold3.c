@@ -642,9 +642,16 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 	for (int i = 0; i < count; ++i)
 	{
 		cdReal separation = s0 + ts[i] * sRate;
-		if (separation <= speculativeDistance)
+		cd3Vec onReference = cd3MulAdd(r0, ts[i], d);
+		/* The point's incident side must lie on the incident face: the incident plane of a needle
+		 * (a triangle 2.4e21 long and 1e9 across, in double) is tilted by 6e-4 rad in round-off,
+		 * and an end crossed it 5e19 beyond the triangle. Such an end is dropped (the reference
+		 * side lies on the segment by construction). */
+		cd3Vec onIncident = cd3MulAdd(onReference, separation, n);
+		if (separation <= speculativeDistance &&
+			InsideShape(&inc->shape, onIncident, RoundOff(onIncident, size)))
 		{
-			AddPoint(&m, cd3MulAdd(cd3MulAdd(r0, ts[i], d), CD_R(0.5) * separation, n), separation,
+			AddPoint(&m, cd3MulAdd(onReference, CD_R(0.5) * separation, n), separation,
 					 PackFaceId(face, incident, (uint32_t)i, (uint32_t)i, flip));
 		}
 	}
