@@ -2082,7 +2082,36 @@ static void TestHugeDoubleRegressions(void)
 	triangle =
 		TriangleShape(-8.25, -2.4349702177296608e+21, -12.25, -12.5, -7.625, -0.5, -12.5, -1.125, -949738432);
 	CheckFuzzCase("segment-aabb-needle-triangle", &aabb, &triangle, 0.0, 0.0, 8.38e21);
+	/* regression-double-long-parallel-capsules: capsules 4.5e19 long whose axes are parallel
+	 * within 1e-3 rad (the two-point threshold): over that length they drift 4.5e16 apart across
+	 * the normal, and the second point's side lay 4.5e16 off the capsule of radius 7.5e6. */
+	cd3Shape c1 = CapsuleShape(-11500000, -125000, -12250000, 1375000, -3.22637151627148e+19,
+							   -3.22637151627148e+19, 3.22637151627148e+19);
+	cd3Shape c2 = CapsuleShape(-3.22637151627148e+19, -3.22637151627148e+19, -3.22637151627148e+19,
+							   -3.22637151627148e+19, 64179765023604736, -7500000, 7500000);
+	CheckFuzzCase("long-parallel-capsules", &c1, &c2, 0.0, 0.0, 3.23e19);
 #endif
+}
+
+/* Capsules side by side, their axes 1e-4 rad apart: two points, each side on its capsule to
+ * round-off. B's side was placed rb from B's axis along the normal, which lies lateral^2 / 2 rb
+ * (1e-8) outside B where the axes drift apart: beyond the double build's round-off (the same
+ * error put a point 4.5e16 off a capsule 4.5e19 long, TestHugeDoubleRegressions). */
+static void TestTiltedCapsules(void)
+{
+	cd3Shape a = CapsuleShape(-1, 0, 0, 1, 0, 0, 0.5);
+	cd3Shape b = CapsuleShape(-1, 0.9, -1e-4, 1, 0.9, 1e-4, 0.5);
+	double tol = 256.0 * (double)CD_REAL_EPSILON * 2.0;
+	for (int order = 0; order < 2; ++order)
+	{
+		cd3Manifold m = order == 0 ? cd3Collide(&a, &b, CD_R(0.0)) : cd3Collide(&b, &a, CD_R(0.0));
+		double off = order == 0 ? WorstOffSurface(&m, &a, &b) : WorstOffSurface(&m, &b, &a);
+		TEST_CHECKF(m.pointCount == 2 && off <= tol, "order %d: %d points, %.3g off a surface", order,
+					m.pointCount, off);
+		/* The axes' closest points are 0.9 apart at x = 0: depth 0.1 there, 1e-8 less at the ends. */
+		TEST_CHECKF(m.pointCount == 2 && fabs(MinSeparation(&m) + 0.1) <= 2e-8 + tol,
+					"order %d: separation %.17g", order, MinSeparation(&m));
+	}
 }
 
 int main(void)
@@ -2112,5 +2141,6 @@ int main(void)
 	TEST_RUN(TestNeedleFaceTieRegression);
 	TEST_RUN(TestMissedOverlapRegression);
 	TEST_RUN(TestHugeDoubleRegressions);
+	TEST_RUN(TestTiltedCapsules);
 	return TEST_SUMMARY();
 }

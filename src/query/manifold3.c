@@ -1516,7 +1516,22 @@ cd3Manifold cd3CollideCapsuleCapsule(cd3Capsule a, cd3Capsule b, cdReal speculat
 	{
 		cd3Vec pa = cd3MulAdd(a.p1, ts[i], da);
 		cd3Vec pb = cd3ClosestPointOnSegment(sb, pa);
-		cdReal separation = cd3Dot(two.normal, cd3Sub(pb, pa)) - a.radius - b.radius;
+		cd3Vec gap = cd3Sub(pb, pa);
+		cdReal along = cd3Dot(two.normal, gap);
+		/* The axes may drift apart across the normal (up to 1e-3 rad): the line along the normal
+		 * from pa passes `lateral` from B's axis point pb and meets B's surface at
+		 * along - sqrt(rb^2 - lateral^2), not at along - rb (which lay outside B by about
+		 * lateral^2 / 2 rb: 4e-8 for unit capsules 1e-4 rad apart, beyond the double build's
+		 * round-off; 4.5e16 for axes 4.5e19 long against a radius of 7.5e6). A line that misses B
+		 * (beyond round-off) leaves the one closest point. */
+		cdReal lateral2 = cd3LengthSquared(cd3MulSub(gap, along, two.normal));
+		cdReal roundOff = RoundOff(pa, cdSqrt(la2) + cdSqrt(lb2) + a.radius + b.radius);
+		cdReal radius2 = b.radius * b.radius;
+		if (!(lateral2 <= radius2 + roundOff * roundOff))
+		{
+			return m;
+		}
+		cdReal separation = along - cdSqrt(cdMax(radius2 - lateral2, CD_R(0.0))) - a.radius;
 		if (separation <= speculativeDistance)
 		{
 			AddPoint(&two, cd3MulAdd(pa, a.radius + CD_R(0.5) * separation, two.normal), separation,
