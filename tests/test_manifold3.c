@@ -2090,6 +2090,15 @@ static void TestHugeDoubleRegressions(void)
 	cd3Shape c2 = CapsuleShape(-3.22637151627148e+19, -3.22637151627148e+19, -3.22637151627148e+19,
 							   -3.22637151627148e+19, 64179765023604736, -7500000, 7500000);
 	CheckFuzzCase("long-parallel-capsules", &c1, &c2, 0.0, 0.0, 3.23e19);
+	/* regression-double-crossing-plates: an AABB and a box, both plates 8.4e21 across and 1e-7
+	 * thin, crossing: the box path clipped one's face against the other's sliver face and kept
+	 * only points at separation 0, too shallow by 1.46e17; the depth match shifted them deeper,
+	 * B's side 1.46e17 out of B. A contact too shallow is now left as it is. */
+	cd3Shape plateA = AabbShape(0, -8.4076637467967824e+21, -8.4076637467967824e+21, 1.25e-08, 0, 0);
+	cd3Shape plateB =
+		BoxShape(0, 0, 0, 9.75e-08, 8.3903699242276796e+21, 8.4076620579469221e+21, -0.4999956573567646,
+				 -0.50001302770340961, -0.4999956573567646, -0.4999956573567646);
+	CheckFuzzCase("crossing-plates", &plateA, &plateB, 0.0, 0.0, 1.68e22);
 #endif
 }
 

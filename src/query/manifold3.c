@@ -173,14 +173,17 @@ static bool DepthWithinRoundOff(const cd3Manifold* m, cdReal delta, cdReal size)
  *   but on both surfaces. Shifting every point instead moved the shallow ones' sides off the
  *   surfaces or beyond the speculative distance (double-build fuzz findings: 4.7e-4 off a triangle
  *   at size 12.5; 8.6e-4 off a hull at size 25 when moved off an edge).
- * - Too shallow (the deepest vertex clipped away): every point is shifted deeper by the
- *   difference, A's side staying in place. */
+ * - Too shallow (the deepest vertex clipped away): left as it is. Deepening a point moves one of
+ *   its sides out of its shape by the difference (two plates 8.4e21 across, crossing, in double:
+ *   the box path clipped one's face against the other's sliver face, and the shift put B's side
+ *   1.46e17 out of B); the points stay on both surfaces, the smallest separation shallower than
+ *   the exact depth. No test pair comes here (the incident face is chosen around the deepest
+ *   vertex). */
 static void LiftDepth(cd3Manifold* m, cdReal exact, cdReal delta, const cd3Shape* a, const cd3Shape* b,
 					  cdReal size)
 {
 	if (delta < CD_R(0.0))
 	{
-		ShiftDepth(m, delta);
 		return;
 	}
 	for (int i = 0; i < m->pointCount; ++i)
