@@ -1836,7 +1836,7 @@ static void WorldPoints(const double (*points)[3], int count, cd3Transform t, do
 /* A core (sphere, capsule) beside a polytope, apart by more than round-off but less than 1e-4 of
  * the sizes (radius included): taken for touching, the SAT's face plane gave a point beside the
  * face. Now one point at the separation distance - radius (fuzz_manifold3, double build;
- * regression-double-sphere-beside-needle-hull, -aabb-huge-capsule). */
+ * regression-double-sphere-beside-needle-hull, -aabb-huge-capsule; the last case overlaps). */
 static void TestCoreApartRegressions(void)
 {
 #if CD_DOUBLE
@@ -1887,6 +1887,34 @@ static void TestCoreApartRegressions(void)
 	double gap = SegmentAabbDistance(p1, p2, lo, hi);
 	TEST_CHECKF(gap > 4e6 && gap < 5e6, "aabb-huge-capsule: core distance %.17g", gap);
 	CheckCoreCase("aabb-huge-capsule", &aabb, &capsule, 1e6, gap - 245635236233216.0, 2.46e14);
+	/* regression-double-capsule-crossing-needle-hull: a capsule 3.3e7 long (radius 12.5) crossing
+	 * a hull 4.6e7 long near their small ends: the segment-edge axis separates 10.3 more than the
+	 * best face, but EDGE_BIAS of the sizes is 7.9e3, and the face's point lay 10 off the hull.
+	 * Now the edge pair's contact when the face's point is off the hull. Reference: the SAT of the
+	 * core in double (BruteSat) minus the radius. */
+	static const double needlePoints[10][3] = {{-12.5, -0.625, -26711554},
+											   {-12.5, -1.5183760524450918e-06, -12.5},
+											   {-12.5, -12.5, -12.5},
+											   {-12.5, -12.5, -12.5},
+											   {-8650752, -11.375, -12.5},
+											   {-12.5, -12.5, 0.5},
+											   {-10.625, -12.5, -0.625},
+											   {-26712062, 0, -6},
+											   {-6, -6, -6},
+											   {0, -11.5, -12.5}};
+	hull = NULL;
+	hullShape = HullShapeOf(&needlePoints[0][0], 10, pq, &hull);
+	cd3Shape crossing = CapsuleShape(-26711958, -26711958, -15684952, -0.125, -12.375, 0.25, 12.5);
+	if (hull != NULL)
+	{
+		Brute bh, bc;
+		BruteFromShape(&bh, &hullShape);
+		BruteFromShape(&bc, &crossing);
+		double depth = BruteSat(&bh, &bc) - 12.5;
+		TEST_CHECKF(depth < -20.0, "capsule-crossing-needle-hull: separation %.17g", depth);
+		CheckCoreCase("capsule-crossing-needle-hull", &hullShape, &crossing, 0.0, depth, 5.34e7);
+		cd3DestroyHull(hull);
+	}
 #endif
 }
 

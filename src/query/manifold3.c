@@ -1325,6 +1325,39 @@ static bool TrimCore(cd3Vec* p1, cd3Vec* p2, cdReal r, const cd3Polytope* b, cdR
 	return true;
 }
 
+/* The edge contact of core p1-p2 (radius r) and b's SAT edge: one point at the closest points of
+ * the segment and the edge (empty beyond the speculative distance). */
+static cd3Manifold CoreEdgeContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b,
+								   const cd3SatResult* sat, cdReal speculativeDistance)
+{
+	cd3Manifold m = EmptyManifold();
+	cd3Segment segment = {p1, p2};
+	cd3ClosestPoints ecp = cd3ClosestPointsSegmentSegment(segment, WorldEdge(b, sat->edgeB));
+	cdReal separation = sat->edgeSeparation - r;
+	if (separation > speculativeDistance)
+	{
+		return m;
+	}
+	m.normal = cd3Normalize(sat->edgeNormal);
+	AddPoint(&m, cd3MulAdd(ecp.pointA, r + CD_R(0.5) * separation, m.normal), separation,
+			 CD3_FEATURE_EDGES | ((uint32_t)sat->edgeB & 0x7fffu));
+	return m;
+}
+
+/* Every point's polytope side lies in b within round-off (the normal points from the core to b). */
+static bool CorePointOnPolytope(const cd3Manifold* m, const cd3Polytope* b, cdReal size)
+{
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		cd3Vec onB = cd3MulAdd(m->points[i].point, CD_R(0.5) * m->points[i].separation, m->normal);
+		if (!InsideShape(&b->shape, onB, RoundOff(onB, size)))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
 static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Polytope* b,
 									   cdReal speculativeDistance)
 {
@@ -1374,20 +1407,10 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 
 	cd3SatResult sat;
 	cd3SatFeature feature = cd3SatSegmentPolytope(p1, p2, b, &sat);
-	if (feature == CD3_SAT_EDGES && sat.edgeB >= 0 &&
-		(sat.faceB < 0 || sat.edgeSeparation > sat.faceSeparationB + EDGE_BIAS * size))
+	bool edges = feature == CD3_SAT_EDGES && sat.edgeB >= 0;
+	if (edges && (sat.faceB < 0 || sat.edgeSeparation > sat.faceSeparationB + EDGE_BIAS * size))
 	{
-		cd3Segment segment = {p1, p2};
-		cd3ClosestPoints ecp = cd3ClosestPointsSegmentSegment(segment, WorldEdge(b, sat.edgeB));
-		cdReal separation = sat.edgeSeparation - r;
-		if (separation > speculativeDistance)
-		{
-			return m;
-		}
-		m.normal = cd3Normalize(sat.edgeNormal);
-		AddPoint(&m, cd3MulAdd(ecp.pointA, r + CD_R(0.5) * separation, m.normal), separation,
-				 CD3_FEATURE_EDGES | ((uint32_t)sat.edgeB & 0x7fffu));
-		return m;
+		return CoreEdgeContact(p1, p2, r, b, &sat, speculativeDistance);
 	}
 	if (sat.faceB < 0)
 	{
@@ -1417,6 +1440,14 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 	}
 	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, REALIZED_TOLERANCE * size, cp.pointA,
 					&m);
+	if (edges && m.pointCount > 0 && !CorePointOnPolytope(&m, b, size))
+	{
+		/* The face won within EDGE_BIAS of the sizes, but its point lies beside it (a capsule
+		 * 3.3e7 long crossing a hull 4.6e7 long near their small ends, in double: the edge axis
+		 * separated 10 more, the bias was 7.9e3, and the point lay 10 off the hull): the edge
+		 * pair's contact, which lies on both. */
+		return CoreEdgeContact(p1, p2, r, b, &sat, speculativeDistance);
+	}
 	return m;
 }
 
