@@ -2127,6 +2127,14 @@ static void TestHugeDoubleRegressions(void)
 		BoxShape(0, 0, 0, 9.75e-08, 8.3903699242276796e+21, 8.4076620579469221e+21, -0.4999956573567646,
 				 -0.50001302770340961, -0.4999956573567646, -0.4999956573567646);
 	CheckFuzzCase("crossing-plates", &plateA, &plateB, 0.0, 0.0, 1.68e22);
+	/* regression-double-sliver-triangle-normal: a triangle 2e18 long and 5e8 across (a sliver with
+	 * its tip at a) against an AABB 2e18 long and 1e-3 across: the normal from the two edges at the
+	 * tip was off by 1e-6 rad, the plane 2e12 off near the AABB, and the face contact's points
+	 * 6e10 off the triangle. The normal now comes from the corner of the largest angle. */
+	cd3Shape sliver = TriangleShape(-4.995992888845271e+17, -1.998379563352064e+18, -1.9983971555381084e+18,
+									-465567712, 0, 0, 0.003875, 0.006125, 0.008875);
+	cd3Shape longAabb = AabbShape(-0.001375, -0.000375, -1.9983971555381084e+18, -0.00025, 0.000875, -0.002);
+	CheckFuzzCase("sliver-triangle-normal", &sliver, &longAabb, 1.9938935559107379e+18, -1.0, 2e18);
 #endif
 }
 

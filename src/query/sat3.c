@@ -10,6 +10,13 @@
 #include "sat3_box.h"
 #include "sat3_support.h"
 
+/* For rare branches kept out of the hot functions' code. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SAT_NOINLINE __attribute__((noinline))
+#else
+#define SAT_NOINLINE
+#endif
+
 /* Edge pairs whose cross product is shorter than this fraction of |eA| |eB| are parallel: their
  * axis is a face normal (or does not exist) and is covered by the face queries. */
 #define PARALLEL_SINE CD_R(1.0e-5)
@@ -100,6 +107,23 @@ void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
 	p->shape.hull = hull;
 }
 
+/* The unit-scaled normal cross product of a sliver triangle whose tip is a, from the two shorter
+ * edges, at the corner opposite the longest edge (c when a-b is the longest, else b). At a's tip
+ * the two edges, nearly parallel, give a cross product whose round-off is epsilon over the sine of
+ * the tip's angle (a triangle 2e18 long and 5e8 across: its normal off by 1e-6 rad, its plane 2e12
+ * off at the other end, and a face contact 6e10 off it); the corner of the largest angle gives a
+ * few epsilon. Used below a sine of 1/1024 at a (above, a's round-off stays within 1024 epsilon,
+ * and the common path is left as it was). (b - a) x (c - a) = (c - b) x (a - b) =
+ * (a - c) x (b - c): the same normal. Out of line: rare. */
+SAT_NOINLINE static cd3Vec SliverCross(cd3Triangle t, bool atC, cdReal unit)
+{
+	if (atC)
+	{
+		return cd3Cross(cd3Scale(unit, cd3Sub(t.a, t.c)), cd3Scale(unit, cd3Sub(t.b, t.c)));
+	}
+	return cd3Cross(cd3Scale(unit, cd3Sub(t.c, t.b)), cd3Scale(unit, cd3Sub(t.a, t.b)));
+}
+
 void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 {
 	cd3Vec ab = cd3Sub(t.b, t.a), bc = cd3Sub(t.c, t.b), ca = cd3Sub(t.a, t.c);
@@ -110,6 +134,11 @@ void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 	cdReal unit = longest > CD_R(0.0) ? CD_R(1.0) / cdSqrt(longest) : CD_R(0.0);
 	cd3Vec cross = cd3Cross(cd3Scale(unit, ab), cd3Scale(-unit, ca));
 	cdReal crossLength = cd3Length(cross);
+	if (crossLength < CD_R(1.0) / CD_R(1024.0) && lbc != longest)
+	{
+		cross = SliverCross(t, lab == longest, unit);
+		crossLength = cd3Length(cross);
+	}
 	/* A collinear triangle (within round-off) is the segment of its longest edge: its normal
 	 * would be noise, so it gets zero normals (face axes skipped) and one edge axis, with the
 	 * longest edge moved to a-b. */
