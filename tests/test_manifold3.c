@@ -2086,6 +2086,13 @@ static void TestMissedOverlapRegression(void)
 		-2.4999999368446879e-06, 8.7500002337037586e-06, -1e9, -1e9, -0.0001237499964190647,
 		-0.00012500000593718141, -0.00012500000593718141, -0.00012124999921070412, -1.249999968422344e-06);
 	CheckFuzzCase("tiny-aabb-long-triangle", &aabb, &triangle, 1e9, 0.0, 1e9);
+	/* The box pair's own path (cd3CollideBoxBox): a flat box (zero y extent) whose rim, as the
+	 * reference face within the edge bias, clipped the other box's face to points at separation
+	 * +3e6 for boxes that overlap by 3.75e6 (regression-flat-box-rim-missed-overlap). */
+	cd3Shape flatBox = BoxShape(0, -12500000, -1125000, 12500000, 0, 1e9, 0, 0, 0, 1);
+	cd3Shape tilted = BoxShape(-12500000, -6625000, -12500000, 250000, 12375000, 12375000,
+							   -0.99029320478439331, -0.0099029317498207092, -0.13864104449748993, 0);
+	CheckFuzzCase("flat-box-rim-missed-overlap", &flatBox, &tilted, 12375000, 0.0, 2.01e9);
 }
 
 /* Shapes 1e21 across (double build; beyond the float range).

@@ -238,25 +238,44 @@ static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit, const cd3Poly
 	}
 }
 
+static cdReal ManifoldMinSeparation(const cd3Manifold* m)
+{
+	cdReal s = CD_REAL_MAX;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		s = cdMin(s, m->points[i].separation);
+	}
+	return s;
+}
+
 /* MatchDepth for two boxes (cd3CollideBoxBox), called when the deepest point is not at the exact
- * depth: out of line, with the size and the shapes for the checks built only then. */
-MANIFOLD_NOINLINE static void MatchBoxDepth(cd3Manifold* m, cdReal exact, const cd3Box* a, const cd3Box* b)
+ * depth: out of line, with the size and the shapes for the checks built only then. False when the
+ * contact missed the overlap (every point farther apart than the SAT's separation allows, as in
+ * CollidePolytopesSat): a flat box's rim as the reference face, the other box's face beside it
+ * (float: points at separation +3e6 for boxes that overlap by 3.75e6). */
+MANIFOLD_NOINLINE static bool MatchBoxDepth(cd3Manifold* m, cdReal exact, const cd3Box* a, const cd3Box* b)
 {
 	/* The size bound from the 1-norms: no square roots. */
 	cdReal size = CD_R(2.0) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
 							   cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
-	cdReal delta = DepthMismatch(m, exact, (FACE_BIAS + EDGE_BIAS) * size);
+	cdReal limit = (FACE_BIAS + EDGE_BIAS) * size;
+	if (ManifoldMinSeparation(m) > exact + limit)
+	{
+		return false;
+	}
+	cdReal delta = DepthMismatch(m, exact, limit);
 	if (delta == CD_R(0.0))
 	{
-		return;
+		return true;
 	}
 	if (DepthWithinRoundOff(m, delta, size))
 	{
 		ShiftDepth(m, delta);
-		return;
+		return true;
 	}
 	cd3Shape sa = cd3MakeBoxShape(*a), sb = cd3MakeBoxShape(*b);
 	LiftDepth(m, exact, delta, &sa, &sb, size);
+	return true;
 }
 
 static cd3Manifold Flipped(cd3Manifold m)
@@ -934,16 +953,6 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 					: FaceContact(b, other, a, true, speculativeDistance);
 	}
 	return EmptyManifold();
-}
-
-static cdReal ManifoldMinSeparation(const cd3Manifold* m)
-{
-	cdReal s = CD_REAL_MAX;
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		s = cdMin(s, m->points[i].separation);
-	}
-	return s;
 }
 
 /* Polytopes with more edge pairs than this take the GJK/EPA path: the SAT edge query costs
@@ -1841,15 +1850,14 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 			{
 				deepest = cdMin(deepest, m.points[i].separation);
 			}
-			if (deepest != separation)
+			if (deepest == separation || MatchBoxDepth(&m, separation, &a, &b))
 			{
-				MatchBoxDepth(&m, separation, &a, &b);
+				return m;
 			}
-			return m;
 		}
 	}
-	/* Apart (the GJK distance decides the features), or the incident face clipped away: the
-	 * polytope path, with every edge pair in the second case. */
+	/* Apart (the GJK distance decides the features), or the incident face clipped away or missed
+	 * the overlap: the polytope path, with every edge pair in the second case. */
 	cd3Polytope pa, pb;
 	cd3InitBoxPolytope(&pa, a);
 	cd3InitBoxPolytope(&pb, b);
