@@ -28,16 +28,10 @@ static struct
 
 /* Open findings (fuzz/crashes/README.md, FuzzPassOver): the checks this target's CI run still
  * fails on; FUZZ_STRICT=1 checks them. manifold-valid itself (point count, finiteness, unit
- * normal) is never passed over. Found one by one (session 2 audit): each name is a check
- * the float or double CI run (seed 1, 100000 inputs) reaches once the names before it are passed
- * over, each with a crash file (*-ci) whose error is 1e4 to 1e7 epsilons of the case's magnitude:
- * genuine bugs, not round-off, so the band stays as it is (see FUZZ_BAND). Session 3 fixed 12
- * of those rows; with their inputs in the corpus the runs reach other open rows (extreme aspect,
- * double-build depth matching) under the same names, so the list is unchanged. */
-#define OPEN_FINDINGS                                                                                        \
-	"manifold-surface,manifold-surface-speculative,manifold-surface-triangle,"                               \
-	"manifold-surface-speculative-triangle,manifold-overlap-triangle,manifold-separation-triangle,"          \
-	"manifold-beyond-speculative-triangle,manifold-beyond-speculative"
+ * normal) is never passed over. Empty since session 4 (fuzzfix): the CI runs (seed 1, 100000
+ * inputs) pass every check in the float and the double builds; a new finding gets a crash file,
+ * a README row and its check's name here only until it is fixed. */
+#define OPEN_FINDINGS ""
 
 /* Pairs with a triangle (their own code path, manifold_triangle3.c) fail under the check's name
  * followed by "-triangle". */

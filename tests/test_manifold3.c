@@ -2142,6 +2142,16 @@ static void TestHugeDoubleRegressions(void)
 									-465567712, 0, 0, 0.003875, 0.006125, 0.008875);
 	cd3Shape longAabb = AabbShape(-0.001375, -0.000375, -1.9983971555381084e+18, -0.00025, 0.000875, -0.002);
 	CheckFuzzCase("sliver-triangle-normal", &sliver, &longAabb, 1.9938935559107379e+18, -1.0, 2e18);
+	/* regression-double-needle-box-triangle-overlap (the row manifold3-double-needle-box-triangle-
+	 * overlap-ci): a box 5.9e13 long against a triangle reaching 2.9e13 whose other corners are 12
+	 * apart (a sliver with its tip at a): its normal, from the edges at the tip, was off enough
+	 * for its face axis to separate them beyond the speculative distance, and overlapping shapes
+	 * got no points. Fixed with the sliver normal above (SliverCross). */
+	cd3Shape needleBox = BoxShape(-29389276315648, -26711712, -12.5, 26711958, 28027818, 29389297287168, -0.5,
+								  -0.5, -0.5, -0.5);
+	cd3Shape reaching = TriangleShape(-29389297287168, -16618793992192, -29324612730880, 0.875, 0.375, -1.875,
+									  -0.125, 1, -12.125);
+	CheckFuzzCase("needle-box-triangle-overlap", &needleBox, &reaching, 12.125, 0.0, 8.82e13);
 #endif
 }
 
