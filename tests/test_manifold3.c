@@ -2152,6 +2152,14 @@ static void TestHugeDoubleRegressions(void)
 	cd3Shape reaching = TriangleShape(-29389297287168, -16618793992192, -29324612730880, 0.875, 0.375, -1.875,
 									  -0.125, 1, -12.125);
 	CheckFuzzCase("needle-box-triangle-overlap", &needleBox, &reaching, 12.125, 0.0, 8.82e13);
+	/* regression-double-needle-aabb-touching-triangle: an AABB 2e18 long whose end touches a
+	 * triangle 5e20 across (GJK: distance 0; the SAT: 0.125 apart): the AABB's face contact, 1.6e14
+	 * apart, passed within 1e-4 of the smaller size (the needle's 2e18). A touching pair's SAT
+	 * contact must now touch, else the witnesses. */
+	cd3Shape needleAabb = AabbShape(1e-30, 0.125, -12.375, 0.125, 2.0345492352983368e+18, -1.375);
+	cd3Shape wide = TriangleShape(0.25, 0.625, 1, -0.125, -494780232499200, -12.5, -11.375,
+								  -5.2084921338911785e+20, -5.2084921338911785e+20);
+	CheckFuzzCase("needle-aabb-touching-triangle", &needleAabb, &wide, 5.2084921338911785e+20, 0.0, 5.21e20);
 #endif
 }
 

@@ -1160,10 +1160,19 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	 * for realizing the distance within 1e-4 of the size sum. */
 	cdReal tolerance =
 		REALIZED_TOLERANCE * CD_R(2.0) * cdMin(a->size, b->size) + ROUND_OFF_TOLERANCE * (a->size + b->size);
+	/* Touching within round-off (GJK's distance): the SAT contact must touch too. A needle AABB
+	 * 2e18 long whose end touches a triangle 5e20 across (double): the AABB's face contact lay
+	 * 1.6e14 apart, within the tolerance (the needle is the smaller polytope), though the shapes
+	 * touch. Then the witnesses: GJK's point on the SAT's axis. (The coordinates' round-off is
+	 * computed only near touching: hot path.) */
+	bool touching = cp.distance <= ROUND_OFF_TOLERANCE * (a->size + b->size) ||
+					(cp.distance <= tolerance && cp.distance <= RoundOff(cp.pointA, a->size + b->size));
 	if (cp.distance <= separation + tolerance)
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
-		if (m.pointCount > 0 && cdAbs(ManifoldMinSeparation(&m) - cp.distance) <= tolerance)
+		cdReal smallest = ManifoldMinSeparation(&m);
+		if (m.pointCount > 0 && cdAbs(smallest - cp.distance) <= tolerance &&
+			(!touching || smallest <= cp.distance + RoundOff(cp.pointA, a->size + b->size)))
 		{
 			if (m.pointCount == 1 && (m.points[0].id & CD3_FEATURE_EDGES) != 0u && cp.distance > tolerance)
 			{
@@ -1178,7 +1187,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 			return m;
 		}
 	}
-	return VertexContact(cp);
+	return touching ? WitnessContact(a, b, &sat, cp) : VertexContact(cp);
 }
 
 /* ---- rounded core against polytope ------------------------------------------------------------ */
