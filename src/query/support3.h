@@ -180,6 +180,9 @@ static inline int cd3SupportScan(const cd3Vec* points, int count, cd3Vec directi
 }
 
 /* A hull core's support: its vertex farthest along the direction carried into its frame. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((always_inline))
+#endif
 static inline int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
 {
 	cd3Vec local = cd3MulMTV(core->rotation, direction);
