@@ -2118,8 +2118,8 @@ static void TestNearlyParallelBoxEdges(void)
 		cd3Quat qa = RandomQuat(&rng);
 		double angle = exp(TestRngRange(&rng, log(2e-5), log(1e-2)));
 		cd3Quat turn = cd3MakeQuatAxisAngle(RandomUnit(&rng), (cdReal)angle);
-		cd3Box a = {cd3MakeVec(0, 0, 0), RandomVec(&rng, 1.0), qa};
-		a.halfExtents = cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0));
+		cd3Box a = {cd3MakeVec(0, 0, 0),
+					cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0)), qa};
 		cd3Box b = {cd3Scale(RandomReal(&rng, 0.5, 2.0), RandomUnit(&rng)),
 					cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0)),
 					cd3NormalizeQuat(cd3MulQuat(qa, turn))};
