@@ -1438,6 +1438,20 @@ static void TestLongCoreRegressions(void)
 	CheckFuzzCase("double-long-capsule-aabb", &aabb, &capsule2, 12500000, -1.0, 2.5e14);
 }
 
+/* cd3Collide(a, b) for order 0, cd3Collide(b, a) for order 1, checked to have points, each within
+ * `tol` of both surfaces. */
+static cd3Manifold CollideOnSurfaces(const char* name, const cd3Shape* a, const cd3Shape* b, int order,
+									 double speculative, double tol)
+{
+	const cd3Shape* first = order == 0 ? a : b;
+	const cd3Shape* second = order == 0 ? b : a;
+	cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
+	double off = WorstOffSurface(&m, first, second);
+	TEST_CHECKF(m.pointCount > 0 && off <= tol, "%s, order %d: %d points, %.3g off a surface (tolerance %.3g)",
+				name, order, m.pointCount, off, tol);
+	return m;
+}
+
 /* One overlapping fuzz case in both orders, to round-off (256 epsilon of the case's magnitude
  * `scale`, the fuzz audit's bound): every point on both surfaces and within the speculative
  * distance, and (exactDepth) the smallest separation the exact depth (BruteSat: every face normal
@@ -1453,13 +1467,7 @@ static void CheckDepthCase(const char* name, const cd3Shape* a, const cd3Shape* 
 	TEST_CHECKF(exact < 0.0, "%s: exact depth %.9g", name, exact);
 	for (int order = 0; order < 2; ++order)
 	{
-		const cd3Shape* first = order == 0 ? a : b;
-		const cd3Shape* second = order == 0 ? b : a;
-		cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
-		double off = WorstOffSurface(&m, first, second);
-		TEST_CHECKF(m.pointCount > 0 && off <= tol,
-					"%s, order %d: %d points, %.3g off a surface (tolerance %.3g)", name, order, m.pointCount,
-					off, tol);
+		cd3Manifold m = CollideOnSurfaces(name, a, b, order, speculative, tol);
 		for (int i = 0; i < m.pointCount; ++i)
 		{
 			TEST_CHECKF((double)m.points[i].separation <= speculative + tol,
@@ -1715,13 +1723,7 @@ static void CheckCoreCase(const char* name, const cd3Shape* a, const cd3Shape* b
 	double tol = 256.0 * (double)CD_REAL_EPSILON * scale;
 	for (int order = 0; order < 2; ++order)
 	{
-		const cd3Shape* first = order == 0 ? a : b;
-		const cd3Shape* second = order == 0 ? b : a;
-		cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
-		double off = WorstOffSurface(&m, first, second);
-		TEST_CHECKF(m.pointCount > 0 && off <= tol,
-					"%s, order %d: %d points, %.3g off a surface (tolerance %.3g)", name, order, m.pointCount,
-					off, tol);
+		cd3Manifold m = CollideOnSurfaces(name, a, b, order, speculative, tol);
 		TEST_CHECKF(fabs(MinSeparation(&m) - separation) <= tol,
 					"%s, order %d: separation %.17g, reference %.17g", name, order, MinSeparation(&m),
 					separation);
