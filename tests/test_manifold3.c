@@ -1447,8 +1447,9 @@ static cd3Manifold CollideOnSurfaces(const char* name, const cd3Shape* a, const 
 	const cd3Shape* second = order == 0 ? b : a;
 	cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
 	double off = WorstOffSurface(&m, first, second);
-	TEST_CHECKF(m.pointCount > 0 && off <= tol, "%s, order %d: %d points, %.3g off a surface (tolerance %.3g)",
-				name, order, m.pointCount, off, tol);
+	TEST_CHECKF(m.pointCount > 0 && off <= tol,
+				"%s, order %d: %d points, %.3g off a surface (tolerance %.3g)", name, order, m.pointCount,
+				off, tol);
 	return m;
 }
 
@@ -2120,11 +2121,14 @@ static void TestNearlyParallelBoxEdges(void)
 		cd3Quat qa = RandomQuat(&rng);
 		double angle = exp(TestRngRange(&rng, log(2e-5), log(1e-2)));
 		cd3Quat turn = cd3MakeQuatAxisAngle(RandomUnit(&rng), (cdReal)angle);
-		cd3Box a = {cd3MakeVec(0, 0, 0),
-					cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0)), qa};
-		cd3Box b = {cd3Scale(RandomReal(&rng, 0.5, 2.0), RandomUnit(&rng)),
-					cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0)),
-					cd3NormalizeQuat(cd3MulQuat(qa, turn))};
+		cd3Box a = {
+			cd3MakeVec(0, 0, 0),
+			cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0)),
+			qa};
+		cd3Box b = {
+			cd3Scale(RandomReal(&rng, 0.5, 2.0), RandomUnit(&rng)),
+			cd3MakeVec(RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0), RandomReal(&rng, 0.2, 1.0)),
+			cd3NormalizeQuat(cd3MulQuat(qa, turn))};
 		cd3Shape sa = cd3MakeBoxShape(a), sb = cd3MakeBoxShape(b);
 		double reference = ReferenceSeparation(&sa, &sb);
 		double size = ShapeSize(&sa) + ShapeSize(&sb);

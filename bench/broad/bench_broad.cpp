@@ -385,10 +385,11 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 		{
 			std::snprintf(stat, sizeof stat, "%.0f", result.reportedBytesPerProxy);
 		}
-		std::printf("%-12s %10.2f %10.3f %10.2f %10s %9.0f %9s %10zu  frames: mean %.3f ms, slowest %.3f ms%s%s\n",
-					result.name.c_str(), result.buildMs, result.frameMs, result.queryUs, ray,
-					result.heapBytesPerProxy, stat, result.pairs, result.frameMeanMs, result.frameMaxMs,
-					result.extra.empty() ? "" : " |", result.extra.c_str());
+		std::printf(
+			"%-12s %10.2f %10.3f %10.2f %10s %9.0f %9s %10zu  frames: mean %.3f ms, slowest %.3f ms%s%s\n",
+			result.name.c_str(), result.buildMs, result.frameMs, result.queryUs, ray,
+			result.heapBytesPerProxy, stat, result.pairs, result.frameMeanMs, result.frameMaxMs,
+			result.extra.empty() ? "" : " |", result.extra.c_str());
 		std::fflush(stdout);
 		adapter.reset();
 		results.push_back(result);
@@ -583,9 +584,9 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 	{
 		for (SceneKind kind : {SceneKind::Moving, SceneKind::Mix})
 		{
-			std::fprintf(file,
-						 "\n**%dD, scene %s: mean ms per frame (update + complete pair set)**\n\n| structure |",
-						 dim, SceneName(kind));
+			std::fprintf(
+				file, "\n**%dD, scene %s: mean ms per frame (update + complete pair set)**\n\n| structure |",
+				dim, SceneName(kind));
 			for (int n : ns)
 			{
 				std::fprintf(file, " N = %d |", n);
@@ -785,7 +786,8 @@ void WriteCsv(const std::string& path, const std::vector<Result>& results)
 		std::fprintf(file, "%d,%d,%s,%s,%d,%.3f,%.4f,%.3f,%s,%.1f,%.1f,%zu,%d,%.4f,%.4f,\"%s\"\n", r.dim, r.n,
 					 SceneName(r.kind), r.name.c_str(), r.peer ? 1 : 0, r.buildMs, r.frameMs, r.queryUs,
 					 r.rayMeasured ? std::to_string(r.rayUs).c_str() : "", r.heapBytesPerProxy,
-					 r.reportedBytesPerProxy, r.pairs, r.framesRun, r.frameMeanMs, r.frameMaxMs, r.extra.c_str());
+					 r.reportedBytesPerProxy, r.pairs, r.framesRun, r.frameMeanMs, r.frameMaxMs,
+					 r.extra.c_str());
 	}
 	std::fclose(file);
 }

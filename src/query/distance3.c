@@ -948,7 +948,8 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		int duplicate = 0;
 		for (int i = 0; i < 3; ++i)
 		{
-			duplicate |= (i < simplex.count) & (simplex.v[i].indexA == indexA) & (simplex.v[i].indexB == indexB);
+			duplicate |=
+				(i < simplex.count) & (simplex.v[i].indexA == indexA) & (simplex.v[i].indexB == indexB);
 		}
 		if (duplicate)
 		{

@@ -294,8 +294,9 @@ static inline int cd3ColumnsSupportTwoPass(const float* xs, const float* ys, con
 	for (int g = 0; g < groups; ++g)
 	{
 		int i = 4 * g;
-		dots[g] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(xs + i)), _mm_mul_ps(dy, _mm_loadu_ps(ys + i))),
-							 _mm_mul_ps(dz, _mm_loadu_ps(zs + i)));
+		dots[g] =
+			_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, _mm_loadu_ps(xs + i)), _mm_mul_ps(dy, _mm_loadu_ps(ys + i))),
+					   _mm_mul_ps(dz, _mm_loadu_ps(zs + i)));
 	}
 	/* max(new, old) returns old when either is NaN: a NaN product never becomes the maximum. */
 	__m128 highEven = dots[0], highOdd = dots[groups > 1 ? 1 : 0];

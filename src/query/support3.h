@@ -18,11 +18,11 @@ typedef struct cd3Core
 	cd3Vec points[CD3_CORE_MAX_POINTS];
 	int count;
 	cdReal radius;
-	const cd3Vec* localPoints; /* a hull's vertices (count of them), or NULL */
+	const cd3Vec* localPoints;	/* a hull's vertices (count of them), or NULL */
 	const cdReal* localColumns; /* the same vertices as columns (cd3Hull.vertexColumns), or NULL */
-	bool box;				   /* corner i = centre +- axes[0] +- axes[1] +- axes[2], bit k of i: + */
-	bool lazyBox;			   /* an oriented box: its corners are made on demand from centre, axes */
-	bool orientedBox;		   /* an oriented box whose points hold its corners (centre, axes valid) */
+	bool box;					/* corner i = centre +- axes[0] +- axes[1] +- axes[2], bit k of i: + */
+	bool lazyBox;				/* an oriented box: its corners are made on demand from centre, axes */
+	bool orientedBox;			/* an oriented box whose points hold its corners (centre, axes valid) */
 	cd3Vec center;
 	cd3Vec axes[3];
 	cd3Mat33 rotation; /* world = rotation * local + translation, for localPoints */
@@ -179,11 +179,16 @@ static inline int cd3SupportScan(const cd3Vec* points, int count, cd3Vec directi
 	return cd3SupportIndex(points, count, direction);
 }
 
-/* A hull core's support: its vertex farthest along the direction carried into its frame. */
+/* `inline`, and always inlined where the compiler allows forcing it: the supports below run in
+ * GJK's loop, where a call spills the loop's SSE registers. */
 #if defined(__GNUC__) || defined(__clang__)
-__attribute__((always_inline))
+#define CD3_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CD3_ALWAYS_INLINE inline
 #endif
-static inline int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
+
+/* A hull core's support: its vertex farthest along the direction carried into its frame. */
+static CD3_ALWAYS_INLINE int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
 {
 	cd3Vec local = cd3MulMTV(core->rotation, direction);
 	if (core->localColumns == NULL)
@@ -200,10 +205,7 @@ static inline int cd3HullCoreSupport(const cd3Core* core, cd3Vec direction)
  * a zero product, a tie, keeps the lower corner as the scan would). Always inlined: with the
  * hull's scan in it, GCC 12 stopped inlining it into GJK's loop, and a call there costs the box
  * path more than the scan saves the hull path. */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((always_inline))
-#endif
-static inline int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
+static CD3_ALWAYS_INLINE int cd3CoreSupport(const cd3Core* core, cd3Vec direction)
 {
 	if (core->box)
 	{
