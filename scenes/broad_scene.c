@@ -363,18 +363,50 @@ void broadPairListAdd(BroadPairList* list, int a, int b)
 	++list->freshCount;
 }
 
+/* Whether a kept pair's boxes are compared again: flags are the pair's two boxes' flags. */
+static bool pairNeedsCompare(const BroadPairList* list, int flags)
+{
+	return !(flags & BROAD_PAIR_MOVED) && ((flags & BROAD_PAIR_CHANGED) || !list->tracksChanges);
+}
+
+/* Starts loading the two boxes of a pair (a hint: nothing elsewhere). The pairs' boxes lie at
+ * random in the scene's array, which outgrows the cache at 1M boxes: loading them this many pairs
+ * ahead lets the misses overlap instead of being waited for one by one. */
+enum
+{
+	PAIR_BOX_AHEAD = 16
+};
+static void prefetchPairBoxes(const BroadBox* boxes, BroadPair pair)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	__builtin_prefetch(&boxes[pair.a]);
+	__builtin_prefetch(&boxes[pair.b]);
+#else
+	(void)boxes;
+	(void)pair;
+#endif
+}
+
 size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 {
 	size_t count = 0, kept = 0;
 	for (size_t k = 0; k < list->pairCount; ++k)
 	{
+		if (k + PAIR_BOX_AHEAD < list->pairCount)
+		{
+			BroadPair ahead = list->pairs[k + PAIR_BOX_AHEAD];
+			if (pairNeedsCompare(list, list->flags[ahead.a] | list->flags[ahead.b]))
+			{
+				prefetchPairBoxes(boxes, ahead);
+			}
+		}
 		BroadPair pair = list->pairs[k];
 		int flags = list->flags[pair.a] | list->flags[pair.b];
 		if (flags & BROAD_PAIR_MOVED)
 		{
 			continue;
 		}
-		if ((flags & BROAD_PAIR_CHANGED) || !list->tracksChanges)
+		if (pairNeedsCompare(list, flags))
 		{
 			pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
 		}
@@ -390,6 +422,10 @@ size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 	{
 		for (size_t k = 0; k < list->freshCount; ++k)
 		{
+			if (k + PAIR_BOX_AHEAD < list->freshCount)
+			{
+				prefetchPairBoxes(boxes, list->fresh[k + PAIR_BOX_AHEAD]);
+			}
 			BroadPair pair = list->fresh[k];
 			pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
 			count += pair.overlapping ? 1u : 0u;
