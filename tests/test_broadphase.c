@@ -540,6 +540,19 @@ static void TestFrames(void)
 	}
 }
 
+/* Creates `count` random boxes of scene s one by one (proxy i for box i); false on any failure. */
+static bool CreateRandomBoxes(Oracle* o, TestRng* rng, int dim, const Scene* s, OBox* tight, int count)
+{
+	bool ok = true;
+	for (int i = 0; i < count && ok; ++i)
+	{
+		tight[i] = RandomBox(rng, dim, s->lo, s->hi, s->maxSize);
+		int id;
+		ok = OracleCreate(o, tight[i], (uint64_t)i, &id) && id == i;
+	}
+	return ok;
+}
+
 /* More proxies created one by one than the tree's self-rebuild threshold (1024), then frames in
  * which a tenth of them teleport (sweep-and-prune: tombstone + tail merge instead of long shifts;
  * tree: reinsertion from the root). The tree, mostly built by single insertions, must come out
@@ -563,14 +576,7 @@ static void TestTeleportFrames(void)
 				COUNT = 1100
 			};
 			static OBox tight[COUNT];
-			bool ok = true;
-			for (int i = 0; i < COUNT && ok; ++i)
-			{
-				tight[i] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
-				int id;
-				ok = OracleCreate(o, tight[i], (uint64_t)i, &id);
-				ok = ok && id == i;
-			}
+			bool ok = CreateRandomBoxes(o, &rng, dim, &s, tight, COUNT);
 			ok = ok && OracleUpdatePairs(o) && OracleValidate(o);
 			TEST_CHECKF(ok, "%s %dD first pairs: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
 						o->error);
@@ -629,9 +635,11 @@ static void TestTreeAfterManyRemovals(void)
 	for (int dim = 2; dim <= 3; ++dim)
 	{
 		Oracle* o = (Oracle*)malloc(sizeof(Oracle));
-		TEST_CHECK(o != NULL && OracleInit(o, dim, CD_BROADPHASE_TREE, CD_R(0.1), CD_R(4.0)));
-		if (o == NULL)
+		bool ready = o != NULL && OracleInit(o, dim, CD_BROADPHASE_TREE, CD_R(0.1), CD_R(4.0));
+		TEST_CHECK(ready);
+		if (!ready)
 		{
+			free(o);
 			continue;
 		}
 		TestRng rng = TestRngMake(4242 + (uint64_t)dim);
@@ -641,13 +649,7 @@ static void TestTreeAfterManyRemovals(void)
 			COUNT = 2000
 		};
 		static OBox tight[COUNT];
-		bool ok = true;
-		for (int i = 0; i < COUNT && ok; ++i)
-		{
-			tight[i] = RandomBox(&rng, dim, s.lo, s.hi, s.maxSize);
-			int id;
-			ok = OracleCreate(o, tight[i], (uint64_t)i, &id) && id == i;
-		}
+		bool ok = CreateRandomBoxes(o, &rng, dim, &s, tight, COUNT);
 		OracleRebuild(o);
 		ok = ok && OracleUpdatePairs(o) && OracleValidate(o);
 		for (int frame = 0; frame < 30 && ok; ++frame)
