@@ -25,7 +25,7 @@ enum
 	CD_BROAD_OP_TREE_MOVES,		  /* TreeMoveProxy calls */
 	CD_BROAD_OP_TREE_REINSERTS,	  /* of which removed and reinserted */
 	CD_BROAD_OP_TREE_DESCENT,	  /* nodes read by the SAH sibling search */
-	CD_BROAD_OP_TREE_REFIT,		  /* refit steps (each may rotate) */
+	CD_BROAD_OP_TREE_REFIT,		  /* refit steps after insertions and in-place moves (each rotates) */
 	CD_BROAD_OP_TREE_QUERIES,	  /* TreeQuery calls */
 	CD_BROAD_OP_TREE_QUERY_NODES, /* nodes read by queries */
 	CD_BROAD_OP_GRID_CELLS,		  /* grid cells looked up by queries */
