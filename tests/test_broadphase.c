@@ -5,6 +5,8 @@
 
 #include "collide/broad.h"
 
+#include <limits.h>
+
 static int s_typesTested[2][CD_BROADPHASE_TYPE_COUNT];
 
 /* Runs one oracle step; on a mismatch prints the reason with the context and returns false. */
@@ -782,6 +784,219 @@ static void TestBatchMoves(void)
 	}
 }
 
+/* ---- allocation failures ------------------------------------------------------------------------ */
+static long s_allocationsLeft = LONG_MAX;
+static int s_failedAllocations = 0;
+static int s_liveAllocations = 0;
+
+static void* FailingAlloc(size_t size, size_t alignment)
+{
+	(void)alignment;
+	if (s_allocationsLeft <= 0)
+	{
+		++s_failedAllocations;
+		return NULL;
+	}
+	--s_allocationsLeft;
+	++s_liveAllocations;
+	return aligned_alloc(32, (size + 31u) & ~(size_t)31u);
+}
+
+static void CountingFree(void* memory)
+{
+	if (memory != NULL)
+	{
+		--s_liveAllocations;
+	}
+	free(memory);
+}
+
+/* The calls the run below makes, for either dimension. */
+static int OomCreate(Oracle* o, OBox box, uint64_t userData)
+{
+	return o->dim == 2 ? cd2BroadPhase_CreateProxy(o->bp2, OracleTo2(box), userData)
+					   : cd3BroadPhase_CreateProxy(o->bp3, OracleTo3(box), userData);
+}
+
+static void OomMoveMany(Oracle* o, int count, const int* ids, const OBox* boxes, bool* changed)
+{
+	enum
+	{
+		MOST = 256
+	};
+	cd2Aabb boxes2[MOST];
+	cd3Aabb boxes3[MOST];
+	count = count < MOST ? count : MOST;
+	for (int i = 0; i < count; ++i)
+	{
+		boxes2[i] = OracleTo2(boxes[i]);
+		boxes3[i] = OracleTo3(boxes[i]);
+	}
+	if (o->dim == 2)
+	{
+		cd2BroadPhase_MoveProxies(o->bp2, count, ids, boxes2, NULL, changed);
+	}
+	else
+	{
+		cd3BroadPhase_MoveProxies(o->bp3, count, ids, boxes3, NULL, changed);
+	}
+}
+
+static void OomCountPair(int a, int b, uint64_t userDataA, uint64_t userDataB, void* context)
+{
+	(void)a;
+	(void)b;
+	(void)userDataA;
+	(void)userDataB;
+	++*(int*)context;
+}
+
+/* One broadphase whose allocations fail after `budget` of them: proxies are created, moved in
+ * batches and one by one (small moves and teleports), destroyed, and pairs updated, all while
+ * memory runs out. Calls may fail (an invalid id, a move reported unchanged, no pairs), but
+ * nothing may crash. Then memory comes back: the structure must be valid, report exactly the
+ * overlapping pairs of the fat boxes it holds, and free every block when destroyed.
+ * *sawFailure: whether an allocation failed at all (false once the budget covers the run). */
+static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budget, bool* sawFailure)
+{
+	enum
+	{
+		COUNT = 160
+	};
+	s_allocationsLeft = budget;
+	s_failedAllocations = 0;
+	s_liveAllocations = 0;
+	cdSetAllocator(FailingAlloc, CountingFree);
+	bool created = OracleInit(o, dim, type, CD_R(0.1), CD_R(4.0));
+	bool ok = true;
+	if (created)
+	{
+		TestRng rng = TestRngMake(0x00AA11u + (uint64_t)(10 * dim + (int)type));
+		const Scene scene = {0.0, 20.0, 3.0, 1.0};
+		int ids[COUNT];
+		OBox boxes[COUNT];
+		bool changed[COUNT];
+		int pairs = 0;
+		for (int i = 0; i < COUNT; ++i)
+		{
+			boxes[i] = RandomBox(&rng, dim, scene.lo, scene.hi, scene.maxSize);
+			ids[i] = OomCreate(o, boxes[i], (uint64_t)i);
+			if (i == COUNT / 2)
+			{
+				(void)(dim == 2 ? cd2BroadPhase_UpdatePairs(o->bp2, OomCountPair, &pairs)
+								: cd3BroadPhase_UpdatePairs(o->bp3, OomCountPair, &pairs));
+			}
+		}
+		for (int frame = 0; frame < 4; ++frame)
+		{
+			int moving[COUNT], count = 0;
+			OBox moved[COUNT];
+			for (int i = 0; i < COUNT; ++i)
+			{
+				if (ids[i] < 0)
+				{
+					continue;
+				}
+				cdReal step[3] = {R(&rng, -0.5, 0.5), R(&rng, -0.5, 0.5), R(&rng, -0.5, 0.5)};
+				bool teleport = TestRngNext(&rng) % 8 == 0;
+				moved[count] = teleport ? RandomBox(&rng, dim, scene.lo, scene.hi, scene.maxSize)
+										: Shift(boxes[i], dim, step);
+				moving[count++] = ids[i];
+			}
+			if (frame % 2 == 0)
+			{
+				OomMoveMany(o, count, moving, moved, changed);
+			}
+			else
+			{
+				for (int k = 0; k < count; ++k)
+				{
+					(void)(dim == 2 ? cd2BroadPhase_MoveProxy(o->bp2, moving[k], OracleTo2(moved[k]),
+															  cd2MakeVec(CD_R(0.0), CD_R(0.0)))
+									: cd3BroadPhase_MoveProxy(o->bp3, moving[k], OracleTo3(moved[k]),
+															  cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0))));
+				}
+			}
+			for (int k = 0, i = 0; i < COUNT; ++i)
+			{
+				boxes[i] = ids[i] >= 0 ? moved[k++] : boxes[i];
+			}
+			/* A few go and come back (a fresh id or a failed creation). */
+			for (int i = frame; i < COUNT; i += 17)
+			{
+				if (ids[i] >= 0)
+				{
+					dim == 2 ? cd2BroadPhase_DestroyProxy(o->bp2, ids[i])
+							 : cd3BroadPhase_DestroyProxy(o->bp3, ids[i]);
+				}
+				ids[i] = OomCreate(o, boxes[i], (uint64_t)i);
+			}
+			(void)(dim == 2 ? cd2BroadPhase_UpdatePairs(o->bp2, OomCountPair, &pairs)
+							: cd3BroadPhase_UpdatePairs(o->bp3, OomCountPair, &pairs));
+		}
+		/* Memory is back: the oracle learns the boxes the structure holds and checks it. */
+		*sawFailure = s_failedAllocations > 0;
+		s_allocationsLeft = LONG_MAX;
+		for (int i = 0; i < COUNT; ++i)
+		{
+			if (ids[i] < 0)
+			{
+				continue;
+			}
+			ok = ok && ids[i] < ORACLE_MAX_PROXIES && !o->alive[ids[i]];
+			if (!ok)
+			{
+				break;
+			}
+			o->alive[ids[i]] = true;
+			o->userData[ids[i]] = (uint64_t)i;
+			o->fat[ids[i]] = OracleGetFat(o, ids[i]);
+			o->idCapacity = ids[i] >= o->idCapacity ? ids[i] + 1 : o->idCapacity;
+		}
+		TEST_CHECKF(ok, "%s %dD, budget %ld: a proxy id repeats or is out of range",
+					cdBroadPhaseTypeName(type), dim, budget);
+		ok = ok && OracleValidate(o) && OracleFindAllPairs(o);
+		TEST_CHECKF(ok, "%s %dD, budget %ld: %s", cdBroadPhaseTypeName(type), dim, budget, o->error);
+	}
+	else
+	{
+		*sawFailure = true;
+		TEST_CHECKF(o->bp2 == NULL && o->bp3 == NULL, "%s %dD, budget %ld: failed Create left a broadphase",
+					cdBroadPhaseTypeName(type), dim, budget);
+	}
+	OracleFree(o);
+	TEST_CHECKF(s_liveAllocations == 0, "%s %dD, budget %ld: %d blocks leaked", cdBroadPhaseTypeName(type),
+				dim, budget, s_liveAllocations);
+	cdSetAllocator(NULL, NULL);
+	return ok && s_liveAllocations == 0;
+}
+
+/* Every structure with its allocations failing from the first one on, then one later each time,
+ * until a run needs no more than it is given. */
+static void TestOutOfMemory(void)
+{
+	Oracle* o = (Oracle*)malloc(sizeof(Oracle));
+	TEST_CHECK(o != NULL);
+	for (int dim = 2; dim <= 3 && o != NULL; ++dim)
+	{
+		for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
+		{
+			bool sawFailure = true;
+			long budget = 0;
+			for (; sawFailure && budget < 2000; ++budget)
+			{
+				if (!RunOutOfMemory(o, dim, (cdBroadPhaseType)type, budget, &sawFailure))
+				{
+					break;
+				}
+			}
+			TEST_CHECKF(!sawFailure, "%s %dD: still failing at budget %ld",
+						cdBroadPhaseTypeName((cdBroadPhaseType)type), dim, budget);
+		}
+	}
+	free(o);
+}
+
 int main(void)
 {
 	TEST_RUN(TestArguments);
@@ -791,5 +1006,6 @@ int main(void)
 	TEST_RUN(TestTeleportFrames);
 	TEST_RUN(TestTreeAfterManyRemovals);
 	TEST_RUN(TestBatchMoves);
+	TEST_RUN(TestOutOfMemory);
 	return TEST_SUMMARY();
 }

@@ -151,7 +151,8 @@ CD_API void cd3BroadPhase_Rebuild(cd3BroadPhase* broadPhase);
 CD_API cdBroadPhaseStats cd3BroadPhase_GetStats(const cd3BroadPhase* broadPhase);
 
 /* Checks every invariant of the structure (parent/child links, boxes containing children,
- * heights, free lists, sortedness, cell membership, ...); true when all hold. */
+ * heights, free lists, sortedness, cell membership, ...); true when all hold. Allocates nothing,
+ * except for a degenerate tree deeper than 254 levels (false if that memory is not there). */
 CD_API bool cd3BroadPhase_Validate(const cd3BroadPhase* broadPhase);
 
 /* ==== 2D (the same contract with 2D boxes) ================================================== */
