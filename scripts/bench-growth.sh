@@ -3,6 +3,8 @@
 # measured so that a shared, noisy machine does not decide it: each (scene, dimension, N) runs in
 # its own process, and the rounds alternate all eight cases. Interference only adds time, so the
 # fastest run of each case is the estimate of the quiet machine; medians are printed beside it.
+# Two tables: the whole frame (moves + UpdatePairs + the bench's pair-set sweep, the figure the
+# target is about) and the library's part of it (moves + UpdatePairs, the mean phases per frame).
 # Usage: scripts/bench-growth.sh [ROUNDS] (default 6; about a minute per round on 2 cores).
 # Needs collide_bench_broad built by scripts/bench-all.sh (build/bench). Nothing here is a test.
 set -euo pipefail
@@ -19,18 +21,30 @@ for round in $(seq 1 "$rounds"); do
 	for scene in mix moving; do
 		for dim in 2 3; do
 			for n in 100000 1000000; do
-				mean=$("$bench" --dim "$dim" --n "$n" --scene "$scene" --structures tree --frames 60 \
-					--warmup 20 --cpu-time | grep '^tree' | grep -o 'frames: mean [0-9.]*' | awk '{print $3}')
-				echo "$scene $dim $n $mean" >>"$samples"
-				echo "round $round/$rounds: ${dim}D $scene N=$n mean frame $mean ms" >&2
+				line=$("$bench" --dim "$dim" --n "$n" --scene "$scene" --structures tree --frames 60 \
+					--warmup 20 --cpu-time | grep '^tree')
+				mean=$(echo "$line" | grep -o 'frames: mean [0-9.]*' | awk '{print $3}')
+				library=$(echo "$line" | grep -o 'move [0-9.]* ms, UpdatePairs [0-9.]*' | awk '{print $2 + $5}')
+				echo "$scene $dim $n $mean $library" >>"$samples"
+				echo "round $round/$rounds: ${dim}D $scene N=$n mean frame $mean ms, library $library ms" >&2
 			done
 		done
 	done
 done
-# Per case: fastest and median of the rounds; growth = 1,000,000 over 100,000.
-sort -k1,1 -k2,2n -k3,3n -k4,4g "$samples" | awk '
-	function median(list, count,    sorted) { split(list, sorted, " "); return count % 2 ? sorted[(count + 1) / 2] : (sorted[count / 2] + sorted[count / 2 + 1]) / 2 }
-	{ key = $1 " " $2 " " $3; if (!(key in count)) { fastest[key] = $4; values[key] = $4 } else values[key] = values[key] " " $4; count[key]++ }
+# Per case: fastest and median of the rounds (column 4: frame, 5: library); growth = 1,000,000
+# over 100,000.
+table() {
+	local column=$1 title=$2
+	echo "$title"
+	awk -v column="$column" '
+	function median(list, count,    sorted, i, j, t) {
+		split(list, sorted, " ")
+		for (i = 2; i <= count; ++i) for (j = i; j > 1 && sorted[j - 1] + 0 > sorted[j] + 0; --j) { t = sorted[j]; sorted[j] = sorted[j - 1]; sorted[j - 1] = t }
+		return count % 2 ? sorted[(count + 1) / 2] : (sorted[count / 2] + sorted[count / 2 + 1]) / 2
+	}
+	{ key = $1 " " $2 " " $3; v = $column + 0
+	  if (!(key in count) || v < fastest[key]) fastest[key] = v
+	  values[key] = (key in count) ? values[key] " " v : v; count[key]++ }
 	END {
 		printf "| | 100,000 | 1,000,000 | growth, fastest runs (medians) |\n|---|---:|---:|---|\n"
 		split("moving mix", scenes, " ")
@@ -40,4 +54,8 @@ sort -k1,1 -k2,2n -k3,3n -k4,4g "$samples" | awk '
 			ms = median(values[small], count[small]); ml = median(values[large], count[large])
 			printf "| %dD %s | %.2f ms (%.2f) | %.1f ms (%.1f) | %.1fx (%.1fx) |\n", dim, scenes[s], fastest[small], ms, fastest[large], ml, fastest[large] / fastest[small], ml / ms
 		}
-	}'
+	}' "$samples"
+}
+table 4 "Mean frame (moves + UpdatePairs + the bench's pair-set sweep):"
+echo
+table 5 "The library's part (moves + UpdatePairs):"

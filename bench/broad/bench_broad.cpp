@@ -651,7 +651,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 					return r.dim == dim && r.kind == kind && r.framesRun <= 1;
 				}))
 			{
-				std::fprintf(file, "\n\\* one frame only: slower than 20 s per frame, stopped.\n");
+				std::fprintf(file, "\n\\* one frame only: slower per frame than the run's --max-frame-seconds (default 20 s), stopped.\n");
 			}
 		}
 	}
