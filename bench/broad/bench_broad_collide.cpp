@@ -191,10 +191,6 @@ class CollideAdapter : public Adapter
 			changed_.reset(new bool[movedCount]);
 			changedCapacity_ = movedCount;
 		}
-		for (size_t k = 0; k < movedCount; ++k)
-		{
-			ids_[k] = proxies_[size_t(scene.moved[k])];
-		}
 		if (dim_ == 3)
 		{
 			if (batch_)
@@ -204,8 +200,10 @@ class CollideAdapter : public Adapter
 				displacements3_.resize(movedCount);
 				for (size_t k = 0; k < movedCount; ++k)
 				{
+					PrefetchMovedInputs(scene, k, proxies_.data());
 					size_t i = size_t(scene.moved[k]);
 					const float* d = &scene.displacement[i * 3];
+					ids_[k] = proxies_[i];
 					boxes3_[k] = To3(scene.boxes[i]);
 					displacements3_[k] = cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])};
 				}
@@ -216,8 +214,10 @@ class CollideAdapter : public Adapter
 			{
 				for (size_t k = 0; k < movedCount; ++k)
 				{
+					PrefetchMovedInputs(scene, k, proxies_.data());
 					size_t i = size_t(scene.moved[k]);
 					const float* d = &scene.displacement[i * 3];
+					ids_[k] = proxies_[i];
 					changed_[k] = cd3BroadPhase_MoveProxy(bp3_, ids_[k], To3(scene.boxes[i]),
 														  cd3Vec{cdReal(d[0]), cdReal(d[1]), cdReal(d[2])});
 				}
@@ -231,8 +231,10 @@ class CollideAdapter : public Adapter
 				displacements2_.resize(movedCount);
 				for (size_t k = 0; k < movedCount; ++k)
 				{
+					PrefetchMovedInputs(scene, k, proxies_.data());
 					size_t i = size_t(scene.moved[k]);
 					const float* d = &scene.displacement[i * 3];
+					ids_[k] = proxies_[i];
 					boxes2_[k] = To2(scene.boxes[i]);
 					displacements2_[k] = cd2Vec{cdReal(d[0]), cdReal(d[1])};
 				}
@@ -243,8 +245,10 @@ class CollideAdapter : public Adapter
 			{
 				for (size_t k = 0; k < movedCount; ++k)
 				{
+					PrefetchMovedInputs(scene, k, proxies_.data());
 					size_t i = size_t(scene.moved[k]);
 					const float* d = &scene.displacement[i * 3];
+					ids_[k] = proxies_[i];
 					changed_[k] = cd2BroadPhase_MoveProxy(bp2_, ids_[k], To2(scene.boxes[i]),
 														  cd2Vec{cdReal(d[0]), cdReal(d[1])});
 				}

@@ -137,10 +137,12 @@ class BulletAdapter : public Adapter
 	}
 	size_t UpdateAndCountPairs(const Scene& scene) override
 	{
-		for (int i : scene.moved)
+		for (size_t k = 0; k < scene.moved.count; ++k)
 		{
-			const Box& b = scene.boxes[size_t(i)];
-			broadphase_->setAabb(proxies_[size_t(i)], Min3(b), Max3(b), &dispatcher_);
+			PrefetchMovedInputs(scene, k, proxies_.data());
+			size_t i = size_t(scene.moved[k]);
+			const Box& b = scene.boxes[i];
+			broadphase_->setAabb(proxies_[i], Min3(b), Max3(b), &dispatcher_);
 		}
 		broadphase_->calculateOverlappingPairs(&dispatcher_);
 		// The pair cache holds every pair whose (fat / quantized) boxes overlapped when last
@@ -277,10 +279,12 @@ class FclAdapter : public Adapter
 	size_t UpdateAndCountPairs(const Scene& scene) override
 	{
 		updated_.clear();
-		for (int i : scene.moved)
+		for (size_t k = 0; k < scene.moved.count; ++k)
 		{
-			FclObject* object = objects_[size_t(i)];
-			object->setTranslation(FclCenter(scene.boxes[size_t(i)]));
+			PrefetchMovedInputs(scene, k, objects_.data());
+			size_t i = size_t(scene.moved[k]);
+			FclObject* object = objects_[i];
+			object->setTranslation(FclCenter(scene.boxes[i]));
 			object->computeAABB();
 			updated_.push_back(object);
 		}
@@ -344,8 +348,10 @@ class Box2dAdapter : public Adapter
 	}
 	size_t UpdateAndCountPairs(const Scene& scene) override
 	{
-		for (int i : scene.moved)
+		for (size_t k = 0; k < scene.moved.count; ++k)
 		{
+			PrefetchMovedInputs(scene, k, proxies_.data());
+			int i = scene.moved[k];
 			const float* d = &scene.displacement[size_t(i) * 3];
 			int32 proxy = proxies_[size_t(i)];
 			b2AABB before = broadphase_.GetFatAABB(proxy);
