@@ -133,7 +133,7 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		/* Checks every invariant, including agreement with the proxy table. */                              \
 		bool (*validate)(const void* self);                                                                  \
 		/* Optional cache hint: starts loading what moveProxy(proxyId) will read first (stage 0), then,      \
-		 * called again a few moves later each time, what it reads next (stages 1 and 2). The proxy's        \
+		 * called again a few moves later each time, what it reads next (stages 1 to 4). The proxy's         \
 		 * table entries were requested a few moves before stage 0. */                                       \
 		void (*prefetchMove)(const void* self, int proxyId, int stage);                                      \
 		/* Optional: the box query of each proxyIds[i] with its own fat box, calling fcn(proxyIds[i],        \
