@@ -911,11 +911,20 @@ static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budge
 			{
 				for (int k = 0; k < count; ++k)
 				{
-					(void)(dim == 2 ? cd2BroadPhase_MoveProxy(o->bp2, moving[k], OracleTo2(moved[k]),
-															  cd2MakeVec(CD_R(0.0), CD_R(0.0)))
-									: cd3BroadPhase_MoveProxy(o->bp3, moving[k], OracleTo3(moved[k]),
-															  cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0))));
+					changed[k] = dim == 2
+									 ? cd2BroadPhase_MoveProxy(o->bp2, moving[k], OracleTo2(moved[k]),
+															   cd2MakeVec(CD_R(0.0), CD_R(0.0)))
+									 : cd3BroadPhase_MoveProxy(o->bp3, moving[k], OracleTo3(moved[k]),
+															   cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)));
 				}
+			}
+			/* A move reported done holds the new box (one that failed kept the old fat box, which
+			 * the caller learns from the false it got). */
+			for (int k = 0; k < count && ok; ++k)
+			{
+				ok = !changed[k] || OracleContains(o, OracleGetFat(o, moving[k]), moved[k]);
+				TEST_CHECKF(ok, "%s %dD, budget %ld, frame %d: proxy %d reported moved without its new box",
+							cdBroadPhaseTypeName(type), dim, budget, frame, moving[k]);
 			}
 			for (int k = 0, i = 0; i < COUNT; ++i)
 			{
