@@ -114,4 +114,45 @@ static inline int TestRngInt(TestRng* rng, int count)
 	return (int)(TestRngNext(rng) % (uint64_t)count);
 }
 
+/* ---- an allocator that runs out, for out-of-memory tests ---------------------------------------- */
+/* Install with cdSetAllocator(TestBudgetAlloc, TestBudgetFree) after TestBudgetReset(n): the
+ * first n allocations succeed, every later one fails (counted in `failed`); `live` counts the
+ * blocks not yet freed, so a leak shows as live != 0 once everything is destroyed. */
+typedef struct TestBudget
+{
+	long left;
+	int failed;
+	int live;
+} TestBudget;
+static TestBudget g_testBudget;
+
+static inline void TestBudgetReset(long allocations)
+{
+	g_testBudget.left = allocations;
+	g_testBudget.failed = 0;
+	g_testBudget.live = 0;
+}
+
+static inline void* TestBudgetAlloc(size_t size, size_t alignment)
+{
+	(void)alignment; /* collide asks for 32 at most */
+	if (g_testBudget.left <= 0)
+	{
+		++g_testBudget.failed;
+		return NULL;
+	}
+	--g_testBudget.left;
+	++g_testBudget.live;
+	return aligned_alloc(32, (size + 31u) & ~(size_t)31u);
+}
+
+static inline void TestBudgetFree(void* memory)
+{
+	if (memory != NULL)
+	{
+		--g_testBudget.live;
+	}
+	free(memory);
+}
+
 #endif

@@ -785,31 +785,6 @@ static void TestBatchMoves(void)
 }
 
 /* ---- allocation failures ------------------------------------------------------------------------ */
-static long s_allocationsLeft = LONG_MAX;
-static int s_failedAllocations = 0;
-static int s_liveAllocations = 0;
-
-static void* FailingAlloc(size_t size, size_t alignment)
-{
-	(void)alignment;
-	if (s_allocationsLeft <= 0)
-	{
-		++s_failedAllocations;
-		return NULL;
-	}
-	--s_allocationsLeft;
-	++s_liveAllocations;
-	return aligned_alloc(32, (size + 31u) & ~(size_t)31u);
-}
-
-static void CountingFree(void* memory)
-{
-	if (memory != NULL)
-	{
-		--s_liveAllocations;
-	}
-	free(memory);
-}
 
 /* The calls the run below makes, for either dimension. */
 static int OomCreate(Oracle* o, OBox box, uint64_t userData)
@@ -863,10 +838,8 @@ static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budge
 	{
 		COUNT = 160
 	};
-	s_allocationsLeft = budget;
-	s_failedAllocations = 0;
-	s_liveAllocations = 0;
-	cdSetAllocator(FailingAlloc, CountingFree);
+	TestBudgetReset(budget);
+	cdSetAllocator(TestBudgetAlloc, TestBudgetFree);
 	bool created = OracleInit(o, dim, type, CD_R(0.1), CD_R(4.0));
 	bool ok = true;
 	if (created)
@@ -944,8 +917,8 @@ static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budge
 							: cd3BroadPhase_UpdatePairs(o->bp3, OomCountPair, &pairs));
 		}
 		/* Memory is back: the oracle learns the boxes the structure holds and checks it. */
-		*sawFailure = s_failedAllocations > 0;
-		s_allocationsLeft = LONG_MAX;
+		*sawFailure = g_testBudget.failed > 0;
+		g_testBudget.left = LONG_MAX;
 		for (int i = 0; i < COUNT; ++i)
 		{
 			if (ids[i] < 0)
@@ -974,10 +947,10 @@ static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budge
 					cdBroadPhaseTypeName(type), dim, budget);
 	}
 	OracleFree(o);
-	TEST_CHECKF(s_liveAllocations == 0, "%s %dD, budget %ld: %d blocks leaked", cdBroadPhaseTypeName(type),
-				dim, budget, s_liveAllocations);
+	TEST_CHECKF(g_testBudget.live == 0, "%s %dD, budget %ld: %d blocks leaked", cdBroadPhaseTypeName(type),
+				dim, budget, g_testBudget.live);
 	cdSetAllocator(NULL, NULL);
-	return ok && s_liveAllocations == 0;
+	return ok && g_testBudget.live == 0;
 }
 
 /* Every structure with its allocations failing from the first one on, then one later each time,

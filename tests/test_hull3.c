@@ -1044,29 +1044,6 @@ static void TestColumnsAgreeWithVertices(void)
 }
 
 /* ---- allocation failures ------------------------------------------------------------------------- */
-static int g_allocationsLeft = 0;
-static int g_liveAllocations = 0;
-
-static void* FailingAlloc(size_t size, size_t alignment)
-{
-	if (g_allocationsLeft-- <= 0)
-	{
-		return NULL;
-	}
-	++g_liveAllocations;
-	(void)alignment;
-	return aligned_alloc(32, (size + 31u) & ~(size_t)31u);
-}
-
-static void CountingFree(void* memory)
-{
-	if (memory != NULL)
-	{
-		--g_liveAllocations;
-	}
-	free(memory);
-}
-
 static void TestOutOfMemory(void)
 {
 	TestRng rng = TestRngMake(0x4e11009u);
@@ -1078,16 +1055,15 @@ static void TestOutOfMemory(void)
 	bool succeeded = false;
 	for (int budget = 0; budget < 200 && !succeeded; ++budget)
 	{
-		g_allocationsLeft = budget;
-		g_liveAllocations = 0;
-		cdSetAllocator(FailingAlloc, CountingFree);
+		TestBudgetReset(budget);
+		cdSetAllocator(TestBudgetAlloc, TestBudgetFree);
 		cd3Hull* hull = NULL;
 		cdResult result = cd3ComputeHull(points, 100, &hull);
 		succeeded = result == CD_OK;
 		TEST_CHECKF(result == CD_OK || (result == CD_ERROR_OUT_OF_MEMORY && hull == NULL), "budget %d: %s",
 					budget, cdResultString(result));
 		cd3DestroyHull(hull);
-		TEST_CHECKF(g_liveAllocations == 0, "budget %d: %d allocations leaked", budget, g_liveAllocations);
+		TEST_CHECKF(g_testBudget.live == 0, "budget %d: %d allocations leaked", budget, g_testBudget.live);
 		cdSetAllocator(NULL, NULL);
 	}
 	TEST_CHECK(succeeded);
