@@ -121,6 +121,7 @@ struct Options
 	int warmup = 30; // untimed frames first, so that fat boxes reach their steady state
 	double maxFrameSeconds = 20.0;
 	std::string svgPath, csvPath, markdownPath;
+	std::string frameTimesPath;			 // appends each row's timed frames, one line per row
 	std::vector<std::string> mergePaths; // earlier --csv outputs to include in the SVG and CSV
 };
 
@@ -152,6 +153,7 @@ void Usage()
 		"[--max-frame-seconds S]\n"
 		"                           [--cpu-time] [--quick] [--svg file] [--csv file] [--markdown file] "
 		"[--merge-csv a.csv,b.csv]\n"
+		"                           [--frame-times file (appends every timed frame of each row)]\n"
 		"structures: tree sap grid octree (tree-inc sap-inc: created one by one; tree-single grid-single: "
 		"moved by one MoveProxy call per box instead of MoveProxies)");
 	for (const std::string& name : PeerNames())
@@ -193,6 +195,26 @@ double Median(std::vector<double> values)
 
 // Per dimension and structure: the largest N run so far and its time per frame (ms).
 std::map<std::string, std::pair<int, double>> gSlowest;
+
+// One line per row: "dim n scene structure" and then every timed frame in ms. The scene is
+// deterministic, so frame k does the same work in every run: the fastest of frame k over several
+// runs estimates its cost on a quiet machine, frame by frame (scripts/bench-growth.sh).
+void AppendFrameTimes(const std::string& path, const Result& result, const std::vector<double>& frameSeconds)
+{
+	FILE* file = std::fopen(path.c_str(), "a");
+	if (file == nullptr)
+	{
+		std::fprintf(stderr, "cannot append to %s\n", path.c_str());
+		std::exit(2);
+	}
+	std::fprintf(file, "%d %d %s %s", result.dim, result.n, SceneName(result.kind), result.name.c_str());
+	for (double seconds : frameSeconds)
+	{
+		std::fprintf(file, " %.4f", 1e3 * seconds);
+	}
+	std::fprintf(file, "\n");
+	std::fclose(file);
+}
 
 bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector<Result>& results)
 {
@@ -283,6 +305,10 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 			}
 		}
 		result.framesRun = int(frameSeconds.size());
+		if (!options.frameTimesPath.empty())
+		{
+			AppendFrameTimes(options.frameTimesPath, result, frameSeconds);
+		}
 		result.frameMs = 1e3 * Median(frameSeconds);
 		if (!frameSeconds.empty())
 		{
@@ -651,7 +677,8 @@ void WriteMarkdown(const std::string& path, const std::vector<Result>& results)
 					return r.dim == dim && r.kind == kind && r.framesRun <= 1;
 				}))
 			{
-				std::fprintf(file, "\n\\* one frame only: slower per frame than the run's --max-frame-seconds (default 20 s), stopped.\n");
+				std::fprintf(file, "\n\\* one frame only: slower per frame than the run's "
+								   "--max-frame-seconds (default 20 s), stopped.\n");
 			}
 		}
 	}
@@ -861,6 +888,10 @@ int main(int argc, char** argv)
 		else if (arg == "--csv")
 		{
 			options.csvPath = value();
+		}
+		else if (arg == "--frame-times")
+		{
+			options.frameTimesPath = value();
 		}
 		else if (arg == "--markdown")
 		{
