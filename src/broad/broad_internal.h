@@ -114,7 +114,8 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		void (*destroy)(void* self);                                                                         \
 		bool (*insertProxy)(void* self, int proxyId);                                                        \
 		void (*removeProxy)(void* self, int proxyId);                                                        \
-		bool (*moveProxy)(void* self, int proxyId, AABB oldFatBox);                                          \
+		/* oldFatBox: the box the backend holds for the proxy (a backend may know it already). */            \
+		bool (*moveProxy)(void* self, int proxyId, const AABB* oldFatBox);                                   \
 		/* Calls fcn once per proxy whose fat box overlaps box (closed) until fcn returns false. */          \
 		void (*query)(const void* self, AABB box, cdBroadIdFcn* fcn, void* context);                         \
 		/* Calls fcn for proxies whose fat box the ray (t in [0, maxFraction]) may meet (conservative:       \
