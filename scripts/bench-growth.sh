@@ -7,9 +7,9 @@
 # target is about) and the library's part of it (moves + UpdatePairs, the mean phases per frame).
 # A third estimates the quiet machine frame by frame instead of run by run: the scene is
 # deterministic, so frame k does the same work in every round, and the mean over k of frame k's
-# fastest round removes interference from each frame alike. The fastest whole run favours the
-# short case: a 100,000-box run (0.2 s of timed frames) finds a quiet spell far more often than a
-# 1,000,000-box run (3 s) does.
+# fastest round removes interference from each frame alike. The fastest whole run could favour the
+# short case (a 100,000-box run, 0.2 s of timed frames, finds a quiet spell more often than a
+# 1,000,000-box run, 3 s); on the Xeon of docs/BROADPHASE.md the two agreed within 1-3%.
 # Usage: scripts/bench-growth.sh [ROUNDS] (default 6; about a minute per round on 2 cores).
 # Needs collide_bench_broad built by scripts/bench-all.sh (build/bench). Nothing here is a test.
 set -euo pipefail
