@@ -37,12 +37,10 @@ for round in $(seq 1 "$rounds"); do
 		done
 	done
 done
-# Per case: fastest and median of the rounds (column 4: frame, 5: library); growth = 1,000,000
-# over 100,000.
-table() {
-	local column=$1 title=$2
-	echo "$title"
-	awk -v column="$column" '
+# Per case (one line "scene dim N estimate [median]"): the fastest and the median of the rounds
+# (column 4: frame, 5: library).
+rounds_estimate() {
+	awk -v column="$1" '
 	function median(list, count,    sorted, i, j, t) {
 		split(list, sorted, " ")
 		for (i = 2; i <= count; ++i) for (j = i; j > 1 && sorted[j - 1] + 0 > sorted[j] + 0; --j) { t = sorted[j]; sorted[j] = sorted[j - 1]; sorted[j - 1] = t }
@@ -51,37 +49,43 @@ table() {
 	{ key = $1 " " $2 " " $3; v = $column + 0
 	  if (!(key in count) || v < fastest[key]) fastest[key] = v
 	  values[key] = (key in count) ? values[key] " " v : v; count[key]++ }
+	END { for (key in count) print key, fastest[key], median(values[key], count[key]) }' "$samples"
+}
+# Per case: the mean over the frames of each frame's fastest round (--frame-times lines are
+# "dim N scene structure t1 t2 ...").
+frames_estimate() {
+	awk '
+	{ key = $3 " " $1 " " $2
+	  for (f = 5; f <= NF; ++f) { k = key SUBSEP f; if (!(k in fastest) || $f + 0 < fastest[k]) fastest[k] = $f + 0 }
+	  if (!(key in last) || NF > last[key]) last[key] = NF }
 	END {
-		printf "| | 100,000 | 1,000,000 | growth, fastest runs (medians) |\n|---|---:|---:|---|\n"
+		for (key in last) {
+			sum = 0
+			for (f = 5; f <= last[key]; ++f) sum += fastest[key SUBSEP f]
+			print key, sum / (last[key] - 4)
+		}
+	}' "$frames"
+}
+# Reads estimate lines; prints growth = 1,000,000 over 100,000, medians in brackets when given.
+growth_table() {
+	echo "$1"
+	awk '
+	{ key = $1 " " $2 " " $3; estimate[key] = $4; if (NF > 4) median[key] = $5 }
+	END {
+		printf "| | 100,000 | 1,000,000 | growth%s |\n|---|---:|---:|---|\n", length(median) ? ", fastest runs (medians)" : ""
 		split("moving mix", scenes, " ")
 		for (s = 1; s <= 2; ++s) for (dim = 2; dim <= 3; ++dim) {
 			small = scenes[s] " " dim " 100000"; large = scenes[s] " " dim " 1000000"
-			if (!(small in count) || !(large in count)) continue
-			ms = median(values[small], count[small]); ml = median(values[large], count[large])
-			printf "| %dD %s | %.2f ms (%.2f) | %.1f ms (%.1f) | %.1fx (%.1fx) |\n", dim, scenes[s], fastest[small], ms, fastest[large], ml, fastest[large] / fastest[small], ml / ms
+			if (!(small in estimate) || !(large in estimate)) continue
+			if (small in median)
+				printf "| %dD %s | %.2f ms (%.2f) | %.1f ms (%.1f) | %.1fx (%.1fx) |\n", dim, scenes[s], estimate[small], median[small], estimate[large], median[large], estimate[large] / estimate[small], median[large] / median[small]
+			else
+				printf "| %dD %s | %.2f ms | %.1f ms | %.1fx |\n", dim, scenes[s], estimate[small], estimate[large], estimate[large] / estimate[small]
 		}
-	}' "$samples"
+	}'
 }
-table 4 "Mean frame (moves + UpdatePairs + the bench's pair-set sweep):"
+rounds_estimate 4 | growth_table "Mean frame (moves + UpdatePairs + the bench's pair-set sweep):"
 echo
-table 5 "The library's part (moves + UpdatePairs):"
+rounds_estimate 5 | growth_table "The library's part (moves + UpdatePairs):"
 echo
-echo "Mean over the frames of each frame's fastest round (whole frame; see the top of this script):"
-awk '
-{ key = $3 " " $1 " " $2
-  for (f = 5; f <= NF; ++f) { k = key SUBSEP f; if (!(k in fastest) || $f + 0 < fastest[k]) fastest[k] = $f + 0 }
-  if (!(key in last) || NF > last[key]) last[key] = NF }
-END {
-	printf "| | 100,000 | 1,000,000 | growth |\n|---|---:|---:|---|\n"
-	split("moving mix", scenes, " ")
-	for (s = 1; s <= 2; ++s) for (dim = 2; dim <= 3; ++dim) {
-		small = scenes[s] " " dim " 100000"; large = scenes[s] " " dim " 1000000"
-		if (!(small in last) || !(large in last)) continue
-		for (which = 0; which < 2; ++which) {
-			key = which ? large : small; sum = 0
-			for (f = 5; f <= last[key]; ++f) sum += fastest[key SUBSEP f]
-			mean[which] = sum / (last[key] - 4)
-		}
-		printf "| %dD %s | %.2f ms | %.1f ms | %.1fx |\n", dim, scenes[s], mean[0], mean[1], mean[1] / mean[0]
-	}
-}' "$frames"
+frames_estimate | growth_table "Mean over the frames of each frame's fastest round (whole frame; see the top of this script):"
