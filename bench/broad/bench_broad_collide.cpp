@@ -365,10 +365,13 @@ class CollideAdapter : public Adapter
 		std::string extra = text;
 		// On a shared machine a frame's time only grows with interference: each phase's fastest
 		// frame compares two builds more steadily than the means do.
-		std::snprintf(text, sizeof text,
-					  " | fastest frame per phase: move %.2f ms, UpdatePairs %.2f ms, sweep %.2f ms",
-					  1e3 * fastestMove_, 1e3 * fastestPairs_, 1e3 * fastestSweep_);
-		extra += text;
+		if (frames_ > 0)
+		{
+			std::snprintf(text, sizeof text,
+						  " | fastest frame per phase: move %.2f ms, UpdatePairs %.2f ms, sweep %.2f ms",
+						  1e3 * fastestMove_, 1e3 * fastestPairs_, 1e3 * fastestSweep_);
+			extra += text;
+		}
 #ifdef CD_BROAD_COUNT_OPS
 		if (ops_[0] > 0 || ops_[4] > 0)
 		{
