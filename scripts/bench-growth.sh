@@ -78,9 +78,9 @@ growth_table() {
 			small = scenes[s] " " dim " 100000"; large = scenes[s] " " dim " 1000000"
 			if (!(small in estimate) || !(large in estimate)) continue
 			if (small in median)
-				printf "| %dD %s | %.2f ms (%.2f) | %.1f ms (%.1f) | %.1fx (%.1fx) |\n", dim, scenes[s], estimate[small], median[small], estimate[large], median[large], estimate[large] / estimate[small], median[large] / median[small]
+				printf "| %dD %s | %.2f ms (%.2f) | %.1f ms (%.1f) | %.2fx (%.2fx) |\n", dim, scenes[s], estimate[small], median[small], estimate[large], median[large], estimate[large] / estimate[small], median[large] / median[small]
 			else
-				printf "| %dD %s | %.2f ms | %.1f ms | %.1fx |\n", dim, scenes[s], estimate[small], estimate[large], estimate[large] / estimate[small]
+				printf "| %dD %s | %.2f ms | %.1f ms | %.2fx |\n", dim, scenes[s], estimate[small], estimate[large], estimate[large] / estimate[small]
 		}
 	}'
 }
