@@ -352,15 +352,37 @@ static bool reservePairs(BroadPair** pairs, size_t* capacity, size_t needed)
 
 void broadPairListAdd(BroadPairList* list, int a, int b)
 {
+	if (a < 0 || b < 0 || a >= list->boxCount || b >= list->boxCount)
+	{
+		list->failed = true; /* not a box of the scene: the counts can no longer be right */
+		return;
+	}
 	if (!reservePairs(&list->fresh, &list->freshCapacity, list->freshCount + 1))
 	{
 		list->failed = true;
 		return;
 	}
 	list->fresh[list->freshCount].a = a;
-	list->fresh[list->freshCount].b = b;
-	list->fresh[list->freshCount].overlapping = 0;
+	list->fresh[list->freshCount].bOrOverlap = b;
 	++list->freshCount;
+}
+
+static int pairSecond(BroadPair pair)
+{
+	return pair.bOrOverlap < 0 ? ~pair.bOrOverlap : pair.bOrOverlap;
+}
+
+static bool pairOverlapping(BroadPair pair)
+{
+	return pair.bOrOverlap < 0;
+}
+
+/* The pair with its overlap bit set to the comparison of its two tight boxes. */
+static BroadPair comparePair(BroadPair pair, const BroadBox* boxes)
+{
+	int b = pairSecond(pair);
+	pair.bOrOverlap = broadBoxesOverlap(&boxes[pair.a], &boxes[b]) ? ~b : b;
+	return pair;
 }
 
 /* Whether a kept pair's boxes are compared again: flags are the pair's two boxes' flags. */
@@ -380,7 +402,7 @@ static void prefetchPairBoxes(const BroadBox* boxes, BroadPair pair)
 {
 #if defined(__GNUC__) || defined(__clang__)
 	__builtin_prefetch(&boxes[pair.a]);
-	__builtin_prefetch(&boxes[pair.b]);
+	__builtin_prefetch(&boxes[pairSecond(pair)]);
 #else
 	(void)boxes;
 	(void)pair;
@@ -395,22 +417,22 @@ size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 		if (k + PAIR_BOX_AHEAD < list->pairCount)
 		{
 			BroadPair ahead = list->pairs[k + PAIR_BOX_AHEAD];
-			if (pairNeedsCompare(list, list->flags[ahead.a] | list->flags[ahead.b]))
+			if (pairNeedsCompare(list, list->flags[ahead.a] | list->flags[pairSecond(ahead)]))
 			{
 				prefetchPairBoxes(boxes, ahead);
 			}
 		}
 		BroadPair pair = list->pairs[k];
-		int flags = list->flags[pair.a] | list->flags[pair.b];
+		int flags = list->flags[pair.a] | list->flags[pairSecond(pair)];
 		if (flags & BROAD_PAIR_MOVED)
 		{
 			continue;
 		}
 		if (pairNeedsCompare(list, flags))
 		{
-			pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
+			pair = comparePair(pair, boxes);
 		}
-		count += pair.overlapping ? 1u : 0u;
+		count += pairOverlapping(pair) ? 1u : 0u;
 		list->pairs[kept++] = pair;
 	}
 	list->pairCount = kept;
@@ -426,9 +448,8 @@ size_t broadPairListEndFrame(BroadPairList* list, const BroadBox* boxes)
 			{
 				prefetchPairBoxes(boxes, list->fresh[k + PAIR_BOX_AHEAD]);
 			}
-			BroadPair pair = list->fresh[k];
-			pair.overlapping = broadBoxesOverlap(&boxes[pair.a], &boxes[pair.b]);
-			count += pair.overlapping ? 1u : 0u;
+			BroadPair pair = comparePair(list->fresh[k], boxes);
+			count += pairOverlapping(pair) ? 1u : 0u;
 			list->pairs[list->pairCount++] = pair;
 		}
 	}
