@@ -132,6 +132,7 @@ void broadPairListMarkMoved(BroadPairList* list, int index);
  * frame: the other kept pairs then reuse their last comparison. In a frame without marks every
  * pair is compared (cheaper when most boxes changed: no marks to set). */
 void broadPairListMarkChanged(BroadPairList* list, int index);
+/* A reported pair of the scene's box indices; an index outside the scene marks the list failed. */
 void broadPairListAdd(BroadPairList* list, int a, int b);
 /* Drops the pairs with a moved side, appends the reported ones and forgets the marks. Returns
  * the number of pairs whose tight boxes overlap (SIZE_MAX once memory has run out). One linear
