@@ -42,6 +42,7 @@ static BroadBox grow(BroadBox box, float margin)
 	return box;
 }
 
+/* The oracle's own box test, written apart from broadBoxesOverlap: the list under test uses that one. */
 static bool overlap(const BroadBox* a, const BroadBox* b)
 {
 	for (int axis = 0; axis < 3; ++axis)
