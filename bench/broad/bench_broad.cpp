@@ -428,6 +428,12 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 			}
 		}
 		result.extra = adapter->Extra();
+		if (options.evictMegabytes > 0)
+		{
+			// (The CSV rows say it too: such frames are not comparable with warm ones.)
+			result.extra += " (caches evicted before each frame: --evict-mb " +
+							std::to_string(options.evictMegabytes) + ")";
+		}
 		if (result.framesRun < options.frames)
 		{
 			result.extra += " (stopped after " + std::to_string(result.framesRun) + " frames: too slow)";
