@@ -37,7 +37,7 @@ export async function main(): Promise<number> {
 
   const hull = Hull.fromPoints([{ x: 0, y: 0, z: 0 }, { x: 1, y: 0, z: 0 }, { x: 0, y: 1, z: 0 }, { x: 0, y: 0, z: 1 }]);
   const hull2 = Hull.box({ x: 1, y: 1, z: 1 });
-  const hull3 = Hull.cylinder(1, 0.5, 12), hull4 = Hull.cone(1, 0.5), hull5 = Hull.fromPoints(new Float32Array(12));
+  const hull3 = Hull.cylinder(1, 0.5, 12), hull4 = Hull.cone(1, 0.5), hull5 = Hull.fromPoints(new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]));
   const verts: Float32Array = hull.vertices;
   const shapes3: Shape3[] = [
     sphere({ x: 0, y: 0, z: 0 }, 1), capsule3({ x: 0, y: 0, z: 0 }, { x: 1, y: 0, z: 0 }, 0.2),
@@ -91,9 +91,12 @@ export async function main(): Promise<number> {
     names.length + MAX_POLYGON_VERTICES;
 }
 
-// @ts-expect-error a 3D shape is not a 2D shape
-overlap2(sphere({ x: 0, y: 0, z: 0 }, 1), circle({ x: 0, y: 0 }, 1));
-// @ts-expect-error the radius is a number
-circle({ x: 0, y: 0 }, '1');
-// @ts-expect-error ids must be an Int32Array
-new BroadPhase2().moveProxies([1, 2], new Float32Array(8));
+// Calls that must not type-check (never run).
+export function typeErrors(): void {
+  // @ts-expect-error a 3D shape is not a 2D shape
+  overlap2(sphere({ x: 0, y: 0, z: 0 }, 1), circle({ x: 0, y: 0 }, 1));
+  // @ts-expect-error the radius is a number
+  circle({ x: 0, y: 0 }, '1');
+  // @ts-expect-error ids must be an Int32Array
+  new BroadPhase2().moveProxies([1, 2], new Float32Array(8));
+}
