@@ -11,7 +11,7 @@ const opt = (name, dflt) => { const i = args.indexOf(`--${name}`); return i >= 0
 const N = opt('n', 10000);
 const SAMPLES = opt('samples', 15);
 
-await c.init();
+await c.init({ simd: !args.includes('--scalar') && c.simdSupported() });
 
 // ---- the texts' functions, as written there (touching made inclusive to match collide) ----
 function isPointInsideAABB(point, box) {
@@ -76,7 +76,7 @@ const kinds = [
 ];
 const packed = { points: wPoints, boxes: wBoxes, spheres: wSpheres };
 
-console.log(`collide batch queries, node ${process.version}, wasm ${c.simdSupported() ? 'SIMD' : 'scalar'}, n = ${N}, median of ${SAMPLES} samples of CPU time (microseconds per pass over all n)`);
+console.log(`collide batch queries, node ${process.version}, wasm ${c.isSimdBuild() ? 'SIMD' : 'scalar'} build, n = ${N}, median of ${SAMPLES} samples of CPU time (microseconds per pass over all n)`);
 console.log('| query | hits | plain JS (objects) | collide, WasmArray | collide, Float32Array (copied in) | collide, array of objects | JS / collide WasmArray |');
 console.log('|---|---|---|---|---|---|---|');
 for (const [name, objs, key, q, jsTest, batch] of kinds) {

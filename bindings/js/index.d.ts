@@ -12,6 +12,8 @@ export interface InitOptions {
 export function init(options?: InitOptions): Promise<void>;
 /** True when this engine runs wasm SIMD (the build init() then picks). */
 export function simdSupported(): boolean;
+/** True when the loaded module is the SIMD build, false for the scalar build (after init()). */
+export function isSimdBuild(): boolean;
 
 // ---- values --------------------------------------------------------------------------------------
 

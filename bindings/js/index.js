@@ -1,6 +1,6 @@
 // collide for JavaScript: the package's main module. `await init()` once; everything else is
 // synchronous. Modules per area live in lib/; the 2D world (World2) will join as lib/world2.js.
-export { init, simdSupported } from './lib/wasm.js';
+export { init, simdSupported, isSimdBuild } from './lib/wasm.js';
 export { WasmArray } from './lib/memory.js';
 export {
   circle, capsule2, aabb2, box2, polygon, segment2, MAX_POLYGON_VERTICES, SHAPE2_TYPES,

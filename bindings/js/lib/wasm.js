@@ -49,6 +49,12 @@ export function requireInit() {
   if (exports === null) throw new Error('collide: call `await init()` before using the library');
 }
 
+/** True when the module init() loaded is the SIMD build (false: the scalar build). */
+export function isSimdBuild() {
+  requireInit();
+  return simd;
+}
+
 export function simdSupported() {
   try {
     return typeof WebAssembly === 'object' && WebAssembly.validate(SIMD_PROBE);
@@ -125,7 +131,7 @@ export function init(options = {}) {
     const instance = await WebAssembly.instantiate(module, stubImports(module));
     exports = instance.exports;
     memory = exports.memory;
-    simd = useSimd && options.wasm === undefined ? true : useSimd;
+    simd = useSimd;
     views();
     S = exports.scratch() >> 2;
     if (exports.isDouble() !== 0) throw new Error('collide: the wasm build must use float');

@@ -622,6 +622,7 @@ static const int g_batchStride[BATCH_KIND_COUNT] = {3, 3, 6, 6, 4, 4, 2, 2, 4, 4
 static int anyNonFinite(const float* data, size_t count)
 {
 	uint32_t largest = 0;
+#pragma clang loop vectorize_width(4) interleave_count(4)
 	for (size_t i = 0; i < count; ++i)
 	{
 		uint32_t bits;

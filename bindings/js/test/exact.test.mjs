@@ -178,6 +178,7 @@ test('the 2D broadphase matches brute force on fat boxes; WasmArray views are re
 const queriesScript = `
 import * as c from 'collide';
 await c.init({ simd: process.argv[2] === 'simd' });
+if (c.isSimdBuild() !== (process.argv[2] === 'simd')) throw new Error('wrong build loaded');
 const out = [];
 let s = 1;
 const r = () => ((s = (s * 16807) % 2147483647) / 2147483647) * 4 - 2;

@@ -1,7 +1,7 @@
 // Typed usage of the whole API, checked by `tsc --noEmit` (test/types.test.mjs): a call with a
 // wrong type anywhere here fails the test suite.
 import {
-  init, simdSupported, circle, capsule2, aabb2, box2, polygon, segment2, sphere, capsule3, aabb3, box3, triangle,
+  init, simdSupported, isSimdBuild, circle, capsule2, aabb2, box2, polygon, segment2, sphere, capsule3, aabb3, box3, triangle,
   plane, segment3, hullShape, Hull, overlap2, containsPoint2, closestPoint2, raycast2, distance2, manifold2,
   shapeCast2, timeOfImpact2, computeAabb2, computeMass2, overlap3, containsPoint3, closestPoint3, raycast3,
   distance3, manifold3, shapeCast3, timeOfImpact3, computeAabb3, computeMass3, isPointInsideAABB, intersectAABB,
@@ -15,6 +15,7 @@ import type { Shape2, Shape3, Manifold2, ToiOutput, Rect } from 'collide';
 
 export async function main(): Promise<number> {
   await init({ simd: simdSupported() });
+  const build: boolean = isSimdBuild();
   const shapes2: Shape2[] = [
     circle({ x: 0, y: 0 }, 1), capsule2({ x: 0, y: 0 }, { x: 1, y: 0 }, 0.5), aabb2({ x: 0, y: 0 }, { x: 1, y: 1 }),
     box2({ x: 0, y: 0 }, { x: 1, y: 1 }, 0.5), polygon([{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }], 0.1),
@@ -88,7 +89,7 @@ export async function main(): Promise<number> {
   const names: readonly string[] = [...BROADPHASE_TYPES, ...SHAPE2_TYPES, ...SHAPE3_TYPES];
   return Number(hit) + cp.x + frac + d + (sep ?? 0) + Number(cast.hit) + state.length + bounds.max.x + mass + all3.length +
     texts.length + idx.length + canvas.length + view.length + Number(moved) + changed + pairs.length + q2.length + st +
-    names.length + MAX_POLYGON_VERTICES;
+    names.length + MAX_POLYGON_VERTICES + Number(build);
 }
 
 // Calls that must not type-check (never run).
