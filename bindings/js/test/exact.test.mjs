@@ -165,6 +165,12 @@ test('the 2D broadphase matches brute force on fat boxes; WasmArray views are re
     check();
     assert.ok(bp.updatePairs().length > 0);
     assert.equal(bp.moveProxy(0, bp.getFatAabb(0)), false, 'a box inside its fat box changes nothing');
+    // A predicted displacement stretches the fat box along it (by the multiplier, 4 by default).
+    const before = bp.getFatAabb(1);
+    const moved = new Float32Array([before.min.x + 30, before.min.y, before.max.x + 30, before.max.y]);
+    assert.equal(bp.moveProxies(new Int32Array([1]), moved, new Float32Array([1, 0])), 1);
+    const stretched = bp.getFatAabb(1);
+    assert.ok(stretched.max.x >= moved[2] + 4 - 1e-4 && stretched.min.x <= moved[0] + 1e-4, JSON.stringify(stretched));
     bp.rebuild();
     check();
     assert.equal(bp.validate(), true);
