@@ -219,3 +219,20 @@ for (let i = 0; i < 5; i++) { globalThis.gc(); await new Promise((r) => setTimeo
   const clean = spawnSync(process.execPath, ['--expose-gc', '--input-type=module', '-e', script(true)], { cwd }).stderr.toString();
   assert.equal(clean, '');
 });
+
+test('init() takes the wasm as bytes, as a path or as a compiled module', () => {
+  const cwd = fileURLToPath(new URL('..', import.meta.url));
+  const script = `
+import { readFileSync } from 'node:fs';
+import * as c from 'collide';
+const how = process.argv[1];
+const file = how.endsWith('scalar') ? 'dist/collide.wasm' : 'dist/collide-simd.wasm';
+const wasm = how.startsWith('bytes') ? readFileSync(file) : how.startsWith('module') ? new WebAssembly.Module(readFileSync(file)) : file;
+await c.init({ wasm });
+console.log(JSON.stringify([c.isSimdBuild(), c.overlap2(c.circle({ x: 0, y: 0 }, 1), c.circle({ x: 2, y: 0 }, 1))]));
+`;
+  for (const how of ['bytes-scalar', 'bytes-simd', 'path-scalar', 'module-simd']) {
+    const out = execFileSync(process.execPath, ['--input-type=module', '-e', script, how], { cwd }).toString();
+    assert.deepEqual(JSON.parse(out), [how.endsWith('simd'), true], how);
+  }
+});
