@@ -1,0 +1,756 @@
+/* collide for JavaScript: the thin export layer between the wasm module and the lib/ modules.
+ *
+ * Flat functions of numbers and pointers only. Shapes arrive as small float records written by
+ * the JavaScript side into a static scratch block (layout below); every shape is decoded into
+ * the library's tagged cd2Shape / cd3Shape and checked with the library's own validators before
+ * any query runs, so bad values from JavaScript give an error code, never a wrong memory access.
+ * Results are written back into the scratch block. Nothing here computes geometry itself: every
+ * answer comes from the library's functions.
+ *
+ * 2D shape record (floats): [type, ...]
+ *   circle  0: cx cy r              capsule 1: p1x p1y p2x p2y r     aabb 2: minx miny maxx maxy
+ *   box     3: cx cy hx hy angle    polygon 4: count radius x0 y0 x1 y1 ... (up to 8 points)
+ *   segment 5: p1x p1y p2x p2y
+ * 3D shape record (floats): [type, ...]
+ *   sphere 0: cx cy cz r           capsule 1: p1 p2 r               aabb 2: min max
+ *   box 3: c h qx qy qz qw         triangle 4: a b c                plane 5: nx ny nz offset
+ *   segment 6: p1 p2               hull 7: px py pz qx qy qz qw, then (int32) hull pointer
+ * Error codes: a negative return is -(cdResult) for the first shape, -(32 + cdResult) for the
+ * second. */
+#include <collide/collide.h>
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define EXPORT(name) __attribute__((export_name(name)))
+
+#define SCRATCH_FLOATS 4096
+#define SLOT_FLOATS 64
+
+static float g_scratch[SCRATCH_FLOATS] __attribute__((aligned(16)));
+
+/* Scratch layout: slot A at 0, slot B at 64, input/output area from 128. */
+#define SLOT_A (g_scratch)
+#define SLOT_B (g_scratch + SLOT_FLOATS)
+#define IO (g_scratch + 2 * SLOT_FLOATS)
+
+EXPORT("scratch") float* cdjsScratch(void)
+{
+	return g_scratch;
+}
+
+EXPORT("malloc") void* cdjsMalloc(int size)
+{
+	if (size <= 0)
+	{
+		return NULL;
+	}
+	return malloc((size_t)size);
+}
+
+EXPORT("free") void cdjsFree(void* memory)
+{
+	free(memory);
+}
+
+EXPORT("isDouble") int cdjsIsDouble(void)
+{
+	return cdGetRealIsDouble();
+}
+
+static void putInt(float* where, int32_t value)
+{
+	memcpy(where, &value, sizeof value);
+}
+
+static void putU32(float* where, uint32_t value)
+{
+	memcpy(where, &value, sizeof value);
+}
+
+static int32_t getInt(const float* where)
+{
+	int32_t value;
+	memcpy(&value, where, sizeof value);
+	return value;
+}
+
+static cd2Vec v2(const float* p)
+{
+	return (cd2Vec){p[0], p[1]};
+}
+
+static cd3Vec v3(const float* p)
+{
+	return (cd3Vec){p[0], p[1], p[2]};
+}
+
+static cd3Quat q3(const float* p)
+{
+	return (cd3Quat){p[0], p[1], p[2], p[3]};
+}
+
+static void put2(float* out, cd2Vec v)
+{
+	out[0] = v.x;
+	out[1] = v.y;
+}
+
+static void put3(float* out, cd3Vec v)
+{
+	out[0] = v.x;
+	out[1] = v.y;
+	out[2] = v.z;
+}
+
+static int finiteAll(const float* p, int n)
+{
+	for (int i = 0; i < n; ++i)
+	{
+		if (!isfinite(p[i]))
+		{
+			return 0;
+		}
+	}
+	return 1;
+}
+
+/* ==== 2D ==================================================================================== */
+
+static cdResult decode2(const float* s, cd2Shape* out)
+{
+	memset(out, 0, sizeof *out);
+	int type = (int)s[0];
+	switch (type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			*out = cd2MakeCircleShape((cd2Circle){v2(s + 1), s[3]});
+			break;
+		case CD2_SHAPE_CAPSULE:
+			*out = cd2MakeCapsuleShape((cd2Capsule){v2(s + 1), v2(s + 3), s[5]});
+			break;
+		case CD2_SHAPE_AABB:
+			*out = cd2MakeAabbShape((cd2Aabb){v2(s + 1), v2(s + 3)});
+			break;
+		case CD2_SHAPE_BOX:
+			if (!finiteAll(s + 1, 5))
+			{
+				return CD_ERROR_NOT_FINITE;
+			}
+			*out = cd2MakeBoxShape((cd2Box){v2(s + 1), v2(s + 3), cd2MakeRot(s[5])});
+			break;
+		case CD2_SHAPE_POLYGON:
+		{
+			int count = (int)s[1];
+			if (count < 1 || count > CD2_MAX_POLYGON_VERTICES)
+			{
+				return count > CD2_MAX_POLYGON_VERTICES ? CD_ERROR_TOO_MANY_POINTS : CD_ERROR_DEGENERATE;
+			}
+			cd2Vec points[CD2_MAX_POLYGON_VERTICES];
+			for (int i = 0; i < count; ++i)
+			{
+				points[i] = v2(s + 3 + 2 * i);
+			}
+			cd2Polygon polygon;
+			cdResult result = s[2] > 0.0f ? cd2MakeRoundedPolygon(points, count, s[2], &polygon)
+										  : cd2MakePolygon(points, count, &polygon);
+			if (result != CD_OK)
+			{
+				return result;
+			}
+			*out = cd2MakePolygonShape(&polygon);
+			break;
+		}
+		case CD2_SHAPE_SEGMENT:
+			*out = cd2MakeSegmentShape((cd2Segment){v2(s + 1), v2(s + 3)});
+			break;
+		default:
+			return CD_ERROR_INVALID_ARGUMENT;
+	}
+	return cd2ValidateShape(out);
+}
+
+#define DECODE2_AB                                                                                           \
+	cd2Shape a, b;                                                                                           \
+	cdResult ra = decode2(SLOT_A, &a);                                                                       \
+	if (ra != CD_OK)                                                                                         \
+	{                                                                                                        \
+		return -(int)ra;                                                                                     \
+	}                                                                                                        \
+	cdResult rb = decode2(SLOT_B, &b);                                                                       \
+	if (rb != CD_OK)                                                                                         \
+	{                                                                                                        \
+		return -(32 + (int)rb);                                                                              \
+	}
+
+#define DECODE2_A                                                                                            \
+	cd2Shape a;                                                                                              \
+	cdResult ra = decode2(SLOT_A, &a);                                                                       \
+	if (ra != CD_OK)                                                                                         \
+	{                                                                                                        \
+		return -(int)ra;                                                                                     \
+	}
+
+/* Validates shape A; on success writes its bounds to IO[0..3]. */
+EXPORT("shape2Aabb") int cdjs2ShapeAabb(void)
+{
+	DECODE2_A
+	cd2Aabb box = cd2ComputeShapeAabb(&a);
+	put2(IO, box.min);
+	put2(IO + 2, box.max);
+	return 1;
+}
+
+/* Builds the polygon of shape A (type 4) and writes it: IO[0] count, IO[1] radius, IO[2..3]
+ * centroid, then count vertices and count normals. */
+EXPORT("polygon2Make") int cdjs2PolygonMake(void)
+{
+	DECODE2_A
+	if (a.type != CD2_SHAPE_POLYGON)
+	{
+		return -(int)CD_ERROR_INVALID_ARGUMENT;
+	}
+	const cd2Polygon* p = &a.polygon;
+	IO[0] = (float)p->count;
+	IO[1] = p->radius;
+	put2(IO + 2, p->centroid);
+	for (int i = 0; i < p->count; ++i)
+	{
+		put2(IO + 4 + 2 * i, p->vertices[i]);
+		put2(IO + 4 + 2 * p->count + 2 * i, p->normals[i]);
+	}
+	return 1;
+}
+
+EXPORT("mass2") int cdjs2Mass(float density)
+{
+	DECODE2_A
+	cd2MassData m = cd2ComputeShapeMass(&a, density);
+	IO[0] = m.mass;
+	put2(IO + 1, m.center);
+	IO[3] = m.rotationalInertia;
+	return 1;
+}
+
+EXPORT("overlap2") int cdjs2Overlap(void)
+{
+	DECODE2_AB
+	return cd2Overlap(&a, &b) ? 1 : 0;
+}
+
+EXPORT("pointIn2") int cdjs2PointIn(float x, float y)
+{
+	DECODE2_A
+	return cd2PointInShape(&a, (cd2Vec){x, y}) ? 1 : 0;
+}
+
+EXPORT("closestPoint2") int cdjs2ClosestPoint(float x, float y)
+{
+	DECODE2_A
+	put2(IO, cd2ClosestPointOnShape(&a, (cd2Vec){x, y}));
+	return 1;
+}
+
+/* IO: fraction, point, normal. */
+EXPORT("raycast2") int cdjs2Raycast(float ox, float oy, float tx, float ty)
+{
+	DECODE2_A
+	cd2RayHit hit;
+	if (!cd2Raycast(&a, (cd2Ray){{ox, oy}, {tx, ty}}, &hit))
+	{
+		return 0;
+	}
+	IO[0] = hit.fraction;
+	put2(IO + 1, hit.point);
+	put2(IO + 3, hit.normal);
+	return 1;
+}
+
+/* IO: pointA, pointB, distance, iterations, hitIterationCap. */
+EXPORT("distance2") int cdjs2Distance(void)
+{
+	DECODE2_AB
+	cdDistanceStatus status;
+	cd2ClosestPoints cp = cd2DistanceWithStatus(&a, &b, &status);
+	put2(IO, cp.pointA);
+	put2(IO + 2, cp.pointB);
+	IO[4] = cp.distance;
+	IO[5] = (float)status.iterations;
+	IO[6] = status.hitIterationCap ? 1.0f : 0.0f;
+	return 1;
+}
+
+/* IO: normal, then per point: point(2), separation, id (uint32 bits); returns the point count. */
+EXPORT("collide2") int cdjs2Collide(float speculativeDistance)
+{
+	DECODE2_AB
+	if (!(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance))
+	{
+		return -64;
+	}
+	cd2Manifold m = cd2Collide(&a, &b, speculativeDistance);
+	put2(IO, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		float* o = IO + 2 + 4 * i;
+		put2(o, m.points[i].point);
+		o[2] = m.points[i].separation;
+		putU32(o + 3, m.points[i].id);
+	}
+	return m.pointCount;
+}
+
+/* IO: hit, hitIterationCap, fraction, point, normal, iterations. */
+EXPORT("shapeCast2") int cdjs2ShapeCast(float tx, float ty)
+{
+	DECODE2_AB
+	cd2CastOutput c = cd2ShapeCast(&a, &b, (cd2Vec){tx, ty});
+	IO[0] = c.hit ? 1.0f : 0.0f;
+	IO[1] = c.hitIterationCap ? 1.0f : 0.0f;
+	IO[2] = c.fraction;
+	put2(IO + 3, c.point);
+	put2(IO + 5, c.normal);
+	IO[7] = (float)c.iterations;
+	return 1;
+}
+
+static cd2Sweep sweep2(const float* s)
+{
+	return (cd2Sweep){v2(s), v2(s + 2), v2(s + 4), s[6], s[7]};
+}
+
+/* Sweeps in IO[0..7] (A) and IO[8..15] (B). IO out: state, t, iterations. */
+EXPORT("timeOfImpact2") int cdjs2TimeOfImpact(float targetSeparation, float tolerance)
+{
+	DECODE2_AB
+	if (!finiteAll(IO, 16) || !isfinite(targetSeparation) || !isfinite(tolerance) || targetSeparation < 0.0f ||
+		tolerance <= 0.0f)
+	{
+		return -64;
+	}
+	cd2Sweep sa = sweep2(IO), sb = sweep2(IO + 8);
+	cdToiOutput t = cd2TimeOfImpact(&a, &sa, &b, &sb, targetSeparation, tolerance);
+	IO[0] = (float)t.state;
+	IO[1] = t.t;
+	IO[2] = (float)t.iterations;
+	return 1;
+}
+
+/* ==== 3D ==================================================================================== */
+
+static cdResult decode3(const float* s, cd3Shape* out)
+{
+	memset(out, 0, sizeof *out);
+	int type = (int)s[0];
+	switch (type)
+	{
+		case CD3_SHAPE_SPHERE:
+			*out = cd3MakeSphereShape((cd3Sphere){v3(s + 1), s[4]});
+			break;
+		case CD3_SHAPE_CAPSULE:
+			*out = cd3MakeCapsuleShape((cd3Capsule){v3(s + 1), v3(s + 4), s[7]});
+			break;
+		case CD3_SHAPE_AABB:
+			*out = cd3MakeAabbShape((cd3Aabb){v3(s + 1), v3(s + 4)});
+			break;
+		case CD3_SHAPE_BOX:
+			*out = cd3MakeBoxShape((cd3Box){v3(s + 1), v3(s + 4), q3(s + 7)});
+			break;
+		case CD3_SHAPE_TRIANGLE:
+			*out = cd3MakeTriangleShape((cd3Triangle){v3(s + 1), v3(s + 4), v3(s + 7)});
+			break;
+		case CD3_SHAPE_PLANE:
+			*out = cd3MakePlaneShape((cd3Plane){v3(s + 1), s[4]});
+			break;
+		case CD3_SHAPE_SEGMENT:
+			*out = cd3MakeSegmentShape((cd3Segment){v3(s + 1), v3(s + 4)});
+			break;
+		case CD3_SHAPE_HULL:
+		{
+			int32_t pointer = getInt(s + 8);
+			if (pointer == 0)
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+			const cd3Hull* hull = (const cd3Hull*)(uintptr_t)(uint32_t)pointer;
+			*out = cd3MakeHullShape(hull, (cd3Transform){v3(s + 1), q3(s + 4)});
+			if (!cd3IsValidHullShape(out->hull))
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+			return CD_OK;
+		}
+		default:
+			return CD_ERROR_INVALID_ARGUMENT;
+	}
+	return cd3ValidateShape(out);
+}
+
+#define DECODE3_AB                                                                                           \
+	cd3Shape a, b;                                                                                           \
+	cdResult ra = decode3(SLOT_A, &a);                                                                       \
+	if (ra != CD_OK)                                                                                         \
+	{                                                                                                        \
+		return -(int)ra;                                                                                     \
+	}                                                                                                        \
+	cdResult rb = decode3(SLOT_B, &b);                                                                       \
+	if (rb != CD_OK)                                                                                         \
+	{                                                                                                        \
+		return -(32 + (int)rb);                                                                              \
+	}
+
+#define DECODE3_A                                                                                            \
+	cd3Shape a;                                                                                              \
+	cdResult ra = decode3(SLOT_A, &a);                                                                       \
+	if (ra != CD_OK)                                                                                         \
+	{                                                                                                        \
+		return -(int)ra;                                                                                     \
+	}
+
+EXPORT("shape3Aabb") int cdjs3ShapeAabb(void)
+{
+	DECODE3_A
+	cd3Aabb box = cd3ComputeShapeAabb(&a);
+	put3(IO, box.min);
+	put3(IO + 3, box.max);
+	return 1;
+}
+
+EXPORT("mass3") int cdjs3Mass(float density)
+{
+	DECODE3_A
+	if (a.type == CD3_SHAPE_TRIANGLE || a.type == CD3_SHAPE_PLANE || a.type == CD3_SHAPE_SEGMENT)
+	{
+		return -(int)CD_ERROR_INVALID_ARGUMENT;
+	}
+	cd3MassData m = cd3ComputeShapeMass(&a, density);
+	IO[0] = m.mass;
+	put3(IO + 1, m.center);
+	put3(IO + 4, m.inertia.cx);
+	put3(IO + 7, m.inertia.cy);
+	put3(IO + 10, m.inertia.cz);
+	return 1;
+}
+
+EXPORT("overlap3") int cdjs3Overlap(void)
+{
+	DECODE3_AB
+	return cd3Overlap(&a, &b) ? 1 : 0;
+}
+
+EXPORT("pointIn3") int cdjs3PointIn(float x, float y, float z)
+{
+	DECODE3_A
+	return cd3PointInShape(&a, (cd3Vec){x, y, z}) ? 1 : 0;
+}
+
+EXPORT("closestPoint3") int cdjs3ClosestPoint(float x, float y, float z)
+{
+	DECODE3_A
+	put3(IO, cd3ClosestPointOnShape(&a, (cd3Vec){x, y, z}));
+	return 1;
+}
+
+EXPORT("raycast3") int cdjs3Raycast(float ox, float oy, float oz, float tx, float ty, float tz)
+{
+	DECODE3_A
+	cd3RayHit hit;
+	if (!cd3Raycast(&a, (cd3Ray){{ox, oy, oz}, {tx, ty, tz}}, &hit))
+	{
+		return 0;
+	}
+	IO[0] = hit.fraction;
+	put3(IO + 1, hit.point);
+	put3(IO + 4, hit.normal);
+	return 1;
+}
+
+EXPORT("distance3") int cdjs3Distance(void)
+{
+	DECODE3_AB
+	cdDistanceStatus status;
+	cd3ClosestPoints cp = cd3DistanceWithStatus(&a, &b, &status);
+	put3(IO, cp.pointA);
+	put3(IO + 3, cp.pointB);
+	IO[6] = cp.distance;
+	IO[7] = (float)status.iterations;
+	IO[8] = status.hitIterationCap ? 1.0f : 0.0f;
+	return 1;
+}
+
+/* IO: normal, then per point: point(3), separation, id (uint32 bits). */
+EXPORT("collide3") int cdjs3Collide(float speculativeDistance)
+{
+	DECODE3_AB
+	if (!(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance))
+	{
+		return -64;
+	}
+	cd3Manifold m = cd3Collide(&a, &b, speculativeDistance);
+	put3(IO, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		float* o = IO + 3 + 5 * i;
+		put3(o, m.points[i].point);
+		o[3] = m.points[i].separation;
+		putU32(o + 4, m.points[i].id);
+	}
+	return m.pointCount;
+}
+
+EXPORT("shapeCast3") int cdjs3ShapeCast(float tx, float ty, float tz)
+{
+	DECODE3_AB
+	cd3CastOutput c = cd3ShapeCast(&a, &b, (cd3Vec){tx, ty, tz});
+	IO[0] = c.hit ? 1.0f : 0.0f;
+	IO[1] = c.hitIterationCap ? 1.0f : 0.0f;
+	IO[2] = c.fraction;
+	put3(IO + 3, c.point);
+	put3(IO + 6, c.normal);
+	IO[9] = (float)c.iterations;
+	return 1;
+}
+
+static cd3Sweep sweep3(const float* s)
+{
+	return (cd3Sweep){v3(s), v3(s + 3), v3(s + 6), q3(s + 9), q3(s + 13)};
+}
+
+/* Sweeps in IO[0..16] (A) and IO[17..33] (B). IO out: state, t, iterations. */
+EXPORT("timeOfImpact3") int cdjs3TimeOfImpact(float targetSeparation, float tolerance)
+{
+	DECODE3_AB
+	if (!finiteAll(IO, 34) || !isfinite(targetSeparation) || !isfinite(tolerance) || targetSeparation < 0.0f ||
+		tolerance <= 0.0f)
+	{
+		return -64;
+	}
+	cd3Sweep sa = sweep3(IO), sb = sweep3(IO + 17);
+	if (!cd3IsValidQuat(sa.rotation0) || !cd3IsValidQuat(sa.rotation1) || !cd3IsValidQuat(sb.rotation0) ||
+		!cd3IsValidQuat(sb.rotation1))
+	{
+		return -65;
+	}
+	cdToiOutput t = cd3TimeOfImpact(&a, &sa, &b, &sb, targetSeparation, tolerance);
+	IO[0] = (float)t.state;
+	IO[1] = t.t;
+	IO[2] = (float)t.iterations;
+	return 1;
+}
+
+/* ---- hulls ---- */
+
+/* kind 0: hull of `count` points at `points`; 1: box hull (IO[0..2] half extents); 2: cylinder,
+ * 3: cone (IO[0] half height, IO[1] radius, count = segments). Writes the hull pointer into
+ * IO[0] (int32 bits) and returns CD_OK or the cdResult. */
+EXPORT("hullCreate") int cdjs3HullCreate(int kind, const float* points, int count)
+{
+	cd3Hull* hull = NULL;
+	cdResult result;
+	switch (kind)
+	{
+		case 0:
+			if (points == NULL || count < 0)
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+			result = cd3ComputeHull((const cd3Vec*)(const void*)points, count, &hull);
+			break;
+		case 1:
+			result = cd3MakeBoxHull(v3(IO), &hull);
+			break;
+		case 2:
+			result = cd3MakeCylinderHull(IO[0], IO[1], count, &hull);
+			break;
+		case 3:
+			result = cd3MakeConeHull(IO[0], IO[1], count, &hull);
+			break;
+		default:
+			return CD_ERROR_INVALID_ARGUMENT;
+	}
+	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)hull : 0);
+	return (int)result;
+}
+
+EXPORT("hullDestroy") void cdjs3HullDestroy(cd3Hull* hull)
+{
+	cd3DestroyHull(hull);
+}
+
+/* IO: vertexCount, faceCount, edgeCount, volume, centroid(3), bounds(6); returns the pointer to
+ * the vertices (vertexCount cd3Vec). */
+EXPORT("hullInfo") const float* cdjs3HullInfo(const cd3Hull* hull)
+{
+	IO[0] = (float)hull->vertexCount;
+	IO[1] = (float)hull->faceCount;
+	IO[2] = (float)hull->edgeCount;
+	IO[3] = hull->volume;
+	put3(IO + 4, hull->centroid);
+	put3(IO + 7, hull->bounds.min);
+	put3(IO + 10, hull->bounds.max);
+	return &hull->vertices[0].x;
+}
+
+/* ==== batch queries ========================================================================= *
+ * `data` holds `count` records of `stride` floats; the query volume is in IO. Writes the indices
+ * of the records that overlap the query into `out` (room for count) and returns how many, or
+ * -(i + 1) when record i holds a NaN or infinity. */
+
+enum
+{
+	BATCH3_POINTS_IN_AABB,
+	BATCH3_POINTS_IN_SPHERE,
+	BATCH3_AABBS_AABB,
+	BATCH3_AABBS_SPHERE,
+	BATCH3_SPHERES_SPHERE,
+	BATCH3_SPHERES_AABB,
+	BATCH2_POINTS_IN_AABB,
+	BATCH2_POINTS_IN_CIRCLE,
+	BATCH2_AABBS_AABB,
+	BATCH2_AABBS_CIRCLE,
+	BATCH2_CIRCLES_CIRCLE,
+	BATCH2_CIRCLES_AABB,
+	BATCH_KIND_COUNT
+};
+
+static const int g_batchStride[BATCH_KIND_COUNT] = {3, 3, 6, 6, 4, 4, 2, 2, 4, 4, 3, 3};
+
+#define BATCH_LOOP(test)                                                                                     \
+	for (int i = 0; i < count; ++i)                                                                          \
+	{                                                                                                        \
+		const float* r = data + (size_t)i * (size_t)stride;                                                  \
+		if (!finiteAll(r, stride))                                                                           \
+		{                                                                                                    \
+			return -(i + 1);                                                                                 \
+		}                                                                                                    \
+		out[n] = i;                                                                                          \
+		n += (test) ? 1 : 0;                                                                                 \
+	}
+
+EXPORT("batch") int cdjsBatch(int kind, const float* data, int count, int32_t* out)
+{
+	if (kind < 0 || kind >= BATCH_KIND_COUNT || count < 0 || (count > 0 && (data == NULL || out == NULL)))
+	{
+		return -(1 << 30);
+	}
+	const int stride = g_batchStride[kind];
+	const float* q = IO;
+	int n = 0;
+	switch (kind)
+	{
+		case BATCH3_POINTS_IN_AABB:
+		{
+			cd3Aabb box = {v3(q), v3(q + 3)};
+			BATCH_LOOP(cd3PointInAabb(v3(r), box))
+			break;
+		}
+		case BATCH3_POINTS_IN_SPHERE:
+		{
+			cd3Sphere s = {v3(q), q[3]};
+			BATCH_LOOP(cd3PointInSphere(v3(r), s))
+			break;
+		}
+		case BATCH3_AABBS_AABB:
+		{
+			cd3Aabb box = {v3(q), v3(q + 3)};
+			BATCH_LOOP(cd3OverlapAabbAabb((cd3Aabb){v3(r), v3(r + 3)}, box))
+			break;
+		}
+		case BATCH3_AABBS_SPHERE:
+		{
+			cd3Sphere s = {v3(q), q[3]};
+			BATCH_LOOP(cd3OverlapSphereAabb(s, (cd3Aabb){v3(r), v3(r + 3)}))
+			break;
+		}
+		case BATCH3_SPHERES_SPHERE:
+		{
+			cd3Sphere s = {v3(q), q[3]};
+			BATCH_LOOP(cd3OverlapSphereSphere((cd3Sphere){v3(r), r[3]}, s))
+			break;
+		}
+		case BATCH3_SPHERES_AABB:
+		{
+			cd3Aabb box = {v3(q), v3(q + 3)};
+			BATCH_LOOP(cd3OverlapSphereAabb((cd3Sphere){v3(r), r[3]}, box))
+			break;
+		}
+		case BATCH2_POINTS_IN_AABB:
+		{
+			cd2Aabb box = {v2(q), v2(q + 2)};
+			BATCH_LOOP(cd2PointInAabb(v2(r), box))
+			break;
+		}
+		case BATCH2_POINTS_IN_CIRCLE:
+		{
+			cd2Circle c = {v2(q), q[2]};
+			BATCH_LOOP(cd2PointInCircle(v2(r), c))
+			break;
+		}
+		case BATCH2_AABBS_AABB:
+		{
+			cd2Aabb box = {v2(q), v2(q + 2)};
+			BATCH_LOOP(cd2OverlapAabbAabb((cd2Aabb){v2(r), v2(r + 2)}, box))
+			break;
+		}
+		case BATCH2_AABBS_CIRCLE:
+		{
+			cd2Circle c = {v2(q), q[2]};
+			BATCH_LOOP(cd2OverlapCircleAabb(c, (cd2Aabb){v2(r), v2(r + 2)}))
+			break;
+		}
+		case BATCH2_CIRCLES_CIRCLE:
+		{
+			cd2Circle c = {v2(q), q[2]};
+			BATCH_LOOP(cd2OverlapCircleCircle((cd2Circle){v2(r), r[2]}, c))
+			break;
+		}
+		case BATCH2_CIRCLES_AABB:
+		{
+			cd2Aabb box = {v2(q), v2(q + 2)};
+			BATCH_LOOP(cd2OverlapCircleAabb((cd2Circle){v2(r), r[2]}, box))
+			break;
+		}
+		default:
+			break;
+	}
+	return n;
+}
+
+/* The texts' single tests with plain numbers (no memory traffic). */
+EXPORT("pointInAabb3") int cdjs3PointInAabb(float px, float py, float pz, float minX, float minY, float minZ,
+											float maxX, float maxY, float maxZ)
+{
+	return cd3PointInAabb((cd3Vec){px, py, pz}, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}}) ? 1 : 0;
+}
+
+EXPORT("overlapAabbAabb3") int cdjs3OverlapAabbAabb(float aMinX, float aMinY, float aMinZ, float aMaxX,
+													float aMaxY, float aMaxZ, float bMinX, float bMinY,
+													float bMinZ, float bMaxX, float bMaxY, float bMaxZ)
+{
+	return cd3OverlapAabbAabb((cd3Aabb){{aMinX, aMinY, aMinZ}, {aMaxX, aMaxY, aMaxZ}},
+							  (cd3Aabb){{bMinX, bMinY, bMinZ}, {bMaxX, bMaxY, bMaxZ}})
+			   ? 1
+			   : 0;
+}
+
+EXPORT("pointInSphere3") int cdjs3PointInSphere(float px, float py, float pz, float cx, float cy, float cz,
+												float r)
+{
+	return cd3PointInSphere((cd3Vec){px, py, pz}, (cd3Sphere){{cx, cy, cz}, r}) ? 1 : 0;
+}
+
+EXPORT("overlapSphereSphere3") int cdjs3OverlapSphereSphere(float ax, float ay, float az, float ar, float bx,
+															float by, float bz, float br)
+{
+	return cd3OverlapSphereSphere((cd3Sphere){{ax, ay, az}, ar}, (cd3Sphere){{bx, by, bz}, br}) ? 1 : 0;
+}
+
+EXPORT("overlapSphereAabb3") int cdjs3OverlapSphereAabb(float cx, float cy, float cz, float r, float minX,
+														float minY, float minZ, float maxX, float maxY,
+														float maxZ)
+{
+	return cd3OverlapSphereAabb((cd3Sphere){{cx, cy, cz}, r}, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}})
+			   ? 1
+			   : 0;
+}
