@@ -3,7 +3,7 @@
 // CSS, and the collide package's wasm files next to the bundles that load them.
 //   node build.mjs [--dev]     (--dev: no minification, inline source maps)
 import { build } from 'esbuild';
-import { cp, mkdir, readdir, rm } from 'node:fs/promises';
+import { cp, mkdir, rm } from 'node:fs/promises';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -19,30 +19,14 @@ const started = performance.now();
 await rm(dist, { recursive: true, force: true });
 await mkdir(dist, { recursive: true });
 
-// The wasm files of the collide package: wherever the package keeps them, copy them next to
-// every page bundle, since the loader finds its wasm relative to its own module URL.
+// The collide package's two wasm builds (SIMD and scalar), copied next to every page bundle:
+// pages/common/collide.js loads them from there.
 const require = createRequire(import.meta.url);
-let wasmFiles = [];
-let collideDir = null;
+let wasmFiles;
 try {
-  collideDir = dirname(require.resolve('collide/package.json'));
-} catch {
-  collideDir = null;
-}
-async function findWasm(dir, depth = 0) {
-  if (depth > 3) return [];
-  const out = [];
-  for (const entry of await readdir(dir, { withFileTypes: true })) {
-    if (entry.name === 'node_modules' || entry.name.startsWith('.')) continue;
-    const path = join(dir, entry.name);
-    if (entry.isDirectory()) out.push(...(await findWasm(path, depth + 1)));
-    else if (entry.name.endsWith('.wasm')) out.push(path);
-  }
-  return out;
-}
-if (collideDir) wasmFiles = await findWasm(collideDir);
-if (wasmFiles.length === 0) {
-  console.error('web/build.mjs: the collide package has no .wasm file; build it first (npm run build in bindings/js)');
+  wasmFiles = ['collide-simd.wasm', 'collide.wasm'].map((f) => require.resolve(`collide/dist/${f}`));
+} catch (err) {
+  console.error(`web/build.mjs: the collide package has no wasm build (${err.message.split('\n')[0]}); run \`npm run build\` in bindings/js first`);
   process.exit(1);
 }
 

@@ -8,8 +8,9 @@
  *   collide3 SHAPE3 SHAPE3 SPECULATIVE     -> cd3Collide
  *   distance3 SHAPE3 SHAPE3                -> cd3Distance
  *   overlap3 SHAPE3 SHAPE3                 -> cd3Overlap   {"overlap":true|false}
+ *   pointin3 X Y Z SHAPE3                  -> cd3PointInShape {"inside":true|false}
  *
- *   SHAPE2: circle X Y R | capsule X1 Y1 X2 Y2 R | box X Y HX HY C S (rotation as cos, sin)
+ *   SHAPE2: circle X Y R | capsule X1 Y1 X2 Y2 R | box X Y HX HY ANGLE (radians)
  *         | polygon N X1 Y1 ... XN YN RADIUS (world vertices) | segment X1 Y1 X2 Y2
  *   SHAPE3: sphere X Y Z R | capsule X1 Y1 Z1 X2 Y2 Z2 R | aabb MINX MINY MINZ MAXX MAXY MAXZ
  *         | box X Y Z HX HY HZ QX QY QZ QW | hull N X1 Y1 Z1 ... (local points) PX PY PZ QX QY QZ QW
@@ -99,8 +100,7 @@ static int ReadShape2(Reader* r, cd2Shape* shape)
 		b.center.y = ReadReal(r);
 		b.halfExtents.x = ReadReal(r);
 		b.halfExtents.y = ReadReal(r);
-		b.rotation.c = ReadReal(r);
-		b.rotation.s = ReadReal(r);
+		b.rotation = cd2MakeRot(ReadReal(r));
 		*shape = cd2MakeBoxShape(b);
 	}
 	else if (strcmp(kind, "polygon") == 0)
@@ -116,7 +116,9 @@ static int ReadShape2(Reader* r, cd2Shape* shape)
 		if (r->failed)
 			return 0;
 		cd2Polygon polygon;
-		if (cd2MakeRoundedPolygon(points, n, radius, &polygon) != CD_OK)
+		cdResult made = radius > 0 ? cd2MakeRoundedPolygon(points, n, radius, &polygon)
+								   : cd2MakePolygon(points, n, &polygon);
+		if (made != CD_OK)
 			return 0;
 		*shape = cd2MakePolygonShape(&polygon);
 	}
@@ -321,6 +323,15 @@ static int Run(char* line)
 		{
 			printf("{\"overlap\":%s}\n", cd3Overlap(&a, &b) ? "true" : "false");
 		}
+		return 1;
+	}
+	if (strcmp(query, "pointin3") == 0)
+	{
+		cd3Vec p = ReadVec3(&r);
+		cd3Shape shape;
+		if (r.failed || !ReadShape3(&r, &shape))
+			return 0;
+		printf("{\"inside\":%s}\n", cd3PointInShape(&shape, p) ? "true" : "false");
 		return 1;
 	}
 	return 0;
