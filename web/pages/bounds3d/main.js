@@ -314,7 +314,7 @@ function setupBroad(n) {
       vel[3 * i + k] = (rand() - 0.5) * 6;
     }
   }
-  const mesh = new THREE.InstancedMesh(new THREE.BoxGeometry(1, 1, 1), new THREE.MeshStandardMaterial({ roughness: 0.7 }), n);
+  const mesh = new THREE.InstancedMesh(new THREE.BoxGeometry(1, 1, 1), new THREE.MeshLambertMaterial(), n);
   mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
   const color = new THREE.Color(0x4a6fb0);
   for (let i = 0; i < n; i++) mesh.setColorAt(i, color);
