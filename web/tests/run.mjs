@@ -56,19 +56,33 @@ function startReference() {
   let buffer = '';
   const waiting = [];
   child.stdout.setEncoding('utf8');
+  child.stdin.on('error', () => {}); // a dead reference is reported by 'exit' below
   child.stdout.on('data', (chunk) => {
     buffer += chunk;
     let nl;
     while ((nl = buffer.indexOf('\n')) >= 0) {
       const line = buffer.slice(0, nl);
       buffer = buffer.slice(nl + 1);
-      waiting.shift()?.(JSON.parse(line));
+      waiting.shift()?.resolve(JSON.parse(line));
     }
+  });
+  let exited = null;
+  child.on('exit', (code, signal) => {
+    exited = new Error(`the reference program ${referencePath} exited (${signal ?? code})`);
+    for (const w of waiting.splice(0)) w.reject(exited);
+  });
+  child.on('error', (err) => {
+    exited = err;
+    for (const w of waiting.splice(0)) w.reject(err);
   });
   return {
     query(line) {
-      return new Promise((res) => {
-        waiting.push(res);
+      return new Promise((resolve, reject) => {
+        if (exited) {
+          reject(exited);
+          return;
+        }
+        waiting.push({ resolve, reject });
         child.stdin.write(`${line}\n`);
       });
     },
