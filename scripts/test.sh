@@ -25,8 +25,7 @@ run_suite() {
 	ctest --test-dir "$build" -j"$jobs" --output-on-failure --timeout 600
 }
 
-# The float build also runs the demo pages' browser tests (tests/web: chromium, node, the wasm build).
-run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_WEB_TESTS=ON
+run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo
 run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON
 # The sanitizer build also builds the libFuzzer targets and runs each for a fixed number of
 # inputs (fuzz/CMakeLists.txt).
