@@ -25,7 +25,7 @@ run_suite() {
 	ctest --test-dir "$build" -j"$jobs" --output-on-failure --timeout 600
 }
 
-run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo
+run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_BUILD_JS_TESTS=ON
 run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON
 # The sanitizer build also builds the libFuzzer targets and runs each for a fixed number of
 # inputs (fuzz/CMakeLists.txt).

@@ -3,6 +3,7 @@
 
 export function describe(v) {
   if (v === null) return 'null';
+  if (v === undefined) return 'undefined (missing)';
   if (Array.isArray(v)) return 'an array';
   if (typeof v === 'number' && Number.isNaN(v)) return 'NaN';
   if (typeof v === 'object') return 'an object';

@@ -61,9 +61,14 @@ export function distance3(a, b) {
   };
 }
 
-/** Contact manifold (cd3Collide): normal from a to b and up to 4 points. */
+/** Contact manifold (cd3Collide): normal from a to b and up to 4 points. Spheres, capsules, AABBs, boxes, hulls and triangles; a RangeError for planes and segments (the library has no manifold for them). */
 export function manifold3(a, b, speculativeDistance = 0) {
   prepAB(a, b);
+  for (const [s, name] of [[a, 'a'], [b, 'b']]) {
+    if (s.type === 'plane' || s.type === 'segment') {
+      throw new RangeError(`manifold3 has no contact manifold for planes and segments (${name} is a ${s.type}); use distance3 or overlap3`);
+    }
+  }
   const n = checkCode(w.exports.collide3(nonNeg(speculativeDistance, 'speculativeDistance')), 'a', 'b', 'speculativeDistance');
   const f = w.F32, u = w.U32, io = IO();
   const points = [];

@@ -94,9 +94,11 @@ function stubImports(module) {
  * .wasm files). Resolves when every function is ready; calling it again returns the same promise.
  */
 export function init(options = {}) {
+  if (typeof options !== 'object' || options === null) {
+    return Promise.reject(new TypeError(`options must be an object, got ${options === null ? 'null' : typeof options}`));
+  }
   if (loading !== null) return loading;
   loading = (async () => {
-    if (typeof options !== 'object' || options === null) throw new TypeError('init(options): options must be an object');
     const useSimd = options.simd === undefined ? simdSupported() : Boolean(options.simd);
     let source = options.wasm;
     if (source === undefined) {

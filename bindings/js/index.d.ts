@@ -1,0 +1,234 @@
+// TypeScript declarations of the package `collide` (the whole public API of index.js).
+
+// ---- loading -----------------------------------------------------------------------------------
+
+export interface InitOptions {
+  /** Force the SIMD build (true) or the scalar build (false); default: feature detection. */
+  simd?: boolean;
+  /** Where the .wasm file is (URL, path, bytes, Response or compiled module), for bundlers that move it. */
+  wasm?: URL | string | ArrayBuffer | ArrayBufferView | Response | WebAssembly.Module;
+}
+/** Loads the wasm module; afterwards every function is synchronous. Repeated calls share one promise. */
+export function init(options?: InitOptions): Promise<void>;
+/** True when this engine runs wasm SIMD (the build init() then picks). */
+export function simdSupported(): boolean;
+
+// ---- values --------------------------------------------------------------------------------------
+
+export interface Vec2 { x: number; y: number }
+export interface Vec3 { x: number; y: number; z: number }
+/** Unit quaternion (x, y, z, w); identity {x: 0, y: 0, z: 0, w: 1}. */
+export interface Quat { x: number; y: number; z: number; w: number }
+export interface Aabb2 { min: Vec2; max: Vec2 }
+export interface Aabb3 { min: Vec3; max: Vec3 }
+/** A ray: the points origin + t * translation for t in [0, 1]. */
+export interface Ray2 { origin: Vec2; translation: Vec2 }
+export interface Ray3 { origin: Vec3; translation: Vec3 }
+
+// ---- 2D shapes -----------------------------------------------------------------------------------
+
+export interface Circle { type: 'circle'; center: Vec2; radius: number }
+export interface Capsule2 { type: 'capsule'; p1: Vec2; p2: Vec2; radius: number }
+export interface AabbShape2 { type: 'aabb'; min: Vec2; max: Vec2 }
+/** Oriented rectangle; angle in radians, counter-clockwise in y-up axes (clockwise on a y-down canvas). */
+export interface Box2 { type: 'box'; center: Vec2; halfExtents: Vec2; angle?: number }
+/** Convex polygon: the convex hull of 3 to 8 vertices, optionally rounded by radius. */
+export interface Polygon { type: 'polygon'; vertices: Vec2[]; radius?: number; centroid?: Vec2; normals?: Vec2[] }
+export interface Segment2 { type: 'segment'; p1: Vec2; p2: Vec2 }
+export type Shape2 = Circle | Capsule2 | AabbShape2 | Box2 | Polygon | Segment2;
+export const SHAPE2_TYPES: readonly Shape2['type'][];
+export const MAX_POLYGON_VERTICES: 8;
+
+export function circle(center: Vec2, radius: number): Circle;
+export function capsule2(p1: Vec2, p2: Vec2, radius: number): Capsule2;
+export function aabb2(min: Vec2, max: Vec2): AabbShape2;
+export function box2(center: Vec2, halfExtents: Vec2, angle?: number): Box2;
+/** Builds the convex hull of the points (cd2MakePolygon); RangeError for a degenerate set. */
+export function polygon(points: Vec2[], radius?: number): Polygon & { centroid: Vec2; normals: Vec2[]; radius: number };
+export function segment2(p1: Vec2, p2: Vec2): Segment2;
+
+// ---- 3D shapes -----------------------------------------------------------------------------------
+
+export interface Sphere { type: 'sphere'; center: Vec3; radius: number }
+export interface Capsule3 { type: 'capsule'; p1: Vec3; p2: Vec3; radius: number }
+export interface AabbShape3 { type: 'aabb'; min: Vec3; max: Vec3 }
+export interface Box3 { type: 'box'; center: Vec3; halfExtents: Vec3; rotation?: Quat }
+/** Two-sided flat triangle a-b-c (not solid). */
+export interface Triangle { type: 'triangle'; a: Vec3; b: Vec3; c: Vec3 }
+/** Solid half-space: the points x with dot(normal, x) <= offset; normal of unit length. */
+export interface Plane { type: 'plane'; normal: Vec3; offset: number }
+export interface Segment3 { type: 'segment'; p1: Vec3; p2: Vec3 }
+/** A Hull placed in the world: position + rotation * (hull point). */
+export interface HullShape { type: 'hull'; hull: Hull; position?: Vec3; rotation?: Quat }
+export type Shape3 = Sphere | Capsule3 | AabbShape3 | Box3 | Triangle | Plane | Segment3 | HullShape;
+export const SHAPE3_TYPES: readonly Shape3['type'][];
+
+export function sphere(center: Vec3, radius: number): Sphere;
+export function capsule3(p1: Vec3, p2: Vec3, radius: number): Capsule3;
+export function aabb3(min: Vec3, max: Vec3): AabbShape3;
+export function box3(center: Vec3, halfExtents: Vec3, rotation?: Quat): Box3;
+export function triangle(a: Vec3, b: Vec3, c: Vec3): Triangle;
+export function plane(normal: Vec3, offset: number): Plane;
+export function segment3(p1: Vec3, p2: Vec3): Segment3;
+export function hullShape(hull: Hull, position?: Vec3, rotation?: Quat): HullShape;
+
+/** A convex hull in wasm memory (quickhull). Immutable and shareable; call destroy() when done. */
+export class Hull {
+  private constructor();
+  /** Hull of an array of points or of a packed array of x, y, z triples (up to 16384 points). */
+  static fromPoints(points: Vec3[] | Float32Array | Float64Array): Hull;
+  static box(halfExtents: Vec3): Hull;
+  static cylinder(halfHeight: number, radius: number, segments?: number): Hull;
+  static cone(halfHeight: number, radius: number, segments?: number): Hull;
+  readonly vertexCount: number;
+  readonly faceCount: number;
+  readonly edgeCount: number;
+  readonly volume: number;
+  readonly centroid: Vec3;
+  readonly bounds: Aabb3;
+  /** x, y, z per vertex (a copy). */
+  readonly vertices: Float32Array;
+  readonly destroyed: boolean;
+  destroy(): void;
+}
+
+// ---- queries -------------------------------------------------------------------------------------
+
+export interface RayHit2 { fraction: number; point: Vec2; normal: Vec2 }
+export interface RayHit3 { fraction: number; point: Vec3; normal: Vec3 }
+export interface ClosestPoints2 { pointA: Vec2; pointB: Vec2; distance: number; iterations: number; hitIterationCap: boolean }
+export interface ClosestPoints3 { pointA: Vec3; pointB: Vec3; distance: number; iterations: number; hitIterationCap: boolean }
+export interface ManifoldPoint2 { point: Vec2; separation: number; id: number }
+export interface ManifoldPoint3 { point: Vec3; separation: number; id: number }
+/** normal points from a to b; no points when the shapes are apart by more than the speculative distance. */
+export interface Manifold2 { normal: Vec2; points: ManifoldPoint2[] }
+export interface Manifold3 { normal: Vec3; points: ManifoldPoint3[] }
+export interface CastOutput2 { hit: boolean; hitIterationCap: boolean; fraction: number; point: Vec2; normal: Vec2; iterations: number }
+export interface CastOutput3 { hit: boolean; hitIterationCap: boolean; fraction: number; point: Vec3; normal: Vec3; iterations: number }
+export interface Sweep2 { localCenter?: Vec2; center0: Vec2; center1?: Vec2; angle0?: number; angle1?: number }
+export interface Sweep3 { localCenter?: Vec3; center0: Vec3; center1?: Vec3; rotation0?: Quat; rotation1?: Quat }
+export interface ToiOptions { targetSeparation?: number; tolerance?: number }
+export interface ToiOutput { state: 'hit' | 'separated' | 'overlapped' | 'failed'; t: number; iterations: number }
+export interface MassData2 { mass: number; center: Vec2; rotationalInertia: number }
+export interface MassData3 { mass: number; center: Vec3; inertia: number[] }
+
+export function overlap2(a: Shape2, b: Shape2): boolean;
+export function containsPoint2(shape: Shape2, point: Vec2): boolean;
+export function closestPoint2(shape: Shape2, point: Vec2): Vec2;
+export function raycast2(shape: Shape2, ray: Ray2): RayHit2 | null;
+export function distance2(a: Shape2, b: Shape2): ClosestPoints2;
+export function manifold2(a: Shape2, b: Shape2, speculativeDistance?: number): Manifold2;
+export function shapeCast2(a: Shape2, b: Shape2, translation: Vec2): CastOutput2;
+export function timeOfImpact2(a: Shape2, sweepA: Sweep2, b: Shape2, sweepB: Sweep2, options?: ToiOptions): ToiOutput;
+export function computeAabb2(shape: Shape2): Aabb2;
+export function computeMass2(shape: Shape2, density?: number): MassData2;
+
+export function overlap3(a: Shape3, b: Shape3): boolean;
+export function containsPoint3(shape: Shape3, point: Vec3): boolean;
+export function closestPoint3(shape: Shape3, point: Vec3): Vec3;
+export function raycast3(shape: Shape3, ray: Ray3): RayHit3 | null;
+export function distance3(a: Shape3, b: Shape3): ClosestPoints3;
+export function manifold3(a: Shape3, b: Shape3, speculativeDistance?: number): Manifold3;
+export function shapeCast3(a: Shape3, b: Shape3, translation: Vec3): CastOutput3;
+export function timeOfImpact3(a: Shape3, sweepA: Sweep3, b: Shape3, sweepB: Sweep3, options?: ToiOptions): ToiOutput;
+export function computeAabb3(shape: Shape3): Aabb3;
+/** Solid shapes only (not triangle, plane, segment). inertia: 9 numbers, row by row. */
+export function computeMass3(shape: Shape3, density?: number): MassData3;
+
+// ---- the texts' tests, batch forms and canvas helpers ------------------------------------------------
+
+export interface TextPoint { x: number; y: number; z: number }
+export interface TextAABB { minX: number; maxX: number; minY: number; maxY: number; minZ: number; maxZ: number }
+export interface TextSphere { x: number; y: number; z: number; radius: number }
+/** Canvas rectangle (y down): top-left corner and size. */
+export interface Rect { x: number; y: number; width: number; height: number }
+export interface TextCircle { x: number; y: number; radius: number }
+
+export function isPointInsideAABB(point: TextPoint, box: TextAABB): boolean;
+export function intersectAABB(a: TextAABB, b: TextAABB): boolean;
+export function isPointInsideSphere(point: TextPoint, sphere: TextSphere): boolean;
+export function intersectSphere(a: TextSphere, b: TextSphere): boolean;
+export function intersectSphereAABB(sphere: TextSphere, box: TextAABB): boolean;
+
+/** Batch forms: an array of objects or a packed Float32Array (points x y z; AABBs minX minY minZ maxX maxY maxZ; spheres x y z radius); returns the indices that pass. */
+export function pointsInsideAABB(points: TextPoint[] | Float32Array, box: TextAABB): Int32Array;
+export function pointsInsideSphere(points: TextPoint[] | Float32Array, sphere: TextSphere): Int32Array;
+export function aabbsIntersectAABB(boxes: TextAABB[] | Float32Array, box: TextAABB): Int32Array;
+export function aabbsIntersectSphere(boxes: TextAABB[] | Float32Array, sphere: TextSphere): Int32Array;
+export function spheresIntersectSphere(spheres: TextSphere[] | Float32Array, sphere: TextSphere): Int32Array;
+export function spheresIntersectAABB(spheres: TextSphere[] | Float32Array, box: TextAABB): Int32Array;
+
+export function rectToAabb(rect: Rect): AabbShape2;
+export function aabbToRect(aabb: Aabb2): Rect;
+export function rectToBox(rect: Rect, angle?: number): Box2;
+export function isPointInsideRect(point: Vec2, rect: Rect): boolean;
+export function intersectRect(a: Rect, b: Rect): boolean;
+export function intersectCircle(a: TextCircle, b: TextCircle): boolean;
+export function intersectPolygon(a: Vec2[], b: Vec2[]): boolean;
+/** 2D batch forms (packed: points x y; rects minX minY maxX maxY; circles x y radius). */
+export function pointsInsideRect(points: Vec2[] | Float32Array, rect: Rect): Int32Array;
+export function rectsIntersectRect(rects: Rect[] | Float32Array, rect: Rect): Int32Array;
+export function pointsInsideCircle(points: Vec2[] | Float32Array, circle: TextCircle): Int32Array;
+export function circlesIntersectCircle(circles: TextCircle[] | Float32Array, circle: TextCircle): Int32Array;
+export function circlesIntersectRect(circles: TextCircle[] | Float32Array, rect: Rect): Int32Array;
+export function rectsIntersectCircle(rects: Rect[] | Float32Array, circle: TextCircle): Int32Array;
+
+// ---- wasm-resident arrays ----------------------------------------------------------------------
+
+/** A typed array in wasm memory, read in place by batch queries and moveProxies. */
+export class WasmArray<K extends 'f32' | 'i32' = 'f32' | 'i32'> {
+  constructor(kind: K, length: number);
+  readonly kind: K;
+  readonly length: number;
+  /** A view of the elements; take it again after calls that may grow wasm memory. */
+  readonly array: K extends 'f32' ? Float32Array : Int32Array;
+  readonly destroyed: boolean;
+  destroy(): void;
+}
+
+// ---- broadphase --------------------------------------------------------------------------------
+
+export type BroadPhaseType = 'tree' | 'sap' | 'grid' | 'spatialTree';
+export const BROADPHASE_TYPES: readonly BroadPhaseType[];
+export interface BroadPhaseDef<A> {
+  type?: BroadPhaseType;
+  /** Fat-box margin on every side (default 0.1). */
+  margin?: number;
+  /** Predicted displacement multiplier (default 4). */
+  displacementMultiplier?: number;
+  /** Grid cell size; 0 picks one from the first proxies. */
+  cellSize?: number;
+  /** Quadtree/octree root region. */
+  bounds?: A | number[] | Float32Array;
+  capacity?: number;
+}
+export interface BroadPhaseStats { proxyCount: number; nodeCount: number; height: number; memoryBytes: number; sahCost: number }
+
+declare class BroadPhaseBase<V, A, R> {
+  readonly dim: number;
+  readonly type: BroadPhaseType;
+  readonly destroyed: boolean;
+  readonly proxyCount: number;
+  readonly stats: BroadPhaseStats;
+  createProxy(aabb: A | number[] | Float32Array): number;
+  createProxies(aabbs: Float32Array): Int32Array;
+  destroyProxy(id: number): void;
+  hasProxy(id: number): boolean;
+  moveProxy(id: number, aabb: A | number[] | Float32Array, displacement?: V): boolean;
+  moveProxies(ids: Int32Array, aabbs: Float32Array, displacements?: Float32Array): number;
+  /** Pairs [a0, b0, a1, b1, ...] (a < b, sorted) with at least one moved proxy since the last call. */
+  updatePairs(): Int32Array;
+  findAllPairs(): Int32Array;
+  query(aabb: A | number[] | Float32Array): Int32Array;
+  rayCast(ray: R): { ids: Int32Array; fractions: Float32Array };
+  getFatAabb(id: number): A;
+  rebuild(): void;
+  validate(): boolean;
+  destroy(): void;
+}
+export class BroadPhase2 extends BroadPhaseBase<Vec2, Aabb2, Ray2> {
+  constructor(def?: BroadPhaseDef<Aabb2>);
+}
+export class BroadPhase3 extends BroadPhaseBase<Vec3, Aabb3, Ray3> {
+  constructor(def?: BroadPhaseDef<Aabb3>);
+}
