@@ -331,7 +331,7 @@ function setupBroad(n) {
   // that overlap now (touching counts).
   const bp = new BroadPhase3({ type: structureSel.value, margin: 0 });
   const ids = bp.createProxies(boxes);
-  broad = { n, bp, ids, boxes, centers, half, vel, mesh, lines, pairs: new Int32Array(0), paused: false, inPair: new Uint8Array(n) };
+  broad = { n, bp, ids, boxes, centers, half, vel, mesh, lines, pairs: new Int32Array(0), paused: false, inPair: new Uint8Array(n), collideMs: 0, steps: 0 };
   demo.broad.n = n;
 }
 function fillBoxes(n, c, h, out) {
@@ -363,8 +363,11 @@ function frameBroad(now) {
       if (c[i] + h[i] > REGION.max[k]) { c[i] = REGION.max[k] - h[i]; v[i] = -Math.abs(v[i]); }
     }
     fillBoxes(n, c, h, b.boxes);
+    const t0 = performance.now();
     b.bp.moveProxies(b.ids, b.boxes);
     b.pairs = b.bp.findAllPairs();
+    // Mean over about a second of frames: what collide itself costs per frame.
+    b.collideMs += ((performance.now() - t0) - b.collideMs) / Math.min(++b.steps, 60);
   }
   // Draw: boxes (red when in a pair) and a line between the centres of each pair.
   const { n, centers: c, half: h, pairs, inPair } = b;
@@ -398,6 +401,7 @@ function frameBroad(now) {
       `<h2>Broadphase</h2><table>` +
       `<tr><td>boxes</td><td data-boxes>${n}</td></tr>` +
       `<tr><td>pairs this frame</td><td data-pairs>${nPairs}</td></tr>` +
+      `<tr><td>collide per frame</td><td>${b.collideMs.toFixed(2)} ms (move + pairs)</td></tr>` +
       `<tr><td>structure</td><td><span class="fn">new BroadPhase3({ type: '${structureSel.value}', margin: 0 })</span></td></tr>` +
       `<tr><td>per frame</td><td><span class="fn">bp.moveProxies(ids, boxes)</span> → cd3BroadPhase_MoveProxies<br>` +
       `<span class="fn">bp.findAllPairs()</span> → cd3BroadPhase_FindAllPairs, all pairs as one Int32Array</td></tr></table>` +
