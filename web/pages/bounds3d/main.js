@@ -249,6 +249,19 @@ el.addEventListener('wheel', (ev) => {
   testDirty = true;
 }, { passive: false });
 
+// Name labels over the objects (the names the panel uses).
+const view = document.getElementById('view');
+view.style.position = 'relative';
+const labels = Object.fromEntries(objects.map((o) => {
+  const span = document.createElement('span');
+  span.textContent = o.name;
+  span.style.cssText = 'position:absolute;pointer-events:none;font:11px ui-monospace,monospace;color:#c8d0e0;' +
+    'transform:translate(-50%,-100%);text-shadow:0 0 3px #000;white-space:nowrap';
+  view.append(span);
+  return [o.name, span];
+}));
+const labelPos = new THREE.Vector3();
+
 function frameTests() {
   if (testDirty) {
     updateTests();
@@ -257,6 +270,11 @@ function frameTests() {
   for (const o of objects) {
     o.mesh.position.copy(o.pos);
     if (o.quat) o.mesh.quaternion.copy(o.quat);
+    labelPos.copy(o.pos).setY(o.pos.y + (o.kind === 'point' ? 0.25 : 1.0)).project(testCamera);
+    const label = labels[o.name];
+    label.style.display = '';
+    label.style.left = `${el.clientLeft + ((labelPos.x + 1) / 2) * el.clientWidth}px`;
+    label.style.top = `${el.clientTop + ((1 - labelPos.y) / 2) * el.clientHeight}px`;
   }
   renderer.render(testScene, testCamera);
   return [objects.length, 'objects'];
@@ -434,6 +452,7 @@ for (const radio of document.querySelectorAll('input[name=mode]')) {
     document.getElementById('physicsPending').style.display = demo.mode === 'physics' ? '' : 'none';
     document.getElementById('help').style.display = demo.mode === 'tests' ? '' : 'none';
     el.style.display = demo.mode === 'physics' ? 'none' : '';
+    if (demo.mode !== 'tests') for (const span of Object.values(labels)) span.style.display = 'none';
     if (demo.mode === 'broad' && !broad) setupBroad(Number(countSel.value));
     if (demo.mode === 'tests') testDirty = true;
     if (demo.mode === 'physics') {
