@@ -462,7 +462,12 @@ for (const radio of document.querySelectorAll('input[name=mode]')) {
   });
 }
 
-await initCollide();
+try {
+  await initCollide();
+} catch (err) {
+  document.getElementById('hud').textContent = `collide did not load: ${err.message}`;
+  throw err;
+}
 gemHull = Hull.fromPoints(GEM.map(([x, y, z]) => ({ x, y, z })));
 runLoop(hud, (now) => {
   if (demo.mode === 'tests') return frameTests();

@@ -587,7 +587,12 @@ for (const [id, title] of PAGES) {
 }
 
 // ---- start -------------------------------------------------------------------------------------
-await initCollide();
+try {
+  await initCollide();
+} catch (err) {
+  document.getElementById('hud').textContent = `collide did not load: ${err.message}`;
+  throw err;
+}
 fillSelects();
 runLoop(hud, () => {
   if (state.dirty) {
