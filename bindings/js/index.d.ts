@@ -151,12 +151,12 @@ export function intersectSphere(a: TextSphere, b: TextSphere): boolean;
 export function intersectSphereAABB(sphere: TextSphere, box: TextAABB): boolean;
 
 /** Batch forms: an array of objects or a packed Float32Array (points x y z; AABBs minX minY minZ maxX maxY maxZ; spheres x y z radius); returns the indices that pass. */
-export function pointsInsideAABB(points: TextPoint[] | Float32Array, box: TextAABB): Int32Array;
-export function pointsInsideSphere(points: TextPoint[] | Float32Array, sphere: TextSphere): Int32Array;
-export function aabbsIntersectAABB(boxes: TextAABB[] | Float32Array, box: TextAABB): Int32Array;
-export function aabbsIntersectSphere(boxes: TextAABB[] | Float32Array, sphere: TextSphere): Int32Array;
-export function spheresIntersectSphere(spheres: TextSphere[] | Float32Array, sphere: TextSphere): Int32Array;
-export function spheresIntersectAABB(spheres: TextSphere[] | Float32Array, box: TextAABB): Int32Array;
+export function pointsInsideAABB(points: TextPoint[] | Float32Array | WasmArray<'f32'>, box: TextAABB): Int32Array;
+export function pointsInsideSphere(points: TextPoint[] | Float32Array | WasmArray<'f32'>, sphere: TextSphere): Int32Array;
+export function aabbsIntersectAABB(boxes: TextAABB[] | Float32Array | WasmArray<'f32'>, box: TextAABB): Int32Array;
+export function aabbsIntersectSphere(boxes: TextAABB[] | Float32Array | WasmArray<'f32'>, sphere: TextSphere): Int32Array;
+export function spheresIntersectSphere(spheres: TextSphere[] | Float32Array | WasmArray<'f32'>, sphere: TextSphere): Int32Array;
+export function spheresIntersectAABB(spheres: TextSphere[] | Float32Array | WasmArray<'f32'>, box: TextAABB): Int32Array;
 
 export function rectToAabb(rect: Rect): AabbShape2;
 export function aabbToRect(aabb: Aabb2): Rect;
@@ -166,16 +166,16 @@ export function intersectRect(a: Rect, b: Rect): boolean;
 export function intersectCircle(a: TextCircle, b: TextCircle): boolean;
 export function intersectPolygon(a: Vec2[], b: Vec2[]): boolean;
 /** 2D batch forms (packed: points x y; rects minX minY maxX maxY; circles x y radius). */
-export function pointsInsideRect(points: Vec2[] | Float32Array, rect: Rect): Int32Array;
-export function rectsIntersectRect(rects: Rect[] | Float32Array, rect: Rect): Int32Array;
-export function pointsInsideCircle(points: Vec2[] | Float32Array, circle: TextCircle): Int32Array;
-export function circlesIntersectCircle(circles: TextCircle[] | Float32Array, circle: TextCircle): Int32Array;
-export function circlesIntersectRect(circles: TextCircle[] | Float32Array, rect: Rect): Int32Array;
-export function rectsIntersectCircle(rects: Rect[] | Float32Array, circle: TextCircle): Int32Array;
+export function pointsInsideRect(points: Vec2[] | Float32Array | WasmArray<'f32'>, rect: Rect): Int32Array;
+export function rectsIntersectRect(rects: Rect[] | Float32Array | WasmArray<'f32'>, rect: Rect): Int32Array;
+export function pointsInsideCircle(points: Vec2[] | Float32Array | WasmArray<'f32'>, circle: TextCircle): Int32Array;
+export function circlesIntersectCircle(circles: TextCircle[] | Float32Array | WasmArray<'f32'>, circle: TextCircle): Int32Array;
+export function circlesIntersectRect(circles: TextCircle[] | Float32Array | WasmArray<'f32'>, rect: Rect): Int32Array;
+export function rectsIntersectCircle(rects: Rect[] | Float32Array | WasmArray<'f32'>, circle: TextCircle): Int32Array;
 
 // ---- wasm-resident arrays ----------------------------------------------------------------------
 
-/** A typed array in wasm memory, read in place by batch queries and moveProxies. */
+/** A typed array in wasm memory, read in place by batch queries and moveProxies. Pass the WasmArray itself to those calls (not a view kept from earlier: growing wasm memory detaches old views). */
 export class WasmArray<K extends 'f32' | 'i32' = 'f32' | 'i32'> {
   constructor(kind: K, length: number);
   readonly kind: K;
@@ -211,11 +211,11 @@ declare class BroadPhaseBase<V, A, R> {
   readonly proxyCount: number;
   readonly stats: BroadPhaseStats;
   createProxy(aabb: A | number[] | Float32Array): number;
-  createProxies(aabbs: Float32Array): Int32Array;
+  createProxies(aabbs: Float32Array | WasmArray<'f32'>): Int32Array;
   destroyProxy(id: number): void;
   hasProxy(id: number): boolean;
   moveProxy(id: number, aabb: A | number[] | Float32Array, displacement?: V): boolean;
-  moveProxies(ids: Int32Array, aabbs: Float32Array, displacements?: Float32Array): number;
+  moveProxies(ids: Int32Array | WasmArray<'i32'>, aabbs: Float32Array | WasmArray<'f32'>, displacements?: Float32Array | WasmArray<'f32'>): number;
   /** Pairs [a0, b0, a1, b1, ...] (a < b, sorted) with at least one moved proxy since the last call. */
   updatePairs(): Int32Array;
   findAllPairs(): Int32Array;

@@ -3,7 +3,7 @@
 // hits and ray hits come back as one typed array per call.
 import * as w from './wasm.js';
 import { num, nonNeg, int, obj, vec2, vec3, describe, throwResult, track, untrack, destroyedError } from './check.js';
-import { place } from './memory.js';
+import { place, unwrap } from './memory.js';
 
 const TYPES = ['tree', 'sap', 'grid', 'spatialTree'];
 
@@ -93,6 +93,7 @@ class BroadPhase {
   /** Adds one proxy per box of a packed Float32Array (2·dim numbers per box); returns their ids (-1 for an invalid box). */
   createProxies(aabbs) {
     const h = this._live();
+    aabbs = unwrap(aabbs);
     const stride = 2 * this.dim;
     if (!(aabbs instanceof Float32Array)) throw new TypeError(`aabbs must be a Float32Array, got ${describe(aabbs)}`);
     if (aabbs.length % stride !== 0) throw new RangeError(`aabbs must hold ${stride} numbers per box, its length ${aabbs.length} is not a multiple`);
@@ -141,6 +142,9 @@ class BroadPhase {
    */
   moveProxies(ids, aabbs, displacements) {
     const h = this._live();
+    ids = unwrap(ids);
+    aabbs = unwrap(aabbs);
+    displacements = unwrap(displacements);
     if (!(ids instanceof Int32Array)) throw new TypeError(`ids must be an Int32Array, got ${describe(ids)}`);
     if (!(aabbs instanceof Float32Array)) throw new TypeError(`aabbs must be a Float32Array, got ${describe(aabbs)}`);
     const count = ids.length, stride = 2 * this.dim;

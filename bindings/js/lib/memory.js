@@ -48,6 +48,11 @@ export class WasmArray {
   }
 }
 
+/** A WasmArray's current view; anything else as it is. */
+export function unwrap(x) {
+  return x instanceof WasmArray ? x.array : x;
+}
+
 /**
  * Makes `arr` (a Float32Array or Int32Array of `count * stride` elements) available in wasm
  * memory and returns its byte pointer: in place when it is a view of wasm memory, else copied

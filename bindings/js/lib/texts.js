@@ -6,7 +6,7 @@
 // nothing is converted; only angles turn the other way on screen (clockwise for positive angles).
 import * as w from './wasm.js';
 import { num, nonNeg, obj, vec2, describe, checkCode } from './check.js';
-import { place } from './memory.js';
+import { place, unwrap } from './memory.js';
 import { encode2 } from './shapes2.js';
 
 function box3(b, name) {
@@ -90,8 +90,51 @@ const KIND = {
 };
 const STRIDE = [3, 3, 6, 6, 4, 4, 2, 2, 4, 4, 3, 3];
 
-function runBatch(kind, items, itemsName, query, packOne) {
+// Fast packers for arrays of objects: write one record at f[at...] and return true when it is
+// valid (numbers, finite, min <= max, radius >= 0); on false the caller re-checks the item with
+// the naming validators, which throw the precise error. (x - x === 0 is false for NaN and +-Inf.)
+const ok = (v) => typeof v === 'number' && v - v === 0;
+const isObj = (o) => typeof o === 'object' && o !== null;
+function packPoint3(f, at, p) {
+  if (!isObj(p)) return false;
+  const x = p.x, y = p.y, z = p.z;
+  f[at] = x; f[at + 1] = y; f[at + 2] = z;
+  return ok(x) && ok(y) && ok(z);
+}
+function packBox3(f, at, b) {
+  if (!isObj(b)) return false;
+  const a = b.minX, c = b.minY, d = b.minZ, e = b.maxX, g = b.maxY, h = b.maxZ;
+  f[at] = a; f[at + 1] = c; f[at + 2] = d; f[at + 3] = e; f[at + 4] = g; f[at + 5] = h;
+  return ok(a) && ok(c) && ok(d) && ok(e) && ok(g) && ok(h) && a <= e && c <= g && d <= h;
+}
+function packSphere3(f, at, s) {
+  if (!isObj(s)) return false;
+  const x = s.x, y = s.y, z = s.z, r = s.radius;
+  f[at] = x; f[at + 1] = y; f[at + 2] = z; f[at + 3] = r;
+  return ok(x) && ok(y) && ok(z) && ok(r) && r >= 0;
+}
+function packPoint2(f, at, p) {
+  if (!isObj(p)) return false;
+  const x = p.x, y = p.y;
+  f[at] = x; f[at + 1] = y;
+  return ok(x) && ok(y);
+}
+function packRect(f, at, r) {
+  if (!isObj(r)) return false;
+  const x = r.x, y = r.y, wd = r.width, ht = r.height;
+  f[at] = x; f[at + 1] = y; f[at + 2] = x + wd; f[at + 3] = y + ht;
+  return ok(x) && ok(y) && ok(wd) && ok(ht) && wd >= 0 && ht >= 0;
+}
+function packCircle(f, at, c) {
+  if (!isObj(c)) return false;
+  const x = c.x, y = c.y, r = c.radius;
+  f[at] = x; f[at + 1] = y; f[at + 2] = r;
+  return ok(x) && ok(y) && ok(r) && r >= 0;
+}
+
+function runBatch(kind, items, itemsName, query, pack, check) {
   ready();
+  items = unwrap(items);
   const stride = STRIDE[kind];
   let count, dataPtr;
   if (items instanceof Float32Array) {
@@ -103,10 +146,11 @@ function runBatch(kind, items, itemsName, query, packOne) {
     dataPtr = w.stage(count * stride * 4 + 16);
     const f = w.F32;
     let at = dataPtr >> 2;
-    for (let i = 0; i < count; i++) {
-      const r = packOne(items[i], i);
-      for (let k = 0; k < stride; k++) f[at + k] = r[k];
-      at += stride;
+    for (let i = 0; i < count; i++, at += stride) {
+      if (!pack(f, at, items[i])) {
+        check(items[i], `${itemsName}[${i}]`);
+        throw new RangeError(`${itemsName}[${i}] is not valid`);
+      }
     }
   } else {
     throw new TypeError(`${itemsName} must be an array or a Float32Array, got ${describe(items)}`);
@@ -121,27 +165,27 @@ function runBatch(kind, items, itemsName, query, packOne) {
 }
 
 export function pointsInsideAABB(points, box) {
-  return runBatch(KIND.pointsInAabb3, points, 'points', box3(box, 'box'), (p, i) => pt3(p, `points[${i}]`));
+  return runBatch(KIND.pointsInAabb3, points, 'points', box3(box, 'box'), packPoint3, pt3);
 }
 
 export function pointsInsideSphere(points, sphere) {
-  return runBatch(KIND.pointsInSphere3, points, 'points', sph(sphere, 'sphere'), (p, i) => pt3(p, `points[${i}]`));
+  return runBatch(KIND.pointsInSphere3, points, 'points', sph(sphere, 'sphere'), packPoint3, pt3);
 }
 
 export function aabbsIntersectAABB(boxes, box) {
-  return runBatch(KIND.aabbsAabb3, boxes, 'boxes', box3(box, 'box'), (b, i) => box3(b, `boxes[${i}]`));
+  return runBatch(KIND.aabbsAabb3, boxes, 'boxes', box3(box, 'box'), packBox3, box3);
 }
 
 export function aabbsIntersectSphere(boxes, sphere) {
-  return runBatch(KIND.aabbsSphere3, boxes, 'boxes', sph(sphere, 'sphere'), (b, i) => box3(b, `boxes[${i}]`));
+  return runBatch(KIND.aabbsSphere3, boxes, 'boxes', sph(sphere, 'sphere'), packBox3, box3);
 }
 
 export function spheresIntersectSphere(spheres, sphere) {
-  return runBatch(KIND.spheresSphere3, spheres, 'spheres', sph(sphere, 'sphere'), (s, i) => sph(s, `spheres[${i}]`));
+  return runBatch(KIND.spheresSphere3, spheres, 'spheres', sph(sphere, 'sphere'), packSphere3, sph);
 }
 
 export function spheresIntersectAABB(spheres, box) {
-  return runBatch(KIND.spheresAabb3, spheres, 'spheres', box3(box, 'box'), (s, i) => sph(s, `spheres[${i}]`));
+  return runBatch(KIND.spheresAabb3, spheres, 'spheres', box3(box, 'box'), packSphere3, sph);
 }
 
 // ---- 2D, canvas coordinates ------------------------------------------------------------------
@@ -215,25 +259,25 @@ export function intersectPolygon(a, b) {
 }
 
 export function pointsInsideRect(points, r) {
-  return runBatch(KIND.pointsInAabb2, points, 'points', rect(r, 'rect'), (p, i) => vec2(p, `points[${i}]`));
+  return runBatch(KIND.pointsInAabb2, points, 'points', rect(r, 'rect'), packPoint2, vec2);
 }
 
 export function rectsIntersectRect(rects, r) {
-  return runBatch(KIND.aabbsAabb2, rects, 'rects', rect(r, 'rect'), (q, i) => rect(q, `rects[${i}]`));
+  return runBatch(KIND.aabbsAabb2, rects, 'rects', rect(r, 'rect'), packRect, rect);
 }
 
 export function pointsInsideCircle(points, circle) {
-  return runBatch(KIND.pointsInCircle2, points, 'points', circ(circle, 'circle'), (p, i) => vec2(p, `points[${i}]`));
+  return runBatch(KIND.pointsInCircle2, points, 'points', circ(circle, 'circle'), packPoint2, vec2);
 }
 
 export function circlesIntersectCircle(circles, circle) {
-  return runBatch(KIND.circlesCircle2, circles, 'circles', circ(circle, 'circle'), (c, i) => circ(c, `circles[${i}]`));
+  return runBatch(KIND.circlesCircle2, circles, 'circles', circ(circle, 'circle'), packCircle, circ);
 }
 
 export function circlesIntersectRect(circles, r) {
-  return runBatch(KIND.circlesAabb2, circles, 'circles', rect(r, 'rect'), (c, i) => circ(c, `circles[${i}]`));
+  return runBatch(KIND.circlesAabb2, circles, 'circles', rect(r, 'rect'), packCircle, circ);
 }
 
 export function rectsIntersectCircle(rects, circle) {
-  return runBatch(KIND.aabbsCircle2, rects, 'rects', circ(circle, 'circle'), (q, i) => rect(q, `rects[${i}]`));
+  return runBatch(KIND.aabbsCircle2, rects, 'rects', circ(circle, 'circle'), packRect, rect);
 }

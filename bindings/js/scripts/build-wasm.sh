@@ -36,7 +36,7 @@ rm -f "$gen/config.h.tmp"
 
 # -ffp-contract=off as in the native build (no fused multiply-add: the same bits everywhere).
 # 8 MiB stack: the 3D manifolds need more than wasm-ld's 64 KiB default.
-common=(--target=wasm32-wasi -O3 -DNDEBUG -std=c11 -ffp-contract=off
+common=(--target=wasm32-wasi -O3 -flto -DNDEBUG -std=c11 -ffp-contract=off
 	-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror
 	-I"$root/include" -I"$here/build/include" -I"$root/src" -DCOLLIDE_BUILDING)
 link=(-nostartfiles -Wl,--no-entry -Wl,-z,stack-size=8388608 -Wl,--strip-debug)

@@ -616,16 +616,66 @@ enum
 
 static const int g_batchStride[BATCH_KIND_COUNT] = {3, 3, 6, 6, 4, 4, 2, 2, 4, 4, 3, 3};
 
+/* Non-finite values (NaN, infinities) are the ones whose bits without the sign are at least
+ * 0x7f800000. A maximum over the whole array has no branch and no dependence between elements, so
+ * it vectorizes; only when it finds one does a second pass look for the first bad record. */
+static int anyNonFinite(const float* data, size_t count)
+{
+	uint32_t largest = 0;
+	for (size_t i = 0; i < count; ++i)
+	{
+		uint32_t bits;
+		memcpy(&bits, data + i, sizeof bits);
+		bits &= 0x7fffffffu;
+		largest = bits > largest ? bits : largest;
+	}
+	return largest >= 0x7f800000u;
+}
+
+static int firstNonFinite(const float* data, int count, int stride)
+{
+	for (int i = 0; i < count; ++i)
+	{
+		if (!finiteAll(data + (size_t)i * (size_t)stride, stride))
+		{
+			return i;
+		}
+	}
+	return -1;
+}
+
+/* The test runs over blocks of records into a mask (a loop without branches or stores that depend
+ * on earlier records, which the compiler can vectorize), then the indices of the set entries are
+ * written out. */
+#define BATCH_BLOCK 256
 #define BATCH_LOOP(test)                                                                                     \
-	for (int i = 0; i < count; ++i)                                                                          \
+	for (int base = 0; base < count; base += BATCH_BLOCK)                                                    \
 	{                                                                                                        \
-		const float* r = data + (size_t)i * (size_t)stride;                                                  \
-		if (!finiteAll(r, stride))                                                                           \
+		int m = count - base < BATCH_BLOCK ? count - base : BATCH_BLOCK;                                     \
+		const float* block = data + (size_t)base * (size_t)stride;                                           \
+		for (int j = 0; j < m; ++j)                                                                          \
 		{                                                                                                    \
-			return -(i + 1);                                                                                 \
+			const float* r = block + (size_t)j * (size_t)stride;                                             \
+			mask[j] = (uint8_t)((test) ? 1 : 0);                                                             \
 		}                                                                                                    \
-		out[n] = i;                                                                                          \
-		n += (test) ? 1 : 0;                                                                                 \
+		for (int j = m; j < ((m + 7) & ~7); ++j)                                                             \
+		{                                                                                                    \
+			mask[j] = 0;                                                                                     \
+		}                                                                                                    \
+		for (int j = 0; j < m; j += 8)                                                                       \
+		{                                                                                                    \
+			uint64_t eight;                                                                                  \
+			memcpy(&eight, mask + j, sizeof eight);                                                          \
+			if (eight == 0)                                                                                  \
+			{                                                                                                \
+				continue;                                                                                    \
+			}                                                                                                \
+			for (int k = j; k < j + 8; ++k)                                                                  \
+			{                                                                                                \
+				out[n] = base + k;                                                                           \
+				n += mask[k];                                                                                \
+			}                                                                                                \
+		}                                                                                                    \
 	}
 
 EXPORT("batch") int cdjsBatch(int kind, const float* data, int count, int32_t* out)
@@ -637,6 +687,11 @@ EXPORT("batch") int cdjsBatch(int kind, const float* data, int count, int32_t* o
 	const int stride = g_batchStride[kind];
 	const float* q = IO;
 	int n = 0;
+	uint8_t mask[BATCH_BLOCK];
+	if (anyNonFinite(data, (size_t)count * (size_t)stride))
+	{
+		return -(firstNonFinite(data, count, stride) + 1);
+	}
 	switch (kind)
 	{
 		case BATCH3_POINTS_IN_AABB:
