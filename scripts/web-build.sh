@@ -33,10 +33,10 @@ npm_install() {
 
 js="$root/bindings/js"
 [ -d "$js/node_modules" ] || npm_install "$js"
-# The wasm build takes half a minute: redo it only when a C source or header is newer.
+# The wasm build takes half a minute: redo it only when a C source, header or build script is newer.
 wasm="$js/dist/collide.wasm"
 if [ ! -f "$wasm" ] || [ ! -f "$js/dist/collide-simd.wasm" ] ||
-	[ -n "$(find "$root/src" "$root/include" "$js/src" -newer "$wasm" -print -quit)" ]; then
+	[ -n "$(find "$root/src" "$root/include" "$js/src" "$js/scripts" -newer "$wasm" -print -quit)" ]; then
 	(cd "$js" && npm run --silent build >/dev/null)
 fi
 [ -d "$root/web/node_modules/playwright-core" ] && [ -e "$root/web/node_modules/collide" ] || npm_install "$root/web"
