@@ -322,9 +322,10 @@ typedef struct cd2ChainDef
 
 CD_API cd2ChainDef cd2DefaultChainDef(void);
 /* One shape per segment (type CD2_WORLD_SHAPE_CHAIN_SEGMENT). Returns CD2_NULL_CHAIN_ID for bad
- * points (cd2CreateChain's errors). */
-CD_API cd2ChainId cd2CreateChain(cd2BodyId bodyId, const cd2ChainDef* def);
-CD_API void cd2DestroyChain(cd2ChainId chainId);
+ * points (the errors of chain2.h's cd2CreateChain, whose name this function cannot take: in C the
+ * geometric chain builder already owns it). */
+CD_API cd2ChainId cd2CreateChainShape(cd2BodyId bodyId, const cd2ChainDef* def);
+CD_API void cd2DestroyChainShape(cd2ChainId chainId);
 CD_API bool cd2Chain_IsValid(cd2ChainId chainId);
 CD_API int cd2Chain_GetSegmentCount(cd2ChainId chainId);
 
