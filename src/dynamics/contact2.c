@@ -271,9 +271,8 @@ static bool cd2SensorOverlaps(cd2World* world, const cd2Contact* contact)
 	return cd2Overlap(&ta, &tb);
 }
 
-void cd2UpdateContacts(cd2World* world)
+void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 {
-	cdReal speculative = CD_SPECULATIVE_DISTANCE;
 	for (int i = 0; i < world->contacts.count; ++i)
 	{
 		cd2Contact* contact = world->contacts.data + i;
@@ -314,6 +313,12 @@ void cd2UpdateContacts(cd2World* world)
 		else
 		{
 			cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
+			/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
+			 * fast body is caught at the surface rather than found inside it a step later. */
+			cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
+							 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
+							 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
+			cdReal speculative = CD_SPECULATIVE_DISTANCE + timeStep * closing;
 			cd2Manifold m = cd2CollideLocal(shapeA, shapeB, cd2InvMulTransforms(xfA, xfB), speculative);
 			cd2ContactPoint old[2];
 			int oldCount = contact->pointCount;

@@ -367,5 +367,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->sensorBeginEvents.count = 0;
 	world->sensorEndEvents.count = 0;
 	world->moveEvents.count = 0;
+	world->stepEndEventCount = 0;
+	world->stepSensorEndEventCount = 0;
 	return CD_OK;
 }
