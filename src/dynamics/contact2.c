@@ -17,17 +17,17 @@ cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* sh
 		const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
 		switch (b.type)
 		{
-		case CD2_SHAPE_CIRCLE:
-			return cd2CollideChainSegmentCircle(seg, b.circle, speculativeDistance);
-		case CD2_SHAPE_CAPSULE:
-			return cd2CollideChainSegmentCapsule(seg, b.capsule, speculativeDistance);
-		case CD2_SHAPE_POLYGON:
-			return cd2CollideChainSegmentPolygon(seg, &b.polygon, speculativeDistance);
-		default:
-		{
-			cd2Capsule capsule = {b.segment.p1, b.segment.p2, CD_R(0.0)};
-			return cd2CollideChainSegmentCapsule(seg, capsule, speculativeDistance);
-		}
+			case CD2_SHAPE_CIRCLE:
+				return cd2CollideChainSegmentCircle(seg, b.circle, speculativeDistance);
+			case CD2_SHAPE_CAPSULE:
+				return cd2CollideChainSegmentCapsule(seg, b.capsule, speculativeDistance);
+			case CD2_SHAPE_POLYGON:
+				return cd2CollideChainSegmentPolygon(seg, &b.polygon, speculativeDistance);
+			default:
+			{
+				cd2Capsule capsule = {b.segment.p1, b.segment.p2, CD_R(0.0)};
+				return cd2CollideChainSegmentCapsule(seg, capsule, speculativeDistance);
+			}
 		}
 	}
 	cd2Shape a = cd2MakeTaggedShape(shapeA, CD2_TRANSFORM_IDENTITY);
@@ -271,6 +271,43 @@ static bool cd2SensorOverlaps(cd2World* world, const cd2Contact* contact)
 	return cd2Overlap(&ta, &tb);
 }
 
+void cd2UpdateSensors(cd2World* world)
+{
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse || (contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			continue;
+		}
+		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
+		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
+		if (!bodyA->awake && !bodyB->awake)
+		{
+			continue;
+		}
+		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+		bool touching = cd2SensorOverlaps(world, contact);
+		if (touching && !wasTouching)
+		{
+			cd2SensorBeginTouchEvent e;
+			e.sensorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeA : contact->shapeB);
+			e.visitorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeB : contact->shapeA);
+			if (!cdArrayPush(world->sensorBeginEvents, e))
+			{
+				world->outOfMemory = true;
+			}
+			contact->flags |= CD2_CONTACT_TOUCHING;
+		}
+		else if (!touching && wasTouching)
+		{
+			cd2EmitEndEvent(world, contact);
+			contact->flags &= ~(uint32_t)CD2_CONTACT_TOUCHING;
+		}
+	}
+}
+
 void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 {
 	for (int i = 0; i < world->contacts.count; ++i)
@@ -298,19 +335,8 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		contact->flags &= ~(uint32_t)CD2_CONTACT_DISABLED;
 		if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
 		{
-			touching = cd2SensorOverlaps(world, contact);
-			if (touching && !wasTouching)
-			{
-				cd2SensorBeginTouchEvent e;
-				e.sensorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeA : contact->shapeB);
-				e.visitorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeB : contact->shapeA);
-				if (!cdArrayPush(world->sensorBeginEvents, e))
-				{
-					world->outOfMemory = true;
-				}
-			}
+			continue; /* sensors are updated after the solve (cd2UpdateSensors) */
 		}
-		else
 		{
 			cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
 			/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a

@@ -38,7 +38,7 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 		c->invMassB = c->indexB < 0 ? CD_R(0.0) : bodyB->invMass;
 		c->invIB = c->indexB < 0 ? CD_R(0.0) : bodyB->invInertia;
 		c->softness = (c->invMassA == CD_R(0.0) || c->invMassB == CD_R(0.0)) ? context->staticSoftness
-																			  : context->contactSoftness;
+																			 : context->contactSoftness;
 		c->normal = contact->normal;
 		c->friction = contact->friction;
 		c->restitution = contact->restitution;

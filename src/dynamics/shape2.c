@@ -85,31 +85,31 @@ cd2Shape cd2MakeTaggedShape(const cd2WorldShape* shape, cd2Transform xf)
 	memset(&out, 0, sizeof(out));
 	switch (shape->type)
 	{
-	case CD2_WORLD_SHAPE_CIRCLE:
-		out.type = CD2_SHAPE_CIRCLE;
-		out.circle.center = cd2TransformPoint(xf, shape->geometry.circle.center);
-		out.circle.radius = shape->geometry.circle.radius;
-		break;
-	case CD2_WORLD_SHAPE_CAPSULE:
-		out.type = CD2_SHAPE_CAPSULE;
-		out.capsule.p1 = cd2TransformPoint(xf, shape->geometry.capsule.p1);
-		out.capsule.p2 = cd2TransformPoint(xf, shape->geometry.capsule.p2);
-		out.capsule.radius = shape->geometry.capsule.radius;
-		break;
-	case CD2_WORLD_SHAPE_POLYGON:
-		out.type = CD2_SHAPE_POLYGON;
-		out.polygon = cd2TransformPolygon(&shape->geometry.polygon, xf);
-		break;
-	case CD2_WORLD_SHAPE_SEGMENT:
-		out.type = CD2_SHAPE_SEGMENT;
-		out.segment.p1 = cd2TransformPoint(xf, shape->geometry.segment.p1);
-		out.segment.p2 = cd2TransformPoint(xf, shape->geometry.segment.p2);
-		break;
-	case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
-		out.type = CD2_SHAPE_SEGMENT;
-		out.segment.p1 = cd2TransformPoint(xf, shape->geometry.chainSegment.p1);
-		out.segment.p2 = cd2TransformPoint(xf, shape->geometry.chainSegment.p2);
-		break;
+		case CD2_WORLD_SHAPE_CIRCLE:
+			out.type = CD2_SHAPE_CIRCLE;
+			out.circle.center = cd2TransformPoint(xf, shape->geometry.circle.center);
+			out.circle.radius = shape->geometry.circle.radius;
+			break;
+		case CD2_WORLD_SHAPE_CAPSULE:
+			out.type = CD2_SHAPE_CAPSULE;
+			out.capsule.p1 = cd2TransformPoint(xf, shape->geometry.capsule.p1);
+			out.capsule.p2 = cd2TransformPoint(xf, shape->geometry.capsule.p2);
+			out.capsule.radius = shape->geometry.capsule.radius;
+			break;
+		case CD2_WORLD_SHAPE_POLYGON:
+			out.type = CD2_SHAPE_POLYGON;
+			out.polygon = cd2TransformPolygon(&shape->geometry.polygon, xf);
+			break;
+		case CD2_WORLD_SHAPE_SEGMENT:
+			out.type = CD2_SHAPE_SEGMENT;
+			out.segment.p1 = cd2TransformPoint(xf, shape->geometry.segment.p1);
+			out.segment.p2 = cd2TransformPoint(xf, shape->geometry.segment.p2);
+			break;
+		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
+			out.type = CD2_SHAPE_SEGMENT;
+			out.segment.p1 = cd2TransformPoint(xf, shape->geometry.chainSegment.p1);
+			out.segment.p2 = cd2TransformPoint(xf, shape->geometry.chainSegment.p2);
+			break;
 	}
 	return out;
 }
@@ -417,7 +417,8 @@ static cd2ChainRec* cd2LookupChain(cd2ChainId id, cd2World** outWorld, bool muta
 {
 	cd2World* world = cd2GetWorldFromIndex(id.world0);
 	if (world == NULL || id.index1 <= 0 || id.index1 > world->chains.count ||
-		!world->chains.data[id.index1 - 1].inUse || world->chains.data[id.index1 - 1].generation != id.generation)
+		!world->chains.data[id.index1 - 1].inUse ||
+		world->chains.data[id.index1 - 1].generation != id.generation)
 	{
 		CD2_REFUSE("stale or null chain id");
 		return NULL;

@@ -137,7 +137,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* The awake bodies, dense. */
 	int bodyCapacity = world->bodies.count;
-	context.bodies = (cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
+	context.bodies =
+		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
 	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL))
 	{
@@ -180,7 +181,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		{
 			continue;
 		}
-		if (world->bodies.data[contact->bodyA].solverIndex < 0 && world->bodies.data[contact->bodyB].solverIndex < 0)
+		if (world->bodies.data[contact->bodyA].solverIndex < 0 &&
+			world->bodies.data[contact->bodyB].solverIndex < 0)
 		{
 			continue;
 		}

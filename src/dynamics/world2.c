@@ -233,6 +233,7 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 	{
 		cd2Solve(world, timeStep, subStepCount);
 	}
+	cd2UpdateSensors(world);
 	cdArena_Reset(&world->arena);
 	world->stepTimeStep = CD_R(0.0);
 	world->stepEndEventCount = world->endEvents.count;

@@ -128,9 +128,9 @@ typedef struct cd2JointData
 	cd2Vec localAxisA;
 	cdReal referenceAngle;
 	cdReal length, minLength, maxLength;
-	cdReal hertz, dampingRatio;		 /* spring */
+	cdReal hertz, dampingRatio; /* spring */
 	cdReal angularHertz, angularDampingRatio;
-	cdReal lower, upper;			 /* limit (angle or translation) */
+	cdReal lower, upper;			  /* limit (angle or translation) */
 	cdReal motorSpeed, maxMotorForce; /* force or torque */
 	cdReal maxForce, maxTorque, correctionFactor;
 	cd2Vec target, linearOffset;
@@ -232,8 +232,8 @@ typedef struct cd2World
 	bool locked;
 	/* settings (saved with the state) */
 	cd2Vec gravity;
-	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio,
-		contactPushMaxVelocity, jointHertz, jointDampingRatio, maximumLinearSpeed;
+	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio, contactPushMaxVelocity,
+		jointHertz, jointDampingRatio, maximumLinearSpeed;
 	bool enableSleep, enableContinuous;
 	/* objects */
 	CD_ARRAY(cd2Body) bodies;
@@ -297,6 +297,8 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 /* ---- contact2.c ------------------------------------------------------------------------------ */
 void cd2UpdateBroadPhasePairs(cd2World* world);
 void cd2UpdateContacts(cd2World* world, cdReal timeStep);
+/* Sensor overlaps at the end of the step, with their begin and end events. */
+void cd2UpdateSensors(cd2World* world);
 void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies);
 /* The single place where a pair's manifold is computed: shapes in their body frames, B's
  * transform in A's frame; the manifold comes back in A's frame. */
