@@ -34,6 +34,35 @@ cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* sh
 	return cd2Collide(&a, &b, speculativeDistance);
 }
 
+/* The key that matches a point with last step's for warm starting: a name of the point that
+ * does not change while the same features touch, whichever way the manifold describes them.
+ * - A clipped polygon point's id says whether it is an incident vertex (code 0/1) or was clipped
+ *   at a side of the reference edge (2/3); with aligned boxes that flips from step to step while
+ *   the point stays where it is. The incident edge runs against the reference edge, so its vertex
+ *   1 is the one clipped at side 2 and vertex 0 the one clipped at side 3: one slot for {1, 2},
+ *   one for {0, 3}.
+ * - Between two near-parallel faces the reference face switches between A's and B's (the flip
+ *   bit) as the bodies rock by a fraction of the slop. Name the point by (edge of A, edge of B)
+ *   instead of (reference, incident); the reference edge runs the other way round when it is B's,
+ *   so the slots swap too. */
+static uint32_t cd2WarmStartKey(uint32_t id)
+{
+	uint32_t code = (id >> 16) & 0xffu;
+	if (code > 3u || (id >> 25) != 0u)
+	{
+		return id;
+	}
+	bool flip = (id & CD2_FEATURE_FLIP) != 0u;
+	uint32_t reference = id & 0xffu, incident = (id >> 8) & 0xffu;
+	uint32_t slot = (code == 1u || code == 2u) ? 1u : 0u;
+	uint32_t edgeA = flip ? incident : reference, edgeB = flip ? reference : incident;
+	if (flip)
+	{
+		slot = 1u - slot;
+	}
+	return edgeA | edgeB << 8 | slot << 16;
+}
+
 /* ---- pairs ------------------------------------------------------------------------------------- */
 typedef struct cd2PairCollector
 {
@@ -363,7 +392,7 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 				/* Warm starting: the same features keep their impulses. */
 				for (int j = 0; j < oldCount; ++j)
 				{
-					if (old[j].id == cp->id)
+					if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
 					{
 						cp->normalImpulse = old[j].normalImpulse;
 						cp->tangentImpulse = old[j].tangentImpulse;

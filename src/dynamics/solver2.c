@@ -6,6 +6,8 @@
  * independent sets and run them wide. */
 #include "world2_internal.h"
 
+#include "../base/graph_color.h"
+
 cd2Softness cd2MakeSoft(cdReal hertz, cdReal zeta, cdReal h)
 {
 	cd2Softness soft = {CD_R(0.0), CD_R(1.0), CD_R(0.0)};
@@ -187,6 +189,36 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			continue;
 		}
 		context.constraints[context.constraintCount++].contact = i;
+	}
+	/* Colour order (see graph_color.h). */
+	if (context.constraintCount > 1)
+	{
+		int n = context.constraintCount;
+		int* bodyA = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* bodyB = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* colors = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* order = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* contacts = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && contacts != NULL)
+		{
+			for (int i = 0; i < n; ++i)
+			{
+				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
+				const cd2Body* a = world->bodies.data + contact->bodyA;
+				const cd2Body* b = world->bodies.data + contact->bodyB;
+				/* Kinematic bodies are immovable for the solver: no colour. */
+				bodyA[i] = a->type == CD_DYNAMIC_BODY ? a->solverIndex : CD2_NULL_INDEX;
+				bodyB[i] = b->type == CD_DYNAMIC_BODY ? b->solverIndex : CD2_NULL_INDEX;
+				contacts[i] = context.constraints[i].contact;
+			}
+			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
+			{
+				for (int i = 0; i < n; ++i)
+				{
+					context.constraints[i].contact = contacts[order[i]];
+				}
+			}
+		}
 	}
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
 	for (int i = 0; i < world->joints.count && context.joints != NULL; ++i)
