@@ -100,11 +100,11 @@ typedef struct cd2WorldDef
 	cd2Vec gravity;				  /* m/s^2, default (0, -10) */
 	cdReal restitutionThreshold;  /* approach speeds below this do not bounce (1 m/s) */
 	cdReal hitEventThreshold;	  /* approach speed that makes a hit event (1 m/s) */
-	cdReal contactHertz;		  /* contact stiffness (30 Hz, capped at a quarter of the sub-step rate) */
+	cdReal contactHertz;		  /* contact stiffness (30 Hz, capped at an eighth of the sub-step rate) */
 	cdReal contactDampingRatio;	  /* 10 */
 	cdReal contactPushMaxVelocity; /* most speed at which overlap is pushed apart (3 m/s) */
-	cdReal jointHertz;			  /* 60 */
-	cdReal jointDampingRatio;	  /* 2 (5 in Box2D's) */
+	cdReal jointHertz;			  /* 60 (capped at a quarter of the sub-step rate) */
+	cdReal jointDampingRatio;	  /* 2 */
 	cdReal maximumLinearSpeed;	  /* 400 m/s (scaled by the length units) */
 	cdReal lengthUnitsPerMeter;	  /* 0: keep cdGetLengthUnitsPerMeter(); else set it */
 	bool enableSleep;

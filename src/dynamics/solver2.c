@@ -131,7 +131,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	cdReal contactHertz = cdMin(world->contactHertz, CD_R(0.125) * context.inv_h);
 	context.contactSoftness = cd2MakeSoft(contactHertz, world->contactDampingRatio, context.h);
 	context.staticSoftness = cd2MakeSoft(CD_R(2.0) * contactHertz, world->contactDampingRatio, context.h);
-	context.jointSoftness = cd2MakeSoft(CD_R(2.0) * contactHertz, world->jointDampingRatio, context.h);
+	/* Joints: the world's joint stiffness, capped at a quarter of the sub-step rate. */
+	cdReal jointHertz = cdMin(world->jointHertz, CD_R(0.25) * context.inv_h);
+	context.jointSoftness = cd2MakeSoft(jointHertz, world->jointDampingRatio, context.h);
 	context.restitutionThreshold = world->restitutionThreshold;
 	context.maxLinearVelocity = world->maximumLinearSpeed * cdGetLengthUnitsPerMeter();
 	context.contactPushMaxVelocity = world->contactPushMaxVelocity * cdGetLengthUnitsPerMeter();
