@@ -506,13 +506,17 @@ void cd2Body_SetLinearVelocity(cd2BodyId bodyId, cd2Vec velocity)
 {
 	cd2World* world = NULL;
 	cd2Body* body = cd2LookupBody(bodyId, &world, true);
-	if (body == NULL || body->type == CD_STATIC_BODY)
+	if (body == NULL)
 	{
 		return;
 	}
 	if (!cd2IsValidVec(velocity))
 	{
 		CD2_REFUSE("cd2Body_SetLinearVelocity: NaN/Inf velocity");
+		return;
+	}
+	if (body->type == CD_STATIC_BODY)
+	{
 		return;
 	}
 	if (cd2Dot(velocity, velocity) > CD_R(0.0))
@@ -526,13 +530,17 @@ void cd2Body_SetAngularVelocity(cd2BodyId bodyId, cdReal angularVelocity)
 {
 	cd2World* world = NULL;
 	cd2Body* body = cd2LookupBody(bodyId, &world, true);
-	if (body == NULL || body->type == CD_STATIC_BODY || body->fixedRotation)
+	if (body == NULL)
 	{
 		return;
 	}
 	if (!cdIsValidReal(angularVelocity))
 	{
 		CD2_REFUSE("cd2Body_SetAngularVelocity: NaN/Inf");
+		return;
+	}
+	if (body->type == CD_STATIC_BODY || body->fixedRotation)
+	{
 		return;
 	}
 	if (angularVelocity != CD_R(0.0))
@@ -546,13 +554,17 @@ void cd2Body_SetAngularVelocity(cd2BodyId bodyId, cdReal angularVelocity)
 static cd2Body* cd2BodyForPush(cd2BodyId bodyId, cd2World** world, bool wake, bool valid)
 {
 	cd2Body* body = cd2LookupBody(bodyId, world, true);
-	if (body == NULL || body->type != CD_DYNAMIC_BODY)
+	if (body == NULL)
 	{
 		return NULL;
 	}
 	if (!valid)
 	{
 		CD2_REFUSE("NaN/Inf force, torque, impulse or point");
+		return NULL;
+	}
+	if (body->type != CD_DYNAMIC_BODY)
+	{
 		return NULL;
 	}
 	if (!body->awake)
