@@ -584,7 +584,7 @@ static void TestContinuous(void)
 	wd.gravity = CD2_VEC_ZERO;
 	cd2WorldId world = cd2CreateWorld(&wd);
 	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.0)), CD_R(0.05), CD_R(20.0));
-	int crossed = 0, shots = 100;
+	int crossed = 0, shots = 10000;
 	for (int s = 0; s < shots; ++s)
 	{
 		cdReal y = (cdReal)TestRngRange(&rng, -10.0, 10.0);
