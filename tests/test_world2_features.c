@@ -231,6 +231,56 @@ static void TestJointKinds(void)
 	cd2DestroyWorld(world);
 }
 
+/* The generic joint setters: a prismatic slider driven by its motor stops at its limit. */
+static void TestJointSetters(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2BodyId slider = MakeBall(world, CD2_VEC_ZERO, CD_R(0.3), false);
+	cd2PrismaticJointDef pj = cd2DefaultPrismaticJointDef();
+	pj.bodyIdA = ground;
+	pj.bodyIdB = slider;
+	cd2JointId joint = cd2CreatePrismaticJoint(world, &pj);
+	cd2Joint_EnableMotor(joint, true);
+	cd2Joint_SetMaxMotor(joint, CD_R(100.0));
+	cd2Joint_SetMotorSpeed(joint, CD_R(1.0));
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), 1.0, 0.02);
+	TEST_CHECK_NEAR(cd2Body_GetLinearVelocity(slider).x, 1.0, 0.01);
+	cd2Joint_SetLimits(joint, -CD_R(0.5), CD_R(1.5));
+	cd2Joint_EnableLimit(joint, true);
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), 1.5, 0.01);
+	/* Reverse: it runs back to the lower limit. */
+	cd2Joint_SetMotorSpeed(joint, -CD_R(2.0));
+	for (int i = 0; i < 90; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), -0.5, 0.01);
+	TEST_CHECK_NEAR(cd2Body_GetPosition(slider).y, 0.0, 1e-3);
+	/* A spring pulls it back to 0 once the motor is off. */
+	cd2Joint_EnableMotor(joint, false);
+	cd2Joint_EnableSpring(joint, true);
+	cd2Joint_SetSpringHertz(joint, CD_R(2.0));
+	cd2Joint_SetSpringDampingRatio(joint, CD_R(1.0));
+	for (int i = 0; i < 180; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), 0.0, 0.01);
+	cd2DestroyWorld(world);
+}
+
 /* Filter joint and collideConnected: bodies that would collide do not. */
 static void TestFilterJointAndFilters(void)
 {
@@ -672,6 +722,7 @@ int main(void)
 	TEST_RUN(TestPendulumEnergy);
 	TEST_RUN(TestJointReaction);
 	TEST_RUN(TestJointKinds);
+	TEST_RUN(TestJointSetters);
 	TEST_RUN(TestFilterJointAndFilters);
 	TEST_RUN(TestSensorEvents);
 	TEST_RUN(TestContactAndHitEvents);

@@ -483,6 +483,22 @@ CD_API void cd2MotorJoint_SetLinearOffset(cd2JointId jointId, cd2Vec linearOffse
 CD_API void cd2MotorJoint_SetAngularOffset(cd2JointId jointId, cdReal angularOffset);
 CD_API void cd2DistanceJoint_SetLength(cd2JointId jointId, cdReal length);
 CD_API cdReal cd2DistanceJoint_GetCurrentLength(cd2JointId jointId);
+CD_API void cd2DistanceJoint_SetLengthRange(cd2JointId jointId, cdReal minLength, cdReal maxLength);
+/* Springs (distance, revolute, prismatic, wheel): on/off, stiffness and damping ratio. */
+CD_API void cd2Joint_EnableSpring(cd2JointId jointId, bool flag);
+CD_API void cd2Joint_SetSpringHertz(cd2JointId jointId, cdReal hertz);
+CD_API void cd2Joint_SetSpringDampingRatio(cd2JointId jointId, cdReal dampingRatio);
+/* Motors (distance, revolute, prismatic, wheel): maxMotor is a force (distance, prismatic) or a
+ * torque (revolute, wheel); the speed is linear or angular likewise. */
+CD_API void cd2Joint_EnableMotor(cd2JointId jointId, bool flag);
+CD_API void cd2Joint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed);
+CD_API void cd2Joint_SetMaxMotor(cd2JointId jointId, cdReal maxForceOrTorque);
+/* Limits (distance: use cd2DistanceJoint_SetLengthRange; revolute: angles; prismatic and wheel:
+ * translations), lower <= upper. */
+CD_API void cd2Joint_EnableLimit(cd2JointId jointId, bool flag);
+CD_API void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper);
+/* Translation of B's anchor along the axis from A's (prismatic and wheel joints). */
+CD_API cdReal cd2Joint_GetTranslation(cd2JointId jointId);
 
 /* ---- events: arrays valid until the next step -------------------------------------------------- */
 typedef struct cd2ContactBeginTouchEvent

@@ -582,6 +582,10 @@ void cd2RevoluteJoint_EnableMotor(cd2JointId jointId, bool flag)
 	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
 	if (joint != NULL)
 	{
+		if (joint->data.enableMotor != flag)
+		{
+			joint->data.motorImpulse = CD_R(0.0);
+		}
 		joint->data.enableMotor = flag;
 	}
 }
@@ -609,6 +613,11 @@ void cd2RevoluteJoint_EnableLimit(cd2JointId jointId, bool flag)
 	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
 	if (joint != NULL)
 	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
 		joint->data.enableLimit = flag;
 	}
 }
@@ -693,6 +702,153 @@ cdReal cd2DistanceJoint_GetCurrentLength(cd2JointId jointId)
 	cd2Vec pA = cd2TransformPoint(world->bodies.data[joint->bodyA].transform, joint->data.localAnchorA);
 	cd2Vec pB = cd2TransformPoint(world->bodies.data[joint->bodyB].transform, joint->data.localAnchorB);
 	return cd2VecDistance(pA, pB);
+}
+
+void cd2DistanceJoint_SetLengthRange(cd2JointId jointId, cdReal minLength, cdReal maxLength)
+{
+	cd2Joint* joint =
+		cd2JointForSet(jointId, CD2_DISTANCE_JOINT,
+					   cd2NonNeg(minLength) && !(maxLength != maxLength) && minLength <= maxLength);
+	if (joint != NULL)
+	{
+		joint->data.minLength = minLength;
+		joint->data.maxLength = maxLength;
+	}
+}
+
+/* A joint of one of the kinds that have springs, motors or limits, for a setter. */
+static cd2Joint* cd2JointForOption(cd2JointId jointId, bool valid, bool allowWeld)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return NULL;
+	}
+	bool kind = joint->type == CD2_DISTANCE_JOINT || joint->type == CD2_REVOLUTE_JOINT ||
+				joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT ||
+				(allowWeld && joint->type == CD2_WELD_JOINT);
+	if (!kind || !valid)
+	{
+		CD2_REFUSE("joint setter: this joint kind has no such option, or a NaN/Inf/negative value");
+		return NULL;
+	}
+	cd2WakeBody(world, joint->bodyA);
+	cd2WakeBody(world, joint->bodyB);
+	return joint;
+}
+
+void cd2Joint_EnableSpring(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableSpring != flag)
+		{
+			joint->data.springImpulse = CD_R(0.0); /* warm starting must not keep a removed spring */
+		}
+		joint->data.enableSpring = flag;
+	}
+}
+
+void cd2Joint_SetSpringHertz(cd2JointId jointId, cdReal hertz)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(hertz), true);
+	if (joint != NULL)
+	{
+		joint->data.hertz = hertz;
+	}
+}
+
+void cd2Joint_SetSpringDampingRatio(cd2JointId jointId, cdReal dampingRatio)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(dampingRatio), true);
+	if (joint != NULL)
+	{
+		joint->data.dampingRatio = dampingRatio;
+	}
+}
+
+void cd2Joint_EnableMotor(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableMotor != flag)
+		{
+			joint->data.motorImpulse = CD_R(0.0);
+		}
+		joint->data.enableMotor = flag;
+	}
+}
+
+void cd2Joint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2Finite(motorSpeed), false);
+	if (joint != NULL)
+	{
+		joint->data.motorSpeed = motorSpeed;
+	}
+}
+
+void cd2Joint_SetMaxMotor(cd2JointId jointId, cdReal maxForceOrTorque)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(maxForceOrTorque), false);
+	if (joint != NULL)
+	{
+		joint->data.maxMotorForce = maxForceOrTorque;
+	}
+}
+
+void cd2Joint_EnableLimit(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
+		joint->data.enableLimit = flag;
+	}
+}
+
+void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
+{
+	cd2Joint* joint =
+		cd2JointForOption(jointId, cd2Finite(lower) && cd2Finite(upper) && lower <= upper, false);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (joint->type == CD2_DISTANCE_JOINT)
+	{
+		CD2_REFUSE("cd2Joint_SetLimits: use cd2DistanceJoint_SetLengthRange for distance joints");
+		return;
+	}
+	if (joint->type == CD2_REVOLUTE_JOINT)
+	{
+		lower = cdClamp(lower, -CD_PI, CD_PI);
+		upper = cdClamp(upper, -CD_PI, CD_PI);
+	}
+	joint->data.lower = lower;
+	joint->data.upper = upper;
+}
+
+cdReal cd2Joint_GetTranslation(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	if (joint == NULL || (joint->type != CD2_PRISMATIC_JOINT && joint->type != CD2_WHEEL_JOINT))
+	{
+		return CD_R(0.0);
+	}
+	const cd2Body* a = world->bodies.data + joint->bodyA;
+	const cd2Body* b = world->bodies.data + joint->bodyB;
+	cd2Vec pA = cd2TransformPoint(a->transform, joint->data.localAnchorA);
+	cd2Vec pB = cd2TransformPoint(b->transform, joint->data.localAnchorB);
+	return cd2Dot(cd2RotateVector(a->transform.q, joint->data.localAxisA), cd2Sub(pB, pA));
 }
 
 /* ---- solver dispatch ----------------------------------------------------------------------------- */
