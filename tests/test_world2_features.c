@@ -717,6 +717,76 @@ static void TestBodyControls(void)
 	cd2DestroyWorld(world);
 }
 
+typedef struct DrawCount
+{
+	int polygons, circles, capsules, segments, points;
+} DrawCount;
+
+static void CountPolygon(const cd2Vec* vertices, int count, cdReal radius, uint32_t color, void* context)
+{
+	(void)vertices;
+	(void)radius;
+	(void)color;
+	TEST_CHECK(count == 4);
+	((DrawCount*)context)->polygons += 1;
+}
+
+static void CountCircle(cd2Transform transform, cdReal radius, uint32_t color, void* context)
+{
+	(void)transform;
+	(void)color;
+	TEST_CHECK_NEAR(radius, 0.5, 0.0);
+	((DrawCount*)context)->circles += 1;
+}
+
+static void CountSegment(cd2Vec p1, cd2Vec p2, uint32_t color, void* context)
+{
+	(void)p1;
+	(void)p2;
+	(void)color;
+	((DrawCount*)context)->segments += 1;
+}
+
+static void CountPoint(cd2Vec p, cdReal size, uint32_t color, void* context)
+{
+	(void)p;
+	(void)size;
+	(void)color;
+	((DrawCount*)context)->points += 1;
+}
+
+static void TestDebugDraw(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), false);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId anchor = cd2CreateBody(world, &bd);
+	cd2DistanceJointDef dj = cd2DefaultDistanceJointDef();
+	dj.bodyIdA = anchor;
+	dj.bodyIdB = ball;
+	dj.length = CD_R(3.0);
+	cd2CreateDistanceJoint(world, &dj);
+	cd2World_Step(world, DT, 4);
+	DrawCount count;
+	memset(&count, 0, sizeof(count));
+	cd2DebugDraw draw = cd2DefaultDebugDraw();
+	draw.drawPolygon = CountPolygon;
+	draw.drawCircle = CountCircle;
+	draw.drawSegment = CountSegment;
+	draw.drawPoint = CountPoint;
+	draw.drawContacts = true;
+	draw.drawAabbs = true;
+	draw.context = &count;
+	cd2World_Draw(world, &draw);
+	TEST_CHECK(count.polygons == 1);
+	TEST_CHECK(count.circles == 1);
+	TEST_CHECK(count.points == 1);				 /* the ball's contact with the ground */
+	TEST_CHECK(count.segments == 2 * 4 + 3 + 1); /* two boxes, the joint, the contact normal */
+	cd2DestroyWorld(world);
+}
+
 int main(void)
 {
 	TEST_RUN(TestPendulumEnergy);
@@ -731,5 +801,6 @@ int main(void)
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
 	TEST_RUN(TestBodyControls);
+	TEST_RUN(TestDebugDraw);
 	return TEST_SUMMARY();
 }

@@ -610,6 +610,26 @@ CD_API void cd2World_CastRay(cd2WorldId worldId, cd2Vec origin, cd2Vec translati
 CD_API void cd2World_CastShape(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation,
 							   cd2QueryFilter filter, cd2CastResultFcn* fcn, void* context);
 
+/* ---- debug draw ------------------------------------------------------------------------------
+ * cd2World_Draw calls these for what the flags select, in world coordinates; any callback may be
+ * NULL. Colours are 0xRRGGBB: static bodies grey, kinematic blue, awake dynamic bodies orange,
+ * sleeping ones dim, sensors yellow, joints teal, contact points red (normals green), AABBs
+ * purple. For the tool's SVG/PNG frames, the web demos and your own renderer. */
+typedef struct cd2DebugDraw
+{
+	/* A solid convex polygon (its vertices) grown by radius (0: sharp). */
+	void (*drawPolygon)(const cd2Vec* vertices, int count, cdReal radius, uint32_t color, void* context);
+	void (*drawCircle)(cd2Transform transform, cdReal radius, uint32_t color, void* context);
+	void (*drawCapsule)(cd2Vec p1, cd2Vec p2, cdReal radius, uint32_t color, void* context);
+	void (*drawSegment)(cd2Vec p1, cd2Vec p2, uint32_t color, void* context);
+	void (*drawPoint)(cd2Vec p, cdReal size, uint32_t color, void* context);
+	bool drawShapes, drawJoints, drawAabbs, drawContacts;
+	void* context;
+} cd2DebugDraw;
+
+CD_API cd2DebugDraw cd2DefaultDebugDraw(void); /* no callbacks; shapes and joints on */
+CD_API void cd2World_Draw(cd2WorldId worldId, const cd2DebugDraw* draw);
+
 /* ---- snapshots ---------------------------------------------------------------------------------
  * The whole simulation state (bodies, shapes, contacts with their warm-start impulses, joints,
  * sleeping islands, the broadphase's boxes) in a flat buffer. Restoring it into the same world
