@@ -717,6 +717,96 @@ static void TestBodyControls(void)
 	cd2DestroyWorld(world);
 }
 
+typedef struct PlaneList
+{
+	cd2PlaneResult planes[16];
+	int count;
+} PlaneList;
+
+static bool CollectPlane(const cd2PlaneResult* plane, void* context)
+{
+	PlaneList* list = (PlaneList*)context;
+	if (list->count < 16)
+	{
+		list->planes[list->count++] = *plane;
+	}
+	return true;
+}
+
+static cd2Capsule MoverAt(cd2Vec bottom)
+{
+	cd2Capsule c = {cd2Add(bottom, cd2MakeVec(CD_R(0.0), CD_R(0.3))),
+					cd2Add(bottom, cd2MakeVec(CD_R(0.0), CD_R(1.0))), CD_R(0.3)};
+	return c;
+}
+
+/* One frame of the character mover loop of world2.h. */
+static void MoveCharacter(cd2WorldId world, cd2Vec* position, cd2Vec* velocity, cdReal dt)
+{
+	cd2QueryFilter filter = cd2DefaultQueryFilter();
+	cd2Vec target = cd2MulAdd(*position, dt, *velocity);
+	PlaneList list;
+	list.count = 0;
+	for (int i = 0; i < 4; ++i)
+	{
+		list.count = 0;
+		cd2Capsule atTarget = MoverAt(target);
+		cd2World_CollideMover(world, &atTarget, filter, CollectPlane, &list);
+		target = cd2Add(target, cd2SolvePlanes(CD2_VEC_ZERO, list.planes, list.count));
+	}
+	cd2Capsule atPosition = MoverAt(*position);
+	cdReal t = cd2World_CastMover(world, &atPosition, cd2Sub(target, *position), filter);
+	*position = cd2Lerp(*position, target, t);
+	*velocity = cd2ClipVector(*velocity, list.planes, list.count);
+}
+
+/* The mover walks along the ground into a wall and stops there; walks up a 20 degree slope. */
+static void TestMover(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	MakeStaticBox(world, cd2MakeVec(CD_R(5.0), CD_R(1.5)), CD_R(0.5), CD_R(1.5)); /* wall face at x = 4.5 */
+	cdReal slope = (cdReal)tan(20.0 * 3.14159265358979 / 180.0);
+	{
+		cd2BodyDef bd = cd2DefaultBodyDef();
+		cd2BodyId ramp = cd2CreateBody(world, &bd);
+		cd2Vec points[3] = {
+			{-CD_R(3.0), CD_R(0.0)}, {-CD_R(13.0), CD_R(0.0)}, {-CD_R(13.0), CD_R(10.0) * slope}};
+		cd2Polygon triangle;
+		TEST_CHECK(cd2MakePolygon(points, 3, &triangle) == CD_OK);
+		cd2ShapeDef sd = cd2DefaultShapeDef();
+		cd2CreatePolygonShape(ramp, &sd, &triangle);
+	}
+	cdReal dt = CD_R(1.0) / CD_R(60.0);
+	cd2Vec position = cd2MakeVec(CD_R(0.0), CD_R(0.5)); /* starts in the air: falls to the ground */
+	cd2Vec velocity = CD2_VEC_ZERO;
+	for (int i = 0; i < 180; ++i)
+	{
+		velocity.x = CD_R(3.0);
+		velocity.y -= CD_R(10.0) * dt;
+		MoveCharacter(world, &position, &velocity, dt);
+		TEST_CHECK(position.y > -CD_R(0.02));
+	}
+	TEST_CHECK_NEAR(position.x, 4.2, 0.03);
+	TEST_CHECK_NEAR(position.y, 0.0, 0.03);
+	TEST_CHECK(cdAbs(velocity.y) < CD_R(0.2)); /* standing, not accumulating a fall */
+	/* Back to the left and up the slope. */
+	position = cd2MakeVec(-CD_R(2.0), CD_R(0.0));
+	velocity = CD2_VEC_ZERO;
+	for (int i = 0; i < 120; ++i)
+	{
+		velocity.x = -CD_R(3.0);
+		velocity.y -= CD_R(10.0) * dt;
+		MoveCharacter(world, &position, &velocity, dt);
+	}
+	cdReal ground = (-CD_R(3.0) - position.x) * slope;
+	TEST_CHECKF(position.x < -CD_R(6.0) && position.y > CD_R(1.0), "mover at %g %g", (double)position.x,
+				(double)position.y);
+	TEST_CHECK_NEAR(position.y, ground, 0.05);
+	cd2DestroyWorld(world);
+}
+
 typedef struct DrawCount
 {
 	int polygons, circles, capsules, segments, points;
@@ -802,5 +892,6 @@ int main(void)
 	TEST_RUN(TestContinuous);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);
+	TEST_RUN(TestMover);
 	return TEST_SUMMARY();
 }
