@@ -476,6 +476,70 @@ static bool RejectAll(cd2ShapeId a, cd2ShapeId b, void* context)
 	return false;
 }
 
+typedef struct LockProbe
+{
+	cd2WorldId world;
+	cd2BodyId body;
+	int calls;
+} LockProbe;
+
+static int g_lockRefusals;
+
+static bool CountLockRefusal(const char* condition, const char* fileName, int lineNumber)
+{
+	(void)condition;
+	(void)fileName;
+	(void)lineNumber;
+	++g_lockRefusals;
+	return false;
+}
+
+/* Tries to change the world from inside the step. */
+static bool MutateDuringStep(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold,
+							 void* context)
+{
+	(void)shapeIdA;
+	(void)shapeIdB;
+	(void)manifold;
+	LockProbe* probe = (LockProbe*)context;
+	probe->calls += 1;
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	TEST_CHECK(cd2IsNullBodyId(cd2CreateBody(probe->world, &bd)));
+	cd2Body_SetLinearVelocity(probe->body, cd2MakeVec(CD_R(100.0), CD_R(0.0)));
+	cd2DestroyBody(probe->body);
+	cd2World_Step(probe->world, CD_R(1.0) / CD_R(60.0), 4);
+	return true;
+}
+
+/* The world is locked during the step: calls from a callback are refused. */
+static void TestLockedWorld(void)
+{
+	cdSetAssertFcn(CountLockRefusal);
+	g_lockRefusals = 0;
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.enablePreSolveEvents = true;
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(-1.0)}, {CD_R(10.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}},
+					  &box);
+	cd2CreatePolygonShape(ground, &sd, &box);
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), false);
+	LockProbe probe = {world, ball, 0};
+	cd2World_SetPreSolveCallback(world, MutateDuringStep, &probe);
+	cd2World_Step(world, CD_R(1.0) / CD_R(60.0), 4);
+	TEST_CHECK(probe.calls == 1);
+	TEST_CHECK(g_lockRefusals == 4);
+	TEST_CHECK(cd2Body_IsValid(ball));
+	TEST_CHECK(cdAbs(cd2Body_GetLinearVelocity(ball).x) < CD_R(0.01));
+	TEST_CHECK(cd2World_GetCounters(world).bodyCount == 2);
+	cd2World_SetPreSolveCallback(world, NULL, NULL);
+	cd2DestroyWorld(world);
+	cdSetAssertFcn(NULL);
+}
+
 static void TestPreSolveAndCustomFilter(void)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
@@ -887,6 +951,7 @@ int main(void)
 	TEST_RUN(TestSensorEvents);
 	TEST_RUN(TestContactAndHitEvents);
 	TEST_RUN(TestPreSolveAndCustomFilter);
+	TEST_RUN(TestLockedWorld);
 	TEST_RUN(TestQueries);
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
