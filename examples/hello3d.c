@@ -24,7 +24,7 @@ int main(void)
 	cdResult r = cd3MakeCylinderHull(CD_R(0.5), CD_R(0.4), 16, &cylinder);
 	if (r != CD_OK)
 	{
-		printf("cd3MakeCylinderHull: %s\n", cdResultString(r));
+		printf("cd3MakeCylinderHull: %s\n", cdGetResultString(r));
 		return 1;
 	}
 	/* The cylinder's axis is y: standing upright, turned a little about its axis. */

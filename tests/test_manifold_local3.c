@@ -71,7 +71,7 @@ static bool SameBits(cd3Manifold m, cd3Manifold n)
 	return true;
 }
 
-/* The typed pair function of (a, b) in both forms, when a and b are in manifold order and have one
+/* The typed pair function of (a, b) in both forms, when a and b are in canonical order and have one
  * (AABBs go through cd3Collide only). */
 static bool TypedPair(const cd3Shape* a, const cd3Shape* b, cd3Transform xf, cdReal d, cd3Manifold* local,
 					  cd3Manifold* world)
@@ -98,7 +98,7 @@ static bool TypedPair(const cd3Shape* a, const cd3Shape* b, cd3Transform xf, cdR
 	PAIR(CD3_SHAPE_BOX, CD3_SHAPE_HULL, cd3CollideBoxHull, box, hull)
 	PAIR(CD3_SHAPE_BOX, CD3_SHAPE_TRIANGLE, cd3CollideBoxTriangle, box, triangle)
 	PAIR(CD3_SHAPE_HULL, CD3_SHAPE_HULL, cd3CollideHullHull, hull, hull)
-	PAIR(CD3_SHAPE_HULL, CD3_SHAPE_TRIANGLE, cd3CollideHullTriangle, hull, triangle)
+	PAIR(CD3_SHAPE_TRIANGLE, CD3_SHAPE_HULL, cd3CollideTriangleHull, triangle, hull)
 	PAIR(CD3_SHAPE_TRIANGLE, CD3_SHAPE_TRIANGLE, cd3CollideTriangleTriangle, triangle, triangle)
 #undef PAIR
 	return false;

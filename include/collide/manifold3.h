@@ -19,7 +19,8 @@
  *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
- * order Sphere, Capsule, Box, Hull, Triangle; cd3Collide takes tagged shapes in either order. */
+ * canonical order of cd3ShapeType (Sphere, Capsule, Box, Triangle, Hull); cd3Collide takes tagged
+ * shapes in either order. */
 #ifndef COLLIDE_MANIFOLD3_H
 #define COLLIDE_MANIFOLD3_H
 
@@ -66,7 +67,8 @@ CD_API cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistan
 CD_API cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideBoxTriangle(cd3Box a, cd3Triangle b, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideHullHull(cd3HullShape a, cd3HullShape b, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance);
+/* The triangle is A: the normal points from the triangle to the hull. */
+CD_API cd3Manifold cd3CollideTriangleHull(cd3Triangle a, cd3HullShape b, cdReal speculativeDistance);
 /* Two two-sided triangles, the normal from A to B: up to 4 points of a face clipped against the
  * other (parallel or crossing faces), one point for edge or vertex contacts. Crossing triangles
  * get the axis of least overlap (face normals, edge-edge axes) as normal, read in the direction
@@ -104,7 +106,7 @@ CD_API cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, c
 CD_API cd3Manifold cd3CollideBoxHullLocal(cd3Box a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideBoxTriangleLocal(cd3Box a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideHullTriangleLocal(cd3HullShape a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
 /* cd3Collide in A's frame: either order, as cd3Collide. */
 CD_API cd3Manifold cd3CollideLocal(const cd3Shape* a, const cd3Shape* b, cd3Transform xfB,
@@ -121,6 +123,10 @@ static inline cd3Manifold cd3TransformManifold(cd3Transform xf, cd3Manifold m)
 	}
 	return m;
 }
+
+/* Former name and order (hull first, normal from the hull to the triangle), kept for one release:
+ * cd3CollideHullTriangle(h, t, d) is cd3CollideTriangleHull(t, h, d) with the opposite normal. */
+CD_API cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance);
 
 #ifdef __cplusplus
 }

@@ -104,9 +104,18 @@ cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform
 	return cd3CollideHullHull(a, HullIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideHullTriangleLocal(cd3HullShape a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance)
+/* The pair in canonical order (triangle first): the hull-triangle manifold with the opposite
+ * normal, as cd3Collide reports a swapped pair (same points, separations and ids). */
+cd3Manifold cd3CollideTriangleHull(cd3Triangle a, cd3HullShape b, cdReal speculativeDistance)
 {
-	return cd3CollideHullTriangle(a, TriangleIn(xfB, b), speculativeDistance);
+	cd3Manifold m = cd3CollideHullTriangle(b, a, speculativeDistance);
+	m.normal = cd3Neg(m.normal);
+	return m;
+}
+
+cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance)
+{
+	return cd3CollideTriangleHull(a, HullIn(xfB, b), speculativeDistance);
 }
 
 cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance)
