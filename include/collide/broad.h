@@ -7,7 +7,7 @@
  *   CD_BROADPHASE_GRID          uniform hash grid, for many objects of similar size
  *   CD_BROADPHASE_SPATIAL_TREE  quadtree (2D) / octree (3D)
  * Every structure gives the same answers (tests compare each with brute force); they differ in
- * speed and memory per scene (docs/PERFORMANCE.md says which suits what).
+ * speed and memory per scene (docs/BROADPHASE.md says which suits what).
  *
  * Proxies store a fat box: the tight box grown by a margin and stretched along the predicted
  * displacement, so that most small moves change nothing. Queries, ray casts and pairs work on

@@ -11,11 +11,16 @@
  *
  * Depth: for penetrating pairs the smallest separation is minus the penetration depth, found by
  * the separating axis test (face normals and the edge pairs that form faces of the Minkowski
- * difference), which is exact for polytopes (EPA for polytopes with many edge pairs). The
- * reference face is chosen with a small bias for stability from frame to frame (A's face over B's,
- * faces over edges) within 1e-3 of the shapes' size; the points' separations are then shifted
- * (each point kept on A's side) so that the smallest equals the exact SAT/EPA depth. For separated
- * pairs the smallest separation is the distance (cd3Distance).
+ * difference), which is exact for polytopes (EPA for polytopes with many edge pairs).
+ *
+ * Face bias (the one statement of this rule; docs/API.md links here): the reference feature is
+ * chosen with a bias for stability from frame to frame. A's face is kept unless B's face separates
+ * by more than 1e-4 of twice the smaller shape's size; a face is kept unless an edge pair separates
+ * by more than 1e-4 of the two shapes' summed size (at most 16 times the smaller's). Both sizes are
+ * at least the round-off of the coordinates (src/query/manifold3.c: FACE_BIAS, EDGE_BIAS,
+ * FaceTieSize, EdgeTieSize). The points' separations are then shifted (each point kept on A's
+ * side) so that the smallest equals the exact SAT/EPA depth. For separated pairs the smallest
+ * separation is the distance (cd3Distance).
  *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
