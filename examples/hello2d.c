@@ -18,7 +18,8 @@ int main(void)
 {
 	/* The ground: a wide box polygon centred at the origin (top face at y = 0.5). */
 	cd2Polygon ground;
-	cd2Box groundBox = {cd2MakeVec(CD_R(0.0), CD_R(0.0)), cd2MakeVec(CD_R(10.0), CD_R(0.5)), CD2_ROT_IDENTITY};
+	cd2Box groundBox = {cd2MakeVec(CD_R(0.0), CD_R(0.0)), cd2MakeVec(CD_R(10.0), CD_R(0.5)),
+						CD2_ROT_IDENTITY};
 	if (cd2MakeBoxPolygon(groundBox, &ground) != CD_OK)
 	{
 		return 1;
@@ -50,8 +51,8 @@ int main(void)
 	cd2Ray ray = {cd2MakeVec(CD_R(0.0), CD_R(5.0)), cd2MakeVec(CD_R(0.0), CD_R(-10.0))};
 	cd2RayHit hit;
 	bool hitBox = cd2Raycast(&sBox, ray, &hit);
-	printf("ray hits the box at (%.2f, %.2f), normal (%.1f, %.1f)\n", (double)hit.point.x, (double)hit.point.y,
-		   (double)hit.normal.x, (double)hit.normal.y);
+	printf("ray hits the box at (%.2f, %.2f), normal (%.1f, %.1f)\n", (double)hit.point.x,
+		   (double)hit.point.y, (double)hit.normal.x, (double)hit.normal.y);
 	Expect(hitBox && cdAbs(hit.point.y - CD_R(1.49)) < CD_R(1e-4), "ray hits the top of the box");
 
 	/* The contact manifold between ground and box: two points along the bottom face, 0.01 deep. */
@@ -64,7 +65,8 @@ int main(void)
 		printf("  point (%.3f, %.3f) separation %.4f id %08x\n", (double)m.points[i].point.x,
 			   (double)m.points[i].point.y, (double)m.points[i].separation, (unsigned)m.points[i].id);
 	}
-	Expect(m.pointCount == 2 && cdAbs(m.points[0].separation + CD_R(0.01)) < CD_R(1e-4), "two contact points");
+	Expect(m.pointCount == 2 && cdAbs(m.points[0].separation + CD_R(0.01)) < CD_R(1e-4),
+		   "two contact points");
 
 	/* The same contact as a physics step computes it: shapes in body frames, the box body's
 	 * transform relative to the ground body, the manifold in the ground's frame. */
@@ -76,8 +78,8 @@ int main(void)
 	}
 	cd2Transform groundBody = CD2_TRANSFORM_IDENTITY;
 	cd2Transform boxBody = {cd2MakeVec(CD_R(0.0), CD_R(0.99)), CD2_ROT_IDENTITY};
-	cd2Manifold ml = cd2CollidePolygonPolygonLocal(&ground, &localBox, cd2InvMulTransforms(groundBody, boxBody),
-												   speculative);
+	cd2Manifold ml = cd2CollidePolygonPolygonLocal(&ground, &localBox,
+												   cd2InvMulTransforms(groundBody, boxBody), speculative);
 	ml = cd2TransformManifold(groundBody, ml);
 	Expect(ml.pointCount == m.pointCount && ml.points[0].id == m.points[0].id &&
 			   cdAbs(ml.points[0].separation - m.points[0].separation) < CD_R(1e-5),

@@ -83,7 +83,8 @@ static bool Near(cd2Manifold m, cd2Manifold n, double tolerance)
 	}
 	for (int i = 0; i < m.pointCount; ++i)
 	{
-		if (m.points[i].id != n.points[i].id || cd2Length(cd2Sub(m.points[i].point, n.points[i].point)) > tolerance ||
+		if (m.points[i].id != n.points[i].id ||
+			cd2Length(cd2Sub(m.points[i].point, n.points[i].point)) > tolerance ||
 			fabs((double)m.points[i].separation - (double)n.points[i].separation) > tolerance)
 		{
 			return false;
@@ -95,7 +96,8 @@ static bool Near(cd2Manifold m, cd2Manifold n, double tolerance)
 /* The pairs whose local form moves A into B's frame (manifold2.h): equal within round-off. */
 static bool MovesA(cd2ShapeType a, cd2ShapeType b)
 {
-	return b == CD2_SHAPE_POLYGON && (a == CD2_SHAPE_CIRCLE || a == CD2_SHAPE_CAPSULE || a == CD2_SHAPE_SEGMENT);
+	return b == CD2_SHAPE_POLYGON &&
+		   (a == CD2_SHAPE_CIRCLE || a == CD2_SHAPE_CAPSULE || a == CD2_SHAPE_SEGMENT);
 }
 
 /* The typed pair function of (a, b) in both forms, when a and b are in canonical order and have
@@ -147,14 +149,15 @@ static void TestSameAsWorldForm(void)
 				cd2Manifold local = cd2CollideLocal(&a, &b, xf, d);
 				cd2Manifold world = cd2Collide(&a, &w, d);
 				bool exact = !MovesA(a.type, b.type);
-				TEST_CHECKF(exact ? SameBits(local, world) : Near(local, world, 8e-6), "%s-%s case %d: %d vs %d points",
-							TypeName(a.type), TypeName(b.type), i, local.pointCount, world.pointCount);
+				TEST_CHECKF(exact ? SameBits(local, world) : Near(local, world, 8e-6),
+							"%s-%s case %d: %d vs %d points", TypeName(a.type), TypeName(b.type), i,
+							local.pointCount, world.pointCount);
 				cd2Manifold tl, tw;
 				if (TypedPair(&a, &b, xf, d, &tl, &tw))
 				{
 					++typed;
-					TEST_CHECKF(exact ? SameBits(tl, tw) : Near(tl, tw, 8e-6), "typed %s-%s case %d", TypeName(a.type),
-								TypeName(b.type), i);
+					TEST_CHECKF(exact ? SameBits(tl, tw) : Near(tl, tw, 8e-6), "typed %s-%s case %d",
+								TypeName(a.type), TypeName(b.type), i);
 				}
 			}
 		}
@@ -225,7 +228,8 @@ static void TestMovedBodies(void)
 				{
 					double e = fmax(fabs((double)world.points[k].point.x - (double)local.points[k].point.x),
 									fabs((double)world.points[k].point.y - (double)local.points[k].point.y));
-					e = fmax(e, fabs((double)world.points[k].separation - (double)local.points[k].separation));
+					e = fmax(e,
+							 fabs((double)world.points[k].separation - (double)local.points[k].separation));
 					worst = fmax(worst, e / scale);
 				}
 				if (world.pointCount > 0)
@@ -233,14 +237,14 @@ static void TestMovedBodies(void)
 					double e = cd2Length(cd2Sub(world.normal, local.normal));
 					/* The normal of a short feature may turn by more than the coordinates' round-off:
 					 * points and separations above are what a solver uses. */
-					TEST_CHECKF(e < 1e-2, "%s-%s case %d normal differs by %g", TypeName(a.type), TypeName(b.type),
-								i, e);
+					TEST_CHECKF(e < 1e-2, "%s-%s case %d normal differs by %g", TypeName(a.type),
+								TypeName(b.type), i, e);
 				}
 			}
 		}
 	}
-	printf("moved bodies: %d pairs, %d near ties, worst relative difference %.3g (tolerance %.3g)\n", cases, ties,
-		   worst, tolerance);
+	printf("moved bodies: %d pairs, %d near ties, worst relative difference %.3g (tolerance %.3g)\n", cases,
+		   ties, worst, tolerance);
 	TEST_CHECKF(ties * 100 <= cases, "%d of %d pairs differ in points or ids", ties, cases);
 	TEST_CHECKF(worst <= tolerance, "worst %g", worst);
 }

@@ -62,8 +62,8 @@ static bool SameBits(cd3Manifold m, cd3Manifold n)
 	}
 	for (int i = 0; i < m.pointCount; ++i)
 	{
-		if (!cd3VecEqual(m.points[i].point, n.points[i].point) || m.points[i].separation != n.points[i].separation ||
-			m.points[i].id != n.points[i].id)
+		if (!cd3VecEqual(m.points[i].point, n.points[i].point) ||
+			m.points[i].separation != n.points[i].separation || m.points[i].id != n.points[i].id)
 		{
 			return false;
 		}
@@ -127,7 +127,8 @@ static void TestSameAsWorldForm(void)
 				if (TypedPair(&a, &b, xf, d, &tl, &tw))
 				{
 					++typed;
-					TEST_CHECKF(SameBits(tl, tw), "typed %s-%s case %d", TypeName(a.type), TypeName(b.type), i);
+					TEST_CHECKF(SameBits(tl, tw), "typed %s-%s case %d", TypeName(a.type), TypeName(b.type),
+								i);
 				}
 			}
 		}
@@ -176,14 +177,15 @@ static void TestMovedBodies(void)
 				{
 					cd3Vec dp = cd3Sub(world.points[k].point, local.points[k].point);
 					double e = fmax(fabs((double)dp.x), fmax(fabs((double)dp.y), fabs((double)dp.z)));
-					e = fmax(e, fabs((double)world.points[k].separation - (double)local.points[k].separation));
+					e = fmax(e,
+							 fabs((double)world.points[k].separation - (double)local.points[k].separation));
 					worst = fmax(worst, e / scale);
 				}
 			}
 		}
 	}
-	printf("moved bodies: %d pairs, %d near ties, worst relative difference %.3g (tolerance %.3g)\n", cases, ties,
-		   worst, tolerance);
+	printf("moved bodies: %d pairs, %d near ties, worst relative difference %.3g (tolerance %.3g)\n", cases,
+		   ties, worst, tolerance);
 	TEST_CHECKF(ties * 50 <= cases, "%d of %d pairs differ in points or ids", ties, cases);
 	TEST_CHECKF(worst <= tolerance, "worst %g", worst);
 }
@@ -200,21 +202,24 @@ static void TestFarFromOrigin(void)
 	for (int i = 0; i < 300; ++i)
 	{
 		double far = TestRngRange(&rng, 1.0e4, 1.0e5);
-		cd3Transform xfA = {cd3MakeVec((cdReal)far, (cdReal)(-0.6 * far), (cdReal)(0.3 * far)), CD3_QUAT_IDENTITY};
+		cd3Transform xfA = {cd3MakeVec((cdReal)far, (cdReal)(-0.6 * far), (cdReal)(0.3 * far)),
+							CD3_QUAT_IDENTITY};
 		cdReal gap = RandomReal(&rng, 0.001, 0.05);
 		cdReal h = RandomReal(&rng, 0.2, 1.0);
 		int kind = TestRngInt(&rng, 3);
 		cdReal hb = kind == 2 ? CD_R(0.5) : RandomReal(&rng, 0.2, 1.0);
-		cd3Transform xfB = {cd3Add(xfA.p, cd3MakeVec(RandomReal(&rng, -0.1, 0.1), h + gap + hb,
-													  RandomReal(&rng, -0.1, 0.1))),
-							CD3_QUAT_IDENTITY};
+		cd3Transform xfB = {
+			cd3Add(xfA.p, cd3MakeVec(RandomReal(&rng, -0.1, 0.1), h + gap + hb, RandomReal(&rng, -0.1, 0.1))),
+			CD3_QUAT_IDENTITY};
 		cd3Transform xfRel = cd3InvMulTransforms(xfA, xfB);
 		cdReal trueGap = (xfB.p.y - xfA.p.y) - h - hb;
-		cd3Shape a = cd3MakeBoxShape((cd3Box){CD3_VEC_ZERO, cd3MakeVec(CD_R(2.0), h, CD_R(2.0)), CD3_QUAT_IDENTITY});
+		cd3Shape a =
+			cd3MakeBoxShape((cd3Box){CD3_VEC_ZERO, cd3MakeVec(CD_R(2.0), h, CD_R(2.0)), CD3_QUAT_IDENTITY});
 		cd3Shape b;
 		if (kind == 0)
 		{
-			b = cd3MakeBoxShape((cd3Box){CD3_VEC_ZERO, cd3MakeVec(CD_R(0.5), hb, CD_R(0.5)), CD3_QUAT_IDENTITY});
+			b = cd3MakeBoxShape(
+				(cd3Box){CD3_VEC_ZERO, cd3MakeVec(CD_R(0.5), hb, CD_R(0.5)), CD3_QUAT_IDENTITY});
 		}
 		else if (kind == 1)
 		{
@@ -227,7 +232,8 @@ static void TestFarFromOrigin(void)
 		cd3Manifold local = cd3CollideLocal(&a, &b, xfRel, CD_R(0.1));
 		cd3Shape wa = Place(&a, xfA), wb = Place(&b, xfB);
 		cd3Manifold world = cd3Collide(&wa, &wb, CD_R(0.1));
-		TEST_CHECKF(local.pointCount == (kind == 1 ? 1 : 4), "case %d kind %d: %d points", i, kind, local.pointCount);
+		TEST_CHECKF(local.pointCount == (kind == 1 ? 1 : 4), "case %d kind %d: %d points", i, kind,
+					local.pointCount);
 		for (int k = 0; k < local.pointCount; ++k)
 		{
 			worstLocal = fmax(worstLocal, fabs((double)local.points[k].separation - (double)trueGap));

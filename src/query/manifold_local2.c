@@ -59,12 +59,14 @@ static inline cd2ChainSegment ChainSegmentIn(cd2Transform xf, const cd2ChainSegm
 	return s;
 }
 
-cd2Manifold cd2CollideCircleCircleLocal(cd2Circle a, cd2Circle b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideCircleCircleLocal(cd2Circle a, cd2Circle b, cd2Transform xfB,
+										cdReal speculativeDistance)
 {
 	return cd2CollideCircleCircle(a, CircleIn(xfB, b), speculativeDistance);
 }
 
-cd2Manifold cd2CollideCircleCapsuleLocal(cd2Circle a, cd2Capsule b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideCircleCapsuleLocal(cd2Circle a, cd2Capsule b, cd2Transform xfB,
+										 cdReal speculativeDistance)
 {
 	return cd2CollideCircleCapsule(a, CapsuleIn(xfB, b), speculativeDistance);
 }
@@ -73,15 +75,18 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 										 cdReal speculativeDistance)
 {
 	CD_ASSERT(b != NULL);
-	return cd2TransformManifold(xfB, cd2CollideCirclePolygon(CircleIn(Inverse(xfB), a), b, speculativeDistance));
+	return cd2TransformManifold(xfB,
+								cd2CollideCirclePolygon(CircleIn(Inverse(xfB), a), b, speculativeDistance));
 }
 
-cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Transform xfB,
+										 cdReal speculativeDistance)
 {
 	return cd2CollideCircleSegment(a, SegmentIn(xfB, b), speculativeDistance);
 }
 
-cd2Manifold cd2CollideCapsuleCapsuleLocal(cd2Capsule a, cd2Capsule b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideCapsuleCapsuleLocal(cd2Capsule a, cd2Capsule b, cd2Transform xfB,
+										  cdReal speculativeDistance)
 {
 	return cd2CollideCapsuleCapsule(a, CapsuleIn(xfB, b), speculativeDistance);
 }
@@ -90,10 +95,12 @@ cd2Manifold cd2CollideCapsulePolygonLocal(cd2Capsule a, const cd2Polygon* b, cd2
 										  cdReal speculativeDistance)
 {
 	CD_ASSERT(b != NULL);
-	return cd2TransformManifold(xfB, cd2CollideCapsulePolygon(CapsuleIn(Inverse(xfB), a), b, speculativeDistance));
+	return cd2TransformManifold(xfB,
+								cd2CollideCapsulePolygon(CapsuleIn(Inverse(xfB), a), b, speculativeDistance));
 }
 
-cd2Manifold cd2CollideCapsuleSegmentLocal(cd2Capsule a, cd2Segment b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideCapsuleSegmentLocal(cd2Capsule a, cd2Segment b, cd2Transform xfB,
+										  cdReal speculativeDistance)
 {
 	return cd2CollideCapsuleSegment(a, SegmentIn(xfB, b), speculativeDistance);
 }
@@ -114,7 +121,8 @@ cd2Manifold cd2CollidePolygonSegmentLocal(const cd2Polygon* a, cd2Segment b, cd2
 	return cd2CollidePolygonSegment(a, SegmentIn(xfB, b), speculativeDistance);
 }
 
-cd2Manifold cd2CollideSegmentSegmentLocal(cd2Segment a, cd2Segment b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideSegmentSegmentLocal(cd2Segment a, cd2Segment b, cd2Transform xfB,
+										  cdReal speculativeDistance)
 {
 	return cd2CollideSegmentSegment(a, SegmentIn(xfB, b), speculativeDistance);
 }
@@ -133,15 +141,16 @@ cd2Manifold cd2CollideChainSegmentCapsuleLocal(const cd2ChainSegment* a, cd2Caps
 	return cd2CollideChainSegmentCapsule(a, CapsuleIn(xfB, b), speculativeDistance);
 }
 
-cd2Manifold cd2CollideChainSegmentPolygonLocal(const cd2ChainSegment* a, const cd2Polygon* b, cd2Transform xfB,
-											   cdReal speculativeDistance)
+cd2Manifold cd2CollideChainSegmentPolygonLocal(const cd2ChainSegment* a, const cd2Polygon* b,
+											   cd2Transform xfB, cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
 	cd2ChainSegment c = ChainSegmentIn(Inverse(xfB), a);
 	return cd2TransformManifold(xfB, cd2CollideChainSegmentPolygon(&c, b, speculativeDistance));
 }
 
-cd2Manifold cd2CollideLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB, cdReal speculativeDistance)
+cd2Manifold cd2CollideLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB,
+							cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
 	cd2Shape s;

@@ -38,13 +38,14 @@ static inline cd3Triangle TriangleIn(cd3Transform xf, cd3Triangle t)
 	return t;
 }
 
-
-cd3Manifold cd3CollideSphereSphereLocal(cd3Sphere a, cd3Sphere b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideSphereSphereLocal(cd3Sphere a, cd3Sphere b, cd3Transform xfB,
+										cdReal speculativeDistance)
 {
 	return cd3CollideSphereSphere(a, SphereIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideSphereCapsuleLocal(cd3Sphere a, cd3Capsule b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideSphereCapsuleLocal(cd3Sphere a, cd3Capsule b, cd3Transform xfB,
+										 cdReal speculativeDistance)
 {
 	return cd3CollideSphereCapsule(a, CapsuleIn(xfB, b), speculativeDistance);
 }
@@ -54,17 +55,20 @@ cd3Manifold cd3CollideSphereBoxLocal(cd3Sphere a, cd3Box b, cd3Transform xfB, cd
 	return cd3CollideSphereBox(a, BoxIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideSphereHullLocal(cd3Sphere a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideSphereHullLocal(cd3Sphere a, cd3HullShape b, cd3Transform xfB,
+									  cdReal speculativeDistance)
 {
 	return cd3CollideSphereHull(a, HullIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideSphereTriangleLocal(cd3Sphere a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideSphereTriangleLocal(cd3Sphere a, cd3Triangle b, cd3Transform xfB,
+										  cdReal speculativeDistance)
 {
 	return cd3CollideSphereTriangle(a, TriangleIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideCapsuleCapsuleLocal(cd3Capsule a, cd3Capsule b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideCapsuleCapsuleLocal(cd3Capsule a, cd3Capsule b, cd3Transform xfB,
+										  cdReal speculativeDistance)
 {
 	return cd3CollideCapsuleCapsule(a, CapsuleIn(xfB, b), speculativeDistance);
 }
@@ -74,12 +78,14 @@ cd3Manifold cd3CollideCapsuleBoxLocal(cd3Capsule a, cd3Box b, cd3Transform xfB, 
 	return cd3CollideCapsuleBox(a, BoxIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideCapsuleHullLocal(cd3Capsule a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideCapsuleHullLocal(cd3Capsule a, cd3HullShape b, cd3Transform xfB,
+									   cdReal speculativeDistance)
 {
 	return cd3CollideCapsuleHull(a, HullIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideCapsuleTriangleLocal(cd3Capsule a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideCapsuleTriangleLocal(cd3Capsule a, cd3Triangle b, cd3Transform xfB,
+										   cdReal speculativeDistance)
 {
 	return cd3CollideCapsuleTriangle(a, TriangleIn(xfB, b), speculativeDistance);
 }
@@ -99,7 +105,8 @@ cd3Manifold cd3CollideBoxTriangleLocal(cd3Box a, cd3Triangle b, cd3Transform xfB
 	return cd3CollideBoxTriangle(a, TriangleIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform xfB,
+									cdReal speculativeDistance)
 {
 	return cd3CollideHullHull(a, HullIn(xfB, b), speculativeDistance);
 }
@@ -113,17 +120,20 @@ cd3Manifold cd3CollideTriangleHull(cd3Triangle a, cd3HullShape b, cdReal specula
 	return m;
 }
 
-cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB,
+										cdReal speculativeDistance)
 {
 	return cd3CollideTriangleHull(a, HullIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB,
+											cdReal speculativeDistance)
 {
 	return cd3CollideTriangleTriangle(a, TriangleIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideLocal(const cd3Shape* a, const cd3Shape* b, cd3Transform xfB, cdReal speculativeDistance)
+cd3Manifold cd3CollideLocal(const cd3Shape* a, const cd3Shape* b, cd3Transform xfB,
+							cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
 	cd3Shape s = *b;

@@ -22,35 +22,35 @@
 #ifndef COLLIDE_PAIRS2_H
 #define COLLIDE_PAIRS2_H
 
-#define CD2_SHAPE_TABLE(X)                                                                               \
-	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle)                               \
-	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule)                           \
-	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb)                                       \
-	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox)                                           \
-	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon)                           \
+#define CD2_SHAPE_TABLE(X)                                                                                   \
+	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle)                                   \
+	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule)                               \
+	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb)                                           \
+	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox)                                               \
+	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon)                               \
 	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment)
 
-#define CD2_PAIR_TABLE(X)                                                                                \
-	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                               \
-	X(Circle, Capsule, cd2OverlapCircleCapsule, GJK, cd2CollideCircleCapsule)                            \
-	X(Circle, Aabb, cd2OverlapCircleAabb, GJK, CORE)                                                     \
-	X(Circle, Box, cd2OverlapCircleBox, GJK, CORE)                                                       \
-	X(Circle, Polygon, cd2OverlapCirclePolygon, GJK, cd2CollideCirclePolygon)                            \
-	X(Circle, Segment, cd2OverlapCircleSegment, GJK, cd2CollideCircleSegment)                            \
-	X(Capsule, Capsule, cd2OverlapCapsuleCapsule, GJK, cd2CollideCapsuleCapsule)                         \
-	X(Capsule, Aabb, cd2OverlapCapsuleAabb, GJK, CORE)                                                   \
-	X(Capsule, Box, cd2OverlapCapsuleBox, GJK, CORE)                                                     \
-	X(Capsule, Polygon, cd2OverlapCapsulePolygon, GJK, cd2CollideCapsulePolygon)                         \
-	X(Capsule, Segment, cd2OverlapCapsuleSegment, GJK, cd2CollideCapsuleSegment)                         \
-	X(Aabb, Aabb, cd2OverlapAabbAabb, GJK, CORE)                                                         \
-	X(Aabb, Box, cd2OverlapAabbBox, GJK, CORE)                                                           \
-	X(Aabb, Polygon, cd2OverlapAabbPolygon, GJK, CORE)                                                   \
-	X(Aabb, Segment, cd2OverlapAabbSegment, GJK, CORE)                                                   \
-	X(Box, Box, cd2OverlapBoxBox, GJK, CORE)                                                             \
-	X(Box, Polygon, cd2OverlapBoxPolygon, GJK, CORE)                                                     \
-	X(Box, Segment, cd2OverlapBoxSegment, GJK, CORE)                                                     \
-	X(Polygon, Polygon, cd2OverlapPolygonPolygon, GJK, cd2CollidePolygonPolygon)                         \
-	X(Polygon, Segment, cd2OverlapPolygonSegment, GJK, cd2CollidePolygonSegment)                         \
+#define CD2_PAIR_TABLE(X)                                                                                    \
+	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                                   \
+	X(Circle, Capsule, cd2OverlapCircleCapsule, GJK, cd2CollideCircleCapsule)                                \
+	X(Circle, Aabb, cd2OverlapCircleAabb, GJK, CORE)                                                         \
+	X(Circle, Box, cd2OverlapCircleBox, GJK, CORE)                                                           \
+	X(Circle, Polygon, cd2OverlapCirclePolygon, GJK, cd2CollideCirclePolygon)                                \
+	X(Circle, Segment, cd2OverlapCircleSegment, GJK, cd2CollideCircleSegment)                                \
+	X(Capsule, Capsule, cd2OverlapCapsuleCapsule, GJK, cd2CollideCapsuleCapsule)                             \
+	X(Capsule, Aabb, cd2OverlapCapsuleAabb, GJK, CORE)                                                       \
+	X(Capsule, Box, cd2OverlapCapsuleBox, GJK, CORE)                                                         \
+	X(Capsule, Polygon, cd2OverlapCapsulePolygon, GJK, cd2CollideCapsulePolygon)                             \
+	X(Capsule, Segment, cd2OverlapCapsuleSegment, GJK, cd2CollideCapsuleSegment)                             \
+	X(Aabb, Aabb, cd2OverlapAabbAabb, GJK, CORE)                                                             \
+	X(Aabb, Box, cd2OverlapAabbBox, GJK, CORE)                                                               \
+	X(Aabb, Polygon, cd2OverlapAabbPolygon, GJK, CORE)                                                       \
+	X(Aabb, Segment, cd2OverlapAabbSegment, GJK, CORE)                                                       \
+	X(Box, Box, cd2OverlapBoxBox, GJK, CORE)                                                                 \
+	X(Box, Polygon, cd2OverlapBoxPolygon, GJK, CORE)                                                         \
+	X(Box, Segment, cd2OverlapBoxSegment, GJK, CORE)                                                         \
+	X(Polygon, Polygon, cd2OverlapPolygonPolygon, GJK, cd2CollidePolygonPolygon)                             \
+	X(Polygon, Segment, cd2OverlapPolygonSegment, GJK, cd2CollidePolygonSegment)                             \
 	X(Segment, Segment, cd2OverlapSegmentSegment, CLOSED_FORM, cd2CollideSegmentSegment)
 
 /* The cd2ShapeType of a table name, and the key of an ordered pair of types (a switch label). */

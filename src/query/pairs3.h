@@ -23,54 +23,54 @@
 #ifndef COLLIDE_PAIRS3_H
 #define COLLIDE_PAIRS3_H
 
-#define CD3_SHAPE_TABLE(X)                                                                               \
-	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere)                               \
-	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule)                           \
-	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb)                                       \
-	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox)                                           \
-	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle)                         \
-	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane)                                   \
-	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment)                             \
+#define CD3_SHAPE_TABLE(X)                                                                                   \
+	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere)                                   \
+	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule)                               \
+	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb)                                           \
+	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox)                                               \
+	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle)                             \
+	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane)                                       \
+	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment)                                 \
 	X(Hull, cd3PointInHull, cd3ClosestPointOnHull, cd3RaycastHull)
 
-#define CD3_PAIR_TABLE(X)                                                                                \
-	X(Sphere, Sphere, cd3OverlapSphereSphere, GJK, cd3CollideSphereSphere)                               \
-	X(Sphere, Capsule, cd3OverlapSphereCapsule, GJK, cd3CollideSphereCapsule)                            \
-	X(Sphere, Aabb, cd3OverlapSphereAabb, GJK, CORE)                                                     \
-	X(Sphere, Box, cd3OverlapSphereBox, GJK, cd3CollideSphereBox)                                        \
-	X(Sphere, Triangle, cd3OverlapSphereTriangle, GJK, cd3CollideSphereTriangle)                         \
-	X(Sphere, Plane, cd3OverlapSpherePlane, CLOSED_FORM, NONE)                                           \
-	X(Sphere, Segment, cd3OverlapSphereSegment, GJK, NONE)                                               \
-	X(Capsule, Capsule, cd3OverlapCapsuleCapsule, GJK, cd3CollideCapsuleCapsule)                         \
-	X(Capsule, Aabb, cd3OverlapCapsuleAabb, GJK, CORE)                                                   \
-	X(Capsule, Box, cd3OverlapCapsuleBox, GJK, cd3CollideCapsuleBox)                                     \
-	X(Capsule, Triangle, cd3OverlapCapsuleTriangle, GJK, cd3CollideCapsuleTriangle)                      \
-	X(Capsule, Plane, cd3OverlapCapsulePlane, CLOSED_FORM, NONE)                                         \
-	X(Capsule, Segment, cd3OverlapCapsuleSegment, GJK, NONE)                                             \
-	X(Aabb, Aabb, cd3OverlapAabbAabb, GJK, CORE)                                                         \
-	X(Aabb, Box, cd3OverlapAabbBox, GJK, CORE)                                                           \
-	X(Aabb, Triangle, cd3OverlapAabbTriangle, GJK, CORE)                                                 \
-	X(Aabb, Plane, cd3OverlapAabbPlane, CLOSED_FORM, NONE)                                               \
-	X(Aabb, Segment, cd3OverlapAabbSegment, GJK, NONE)                                                   \
-	X(Box, Box, cd3OverlapBoxBox, GJK, cd3CollideBoxBox)                                                 \
-	X(Box, Triangle, cd3OverlapBoxTriangle, GJK, cd3CollideBoxTriangle)                                  \
-	X(Box, Plane, cd3OverlapBoxPlane, CLOSED_FORM, NONE)                                                 \
-	X(Box, Segment, cd3OverlapBoxSegment, GJK, NONE)                                                     \
-	X(Triangle, Triangle, cd3OverlapTriangleTriangle, GJK, cd3CollideTriangleTriangle)                   \
-	X(Triangle, Plane, cd3OverlapTrianglePlane, CLOSED_FORM, NONE)                                       \
-	X(Triangle, Segment, cd3OverlapTriangleSegment, CLOSED_FORM, NONE)                                   \
-	X(Plane, Plane, cd3OverlapPlanePlane, CLOSED_FORM, NONE)                                             \
-	X(Plane, Segment, cd3OverlapPlaneSegment, CLOSED_FORM, NONE)                                         \
+#define CD3_PAIR_TABLE(X)                                                                                    \
+	X(Sphere, Sphere, cd3OverlapSphereSphere, GJK, cd3CollideSphereSphere)                                   \
+	X(Sphere, Capsule, cd3OverlapSphereCapsule, GJK, cd3CollideSphereCapsule)                                \
+	X(Sphere, Aabb, cd3OverlapSphereAabb, GJK, CORE)                                                         \
+	X(Sphere, Box, cd3OverlapSphereBox, GJK, cd3CollideSphereBox)                                            \
+	X(Sphere, Triangle, cd3OverlapSphereTriangle, GJK, cd3CollideSphereTriangle)                             \
+	X(Sphere, Plane, cd3OverlapSpherePlane, CLOSED_FORM, NONE)                                               \
+	X(Sphere, Segment, cd3OverlapSphereSegment, GJK, NONE)                                                   \
+	X(Capsule, Capsule, cd3OverlapCapsuleCapsule, GJK, cd3CollideCapsuleCapsule)                             \
+	X(Capsule, Aabb, cd3OverlapCapsuleAabb, GJK, CORE)                                                       \
+	X(Capsule, Box, cd3OverlapCapsuleBox, GJK, cd3CollideCapsuleBox)                                         \
+	X(Capsule, Triangle, cd3OverlapCapsuleTriangle, GJK, cd3CollideCapsuleTriangle)                          \
+	X(Capsule, Plane, cd3OverlapCapsulePlane, CLOSED_FORM, NONE)                                             \
+	X(Capsule, Segment, cd3OverlapCapsuleSegment, GJK, NONE)                                                 \
+	X(Aabb, Aabb, cd3OverlapAabbAabb, GJK, CORE)                                                             \
+	X(Aabb, Box, cd3OverlapAabbBox, GJK, CORE)                                                               \
+	X(Aabb, Triangle, cd3OverlapAabbTriangle, GJK, CORE)                                                     \
+	X(Aabb, Plane, cd3OverlapAabbPlane, CLOSED_FORM, NONE)                                                   \
+	X(Aabb, Segment, cd3OverlapAabbSegment, GJK, NONE)                                                       \
+	X(Box, Box, cd3OverlapBoxBox, GJK, cd3CollideBoxBox)                                                     \
+	X(Box, Triangle, cd3OverlapBoxTriangle, GJK, cd3CollideBoxTriangle)                                      \
+	X(Box, Plane, cd3OverlapBoxPlane, CLOSED_FORM, NONE)                                                     \
+	X(Box, Segment, cd3OverlapBoxSegment, GJK, NONE)                                                         \
+	X(Triangle, Triangle, cd3OverlapTriangleTriangle, GJK, cd3CollideTriangleTriangle)                       \
+	X(Triangle, Plane, cd3OverlapTrianglePlane, CLOSED_FORM, NONE)                                           \
+	X(Triangle, Segment, cd3OverlapTriangleSegment, CLOSED_FORM, NONE)                                       \
+	X(Plane, Plane, cd3OverlapPlanePlane, CLOSED_FORM, NONE)                                                 \
+	X(Plane, Segment, cd3OverlapPlaneSegment, CLOSED_FORM, NONE)                                             \
 	X(Segment, Segment, cd3OverlapSegmentSegment, CLOSED_FORM, NONE)
 
-#define CD3_HULL_PAIR_TABLE(X)                                                                           \
-	X(Sphere, Hull, GJK, GJK, cd3CollideSphereHull)                                                      \
-	X(Capsule, Hull, GJK, GJK, cd3CollideCapsuleHull)                                                    \
-	X(Aabb, Hull, GJK, GJK, CORE)                                                                        \
-	X(Box, Hull, GJK, GJK, cd3CollideBoxHull)                                                            \
-	X(Triangle, Hull, GJK, GJK, cd3CollideTriangleHull)                                                  \
-	X(Plane, Hull, GJK, CLOSED_FORM, NONE)                                                               \
-	X(Segment, Hull, GJK, GJK, NONE)                                                                     \
+#define CD3_HULL_PAIR_TABLE(X)                                                                               \
+	X(Sphere, Hull, GJK, GJK, cd3CollideSphereHull)                                                          \
+	X(Capsule, Hull, GJK, GJK, cd3CollideCapsuleHull)                                                        \
+	X(Aabb, Hull, GJK, GJK, CORE)                                                                            \
+	X(Box, Hull, GJK, GJK, cd3CollideBoxHull)                                                                \
+	X(Triangle, Hull, GJK, GJK, cd3CollideTriangleHull)                                                      \
+	X(Plane, Hull, GJK, CLOSED_FORM, NONE)                                                                   \
+	X(Segment, Hull, GJK, GJK, NONE)                                                                         \
 	X(Hull, Hull, GJK, GJK, cd3CollideHullHull)
 
 #define CD3_TYPE_Sphere CD3_SHAPE_SPHERE
