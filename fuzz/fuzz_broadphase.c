@@ -58,7 +58,7 @@ static OBox ReadBox(Reader* r, int dim)
 
 static void Fail(const Oracle* o, const char* what, size_t at)
 {
-	fprintf(stderr, "fuzz_broadphase: %s %dD: %s at input byte %zu: %s\n", cdBroadPhaseTypeName(o->type),
+	fprintf(stderr, "fuzz_broadphase: %s %dD: %s at input byte %zu: %s\n", cdGetBroadPhaseTypeName(o->type),
 			o->dim, what, at, o->error);
 	abort();
 }

@@ -67,7 +67,7 @@ static void Fail(const char* check, const char* format, ...)
 /* Segment `index` in world space (the chain's points under its transform). */
 static cd2ChainSegment WorldSegment(const cd2Chain* chain, int index)
 {
-	cd2ChainSegment s = cd2GetChainSegment(chain, index);
+	cd2ChainSegment s = cd2Chain_GetSegment(chain, index);
 	cd2Transform t = s_case.transform;
 	s.ghost1 = cd2TransformPoint(t, s.ghost1);
 	s.p1 = cd2TransformPoint(t, s.p1);
@@ -80,7 +80,7 @@ static cd2ChainSegment WorldSegment(const cd2Chain* chain, int index)
  * transform's round-off, which far from the origin turns a short segment noticeably). */
 static cd2Vec FrontNormal(const cd2Chain* chain, int index)
 {
-	cd2ChainSegment s = cd2GetChainSegment(chain, index);
+	cd2ChainSegment s = cd2Chain_GetSegment(chain, index);
 	return cd2RotateVector(s_case.transform.q, cd2Normalize(cd2RightPerp(cd2Sub(s.p2, s.p1))));
 }
 
@@ -101,16 +101,16 @@ static void CheckBuild(const cd2Chain* chain, int count)
 	{
 		Fail("chain-build", "the built chain does not validate (%d)", (int)cd2ValidateChain(chain));
 	}
-	int points = cd2GetChainPointCount(chain), segments = cd2GetChainSegmentCount(chain);
-	bool loop = cd2IsChainLoop(chain);
+	int points = cd2Chain_GetPointCount(chain), segments = cd2Chain_GetSegmentCount(chain);
+	bool loop = cd2Chain_IsLoop(chain);
 	if (points < (loop ? 3 : 2) || points > count || loop != s_case.isLoop ||
 		segments != (loop ? points : points - 1))
 	{
 		Fail("chain-build", "%d points in, %d points and %d segments out (loop %d)", count, points, segments,
 			 (int)loop);
 	}
-	cd2Aabb bounds = cd2GetChainBounds(chain);
-	const cd2Vec* p = cd2GetChainPoints(chain);
+	cd2Aabb bounds = cd2Chain_GetBounds(chain);
+	const cd2Vec* p = cd2Chain_GetPoints(chain);
 	for (int i = 0; i < points; ++i)
 	{
 		if (!cd2PointInAabb(p[i], bounds))
@@ -128,7 +128,7 @@ static void CheckRay(const cd2Chain* chain, double band)
 	cd2RayHit hit = {CD_R(-1.0), {CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}};
 	int index = -1;
 	bool hits = cd2RaycastChain(chain, s_case.transform, ray, &hit, &index);
-	int segments = cd2GetChainSegmentCount(chain);
+	int segments = cd2Chain_GetSegmentCount(chain);
 	if (hits)
 	{
 		if (index < 0 || index >= segments || !(hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0)) ||
@@ -221,7 +221,7 @@ static void CheckQuery(const cd2Chain* chain, double band, bool identity)
 		Fail("chain-query", "segments reported out of order");
 	}
 	cd2Aabb box = s_case.box;
-	for (int i = 0; i < cd2GetChainSegmentCount(chain); ++i)
+	for (int i = 0; i < cd2Chain_GetSegmentCount(chain); ++i)
 	{
 		cd2ChainSegment s = WorldSegment(chain, i);
 		cd2Vec lo = cd2Min(s.p1, s.p2), hi = cd2Max(s.p1, s.p2);
@@ -272,7 +272,7 @@ static void CheckManifolds(const cd2Chain* chain, double band, bool identity)
 {
 	cd2Manifold manifolds[CHAIN_FUZZ_MAX_MANIFOLDS];
 	int segmentIndices[CHAIN_FUZZ_MAX_MANIFOLDS];
-	int segments = cd2GetChainSegmentCount(chain);
+	int segments = cd2Chain_GetSegmentCount(chain);
 	int count = cd2CollideChain(chain, s_case.transform, &s_case.shape, s_case.speculative, manifolds,
 								CHAIN_FUZZ_MAX_MANIFOLDS, segmentIndices);
 	if (count < 0 || count > segments)

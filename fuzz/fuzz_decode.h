@@ -209,7 +209,7 @@ static inline double FuzzShapeScale3(const cd3Shape* s)
 
 static inline void FuzzPrintShape3(const char* label, const cd3Shape* s)
 {
-	fprintf(stderr, "  %s %s:", label, cd3ShapeTypeName(s->type));
+	fprintf(stderr, "  %s %s:", label, cd3GetShapeTypeName(s->type));
 	switch (s->type)
 	{
 		case CD3_SHAPE_SPHERE:
@@ -440,7 +440,7 @@ static inline void FuzzPrintShape2(const char* label, const cd2Shape* s)
 		return;
 	}
 	static const int counts[CD2_SHAPE_TYPE_COUNT] = {3, 5, 4, 6, 0, 4};
-	FuzzPrintReals(label, cd2ShapeTypeName(s->type), &s->circle.center.x, counts[s->type]);
+	FuzzPrintReals(label, cd2GetShapeTypeName(s->type), &s->circle.center.x, counts[s->type]);
 }
 
 /* The shape moved by x -> q x + p. AABBs, which cannot turn, only when q is the identity. */

@@ -109,7 +109,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	{
 		Fail("the hull does not validate", count);
 	}
-	cdReal tolerance = cd3GetHullTolerance(hull);
+	cdReal tolerance = cd3Hull_GetTolerance(hull);
 	for (int i = 0; i < count; ++i)
 	{
 		for (int f = 0; f < hull->faceCount; ++f)

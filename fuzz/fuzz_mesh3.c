@@ -137,7 +137,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	{
 		Fail("built mesh does not validate", (int)cd3ValidateMesh(mesh));
 	}
-	cd3MeshStats stats = cd3GetMeshStats(mesh);
+	cd3MeshStats stats = cd3Mesh_GetStats(mesh);
 	if (stats.triangleCount != valid || stats.droppedTriangleCount != triangleCount - valid)
 	{
 		Fail("stats", stats.triangleCount);

@@ -88,21 +88,21 @@ static void CheckMakePolygon(void)
 	}
 	if (s_count > CD2_MAX_POLYGON_VERTICES && result != CD_ERROR_TOO_MANY_POINTS)
 	{
-		Fail("result", "%d points gave %s, not too many points", s_count, cdResultString(result));
+		Fail("result", "%d points gave %s, not too many points", s_count, cdGetResultString(result));
 	}
 	if (s_count <= CD2_MAX_POLYGON_VERTICES && !finite && result != CD_ERROR_NOT_FINITE)
 	{
-		Fail("result", "a NaN or infinity gave %s", cdResultString(result));
+		Fail("result", "a NaN or infinity gave %s", cdGetResultString(result));
 	}
 	if (finite && s_count < 3 && result != CD_ERROR_DEGENERATE)
 	{
-		Fail("result", "%d points gave %s, not degenerate", s_count, cdResultString(result));
+		Fail("result", "%d points gave %s, not degenerate", s_count, cdGetResultString(result));
 	}
 	if (result != CD_OK)
 	{
 		if (memcmp(&out, &before, sizeof out) != 0)
 		{
-			Fail("untouched", "%s, but the output polygon changed", cdResultString(result));
+			Fail("untouched", "%s, but the output polygon changed", cdGetResultString(result));
 		}
 		return;
 	}
@@ -156,19 +156,19 @@ static void CheckMakeRoundedPolygon(cdReal radius)
 	{
 		if (memcmp(&rounded, &before, sizeof rounded) != 0)
 		{
-			Fail("untouched", "rounded: %s, but the output polygon changed", cdResultString(result));
+			Fail("untouched", "rounded: %s, but the output polygon changed", cdGetResultString(result));
 		}
 		if (sharpResult == CD_OK && radiusValid)
 		{
 			Fail("rounded", "radius %.9g: %s where cd2MakePolygon succeeds", (double)radius,
-				 cdResultString(result));
+				 cdGetResultString(result));
 		}
 		return;
 	}
 	if (!radiusValid || sharpResult != CD_OK)
 	{
 		Fail("rounded", "radius %.9g accepted (cd2MakePolygon: %s)", (double)radius,
-			 cdResultString(sharpResult));
+			 cdGetResultString(sharpResult));
 		return;
 	}
 	if (rounded.radius != radius || rounded.count != sharp.count || !cd2IsValidPolygon(&rounded) ||
@@ -193,11 +193,11 @@ static void CheckMakeBoxPolygon(cd2Box box)
 	{
 		if (memcmp(&out, &before, sizeof out) != 0)
 		{
-			Fail("untouched", "box: %s, but the output polygon changed", cdResultString(result));
+			Fail("untouched", "box: %s, but the output polygon changed", cdGetResultString(result));
 		}
 		if (valid && result != CD_ERROR_DEGENERATE)
 		{
-			Fail("box", "a valid box gave %s", cdResultString(result));
+			Fail("box", "a valid box gave %s", cdGetResultString(result));
 		}
 		return;
 	}

@@ -37,7 +37,7 @@ static void PrintShape(const char* label, const cd2Shape* s)
 		FuzzPrintReals("", "", &s->polygon.vertices[0].x, 2 * count);
 		return;
 	}
-	FuzzPrintReals(label, cd2ShapeTypeName(s->type), (const cdReal*)&s->circle, RealCount(s->type));
+	FuzzPrintReals(label, cd2GetShapeTypeName(s->type), (const cdReal*)&s->circle, RealCount(s->type));
 }
 
 /* Reports a failed check (named, so that FUZZ_SKIP can pass over it) and aborts. */
@@ -332,7 +332,7 @@ static void CheckValidators(const cd2Shape* s, const char* label)
 	if (typed != valid)
 	{
 		Fail("validators", "%s: the %s validator says %d, cd2IsValidShape %d", label,
-			 cd2ShapeTypeName(s->type), (int)typed, (int)valid);
+			 cd2GetShapeTypeName(s->type), (int)typed, (int)valid);
 	}
 	if (valid && HasNonFinite(s))
 	{
@@ -424,14 +424,14 @@ static void CheckPoint(const cd2Shape* s, cd2Vec p)
 	cd2Vec closest = cd2ClosestPointOnShape(s, p);
 	if (!FiniteVec(closest))
 	{
-		Fail("point-finite", "closest point on %s not finite", cd2ShapeTypeName(s->type));
+		Fail("point-finite", "closest point on %s not finite", cd2GetShapeTypeName(s->type));
 	}
 	double scale = VecMaxAbs(ShapeScale(s), p);
 	double tol = FUZZ_TOL * scale;
 	double away = Distance(closest, p);
 	if (cd2PointInShape(s, p) && away > tol)
 	{
-		Fail("point-inside", "point in %s, but its closest point is %.9g away", cd2ShapeTypeName(s->type),
+		Fail("point-inside", "point in %s, but its closest point is %.9g away", cd2GetShapeTypeName(s->type),
 			 away);
 	}
 	cd2Shape point = cd2MakeCircleShape((cd2Circle){p, CD_R(0.0)});
@@ -440,13 +440,13 @@ static void CheckPoint(const cd2Shape* s, cd2Vec p)
 	if (fabs((double)r.distance - away) > tol)
 	{
 		Fail("point-distance", "%s: closest point %.9g away, distance to the point %.9g",
-			 cd2ShapeTypeName(s->type), away, (double)r.distance);
+			 cd2GetShapeTypeName(s->type), away, (double)r.distance);
 	}
 	cd2Aabb bounds = cd2ComputeShapeAabb(s);
 	if (!FiniteVec(bounds.min) || !FiniteVec(bounds.max) ||
 		!cd2PointInAabb(closest, cd2AabbInflate(bounds, (cdReal)tol)))
 	{
-		Fail("point-bounds", "%s: closest point outside the bounds", cd2ShapeTypeName(s->type));
+		Fail("point-bounds", "%s: closest point outside the bounds", cd2GetShapeTypeName(s->type));
 	}
 }
 
@@ -459,7 +459,7 @@ static void CheckRay(const cd2Shape* s, cd2Ray ray)
 	cd2Vec end = cd2Add(ray.origin, ray.translation);
 	double scale = VecMaxAbs(VecMaxAbs(ShapeScale(s), ray.origin), end);
 	double band = FUZZ_BAND * scale;
-	const char* name = cd2ShapeTypeName(s->type);
+	const char* name = cd2GetShapeTypeName(s->type);
 	if (!got)
 	{
 		if (memcmp(&hit, &before, sizeof hit) != 0)

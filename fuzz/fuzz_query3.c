@@ -48,7 +48,7 @@ static const cdReal* Reals(const cd3Shape* s)
 
 static void PrintShape(const char* label, const cd3Shape* s)
 {
-	FuzzPrintReals(label, cd3ShapeTypeName(s->type), Reals(s), RealCount(s->type));
+	FuzzPrintReals(label, cd3GetShapeTypeName(s->type), Reals(s), RealCount(s->type));
 	for (int i = 0; i < 2 && s->type == CD3_SHAPE_HULL; ++i)
 	{
 		if (s->hull.hull != NULL && s->hull.hull == s_hulls[i].hull)
@@ -117,7 +117,7 @@ static cd3Hull* DecodeHull(FuzzReader* r, int slot)
 	cdResult result = cd3ComputeHull(raw, count, &hull);
 	if ((result == CD_OK) != (hull != NULL) || (result == CD_OK && !finite))
 	{
-		Fail("validators", "cd3ComputeHull on raw points: %s, hull %p", cdResultString(result),
+		Fail("validators", "cd3ComputeHull on raw points: %s, hull %p", cdGetResultString(result),
 			 (const void*)hull);
 	}
 	cd3DestroyHull(hull);
@@ -125,7 +125,7 @@ static cd3Hull* DecodeHull(FuzzReader* r, int slot)
 	result = cd3ComputeHull(s_hulls[slot].points, count, &hull);
 	if ((result == CD_OK) != (hull != NULL) || (result == CD_OK && cd3ValidateHull(hull) != CD_OK))
 	{
-		Fail("validators", "cd3ComputeHull: %s, but the hull is %s", cdResultString(result),
+		Fail("validators", "cd3ComputeHull: %s, but the hull is %s", cdGetResultString(result),
 			 hull == NULL ? "NULL" : "invalid");
 	}
 	s_hulls[slot].hull = hull;
@@ -381,7 +381,7 @@ static void CheckValidators(const cd3Shape* s, const char* label)
 	if (typed != valid)
 	{
 		Fail("validators", "%s: the %s validator says %d, cd3IsValidShape %d", label,
-			 cd3ShapeTypeName(s->type), (int)typed, (int)valid);
+			 cd3GetShapeTypeName(s->type), (int)typed, (int)valid);
 	}
 	const cdReal* values = Reals(s);
 	for (int i = 0; i < RealCount(s->type); ++i)
@@ -499,14 +499,14 @@ static void CheckPoint(const cd3Shape* s, cd3Vec p)
 	cd3Vec closest = cd3ClosestPointOnShape(s, p);
 	if (!FiniteVec(closest))
 	{
-		Fail("point-finite", "closest point on %s not finite", cd3ShapeTypeName(s->type));
+		Fail("point-finite", "closest point on %s not finite", cd3GetShapeTypeName(s->type));
 	}
 	double scale = VecMaxAbs(ShapeScale(s), p);
 	double tol = FUZZ_TOL * scale;
 	double away = Distance(closest, p);
 	if (cd3PointInShape(s, p) && away > tol)
 	{
-		Fail("point-inside", "point in %s, but its closest point is %.9g away", cd3ShapeTypeName(s->type),
+		Fail("point-inside", "point in %s, but its closest point is %.9g away", cd3GetShapeTypeName(s->type),
 			 away);
 	}
 	cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
@@ -515,13 +515,13 @@ static void CheckPoint(const cd3Shape* s, cd3Vec p)
 	if (fabs((double)r.distance - away) > tol)
 	{
 		Fail("point-distance", "%s: closest point %.9g away, distance to the point %.9g",
-			 cd3ShapeTypeName(s->type), away, (double)r.distance);
+			 cd3GetShapeTypeName(s->type), away, (double)r.distance);
 	}
 	cd3Aabb bounds = cd3ComputeShapeAabb(s);
 	if (!FiniteVec(bounds.min) || !FiniteVec(bounds.max) ||
 		!cd3PointInAabb(closest, cd3AabbInflate(bounds, (cdReal)tol)))
 	{
-		Fail("point-bounds", "%s: closest point outside the bounds", cd3ShapeTypeName(s->type));
+		Fail("point-bounds", "%s: closest point outside the bounds", cd3GetShapeTypeName(s->type));
 	}
 }
 
@@ -538,12 +538,12 @@ static void CheckRay(const cd3Shape* s, cd3Ray ray)
 	{
 		if (memcmp(&hit, &before, sizeof hit) != 0)
 		{
-			Fail("ray-miss", "%s ray cast: *hit changed on a miss", cd3ShapeTypeName(s->type));
+			Fail("ray-miss", "%s ray cast: *hit changed on a miss", cd3GetShapeTypeName(s->type));
 		}
 		if (ClearlyInside(s, ray.origin, band) || ClearlyInside(s, end, band))
 		{
 			Fail("ray-miss", "%s ray cast: a miss, but the ray starts or ends clearly inside",
-				 cd3ShapeTypeName(s->type));
+				 cd3GetShapeTypeName(s->type));
 		}
 		return;
 	}
@@ -551,13 +551,13 @@ static void CheckRay(const cd3Shape* s, cd3Ray ray)
 		!FiniteVec(hit.normal))
 	{
 		Fail("ray-finite", "%s ray cast: fraction %.9g, point (%.9g %.9g %.9g), normal (%.9g %.9g %.9g)",
-			 cd3ShapeTypeName(s->type), (double)hit.fraction, (double)hit.point.x, (double)hit.point.y,
+			 cd3GetShapeTypeName(s->type), (double)hit.fraction, (double)hit.point.x, (double)hit.point.y,
 			 (double)hit.point.z, (double)hit.normal.x, (double)hit.normal.y, (double)hit.normal.z);
 	}
 	double length = Distance(CD3_VEC_ZERO, hit.normal);
 	if (length != 0.0 && fabs(length - 1.0) > FUZZ_UNIT_TOL)
 	{
-		Fail("ray-normal", "%s ray cast: normal of length %.9g", cd3ShapeTypeName(s->type), length);
+		Fail("ray-normal", "%s ray cast: normal of length %.9g", cd3GetShapeTypeName(s->type), length);
 	}
 	double t = (double)hit.fraction;
 	double ex = (double)ray.origin.x + t * (double)ray.translation.x;
@@ -568,14 +568,14 @@ static void CheckRay(const cd3Shape* s, cd3Ray ray)
 						 (ez - (double)hit.point.z) * (ez - (double)hit.point.z));
 	if (offRay > FUZZ_TOL * scale)
 	{
-		Fail("ray-on-ray", "%s ray cast: the hit point is %.9g off the ray", cd3ShapeTypeName(s->type),
+		Fail("ray-on-ray", "%s ray cast: the hit point is %.9g off the ray", cd3GetShapeTypeName(s->type),
 			 offRay);
 	}
 	double offShape = Distance(cd3ClosestPointOnShape(s, hit.point), hit.point);
 	if (offShape > band)
 	{
 		Fail("ray-on-surface", "%s ray cast: the hit point is %.9g off the shape (band %.3g)",
-			 cd3ShapeTypeName(s->type), offShape, band);
+			 cd3GetShapeTypeName(s->type), offShape, band);
 	}
 	if (ClearlyInside(s, ray.origin, band))
 	{
@@ -583,7 +583,7 @@ static void CheckRay(const cd3Shape* s, cd3Ray ray)
 		if (hit.fraction != CD_R(0.0) || Distance(hit.normal, expected) > 4.0 * FUZZ_UNIT_TOL)
 		{
 			Fail("ray-inside", "%s ray cast from inside: fraction %.9g, normal (%.9g %.9g %.9g)",
-				 cd3ShapeTypeName(s->type), (double)hit.fraction, (double)hit.normal.x, (double)hit.normal.y,
+				 cd3GetShapeTypeName(s->type), (double)hit.fraction, (double)hit.normal.x, (double)hit.normal.y,
 				 (double)hit.normal.z);
 		}
 	}

@@ -144,7 +144,7 @@ static inline bool OracleInit(Oracle* o, int dim, cdBroadPhaseType type, cdReal 
 		def.type = type;
 		def.margin = margin;
 		def.displacementMultiplier = multiplier;
-		result = cd2BroadPhase_Create(&def, &o->bp2);
+		result = cd2CreateBroadPhase(&def, &o->bp2);
 	}
 	else
 	{
@@ -152,7 +152,7 @@ static inline bool OracleInit(Oracle* o, int dim, cdBroadPhaseType type, cdReal 
 		def.type = type;
 		def.margin = margin;
 		def.displacementMultiplier = multiplier;
-		result = cd3BroadPhase_Create(&def, &o->bp3);
+		result = cd3CreateBroadPhase(&def, &o->bp3);
 	}
 	return result == CD_OK;
 }
@@ -161,11 +161,11 @@ static inline void OracleFree(Oracle* o)
 {
 	if (o->bp2 != NULL)
 	{
-		cd2BroadPhase_Destroy(o->bp2);
+		cd2DestroyBroadPhase(o->bp2);
 	}
 	if (o->bp3 != NULL)
 	{
-		cd3BroadPhase_Destroy(o->bp3);
+		cd3DestroyBroadPhase(o->bp3);
 	}
 	o->bp2 = NULL;
 	o->bp3 = NULL;
@@ -634,12 +634,12 @@ static inline bool OracleRayCast(Oracle* o, const cdReal* origin, const cdReal* 
 	if (o->dim == 2)
 	{
 		cd2Ray ray = {{origin[0], origin[1]}, {translation[0], translation[1]}};
-		cd2BroadPhase_RayCast(o->bp2, ray, OracleRay2, &r);
+		cd2BroadPhase_Raycast(o->bp2, ray, OracleRay2, &r);
 	}
 	else
 	{
 		cd3Ray ray = {{origin[0], origin[1], origin[2]}, {translation[0], translation[1], translation[2]}};
-		cd3BroadPhase_RayCast(o->bp3, ray, OracleRay3, &r);
+		cd3BroadPhase_Raycast(o->bp3, ray, OracleRay3, &r);
 	}
 	double expected = 2.0;
 	for (int id = 0; id < o->idCapacity; ++id)

@@ -110,7 +110,7 @@ static inline const cd3Hull* ScaledHull(const cd3Hull* hull, cdReal k)
 	free(points);
 	if (result != CD_OK)
 	{
-		fprintf(stderr, "ScaledHull: scaling by %g failed: %s\n", (double)k, cdResultString(result));
+		fprintf(stderr, "ScaledHull: scaling by %g failed: %s\n", (double)k, cdGetResultString(result));
 		return hull;
 	}
 	if (keptCount == keptCapacity)

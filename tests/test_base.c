@@ -8,11 +8,11 @@ static void TestResultStrings(void)
 {
 	for (int code = 0; code <= (int)CD_RESULT_COUNT; ++code)
 	{
-		const char* text = cdResultString((cdResult)code);
+		const char* text = cdGetResultString((cdResult)code);
 		TEST_CHECK(text != NULL && strlen(text) > 0);
 	}
-	TEST_CHECK(strcmp(cdResultString(CD_OK), "ok") == 0);
-	TEST_CHECK(strcmp(cdResultString((cdResult)1000), "unknown result code") == 0);
+	TEST_CHECK(strcmp(cdGetResultString(CD_OK), "ok") == 0);
+	TEST_CHECK(strcmp(cdGetResultString((cdResult)1000), "unknown result code") == 0);
 }
 
 static void TestVersionAndReal(void)

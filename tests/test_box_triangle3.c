@@ -1,7 +1,7 @@
 /* cd3CollideBoxTriangle's separating axis test takes shortcuts for the box (its extent in closed
  * form, its twelve edges as three directions, the triangle carried into the box's frame once),
  * so it is checked against two references on random boxes and triangles, resting face on face and
- * at random: cd3CollideHullTriangle on the same box built as a hull (the general polytope path)
+ * at random: cd3CollideTriangleHull on the same box built as a hull (the general polytope path)
  * must find the same contact, and the deepest separation of an overlapping pair must be the exact
  * signed separation of a double-precision SAT over every face normal and edge pair. */
 #include "collide/manifold3.h"
@@ -166,7 +166,7 @@ static void TestAgainstHullPathAndReference(void)
 			continue;
 		}
 		cd3HullShape hullShape = {hull, {box.center, box.rotation}};
-		cd3Manifold h = cd3CollideHullTriangle(hullShape, t, speculative);
+		cd3Manifold h = cd3CollideTriangleHull(t, hullShape, speculative);
 		cd3DestroyHull(hull);
 		double reference = ReferenceSeparation(box, t);
 		/* The contact exists on both paths alike, away from the speculative distance. */

@@ -34,7 +34,7 @@ static bool OpenCase(Oracle* o, const CellCase* c)
 		def.cellSize = c->cellSize;
 		def.bounds.min = cd2MakeVec(-c->regionHalf, -c->regionHalf);
 		def.bounds.max = cd2MakeVec(c->regionHalf, c->regionHalf);
-		result = cd2BroadPhase_Create(&def, &o->bp2);
+		result = cd2CreateBroadPhase(&def, &o->bp2);
 	}
 	else
 	{
@@ -45,7 +45,7 @@ static bool OpenCase(Oracle* o, const CellCase* c)
 		def.cellSize = c->cellSize;
 		def.bounds.min = cd3MakeVec(-c->regionHalf, -c->regionHalf, -c->regionHalf);
 		def.bounds.max = cd3MakeVec(c->regionHalf, c->regionHalf, c->regionHalf);
-		result = cd3BroadPhase_Create(&def, &o->bp3);
+		result = cd3CreateBroadPhase(&def, &o->bp3);
 	}
 	return result == CD_OK;
 }
@@ -53,7 +53,7 @@ static bool OpenCase(Oracle* o, const CellCase* c)
 static const char* CaseName(const CellCase* c)
 {
 	static char name[96];
-	snprintf(name, sizeof(name), "%dD %s cell %g region %g", c->dim, cdBroadPhaseTypeName(c->type),
+	snprintf(name, sizeof(name), "%dD %s cell %g region %g", c->dim, cdGetBroadPhaseTypeName(c->type),
 			 (double)c->cellSize, (double)c->regionHalf);
 	return name;
 }
@@ -102,12 +102,12 @@ static bool CheckRayCandidates(Oracle* o, const cdReal* origin, const cdReal* tr
 	if (o->dim == 2)
 	{
 		cd2Ray ray = {{origin[0], origin[1]}, {translation[0], translation[1]}};
-		cd2BroadPhase_RayCast(o->bp2, ray, CollectRay2, r);
+		cd2BroadPhase_Raycast(o->bp2, ray, CollectRay2, r);
 	}
 	else
 	{
 		cd3Ray ray = {{origin[0], origin[1], origin[2]}, {translation[0], translation[1], translation[2]}};
-		cd3BroadPhase_RayCast(o->bp3, ray, CollectRay3, r);
+		cd3BroadPhase_Raycast(o->bp3, ray, CollectRay3, r);
 	}
 	if (r->bad)
 	{

@@ -14,7 +14,7 @@ static int s_typesTested[2][CD_BROADPHASE_TYPE_COUNT];
 	do                                                                                                       \
 	{                                                                                                        \
 		bool okCall_ = (call);                                                                               \
-		TEST_CHECKF(okCall_, "%s %dD %s: %s", cdBroadPhaseTypeName((o)->type), (o)->dim, (o)->error, what);  \
+		TEST_CHECKF(okCall_, "%s %dD %s: %s", cdGetBroadPhaseTypeName((o)->type), (o)->dim, (o)->error, what);  \
 		if (!okCall_)                                                                                        \
 		{                                                                                                    \
 			return false;                                                                                    \
@@ -207,7 +207,7 @@ static bool RunRandom(int dim, cdBroadPhaseType type, uint64_t seed, const Scene
 			{
 				ok = OracleValidate(o);
 			}
-			TEST_CHECKF(ok, "%s %dD seed %llu batch %d op %d: %s", cdBroadPhaseTypeName(type), dim,
+			TEST_CHECKF(ok, "%s %dD seed %llu batch %d op %d: %s", cdGetBroadPhaseTypeName(type), dim,
 						(unsigned long long)seed, batch, op, o->error);
 		}
 		if (ok)
@@ -241,7 +241,7 @@ static void TestRandomOperations(void)
 	}
 	for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
 	{
-		printf("%s: %s\n", cdBroadPhaseTypeName((cdBroadPhaseType)type),
+		printf("%s: %s\n", cdGetBroadPhaseTypeName((cdBroadPhaseType)type),
 			   s_typesTested[0][type] && s_typesTested[1][type] ? "tested in 2D and 3D" : "not available");
 	}
 	TEST_CHECK(s_typesTested[0][CD_BROADPHASE_TREE] && s_typesTested[1][CD_BROADPHASE_TREE]);
@@ -266,7 +266,7 @@ static bool RunBulk(int dim, cdBroadPhaseType type, const OBox* boxes, int count
 		{
 			int id;
 			ok = OracleCreate(o, boxes[i], (uint64_t)i * 7u, &id);
-			TEST_CHECKF(ok, "%s %dD create %d: %s", cdBroadPhaseTypeName(type), dim, i, o->error);
+			TEST_CHECKF(ok, "%s %dD create %d: %s", cdGetBroadPhaseTypeName(type), dim, i, o->error);
 		}
 	}
 	else
@@ -432,16 +432,16 @@ static void TestArguments(void)
 	TEST_CHECK(def.type == CD_BROADPHASE_TREE && def.margin > CD_R(0.0) &&
 			   def.displacementMultiplier == CD_R(4.0));
 	def.margin = -CD_R(1.0);
-	TEST_CHECK(cd3BroadPhase_Create(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd3CreateBroadPhase(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
 	def = cd3DefaultBroadPhaseDef();
 	def.margin = NAN;
-	TEST_CHECK(cd3BroadPhase_Create(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd3CreateBroadPhase(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
 	def = cd3DefaultBroadPhaseDef();
 	def.type = CD_BROADPHASE_TYPE_COUNT;
-	TEST_CHECK(cd3BroadPhase_Create(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
-	TEST_CHECK(cd3BroadPhase_Create(NULL, &bp) == CD_ERROR_INVALID_ARGUMENT);
-	TEST_CHECK(strcmp(cdBroadPhaseTypeName(CD_BROADPHASE_SAP), "sap") == 0);
-	TEST_CHECK(strcmp(cdBroadPhaseTypeName(CD_BROADPHASE_TYPE_COUNT), "unknown") == 0);
+	TEST_CHECK(cd3CreateBroadPhase(&def, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(cd3CreateBroadPhase(NULL, &bp) == CD_ERROR_INVALID_ARGUMENT);
+	TEST_CHECK(strcmp(cdGetBroadPhaseTypeName(CD_BROADPHASE_SAP), "sap") == 0);
+	TEST_CHECK(strcmp(cdGetBroadPhaseTypeName(CD_BROADPHASE_TYPE_COUNT), "unknown") == 0);
 
 	for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
 	{
@@ -449,7 +449,7 @@ static void TestArguments(void)
 		def.type = (cdBroadPhaseType)type;
 		def.capacity = 10;
 		def.margin = CD_R(0.0); /* fat box = tight box, so touching is exact */
-		cdResult result = cd3BroadPhase_Create(&def, &bp);
+		cdResult result = cd3CreateBroadPhase(&def, &bp);
 		TEST_CHECK(result == CD_OK || (result == CD_ERROR_INVALID_ARGUMENT && type >= CD_BROADPHASE_GRID));
 		if (result != CD_OK)
 		{
@@ -480,7 +480,7 @@ static void TestArguments(void)
 		TEST_CHECK(cd3BroadPhase_CreateProxy(bp, box, 45) == other); /* ids are reused */
 		TEST_CHECK(cd3BroadPhase_GetUserData(bp, third) == 44);
 		TEST_CHECK(cd3BroadPhase_Validate(bp));
-		cd3BroadPhase_Destroy(bp);
+		cd3DestroyBroadPhase(bp);
 	}
 }
 
@@ -529,7 +529,7 @@ static void TestFrames(void)
 					OracleRebuild(o);
 				}
 				ok = ok && OracleValidate(o) && OracleUpdatePairs(o);
-				TEST_CHECKF(ok, "%s %dD frame %d: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
+				TEST_CHECKF(ok, "%s %dD frame %d: %s", cdGetBroadPhaseTypeName((cdBroadPhaseType)type), dim,
 							frame, o->error);
 			}
 			if (ok)
@@ -580,7 +580,7 @@ static void TestTeleportFrames(void)
 			static OBox tight[COUNT];
 			bool ok = CreateRandomBoxes(o, &rng, dim, &s, tight, COUNT);
 			ok = ok && OracleUpdatePairs(o) && OracleValidate(o);
-			TEST_CHECKF(ok, "%s %dD first pairs: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
+			TEST_CHECKF(ok, "%s %dD first pairs: %s", cdGetBroadPhaseTypeName((cdBroadPhaseType)type), dim,
 						o->error);
 			if (ok && type == CD_BROADPHASE_TREE)
 			{
@@ -613,7 +613,7 @@ static void TestTeleportFrames(void)
 					ok = OracleMove(o, i, tight[i], d);
 				}
 				ok = ok && OracleValidate(o) && OracleUpdatePairs(o);
-				TEST_CHECKF(ok, "%s %dD frame %d: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type), dim,
+				TEST_CHECKF(ok, "%s %dD frame %d: %s", cdGetBroadPhaseTypeName((cdBroadPhaseType)type), dim,
 							frame, o->error);
 			}
 			if (ok)
@@ -768,12 +768,12 @@ static void TestBatchMoves(void)
 					ok = ok && OracleQueryBox(o, box, 0);
 				}
 				ok = ok && OracleValidate(o) && OracleUpdatePairs(o);
-				TEST_CHECKF(ok, "%s %dD batch frame %d: %s", cdBroadPhaseTypeName((cdBroadPhaseType)type),
+				TEST_CHECKF(ok, "%s %dD batch frame %d: %s", cdGetBroadPhaseTypeName((cdBroadPhaseType)type),
 							dim, frame, o->error);
 			}
 			/* The curve-ordered path runs from 256 changed boxes on. */
 			TEST_CHECKF(changedMost >= 256, "%s %dD: only %d proxies changed in a batch",
-						cdBroadPhaseTypeName((cdBroadPhaseType)type), dim, changedMost);
+						cdGetBroadPhaseTypeName((cdBroadPhaseType)type), dim, changedMost);
 			if (ok)
 			{
 				ok = CheckAll(o, &rng, &s, true);
@@ -897,7 +897,7 @@ static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budge
 			{
 				ok = !changed[k] || OracleContains(o, OracleGetFat(o, moving[k]), moved[k]);
 				TEST_CHECKF(ok, "%s %dD, budget %ld, frame %d: proxy %d reported moved without its new box",
-							cdBroadPhaseTypeName(type), dim, budget, frame, moving[k]);
+							cdGetBroadPhaseTypeName(type), dim, budget, frame, moving[k]);
 			}
 			for (int k = 0, i = 0; i < COUNT; ++i)
 			{
@@ -936,18 +936,18 @@ static bool RunOutOfMemory(Oracle* o, int dim, cdBroadPhaseType type, long budge
 			o->idCapacity = ids[i] >= o->idCapacity ? ids[i] + 1 : o->idCapacity;
 		}
 		TEST_CHECKF(ok, "%s %dD, budget %ld: a proxy id repeats or is out of range",
-					cdBroadPhaseTypeName(type), dim, budget);
+					cdGetBroadPhaseTypeName(type), dim, budget);
 		ok = ok && OracleValidate(o) && OracleFindAllPairs(o);
-		TEST_CHECKF(ok, "%s %dD, budget %ld: %s", cdBroadPhaseTypeName(type), dim, budget, o->error);
+		TEST_CHECKF(ok, "%s %dD, budget %ld: %s", cdGetBroadPhaseTypeName(type), dim, budget, o->error);
 	}
 	else
 	{
 		*sawFailure = true;
 		TEST_CHECKF(o->bp2 == NULL && o->bp3 == NULL, "%s %dD, budget %ld: failed Create left a broadphase",
-					cdBroadPhaseTypeName(type), dim, budget);
+					cdGetBroadPhaseTypeName(type), dim, budget);
 	}
 	OracleFree(o);
-	TEST_CHECKF(g_testBudget.live == 0, "%s %dD, budget %ld: %d blocks leaked", cdBroadPhaseTypeName(type),
+	TEST_CHECKF(g_testBudget.live == 0, "%s %dD, budget %ld: %d blocks leaked", cdGetBroadPhaseTypeName(type),
 				dim, budget, g_testBudget.live);
 	cdSetAllocator(NULL, NULL);
 	return ok && g_testBudget.live == 0;
@@ -973,7 +973,7 @@ static void TestOutOfMemory(void)
 				}
 			}
 			TEST_CHECKF(!sawFailure, "%s %dD: still failing at budget %ld",
-						cdBroadPhaseTypeName((cdBroadPhaseType)type), dim, budget);
+						cdGetBroadPhaseTypeName((cdBroadPhaseType)type), dim, budget);
 		}
 	}
 	free(o);

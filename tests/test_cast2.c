@@ -198,7 +198,7 @@ static void TestCastPointAgreesWithRaycast(void)
 			double castTolerance = fmax((double)CD_CAST_TOLERANCE, 64.0 * (double)CD_REAL_EPSILON * 6.0);
 			TEST_CHECKF(out.hit && fabs((double)out.fraction - (double)rayHit.fraction) <=
 									   (castTolerance + 2e-5 * length) / approach + 1e-5,
-						"case %d %s: cast %d %.9g ray %.9g", i, cd2ShapeTypeName(type), out.hit,
+						"case %d %s: cast %d %.9g ray %.9g", i, cd2GetShapeTypeName(type), out.hit,
 						(double)out.fraction, (double)rayHit.fraction);
 			TEST_CHECKF(out.fraction <= rayHit.fraction + CD_R(1e-5), "case %d past the ray's entry", i);
 			TEST_CHECKF(RefPointShapeDistance(&b, out.point) < 1e-4, "case %d point off the shape", i);

@@ -143,7 +143,7 @@ static void TestCastPointAgreesWithRaycast(void)
 			++hits;
 			TEST_CHECKF(out.hit && fabs((double)out.fraction - (double)rayHit.fraction) <=
 									   1e-4 * length / approach + 1e-5,
-						"case %d %s: cast %d %.9g ray %.9g", i, cd3ShapeTypeName(b.type), out.hit,
+						"case %d %s: cast %d %.9g ray %.9g", i, cd3GetShapeTypeName(b.type), out.hit,
 						(double)out.fraction, (double)rayHit.fraction);
 			TEST_CHECKF(cd3Dot(out.normal, ray.translation) < CD_R(0.0), "case %d normal", i);
 		}
@@ -281,7 +281,7 @@ static void TestToiRandomPairs(void)
 			TEST_CHECKF(bracket.upper >= SLOP - 1e-4 && bracket.lower <= 1.25 * SLOP + 1e-4,
 						"case %d: distance %.9g (bracket %.9g %.9g, cd3Distance %.9g) %s %s", i, distance,
 						bracket.lower, bracket.upper, (double)cd3Distance(&pa, &pb).distance,
-						cd3ShapeTypeName(a.type), cd3ShapeTypeName(b.type));
+						cd3GetShapeTypeName(a.type), cd3GetShapeTypeName(b.type));
 		}
 		cdToiOutput swapped = cd3TimeOfImpact(&b, &sb, &a, &sa, (cdReal)SLOP, (cdReal)(0.25 * SLOP));
 		if (!(swapped.state == out.state && fabs((double)swapped.t - (double)out.t) <= 1e-4))
@@ -383,8 +383,8 @@ static void TestToiTranslationEqualsCast(void)
 		++compared;
 		double toiTolerance = fmax(1e-5, 64.0 * CD_REAL_EPSILON * 8.0);
 		TEST_CHECKF(fabs((double)toi.t - (double)cast.fraction) <= (toiTolerance + 1e-5) / approach + 1e-6,
-					"case %d %s %s: toi %.9g cast %.9g", i, cd3ShapeTypeName(a.type),
-					cd3ShapeTypeName(b.type), (double)toi.t, (double)cast.fraction);
+					"case %d %s %s: toi %.9g cast %.9g", i, cd3GetShapeTypeName(a.type),
+					cd3GetShapeTypeName(b.type), (double)toi.t, (double)cast.fraction);
 	}
 	TEST_CHECKF(compared > 200, "%d compared", compared);
 }

@@ -20,7 +20,7 @@ static cd2Chain* MakeChain(const cd2Vec* points, int count, bool loop)
 {
 	cd2Chain* chain = NULL;
 	cdResult result = cd2CreateChain(points, count, loop, &chain);
-	TEST_CHECKF(result == CD_OK && chain != NULL, "cd2CreateChain: %s", cdResultString(result));
+	TEST_CHECKF(result == CD_OK && chain != NULL, "cd2CreateChain: %s", cdGetResultString(result));
 	if (chain != NULL)
 	{
 		TEST_CHECK(cd2ValidateChain(chain) == CD_OK);
@@ -70,11 +70,11 @@ static void TestBadInput(void)
 	cd2Chain* welded = MakeChain(dup, 7, false);
 	if (welded != NULL)
 	{
-		TEST_CHECK(cd2GetChainPointCount(welded) == 4 && cd2GetChainSegmentCount(welded) == 3);
-		TEST_CHECK(!cd2IsChainLoop(welded));
-		const cd2Vec* p = cd2GetChainPoints(welded);
+		TEST_CHECK(cd2Chain_GetPointCount(welded) == 4 && cd2Chain_GetSegmentCount(welded) == 3);
+		TEST_CHECK(!cd2Chain_IsLoop(welded));
+		const cd2Vec* p = cd2Chain_GetPoints(welded);
 		TEST_CHECK(p[0].x == CD_R(3.0) && p[1].x == CD_R(2.0) && p[1].y == CD_R(0.0) && p[3].x == CD_R(0.0));
-		cd2Aabb bounds = cd2GetChainBounds(welded);
+		cd2Aabb bounds = cd2Chain_GetBounds(welded);
 		TEST_CHECK(bounds.min.x == CD_R(0.0) && bounds.max.x == CD_R(3.0) && bounds.min.y == CD_R(0.0) &&
 				   bounds.max.y == CD_R(0.0));
 		cd2DestroyChain(welded);
@@ -83,8 +83,8 @@ static void TestBadInput(void)
 	cd2Chain* loop = MakeChain(square, 5, true);
 	if (loop != NULL)
 	{
-		TEST_CHECK(cd2GetChainPointCount(loop) == 4 && cd2GetChainSegmentCount(loop) == 4);
-		TEST_CHECK(cd2IsChainLoop(loop));
+		TEST_CHECK(cd2Chain_GetPointCount(loop) == 4 && cd2Chain_GetSegmentCount(loop) == 4);
+		TEST_CHECK(cd2Chain_IsLoop(loop));
 		cd2DestroyChain(loop);
 	}
 	cd2DestroyChain(NULL);
@@ -105,14 +105,14 @@ static void TestGhosts(void)
 	{
 		return;
 	}
-	cd2ChainSegment s = cd2GetChainSegment(open, 0);
+	cd2ChainSegment s = cd2Chain_GetSegment(open, 0);
 	TEST_CHECK(VecIs(s.ghost1, 4, 0) && VecIs(s.p1, 3, 0) && VecIs(s.p2, 2, 0) && VecIs(s.ghost2, 1, 1));
-	s = cd2GetChainSegment(open, 2);
+	s = cd2Chain_GetSegment(open, 2);
 	TEST_CHECK(VecIs(s.ghost1, 2, 0) && VecIs(s.p1, 1, 1) && VecIs(s.p2, 0, 1) && VecIs(s.ghost2, -1, 1));
-	TEST_CHECK(cd2GetChainSegmentCount(loop) == 4);
-	s = cd2GetChainSegment(loop, 0);
+	TEST_CHECK(cd2Chain_GetSegmentCount(loop) == 4);
+	s = cd2Chain_GetSegment(loop, 0);
 	TEST_CHECK(VecIs(s.ghost1, 0, 1) && VecIs(s.p1, 3, 0) && VecIs(s.p2, 2, 0) && VecIs(s.ghost2, 1, 1));
-	s = cd2GetChainSegment(loop, 3);
+	s = cd2Chain_GetSegment(loop, 3);
 	TEST_CHECK(VecIs(s.ghost1, 1, 1) && VecIs(s.p1, 0, 1) && VecIs(s.p2, 3, 0) && VecIs(s.ghost2, 2, 0));
 	cd2DestroyChain(open);
 	cd2DestroyChain(loop);
@@ -584,9 +584,9 @@ static void TestQueryAabb(void)
 	{
 		return;
 	}
-	int segmentCount = cd2GetChainSegmentCount(chain);
+	int segmentCount = cd2Chain_GetSegmentCount(chain);
 	TEST_CHECK(segmentCount == 10000);
-	cd2Aabb all = cd2GetChainBounds(chain);
+	cd2Aabb all = cd2Chain_GetBounds(chain);
 	static Collected collected;
 	for (int trial = 0; trial < 200; ++trial)
 	{
@@ -601,7 +601,7 @@ static void TestQueryAabb(void)
 		bool same = true;
 		for (int i = 0; i < segmentCount; ++i)
 		{
-			cd2ChainSegment s = cd2GetChainSegment(chain, i);
+			cd2ChainSegment s = cd2Chain_GetSegment(chain, i);
 			cd2Aabb sb = {cd2Min(s.p1, s.p2), cd2Max(s.p1, s.p2)};
 			if (cd2OverlapAabbAabb(sb, box))
 			{
@@ -633,7 +633,7 @@ static void TestQueryAabb(void)
 		int found = 0, missing = 0;
 		for (int i = 0; i < segmentCount; ++i)
 		{
-			cd2ChainSegment s = cd2GetChainSegment(chain, i);
+			cd2ChainSegment s = cd2Chain_GetSegment(chain, i);
 			cd2Segment world = {cd2TransformPoint(frame, s.p1), cd2TransformPoint(frame, s.p2)};
 			/* shrunk a little so that round-off of the transform cannot decide */
 			if (cd2OverlapAabbSegment(cd2AabbInflate(box, CD_R(-0.01)), world))
@@ -716,9 +716,9 @@ static void TestRaycast(void)
 		{
 			return;
 		}
-		int segmentCount = cd2GetChainSegmentCount(chain);
+		int segmentCount = cd2Chain_GetSegmentCount(chain);
 		cd2Transform frame = variant == 0 ? MakeTransform(0, 0, 0) : MakeTransform(-4, 7, 0.4 * variant);
-		cd2Aabb all = cd2GetChainBounds(chain);
+		cd2Aabb all = cd2Chain_GetBounds(chain);
 		for (int trial = 0; trial < 400; ++trial)
 		{
 			cd2Vec localOrigin = V(TestRngRange(&rng, (double)all.min.x, (double)all.max.x),
@@ -733,7 +733,7 @@ static void TestRaycast(void)
 			bool nearBoundary = false;
 			for (int i = 0; i < segmentCount; ++i)
 			{
-				cd2ChainSegment s = cd2GetChainSegment(chain, i);
+				cd2ChainSegment s = cd2Chain_GetSegment(chain, i);
 				bool ambiguous;
 				double t = ReferenceRaycast(s.p1, s.p2, local, &ambiguous);
 				nearBoundary = nearBoundary || ambiguous;
@@ -775,7 +775,7 @@ static void TestRaycast(void)
 			{
 				continue;
 			}
-			cd2ChainSegment s = cd2GetChainSegment(chain, bestIndex);
+			cd2ChainSegment s = cd2Chain_GetSegment(chain, bestIndex);
 			cd2Vec front = cd2RotateVector(frame.q, cd2Normalize(cd2RightPerp(cd2Sub(s.p2, s.p1))));
 			double scale = 30.0 * (CD_DOUBLE ? 1e-10 : 1e-5);
 			TEST_CHECKF(index == bestIndex && fabs((double)hit.fraction - best) * length <= scale + TOL &&
@@ -819,7 +819,7 @@ static void TestRaycast(void)
 	cd2Chain* one = MakeChain(single, 2, false);
 	if (one != NULL)
 	{
-		TEST_CHECK(cd2GetChainSegmentCount(one) == 1);
+		TEST_CHECK(cd2Chain_GetSegmentCount(one) == 1);
 		TEST_CHECK(cd2RaycastChain(one, MakeTransform(0, 0, 0), down, &hit, &index) && index == 0);
 		cd2Ray miss = {V(1.5, 1), V(0, -2)};
 		TEST_CHECK(!cd2RaycastChain(one, MakeTransform(0, 0, 0), miss, &hit, NULL));
@@ -860,7 +860,7 @@ static void TestRayAlongSegmentLine(void)
 	int index = -1;
 	if (cd2RaycastChain(chain, frame, ray, &hit, &index))
 	{
-		cd2ChainSegment s = cd2GetChainSegment(chain, index);
+		cd2ChainSegment s = cd2Chain_GetSegment(chain, index);
 		cd2Segment world = {cd2TransformPoint(frame, s.p1), cd2TransformPoint(frame, s.p2)};
 		cd2Vec onSegment = cd2ClosestPointOnSegment(world, hit.point);
 		double off = hypot((double)(onSegment.x - hit.point.x), (double)(onSegment.y - hit.point.y));
@@ -881,8 +881,8 @@ static void TestCollideAgainstBruteForce(void)
 	{
 		return;
 	}
-	int segmentCount = cd2GetChainSegmentCount(chain);
-	cd2Aabb all = cd2GetChainBounds(chain);
+	int segmentCount = cd2Chain_GetSegmentCount(chain);
+	cd2Aabb all = cd2Chain_GetBounds(chain);
 	int touching = 0, sharedRemoved = 0;
 	for (int trial = 0; trial < 500; ++trial)
 	{
@@ -939,7 +939,7 @@ static void TestCollideAgainstBruteForce(void)
 		}
 		for (int i = 0; i < segmentCount; ++i)
 		{
-			cd2ChainSegment s = cd2GetChainSegment(chain, i);
+			cd2ChainSegment s = cd2Chain_GetSegment(chain, i);
 			cd2Manifold m;
 			if (kind == 0)
 			{
@@ -1452,9 +1452,9 @@ static void TestDirectCapsuleEndOnSegmentEnd(void)
 		return;
 	}
 	cd2Capsule capsule = {V(-0.000580846914, 200000), V(-962500, -1112500), CD_R(0.0)};
-	for (int i = 0; i < cd2GetChainSegmentCount(chain); ++i)
+	for (int i = 0; i < cd2Chain_GetSegmentCount(chain); ++i)
 	{
-		cd2ChainSegment s = cd2GetChainSegment(chain, i);
+		cd2ChainSegment s = cd2Chain_GetSegment(chain, i);
 		cd2Manifold direct = cd2CollideChainSegmentCapsuleDirect(&s, capsule, CD_R(637500.0));
 		cd2Manifold generic = cd2CollideChainSegmentCapsule(&s, capsule, CD_R(637500.0));
 		TEST_CHECKF(direct.pointCount == generic.pointCount &&
@@ -1554,7 +1554,7 @@ static void TestScales(void)
 			continue;
 		}
 		cd2Transform frame = MakeTransform(k * 3.0, -k * 2.0, 0.3 * si);
-		cd2Aabb all = cd2GetChainBounds(chain);
+		cd2Aabb all = cd2Chain_GetBounds(chain);
 		for (int trial = 0; trial < 200; ++trial)
 		{
 			cd2Vec c = cd2TransformPoint(frame, V(TestRngRange(&rng, (double)all.min.x, (double)all.max.x),
@@ -1602,7 +1602,7 @@ static void TestScales(void)
 			TEST_CHECKF(ok, "scale %g trial %d: not finite or not unit", k, trial);
 			finite += ok;
 		}
-		TEST_CHECK(cd2GetChainPointCount(chain) == n);
+		TEST_CHECK(cd2Chain_GetPointCount(chain) == n);
 		cd2DestroyChain(chain);
 		cdSetLengthUnitsPerMeter(CD_R(1.0));
 	}

@@ -163,7 +163,7 @@ static void CheckClosestPoints(const char* label, double center, double extent, 
 			cd2Shape s = RandomShape(&rng, (cd2ShapeType)type, origin, extent);
 			cd2Vec p = RandomVec(&rng, origin, 1.5 * extent);
 			cd2Vec q = cd2ClosestPointOnShape(&s, p);
-			const char* name = cd2ShapeTypeName(s.type);
+			const char* name = cd2GetShapeTypeName(s.type);
 			TEST_CHECKF(cd2IsValidVec(q), "%s %s: not finite", label, name);
 			double magnitude = fmax(RefShapeScale(&s), fmax(fabs((double)p.x), fabs((double)p.y)));
 			double tolerance = 64.0 * (double)CD_REAL_EPSILON * magnitude + 1e-9 * extent;
@@ -190,7 +190,7 @@ static void CheckClosestPoints(const char* label, double center, double extent, 
 		}
 		TEST_CHECKF(outside > perType / 4, "%s: only %d outside cases", label, outside);
 		TEST_CHECKF(inside >= perType / 50 || type == CD2_SHAPE_SEGMENT, "%s %s: only %d inside cases", label,
-					cd2ShapeTypeName((cd2ShapeType)type), inside);
+					cd2GetShapeTypeName((cd2ShapeType)type), inside);
 	}
 }
 

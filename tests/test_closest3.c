@@ -496,7 +496,7 @@ static void TestRandomClosestPoint(void)
 		cd3Vec p = cd3Scale((cdReal)scale, RandomVec(&rng, -4, 4));
 		RVec rp = RFromVec(p);
 		cd3Vec q = cd3ClosestPointOnShape(&shape, p);
-		TEST_CHECKF(IsFiniteVec(q), "%s: non-finite", cd3ShapeTypeName(type));
+		TEST_CHECKF(IsFiniteVec(q), "%s: non-finite", cd3GetShapeTypeName(type));
 		RVec rq = RFromVec(q);
 		double tolerance = REL_TOLERANCE * fmax(RShapeScale(&r), RMaxAbs(rp));
 		RVec reference = RProject(&r, rp);
@@ -504,24 +504,24 @@ static void TestRandomClosestPoint(void)
 		double referenceDistance = RDist(rp, reference);
 		/* On the shape. */
 		TEST_CHECKF(RDist(RProject(&r, rq), rq) <= tolerance, "%s scale %g: result %g off the shape",
-					cd3ShapeTypeName(type), scale, RDist(RProject(&r, rq), rq));
+					cd3GetShapeTypeName(type), scale, RDist(RProject(&r, rq), rq));
 		/* As close as the exact projection (which is unique for a convex set). */
 		TEST_CHECKF(fabs(distance - referenceDistance) <= tolerance && RDist(rq, reference) <= 10 * tolerance,
-					"%s scale %g: distance %.9g, reference %.9g", cd3ShapeTypeName(type), scale, distance,
+					"%s scale %g: distance %.9g, reference %.9g", cd3GetShapeTypeName(type), scale, distance,
 					referenceDistance);
 		/* Inside a solid: the point itself. */
 		bool solid = type != CD3_SHAPE_TRIANGLE && type != CD3_SHAPE_SEGMENT;
 		if (solid && referenceDistance == 0.0)
 		{
 			++insideCount;
-			TEST_CHECKF(cd3VecEqual(p, q), "%s: inside point moved", cd3ShapeTypeName(type));
+			TEST_CHECKF(cd3VecEqual(p, q), "%s: inside point moved", cd3GetShapeTypeName(type));
 		}
 		/* No sampled point of the shape is closer. */
 		for (int k = 0; k < 40; ++k)
 		{
 			RVec sample = RSample(&r, &rng, reference, 2.0 * scale);
 			TEST_CHECKF(RDist(rp, sample) >= distance - tolerance, "%s: sample closer by %g",
-						cd3ShapeTypeName(type), distance - RDist(rp, sample));
+						cd3GetShapeTypeName(type), distance - RDist(rp, sample));
 		}
 	}
 	TEST_CHECKF(insideCount > 200, "only %d inside cases", insideCount);
@@ -609,9 +609,9 @@ static void TestFarFromOrigin(void)
 		double tolerance = 8.0 * CD_REAL_EPSILON * offset;
 		TEST_CHECKF(IsFiniteVec(q), "non-finite");
 		TEST_CHECKF(RDist(RProject(&r, rq), rq) <= tolerance, "%s: off the shape by %g",
-					cd3ShapeTypeName(type), RDist(RProject(&r, rq), rq));
+					cd3GetShapeTypeName(type), RDist(RProject(&r, rq), rq));
 		TEST_CHECKF(fabs(RDist(rq, RFromVec(p)) - RDist(RProject(&r, RFromVec(p)), RFromVec(p))) <= tolerance,
-					"%s: distance off", cd3ShapeTypeName(type));
+					"%s: distance off", cd3GetShapeTypeName(type));
 	}
 }
 

@@ -14,14 +14,14 @@ static cd2Vec V(double x, double y)
 
 static void TestNamesAndMakers(void)
 {
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_CIRCLE), "circle") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_CAPSULE), "capsule") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_AABB), "aabb") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_BOX), "box") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_POLYGON), "polygon") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_SEGMENT), "segment") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName(CD2_SHAPE_TYPE_COUNT), "unknown") == 0);
-	TEST_CHECK(strcmp(cd2ShapeTypeName((cd2ShapeType)-1), "unknown") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_CIRCLE), "circle") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_CAPSULE), "capsule") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_AABB), "aabb") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_BOX), "box") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_POLYGON), "polygon") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_SEGMENT), "segment") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName(CD2_SHAPE_TYPE_COUNT), "unknown") == 0);
+	TEST_CHECK(strcmp(cd2GetShapeTypeName((cd2ShapeType)-1), "unknown") == 0);
 
 	cd2Circle circle = {V(1, 2), 3};
 	cd2Shape s = cd2MakeCircleShape(circle);
@@ -244,7 +244,7 @@ static void TestBoundsRandom(void)
 			TEST_CHECKF(
 				fabs((double)b.min.x - minX) <= tolerance && fabs((double)b.min.y - minY) <= tolerance &&
 					fabs((double)b.max.x - maxX) <= tolerance && fabs((double)b.max.y - maxY) <= tolerance,
-				"%s: box (%g %g, %g %g), expected (%g %g, %g %g)", cd2ShapeTypeName(s.type), (double)b.min.x,
+				"%s: box (%g %g, %g %g), expected (%g %g, %g %g)", cd2GetShapeTypeName(s.type), (double)b.min.x,
 				(double)b.min.y, (double)b.max.x, (double)b.max.y, minX, minY, maxX, maxY);
 			TEST_CHECK(cd2IsValidShape(&s));
 			TEST_CHECK(cd2IsValidAabb(b));

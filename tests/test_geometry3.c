@@ -14,10 +14,10 @@ static void TestTypeNamesAndMakers(void)
 	const char* names[] = {"sphere", "capsule", "aabb", "box", "triangle", "plane", "segment", "hull"};
 	for (int i = 0; i < (int)CD3_SHAPE_TYPE_COUNT; ++i)
 	{
-		TEST_CHECKF(strcmp(cd3ShapeTypeName((cd3ShapeType)i), names[i]) == 0, "type %d", i);
+		TEST_CHECKF(strcmp(cd3GetShapeTypeName((cd3ShapeType)i), names[i]) == 0, "type %d", i);
 	}
-	TEST_CHECK(strcmp(cd3ShapeTypeName(CD3_SHAPE_TYPE_COUNT), "unknown") == 0);
-	TEST_CHECK(strcmp(cd3ShapeTypeName((cd3ShapeType)99), "unknown") == 0);
+	TEST_CHECK(strcmp(cd3GetShapeTypeName(CD3_SHAPE_TYPE_COUNT), "unknown") == 0);
+	TEST_CHECK(strcmp(cd3GetShapeTypeName((cd3ShapeType)99), "unknown") == 0);
 
 	cd3Sphere sphere = {{1, 2, 3}, 4};
 	cd3Shape s = cd3MakeSphereShape(sphere);
@@ -196,7 +196,7 @@ static void TestValidateShapeReasons(void)
 		}
 		else
 		{
-			TEST_CHECKF(result == CD_OK, "%s result %d", cd3ShapeTypeName(type), (int)result);
+			TEST_CHECKF(result == CD_OK, "%s result %d", cd3GetShapeTypeName(type), (int)result);
 		}
 	}
 }
@@ -291,13 +291,13 @@ static void TestRandomBounds(void)
 		{
 			RVec p = RSample(&r, &rng, RMake(0, 0, 0), 0.0);
 			TEST_CHECKF(InsideWithTolerance(b, p, tolerance),
-						"%s sample (%g %g %g) outside [%g %g %g]-[%g %g %g]", cd3ShapeTypeName(type), p.x,
+						"%s sample (%g %g %g) outside [%g %g %g]-[%g %g %g]", cd3GetShapeTypeName(type), p.x,
 						p.y, p.z, (double)b.min.x, (double)b.min.y, (double)b.min.z, (double)b.max.x,
 						(double)b.max.y, (double)b.max.z);
 			cd3Vec far = cd3Scale((cdReal)scale, RandomVec(&rng, -10, 10));
 			cd3Vec closest = cd3ClosestPointOnShape(&shape, far);
 			TEST_CHECKF(InsideWithTolerance(b, RFromVec(closest), tolerance), "%s closest point outside",
-						cd3ShapeTypeName(type));
+						cd3GetShapeTypeName(type));
 		}
 		/* Tight: the support point along each axis direction reaches the face. */
 		RVec directions[6] = {RMake(1, 0, 0),  RMake(-1, 0, 0), RMake(0, 1, 0),
@@ -308,7 +308,7 @@ static void TestRandomBounds(void)
 		{
 			double reach = RDot(RSupport(&r, directions[k]), directions[k]);
 			TEST_CHECKF(fabs(reach - faces[k]) <= tolerance, "%s face %d: support %g bound %g",
-						cd3ShapeTypeName(type), k, reach, faces[k]);
+						cd3GetShapeTypeName(type), k, reach, faces[k]);
 		}
 	}
 }

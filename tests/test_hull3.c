@@ -75,15 +75,15 @@ static cd3Hull* CheckCloud(TestRng* rng, const char* label, const cd3Vec* points
 {
 	cd3Hull* hull = NULL;
 	cdResult result = cd3ComputeHull(points, count, &hull);
-	TEST_CHECKF(result == CD_OK && hull != NULL, "%s (%d points): %s", label, count, cdResultString(result));
+	TEST_CHECKF(result == CD_OK && hull != NULL, "%s (%d points): %s", label, count, cdGetResultString(result));
 	if (hull == NULL)
 	{
 		return NULL;
 	}
 	cdResult valid = cd3ValidateHull(hull);
 	TEST_CHECKF(valid == CD_OK, "%s (%d points): the hull does not validate: %s", label, count,
-				cdResultString(valid));
-	double tolerance = (double)cd3GetHullTolerance(hull);
+				cdGetResultString(valid));
+	double tolerance = (double)cd3Hull_GetTolerance(hull);
 	double containment = WorstContainment(hull, points, count);
 	TEST_CHECKF(containment <= tolerance, "%s (%d points): a point lies %.3g above a face (tolerance %.3g)",
 				label, count, containment, tolerance);
@@ -376,8 +376,8 @@ static void ExpectResult(const char* label, const cd3Vec* points, int count, cdR
 {
 	cd3Hull* hull = (cd3Hull*)(uintptr_t)1;
 	cdResult result = cd3ComputeHull(points, count, &hull);
-	TEST_CHECKF(result == expected && hull == NULL, "%s: %s, expected %s", label, cdResultString(result),
-				cdResultString(expected));
+	TEST_CHECKF(result == expected && hull == NULL, "%s: %s, expected %s", label, cdGetResultString(result),
+				cdGetResultString(expected));
 	if (result == CD_OK)
 	{
 		cd3DestroyHull(hull);
@@ -586,7 +586,7 @@ static void TestHullShapeBasics(void)
 	{
 		return;
 	}
-	TEST_CHECK(strcmp(cd3ShapeTypeName(CD3_SHAPE_HULL), "hull") == 0);
+	TEST_CHECK(strcmp(cd3GetShapeTypeName(CD3_SHAPE_HULL), "hull") == 0);
 	cd3Transform t = {V3(0, 2, 0), cd3MakeQuatAxisAngle(V3(0, 1, 0), CD_R(0.25) * CD_PI)};
 	cd3Shape shape = cd3MakeHullShape(box, t);
 	TEST_CHECK(cd3ValidateShape(&shape) == CD_OK && cd3IsValidHullShape(shape.hull));
@@ -1061,7 +1061,7 @@ static void TestOutOfMemory(void)
 		cdResult result = cd3ComputeHull(points, 100, &hull);
 		succeeded = result == CD_OK;
 		TEST_CHECKF(result == CD_OK || (result == CD_ERROR_OUT_OF_MEMORY && hull == NULL), "budget %d: %s",
-					budget, cdResultString(result));
+					budget, cdGetResultString(result));
 		cd3DestroyHull(hull);
 		TEST_CHECKF(g_testBudget.live == 0, "budget %d: %d allocations leaked", budget, g_testBudget.live);
 		cdSetAllocator(NULL, NULL);

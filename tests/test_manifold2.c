@@ -626,7 +626,7 @@ static void TestSegmentShortOfEnd(void)
 #endif
 }
 
-/* fuzz_manifold2 findings of this session's later runs. A flat AABB (a segment from the origin
+/* Findings of fuzz_manifold2 (regression inputs). A flat AABB (a segment from the origin
  * along +x) and a rounded triangle whose core corner (-0.000625, 0) lies on the segment's line
  * 6.25e-4 short of its end: the cores are apart by less than the 0.1 slop of the separating-axis
  * path, the triangle's corner lies beyond the segment face's side line, and the point kept there

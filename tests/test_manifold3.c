@@ -1263,7 +1263,7 @@ static double WorstOffSurface(const cd3Manifold* m, const cd3Shape* a, const cd3
 	return worst;
 }
 
-/* Findings of fuzz_manifold3 of session 3 (fuzz/corpus/fuzz_manifold3/regression-*): the exact
+/* Findings of fuzz_manifold3 (fuzz/corpus/fuzz_manifold3/regression-*): the exact
  * inputs, each manifold checked on both surfaces in both orders. */
 static void TestFuzzRegressions(void)
 {

@@ -10,6 +10,8 @@
 #include "random_shapes2.h"
 #include "test.h"
 
+#include "../src/query/pairs2.h"
+
 #define BAND 1e-3
 
 static cd2Shape Translated(const cd2Shape* shape, cd2Vec offset)
@@ -160,8 +162,52 @@ static void TestOverlapMatrix(void)
 	}
 }
 
+
+/* The shape and pair tables (src/query/pairs2.h) that drive the dispatchers: one row per shape
+ * type and one row per unordered pair of types, each in canonical order, every pair exactly once;
+ * and each pair's typed overlap function answers as cd2Overlap in both orders. */
+static int g_pairRows[CD2_SHAPE_TYPE_COUNT][CD2_SHAPE_TYPE_COUNT];
+static int g_shapeRows[CD2_SHAPE_TYPE_COUNT];
+
+static void TestPairTables(void)
+{
+#define COUNT_SHAPE(Name, PointIn, ClosestPointOn, Raycast) ++g_shapeRows[CD2_TYPE_##Name];
+	CD2_SHAPE_TABLE(COUNT_SHAPE)
+#undef COUNT_SHAPE
+#define COUNT_PAIR(A, B, Overlap, Distance, Collide) ++g_pairRows[CD2_TYPE_##A][CD2_TYPE_##B];
+	CD2_PAIR_TABLE(COUNT_PAIR)
+#undef COUNT_PAIR
+	for (int i = 0; i < CD2_SHAPE_TYPE_COUNT; ++i)
+	{
+		TEST_CHECKF(g_shapeRows[i] == 1, "%s: %d shape rows", TypeName((cd2ShapeType)i), g_shapeRows[i]);
+		for (int j = 0; j < CD2_SHAPE_TYPE_COUNT; ++j)
+		{
+			int expected = i <= j ? 1 : 0;
+			TEST_CHECKF(g_pairRows[i][j] == expected, "%s-%s: %d pair rows, expected %d", TypeName((cd2ShapeType)i),
+						TypeName((cd2ShapeType)j), g_pairRows[i][j], expected);
+		}
+	}
+
+	TestRng rng = TestRngMake(0x7ab1e2u);
+	int checked = 0;
+	for (int n = 0; n < 200; ++n)
+	{
+#define CHECK_OVERLAP(A, B, Overlap, Distance, Collide)                                                      \
+	{                                                                                                        \
+		cd2Shape a = RandomShape(&rng, CD2_TYPE_##A), b = RandomShape(&rng, CD2_TYPE_##B);                   \
+		bool typed = Overlap(CD2_SHAPE_ARG(A, &a), CD2_SHAPE_ARG(B, &b));                                    \
+		TEST_CHECKF(typed == cd2Overlap(&a, &b) && typed == cd2Overlap(&b, &a), "%s #%d", #Overlap, n);      \
+		++checked;                                                                                           \
+	}
+		CD2_PAIR_TABLE(CHECK_OVERLAP)
+#undef CHECK_OVERLAP
+	}
+	TEST_CHECK(checked == 200 * 21);
+}
+
 int main(void)
 {
+	TEST_RUN(TestPairTables);
 	TEST_RUN(TestOverlapMatrix);
 	return TEST_SUMMARY();
 }

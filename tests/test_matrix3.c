@@ -10,6 +10,8 @@
 #include "random_shapes3.h"
 #include "test.h"
 
+#include "../src/query/pairs3.h"
+
 #define BAND 1e-3
 
 static cd3Shape Translated(const cd3Shape* shape, cd3Vec offset)
@@ -179,8 +181,53 @@ static void TestOppositePlanes(void)
 	TEST_CHECK(separated > 100);
 }
 
+
+/* The shape and pair tables (src/query/pairs3.h) that drive the dispatchers: one row per shape
+ * type and one row per unordered pair of types, each in canonical order, every pair exactly once;
+ * and each pair's typed overlap function answers as cd3Overlap in both orders. */
+static int g_pairRows[CD3_SHAPE_TYPE_COUNT][CD3_SHAPE_TYPE_COUNT];
+static int g_shapeRows[CD3_SHAPE_TYPE_COUNT];
+
+static void TestPairTables(void)
+{
+#define COUNT_SHAPE(Name, PointIn, ClosestPointOn, Raycast) ++g_shapeRows[CD3_TYPE_##Name];
+	CD3_SHAPE_TABLE(COUNT_SHAPE)
+#undef COUNT_SHAPE
+#define COUNT_PAIR(A, B, Overlap, Distance, Collide) ++g_pairRows[CD3_TYPE_##A][CD3_TYPE_##B];
+	CD3_PAIR_TABLE(COUNT_PAIR)
+	CD3_HULL_PAIR_TABLE(COUNT_PAIR)
+#undef COUNT_PAIR
+	for (int i = 0; i < CD3_SHAPE_TYPE_COUNT; ++i)
+	{
+		TEST_CHECKF(g_shapeRows[i] == 1, "%s: %d shape rows", TypeName((cd3ShapeType)i), g_shapeRows[i]);
+		for (int j = 0; j < CD3_SHAPE_TYPE_COUNT; ++j)
+		{
+			int expected = i <= j ? 1 : 0;
+			TEST_CHECKF(g_pairRows[i][j] == expected, "%s-%s: %d pair rows, expected %d", TypeName((cd3ShapeType)i),
+						TypeName((cd3ShapeType)j), g_pairRows[i][j], expected);
+		}
+	}
+
+	TestRng rng = TestRngMake(0x7ab1e3u);
+	int checked = 0;
+	for (int n = 0; n < 200; ++n)
+	{
+#define CHECK_OVERLAP(A, B, Overlap, Distance, Collide)                                                      \
+	{                                                                                                        \
+		cd3Shape a = RandomShape(&rng, CD3_TYPE_##A), b = RandomShape(&rng, CD3_TYPE_##B);                   \
+		bool typed = Overlap(CD3_SHAPE_ARG(A, &a), CD3_SHAPE_ARG(B, &b));                                    \
+		TEST_CHECKF(typed == cd3Overlap(&a, &b) && typed == cd3Overlap(&b, &a), "%s #%d", #Overlap, n);      \
+		++checked;                                                                                           \
+	}
+		CD3_PAIR_TABLE(CHECK_OVERLAP)
+#undef CHECK_OVERLAP
+	}
+	TEST_CHECK(checked == 200 * 28);
+}
+
 int main(void)
 {
+	TEST_RUN(TestPairTables);
 	TEST_RUN(TestOverlapMatrix);
 	TEST_RUN(TestOppositePlanes);
 	return TEST_SUMMARY();

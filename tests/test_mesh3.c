@@ -12,7 +12,7 @@ static cd3Mesh* Build(const TestMesh* m)
 {
 	cd3Mesh* mesh = NULL;
 	cdResult result = cd3CreateMesh(m->vertices, m->vertexCount, m->indices, m->triangleCount, &mesh);
-	TEST_CHECKF(result == CD_OK && mesh != NULL, "result %s", cdResultString(result));
+	TEST_CHECKF(result == CD_OK && mesh != NULL, "result %s", cdGetResultString(result));
 	if (mesh != NULL)
 	{
 		TEST_CHECK(cd3ValidateMesh(mesh) == CD_OK);
@@ -57,7 +57,7 @@ static void TestBadInput(void)
 	int flat[6] = {0, 1, 2, 0, 0, 1};
 	TEST_CHECK(cd3CreateMesh(line, 3, flat, 2, &mesh) == CD_ERROR_DEGENERATE && mesh == NULL);
 	TEST_CHECK(cd3ValidateMesh(NULL) == CD_ERROR_INVALID_ARGUMENT);
-	cd3MeshStats none = cd3GetMeshStats(NULL);
+	cd3MeshStats none = cd3Mesh_GetStats(NULL);
 	TEST_CHECK(none.triangleCount == 0 && none.bytes == 0);
 }
 
@@ -73,18 +73,18 @@ static void TestExact(void)
 		return;
 	}
 	TEST_CHECK(cd3ValidateMesh(mesh) == CD_OK);
-	cd3MeshStats stats = cd3GetMeshStats(mesh);
+	cd3MeshStats stats = cd3Mesh_GetStats(mesh);
 	TEST_CHECK(stats.triangleCount == 2 && stats.droppedTriangleCount == 1 && stats.vertexCount == 5);
 	TEST_CHECK(stats.nodeCount == 2 * stats.leafCount - 1 && stats.depth >= 1 && stats.bytes > 0);
 	/* The square's outline: 4 boundary edges, active on both sides; its diagonal is flat. */
 	TEST_CHECK(stats.activeEdgeCount == 8);
 	TEST_CHECK(stats.bounds.min.x <= CD_R(0.0) && stats.bounds.max.x >= CD_R(1.0) &&
 			   stats.bounds.max.z >= CD_R(1.0));
-	TEST_CHECK(cd3GetMeshTriangleCount(mesh) == 2);
+	TEST_CHECK(cd3Mesh_GetTriangleCount(mesh) == 2);
 	cd3Triangle t;
-	TEST_CHECK(cd3GetMeshTriangle(mesh, 2, &t) && cd3VecEqual(t.a, v[1]) && cd3VecEqual(t.c, v[3]));
-	TEST_CHECK(!cd3GetMeshTriangle(mesh, 1, &t) && !cd3GetMeshTriangle(mesh, 3, &t) &&
-			   !cd3GetMeshTriangle(mesh, -1, &t));
+	TEST_CHECK(cd3Mesh_GetTriangle(mesh, 2, &t) && cd3VecEqual(t.a, v[1]) && cd3VecEqual(t.c, v[3]));
+	TEST_CHECK(!cd3Mesh_GetTriangle(mesh, 1, &t) && !cd3Mesh_GetTriangle(mesh, 3, &t) &&
+			   !cd3Mesh_GetTriangle(mesh, -1, &t));
 
 	cd3Transform id = CD3_TRANSFORM_IDENTITY;
 	cd3Ray down = {{CD_R(0.75), CD_R(2.0), CD_R(0.5)}, {CD_R(0.0), -CD_R(4.0), CD_R(0.0)}};
@@ -386,7 +386,7 @@ static void CheckQueriesAndOverlap(const TestMesh* m, cd3Aabb bounds, int count,
 		bool got = cd3OverlapMesh(&shape, mesh, xf);
 		overlaps += got ? 1 : 0;
 		TEST_CHECKF(got == brute, "%s overlap %d (%s): brute %d, mesh %d", name, i,
-					cd3ShapeTypeName(shape.type), brute, got);
+					cd3GetShapeTypeName(shape.type), brute, got);
 	}
 	TEST_CHECKF(overlaps > count / 20 && overlaps < count, "%s: %d overlaps of %d", name, overlaps, count);
 	free(seen);
@@ -450,7 +450,7 @@ static void TestSphereMesh(void)
 	cd3Mesh* mesh = Build(&m);
 	if (mesh != NULL)
 	{
-		cd3MeshStats stats = cd3GetMeshStats(mesh);
+		cd3MeshStats stats = cd3Mesh_GetStats(mesh);
 		/* The pole fans: one zero-area triangle per quad of the first and last band. */
 		TEST_CHECK(stats.droppedTriangleCount == 2 * segments &&
 				   stats.triangleCount == 2 * rings * segments - 2 * segments);
@@ -470,7 +470,7 @@ static void TestStats(void)
 	cd3Mesh* mesh = Build(&m);
 	if (mesh != NULL)
 	{
-		cd3MeshStats s = cd3GetMeshStats(mesh);
+		cd3MeshStats s = cd3Mesh_GetStats(mesh);
 		TEST_CHECK(s.triangleCount == 2 * 64 * 64 && s.droppedTriangleCount == 0);
 		TEST_CHECK(s.nodeCount == 2 * s.leafCount - 1 && s.leafCount >= s.triangleCount / 8);
 		/* A SAH tree of 8192 triangles is shallow and cheap: far below the linear list (cost n). */

@@ -14,7 +14,7 @@ static cd3Mesh* Build(const TestMesh* m)
 {
 	cd3Mesh* mesh = NULL;
 	cdResult result = cd3CreateMesh(m->vertices, m->vertexCount, m->indices, m->triangleCount, &mesh);
-	TEST_CHECKF(result == CD_OK, "%s", cdResultString(result));
+	TEST_CHECKF(result == CD_OK, "%s", cdGetResultString(result));
 	return mesh;
 }
 
@@ -337,7 +337,7 @@ static void TestLoneTriangle(void)
 			++contacts;
 		}
 		TEST_CHECKF(same, "case %d (%s): mesh %d manifolds, cd3Collide %d points", i,
-					cd3ShapeTypeName(shape.type), count, expected.pointCount);
+					cd3GetShapeTypeName(shape.type), count, expected.pointCount);
 		cd3DestroyMesh(mesh);
 	}
 	TEST_CHECKF(contacts > 20, "%d contacts", contacts);

@@ -409,7 +409,7 @@ static void TestPolygonSegmentAndSegments(void)
 
 static const char* TypeName(const cd2Shape* s)
 {
-	return cd2ShapeTypeName(s->type);
+	return cd2GetShapeTypeName(s->type);
 }
 
 /* The pair function named in canonical order, called directly (not through cd2Overlap). */
@@ -537,7 +537,7 @@ static cd2Shape Transformed(const cd2Shape* s, cd2Transform x)
 				points[i] = cd2TransformPoint(x, s->polygon.vertices[i]);
 			}
 			cdResult result = cd2MakeRoundedPolygon(points, s->polygon.count, s->polygon.radius, &r.polygon);
-			TEST_CHECKF(result == CD_OK, "transformed polygon rejected: %s", cdResultString(result));
+			TEST_CHECKF(result == CD_OK, "transformed polygon rejected: %s", cdGetResultString(result));
 			break;
 		}
 		default:
@@ -802,7 +802,7 @@ static void CheckPointInShape(const char* label, double center, double extent, i
 			}
 		}
 		TEST_CHECKF(inside > perType / 40, "%s %s: only %d points inside", label,
-					cd2ShapeTypeName((cd2ShapeType)type), inside);
+					cd2GetShapeTypeName((cd2ShapeType)type), inside);
 	}
 }
 

@@ -68,7 +68,7 @@ static void Expect(cd3Shape a, cd3Shape b, bool expected, int line)
 	bool ab = cd3Overlap(&a, &b);
 	bool ba = cd3Overlap(&b, &a);
 	TEST_CHECKF(ab == expected && ba == expected, "line %d: %s-%s: expected %d, got %d (swapped %d)", line,
-				cd3ShapeTypeName(a.type), cd3ShapeTypeName(b.type), (int)expected, (int)ab, (int)ba);
+				cd3GetShapeTypeName(a.type), cd3GetShapeTypeName(b.type), (int)expected, (int)ab, (int)ba);
 }
 
 #define EXPECT(a, b, expected) Expect(a, b, expected, __LINE__)
@@ -494,7 +494,7 @@ static const char* ShapeText(const cd3Shape* s, char* buffer, size_t size)
 				: s->type == CD3_SHAPE_TRIANGLE ? 9
 				: s->type == CD3_SHAPE_PLANE	? 4
 												: 6;
-	int used = snprintf(buffer, size, "%s(", cd3ShapeTypeName(s->type));
+	int used = snprintf(buffer, size, "%s(", cd3GetShapeTypeName(s->type));
 	for (int i = 0; i < count && used > 0 && (size_t)used < size; ++i)
 	{
 		used += snprintf(buffer + used, size - (size_t)used, i == 0 ? "%.9g" : ", %.9g", (double)v[i]);
@@ -577,8 +577,8 @@ static void RunRandomPairs(double scale, double offset, double band, int casesPe
 				}
 				bool ab = cd3Overlap(&a, &b);
 				bool ba = cd3Overlap(&b, &a);
-				TEST_CHECKF(ab == ba, "%s-%s scale %g: order matters (%d vs %d)", cd3ShapeTypeName(a.type),
-							cd3ShapeTypeName(b.type), scale, (int)ab, (int)ba);
+				TEST_CHECKF(ab == ba, "%s-%s scale %g: order matters (%d vs %d)", cd3GetShapeTypeName(a.type),
+							cd3GetShapeTypeName(b.type), scale, (int)ab, (int)ba);
 				Verdict verdict = ReferenceVerdict(&a, &b, band);
 				if (verdict == VERDICT_UNDECIDED)
 				{
@@ -609,12 +609,12 @@ static void RunRandomPairs(double scale, double offset, double band, int casesPe
 				continue; /* random half-spaces always meet; the exact cases cover the rest */
 			}
 			TEST_CHECKF(apart >= casesPerPair / 20, "%s-%s scale %g: only %d apart cases",
-						cd3ShapeTypeName((cd3ShapeType)ta), cd3ShapeTypeName((cd3ShapeType)tb), scale, apart);
+						cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), scale, apart);
 			if (!thin || ta == CD3_SHAPE_SPHERE || ta == CD3_SHAPE_CAPSULE || ta == CD3_SHAPE_AABB ||
 				ta == CD3_SHAPE_BOX)
 			{
 				TEST_CHECKF(overlapping >= casesPerPair / 20, "%s-%s scale %g: only %d overlapping cases",
-							cd3ShapeTypeName((cd3ShapeType)ta), cd3ShapeTypeName((cd3ShapeType)tb), scale,
+							cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), scale,
 							overlapping);
 			}
 		}
@@ -713,7 +713,7 @@ static void TestTouchingPairs(void)
 				}
 			}
 			TEST_CHECKF(touching >= 5 && apart >= 20, "%s-%s: %d touching, %d apart cases",
-						cd3ShapeTypeName((cd3ShapeType)ta), cd3ShapeTypeName((cd3ShapeType)tb), touching,
+						cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), touching,
 						apart);
 		}
 	}
@@ -745,7 +745,7 @@ static void TestRandomPointInShape(void)
 		if (distance > 1e-3)
 		{
 			++outside;
-			TEST_CHECKF(!result, "%s: point %g away reported inside", cd3ShapeTypeName(type), distance);
+			TEST_CHECKF(!result, "%s: point %g away reported inside", cd3GetShapeTypeName(type), distance);
 			continue;
 		}
 		bool solid = type != CD3_SHAPE_TRIANGLE && type != CD3_SHAPE_SEGMENT;
@@ -756,7 +756,7 @@ static void TestRandomPointInShape(void)
 			{
 				++inside;
 				TEST_CHECKF(result, "%s: point on the shape (%g away) reported outside",
-							cd3ShapeTypeName(type), distance);
+							cd3GetShapeTypeName(type), distance);
 			}
 			continue;
 		}
@@ -776,7 +776,7 @@ static void TestRandomPointInShape(void)
 		if (deep)
 		{
 			++inside;
-			TEST_CHECKF(result, "%s: deep point reported outside", cd3ShapeTypeName(type));
+			TEST_CHECKF(result, "%s: deep point reported outside", cd3GetShapeTypeName(type));
 		}
 	}
 	TEST_CHECKF(inside > 500 && outside > 1000, "inside %d, outside %d", inside, outside);
@@ -808,11 +808,11 @@ static void TestClosestPointIsContained(void)
 			continue;
 		}
 		TEST_CHECKF(cd3PointInShape(&shape, q), "%s: closest point (%g %g %g) not contained",
-					cd3ShapeTypeName(type), (double)q.x, (double)q.y, (double)q.z);
+					cd3GetShapeTypeName(type), (double)q.x, (double)q.y, (double)q.z);
 		/* And a sphere of radius 0 there overlaps the shape. */
 		cd3Shape point = cd3MakeSphereShape((cd3Sphere){q, CD_R(0.0)});
 		TEST_CHECKF(cd3Overlap(&point, &shape), "%s: point sphere at the closest point misses",
-					cd3ShapeTypeName(type));
+					cd3GetShapeTypeName(type));
 	}
 }
 

@@ -288,7 +288,7 @@ static void TestBoxPolygon(void)
 		cd2Polygon farPolygon = Sentinel();
 		cdResult result = cd2MakeBoxPolygon(far, &farPolygon);
 		TEST_CHECKF(result == CD_OK || result == CD_ERROR_DEGENERATE, "size %g: %s", size,
-					cdResultString(result));
+					cdGetResultString(result));
 		if (result == CD_OK)
 		{
 			++built;
@@ -341,7 +341,7 @@ static void CheckRandomClouds(uint64_t seed, double offset, double minExtent, do
 			CheckPolygon(&polygon, points, count, tolerance, label);
 			continue;
 		}
-		TEST_CHECKF(result == CD_ERROR_DEGENERATE, "%s: cloud %d: %s", label, n, cdResultString(result));
+		TEST_CHECKF(result == CD_ERROR_DEGENERATE, "%s: cloud %d: %s", label, n, cdGetResultString(result));
 		TEST_CHECKF(IsSentinel(&polygon), "%s: failed build wrote its output", label);
 		int far1 = 0, far2 = 0;
 		double farthest = -1.0;

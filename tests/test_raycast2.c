@@ -384,7 +384,7 @@ static void CheckSolidCast(const cd2Shape* s, cd2Ray ray, double scale, int inde
 	double tol = TOL * scale;
 	RefCast ref = RefRaycastSolid(s, o, d, BAND * scale);
 	double valueStart = RefValue(s, o);
-	const char* name = cd2ShapeTypeName(s->type);
+	const char* name = cd2GetShapeTypeName(s->type);
 
 	if (!got)
 	{
@@ -868,7 +868,7 @@ static void TestDispatcher(void)
 				break;
 		}
 		TEST_CHECKF(hitA == hitB && a.fraction == b.fraction && cd2VecEqual(a.normal, b.normal),
-					"case %d (%s)", i, cd2ShapeTypeName(s.type));
+					"case %d (%s)", i, cd2GetShapeTypeName(s.type));
 	}
 	cd2Shape bad;
 	bad.type = CD2_SHAPE_TYPE_COUNT;
@@ -1164,17 +1164,17 @@ static void TestRigidTransformInvariance(void)
 		cd2RayHit hit = UntouchedHit(), movedHit = UntouchedHit();
 		bool got = cd2Raycast(&s, ray, &hit);
 		bool movedGot = cd2Raycast(&moved, movedRay, &movedHit);
-		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd2ShapeTypeName(type),
+		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd2GetShapeTypeName(type),
 					i, got, movedGot);
 		if (got && movedGot)
 		{
 			double length = DLength(D(ray.translation));
 			TEST_CHECKF(fabs((double)hit.fraction - (double)movedHit.fraction) * length <= 10 * TOL * 10,
-						"%s case %d: fraction %.9g vs %.9g", cd2ShapeTypeName(type), i, (double)hit.fraction,
+						"%s case %d: fraction %.9g vs %.9g", cd2GetShapeTypeName(type), i, (double)hit.fraction,
 						(double)movedHit.fraction);
 			DVec rotated = DRotate(xf.q, D(hit.normal));
 			TEST_CHECKF(DLength(DSub(rotated, D(movedHit.normal))) <= 10 * TOL, "%s case %d: normal",
-						cd2ShapeTypeName(type), i);
+						cd2GetShapeTypeName(type), i);
 		}
 	}
 }
@@ -1250,7 +1250,7 @@ static void TestAgreesWith3D(void)
 			continue; /* a 2D miss may still pass within the 3D tolerance of the segment */
 		}
 		++compared;
-		TEST_CHECKF(got == got3, "%s case %d: 2D %d, 3D %d", cd2ShapeTypeName(s.type), i, got, got3);
+		TEST_CHECKF(got == got3, "%s case %d: 2D %d, 3D %d", cd2GetShapeTypeName(s.type), i, got, got3);
 		if (got && got3)
 		{
 			double length = DLength(D(ray.translation));
@@ -1258,7 +1258,7 @@ static void TestAgreesWith3D(void)
 							fabs((double)hit.normal.x - (double)hit3.normal.x) <= 10 * TOL &&
 							fabs((double)hit.normal.y - (double)hit3.normal.y) <= 10 * TOL &&
 							fabs((double)hit3.normal.z) <= 10 * TOL,
-						"%s case %d: 2D (%.9g; %g %g), 3D (%.9g; %g %g %g)", cd2ShapeTypeName(s.type), i,
+						"%s case %d: 2D (%.9g; %g %g), 3D (%.9g; %g %g %g)", cd2GetShapeTypeName(s.type), i,
 						(double)hit.fraction, (double)hit.normal.x, (double)hit.normal.y,
 						(double)hit3.fraction, (double)hit3.normal.x, (double)hit3.normal.y,
 						(double)hit3.normal.z);
@@ -1278,7 +1278,7 @@ static void TestBoxPolygonAgreesWithBox(void)
 		cd2Shape polygon;
 		polygon.type = CD2_SHAPE_POLYGON;
 		cdResult result = cd2MakeBoxPolygon(box, &polygon.polygon);
-		TEST_CHECKF(result == CD_OK, "case %d: cd2MakeBoxPolygon failed: %s", i, cdResultString(result));
+		TEST_CHECKF(result == CD_OK, "case %d: cd2MakeBoxPolygon failed: %s", i, cdGetResultString(result));
 		if (result != CD_OK)
 		{
 			continue;
@@ -1362,13 +1362,13 @@ static void TestScales(void)
 		cd2Ray scaledRay = {cd2Scale(k, ray.origin), cd2Scale(k, ray.translation)};
 		cd2RayHit hit = UntouchedHit();
 		bool got = cd2Raycast(&scaled, scaledRay, &hit);
-		TEST_CHECKF(got == baseGot, "%s case %d scale %g: %d vs %d", cd2ShapeTypeName(type), i, (double)k,
+		TEST_CHECKF(got == baseGot, "%s case %d scale %g: %d vs %d", cd2GetShapeTypeName(type), i, (double)k,
 					got, baseGot);
 		if (got && baseGot)
 		{
 			TEST_CHECKF(IsFiniteHit(hit) && fabs((double)hit.fraction - (double)base.fraction) <= 1e-5 &&
 							DLength(DSub(D(hit.normal), D(base.normal))) <= 1e-5,
-						"%s case %d scale %g: fraction %.9g vs %.9g", cd2ShapeTypeName(type), i, (double)k,
+						"%s case %d scale %g: fraction %.9g vs %.9g", cd2GetShapeTypeName(type), i, (double)k,
 						(double)hit.fraction, (double)base.fraction);
 		}
 
@@ -1386,7 +1386,7 @@ static void TestScales(void)
 			double n = DLength(D(hit.normal));
 			TEST_CHECKF(IsFiniteHit(hit) && hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0) &&
 							(fabs(n - 1.0) <= 1e-5 || n == 0.0),
-						"%s case %d offset %g: fraction %g normal length %g", cd2ShapeTypeName(type), i,
+						"%s case %d offset %g: fraction %g normal length %g", cd2GetShapeTypeName(type), i,
 						offset, (double)hit.fraction, n);
 		}
 	}

@@ -341,7 +341,7 @@ static void CheckSolidCast(const cd3Shape* s, cd3Ray ray, double scale, int inde
 	double tol = TOL * scale;
 	RefCast ref = RefRaycastSolid(s, o, d, BAND * scale);
 	double valueStart = RefValue(s, o);
-	const char* name = cd3ShapeTypeName(s->type);
+	const char* name = cd3GetShapeTypeName(s->type);
 
 	if (!got)
 	{
@@ -925,7 +925,7 @@ static void TestDispatcher(void)
 				break;
 		}
 		TEST_CHECKF(hitA == hitB && a.fraction == b.fraction && cd3VecEqual(a.normal, b.normal),
-					"case %d (%s)", i, cd3ShapeTypeName(s.type));
+					"case %d (%s)", i, cd3GetShapeTypeName(s.type));
 	}
 	cd3Triangle t = {CD3_VEC_ZERO, cd3MakeVec(CD_R(1.0), CD_R(0.0), CD_R(0.0)),
 					 cd3MakeVec(CD_R(0.0), CD_R(1.0), CD_R(0.0))};
@@ -1087,17 +1087,17 @@ static void TestRigidTransformInvariance(void)
 		cd3RayHit hit = UntouchedHit(), movedHit = UntouchedHit();
 		bool got = cd3Raycast(&s, ray, &hit);
 		bool movedGot = cd3Raycast(&moved, movedRay, &movedHit);
-		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd3ShapeTypeName(type),
+		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd3GetShapeTypeName(type),
 					i, got, movedGot);
 		if (got && movedGot)
 		{
 			double length = DLength(D(ray.translation));
 			TEST_CHECKF(fabs((double)hit.fraction - (double)movedHit.fraction) * length <= 10 * TOL * 10,
-						"%s case %d: fraction %.9g vs %.9g", cd3ShapeTypeName(type), i, (double)hit.fraction,
+						"%s case %d: fraction %.9g vs %.9g", cd3GetShapeTypeName(type), i, (double)hit.fraction,
 						(double)movedHit.fraction);
 			DVec rotated = DRotate(xf.q, D(hit.normal));
 			TEST_CHECKF(DLength(DSub(rotated, D(movedHit.normal))) <= 10 * TOL, "%s case %d: normal",
-						cd3ShapeTypeName(type), i);
+						cd3GetShapeTypeName(type), i);
 		}
 	}
 }
@@ -1474,14 +1474,14 @@ static void TestScales(void)
 		cd3Ray scaledRay = {cd3Scale(kr, ray.origin), cd3Scale(kr, ray.translation)};
 		cd3RayHit hit = UntouchedHit();
 		bool got = cd3Raycast(&scaled, scaledRay, &hit);
-		TEST_CHECKF(got == baseGot, "%s case %d scale %g: %d vs %d", cd3ShapeTypeName(type), i, k, got,
+		TEST_CHECKF(got == baseGot, "%s case %d scale %g: %d vs %d", cd3GetShapeTypeName(type), i, k, got,
 					baseGot);
 		if (got && baseGot)
 		{
-			TEST_CHECKF(IsFiniteHit(hit), "%s case %d scale %g: not finite", cd3ShapeTypeName(type), i, k);
+			TEST_CHECKF(IsFiniteHit(hit), "%s case %d scale %g: not finite", cd3GetShapeTypeName(type), i, k);
 			TEST_CHECKF(fabs((double)hit.fraction - (double)base.fraction) <= 1e-5 &&
 							DLength(DSub(D(hit.normal), D(base.normal))) <= 1e-5,
-						"%s case %d scale %g: fraction %.9g vs %.9g", cd3ShapeTypeName(type), i, k,
+						"%s case %d scale %g: fraction %.9g vs %.9g", cd3GetShapeTypeName(type), i, k,
 						(double)hit.fraction, (double)base.fraction);
 		}
 
@@ -1503,7 +1503,7 @@ static void TestScales(void)
 			double n = DLength(D(hit.normal));
 			TEST_CHECKF(IsFiniteHit(hit) && hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1.0) &&
 							(fabs(n - 1.0) <= 1e-5 || n == 0.0),
-						"%s case %d offset %g: fraction %g normal length %g", cd3ShapeTypeName(type), i,
+						"%s case %d offset %g: fraction %g normal length %g", cd3GetShapeTypeName(type), i,
 						offset, (double)hit.fraction, n);
 		}
 	}

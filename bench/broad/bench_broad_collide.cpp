@@ -84,11 +84,11 @@ class CollideAdapter : public Adapter
 	{
 		if (bp3_)
 		{
-			cd3BroadPhase_Destroy(bp3_);
+			cd3DestroyBroadPhase(bp3_);
 		}
 		if (bp2_)
 		{
-			cd2BroadPhase_Destroy(bp2_);
+			cd2DestroyBroadPhase(bp2_);
 		}
 	}
 	std::string Name() const override
@@ -112,9 +112,9 @@ class CollideAdapter : public Adapter
 			def.type = type_;
 			def.bounds = To3(world);
 			def.capacity = scene.n;
-			if (cd3BroadPhase_Create(&def, &bp3_) != CD_OK)
+			if (cd3CreateBroadPhase(&def, &bp3_) != CD_OK)
 			{
-				std::fprintf(stderr, "%s: cd3BroadPhase_Create failed\n", name_.c_str());
+				std::fprintf(stderr, "%s: cd3CreateBroadPhase failed\n", name_.c_str());
 				std::exit(2);
 			}
 			// The scene is loaded at once: the bulk API builds the structure in one pass (the tree
@@ -147,9 +147,9 @@ class CollideAdapter : public Adapter
 			def.type = type_;
 			def.bounds = To2(world);
 			def.capacity = scene.n;
-			if (cd2BroadPhase_Create(&def, &bp2_) != CD_OK)
+			if (cd2CreateBroadPhase(&def, &bp2_) != CD_OK)
 			{
-				std::fprintf(stderr, "%s: cd2BroadPhase_Create failed\n", name_.c_str());
+				std::fprintf(stderr, "%s: cd2CreateBroadPhase failed\n", name_.c_str());
 				std::exit(2);
 			}
 			std::vector<cd2Aabb> boxes(size_t(scene.n));
@@ -327,14 +327,14 @@ class CollideAdapter : public Adapter
 			r.origin = {cdReal(ray.origin[0]), cdReal(ray.origin[1]), cdReal(ray.origin[2])};
 			r.translation = {cdReal(ray.translation[0]), cdReal(ray.translation[1]),
 							 cdReal(ray.translation[2])};
-			cd3BroadPhase_RayCast(bp3_, r, Ray3, &q);
+			cd3BroadPhase_Raycast(bp3_, r, Ray3, &q);
 		}
 		else
 		{
 			cd2Ray r;
 			r.origin = {cdReal(ray.origin[0]), cdReal(ray.origin[1])};
 			r.translation = {cdReal(ray.translation[0]), cdReal(ray.translation[1])};
-			cd2BroadPhase_RayCast(bp2_, r, Ray2, &q);
+			cd2BroadPhase_Raycast(bp2_, r, Ray2, &q);
 		}
 		return q.hits;
 	}

@@ -313,7 +313,7 @@ int main(int argc, char** argv)
 	std::printf(
 		"terrain: %d segments; %d boxes touch %zu edges (%.2f candidate edges per box), %d contact points "
 		"(box2d: %d); box2d tree height %d\n",
-		cd2GetChainSegmentCount(scene.chain), kBoxes, scene.pairEdge.size(), (double)candidates / kBoxes,
+		cd2Chain_GetSegmentCount(scene.chain), kBoxes, scene.pairEdge.size(), (double)candidates / kBoxes,
 		collidePoints, box2dPoints, scene.tree.GetHeight());
 	auto collideChain = [&](int i) {
 		cd2Manifold manifolds[16];
@@ -333,13 +333,13 @@ int main(int argc, char** argv)
 		return query.points;
 	};
 	auto collideEdge = [&](int k) {
-		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		cd2ChainSegment segment = cd2Chain_GetSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentPolygonDirect(
 				   &segment, &scene.boxPolygons[(size_t)scene.pairBox[(size_t)k]], speculative)
 			.pointCount;
 	};
 	auto collideEdgeGeneric = [&](int k) {
-		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		cd2ChainSegment segment = cd2Chain_GetSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentPolygon(&segment, &scene.boxPolygons[(size_t)scene.pairBox[(size_t)k]],
 											 speculative)
 			.pointCount;
@@ -368,7 +368,7 @@ int main(int argc, char** argv)
 		return capsule;
 	};
 	auto collideCircleEdge = [&](int k) {
-		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		cd2ChainSegment segment = cd2Chain_GetSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentCircleDirect(&segment, circleOf(k), speculative).pointCount;
 	};
 	auto box2dCircleEdge = [&](int k) {
@@ -384,15 +384,15 @@ int main(int argc, char** argv)
 		return manifold.pointCount;
 	};
 	auto collideCircleEdgeGeneric = [&](int k) {
-		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		cd2ChainSegment segment = cd2Chain_GetSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentCircle(&segment, circleOf(k), speculative).pointCount;
 	};
 	auto collideCapsuleEdge = [&](int k) {
-		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		cd2ChainSegment segment = cd2Chain_GetSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentCapsuleDirect(&segment, capsuleOf(k), speculative).pointCount;
 	};
 	auto collideCapsuleEdgeGeneric = [&](int k) {
-		cd2ChainSegment segment = cd2GetChainSegment(scene.chain, scene.pairEdge[(size_t)k]);
+		cd2ChainSegment segment = cd2Chain_GetSegment(scene.chain, scene.pairEdge[(size_t)k]);
 		return cd2CollideChainSegmentCapsule(&segment, capsuleOf(k), speculative).pointCount;
 	};
 	auto collideRay = [&](int i) {

@@ -2,8 +2,10 @@
 // b2CollidePolygons, b2CollidePolygonAndCircle and b2Distance on the same pairs in the same run.
 //
 // Pairs are near contact (overlapping by up to 0.05 or apart by up to 0.01, unit-size shapes)
-// for the manifolds, apart by 0.1 to 1 for the distance. collide takes world-space shapes; Box2D
-// takes local shapes and transforms (its API), so its figure includes applying the transforms.
+// for the manifolds, apart by 0.1 to 1 for the distance. collide's world-space rows take
+// world-space shapes; Box2D takes local shapes and transforms (its API), so its figure includes
+// applying the transforms. The "local frame" rows call collide the same way (shapes in body frames,
+// the relative transform computed from the two body transforms in each call): what a solver runs.
 // Both report contacts up to Box2D's polygon radius apart (collide: speculative distance
 // 2 * b2_polygonRadius on sharp polygons). Each figure is the median of 9 runs of about 20 ms,
 // collide's and Box2D's runs alternating so that both see the same machine load.
@@ -38,7 +40,19 @@ struct Pair
 	b2PolygonShape pa, pb; // local
 	b2CircleShape pc;	   // local (centered)
 	b2Transform xa, xb, xc;
+	cd2Polygon la, lb;			   // local, for the local-frame form (what a solver calls)
+	cd2Circle lc;				   // local (centered)
+	cd2Transform xfA, xfB, xfC; // the bodies' transforms, the same as xa, xb, xc
 };
+
+cd2Transform FromBox2D(const b2Transform& x)
+{
+	cd2Transform t;
+	t.p = cd2MakeVec((cdReal)x.p.x, (cdReal)x.p.y);
+	t.q.c = (cdReal)x.q.c;
+	t.q.s = (cdReal)x.q.s;
+	return t;
+}
 
 // Box2D's distance between the pair's polygons, from a cold cache (as the benchmark times it).
 b2DistanceOutput Box2dDistance(const Pair& p)
@@ -138,6 +152,10 @@ std::vector<Pair> MakePairs(int sides, bool box, double gapLow, double gapHigh, 
 		pair.sb = cd2MakePolygonShape(&pair.b);
 		pair.pa = ToBox2D(la);
 		pair.pb = ToBox2D(lb);
+		pair.la = la;
+		pair.lb = lb;
+		pair.xfA = FromBox2D(pair.xa);
+		pair.xfB = FromBox2D(pair.xb);
 
 		// A circle near contact with polygon a.
 		double radius = 0.2 + 0.3 * u(rng);
@@ -152,6 +170,9 @@ std::vector<Pair> MakePairs(int sides, bool box, double gapLow, double gapHigh, 
 		pair.pc.m_p.SetZero();
 		pair.pc.m_radius = (float)radius;
 		pair.xc.Set(b2Vec2((float)pair.circle.center.x, (float)pair.circle.center.y), 0.0f);
+		pair.lc.center = cd2MakeVec((cdReal)0, (cdReal)0);
+		pair.lc.radius = pair.circle.radius;
+		pair.xfC = FromBox2D(pair.xc);
 	}
 	return pairs;
 }
@@ -252,6 +273,16 @@ int main(int argc, char** argv)
 		b2CollidePolygons(&m, &p.pa, p.xa, &p.pb, p.xb);
 		return m.pointCount;
 	};
+	// The local-frame form as a solver calls it: shapes in body frames, the relative transform
+	// computed from the two body transforms on every call (as Box2D does inside b2CollidePolygons).
+	auto collidePolygonsLocal = [&](const Pair& p) {
+		cd2Transform xf = cd2InvMulTransforms(p.xfA, p.xfB);
+		return cd2CollidePolygonPolygonLocal(&p.la, &p.lb, xf, speculative).pointCount;
+	};
+	auto collideCircleLocal = [&](const Pair& p) {
+		cd2Transform xf = cd2InvMulTransforms(p.xfC, p.xfA);
+		return cd2CollideCirclePolygonLocal(p.lc, &p.la, xf, (cdReal)0).pointCount;
+	};
 	auto collideCircle = [&](const Pair& p) {
 		return cd2CollideCirclePolygon(p.circle, &p.a, (cdReal)0).pointCount;
 	};
@@ -286,6 +317,12 @@ int main(int argc, char** argv)
 		[&] { return Compare(octagons, collideCircle, box2dCircle, runs, seconds); });
 	row("circle-polygon manifold, circle-box",
 		[&] { return Compare(boxes, collideCircle, box2dCircle, runs, seconds); });
+	row("polygon manifold local frame, box-box",
+		[&] { return Compare(boxes, collidePolygonsLocal, box2dPolygons, runs, seconds); });
+	row("polygon manifold local frame, 8-gon-8-gon",
+		[&] { return Compare(octagons, collidePolygonsLocal, box2dPolygons, runs, seconds); });
+	row("circle-polygon local frame, circle-8-gon",
+		[&] { return Compare(octagons, collideCircleLocal, box2dCircle, runs, seconds); });
 	row("distance (GJK), 8-gon-8-gon apart",
 		[&] { return Compare(apart, collideDistance, box2dDistance, runs, seconds); });
 	if (filter == nullptr || std::strstr("distance", filter) != nullptr)

@@ -23,6 +23,8 @@
 //
 // Timing: each figure is the median of 9 runs of about 20 ms of thread CPU time (so that other
 // processes on a shared machine stall no one's clock), all queries' runs interleaved.
+// The "manifold, local frame" rows time the local-frame form on the same pairs as a solver calls
+// it: shapes in body frames, the relative transform computed from the body transforms in each call.
 // Usage: collide_bench_manifold3 [--quick]
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
@@ -445,6 +447,46 @@ cd3Manifold CollideShapes(const cd3Shape& a, const cd3Shape& b, cdReal speculati
 	return cd3CollideHullHull(a.hull, b.hull, speculative);
 }
 
+// A shape split into its body frame and the body's transform, the way a solver stores it.
+struct BodyShape
+{
+	cd3Shape local;
+	cd3Transform transform;
+};
+
+BodyShape InBodyFrame(const cd3Shape& shape)
+{
+	BodyShape body{shape, CD3_TRANSFORM_IDENTITY};
+	if (shape.type == CD3_SHAPE_BOX)
+	{
+		body.transform = {shape.box.center, shape.box.rotation};
+		body.local.box.center = cd3MakeVec(0, 0, 0);
+		body.local.box.rotation = CD3_QUAT_IDENTITY;
+	}
+	else if (shape.type == CD3_SHAPE_HULL)
+	{
+		body.transform = shape.hull.transform;
+		body.local.hull.transform = CD3_TRANSFORM_IDENTITY;
+	}
+	return body; // triangles: terrain, its body at the origin
+}
+
+// The local-frame form as a solver calls it: the relative transform from the two body transforms,
+// then the pair function in A's frame.
+cd3Manifold CollideBodies(const BodyShape& a, const BodyShape& b, cdReal speculative)
+{
+	cd3Transform xf = cd3InvMulTransforms(a.transform, b.transform);
+	if (a.local.type == CD3_SHAPE_BOX && b.local.type == CD3_SHAPE_TRIANGLE)
+	{
+		return cd3CollideBoxTriangleLocal(a.local.box, b.local.triangle, xf, speculative);
+	}
+	if (a.local.type == CD3_SHAPE_BOX)
+	{
+		return cd3CollideBoxBoxLocal(a.local.box, b.local.box, xf, speculative);
+	}
+	return cd3CollideHullHullLocal(a.local.hull, b.local.hull, xf, speculative);
+}
+
 struct Stats
 {
 	double maxError = 0.0, sumError = 0.0;
@@ -712,6 +754,9 @@ int main(int argc, char** argv)
 		Row manifold;
 		manifold.pair = s.name;
 		manifold.query = "manifold";
+		Row manifoldLocal;
+		manifoldLocal.pair = s.name;
+		manifoldLocal.query = "manifold, local frame";
 		auto set_ = [&s](Row& row, int column, std::function<int()> body, int calls, std::string note) {
 			if (column == FCL && !s.fclPairs)
 			{
@@ -885,6 +930,37 @@ int main(int argc, char** argv)
 			set_(depth, COLLIDE, collideManifold, kPairs, "the manifold call; depth error " + cs.Text());
 			set_(manifold, COLLIDE, collideManifold, kPairs,
 				 s.collideManifold + "; depth error " + cs.Text());
+
+			// The same pairs in body frames: the local-frame form, as a solver calls it.
+			Stats ls;
+			std::vector<BodyShape> bodyA, bodyB;
+			for (int i = 0; i < n; ++i)
+			{
+				bodyA.push_back(InBodyFrame(s.a[(size_t)i]));
+				bodyB.push_back(InBodyFrame(s.b[(size_t)i]));
+			}
+			for (int i = 0; i < n; i += 2)
+			{
+				cd3Manifold m = CollideBodies(bodyA[(size_t)i], bodyB[(size_t)i], CD_R(0.0));
+				if (m.pointCount > 0)
+				{
+					ls.Add(-MinSeparation(m), -s.reference[(size_t)i]);
+				}
+				else
+				{
+					++ls.failed;
+				}
+			}
+			set_(manifoldLocal, COLLIDE,
+				 [bodyA, bodyB]() {
+					 int k = 0;
+					 for (int i = 0; i < n; i += 2)
+					 {
+						 k += CollideBodies(bodyA[(size_t)i], bodyB[(size_t)i], CD_R(0.0)).pointCount;
+					 }
+					 return k;
+				 },
+				 kPairs, s.collideManifold + "Local, shapes in body frames; depth error " + ls.Text());
 
 			Stats bt;
 			for (int i = 0; i < n; i += 2)
@@ -1062,6 +1138,7 @@ int main(int argc, char** argv)
 		rows.push_back(overlap);
 		rows.push_back(depth);
 		rows.push_back(manifold);
+		rows.push_back(manifoldLocal);
 	}
 
 	std::vector<Query*> queries;

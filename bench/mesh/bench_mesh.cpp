@@ -201,7 +201,7 @@ void RayRows(const char* name, const Mesh& m, const std::vector<cd3Ray>& rays, i
 	});
 	BulletMesh bullet(m);
 	double bulletBuildNs = TimeNs(runs, 1, [&] { bullet.Build(); });
-	cd3MeshStats stats = cd3GetMeshStats(mesh);
+	cd3MeshStats stats = cd3Mesh_GetStats(mesh);
 	int n = (int)rays.size();
 	std::vector<RayResult> ours(n), theirs(n), any(n);
 	cd3Transform id = CD3_TRANSFORM_IDENTITY;

@@ -63,7 +63,7 @@ typedef enum cdResult
 } cdResult;
 
 /* A short English description of a result code ("ok", "NaN or infinite input", ...). */
-CD_API const char* cdResultString(cdResult result);
+CD_API const char* cdGetResultString(cdResult result);
 
 /* ------------------------------------------------------------------------------------------ */
 /* Version of the library that was linked (the header's is CD_VERSION_MAJOR/MINOR/PATCH). */
@@ -190,6 +190,10 @@ static inline int cdMaxInt(int a, int b)
 {
 	return a > b ? a : b;
 }
+
+/* Former names (before the naming rule of CONTRIBUTING.md), kept as aliases for one release so
+ * that code written against them still builds; tests/check_names.py accepts exactly these. */
+#define cdResultString cdGetResultString
 
 #ifdef __cplusplus
 }

@@ -94,7 +94,7 @@ typedef struct cd2Shape
 } cd2Shape;
 
 /* Lower-case name of a shape type ("circle", "capsule", ...), "unknown" when out of range. */
-CD_API const char* cd2ShapeTypeName(cd2ShapeType type);
+CD_API const char* cd2GetShapeTypeName(cd2ShapeType type);
 
 CD_API cd2Shape cd2MakeCircleShape(cd2Circle circle);
 CD_API cd2Shape cd2MakeCapsuleShape(cd2Capsule capsule);
@@ -215,6 +215,10 @@ CD_API cd2MassData cd2ComputeBoxMass(cd2Box box, cdReal density);
 /* Triangle fan; a rounding radius adds the exact rounded rim (edge strips and corner sectors). */
 CD_API cd2MassData cd2ComputePolygonMass(const cd2Polygon* polygon, cdReal density);
 CD_API cd2MassData cd2ComputeShapeMass(const cd2Shape* shape, cdReal density);
+
+/* Former names (before the naming rule of CONTRIBUTING.md), kept as aliases for one release so
+ * that code written against them still builds; tests/check_names.py accepts exactly these. */
+#define cd2ShapeTypeName cd2GetShapeTypeName
 
 #ifdef __cplusplus
 }

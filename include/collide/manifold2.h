@@ -78,6 +78,61 @@ CD_API cd2Manifold cd2CollideChainSegmentPolygon(const cd2ChainSegment* a, const
  * between the two reference edges, A's is preferred (by up to 0.1 linear slop). */
 CD_API cd2Manifold cd2Collide(const cd2Shape* a, const cd2Shape* b, cdReal speculativeDistance);
 
+/* ---- local-frame forms ---------------------------------------------------------------------
+ * What a solver calls: shape A in its own (body) frame, shape B in its own frame, and xfB, the
+ * transform of B's frame in A's frame (cd2InvMulTransforms(xfA, xfB) of the two body transforms).
+ * The manifold comes back in A's frame: cd2TransformManifold(xfA, m) gives the world manifold.
+ * Each function is named after its world-space form with the suffix Local and gives the same
+ * points (in A's frame), normal, separations and feature ids as the world-space form called on a
+ * and on b transformed by xfB (points by cd2TransformPoint, rotations by cd2MulRot): bit for bit,
+ * since B is placed in A's frame on the stack and A is used as given. The one exception is a
+ * circle, capsule, segment or chain segment against a polygon: the small shape is placed in the
+ * polygon's frame instead (cheaper than moving up to 8 vertices and normals) and the manifold
+ * mapped back, equal within round-off (1e-6 relative to the coordinates) with the same ids.
+ * Contacts far from the origin keep their precision, since the shapes' coordinates stay those of
+ * their body frames. An AABB given as B is read as a box in its own frame (rotated by xfB). */
+CD_API cd2Manifold cd2CollideCircleCircleLocal(cd2Circle a, cd2Circle b, cd2Transform xfB,
+											   cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideCircleCapsuleLocal(cd2Circle a, cd2Capsule b, cd2Transform xfB,
+												cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
+												cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Transform xfB,
+												cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideCapsuleCapsuleLocal(cd2Capsule a, cd2Capsule b, cd2Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideCapsulePolygonLocal(cd2Capsule a, const cd2Polygon* b, cd2Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideCapsuleSegmentLocal(cd2Capsule a, cd2Segment b, cd2Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon* b, cd2Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollidePolygonSegmentLocal(const cd2Polygon* a, cd2Segment b, cd2Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideSegmentSegmentLocal(cd2Segment a, cd2Segment b, cd2Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideChainSegmentCircleLocal(const cd2ChainSegment* a, cd2Circle b, cd2Transform xfB,
+													 cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideChainSegmentCapsuleLocal(const cd2ChainSegment* a, cd2Capsule b,
+													  cd2Transform xfB, cdReal speculativeDistance);
+CD_API cd2Manifold cd2CollideChainSegmentPolygonLocal(const cd2ChainSegment* a, const cd2Polygon* b,
+													  cd2Transform xfB, cdReal speculativeDistance);
+/* cd2Collide in A's frame: either order, as cd2Collide. */
+CD_API cd2Manifold cd2CollideLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB,
+								   cdReal speculativeDistance);
+
+/* The manifold m (in the frame of transform xf) in the outer frame: points transformed, normal
+ * rotated; separations and ids unchanged. */
+static inline cd2Manifold cd2TransformManifold(cd2Transform xf, cd2Manifold m)
+{
+	m.normal = cd2RotateVector(xf.q, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].point = cd2TransformPoint(xf, m.points[i].point);
+	}
+	return m;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -11,15 +11,21 @@
  *
  * Depth: for penetrating pairs the smallest separation is minus the penetration depth, found by
  * the separating axis test (face normals and the edge pairs that form faces of the Minkowski
- * difference), which is exact for polytopes (EPA for polytopes with many edge pairs). The
- * reference face is chosen with a small bias for stability from frame to frame (A's face over B's,
- * faces over edges) within 1e-3 of the shapes' size; the points' separations are then shifted
- * (each point kept on A's side) so that the smallest equals the exact SAT/EPA depth. For separated
- * pairs the smallest separation is the distance (cd3Distance).
+ * difference), which is exact for polytopes (EPA for polytopes with many edge pairs).
+ *
+ * Face bias (the one statement of this rule; docs/API.md links here): the reference feature is
+ * chosen with a bias for stability from frame to frame. A's face is kept unless B's face separates
+ * by more than 1e-4 of twice the smaller shape's size; a face is kept unless an edge pair separates
+ * by more than 1e-4 of the two shapes' summed size (at most 16 times the smaller's). Both sizes are
+ * at least the round-off of the coordinates (src/query/manifold3.c: FACE_BIAS, EDGE_BIAS,
+ * FaceTieSize, EdgeTieSize). The points' separations are then shifted (each point kept on A's
+ * side) so that the smallest equals the exact SAT/EPA depth. For separated pairs the smallest
+ * separation is the distance (cd3Distance).
  *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
- * order Sphere, Capsule, Box, Hull, Triangle; cd3Collide takes tagged shapes in either order. */
+ * canonical order of cd3ShapeType (Sphere, Capsule, Box, Triangle, Hull); cd3Collide takes tagged
+ * shapes in either order. */
 #ifndef COLLIDE_MANIFOLD3_H
 #define COLLIDE_MANIFOLD3_H
 
@@ -66,7 +72,8 @@ CD_API cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistan
 CD_API cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideBoxTriangle(cd3Box a, cd3Triangle b, cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideHullHull(cd3HullShape a, cd3HullShape b, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance);
+/* The triangle is A: the normal points from the triangle to the hull. */
+CD_API cd3Manifold cd3CollideTriangleHull(cd3Triangle a, cd3HullShape b, cdReal speculativeDistance);
 /* Two two-sided triangles, the normal from A to B: up to 4 points of a face clipped against the
  * other (parallel or crossing faces), one point for edge or vertex contacts. Crossing triangles
  * get the axis of least overlap (face normals, edge-edge axes) as normal, read in the direction
@@ -79,6 +86,52 @@ CD_API cd3Manifold cd3CollideTriangleTriangle(cd3Triangle a, cd3Triangle b, cdRe
  * the opposite normal. Two shapes of the same kind run in the given order. Unsupported pairs
  * (planes, segments) return an empty manifold. */
 CD_API cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeDistance);
+
+/* ---- local-frame forms ---------------------------------------------------------------------
+ * What a solver calls: shape A in its own (body) frame, shape B in its own frame, and xfB, the
+ * transform of B's frame in A's frame (cd3InvMulTransforms(xfA, xfB) of the two body transforms).
+ * The manifold comes back in A's frame: cd3TransformManifold(xfA, m) gives the world manifold.
+ * Each function is named after its world-space form with the suffix Local and gives, bit for bit,
+ * the same points (in A's frame), normal, separations and feature ids as the world-space form
+ * called on a and on b transformed by xfB (points by cd3TransformPoint, rotations and hull
+ * transforms by cd3MulQuat / cd3MulTransforms, no normalization): B is placed in A's frame on the
+ * stack (a hull only composes its transform, its vertices are never copied), A is used as given. Contacts far from
+ * the origin keep their precision, since the shapes' coordinates stay those of their body frames.
+ * An AABB given as B is read as a box in its own frame (rotated by xfB). */
+CD_API cd3Manifold cd3CollideSphereSphereLocal(cd3Sphere a, cd3Sphere b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereCapsuleLocal(cd3Sphere a, cd3Capsule b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereBoxLocal(cd3Sphere a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereHullLocal(cd3Sphere a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereTriangleLocal(cd3Sphere a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleCapsuleLocal(cd3Capsule a, cd3Capsule b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleBoxLocal(cd3Capsule a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleHullLocal(cd3Capsule a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleTriangleLocal(cd3Capsule a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxHullLocal(cd3Box a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxTriangleLocal(cd3Box a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+/* cd3Collide in A's frame: either order, as cd3Collide. */
+CD_API cd3Manifold cd3CollideLocal(const cd3Shape* a, const cd3Shape* b, cd3Transform xfB,
+								   cdReal speculativeDistance);
+
+/* The manifold m (in the frame of transform xf) in the outer frame: points transformed, normal
+ * rotated; separations and ids unchanged. */
+static inline cd3Manifold cd3TransformManifold(cd3Transform xf, cd3Manifold m)
+{
+	m.normal = cd3RotateVector(xf.q, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].point = cd3TransformPoint(xf, m.points[i].point);
+	}
+	return m;
+}
+
+/* Former name and order (hull first, normal from the hull to the triangle), kept for one release:
+ * cd3CollideHullTriangle(h, t, d) is cd3CollideTriangleHull(t, h, d) with the opposite normal. */
+CD_API cd3Manifold cd3CollideHullTriangle(cd3HullShape a, cd3Triangle b, cdReal speculativeDistance);
 
 #ifdef __cplusplus
 }

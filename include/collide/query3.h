@@ -49,7 +49,7 @@ CD_API bool cd3OverlapSphereAabb(cd3Sphere s, cd3Aabb b);
 CD_API bool cd3PointInCapsule(cd3Vec p, cd3Capsule c);
 CD_API bool cd3PointInBox(cd3Vec p, cd3Box b);
 CD_API bool cd3PointInPlane(cd3Vec p, cd3Plane plane);
-/* Below every face plane, within cd3GetHullTolerance (the hull's planes are rounded). */
+/* Below every face plane, within cd3Hull_GetTolerance (the hull's planes are rounded). */
 CD_API bool cd3PointInHull(cd3Vec p, cd3HullShape hull);
 
 /* ---- overlap, canonical order: Sphere, Capsule, Aabb, Box, Triangle, Plane, Segment -------- */

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-const char* cdResultString(cdResult result)
+const char* cdGetResultString(cdResult result)
 {
 	switch (result)
 	{

@@ -12,7 +12,7 @@
 unsigned long long cdBroadOpCounts[CD_BROAD_OP_COUNT];
 #endif
 
-const char* cdBroadPhaseTypeName(cdBroadPhaseType type)
+const char* cdGetBroadPhaseTypeName(cdBroadPhaseType type)
 {
 	switch (type)
 	{

@@ -224,37 +224,37 @@ cdResult cd2ValidateChain(const cd2Chain* chain)
 	return CD_OK;
 }
 
-int cd2GetChainSegmentCount(const cd2Chain* chain)
+int cd2Chain_GetSegmentCount(const cd2Chain* chain)
 {
 	CD_ASSERT(chain != NULL);
 	return chain->segmentCount;
 }
 
-int cd2GetChainPointCount(const cd2Chain* chain)
+int cd2Chain_GetPointCount(const cd2Chain* chain)
 {
 	CD_ASSERT(chain != NULL);
 	return chain->pointCount;
 }
 
-const cd2Vec* cd2GetChainPoints(const cd2Chain* chain)
+const cd2Vec* cd2Chain_GetPoints(const cd2Chain* chain)
 {
 	CD_ASSERT(chain != NULL);
 	return chain->points;
 }
 
-bool cd2IsChainLoop(const cd2Chain* chain)
+bool cd2Chain_IsLoop(const cd2Chain* chain)
 {
 	CD_ASSERT(chain != NULL);
 	return chain->isLoop;
 }
 
-cd2Aabb cd2GetChainBounds(const cd2Chain* chain)
+cd2Aabb cd2Chain_GetBounds(const cd2Chain* chain)
 {
 	CD_ASSERT(chain != NULL);
 	return chain->bounds[chain->levelOffset[chain->levelCount - 1]];
 }
 
-cd2ChainSegment cd2GetChainSegment(const cd2Chain* chain, int index)
+cd2ChainSegment cd2Chain_GetSegment(const cd2Chain* chain, int index)
 {
 	CD_ASSERT(chain != NULL && index >= 0 && index < chain->segmentCount);
 	int n = chain->pointCount;

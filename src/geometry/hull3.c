@@ -1309,7 +1309,7 @@ void cd3DestroyHull(cd3Hull* hull)
 	cdFree(hull);
 }
 
-cdReal cd3GetHullTolerance(const cd3Hull* hull)
+cdReal cd3Hull_GetTolerance(const cd3Hull* hull)
 {
 	CD_ASSERT(hull != NULL);
 	cd3Vec lo = hull->bounds.min, hi = hull->bounds.max;
@@ -1457,7 +1457,7 @@ static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 	{
 		return CD_ERROR_NOT_FINITE;
 	}
-	cdReal tolerance = cd3GetHullTolerance(hull);
+	cdReal tolerance = cd3Hull_GetTolerance(hull);
 	/* A thin face's plane, tilted by round-off, can pass its neighbours and not a far vertex
 	 * (fuzz_hull3, double build: slivers 1e-10 high and 100 long in lattices far from the origin,
 	 * a vertex up to twice the tolerance above): thin faces, and every face of a small hull, get
@@ -1613,7 +1613,7 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 		return CD_ERROR_INVALID_ARGUMENT;
 	}
 
-	cdReal tolerance = cd3GetHullTolerance(hull);
+	cdReal tolerance = cd3Hull_GetTolerance(hull);
 	for (int i = 0; i < f; ++i)
 	{
 		cdResult result = CheckFace(hull, i, tolerance);

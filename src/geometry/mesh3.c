@@ -684,12 +684,12 @@ void cd3DestroyMesh(cd3Mesh* mesh)
 
 /* ---- accessors, stats, validation --------------------------------------------------------------- */
 
-int cd3GetMeshTriangleCount(const cd3Mesh* mesh)
+int cd3Mesh_GetTriangleCount(const cd3Mesh* mesh)
 {
 	return mesh != NULL ? mesh->triangleCount : 0;
 }
 
-bool cd3GetMeshTriangle(const cd3Mesh* mesh, int triangleIndex, cd3Triangle* triangle)
+bool cd3Mesh_GetTriangle(const cd3Mesh* mesh, int triangleIndex, cd3Triangle* triangle)
 {
 	if (mesh == NULL || triangle == NULL || triangleIndex < 0 || triangleIndex >= mesh->inputTriangleCount)
 	{
@@ -704,7 +704,7 @@ bool cd3GetMeshTriangle(const cd3Mesh* mesh, int triangleIndex, cd3Triangle* tri
 	return true;
 }
 
-cd3MeshStats cd3GetMeshStats(const cd3Mesh* mesh)
+cd3MeshStats cd3Mesh_GetStats(const cd3Mesh* mesh)
 {
 	cd3MeshStats stats;
 	memset(&stats, 0, sizeof(stats));

@@ -1,7 +1,7 @@
 /* collide: 2D shapes: type names, tagged-shape constructors, validators and bounds. */
 #include "collide/geometry2.h"
 
-const char* cd2ShapeTypeName(cd2ShapeType type)
+const char* cd2GetShapeTypeName(cd2ShapeType type)
 {
 	switch (type)
 	{

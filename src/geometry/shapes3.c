@@ -1,7 +1,7 @@
 /* collide: 3D shapes: type names, tagged-shape makers, validators and bounds. */
 #include "collide/geometry3.h"
 
-const char* cd3ShapeTypeName(cd3ShapeType type)
+const char* cd3GetShapeTypeName(cd3ShapeType type)
 {
 	switch (type)
 	{

@@ -198,7 +198,7 @@ bool cd2RaycastChain(const cd2Chain* chain, cd2Transform chainTransform, cd2Ray 
 	local.inverse[1] = cdAbs(local.d.y) * CD_REAL_MAX >= CD_R(1.0) ? CD_R(1.0) / local.d.y : CD_R(0.0);
 	/* A slab fraction (lo - o) / d is off by a few ulps of |lo| + |o|: bound |lo| by the chain's
 	 * bounds once per ray instead of per box. */
-	cd2Aabb root = cd2GetChainBounds(chain);
+	cd2Aabb root = cd2Chain_GetBounds(chain);
 	cdReal extentX = cdMax(cdAbs(root.min.x), cdAbs(root.max.x)) + cdAbs(local.origin.x);
 	cdReal extentY = cdMax(cdAbs(root.min.y), cdAbs(root.max.y)) + cdAbs(local.origin.y);
 	local.slack[0] = CD_R(8.0) * CD_REAL_EPSILON * extentX * cdAbs(local.inverse[0]);
@@ -485,7 +485,7 @@ static bool ClearlyAbove(const LocalShape* shape, cd2Vec p1, cd2Vec p2, cdReal s
 static bool CollideSegment(int index, void* userContext)
 {
 	CollideContext* context = (CollideContext*)userContext;
-	cd2ChainSegment segment = cd2GetChainSegment(context->chain, index);
+	cd2ChainSegment segment = cd2Chain_GetSegment(context->chain, index);
 	const LocalShape* shape = context->shape;
 	if (ClearlyAbove(shape, segment.p1, segment.p2, context->speculativeDistance))
 	{

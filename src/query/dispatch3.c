@@ -1,8 +1,9 @@
 /* collide: generic 3D dispatchers on tagged shapes: overlap (either order), point containment
- * and closest point. */
+ * and closest point, expanded from the shape and pair tables (pairs3.h). */
 #include "collide/query3.h"
 
 #include "distance3.h"
+#include "pairs3.h"
 
 #include <string.h>
 
@@ -15,113 +16,16 @@ static cdReal MaxAbsComponent(cd3Vec v)
 	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
 }
 
-/* Pairs in canonical order: a->type <= b->type. */
+/* Pairs in canonical order (a->type <= b->type), without a hull: CD3_PAIR_TABLE. */
 static bool OverlapOrdered(const cd3Shape* a, const cd3Shape* b)
 {
-	switch (a->type)
+	switch (CD3_PAIR_KEY(a->type, b->type))
 	{
-		case CD3_SHAPE_SPHERE:
-			switch (b->type)
-			{
-				case CD3_SHAPE_SPHERE:
-					return cd3OverlapSphereSphere(a->sphere, b->sphere);
-				case CD3_SHAPE_CAPSULE:
-					return cd3OverlapSphereCapsule(a->sphere, b->capsule);
-				case CD3_SHAPE_AABB:
-					return cd3OverlapSphereAabb(a->sphere, b->aabb);
-				case CD3_SHAPE_BOX:
-					return cd3OverlapSphereBox(a->sphere, b->box);
-				case CD3_SHAPE_TRIANGLE:
-					return cd3OverlapSphereTriangle(a->sphere, b->triangle);
-				case CD3_SHAPE_PLANE:
-					return cd3OverlapSpherePlane(a->sphere, b->plane);
-				case CD3_SHAPE_SEGMENT:
-					return cd3OverlapSphereSegment(a->sphere, b->segment);
-				default:
-					break;
-			}
-			break;
-		case CD3_SHAPE_CAPSULE:
-			switch (b->type)
-			{
-				case CD3_SHAPE_CAPSULE:
-					return cd3OverlapCapsuleCapsule(a->capsule, b->capsule);
-				case CD3_SHAPE_AABB:
-					return cd3OverlapCapsuleAabb(a->capsule, b->aabb);
-				case CD3_SHAPE_BOX:
-					return cd3OverlapCapsuleBox(a->capsule, b->box);
-				case CD3_SHAPE_TRIANGLE:
-					return cd3OverlapCapsuleTriangle(a->capsule, b->triangle);
-				case CD3_SHAPE_PLANE:
-					return cd3OverlapCapsulePlane(a->capsule, b->plane);
-				case CD3_SHAPE_SEGMENT:
-					return cd3OverlapCapsuleSegment(a->capsule, b->segment);
-				default:
-					break;
-			}
-			break;
-		case CD3_SHAPE_AABB:
-			switch (b->type)
-			{
-				case CD3_SHAPE_AABB:
-					return cd3OverlapAabbAabb(a->aabb, b->aabb);
-				case CD3_SHAPE_BOX:
-					return cd3OverlapAabbBox(a->aabb, b->box);
-				case CD3_SHAPE_TRIANGLE:
-					return cd3OverlapAabbTriangle(a->aabb, b->triangle);
-				case CD3_SHAPE_PLANE:
-					return cd3OverlapAabbPlane(a->aabb, b->plane);
-				case CD3_SHAPE_SEGMENT:
-					return cd3OverlapAabbSegment(a->aabb, b->segment);
-				default:
-					break;
-			}
-			break;
-		case CD3_SHAPE_BOX:
-			switch (b->type)
-			{
-				case CD3_SHAPE_BOX:
-					return cd3OverlapBoxBox(a->box, b->box);
-				case CD3_SHAPE_TRIANGLE:
-					return cd3OverlapBoxTriangle(a->box, b->triangle);
-				case CD3_SHAPE_PLANE:
-					return cd3OverlapBoxPlane(a->box, b->plane);
-				case CD3_SHAPE_SEGMENT:
-					return cd3OverlapBoxSegment(a->box, b->segment);
-				default:
-					break;
-			}
-			break;
-		case CD3_SHAPE_TRIANGLE:
-			switch (b->type)
-			{
-				case CD3_SHAPE_TRIANGLE:
-					return cd3OverlapTriangleTriangle(a->triangle, b->triangle);
-				case CD3_SHAPE_PLANE:
-					return cd3OverlapTrianglePlane(a->triangle, b->plane);
-				case CD3_SHAPE_SEGMENT:
-					return cd3OverlapTriangleSegment(a->triangle, b->segment);
-				default:
-					break;
-			}
-			break;
-		case CD3_SHAPE_PLANE:
-			switch (b->type)
-			{
-				case CD3_SHAPE_PLANE:
-					return cd3OverlapPlanePlane(a->plane, b->plane);
-				case CD3_SHAPE_SEGMENT:
-					return cd3OverlapPlaneSegment(a->plane, b->segment);
-				default:
-					break;
-			}
-			break;
-		case CD3_SHAPE_SEGMENT:
-			if (b->type == CD3_SHAPE_SEGMENT)
-			{
-				return cd3OverlapSegmentSegment(a->segment, b->segment);
-			}
-			break;
+#define CD3_OVERLAP_CASE(A, B, Overlap, Distance, Collide)                                                  \
+	case CD3_PAIR_KEY(CD3_TYPE_##A, CD3_TYPE_##B):                                                         \
+		return Overlap(CD3_SHAPE_ARG(A, a), CD3_SHAPE_ARG(B, b));
+		CD3_PAIR_TABLE(CD3_OVERLAP_CASE)
+#undef CD3_OVERLAP_CASE
 		default:
 			break;
 	}
@@ -129,8 +33,9 @@ static bool OverlapOrdered(const cd3Shape* a, const cd3Shape* b)
 	return false;
 }
 
-/* Pairs with a hull, in canonical order (the hull second; two hulls by their bytes, so that
- * either argument order runs the very same computation): the boolean GJK of distance3.c. */
+/* Pairs with a hull (CD3_HULL_PAIR_TABLE), in canonical order (the hull second; two hulls by their
+ * bytes, so that either argument order runs the very same computation): the boolean GJK of
+ * distance3.c. */
 static bool OverlapWithHull(const cd3Shape* a, const cd3Shape* b)
 {
 	return cd3OverlapGjk(a, b);
@@ -153,42 +58,36 @@ bool cd3Overlap(const cd3Shape* a, const cd3Shape* b)
 	return a->type <= b->type ? OverlapOrdered(a, b) : OverlapOrdered(b, a);
 }
 
+/* The triangle and the segment have no inside: the point must lie on them within round-off, relative
+ * to the shape's extent around p (as the overlap tests). */
+static bool PointOnTriangle3(cd3Vec p, cd3Triangle t)
+{
+	cd3Triangle local = {cd3Sub(t.a, p), cd3Sub(t.b, p), cd3Sub(t.c, p)};
+	cd3Vec closest = cd3ClosestPointOnTriangle(local, CD3_VEC_ZERO);
+	cdReal magnitude = cdMax(MaxAbsComponent(local.a), cdMax(MaxAbsComponent(local.b), MaxAbsComponent(local.c)));
+	cdReal tolerance = CD_POINT_IN_SHAPE_TOLERANCE * magnitude;
+	return cd3LengthSquared(closest) <= tolerance * tolerance;
+}
+
+static bool PointOnSegment3(cd3Vec p, cd3Segment g)
+{
+	cd3Segment local = {cd3Sub(g.p1, p), cd3Sub(g.p2, p)};
+	cd3Vec closest = cd3ClosestPointOnSegment(local, CD3_VEC_ZERO);
+	cdReal magnitude = cdMax(MaxAbsComponent(local.p1), MaxAbsComponent(local.p2));
+	cdReal tolerance = CD_POINT_IN_SHAPE_TOLERANCE * magnitude;
+	return cd3LengthSquared(closest) <= tolerance * tolerance;
+}
+
 bool cd3PointInShape(const cd3Shape* shape, cd3Vec p)
 {
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return cd3PointInSphere(p, shape->sphere);
-		case CD3_SHAPE_CAPSULE:
-			return cd3PointInCapsule(p, shape->capsule);
-		case CD3_SHAPE_AABB:
-			return cd3PointInAabb(p, shape->aabb);
-		case CD3_SHAPE_BOX:
-			return cd3PointInBox(p, shape->box);
-		case CD3_SHAPE_PLANE:
-			return cd3PointInPlane(p, shape->plane);
-		case CD3_SHAPE_HULL:
-			return cd3PointInHull(p, shape->hull);
-		case CD3_SHAPE_TRIANGLE:
-		{
-			/* Relative to p, so the tolerance follows the triangle's extent around p. */
-			cd3Triangle t = shape->triangle;
-			cd3Triangle local = {cd3Sub(t.a, p), cd3Sub(t.b, p), cd3Sub(t.c, p)};
-			cd3Vec closest = cd3ClosestPointOnTriangle(local, CD3_VEC_ZERO);
-			cdReal magnitude =
-				cdMax(MaxAbsComponent(local.a), cdMax(MaxAbsComponent(local.b), MaxAbsComponent(local.c)));
-			cdReal tolerance = CD_POINT_IN_SHAPE_TOLERANCE * magnitude;
-			return cd3LengthSquared(closest) <= tolerance * tolerance;
-		}
-		case CD3_SHAPE_SEGMENT:
-		{
-			cd3Segment local = {cd3Sub(shape->segment.p1, p), cd3Sub(shape->segment.p2, p)};
-			cd3Vec closest = cd3ClosestPointOnSegment(local, CD3_VEC_ZERO);
-			cdReal magnitude = cdMax(MaxAbsComponent(local.p1), MaxAbsComponent(local.p2));
-			cdReal tolerance = CD_POINT_IN_SHAPE_TOLERANCE * magnitude;
-			return cd3LengthSquared(closest) <= tolerance * tolerance;
-		}
+#define CD3_POINT_IN_CASE(Name, PointIn, ClosestPointOn, Raycast)                                          \
+	case CD3_TYPE_##Name:                                                                                  \
+		return PointIn(p, CD3_SHAPE_ARG(Name, shape));
+		CD3_SHAPE_TABLE(CD3_POINT_IN_CASE)
+#undef CD3_POINT_IN_CASE
 		default:
 			break;
 	}
@@ -201,22 +100,11 @@ cd3Vec cd3ClosestPointOnShape(const cd3Shape* shape, cd3Vec p)
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return cd3ClosestPointOnSphere(shape->sphere, p);
-		case CD3_SHAPE_CAPSULE:
-			return cd3ClosestPointOnCapsule(shape->capsule, p);
-		case CD3_SHAPE_AABB:
-			return cd3ClosestPointOnAabb(shape->aabb, p);
-		case CD3_SHAPE_BOX:
-			return cd3ClosestPointOnBox(shape->box, p);
-		case CD3_SHAPE_TRIANGLE:
-			return cd3ClosestPointOnTriangle(shape->triangle, p);
-		case CD3_SHAPE_PLANE:
-			return cd3ClosestPointOnPlane(shape->plane, p);
-		case CD3_SHAPE_SEGMENT:
-			return cd3ClosestPointOnSegment(shape->segment, p);
-		case CD3_SHAPE_HULL:
-			return cd3ClosestPointOnHull(shape->hull, p);
+#define CD3_CLOSEST_CASE(Name, PointIn, ClosestPointOn, Raycast)                                           \
+	case CD3_TYPE_##Name:                                                                                  \
+		return ClosestPointOn(CD3_SHAPE_ARG(Name, shape), p);
+		CD3_SHAPE_TABLE(CD3_CLOSEST_CASE)
+#undef CD3_CLOSEST_CASE
 		default:
 			break;
 	}

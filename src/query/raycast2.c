@@ -7,6 +7,7 @@
 #include "collide/query2.h"
 
 #include "query/raycast_common.h"
+#include "query/pairs2.h"
 
 /* Unit direction and length of the translation; false for a zero (or non-finite) length. */
 static bool cd2GetRayDirection(cd2Vec translation, cd2Vec* direction, cdReal* length)
@@ -394,19 +395,12 @@ bool cd2Raycast(const cd2Shape* shape, cd2Ray ray, cd2RayHit* hit)
 	CD_ASSERT(shape != NULL && hit != NULL);
 	switch (shape->type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			return cd2RaycastCircle(shape->circle, ray, hit);
-		case CD2_SHAPE_CAPSULE:
-			return cd2RaycastCapsule(shape->capsule, ray, hit);
-		case CD2_SHAPE_AABB:
-			return cd2RaycastAabb(shape->aabb, ray, hit);
-		case CD2_SHAPE_BOX:
-			return cd2RaycastBox(shape->box, ray, hit);
-		case CD2_SHAPE_POLYGON:
-			return cd2RaycastPolygon(&shape->polygon, ray, hit);
-		case CD2_SHAPE_SEGMENT:
-			return cd2RaycastSegment(shape->segment, ray, hit);
-		case CD2_SHAPE_TYPE_COUNT:
+#define CD2_RAYCAST_CASE(Name, PointIn, ClosestPointOn, Raycast)                                           \
+	case CD2_TYPE_##Name:                                                                                  \
+		return Raycast(CD2_SHAPE_ARG(Name, shape), ray, hit);
+		CD2_SHAPE_TABLE(CD2_RAYCAST_CASE)
+#undef CD2_RAYCAST_CASE
+		default:
 			break;
 	}
 	return false;

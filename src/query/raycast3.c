@@ -11,6 +11,7 @@
  * 1e9 in float) and lets the entry formulas avoid cancellation (see cdRayEntryIntoBall). */
 #include "collide/query3.h"
 
+#include "query/pairs3.h"
 #include "query/raycast_common.h"
 #include "query/wide3.h"
 
@@ -528,23 +529,12 @@ bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit)
 	CD_ASSERT(shape != NULL && hit != NULL);
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return cd3RaycastSphere(shape->sphere, ray, hit);
-		case CD3_SHAPE_CAPSULE:
-			return cd3RaycastCapsule(shape->capsule, ray, hit);
-		case CD3_SHAPE_AABB:
-			return cd3RaycastAabb(shape->aabb, ray, hit);
-		case CD3_SHAPE_BOX:
-			return cd3RaycastBox(shape->box, ray, hit);
-		case CD3_SHAPE_TRIANGLE:
-			return cd3RaycastTriangle(shape->triangle, ray, hit);
-		case CD3_SHAPE_PLANE:
-			return cd3RaycastPlane(shape->plane, ray, hit);
-		case CD3_SHAPE_SEGMENT:
-			return cd3RaycastSegment(shape->segment, ray, hit);
-		case CD3_SHAPE_HULL:
-			return cd3RaycastHull(shape->hull, ray, hit);
-		case CD3_SHAPE_TYPE_COUNT:
+#define CD3_RAYCAST_CASE(Name, PointIn, ClosestPointOn, Raycast)                                           \
+	case CD3_TYPE_##Name:                                                                                  \
+		return Raycast(CD3_SHAPE_ARG(Name, shape), ray, hit);
+		CD3_SHAPE_TABLE(CD3_RAYCAST_CASE)
+#undef CD3_RAYCAST_CASE
+		default:
 			break;
 	}
 	return false;

@@ -329,9 +329,49 @@ static bool NearVertex(const cd2Polygon& polygon, cd2Vec p, double reach)
 	return false;
 }
 
-void TestPolygons()
+// The local-frame form (cd2Collide*Local): B is given in its own frame, rounded to float, with a
+// random float transform xfB into A's frame (A's frame is the world here). Box2D gets polygon B
+// placed by xfB exactly as the local form places it, so that both libraries see the same numbers
+// (Box2D's own transform rounds differently, which moves the near-vertex cases this test skips).
+cd2Transform RandomFloatTransform(TestRng* rng, cd2Vec around)
+{
+	cd2Transform xf;
+	double angle = TestRngRange(rng, -3.14159, 3.14159);
+	xf.q.c = (cdReal)(float)std::cos(angle);
+	xf.q.s = (cdReal)(float)std::sin(angle);
+	xf.p = cd2MakeVec((cdReal)(float)around.x, (cdReal)(float)around.y);
+	return xf;
+}
+
+cd2Polygon InFrame(const cd2Polygon& b, cd2Transform xf)
+{
+	cd2Polygon p = b;
+	for (int i = 0; i < b.count; ++i)
+	{
+		p.vertices[i] = cd2InvTransformPoint(xf, b.vertices[i]);
+		p.normals[i] = cd2InvRotateVector(xf.q, b.normals[i]);
+	}
+	p.centroid = cd2InvTransformPoint(xf, b.centroid);
+	return ToFloat(p);
+}
+
+cd2Polygon Placed(const cd2Polygon& local, cd2Transform xf)
+{
+	cd2Polygon p = local;
+	for (int i = 0; i < local.count; ++i)
+	{
+		p.vertices[i] = cd2TransformPoint(xf, local.vertices[i]);
+		p.normals[i] = cd2RotateVector(xf.q, local.normals[i]);
+	}
+	p.centroid = cd2TransformPoint(xf, local.centroid);
+	return p;
+}
+
+void TestPolygonsForm(bool localForm)
 {
 	TestRng rng = TestRngMake(0xB2D001);
+	TestRng frames = TestRngMake(0xB2D101); // B's frames, drawn apart: the local form sees the same pairs
+
 	b2Transform identity;
 	identity.SetIdentity();
 	Compared counts;
@@ -344,13 +384,22 @@ void TestPolygons()
 		{
 			b = Pushed(a, b, TestRngRange(&rng, -0.05, 0.03));
 		}
+		cd2Transform xfB = {cd2MakeVec(CD_R(0.0), CD_R(0.0)), cd2MakeRot(CD_R(0.0))};
+		cd2Polygon bLocal = b;
+		if (localForm)
+		{
+			xfB = RandomFloatTransform(&frames, b.centroid);
+			bLocal = InFrame(b, xfB);
+			b = Placed(bLocal, xfB);
+		}
 		b2PolygonShape pa = ToBox2D(a), pb = ToBox2D(b);
 		b2Manifold manifold;
 		b2CollidePolygons(&manifold, &pa, identity, &pb, identity);
 		b2WorldManifold world;
 		world.Initialize(&manifold, identity, pa.m_radius, identity, pb.m_radius);
 		double shift = 2.0 * kRadius;
-		cd2Manifold mine = cd2CollidePolygonPolygon(&a, &b, (cdReal)shift);
+		cd2Manifold mine = localForm ? cd2CollidePolygonPolygonLocal(&a, &bLocal, xfB, (cdReal)shift)
+									 : cd2CollidePolygonPolygon(&a, &b, (cdReal)shift);
 
 		double separationA = MaxSeparation(a, b), separationB = MaxSeparation(b, a);
 		bool separated = std::fmax(separationA, separationB) > kSeparatedTolerance;
@@ -414,9 +463,20 @@ void TestPolygons()
 		++counts.compared;
 		counts.points += mine.pointCount;
 	}
-	std::printf("b2CollidePolygons: %d pairs compared (%d points), %d skipped\n", counts.compared,
+	std::printf("b2CollidePolygons (%s): %d pairs compared (%d points), %d skipped\n",
+				localForm ? "cd2CollidePolygonPolygonLocal" : "cd2CollidePolygonPolygon", counts.compared,
 				counts.points, counts.skipped);
 	TEST_CHECK(counts.compared >= 5000 && counts.points >= 3000);
+}
+
+void TestPolygons()
+{
+	TestPolygonsForm(false);
+}
+
+void TestPolygonsLocal()
+{
+	TestPolygonsForm(true);
 }
 
 void TestPolygonCircle()
@@ -515,6 +575,7 @@ void TestDistance()
 int main()
 {
 	TEST_RUN(TestPolygons);
+	TEST_RUN(TestPolygonsLocal);
 	TEST_RUN(TestPolygonCircle);
 	TEST_RUN(TestDistance);
 	return TEST_SUMMARY();

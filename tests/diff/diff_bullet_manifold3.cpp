@@ -234,7 +234,7 @@ void Compare(const char* what, int index, double reference, double face, double 
 void TestBoxes()
 {
 	TestRng rng = {0xb0b0b0b0u};
-	Tally tally;
+	Tally tally, localTally;
 	cd3Hull* unit = nullptr;
 	for (int n = 0; n < 3000; ++n)
 	{
@@ -262,6 +262,10 @@ void TestBoxes()
 
 		cd3Manifold m = cd3CollideBoxBox(a, b, CD_R(0.0));
 		double collideSep = m.pointCount > 0 ? MinSeparation(m) : INFINITY;
+		// The local-frame form: both boxes in their own frames, B's frame in A's.
+		cd3Box la = {CD3_VEC_ZERO, a.halfExtents, CD3_QUAT_IDENTITY}, lb = {CD3_VEC_ZERO, b.halfExtents, CD3_QUAT_IDENTITY};
+		cd3Manifold ml = cd3CollideBoxBoxLocal(la, lb, cd3InvMulTransforms(ta, tb), CD_R(0.0));
+		double localSep = ml.pointCount > 0 ? MinSeparation(ml) : INFINITY;
 
 		btBoxShape boxA(
 			btVector3((btScalar)a.halfExtents.x, (btScalar)a.halfExtents.y, (btScalar)a.halfExtents.z));
@@ -276,10 +280,14 @@ void TestBoxes()
 		double size = 2.0 * (double)(cd3Length(a.halfExtents) + cd3Length(b.halfExtents));
 		Compare("box-box", n, reference, face, edge, size, collideSep, result.count > 0, result.distance,
 				0.06, &tally);
+		Compare("box-box local", n, reference, face, edge, size, localSep, result.count > 0, result.distance,
+				0.06, &localTally);
 		if (std::fabs(reference) > 1e-3)
 		{
 			TEST_CHECKF((m.pointCount > 0) == (reference <= 0.0), "box-box #%d: %d points, exact %.9g", n,
 						m.pointCount, reference);
+			TEST_CHECKF((ml.pointCount > 0) == (reference <= 0.0), "box-box local #%d: %d points, exact %.9g", n,
+						ml.pointCount, reference);
 		}
 	}
 	(void)unit;
@@ -288,6 +296,8 @@ void TestBoxes()
 		"than 1e-4 relative on %d (away from its 5%% face bias), overlap answer differs on %d\n",
 		tally.compared, tally.skippedTies, tally.bulletDisagrees, tally.bulletOverlapDisagrees);
 	TEST_CHECK(tally.compared > 2000);
+	std::printf("box-box, local form (cd3CollideBoxBoxLocal): %d compared against the exact depth\n", localTally.compared);
+	TEST_CHECK(localTally.compared > 2000);
 }
 
 // 32 points in a box (about 20 hull vertices: the SAT path) or on an ellipsoid (32 vertices: the
@@ -334,7 +344,7 @@ btConvexHullShape MakeBulletHull(const cd3Hull* h)
 void TestHulls()
 {
 	TestRng rng = {0x4011u};
-	Tally tally;
+	Tally tally, localTally;
 	for (int n = 0; n < 3000; ++n)
 	{
 		bool onEllipsoid = n % 2 == 1;
@@ -354,6 +364,10 @@ void TestHulls()
 		cd3HullShape a = {ha, ta}, b = {hb, tb};
 		cd3Manifold m = cd3CollideHullHull(a, b, CD_R(0.0));
 		double collideSep = m.pointCount > 0 ? MinSeparation(m) : INFINITY;
+		// The local-frame form: both hulls in their own frames, B's frame in A's.
+		cd3HullShape la = {ha, CD3_TRANSFORM_IDENTITY}, lb = {hb, CD3_TRANSFORM_IDENTITY};
+		cd3Manifold ml = cd3CollideHullHullLocal(la, lb, cd3InvMulTransforms(ta, tb), CD_R(0.0));
+		double localSep = ml.pointCount > 0 ? MinSeparation(ml) : INFINITY;
 
 		btConvexHullShape bulletA = MakeBulletHull(ha), bulletB = MakeBulletHull(hb);
 		btVoronoiSimplexSolver simplex;
@@ -368,10 +382,14 @@ void TestHulls()
 							   cd3Length(cd3Sub(hb->bounds.max, hb->bounds.min)));
 		Compare("hull-hull", n, reference, face, edge, size, collideSep, result.count > 0, result.distance,
 				0.0, &tally);
+		Compare("hull-hull local", n, reference, face, edge, size, localSep, result.count > 0, result.distance,
+				0.0, &localTally);
 		if (std::fabs(reference) > 1e-3)
 		{
 			TEST_CHECKF((m.pointCount > 0) == (reference <= 0.0), "hull-hull #%d: %d points, exact %.9g", n,
 						m.pointCount, reference);
+			TEST_CHECKF((ml.pointCount > 0) == (reference <= 0.0), "hull-hull local #%d: %d points, exact %.9g",
+						n, ml.pointCount, reference);
 		}
 		cd3DestroyHull(ha);
 		cd3DestroyHull(hb);
@@ -381,6 +399,8 @@ void TestHulls()
 		"relative on %d, overlap answer differs on %d\n",
 		tally.compared, tally.skippedTies, tally.bulletDisagrees, tally.bulletOverlapDisagrees);
 	TEST_CHECK(tally.compared > 1500);
+	std::printf("hull-hull, local form (cd3CollideHullHullLocal): %d compared against the exact depth\n", localTally.compared);
+	TEST_CHECK(localTally.compared > 1500);
 	// Bullet is a peer, not the reference: it must agree on the large majority.
 	TEST_CHECK(tally.bulletDisagrees * 20 < tally.compared);
 	TEST_CHECK(tally.bulletOverlapDisagrees * 100 < tally.compared);

@@ -210,8 +210,8 @@ void ComparePair(const cd3Shape& a, const cd3Shape& b, int index, Stats* st)
 	}
 	++st->compared;
 	bool overlapping = ref.distance < 0.0;
-	const char* na = cd3ShapeTypeName(a.type);
-	const char* nb = cd3ShapeTypeName(b.type);
+	const char* na = cd3GetShapeTypeName(a.type);
+	const char* nb = cd3GetShapeTypeName(b.type);
 
 	TEST_CHECKF(cd3Overlap(&a, &b) == overlapping, "%s-%s #%d: cd3Overlap %d, exact distance %.9g", na, nb,
 				index, (int)cd3Overlap(&a, &b), ref.distance);
@@ -337,7 +337,7 @@ void TestPairs()
 				"%.2e "
 				"mean %.2e, off >1e-2: %d, beyond exact: %d; MPR n=%d max rel %.2e mean %.2e, off >1e-2: %d, "
 				"below exact: %d\n",
-				cd3ShapeTypeName(ta), cd3ShapeTypeName(tb), st.pairs, st.compared, st.penetrating,
+				cd3GetShapeTypeName(ta), cd3GetShapeTypeName(tb), st.pairs, st.compared, st.penetrating,
 				st.collideMaxRel, st.collideDepthCount ? st.collideSumRel / st.collideDepthCount : 0.0,
 				st.collideTies, st.gjkWrong, st.epaCount, st.epaZero, st.epaMaxRel,
 				st.epaMeasured ? st.epaSumRel / st.epaMeasured : 0.0, st.epaOff, st.epaBeyond, st.mprCount,

@@ -202,8 +202,8 @@ void ComparePair(const cd3Shape& a, const cd3Shape& b, int index, Tally* t)
 		return;
 	}
 	++t->compared;
-	const char* na = cd3ShapeTypeName(a.type);
-	const char* nb = cd3ShapeTypeName(b.type);
+	const char* na = cd3GetShapeTypeName(a.type);
+	const char* nb = cd3GetShapeTypeName(b.type);
 	bool overlapping = ref.distance < 0.0;
 	TEST_CHECKF(cd3Overlap(&a, &b) == overlapping, "%s-%s #%d: cd3Overlap %d, exact distance %.9g", na, nb,
 				index, (int)cd3Overlap(&a, &b), ref.distance);
@@ -287,7 +287,7 @@ void TestPairs()
 			std::printf("%s-%s: %d pairs, %d away from the boundary, %d separated; collide distance max rel "
 						"%.2e mean "
 						"%.2e",
-						cd3ShapeTypeName(ta), cd3ShapeTypeName(tb), t.pairs, t.compared, t.separated,
+						cd3GetShapeTypeName(ta), cd3GetShapeTypeName(tb), t.pairs, t.compared, t.separated,
 						t.collideMaxRel, t.separated ? t.collideSumRel / t.separated : 0.0);
 			for (int s = 0; s < 2; ++s)
 			{
@@ -306,11 +306,11 @@ void TestPairs()
 				for (int s = 0; s < 2; ++s)
 				{
 					TEST_CHECKF(t.fclWrongOverlap[s] * 50 < t.compared,
-								"%s-%s: FCL %s overlap wrong on %d of %d", cd3ShapeTypeName(ta),
-								cd3ShapeTypeName(tb), kSolverNames[s], t.fclWrongOverlap[s], t.compared);
+								"%s-%s: FCL %s overlap wrong on %d of %d", cd3GetShapeTypeName(ta),
+								cd3GetShapeTypeName(tb), kSolverNames[s], t.fclWrongOverlap[s], t.compared);
 					TEST_CHECKF(t.fclFar[s] * 50 < t.separated,
-								"%s-%s: FCL %s distance off by 1e-2 on %d of %d", cd3ShapeTypeName(ta),
-								cd3ShapeTypeName(tb), kSolverNames[s], t.fclFar[s], t.separated);
+								"%s-%s: FCL %s distance off by 1e-2 on %d of %d", cd3GetShapeTypeName(ta),
+								cd3GetShapeTypeName(tb), kSolverNames[s], t.fclFar[s], t.separated);
 				}
 			}
 		}

@@ -144,24 +144,24 @@ static bool broadCreate(Broad* broad, cdBroadPhaseType type, const BroadScene* s
 		def.type = type;
 		def.bounds = toAabb3(&world);
 		def.capacity = scene->n;
-		return cd3BroadPhase_Create(&def, &broad->bp3) == CD_OK;
+		return cd3CreateBroadPhase(&def, &broad->bp3) == CD_OK;
 	}
 	cd2BroadPhaseDef def = cd2DefaultBroadPhaseDef();
 	def.type = type;
 	def.bounds = toAabb2(&world);
 	def.capacity = scene->n;
-	return cd2BroadPhase_Create(&def, &broad->bp2) == CD_OK;
+	return cd2CreateBroadPhase(&def, &broad->bp2) == CD_OK;
 }
 
 static void broadDestroy(Broad* broad)
 {
 	if (broad->bp3)
 	{
-		cd3BroadPhase_Destroy(broad->bp3);
+		cd3DestroyBroadPhase(broad->bp3);
 	}
 	if (broad->bp2)
 	{
-		cd2BroadPhase_Destroy(broad->bp2);
+		cd2DestroyBroadPhase(broad->bp2);
 	}
 	free(broad->proxies);
 	memset(broad, 0, sizeof *broad);
@@ -279,13 +279,13 @@ static size_t broadRayCast(const Broad* broad, const BroadScene* scene, const Br
 	{
 		cd3Ray r = {{(cdReal)ray->origin[0], (cdReal)ray->origin[1], (cdReal)ray->origin[2]},
 					{(cdReal)ray->translation[0], (cdReal)ray->translation[1], (cdReal)ray->translation[2]}};
-		cd3BroadPhase_RayCast(broad->bp3, r, countRayHit3, &counter);
+		cd3BroadPhase_Raycast(broad->bp3, r, countRayHit3, &counter);
 	}
 	else
 	{
 		cd2Ray r = {{(cdReal)ray->origin[0], (cdReal)ray->origin[1]},
 					{(cdReal)ray->translation[0], (cdReal)ray->translation[1]}};
-		cd2BroadPhase_RayCast(broad->bp2, r, countRayHit2, &counter);
+		cd2BroadPhase_Raycast(broad->bp2, r, countRayHit2, &counter);
 	}
 	return counter.hits;
 }

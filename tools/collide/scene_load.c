@@ -490,7 +490,7 @@ static bool readRoundingRadius(Loader* loader, const cJSON* object, const char* 
 	if (value < 0.0)
 	{
 		return failAt(loader, "radius", "invalid %s: %s (\"radius\" = %g)", typeName,
-					  cdResultString(CD_ERROR_NEGATIVE_SIZE), value);
+					  cdGetResultString(CD_ERROR_NEGATIVE_SIZE), value);
 	}
 	*radius = (cdReal)value;
 	return true;
@@ -658,7 +658,7 @@ static bool readPolygon(Loader* loader, const cJSON* object, cd2Polygon* polygon
 			{
 				snprintf(limit, sizeof limit, " (at most %d corners)", CD2_MAX_POLYGON_VERTICES);
 			}
-			ok = failAt(loader, "points", "invalid polygon: %s%s", cdResultString(result), limit);
+			ok = failAt(loader, "points", "invalid polygon: %s%s", cdGetResultString(result), limit);
 		}
 	}
 	free(points);
@@ -801,7 +801,7 @@ static bool readHull(Loader* loader, const cJSON* object, ToolShape* shape)
 		{
 			const char* why =
 				result == CD_ERROR_DEGENERATE ? " (the points must not all lie in one plane)" : "";
-			ok = failAt(loader, "points", "invalid hull: %s%s", cdResultString(result), why);
+			ok = failAt(loader, "points", "invalid hull: %s%s", cdGetResultString(result), why);
 		}
 	}
 	free(points);
@@ -882,7 +882,7 @@ static bool readShape2(Loader* loader, const cJSON* object, ShapeKind kind, Tool
 				{
 					const char* why =
 						result == CD_ERROR_DEGENERATE ? " (a rounded box needs a non-zero area)" : "";
-					return failAt(loader, NULL, "invalid box: %s%s", cdResultString(result), why);
+					return failAt(loader, NULL, "invalid box: %s%s", cdGetResultString(result), why);
 				}
 				shape->shape2 = cd2MakePolygonShape(&polygon);
 			}
@@ -1064,7 +1064,7 @@ static bool readShape(Loader* loader, const cJSON* object, ToolShape* shape)
 		loader->dimension == 2 ? cd2ValidateShape(&shape->shape2) : cd3ValidateShape(&shape->shape3);
 	if (result != CD_OK)
 	{
-		return failAt(loader, NULL, "invalid %s: %s", info->name, cdResultString(result));
+		return failAt(loader, NULL, "invalid %s: %s", info->name, cdGetResultString(result));
 	}
 	return true;
 }

@@ -1,0 +1,75 @@
+/* collide: the 2D shape table and pair table (internal). Every shape type has one row in
+ * CD2_SHAPE_TABLE and every unordered pair of shape types one row in CD2_PAIR_TABLE, in the
+ * canonical order of cd2ShapeType (the order pair functions name their shapes). The generic
+ * dispatchers expand them (dispatch2.c, raycast2.c) and so do the matrix tests, so adding a shape
+ * means writing its functions and adding its rows (CONTRIBUTING.md, "Adding a shape").
+ *
+ * Per shape, besides its table row: CD2_TYPE_<Name> (its cd2ShapeType) and CD2_ARG_OF_<Name>(s)
+ * (how its functions take it from a const cd2Shape* s: the union member by value or by pointer).
+ *
+ * CD2_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast)
+ *   Name     the shape's name in function names (Circle);
+ *   PointIn  the containment test, called PointIn(p, shape) (a shape with no inside names the
+ *            dispatcher's tolerance test); ClosestPointOn(shape, p); Raycast(shape, ray, hit).
+ *
+ * CD2_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
+ *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b));
+ *   Distance  GJK (cd2Distance) for every pair; CLOSED_FORM names a pair that also has a
+ *             closed-form closest-points function (cd2ClosestPoints<A><B>);
+ *   Collide   the contact manifold: the typed pair function cd2Collide<A><B> (and its ...Local
+ *             form), or CORE when only cd2Collide handles the pair (AABBs and boxes collide as
+ *             polygons). */
+#ifndef COLLIDE_PAIRS2_H
+#define COLLIDE_PAIRS2_H
+
+#define CD2_SHAPE_TABLE(X)                                                                                   \
+	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle)                                   \
+	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule)                               \
+	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb)                                           \
+	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox)                                               \
+	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon)                               \
+	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment)
+
+#define CD2_PAIR_TABLE(X)                                                                                    \
+	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                                   \
+	X(Circle, Capsule, cd2OverlapCircleCapsule, GJK, cd2CollideCircleCapsule)                                \
+	X(Circle, Aabb, cd2OverlapCircleAabb, GJK, CORE)                                                         \
+	X(Circle, Box, cd2OverlapCircleBox, GJK, CORE)                                                           \
+	X(Circle, Polygon, cd2OverlapCirclePolygon, GJK, cd2CollideCirclePolygon)                                \
+	X(Circle, Segment, cd2OverlapCircleSegment, GJK, cd2CollideCircleSegment)                                \
+	X(Capsule, Capsule, cd2OverlapCapsuleCapsule, GJK, cd2CollideCapsuleCapsule)                             \
+	X(Capsule, Aabb, cd2OverlapCapsuleAabb, GJK, CORE)                                                       \
+	X(Capsule, Box, cd2OverlapCapsuleBox, GJK, CORE)                                                         \
+	X(Capsule, Polygon, cd2OverlapCapsulePolygon, GJK, cd2CollideCapsulePolygon)                             \
+	X(Capsule, Segment, cd2OverlapCapsuleSegment, GJK, cd2CollideCapsuleSegment)                             \
+	X(Aabb, Aabb, cd2OverlapAabbAabb, GJK, CORE)                                                             \
+	X(Aabb, Box, cd2OverlapAabbBox, GJK, CORE)                                                               \
+	X(Aabb, Polygon, cd2OverlapAabbPolygon, GJK, CORE)                                                       \
+	X(Aabb, Segment, cd2OverlapAabbSegment, GJK, CORE)                                                       \
+	X(Box, Box, cd2OverlapBoxBox, GJK, CORE)                                                                 \
+	X(Box, Polygon, cd2OverlapBoxPolygon, GJK, CORE)                                                         \
+	X(Box, Segment, cd2OverlapBoxSegment, GJK, CORE)                                                         \
+	X(Polygon, Polygon, cd2OverlapPolygonPolygon, GJK, cd2CollidePolygonPolygon)                             \
+	X(Polygon, Segment, cd2OverlapPolygonSegment, GJK, cd2CollidePolygonSegment)                             \
+	X(Segment, Segment, cd2OverlapSegmentSegment, CLOSED_FORM, cd2CollideSegmentSegment)
+
+/* The cd2ShapeType of a table name, and the key of an ordered pair of types (a switch label). */
+#define CD2_TYPE_Circle CD2_SHAPE_CIRCLE
+#define CD2_TYPE_Capsule CD2_SHAPE_CAPSULE
+#define CD2_TYPE_Aabb CD2_SHAPE_AABB
+#define CD2_TYPE_Box CD2_SHAPE_BOX
+#define CD2_TYPE_Polygon CD2_SHAPE_POLYGON
+#define CD2_TYPE_Segment CD2_SHAPE_SEGMENT
+#define CD2_PAIR_KEY(typeA, typeB) ((int)(typeA) * (int)CD2_SHAPE_TYPE_COUNT + (int)(typeB))
+
+/* How a shape's functions take it from a const cd2Shape* s: CD2_SHAPE_ARG(Polygon, s) is
+ * &s->polygon. */
+#define CD2_ARG_OF_Circle(s) ((s)->circle)
+#define CD2_ARG_OF_Capsule(s) ((s)->capsule)
+#define CD2_ARG_OF_Aabb(s) ((s)->aabb)
+#define CD2_ARG_OF_Box(s) ((s)->box)
+#define CD2_ARG_OF_Polygon(s) (&(s)->polygon)
+#define CD2_ARG_OF_Segment(s) ((s)->segment)
+#define CD2_SHAPE_ARG(Name, s) CD2_ARG_OF_##Name(s)
+
+#endif

@@ -1,0 +1,315 @@
+/* The local-frame manifolds of manifold2.h against the world-space ones: the same answer, bit for
+ * bit, when B's frame is placed in A's frame by the same transform; within round-off when both
+ * bodies move; and more precise far from the origin, where world coordinates lose digits. */
+#include "collide/manifold2.h"
+#include "random_shapes2.h"
+#include "test.h"
+
+#include <math.h>
+#include <stdio.h>
+
+/* b placed by xf the way the local forms place it (manifold2.h): points transformed, rotations
+ * multiplied, an AABB read as a box. */
+static cd2Shape Place(const cd2Shape* b, cd2Transform xf)
+{
+	cd2Shape s = *b;
+	switch (b->type)
+	{
+		case CD2_SHAPE_CIRCLE:
+			s.circle.center = cd2TransformPoint(xf, b->circle.center);
+			break;
+		case CD2_SHAPE_CAPSULE:
+			s.capsule.p1 = cd2TransformPoint(xf, b->capsule.p1);
+			s.capsule.p2 = cd2TransformPoint(xf, b->capsule.p2);
+			break;
+		case CD2_SHAPE_AABB:
+			s.type = CD2_SHAPE_BOX;
+			s.box.center = cd2TransformPoint(xf, cd2AabbCenter(b->aabb));
+			s.box.halfExtents = cd2AabbHalfExtents(b->aabb);
+			s.box.rotation = xf.q;
+			break;
+		case CD2_SHAPE_BOX:
+			s.box.center = cd2TransformPoint(xf, b->box.center);
+			s.box.rotation = cd2MulRot(xf.q, b->box.rotation);
+			break;
+		case CD2_SHAPE_POLYGON:
+			for (int i = 0; i < b->polygon.count; ++i)
+			{
+				s.polygon.vertices[i] = cd2TransformPoint(xf, b->polygon.vertices[i]);
+				s.polygon.normals[i] = cd2RotateVector(xf.q, b->polygon.normals[i]);
+			}
+			s.polygon.centroid = cd2TransformPoint(xf, b->polygon.centroid);
+			break;
+		default:
+			s.segment.p1 = cd2TransformPoint(xf, b->segment.p1);
+			s.segment.p2 = cd2TransformPoint(xf, b->segment.p2);
+			break;
+	}
+	return s;
+}
+
+static cd2Transform RandomTransform(TestRng* rng, double extent)
+{
+	cd2Transform xf;
+	xf.p = RandomVec(rng, extent);
+	xf.q = RandomRot(rng);
+	return xf;
+}
+
+static bool SameBits(cd2Manifold m, cd2Manifold n)
+{
+	if (m.pointCount != n.pointCount || m.normal.x != n.normal.x || m.normal.y != n.normal.y)
+	{
+		return false;
+	}
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		if (m.points[i].point.x != n.points[i].point.x || m.points[i].point.y != n.points[i].point.y ||
+			m.points[i].separation != n.points[i].separation || m.points[i].id != n.points[i].id)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* Equal within round-off: the same count and ids, points, separations and normal within tolerance
+ * (relative to the coordinates' scale). */
+static bool Near(cd2Manifold m, cd2Manifold n, double tolerance)
+{
+	if (m.pointCount != n.pointCount || cd2Length(cd2Sub(m.normal, n.normal)) > tolerance)
+	{
+		return false;
+	}
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		if (m.points[i].id != n.points[i].id ||
+			cd2Length(cd2Sub(m.points[i].point, n.points[i].point)) > tolerance ||
+			fabs((double)m.points[i].separation - (double)n.points[i].separation) > tolerance)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/* The pairs whose local form moves A into B's frame (manifold2.h): equal within round-off. */
+static bool MovesA(cd2ShapeType a, cd2ShapeType b)
+{
+	return b == CD2_SHAPE_POLYGON &&
+		   (a == CD2_SHAPE_CIRCLE || a == CD2_SHAPE_CAPSULE || a == CD2_SHAPE_SEGMENT);
+}
+
+/* The typed pair function of (a, b) in both forms, when a and b are in canonical order and have
+ * one (AABBs and boxes only go through cd2Collide). Returns false when there is none. */
+static bool TypedPair(const cd2Shape* a, const cd2Shape* b, cd2Transform xf, cdReal d, cd2Manifold* local,
+					  cd2Manifold* world)
+{
+	cd2Shape w = Place(b, xf);
+	cd2ShapeType ta = a->type, tb = b->type;
+#define PAIR(TA, TB, F, argA, argB, argW)                                                                    \
+	if (ta == TA && tb == TB)                                                                                \
+	{                                                                                                        \
+		*local = F##Local(argA, argB, xf, d);                                                                \
+		*world = F(argA, argW, d);                                                                           \
+		return true;                                                                                         \
+	}
+	PAIR(CD2_SHAPE_CIRCLE, CD2_SHAPE_CIRCLE, cd2CollideCircleCircle, a->circle, b->circle, w.circle)
+	PAIR(CD2_SHAPE_CIRCLE, CD2_SHAPE_CAPSULE, cd2CollideCircleCapsule, a->circle, b->capsule, w.capsule)
+	PAIR(CD2_SHAPE_CIRCLE, CD2_SHAPE_POLYGON, cd2CollideCirclePolygon, a->circle, &b->polygon, &w.polygon)
+	PAIR(CD2_SHAPE_CIRCLE, CD2_SHAPE_SEGMENT, cd2CollideCircleSegment, a->circle, b->segment, w.segment)
+	PAIR(CD2_SHAPE_CAPSULE, CD2_SHAPE_CAPSULE, cd2CollideCapsuleCapsule, a->capsule, b->capsule, w.capsule)
+	PAIR(CD2_SHAPE_CAPSULE, CD2_SHAPE_POLYGON, cd2CollideCapsulePolygon, a->capsule, &b->polygon, &w.polygon)
+	PAIR(CD2_SHAPE_CAPSULE, CD2_SHAPE_SEGMENT, cd2CollideCapsuleSegment, a->capsule, b->segment, w.segment)
+	PAIR(CD2_SHAPE_POLYGON, CD2_SHAPE_POLYGON, cd2CollidePolygonPolygon, &a->polygon, &b->polygon, &w.polygon)
+	PAIR(CD2_SHAPE_POLYGON, CD2_SHAPE_SEGMENT, cd2CollidePolygonSegment, &a->polygon, b->segment, w.segment)
+	PAIR(CD2_SHAPE_SEGMENT, CD2_SHAPE_SEGMENT, cd2CollideSegmentSegment, a->segment, b->segment, w.segment)
+#undef PAIR
+	return false;
+}
+
+/* B placed in A's frame: the local form is the world form on the placed shape, bit for bit, for
+ * the generic dispatcher (both orders) and every typed pair function; within 1e-6 relative (the
+ * shapes reach 8 from the origin) for the pairs that move A into the polygon's frame. */
+static void TestSameAsWorldForm(void)
+{
+	TestRng rng = TestRngMake(0x10ca1u);
+	int typed = 0;
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int i = 0; i < 200; ++i)
+			{
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb);
+				cd2Transform xf = RandomTransform(&rng, 2.0);
+				cdReal d = TestRngInt(&rng, 2) == 0 ? CD_R(0.0) : RandomReal(&rng, 0.0, 0.5);
+				cd2Shape w = Place(&b, xf);
+				cd2Manifold local = cd2CollideLocal(&a, &b, xf, d);
+				cd2Manifold world = cd2Collide(&a, &w, d);
+				bool exact = !MovesA(a.type, b.type);
+				TEST_CHECKF(exact ? SameBits(local, world) : Near(local, world, 8e-6),
+							"%s-%s case %d: %d vs %d points", TypeName(a.type), TypeName(b.type), i,
+							local.pointCount, world.pointCount);
+				cd2Manifold tl, tw;
+				if (TypedPair(&a, &b, xf, d, &tl, &tw))
+				{
+					++typed;
+					TEST_CHECKF(exact ? SameBits(tl, tw) : Near(tl, tw, 8e-6), "typed %s-%s case %d",
+								TypeName(a.type), TypeName(b.type), i);
+				}
+			}
+		}
+	}
+	TEST_CHECK(typed == 10 * 200);
+
+	/* Chain segments: A is the chain segment, as in the world form. */
+	for (int i = 0; i < 500; ++i)
+	{
+		cd2ChainSegment c;
+		c.p1 = RandomVec(&rng, 2.0);
+		c.p2 = cd2Add(c.p1, cd2MakeVec(-RandomReal(&rng, 0.5, 3.0), RandomReal(&rng, -0.5, 0.5)));
+		c.ghost1 = cd2Add(c.p1, cd2MakeVec(RandomReal(&rng, 0.5, 2.0), RandomReal(&rng, -1.0, 1.0)));
+		c.ghost2 = cd2Add(c.p2, cd2MakeVec(-RandomReal(&rng, 0.5, 2.0), RandomReal(&rng, -1.0, 1.0)));
+		cd2Transform xf = RandomTransform(&rng, 2.0);
+		cdReal d = RandomReal(&rng, 0.0, 0.3);
+		cd2Shape circle = RandomShape(&rng, CD2_SHAPE_CIRCLE);
+		cd2Shape capsule = RandomShape(&rng, CD2_SHAPE_CAPSULE);
+		cd2Shape polygon = RandomShape(&rng, CD2_SHAPE_POLYGON);
+		cd2Shape wc = Place(&circle, xf), wk = Place(&capsule, xf), wp = Place(&polygon, xf);
+		TEST_CHECK(SameBits(cd2CollideChainSegmentCircleLocal(&c, circle.circle, xf, d),
+							cd2CollideChainSegmentCircle(&c, wc.circle, d)));
+		TEST_CHECK(SameBits(cd2CollideChainSegmentCapsuleLocal(&c, capsule.capsule, xf, d),
+							cd2CollideChainSegmentCapsule(&c, wk.capsule, d)));
+		TEST_CHECK(Near(cd2CollideChainSegmentPolygonLocal(&c, &polygon.polygon, xf, d),
+						cd2CollideChainSegmentPolygon(&c, &wp.polygon, d), 8e-6));
+	}
+}
+
+/* Both bodies moved: the world form on the two placed shapes against the local form mapped to the
+ * world. Equal within 1e-6 relative to the coordinates, with
+ * the same points and feature ids except at the rare near ties where one of two features wins by
+ * round-off (at most 1% of the pairs). */
+static void TestMovedBodies(void)
+{
+	TestRng rng = TestRngMake(0x10ca2u);
+	int cases = 0, ties = 0;
+	double worst = 0.0;
+	double tolerance = 1e-6;
+	for (int ta = 0; ta < CD2_SHAPE_TYPE_COUNT; ++ta)
+	{
+		for (int tb = 0; tb < CD2_SHAPE_TYPE_COUNT; ++tb)
+		{
+			for (int i = 0; i < 200; ++i)
+			{
+				cd2Shape a = RandomShape(&rng, (cd2ShapeType)ta);
+				cd2Shape b = RandomShape(&rng, (cd2ShapeType)tb);
+				cd2Transform xfA = RandomTransform(&rng, 10.0);
+				cd2Transform xfRel = RandomTransform(&rng, 2.0);
+				cd2Transform xfB = cd2MulTransforms(xfA, xfRel);
+				cdReal d = RandomReal(&rng, 0.0, 0.3);
+				cd2Shape wa = Place(&a, xfA), wb = Place(&b, xfB);
+				cd2Manifold world = cd2Collide(&wa, &wb, d);
+				cd2Manifold local = cd2TransformManifold(xfA, cd2CollideLocal(&a, &b, xfRel, d));
+				++cases;
+				bool same = world.pointCount == local.pointCount;
+				for (int k = 0; same && k < world.pointCount; ++k)
+				{
+					same = world.points[k].id == local.points[k].id;
+				}
+				if (!same)
+				{
+					++ties;
+					continue;
+				}
+				double scale = 12.0 + 10.0 * sqrt(2.0); /* coordinates up to |xfA.p| + shape extents */
+				for (int k = 0; k < world.pointCount; ++k)
+				{
+					double e = fmax(fabs((double)world.points[k].point.x - (double)local.points[k].point.x),
+									fabs((double)world.points[k].point.y - (double)local.points[k].point.y));
+					e = fmax(e,
+							 fabs((double)world.points[k].separation - (double)local.points[k].separation));
+					worst = fmax(worst, e / scale);
+				}
+				if (world.pointCount > 0)
+				{
+					double e = cd2Length(cd2Sub(world.normal, local.normal));
+					/* The normal of a short feature may turn by more than the coordinates' round-off:
+					 * points and separations above are what a solver uses. */
+					TEST_CHECKF(e < 1e-2, "%s-%s case %d normal differs by %g", TypeName(a.type),
+								TypeName(b.type), i, e);
+				}
+			}
+		}
+	}
+	printf("moved bodies: %d pairs, %d near ties, worst relative difference %.3g (tolerance %.3g)\n", cases,
+		   ties, worst, tolerance);
+	TEST_CHECKF(ties * 100 <= cases, "%d of %d pairs differ in points or ids", ties, cases);
+	TEST_CHECKF(worst <= tolerance, "worst %g", worst);
+}
+
+/* Far from the origin: two bodies translated to coordinates around `far`, with shapes in their own
+ * frames and a known gap. The local form, fed the relative transform the solver computes
+ * (cd2InvMulTransforms of the body transforms, exact for nearby translations), reports the gap to
+ * round-off of the shapes' own size; the world form loses the digits of the coordinates. */
+static void TestFarFromOrigin(void)
+{
+	TestRng rng = TestRngMake(0x10ca3u);
+	double worstLocal = 0.0, worstWorld = 0.0;
+	for (int i = 0; i < 400; ++i)
+	{
+		double far = TestRngRange(&rng, 1.0e4, 1.0e5);
+		cd2Transform xfA = {cd2MakeVec((cdReal)far, (cdReal)(-far * 0.7)), cd2MakeRot(CD_R(0.0))};
+		cdReal gap = RandomReal(&rng, 0.001, 0.05);
+		cdReal h = RandomReal(&rng, 0.2, 1.0);
+		cdReal wB = RandomReal(&rng, 0.2, 1.0);
+		/* B above A by h + gap + its own half height; computed in the solver's way. */
+		cd2Transform xfB = {cd2Add(xfA.p, cd2MakeVec(RandomReal(&rng, -0.1, 0.1), h + gap + wB)),
+							cd2MakeRot(CD_R(0.0))};
+		cd2Transform xfRel = cd2InvMulTransforms(xfA, xfB);
+		cdReal trueGap = (xfB.p.y - xfA.p.y) - h - wB; /* the gap of the bodies as stored */
+		cd2Shape a, b;
+		a.type = CD2_SHAPE_POLYGON;
+		b.type = TestRngInt(&rng, 2) == 0 ? CD2_SHAPE_POLYGON : CD2_SHAPE_CIRCLE;
+		TEST_CHECK(cd2MakeBoxPolygon((cd2Box){cd2MakeVec(CD_R(0.0), CD_R(0.0)), cd2MakeVec(CD_R(2.0), h),
+											  cd2MakeRot(CD_R(0.0))},
+									 &a.polygon) == CD_OK);
+		if (b.type == CD2_SHAPE_POLYGON)
+		{
+			TEST_CHECK(cd2MakeBoxPolygon((cd2Box){cd2MakeVec(CD_R(0.0), CD_R(0.0)), cd2MakeVec(CD_R(0.5), wB),
+												  cd2MakeRot(CD_R(0.0))},
+										 &b.polygon) == CD_OK);
+		}
+		else
+		{
+			b.circle.center = cd2MakeVec(CD_R(0.0), CD_R(0.0));
+			b.circle.radius = wB;
+		}
+		cd2Manifold local = cd2CollideLocal(&a, &b, xfRel, CD_R(0.1));
+		cd2Shape wa = Place(&a, xfA), wb = Place(&b, xfB);
+		cd2Manifold world = cd2Collide(&wa, &wb, CD_R(0.1));
+		TEST_CHECKF(local.pointCount == (b.type == CD2_SHAPE_POLYGON ? 2 : 1), "case %d: %d points", i,
+					local.pointCount);
+		for (int k = 0; k < local.pointCount; ++k)
+		{
+			worstLocal = fmax(worstLocal, fabs((double)local.points[k].separation - (double)trueGap));
+		}
+		for (int k = 0; k < world.pointCount; ++k)
+		{
+			worstWorld = fmax(worstWorld, fabs((double)world.points[k].separation - (double)trueGap));
+		}
+	}
+	printf("far from the origin: worst gap error local %.3g, world %.3g\n", worstLocal, worstWorld);
+	/* Round-off of the shapes' own coordinates (size ~ 3): a few ulps at 3, not at 1e5. */
+	TEST_CHECKF(worstLocal <= 16.0 * (double)CD_REAL_EPSILON * 3.0, "local error %g", worstLocal);
+	TEST_CHECK(worstLocal <= worstWorld || worstWorld <= 16.0 * (double)CD_REAL_EPSILON * 3.0);
+}
+
+int main(void)
+{
+	TEST_RUN(TestSameAsWorldForm);
+	TEST_RUN(TestMovedBodies);
+	TEST_RUN(TestFarFromOrigin);
+	return TEST_SUMMARY();
+}
