@@ -657,8 +657,8 @@ static void TestChain(void)
 	cd.points = points;
 	cd.count = 21;
 	cd2ChainId chain = cd2CreateChainShape(terrain, &cd);
-	TEST_CHECK(cd2Chain_IsValid(chain));
-	TEST_CHECK(cd2Chain_GetSegmentCount(chain) == 20);
+	TEST_CHECK(cd2ChainShape_IsValid(chain));
+	TEST_CHECK(cd2ChainShape_GetSegmentCount(chain) == 20);
 	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(6.0), CD_R(3.0)), CD_R(0.25), false);
 	cd2BodyId box;
 	{
@@ -685,7 +685,7 @@ static void TestChain(void)
 	TEST_CHECKF(cdAbs(p.x) < CD_R(1.0) && p.y > CD_R(0.0) && p.y < CD_R(0.6), "box at %g %g", (double)p.x,
 				(double)p.y);
 	cd2DestroyChainShape(chain);
-	TEST_CHECK(!cd2Chain_IsValid(chain));
+	TEST_CHECK(!cd2ChainShape_IsValid(chain));
 	cd2DestroyWorld(world);
 }
 

@@ -327,8 +327,8 @@ CD_API cd2ChainDef cd2DefaultChainDef(void);
  * geometric chain builder already owns it). */
 CD_API cd2ChainId cd2CreateChainShape(cd2BodyId bodyId, const cd2ChainDef* def);
 CD_API void cd2DestroyChainShape(cd2ChainId chainId);
-CD_API bool cd2Chain_IsValid(cd2ChainId chainId);
-CD_API int cd2Chain_GetSegmentCount(cd2ChainId chainId);
+CD_API bool cd2ChainShape_IsValid(cd2ChainId chainId);
+CD_API int cd2ChainShape_GetSegmentCount(cd2ChainId chainId);
 
 /* ---- joints --------------------------------------------------------------------------------- */
 typedef enum cd2JointType

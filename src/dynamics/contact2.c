@@ -8,7 +8,7 @@
  * The one place that computes a pair's manifold: A stays in its body frame and B is placed in A's
  * frame, so the result is in A's frame and the solver can hold anchors relative to the bodies.
  * (Swap for the public local-frame manifold functions when they land.) */
-cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
+cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
 							cdReal speculativeDistance)
 {
 	cd2Shape b = cd2MakeTaggedShape(shapeB, xfAB);
@@ -374,7 +374,7 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 							 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
 							 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
 			cdReal speculative = CD_SPECULATIVE_DISTANCE + timeStep * closing;
-			cd2Manifold m = cd2CollideLocal(shapeA, shapeB, cd2InvMulTransforms(xfA, xfB), speculative);
+			cd2Manifold m = cd2ContactCollide(shapeA, shapeB, cd2InvMulTransforms(xfA, xfB), speculative);
 			cd2ContactPoint old[2];
 			int oldCount = contact->pointCount;
 			memcpy(old, contact->points, sizeof(old));

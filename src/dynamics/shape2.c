@@ -525,7 +525,7 @@ void cd2DestroyChainShape(cd2ChainId chainId)
 	cdIdPool_Free(&world->chainPool, chainId.index1 - 1);
 }
 
-bool cd2Chain_IsValid(cd2ChainId chainId)
+bool cd2ChainShape_IsValid(cd2ChainId chainId)
 {
 	cd2World* world = cd2GetWorldFromIndex(chainId.world0);
 	return world != NULL && chainId.index1 > 0 && chainId.index1 <= world->chains.count &&
@@ -533,7 +533,7 @@ bool cd2Chain_IsValid(cd2ChainId chainId)
 		   world->chains.data[chainId.index1 - 1].generation == chainId.generation;
 }
 
-int cd2Chain_GetSegmentCount(cd2ChainId chainId)
+int cd2ChainShape_GetSegmentCount(cd2ChainId chainId)
 {
 	cd2World* world = NULL;
 	cd2ChainRec* chain = cd2LookupChain(chainId, &world, false);

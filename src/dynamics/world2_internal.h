@@ -302,7 +302,7 @@ void cd2UpdateSensors(cd2World* world);
 void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies);
 /* The single place where a pair's manifold is computed: shapes in their body frames, B's
  * transform in A's frame; the manifold comes back in A's frame. */
-cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
+cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
 							cdReal speculativeDistance);
 
 /* ---- contact_solver2.c ----------------------------------------------------------------------- */
