@@ -13,9 +13,13 @@
  * the separating axis test (face normals and the edge pairs that form faces of the Minkowski
  * difference), which is exact for polytopes (EPA for polytopes with many edge pairs). The
  * reference face is chosen with a small bias for stability from frame to frame (A's face over B's,
- * faces over edges) within 1e-3 of the shapes' size; the points' separations are then shifted
- * (each point kept on A's side) so that the smallest equals the exact SAT/EPA depth. For separated
- * pairs the smallest separation is the distance (cd3Distance).
+ * faces over edges) within 1e-4 of the shapes' size. The separations are the depths along the
+ * reported normal: B moved by minus the smallest separation along the normal just touches A
+ * (within round-off), so a solver pushing along the normal by the depth resolves the overlap
+ * exactly. When the bias took a normal other than the axis of least overlap, that depth exceeds
+ * the exact SAT/EPA depth by at most the bias (2e-4 of the size); otherwise the smallest
+ * separation is the exact depth. For separated pairs the smallest separation is the distance
+ * (cd3Distance).
  *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
