@@ -2351,7 +2351,8 @@ static cd3Shape FamilyShape(TestRng* rng, int family, cd3Vec center, cd3Hull* co
 
 /* B moved by the reported depth along the reported normal just touches A: the exact signed
  * separation (the double SAT over every axis, or the cores' distance) is then within 2e-4 of 0,
- * for random overlapping and nearly touching pairs of every family, both argument orders. A
+ * for random overlapping pairs and pairs apart by up to the speculative distance (every other
+ * pair) of every family, both argument orders. A
  * normal whose depth is not the depth along it leaves the pair penetrating (the solver then
  * under-resolves) or pushes it apart. */
 static void TestDepthAlongNormal(void)
@@ -2383,6 +2384,18 @@ static void TestDepthAlongNormal(void)
 				if (m.pointCount == 0)
 				{
 					continue;
+				}
+				if (n % 2 == 1)
+				{
+					/* Every other pair apart by up to the speculative distance (the separated
+					 * paths: SAT contact or closest points). */
+					double gap = TestRngRange(&rng, 0.0, 0.09) - MinSeparation(&m);
+					b = Translated(&b, cd3Scale((cdReal)gap, m.normal));
+					m = cd3Collide(&a, &b, SPECULATIVE);
+					if (m.pointCount == 0)
+					{
+						continue;
+					}
 				}
 				double depth = -MinSeparation(&m);
 				cd3Shape moved = Translated(&b, cd3Scale((cdReal)depth, m.normal));
