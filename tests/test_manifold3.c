@@ -2521,6 +2521,77 @@ static void TestFlatCapsulesDepthAlongNormal(void)
 	}
 }
 
+/* Scale: the same random pairs of every family (sphere, capsule, box, hull(8), hull(32); centres in
+ * [-5, 5]^3) scaled by 1e-4 and by 1e4 give the same manifold scaled: as many points, the same
+ * normal, separations scaled (tolerances relative to the pair's size). Tolerances must follow the
+ * shapes, not the unit: debris 1e-4 across works like a unit box. */
+static void TestScaleInvariance(void)
+{
+	TestRng rng = TestRngMake(0x5ca1e001ull);
+	cd3Hull* hull8[16];
+	cd3Hull* hull32[16];
+	for (int i = 0; i < 16; ++i)
+	{
+		hull8[i] = JitteredSphereHull(&rng, 8);
+		hull32[i] = JitteredSphereHull(&rng, 32);
+	}
+	static const double scales[2] = {1e-4, 1e4};
+	int compared = 0, failures = 0;
+	for (int fa = 0; fa < 5; ++fa)
+	{
+		for (int fb = 0; fb < 5; ++fb)
+		{
+			for (int n = 0; n < 200; ++n)
+			{
+				cd3Vec centerA = RandomVec(&rng, 5.0);
+				cd3Vec offset = cd3Scale((cdReal)TestRngRange(&rng, 0.1, 1.2), RandomUnit(&rng));
+				cd3Shape a = FamilyShape(&rng, fa, centerA, hull8, hull32);
+				cd3Shape b = FamilyShape(&rng, fb, cd3Add(centerA, offset), hull8, hull32);
+				cd3Manifold m = cd3Collide(&a, &b, SPECULATIVE);
+				double size = ShapeSize(&a) + ShapeSize(&b);
+				/* Away from the decisions (touching, the speculative distance). */
+				double reference = ReferenceSeparation(&a, &b);
+				if (fabs(reference) < 1e-3 * size || fabs(reference - (double)SPECULATIVE) < 1e-3 * size)
+				{
+					continue;
+				}
+				for (int k = 0; k < 2; ++k)
+				{
+					cdReal scale = (cdReal)scales[k];
+					cd3Shape sa = ScaleShape(&a, scale), sb = ScaleShape(&b, scale);
+					cd3Manifold q = cd3Collide(&sa, &sb, SPECULATIVE * scale);
+					++compared;
+					bool same = q.pointCount == m.pointCount;
+					if (same && m.pointCount > 0)
+					{
+						same = (double)cd3VecDistance(q.normal, m.normal) <= 1e-3 &&
+							   fabs(MinSeparation(&q) / (double)scale - MinSeparation(&m)) <= 1e-4 * size;
+					}
+					if (!same && ++failures <= 5)
+					{
+						TEST_CHECKF(false,
+									"%s-%s #%d scaled by %g: %d points, separation %.9g (scaled back), normal "
+									"(%.6g %.6g %.6g); unscaled %d points, %.9g, (%.6g %.6g %.6g)",
+									TypeName(a.type), TypeName(b.type), n, (double)scale, q.pointCount,
+									q.pointCount ? MinSeparation(&q) / (double)scale : 0.0, (double)q.normal.x,
+									(double)q.normal.y, (double)q.normal.z, m.pointCount,
+									m.pointCount ? MinSeparation(&m) : 0.0, (double)m.normal.x, (double)m.normal.y,
+									(double)m.normal.z);
+					}
+				}
+			}
+		}
+	}
+	printf("scale invariance: %d scaled manifolds, %d differ\n", compared, failures);
+	TEST_CHECK(compared > 6000);
+	TEST_CHECK(failures == 0);
+	for (int i = 0; i < 16; ++i)
+	{
+		cd3DestroyHull(hull8[i]);
+		cd3DestroyHull(hull32[i]);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -2552,5 +2623,6 @@ int main(void)
 	TEST_RUN(TestTiltedCapsules);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestFlatCapsulesDepthAlongNormal);
+	TEST_RUN(TestScaleInvariance);
 	return TEST_SUMMARY();
 }
