@@ -992,6 +992,34 @@ static bool PointsOnShapes(const cd3Manifold* m, const cd3Polytope* a, const cd3
 	return true;
 }
 
+/* Drops the points whose sides are not on their shapes within round-off. Only for polytopes of
+ * very different sizes (the caller's test, off the hot path): clipping a face 4.3e8 long against a
+ * sliver face (float) lerps along the long edges with an error of their length times epsilon, and
+ * kept a point 3.7e7 beyond a hull that reaches 1.65e6. */
+static void DropPointsOffShapes(cd3Manifold* m, const cd3Polytope* a, const cd3Polytope* b)
+{
+	int kept = 0;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		/* By the distance to each shape: a point beyond a needle's tip lies within the planes'
+		 * round-off of its long faces, extended, though far from it. */
+		const cd3ManifoldPoint* p = &m->points[i];
+		cdReal tolerance = CD_R(4.0) * RoundOff(p->point, a->size + b->size);
+		cd3Vec onA = cd3MulSub(p->point, CD_R(0.5) * p->separation, m->normal);
+		cd3Vec onB = cd3MulAdd(p->point, CD_R(0.5) * p->separation, m->normal);
+		if (cd3VecDistance(cd3ClosestPointOnShape(&a->shape, onA), onA) <= tolerance &&
+			cd3VecDistance(cd3ClosestPointOnShape(&b->shape, onB), onB) <= tolerance)
+		{
+			m->points[kept++] = m->points[i];
+		}
+	}
+	m->pointCount = kept;
+	if (kept == 0)
+	{
+		m->normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	}
+}
+
 /* The world normal (from A to B) of the SAT's axis of largest separation. */
 static cd3Vec SatNormal(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat)
 {
@@ -1062,6 +1090,10 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	if (separation <= CD_R(0.0))
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+		{
+			DropPointsOffShapes(&m, a, b);
+		}
 		cdReal limit = (FACE_BIAS + EDGE_BIAS) * (a->size + b->size);
 		/* A contact whose points all lie farther apart than the SAT's separation allows missed the
 		 * overlap: a triangle 1e9 long and 1e-4 across clipped, in float, against a box's face
