@@ -11,7 +11,7 @@
 #define CAST_SWEEP cd2Sweep
 #define CAST_TRANSFORM cd2Transform
 #define CAST_OUTPUT cd2CastOutput
-#define CAST_MAX_AXES (2 + 4 * CD2_MAX_POLYGON_VERTICES)
+#define CAST_MAX_AXES (2 + 2 * CD2_MAX_POLYGON_VERTICES)
 #define CAST_CORE cd2Core
 #define CAST_SIMPLEX cd2GjkSimplex
 
@@ -216,8 +216,10 @@ cd2Transform cd2GetSweepTransform(const cd2Sweep* sweep, cdReal t)
 	return MotionTransform(&m, t);
 }
 
-/* Both normals of every edge of the core (a polygon's edges, a capsule's or segment's line). */
-static int AppendEdgeAxes(const cd2Core* core, cd2Vec* axes, int count)
+/* The normals of the core's edges as axes from A towards B: a polygon's outward normals
+ * (counter-clockwise: right of each edge) for A, inward for B (sign -1); both normals of a
+ * capsule's or segment's line. */
+static int AppendEdgeAxes(const cd2Core* core, cdReal sign, cd2Vec* axes, int count)
 {
 	int edges = core->count == 2 ? 1 : (core->count > 2 ? core->count : 0);
 	for (int i = 0; i < edges && count + 2 <= CAST_MAX_AXES; ++i)
@@ -226,9 +228,12 @@ static int AppendEdgeAxes(const cd2Core* core, cd2Vec* axes, int count)
 		cdReal length = cd2Length(edge);
 		if (length > CD_R(0.0))
 		{
-			cd2Vec normal = cd2Scale(CD_R(1.0) / length, cd2RightPerp(edge));
+			cd2Vec normal = cd2Scale(sign / length, cd2RightPerp(edge));
 			axes[count++] = normal;
-			axes[count++] = cd2Neg(normal);
+			if (core->count == 2)
+			{
+				axes[count++] = cd2Neg(normal);
+			}
 		}
 	}
 	return count;
@@ -240,11 +245,11 @@ static int ContactAxes(const cd2Shape* a, const cd2Shape* b, cd2Vec* axes, int c
 	cd2Core coreA, coreB;
 	if (cd2MakeCore(a, &coreA))
 	{
-		count = AppendEdgeAxes(&coreA, axes, count);
+		count = AppendEdgeAxes(&coreA, CD_R(1.0), axes, count);
 	}
 	if (cd2MakeCore(b, &coreB))
 	{
-		count = AppendEdgeAxes(&coreB, axes, count);
+		count = AppendEdgeAxes(&coreB, CD_R(-1.0), axes, count);
 	}
 	return count;
 }

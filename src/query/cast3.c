@@ -350,7 +350,22 @@ static int ContactAxes(const cd3Shape* a, const cd3Shape* b, cd3Vec* axes, int c
 	cd3Vec a1, a2, b1, b2;
 	if (polytopeA && polytopeB)
 	{
-		cd3SatResult sat = cd3SatPolytopes(&pa, &pb);
+		cd3SatResult sat;
+		bool boxes = (a->type == CD3_SHAPE_BOX || a->type == CD3_SHAPE_AABB) &&
+					 (b->type == CD3_SHAPE_BOX || b->type == CD3_SHAPE_AABB);
+		if (boxes)
+		{
+			/* The fifteen axes in closed form (face indices those of the box polytopes). */
+			cd3Mat33 rotation;
+			cd3Vec translation;
+			cd3Box boxA = {pa.transform.p, pa.vertexStorage[7], pa.transform.q};
+			cd3Box boxB = {pb.transform.p, pb.vertexStorage[7], pb.transform.q};
+			sat = cd3SatBoxes(boxA, boxB, &rotation, &translation);
+		}
+		else
+		{
+			sat = cd3SatPolytopes(&pa, &pb);
+		}
 		if (sat.faceA >= 0)
 		{
 			count = AppendAxis(axes, count, cd3RotateVector(pa.transform.q, pa.planes[sat.faceA].normal));
