@@ -175,9 +175,55 @@ static void TestRandomCastNormals(void)
 	}
 }
 
+/* Round shapes: the hit normal is the true surface normal, the direction from the closest point
+ * of the box to the sphere's centre at the hit (in double), to 1e-4 rad in float: the cast stops
+ * when the cores are within the radius plus the tolerance, where the ray cast's point of the
+ * difference is not yet the closest one (its direction was off by up to 4e-3 rad). */
+static void TestSphereBoxSurfaceNormal(void)
+{
+	TestRng rng = TestRngMake(0x5b4e0a1ull);
+	int hits = 0, failures = 0;
+	double worst = 0.0;
+	for (int i = 0; i < 3000; ++i)
+	{
+		cd3Shape a = RandomShape(&rng, CD3_SHAPE_SPHERE), b = RandomShape(&rng, CD3_SHAPE_BOX);
+		a.sphere.radius = (cdReal)TestRngRange(&rng, 0.1, 1.0);
+		cd3Vec start = cd3Scale(RandomReal(&rng, 3.5, 4.5), RandomUnit(&rng));
+		a = Translated(&a, cd3Add(cd3Sub(b.box.center, a.sphere.center), start));
+		cd3Vec translation = cd3Add(cd3Scale(CD_R(-2.0), start), RandomVec(&rng, 1.0));
+		cd3CastOutput out = cd3ShapeCast(&a, &b, translation);
+		if (!out.hit || out.fraction <= CD_R(0.0))
+		{
+			continue;
+		}
+		++hits;
+		cd3Vec center = cd3MulAdd(a.sphere.center, out.fraction, translation);
+		cd3Vec closest = cd3ClosestPointOnBox(b.box, center);
+		double d[3] = {(double)center.x - (double)closest.x, (double)center.y - (double)closest.y,
+					   (double)center.z - (double)closest.z};
+		double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+		/* The angle from the cross product (acos of a dot product near 1 turns the normal's
+		 * float round-off of its length, 6e-8, into 3.5e-4 rad). */
+		double n[3] = {(double)out.normal.x, (double)out.normal.y, (double)out.normal.z};
+		double c[3] = {n[1] * d[2] - n[2] * d[1], n[2] * d[0] - n[0] * d[2], n[0] * d[1] - n[1] * d[0]};
+		double nLength = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+		double angle = asin(fmin(1.0, sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / (length * nLength)));
+		angle = n[0] * d[0] + n[1] * d[1] + n[2] * d[2] < 0.0 ? 3.14159265358979 - angle : angle;
+		worst = fmax(worst, angle);
+		if (!(angle <= 1e-4) && ++failures <= 3)
+		{
+			TEST_CHECKF(false, "pair %d: normal %.3g rad off the surface normal", i, angle);
+		}
+	}
+	printf("  sphere-box surface normal: %d hits, worst %.3g rad\n", hits, worst);
+	TEST_CHECK(hits > 1000);
+	TEST_CHECK(failures == 0);
+}
+
 int main(void)
 {
 	TEST_RUN(TestIssueBoxCase);
 	TEST_RUN(TestRandomCastNormals);
+	TEST_RUN(TestSphereBoxSurfaceNormal);
 	return TEST_SUMMARY();
 }
