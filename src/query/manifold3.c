@@ -1115,7 +1115,11 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 				return WitnessContact(a, b, &sat, cp);
 			}
 			m = SatContact(a, b, &sat, speculativeDistance, false);
-			if (!PointsOnShapes(&m, a, b))
+			if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+			{
+				DropPointsOffShapes(&m, a, b);
+			}
+			if (m.pointCount == 0 || !PointsOnShapes(&m, a, b))
 			{
 				return WitnessContact(a, b, &sat, cp);
 			}
@@ -1149,6 +1153,12 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	if (cp.distance <= separation + tolerance)
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+		{
+			/* A face 4.3e8 long clipped against a needle's face 1.6e6 long (float) kept points
+			 * off the shapes, one of them deeper than the separating axis allows. */
+			DropPointsOffShapes(&m, a, b);
+		}
 		cdReal smallest = ManifoldMinSeparation(&m);
 		/* Never farther apart than the distance beyond round-off: B moved by the smallest
 		 * separation along the normal must not overlap A (a hull(8)-box pair apart by 0.062725
