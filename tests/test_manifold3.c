@@ -2372,7 +2372,7 @@ static void TestDepthAlongNormal(void)
 		{
 			int checked = 0, failures = 0;
 			double worst = 0.0;
-			for (int n = 0; n < 2000; ++n)
+			for (int n = 0; n < 1000; ++n)
 			{
 				/* Centres anywhere in [-5, 5]^3 (float round-off of the coordinates), B within
 				 * reach of A. */
@@ -2421,7 +2421,7 @@ static void TestDepthAlongNormal(void)
 			}
 			printf("  %-8s - %-8s %3d pairs, %d off by more than 2e-4, worst %.3g\n", names[fa], names[fb], checked,
 				   failures, worst);
-			TEST_CHECKF(checked > 1000, "%s-%s: only %d pairs", names[fa], names[fb], checked);
+			TEST_CHECKF(checked > 500, "%s-%s: only %d pairs", names[fa], names[fb], checked);
 			TEST_CHECKF(failures == 0, "%s-%s: %d pairs off", names[fa], names[fb], failures);
 		}
 	}
