@@ -518,6 +518,19 @@ static double BruteSat(const Brute* a, const Brute* b)
 	return best == -INFINITY ? 0.0 : best;
 }
 
+/* The exact separation (BruteSat) of `first` and `second` moved by -separation along the normal:
+ * zero when the reported depth is the depth along the reported normal. */
+static double SeparationAfterMove(const cd3Shape* first, const cd3Shape* second, const cd3Manifold* m,
+								  double separation)
+{
+	cd3Transform t = {cd3Scale((cdReal)-separation, m->normal), CD3_QUAT_IDENTITY};
+	cd3Shape moved = TransformShape(second, t);
+	Brute b1, b2;
+	BruteFromShape(&b1, first);
+	BruteFromShape(&b2, &moved);
+	return BruteSat(&b1, &b2);
+}
+
 static cd3Shape CoreShape(const cd3Shape* s)
 {
 	cd3Shape c = *s;
@@ -1094,8 +1107,8 @@ static void TestExactDepth(void)
 		hulls[i] = Ellipsoid32(&rng);
 	}
 	int compared[5] = {0, 0, 0, 0, 0};
-	double worst = 0.0;
-	for (int n = 0; n < 300; ++n)
+	double worst = 0.0, worstBias = 0.0;
+	for (int n = 0; n < 2000; ++n)
 	{
 		int kind = n % 5;
 		cd3Shape a, b;
@@ -1151,28 +1164,53 @@ static void TestExactDepth(void)
 		}
 		++compared[kind];
 		double tol = 1e-4 * -reference + 4.0 * (double)CD_REAL_EPSILON * size;
+		/* The reference feature's tie bias (1e-4 of the size, face and edge) may take a normal
+		 * whose depth exceeds the smallest by up to that much; the depth along it is exact. */
+		double bias = 2e-4 * size;
 		cd3Manifold m = cd3Collide(&a, &b, CD_R(0.0));
 		cd3Manifold r = cd3Collide(&b, &a, CD_R(0.0));
-		TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) - reference) <= tol,
-					"kind %d #%d: smallest separation %.9g, exact %.9g", kind, n, MinSeparation(&m),
-					reference);
-		TEST_CHECKF(r.pointCount > 0 && fabs(MinSeparation(&r) - reference) <= tol,
-					"kind %d #%d: swapped, smallest separation %.9g, exact %.9g", kind, n, MinSeparation(&r),
-					reference);
+		for (int order = 0; order < 2; ++order)
+		{
+			const cd3Manifold* q = order == 0 ? &m : &r;
+			double smallest = MinSeparation(q);
+			double after = q->pointCount > 0 ? (order == 0 ? SeparationAfterMove(&a, &b, q, smallest)
+														   : SeparationAfterMove(&b, &a, q, smallest))
+											 : INFINITY;
+			/* Moved by the depth along the normal, the pair just touches, to within the tolerance
+			 * plus the manifold's round-off band (64 epsilon of the size and the coordinates, where
+			 * the points are matched to the separating axis test's depth). */
+			double roundOff = 64.0 * (double)CD_REAL_EPSILON * (size + 3.0);
+			TEST_CHECKF(fabs(after) <= tol + roundOff,
+						"kind %d #%d order %d: smallest separation %.9g; moved by it along the normal, the "
+						"pair is %.3g apart",
+						kind, n, order, smallest, after);
+			if (!(fabs(after) <= tol + roundOff) && getenv("M3DEBUG"))
+			{
+				for (int i = 0; i < q->pointCount; ++i)
+				{
+					fprintf(stderr, "   point %d id %x sep %.9g\n", i, q->points[i].id, (double)q->points[i].separation);
+				}
+				fprintf(stderr, "   normal %.9g %.9g %.9g reference %.9g\n", (double)q->normal.x, (double)q->normal.y, (double)q->normal.z, reference);
+			}
+			TEST_CHECKF(q->pointCount > 0 && smallest <= reference + tol && smallest >= reference - bias - tol,
+						"kind %d #%d order %d: smallest separation %.9g, exact %.9g", kind, n, order, smallest,
+						reference);
+			if (q->pointCount > 0)
+			{
+				worst = fmax(worst, fabs(after) / -reference);
+				worstBias = fmax(worstBias, (reference - smallest) / size);
+			}
+		}
 		TEST_CHECKF(cd3Dot(m.normal, r.normal) < CD_R(0.0), "kind %d #%d: swapped normal not flipped", kind,
 					n);
-		if (m.pointCount > 0)
-		{
-			worst = fmax(worst, fabs(MinSeparation(&m) - reference) / -reference);
-		}
 		if (kind == 0 && n < 60)
 		{
 			CheckIdsStable(a.box, b.box);
 		}
 	}
 	printf("exact depth: %d/%d/%d/%d/%d pairs compared (stacked, boxes, hulls, box-hull, small hull), worst "
-		   "relative error %.2e\n",
-		   compared[0], compared[1], compared[2], compared[3], compared[4], worst);
+		   "relative error along the normal %.2e, deepest beyond the smallest depth %.2e of the size\n",
+		   compared[0], compared[1], compared[2], compared[3], compared[4], worst, worstBias);
 	for (int k = 0; k < 5; ++k)
 	{
 		TEST_CHECKF(compared[k] > 45, "kind %d: only %d pairs compared", k, compared[k]);
@@ -1455,8 +1493,10 @@ static cd3Manifold CollideOnSurfaces(const char* name, const cd3Shape* a, const 
 
 /* One overlapping fuzz case in both orders, to round-off (256 epsilon of the case's magnitude
  * `scale`, the fuzz audit's bound): every point on both surfaces and within the speculative
- * distance, and (exactDepth) the smallest separation the exact depth (BruteSat: every face normal
- * and edge cross product, in double). */
+ * distance, and (exactDepth) the smallest separation the depth along the normal (the second
+ * shape moved by it just touches the first) and
+ * within the tie bias of the exact depth (BruteSat: every face normal and edge cross product, in
+ * double). */
 static void CheckDepthCase(const char* name, const cd3Shape* a, const cd3Shape* b, double speculative,
 						   double scale, bool exactDepth)
 {
@@ -1475,7 +1515,15 @@ static void CheckDepthCase(const char* name, const cd3Shape* a, const cd3Shape* 
 						"%s, order %d: point %d separation %.9g beyond the speculative distance", name, order,
 						i, (double)m.points[i].separation);
 		}
-		TEST_CHECKF(!exactDepth || fabs(MinSeparation(&m) - exact) <= tol,
+		/* Exact along the normal; within the tie bias (2e-4 of the size) of the smallest depth. */
+		double after = m.pointCount > 0 ? (order == 0 ? SeparationAfterMove(a, b, &m, MinSeparation(&m))
+													  : SeparationAfterMove(b, a, &m, MinSeparation(&m)))
+										: INFINITY;
+		TEST_CHECKF(!exactDepth || fabs(after) <= tol,
+					"%s, order %d: smallest separation %.17g; moved by it along the normal, the pair is %.3g "
+					"apart",
+					name, order, MinSeparation(&m), after);
+		TEST_CHECKF(!exactDepth || MinSeparation(&m) >= exact - 2e-4 * scale - tol,
 					"%s, order %d: smallest separation %.17g, exact %.17g", name, order, MinSeparation(&m),
 					exact);
 		TEST_CHECKF(MinSeparation(&m) <= exact + tol,
@@ -2241,6 +2289,309 @@ static void TestTiltedCapsules(void)
 	}
 }
 
+/* A hull of `count` points on a jittered sphere of radius 0.5 to 1 (like the peers' hull(8) and
+ * hull(32) scenes). */
+static cd3Hull* JitteredSphereHull(TestRng* rng, int count)
+{
+	cd3Hull* hull = NULL;
+	while (hull == NULL || hull->vertexCount < count - 2)
+	{
+		cd3DestroyHull(hull);
+		hull = NULL;
+		cd3Vec points[64];
+		double scale = TestRngRange(rng, 0.5, 1.0);
+		for (int i = 0; i < count; ++i)
+		{
+			points[i] = cd3Scale((cdReal)(scale * TestRngRange(rng, 0.85, 1.15)), RandomUnit(rng));
+		}
+		cd3ComputeHull(points, count, &hull);
+	}
+	return hull;
+}
+
+/* A shape of the family (0 sphere, 1 capsule, 2 box, 3 hull(8), 4 hull(32)) of size about 1 at
+ * center. */
+static cd3Shape FamilyShape(TestRng* rng, int family, cd3Vec center, cd3Hull* const* hull8,
+							cd3Hull* const* hull32)
+{
+	cd3Shape s;
+	memset(&s, 0, sizeof(s));
+	switch (family)
+	{
+		case 0:
+			s.type = CD3_SHAPE_SPHERE;
+			s.sphere.center = center;
+			s.sphere.radius = (cdReal)TestRngRange(rng, 0.2, 0.6);
+			break;
+		case 1:
+		{
+			cd3Vec half = cd3Scale((cdReal)TestRngRange(rng, 0.1, 0.5), RandomUnit(rng));
+			s.type = CD3_SHAPE_CAPSULE;
+			s.capsule.p1 = cd3Sub(center, half);
+			s.capsule.p2 = cd3Add(center, half);
+			s.capsule.radius = (cdReal)TestRngRange(rng, 0.1, 0.4);
+			break;
+		}
+		case 2:
+			s.type = CD3_SHAPE_BOX;
+			s.box.center = center;
+			s.box.halfExtents = cd3MakeVec((cdReal)TestRngRange(rng, 0.15, 0.6), (cdReal)TestRngRange(rng, 0.15, 0.6),
+										   (cdReal)TestRngRange(rng, 0.15, 0.6));
+			s.box.rotation = RandomQuat(rng);
+			break;
+		default:
+			s.type = CD3_SHAPE_HULL;
+			s.hull.hull = family == 3 ? hull8[TestRngInt(rng, 16)] : hull32[TestRngInt(rng, 16)];
+			s.hull.transform.p = center;
+			s.hull.transform.q = RandomQuat(rng);
+			break;
+	}
+	return s;
+}
+
+/* B moved by the reported depth along the reported normal just touches A: the exact signed
+ * separation (the double SAT over every axis, or the cores' distance) is then within 2e-4 of 0,
+ * for random overlapping pairs and pairs apart by up to the speculative distance (every other
+ * pair) of every family, both argument orders. A
+ * normal whose depth is not the depth along it leaves the pair penetrating (the solver then
+ * under-resolves) or pushes it apart. */
+static void TestDepthAlongNormal(void)
+{
+	static const char* names[5] = {"sphere", "capsule", "box", "hull(8)", "hull(32)"};
+	TestRng rng = TestRngMake(0xde9a7401ull);
+	cd3Hull* hull8[16];
+	cd3Hull* hull32[16];
+	for (int i = 0; i < 16; ++i)
+	{
+		hull8[i] = JitteredSphereHull(&rng, 8);
+		hull32[i] = JitteredSphereHull(&rng, 32);
+	}
+	for (int fa = 0; fa < 5; ++fa)
+	{
+		for (int fb = 0; fb < 5; ++fb)
+		{
+			int checked = 0, failures = 0;
+			double worst = 0.0;
+			for (int n = 0; n < 1000; ++n)
+			{
+				/* Centres anywhere in [-5, 5]^3 (float round-off of the coordinates), B within
+				 * reach of A. */
+				cd3Vec centerA = RandomVec(&rng, 5.0);
+				cd3Vec offset = cd3Scale((cdReal)TestRngRange(&rng, 0.1, 1.2), RandomUnit(&rng));
+				cd3Shape a = FamilyShape(&rng, fa, centerA, hull8, hull32);
+				cd3Shape b = FamilyShape(&rng, fb, cd3Add(centerA, offset), hull8, hull32);
+				cd3Manifold m = cd3Collide(&a, &b, SPECULATIVE);
+				if (m.pointCount == 0)
+				{
+					continue;
+				}
+				if (n % 2 == 1)
+				{
+					/* Every other pair apart by up to the speculative distance (the separated
+					 * paths: SAT contact or closest points). */
+					double gap = TestRngRange(&rng, 0.0, 0.09) - MinSeparation(&m);
+					b = Translated(&b, cd3Scale((cdReal)gap, m.normal));
+					m = cd3Collide(&a, &b, SPECULATIVE);
+					if (m.pointCount == 0)
+					{
+						continue;
+					}
+				}
+				double depth = -MinSeparation(&m);
+				cd3Shape moved = Translated(&b, cd3Scale((cdReal)depth, m.normal));
+				double after = ReferenceSeparation(&a, &moved);
+				++checked;
+				worst = fmax(worst, fabs(after));
+				if (!(fabs(after) <= 2e-4))
+				{
+					if (++failures <= 3)
+					{
+						TEST_CHECKF(false, "%s-%s #%d: depth %.9g along (%.9g %.9g %.9g) leaves separation %.3g",
+									names[fa], names[fb], n, depth, (double)m.normal.x, (double)m.normal.y,
+									(double)m.normal.z, after);
+						PrintShape("a", &a);
+						PrintShape("b", &b);
+						for (int i = 0; i < m.pointCount; ++i)
+						{
+							fprintf(stderr, "   point %d id %x separation %.9g\n", i, m.points[i].id,
+									(double)m.points[i].separation);
+						}
+					}
+				}
+			}
+			printf("  %-8s - %-8s %3d pairs, %d off by more than 2e-4, worst %.3g\n", names[fa], names[fb], checked,
+				   failures, worst);
+			TEST_CHECKF(checked > 500, "%s-%s: only %d pairs", names[fa], names[fb], checked);
+			TEST_CHECKF(failures == 0, "%s-%s: %d pairs off", names[fa], names[fb], failures);
+		}
+	}
+	for (int i = 0; i < 16; ++i)
+	{
+		cd3DestroyHull(hull8[i]);
+		cd3DestroyHull(hull32[i]);
+	}
+}
+
+/* Capsules lying nearly flat on a face of a box or hull (tilted by up to 0.02 rad, so within and
+ * beyond the tilt the manifold treats as lying on the face), overlapping by up to 0.05 or apart by
+ * up to 0.01, their ends over the face or beyond its side: moved by the reported depth along the
+ * reported normal, the capsule just touches the polytope (exact separation within 2e-4), in both
+ * argument orders. */
+static void TestFlatCapsulesDepthAlongNormal(void)
+{
+	TestRng rng = TestRngMake(0xca9f1a7ull);
+	cd3Hull* hulls[32];
+	for (int i = 0; i < 32; ++i)
+	{
+		hulls[i] = JitteredSphereHull(&rng, i < 16 ? 8 : 32);
+	}
+	int checked = 0, failures = 0;
+	double worst = 0.0;
+	for (int n = 0; n < 4000; ++n)
+	{
+		cd3Vec center = RandomVec(&rng, 5.0);
+		cd3Shape poly = FamilyShape(&rng, 2 + TestRngInt(&rng, 3), center, hulls, hulls + 16);
+		/* A face normal of the polytope, in the world. */
+		cd3Vec normal;
+		if (poly.type == CD3_SHAPE_BOX)
+		{
+			cd3Vec axes[3] = {cd3MakeVec(1, 0, 0), cd3MakeVec(0, 1, 0), cd3MakeVec(0, 0, 1)};
+			normal = cd3RotateVector(poly.box.rotation, axes[TestRngInt(&rng, 3)]);
+			normal = TestRngInt(&rng, 2) ? normal : cd3Neg(normal);
+		}
+		else
+		{
+			const cd3Hull* h = poly.hull.hull;
+			normal = cd3RotateVector(poly.hull.transform.q, h->planes[TestRngInt(&rng, h->faceCount)].normal);
+		}
+		Brute bp;
+		BruteFromShape(&bp, &poly);
+		double top = -INFINITY;
+		for (int i = 0; i < bp.vertexCount; ++i)
+		{
+			top = fmax(top, bp.v[i][0] * (double)normal.x + bp.v[i][1] * (double)normal.y +
+								bp.v[i][2] * (double)normal.z);
+		}
+		cd3Vec side = cd3Normalize(cd3Cross(normal, RandomUnit(&rng)));
+		cd3Vec across = cd3Cross(normal, side);
+		double tilt = TestRngRange(&rng, -0.02, 0.02);
+		cd3Vec axis = cd3Add(cd3Scale((cdReal)cos(tilt), side), cd3Scale((cdReal)sin(tilt), normal));
+		double radius = TestRngRange(&rng, 0.05, 0.3), half = TestRngRange(&rng, 0.1, 0.8);
+		double depth = TestRngRange(&rng, -0.01, 0.05);
+		/* The capsule's middle above the polytope's top along the normal, shifted sideways. */
+		double height = top - (double)cd3Dot(normal, center) + radius - depth + fabs(tilt) * half;
+		cd3Vec middle = cd3Add(center, cd3Scale((cdReal)height, normal));
+		middle = cd3Add(middle, cd3Add(cd3Scale((cdReal)TestRngRange(&rng, -0.4, 0.4), side),
+									   cd3Scale((cdReal)TestRngRange(&rng, -0.3, 0.3), across)));
+		cd3Shape capsule;
+		memset(&capsule, 0, sizeof(capsule));
+		capsule.type = CD3_SHAPE_CAPSULE;
+		capsule.capsule.p1 = cd3MulSub(middle, (cdReal)half, axis);
+		capsule.capsule.p2 = cd3MulAdd(middle, (cdReal)half, axis);
+		capsule.capsule.radius = (cdReal)radius;
+		for (int order = 0; order < 2; ++order)
+		{
+			const cd3Shape* first = order == 0 ? &capsule : &poly;
+			const cd3Shape* second = order == 0 ? &poly : &capsule;
+			cd3Manifold m = cd3Collide(first, second, SPECULATIVE);
+			if (m.pointCount == 0)
+			{
+				continue;
+			}
+			double separation = MinSeparation(&m);
+			cd3Shape moved = Translated(second, cd3Scale((cdReal)-separation, m.normal));
+			double after = ReferenceSeparation(first, &moved);
+			++checked;
+			worst = fmax(worst, fabs(after));
+			if (!(fabs(after) <= 2e-4) && ++failures <= 3)
+			{
+				TEST_CHECKF(false, "#%d order %d: tilt %.4g, separation %.9g leaves %.3g (%d points, id %x)", n, order,
+							tilt, separation, after, m.pointCount, m.points[0].id);
+				PrintShape("capsule", &capsule);
+				PrintShape("polytope", &poly);
+			}
+		}
+	}
+	printf("flat capsules: %d manifolds, %d off by more than 2e-4, worst %.3g\n", checked, failures, worst);
+	TEST_CHECK(checked > 6000);
+	TEST_CHECK(failures == 0);
+	for (int i = 0; i < 32; ++i)
+	{
+		cd3DestroyHull(hulls[i]);
+	}
+}
+
+/* Scale: the same random pairs of every family (sphere, capsule, box, hull(8), hull(32); centres in
+ * [-5, 5]^3) scaled by 1e-4 and by 1e4 give the same manifold scaled: as many points, the same
+ * normal, separations scaled (tolerances relative to the pair's size). Tolerances must follow the
+ * shapes, not the unit: debris 1e-4 across works like a unit box. */
+static void TestScaleInvariance(void)
+{
+	TestRng rng = TestRngMake(0x5ca1e001ull);
+	cd3Hull* hull8[16];
+	cd3Hull* hull32[16];
+	for (int i = 0; i < 16; ++i)
+	{
+		hull8[i] = JitteredSphereHull(&rng, 8);
+		hull32[i] = JitteredSphereHull(&rng, 32);
+	}
+	static const double scales[2] = {1e-4, 1e4};
+	int compared = 0, failures = 0;
+	for (int fa = 0; fa < 5; ++fa)
+	{
+		for (int fb = 0; fb < 5; ++fb)
+		{
+			for (int n = 0; n < 200; ++n)
+			{
+				cd3Vec centerA = RandomVec(&rng, 5.0);
+				cd3Vec offset = cd3Scale((cdReal)TestRngRange(&rng, 0.1, 1.2), RandomUnit(&rng));
+				cd3Shape a = FamilyShape(&rng, fa, centerA, hull8, hull32);
+				cd3Shape b = FamilyShape(&rng, fb, cd3Add(centerA, offset), hull8, hull32);
+				cd3Manifold m = cd3Collide(&a, &b, SPECULATIVE);
+				double size = ShapeSize(&a) + ShapeSize(&b);
+				/* Away from the decisions (touching, the speculative distance). */
+				double reference = ReferenceSeparation(&a, &b);
+				if (fabs(reference) < 1e-3 * size || fabs(reference - (double)SPECULATIVE) < 1e-3 * size)
+				{
+					continue;
+				}
+				for (int k = 0; k < 2; ++k)
+				{
+					cdReal scale = (cdReal)scales[k];
+					cd3Shape sa = ScaleShape(&a, scale), sb = ScaleShape(&b, scale);
+					cd3Manifold q = cd3Collide(&sa, &sb, SPECULATIVE * scale);
+					++compared;
+					bool same = q.pointCount == m.pointCount;
+					if (same && m.pointCount > 0)
+					{
+						same = (double)cd3VecDistance(q.normal, m.normal) <= 1e-3 &&
+							   fabs(MinSeparation(&q) / (double)scale - MinSeparation(&m)) <= 1e-4 * size;
+					}
+					if (!same && ++failures <= 5)
+					{
+						TEST_CHECKF(false,
+									"%s-%s #%d scaled by %g: %d points, separation %.9g (scaled back), normal "
+									"(%.6g %.6g %.6g); unscaled %d points, %.9g, (%.6g %.6g %.6g)",
+									TypeName(a.type), TypeName(b.type), n, (double)scale, q.pointCount,
+									q.pointCount ? MinSeparation(&q) / (double)scale : 0.0, (double)q.normal.x,
+									(double)q.normal.y, (double)q.normal.z, m.pointCount,
+									m.pointCount ? MinSeparation(&m) : 0.0, (double)m.normal.x, (double)m.normal.y,
+									(double)m.normal.z);
+					}
+				}
+			}
+		}
+	}
+	printf("scale invariance: %d scaled manifolds, %d differ\n", compared, failures);
+	TEST_CHECK(compared > 6000);
+	TEST_CHECK(failures == 0);
+	for (int i = 0; i < 16; ++i)
+	{
+		cd3DestroyHull(hull8[i]);
+		cd3DestroyHull(hull32[i]);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -2270,5 +2621,8 @@ int main(void)
 	TEST_RUN(TestNearlyParallelBoxEdges);
 	TEST_RUN(TestHugeDoubleRegressions);
 	TEST_RUN(TestTiltedCapsules);
+	TEST_RUN(TestDepthAlongNormal);
+	TEST_RUN(TestFlatCapsulesDepthAlongNormal);
+	TEST_RUN(TestScaleInvariance);
 	return TEST_SUMMARY();
 }

@@ -376,10 +376,28 @@ static void TestRandomClouds(void)
 	CheckRandomClouds(0xC10D1, 0.0, 0.05, 50.0, 3000, "ordinary");
 	CheckRandomClouds(0xC10D2, 1e6, 50.0, 1e4, 1000, "huge 1e6");
 #if CD_DOUBLE
-	CheckRandomClouds(0xC10D3, 1e30, 1e28, 1e29, 500, "huge 1e30");
+	CheckRandomClouds(0xC10D3, 8.5e29, 1e28, 1e29, 500, "huge 1e30");
 #else
-	CheckRandomClouds(0xC10D3, 1e9, 1e7, 1e8, 500, "huge 1e9");
+	CheckRandomClouds(0xC10D3, 8.5e8, 1e7, 1e8, 500, "huge 1e9");
 #endif
+}
+
+/* Coordinates beyond the documented range are refused (fuzz finding polygon2-huge-coords-contains,
+ * now in fuzz/corpus/fuzz_polygon2: points up to 7e9 in float built a polygon that left an input
+ * point 1.3e5 outside); the limit itself is accepted. */
+static void TestOutOfRange(void)
+{
+	cd2Polygon polygon, before;
+	memset(&polygon, 0x5a, sizeof(polygon));
+	before = polygon;
+	double big = 7.0 * (double)CD2_POLYGON_MAX_COORDINATE;
+	cd2Vec far[3] = {V(0, 5e4), V(-big, 5e4), V(-125000, 10000)};
+	TEST_CHECK(cd2MakePolygon(far, 3, &polygon) == CD_ERROR_OUT_OF_RANGE);
+	TEST_CHECK(memcmp(&polygon, &before, sizeof(polygon)) == 0);
+	TEST_CHECK(cd2MakeRoundedPolygon(far, 3, CD_R(1.0), &polygon) == CD_ERROR_OUT_OF_RANGE);
+	double edge = (double)CD2_POLYGON_MAX_COORDINATE;
+	cd2Vec limit[3] = {V(edge, edge), V(-edge, edge), V(0, -edge)};
+	TEST_CHECK(cd2MakePolygon(limit, 3, &polygon) == CD_OK);
 }
 
 static void TestHugeAndSmall(void)
@@ -517,6 +535,7 @@ int main(void)
 	TEST_RUN(TestBoxPolygon);
 	TEST_RUN(TestRandomClouds);
 	TEST_RUN(TestHugeAndSmall);
+	TEST_RUN(TestOutOfRange);
 	TEST_RUN(TestRounded);
 	return TEST_SUMMARY();
 }

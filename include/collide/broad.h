@@ -89,7 +89,11 @@ CD_API void cd3BroadPhase_DestroyProxy(cd3BroadPhase* broadPhase, int proxyId);
 
 /* Tells the proxy its new tight box and its predicted displacement for the next step. Returns
  * true when the fat box had to change (the proxy then counts as moved), false when the new box
- * still fits in the old fat box (nothing to do). An invalid box is ignored (returns false). */
+ * still fits in the old fat box and that fat box is not too large (nothing to do). The fat box
+ * also changes, and the call returns true, when the new box still fits but the old fat box sticks
+ * out of the box it would get with 4 times the margin and 4 times the displacement stretch (it
+ * was stretched by a fast move that has stopped): it is then rebuilt around the new box, so that
+ * it does not report needless pairs forever. An invalid box is ignored (returns false). */
 CD_API bool cd3BroadPhase_MoveProxy(cd3BroadPhase* broadPhase, int proxyId, cd3Aabb aabb,
 									cd3Vec displacement);
 

@@ -42,7 +42,11 @@ extern "C" {
 
 /* Result of a shape cast. On a hit: fraction in [0, 1] of the translation at first contact,
  * point on B's surface where A touches it, normal = unit outward normal of B's surface there
- * (pointing from B towards A, opposite to the direction A moves in). Shapes that already touch
+ * (pointing from B towards A, opposite to the direction A moves in): the contact normal of the
+ * touching features (a face normal or the cross product of two edges for polytopes, the surface
+ * normal of a round shape), so that the plane through point with this normal separates the
+ * shapes at fraction to within the cast tolerance (not the direction between two closest points
+ * a tolerance apart, which round-off turns by up to 1e-2 rad in float). Shapes that already touch
  * or overlap at fraction 0 hit at fraction 0 with point = a common point and normal =
  * -normalize(translation) (zero for a zero translation), like a ray starting inside a shape.
  * No hit: hit false, fraction 1, point and normal zero. hitIterationCap: the cap stopped the

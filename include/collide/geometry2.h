@@ -110,8 +110,19 @@ CD_API cd2Shape cd2MakeSegmentShape(cd2Segment segment);
  *   CD_ERROR_INVALID_ARGUMENT  points or out is NULL, or count < 0
  *   CD_ERROR_NOT_FINITE        a coordinate is NaN or infinite
  *   CD_ERROR_TOO_MANY_POINTS   count > CD2_MAX_POLYGON_VERTICES, or a hull with more vertices
- *   CD_ERROR_DEGENERATE        fewer than 3 distinct points, or all points collinear */
+ *   CD_ERROR_DEGENERATE        fewer than 3 distinct points, or all points collinear
+ *   CD_ERROR_OUT_OF_RANGE      a coordinate beyond +-CD2_POLYGON_MAX_COORDINATE */
 CD_API cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out);
+
+/* Largest |coordinate| cd2MakePolygon accepts: the documented range of the library (docs/API.md,
+ * "Semantics"), 1e9 in float and 1e30 in double. Beyond it the hull's round-off (64 epsilons of
+ * the coordinates) can drop an input point by more than the weld tolerance (a point 1.3e5 outside
+ * a polygon built from points up to 7e9 in float). */
+#if CD_DOUBLE
+#define CD2_POLYGON_MAX_COORDINATE CD_R(1e30)
+#else
+#define CD2_POLYGON_MAX_COORDINATE CD_R(1e9)
+#endif
 
 /* Weld and collinearity tolerance of cd2MakePolygon at ordinary coordinates: half a linear slop. */
 #define CD2_POLYGON_WELD_TOLERANCE (CD_R(0.5) * CD_LINEAR_SLOP)

@@ -18,9 +18,12 @@
  * by more than 1e-4 of twice the smaller shape's size; a face is kept unless an edge pair separates
  * by more than 1e-4 of the two shapes' summed size (at most 16 times the smaller's). Both sizes are
  * at least the round-off of the coordinates (src/query/manifold3.c: FACE_BIAS, EDGE_BIAS,
- * FaceTieSize, EdgeTieSize). The points' separations are then shifted (each point kept on A's
- * side) so that the smallest equals the exact SAT/EPA depth. For separated pairs the smallest
- * separation is the distance (cd3Distance).
+ * FaceTieSize, EdgeTieSize). The separations are the depths along the reported normal: B moved by
+ * minus the smallest separation along the normal just touches A (within round-off), so a solver
+ * pushing along the normal by the depth resolves the overlap exactly. When the bias took a normal
+ * other than the axis of least overlap, that depth exceeds the exact SAT/EPA depth by at most the
+ * bias (2e-4 of the size); otherwise the smallest separation is the exact depth. For separated
+ * pairs the smallest separation is the distance (cd3Distance).
  *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the

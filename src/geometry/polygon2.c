@@ -98,6 +98,10 @@ cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out)
 	{
 		return CD_ERROR_DEGENERATE;
 	}
+	if (maxAbs > CD2_POLYGON_MAX_COORDINATE)
+	{
+		return CD_ERROR_OUT_OF_RANGE;
+	}
 	double tolerance = (double)cd2GetPolygonWeldTolerance(maxAbs);
 
 	/* Weld: keep the first of every group of points closer than the tolerance. */

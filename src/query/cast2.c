@@ -11,6 +11,7 @@
 #define CAST_SWEEP cd2Sweep
 #define CAST_TRANSFORM cd2Transform
 #define CAST_OUTPUT cd2CastOutput
+#define CAST_MAX_AXES (2 + 2 * CD2_MAX_POLYGON_VERTICES)
 #define CAST_CORE cd2Core
 #define CAST_SIMPLEX cd2GjkSimplex
 
@@ -213,6 +214,44 @@ cd2Transform cd2GetSweepTransform(const cd2Sweep* sweep, cdReal t)
 {
 	SweepMotion m = MakeMotion(sweep);
 	return MotionTransform(&m, t);
+}
+
+/* The normals of the core's edges as axes from A towards B: a polygon's outward normals
+ * (counter-clockwise: right of each edge) for A, inward for B (sign -1); both normals of a
+ * capsule's or segment's line. */
+static int AppendEdgeAxes(const cd2Core* core, cdReal sign, cd2Vec* axes, int count)
+{
+	int edges = core->count == 2 ? 1 : (core->count > 2 ? core->count : 0);
+	for (int i = 0; i < edges && count + 2 <= CAST_MAX_AXES; ++i)
+	{
+		cd2Vec edge = cd2Sub(core->points[(i + 1) % core->count], core->points[i]);
+		cdReal length = cd2Length(edge);
+		if (length > CD_R(0.0))
+		{
+			cd2Vec normal = cd2Scale(sign / length, cd2RightPerp(edge));
+			axes[count++] = normal;
+			if (core->count == 2)
+			{
+				axes[count++] = cd2Neg(normal);
+			}
+		}
+	}
+	return count;
+}
+
+/* The edge normals of both cores, the candidate contact normals of cast.inc. */
+static int ContactAxes(const cd2Shape* a, const cd2Shape* b, cd2Vec* axes, int count)
+{
+	cd2Core coreA, coreB;
+	if (cd2MakeCore(a, &coreA))
+	{
+		count = AppendEdgeAxes(&coreA, CD_R(1.0), axes, count);
+	}
+	if (cd2MakeCore(b, &coreB))
+	{
+		count = AppendEdgeAxes(&coreB, CD_R(-1.0), axes, count);
+	}
+	return count;
 }
 
 #include "cast.inc"

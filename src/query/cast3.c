@@ -1,6 +1,7 @@
 /* 3D shape cast and time of impact: the shape moves of cast.inc. */
 #include "collide/cast.h"
 
+#include "sat3.h"
 #include "support3.h"
 
 #include <string.h>
@@ -11,6 +12,7 @@
 #define CAST_SWEEP cd3Sweep
 #define CAST_TRANSFORM cd3Transform
 #define CAST_OUTPUT cd3CastOutput
+#define CAST_MAX_AXES 8
 #define CAST_CORE cd3Core
 #define CAST_SIMPLEX cd3GjkSimplex
 
@@ -280,6 +282,136 @@ cd3Transform cd3GetSweepTransform(const cd3Sweep* sweep, cdReal t)
 {
 	SweepMotion m = MakeMotion(sweep);
 	return MotionTransform(&m, t);
+}
+
+/* The shape as a polytope (boxes, AABBs, hulls, triangles). */
+static bool MakePolytope(const cd3Shape* s, cd3Polytope* p)
+{
+	switch (s->type)
+	{
+		case CD3_SHAPE_BOX:
+			cd3InitBoxPolytope(p, s->box);
+			return true;
+		case CD3_SHAPE_AABB:
+		{
+			cd3Box box = {cd3AabbCenter(s->aabb), cd3AabbHalfExtents(s->aabb), CD3_QUAT_IDENTITY};
+			cd3InitBoxPolytope(p, box);
+			return true;
+		}
+		case CD3_SHAPE_HULL:
+			cd3InitHullPolytope(p, s->hull);
+			return true;
+		case CD3_SHAPE_TRIANGLE:
+			cd3InitTrianglePolytope(p, s->triangle);
+			return true;
+		default:
+			return false;
+	}
+}
+
+/* The shape as a segment core (spheres: a point). */
+static bool CoreSegment(const cd3Shape* s, cd3Vec* p1, cd3Vec* p2)
+{
+	switch (s->type)
+	{
+		case CD3_SHAPE_SPHERE:
+			*p1 = *p2 = s->sphere.center;
+			return true;
+		case CD3_SHAPE_CAPSULE:
+			*p1 = s->capsule.p1;
+			*p2 = s->capsule.p2;
+			return true;
+		case CD3_SHAPE_SEGMENT:
+			*p1 = s->segment.p1;
+			*p2 = s->segment.p2;
+			return true;
+		default:
+			return false;
+	}
+}
+
+static int AppendAxis(cd3Vec* axes, int count, cd3Vec axis)
+{
+	cdReal length = cd3Length(axis);
+	if (length > CD_R(0.0) && count < CAST_MAX_AXES)
+	{
+		axes[count++] = cd3Scale(CD_R(1.0) / length, axis);
+	}
+	return count;
+}
+
+/* The separating axis test's best axes of the features (see cast.inc): the best face of each
+ * polytope and the best edge pair, the best face or edge cross of a polytope against a segment
+ * core, the cross product of two segment cores. */
+static int ContactAxes(const cd3Shape* a, const cd3Shape* b, cd3Vec* axes, int count)
+{
+	cd3Polytope pa, pb;
+	bool polytopeA = MakePolytope(a, &pa), polytopeB = MakePolytope(b, &pb);
+	cd3Vec a1, a2, b1, b2;
+	if (polytopeA && polytopeB)
+	{
+		cd3SatResult sat;
+		bool boxes = (a->type == CD3_SHAPE_BOX || a->type == CD3_SHAPE_AABB) &&
+					 (b->type == CD3_SHAPE_BOX || b->type == CD3_SHAPE_AABB);
+		if (boxes)
+		{
+			/* The fifteen axes in closed form (face indices those of the box polytopes). */
+			cd3Mat33 rotation;
+			cd3Vec translation;
+			cd3Box boxA = {pa.transform.p, pa.vertexStorage[7], pa.transform.q};
+			cd3Box boxB = {pb.transform.p, pb.vertexStorage[7], pb.transform.q};
+			sat = cd3SatBoxes(boxA, boxB, &rotation, &translation);
+		}
+		else
+		{
+			sat = cd3SatPolytopes(&pa, &pb);
+		}
+		if (sat.faceA >= 0)
+		{
+			count = AppendAxis(axes, count, cd3RotateVector(pa.transform.q, pa.planes[sat.faceA].normal));
+		}
+		if (sat.faceB >= 0)
+		{
+			count = AppendAxis(axes, count, cd3Neg(cd3RotateVector(pb.transform.q, pb.planes[sat.faceB].normal)));
+		}
+		if (sat.edgeA >= 0)
+		{
+			count = AppendAxis(axes, count, sat.edgeNormal);
+		}
+	}
+	else if (polytopeB && CoreSegment(a, &a1, &a2))
+	{
+		cd3SatResult sat;
+		cd3SatFeature feature = cd3SatSegmentPolytope(a1, a2, &pb, &sat);
+		if (feature == CD3_SAT_EDGES && sat.edgeB >= 0)
+		{
+			count = AppendAxis(axes, count, sat.edgeNormal);
+		}
+		if (sat.faceB >= 0)
+		{
+			count = AppendAxis(axes, count, cd3Neg(cd3RotateVector(pb.transform.q, pb.planes[sat.faceB].normal)));
+		}
+	}
+	else if (polytopeA && CoreSegment(b, &b1, &b2))
+	{
+		cd3SatResult sat;
+		cd3SatFeature feature = cd3SatSegmentPolytope(b1, b2, &pa, &sat);
+		if (feature == CD3_SAT_EDGES && sat.edgeB >= 0)
+		{
+			count = AppendAxis(axes, count, cd3Neg(sat.edgeNormal));
+		}
+		if (sat.faceB >= 0)
+		{
+			count = AppendAxis(axes, count, cd3RotateVector(pa.transform.q, pa.planes[sat.faceB].normal));
+		}
+	}
+	else if (CoreSegment(a, &a1, &a2) && CoreSegment(b, &b1, &b2))
+	{
+		cd3Vec cross = cd3Cross(cd3Sub(a2, a1), cd3Sub(b2, b1));
+		count = AppendAxis(axes, count, cross);
+		count = AppendAxis(axes, count, cd3Neg(cross));
+	}
+	return count;
 }
 
 #include "cast.inc"

@@ -187,7 +187,13 @@ static bool DoSimplex(Vertex* s, int* count, cd3Vec* d)
 
 /* ---- EPA ------------------------------------------------------------------------------------- */
 
-static bool MakeFace(const Vertex* v, int i, int j, int k, Face* f)
+/* A face of the expanding polytope, its normal pointing away from `inside`, a point strictly
+ * inside the polytope (the first tetrahedron's centroid: the polytope only grows). Orienting by
+ * the origin instead failed when the origin lies on a face (two hulls whose first GJK segment
+ * passed exactly through it, 2e-4 across in float): a face at distance 0 kept an inward normal
+ * and EPA cycled to its cap. The distance of the origin may then be 0 or, for a blown-up
+ * simplex whose origin lies outside, negative. */
+static bool MakeFace(const Vertex* v, int i, int j, int k, cd3Vec inside, Face* f)
 {
 	cd3Vec n = cd3Cross(cd3Sub(v[j].w, v[i].w), cd3Sub(v[k].w, v[i].w));
 	cdReal length = cd3Length(n);
@@ -196,18 +202,16 @@ static bool MakeFace(const Vertex* v, int i, int j, int k, Face* f)
 		return false;
 	}
 	n = cd3Scale(CD_R(1.0) / length, n);
-	cdReal distance = cd3Dot(n, v[i].w);
 	f->v[0] = i;
 	f->v[1] = j;
 	f->v[2] = k;
-	if (distance < CD_R(0.0))
+	if (cd3Dot(n, cd3Sub(v[i].w, inside)) < CD_R(0.0))
 	{
-		/* The origin is inside, so every face of the hull faces away from it: flip. */
 		f->v[1] = k;
 		f->v[2] = j;
 		n = cd3Neg(n);
-		distance = -distance;
 	}
+	cdReal distance = cd3Dot(n, v[i].w);
 	f->normal = n;
 	f->distance = distance;
 	return true;
@@ -326,9 +330,10 @@ static cd3Penetration Run(const Context* c)
 	Face faces[MAX_FACES];
 	int faceCount = 0;
 	static const int tetra[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+	cd3Vec inside = cd3Scale(CD_R(0.25), cd3Add(cd3Add(vertices[0].w, vertices[1].w), cd3Add(vertices[2].w, vertices[3].w)));
 	for (int i = 0; i < 4; ++i)
 	{
-		if (MakeFace(vertices, tetra[i][0], tetra[i][1], tetra[i][2], &faces[faceCount]))
+		if (MakeFace(vertices, tetra[i][0], tetra[i][1], tetra[i][2], inside, &faces[faceCount]))
 		{
 			++faceCount;
 		}
@@ -415,7 +420,7 @@ static cd3Penetration Run(const Context* c)
 		vertices[index] = w;
 		for (int h = 0; h < horizonCount && faceCount < MAX_FACES; ++h)
 		{
-			if (MakeFace(vertices, horizon[h][0], horizon[h][1], index, &faces[faceCount]))
+			if (MakeFace(vertices, horizon[h][0], horizon[h][1], index, inside, &faces[faceCount]))
 			{
 				++faceCount;
 			}

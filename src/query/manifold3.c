@@ -121,11 +121,16 @@ static bool InsideShape(const cd3Shape* s, cd3Vec p, cdReal tolerance)
 }
 
 /* The reference feature is chosen with a bias for stability from frame to frame (FACE_BIAS,
- * EDGE_BIAS), so a face contact can be deeper along its normal than the exact depth by up to the
- * bias; and clipping can lose the deepest vertex at a tie of incident faces. The smallest
- * separation is made the exact signed separation the separating axis test (or EPA) proves (`exact`,
- * within `limit` of the manifold's; a larger mismatch is a different contact and is left alone).
- * Returns the mismatch exact - deepest (zero: nothing to do). */
+ * EDGE_BIAS), so a face contact can be deeper along its normal than the exact (smallest) depth by
+ * up to the bias; and clipping can lose the deepest vertex at a tie of incident faces. A mismatch
+ * between the smallest separation and the exact signed separation the separating axis test (or
+ * EPA) proves (`exact`, within `limit` of the manifold's; a larger mismatch is a different contact
+ * and is left alone) is removed only within round-off of the coordinates. Beyond it the points
+ * keep their separations along the reported normal: that is the depth B must move along that
+ * normal to stop overlapping (lifting the deepest point to the smallest depth, as this code once
+ * did, left a pair moved by the reported depth along the biased normal still overlapping by up to
+ * the bias, 3e-4 for unit shapes, and the solver under-resolved it). Returns the mismatch
+ * exact - deepest (zero: nothing to do). */
 static cdReal DepthMismatch(const cd3Manifold* m, cdReal exact, cdReal limit)
 {
 	if (m->pointCount == 0)
@@ -164,69 +169,14 @@ static bool DepthWithinRoundOff(const cd3Manifold* m, cdReal delta, cdReal size)
 	return cdAbs(delta) <= bound + ROUND_OFF_TOLERANCE * cdMax(abs.x, cdMax(abs.y, abs.z));
 }
 
-/* MatchDepth's work for a mismatch delta (from DepthMismatch, nonzero) beyond round-off.
- * - Too deep (delta > 0, the biased normal): each point deeper than the exact depth is lifted to
- *   it, the others are left as they are. Lifting moves one side of the point along the normal,
- *   into its shape: B's side when it stays in B, else A's when it stays in A (checked: at an edge
- *   of the incident face, or on a needle, moving inward along the normal can leave the shape; and a
- *   triangle has no inside). A point that neither side allows stays deeper than the exact depth,
- *   but on both surfaces. Shifting every point instead moved the shallow ones' sides off the
- *   surfaces or beyond the speculative distance (double-build fuzz findings: 4.7e-4 off a triangle
- *   at size 12.5; 8.6e-4 off a hull at size 25 when moved off an edge).
- * - Too shallow (the deepest vertex clipped away): left as it is. Deepening a point moves one of
- *   its sides out of its shape by the difference (two plates 8.4e21 across, crossing, in double:
- *   the box path clipped one's face against the other's sliver face, and the shift put B's side
- *   1.46e17 out of B); the points stay on both surfaces, the smallest separation shallower than
- *   the exact depth. No test pair comes here (the incident face is chosen around the deepest
- *   vertex). */
-static void LiftDepth(cd3Manifold* m, cdReal exact, cdReal delta, const cd3Shape* a, const cd3Shape* b,
-					  cdReal size)
-{
-	if (delta < CD_R(0.0))
-	{
-		return;
-	}
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		cd3ManifoldPoint* p = &m->points[i];
-		cdReal lift = exact - p->separation;
-		if (!(lift > CD_R(0.0)))
-		{
-			continue;
-		}
-		cd3Vec onA = cd3MulSub(p->point, CD_R(0.5) * p->separation, m->normal);
-		cd3Vec onB = cd3MulAdd(p->point, CD_R(0.5) * p->separation, m->normal);
-		cd3Vec abs = cd3Abs(p->point);
-		cdReal tolerance = ROUND_OFF_TOLERANCE * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
-		cd3Vec movedB = cd3MulAdd(onB, lift, m->normal);
-		cd3Vec movedA = cd3MulSub(onA, lift, m->normal);
-		if (InsideShape(b, movedB, tolerance))
-		{
-			p->point = cd3Lerp(onA, movedB, CD_R(0.5));
-		}
-		else if (InsideShape(a, movedA, tolerance))
-		{
-			p->point = cd3Lerp(movedA, onB, CD_R(0.5));
-		}
-		else
-		{
-			continue;
-		}
-		p->separation = exact;
-	}
-}
-
 /* MatchDepth for a nonzero mismatch delta: out of line (rare beyond round-off). */
-MANIFOLD_NOINLINE static void MatchDepthBy(cd3Manifold* m, cdReal exact, cdReal delta, const cd3Polytope* a,
+MANIFOLD_NOINLINE static void MatchDepthBy(cd3Manifold* m, cdReal delta, const cd3Polytope* a,
 										   const cd3Polytope* b)
 {
-	cdReal size = a->size + b->size;
-	if (DepthWithinRoundOff(m, delta, size))
+	if (DepthWithinRoundOff(m, delta, a->size + b->size))
 	{
 		ShiftDepth(m, delta);
-		return;
 	}
-	LiftDepth(m, exact, delta, &a->shape, &b->shape, size);
 }
 
 static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit, const cd3Polytope* a, const cd3Polytope* b)
@@ -234,7 +184,7 @@ static void MatchDepth(cd3Manifold* m, cdReal exact, cdReal limit, const cd3Poly
 	cdReal delta = DepthMismatch(m, exact, limit);
 	if (delta != CD_R(0.0))
 	{
-		MatchDepthBy(m, exact, delta, a, b);
+		MatchDepthBy(m, delta, a, b);
 	}
 }
 
@@ -271,10 +221,7 @@ MANIFOLD_NOINLINE static bool MatchBoxDepth(cd3Manifold* m, cdReal exact, const 
 	if (DepthWithinRoundOff(m, delta, size))
 	{
 		ShiftDepth(m, delta);
-		return true;
 	}
-	cd3Shape sa = cd3MakeBoxShape(*a), sb = cd3MakeBoxShape(*b);
-	LiftDepth(m, exact, delta, &sa, &sb, size);
 	return true;
 }
 
@@ -1045,6 +992,34 @@ static bool PointsOnShapes(const cd3Manifold* m, const cd3Polytope* a, const cd3
 	return true;
 }
 
+/* Drops the points whose sides are not on their shapes within round-off. Only for polytopes of
+ * very different sizes (the caller's test, off the hot path): clipping a face 4.3e8 long against a
+ * sliver face (float) lerps along the long edges with an error of their length times epsilon, and
+ * kept a point 3.7e7 beyond a hull that reaches 1.65e6. */
+static void DropPointsOffShapes(cd3Manifold* m, const cd3Polytope* a, const cd3Polytope* b)
+{
+	int kept = 0;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		/* By the distance to each shape: a point beyond a needle's tip lies within the planes'
+		 * round-off of its long faces, extended, though far from it. */
+		const cd3ManifoldPoint* p = &m->points[i];
+		cdReal tolerance = CD_R(4.0) * RoundOff(p->point, a->size + b->size);
+		cd3Vec onA = cd3MulSub(p->point, CD_R(0.5) * p->separation, m->normal);
+		cd3Vec onB = cd3MulAdd(p->point, CD_R(0.5) * p->separation, m->normal);
+		if (cd3VecDistance(cd3ClosestPointOnShape(&a->shape, onA), onA) <= tolerance &&
+			cd3VecDistance(cd3ClosestPointOnShape(&b->shape, onB), onB) <= tolerance)
+		{
+			m->points[kept++] = m->points[i];
+		}
+	}
+	m->pointCount = kept;
+	if (kept == 0)
+	{
+		m->normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	}
+}
+
 /* The world normal (from A to B) of the SAT's axis of largest separation. */
 static cd3Vec SatNormal(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat)
 {
@@ -1115,6 +1090,10 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	if (separation <= CD_R(0.0))
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+		{
+			DropPointsOffShapes(&m, a, b);
+		}
 		cdReal limit = (FACE_BIAS + EDGE_BIAS) * (a->size + b->size);
 		/* A contact whose points all lie farther apart than the SAT's separation allows missed the
 		 * overlap: a triangle 1e9 long and 1e-4 across clipped, in float, against a box's face
@@ -1136,7 +1115,11 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 				return WitnessContact(a, b, &sat, cp);
 			}
 			m = SatContact(a, b, &sat, speculativeDistance, false);
-			if (!PointsOnShapes(&m, a, b))
+			if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+			{
+				DropPointsOffShapes(&m, a, b);
+			}
+			if (m.pointCount == 0 || !PointsOnShapes(&m, a, b))
 			{
 				return WitnessContact(a, b, &sat, cp);
 			}
@@ -1170,9 +1153,18 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	if (cp.distance <= separation + tolerance)
 	{
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+		{
+			/* A face 4.3e8 long clipped against a needle's face 1.6e6 long (float) kept points
+			 * off the shapes, one of them deeper than the separating axis allows. */
+			DropPointsOffShapes(&m, a, b);
+		}
 		cdReal smallest = ManifoldMinSeparation(&m);
+		/* Never farther apart than the distance beyond round-off: B moved by the smallest
+		 * separation along the normal must not overlap A (a hull(8)-box pair apart by 0.062725
+		 * reported 0.063158 on a face whose deepest vertex the clipping had lost). */
 		if (m.pointCount > 0 && cdAbs(smallest - cp.distance) <= tolerance &&
-			(!touching || smallest <= cp.distance + RoundOff(cp.pointA, a->size + b->size)))
+			smallest <= cp.distance + RoundOff(cp.pointA, a->size + b->size))
 		{
 			if (m.pointCount == 1 && (m.points[0].id & CD3_FEATURE_EDGES) != 0u && cp.distance > tolerance)
 			{
@@ -1456,7 +1448,7 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 	{
 		return m;
 	}
-	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, REALIZED_TOLERANCE * size, cp.pointA,
+	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, RoundOff(p1, size), cp.pointA,
 					&m);
 	if (edges && m.pointCount > 0 && !CorePointOnPolytope(&m, b, size))
 	{

@@ -338,6 +338,18 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 			cdReal separation = cd3Dot(axis, cd3Sub(qb0, e->origin));
 			if (separation > r->edgeSeparation)
 			{
+				/* The separation along the axis from the projections, whatever supports it: the
+				 * edges' own difference is the separation only when the Gauss-map test is right,
+				 * and round-off of a needle's face normals can pass a pair whose edges do not
+				 * support the axis (a box against a hull with a vertex at -1e9 in float: +4.8e8
+				 * for shapes that overlap). Only for a new best, so rarely. */
+				cdReal loA, hiA, loB, hiB;
+				Project(a, CD3_TRANSFORM_IDENTITY, axis, &loA, &hiA);
+				Project(b, relB, axis, &loB, &hiB);
+				separation = cdMin(separation, loB - hiA);
+			}
+			if (separation > r->edgeSeparation)
+			{
 				r->edgeSeparation = separation;
 				r->edgeA = e->index;
 				r->edgeB = j;

@@ -196,15 +196,70 @@ bool jsonLocate(const char* text, size_t length, const JsonPathStep* path, int d
 
 int jsonLineOfOffset(const char* text, size_t length, size_t offset)
 {
+	/* LF, CRLF and a lone CR (old Mac files) each end a line. */
 	int line = 1;
 	for (size_t i = 0; i < offset && i < length; ++i)
 	{
-		if (text[i] == '\n')
+		if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= length || text[i + 1] != '\n')))
 		{
 			++line;
 		}
 	}
 	return line;
+}
+
+/* Whether c can precede the start of a JSON value. */
+static bool valueBoundary(char c)
+{
+	return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ',' || c == ':' || c == '[';
+}
+
+bool jsonCheckLexical(const char* text, size_t length, size_t* offset, const char** reason)
+{
+	bool inString = false;
+	for (size_t i = 0; i < length; ++i)
+	{
+		char c = text[i];
+		if (inString)
+		{
+			if (c == '\\' && i + 1 < length)
+			{
+				if (text[i + 1] == 'u' && i + 5 < length && strncmp(text + i + 2, "0000", 4) == 0)
+				{
+					*offset = i;
+					*reason = "\\u0000 in a string (a NUL character would silently cut the string)";
+					return false;
+				}
+				++i; /* the escaped character */
+			}
+			else if (c == '"')
+			{
+				inString = false;
+			}
+			continue;
+		}
+		if (c == '"')
+		{
+			inString = true;
+			continue;
+		}
+		bool start = (c == '-' || (c >= '0' && c <= '9')) && (i == 0 || valueBoundary(text[i - 1]));
+		if (start)
+		{
+			size_t j = c == '-' ? i + 1 : i;
+			if (j + 1 < length && text[j] == '0' && text[j + 1] >= '0' && text[j + 1] <= '9')
+			{
+				*offset = i;
+				*reason = "invalid JSON number: leading zeros";
+				return false;
+			}
+			while (i + 1 < length && strchr("0123456789+-.eE", text[i + 1]) != NULL && text[i + 1] != 0)
+			{
+				++i;
+			}
+		}
+	}
+	return true;
 }
 
 int jsonMaxDepth(const char* text, size_t length, int limit, size_t* firstTooDeep)

@@ -21,6 +21,11 @@ bool jsonLocate(const char* text, size_t length, const JsonPathStep* path, int d
 /* 1-based line number of the byte at offset (lines end with '\n'). */
 int jsonLineOfOffset(const char* text, size_t length, size_t offset);
 
+/* What cJSON accepts but JSON (RFC 8259) or the tool does not: a number with leading zeros
+ * ("0001") and the escape \u0000 in a string (cJSON ends the C string there, so "circle\u0000zz"
+ * would read as "circle"). false with the offset and the reason of the first one. */
+bool jsonCheckLexical(const char* text, size_t length, size_t* offset, const char** reason);
+
 /* The deepest nesting of arrays and objects outside strings, and the offset of the first bracket
  * that goes deeper than `limit` (when the depth exceeds it). */
 int jsonMaxDepth(const char* text, size_t length, int limit, size_t* firstTooDeep);

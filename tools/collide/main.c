@@ -67,6 +67,23 @@ static int runQuery(const char* path, const char* svgPath)
 		}
 		return TOOL_EXIT_ERROR;
 	}
+	if (svgPath == NULL)
+	{
+		/* The report alone: streamed, each pair printed as soon as it is computed. */
+		int status = toolStreamReport(stdout, &document, toolStderrIsTerminal()) ? 0 : TOOL_EXIT_ERROR;
+		if (status != 0)
+		{
+			fprintf(stderr, "collide: out of memory\n");
+		}
+		toolFreeDocument(&document);
+		if (fflush(stdout) != 0 && status == 0)
+		{
+			fprintf(stderr, "collide: cannot write the report: %s\n", strerror(errno));
+			status = TOOL_EXIT_ERROR;
+		}
+		return status;
+	}
+	/* With the picture, which draws every pair's answer: all results kept. */
 	ToolSceneResult* results = calloc((size_t)document.sceneCount, sizeof(ToolSceneResult));
 	bool ok = results != NULL;
 	for (int s = 0; ok && s < document.sceneCount; ++s)

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static void store2(double out[3], cd2Vec v)
 {
@@ -108,6 +109,21 @@ static void queryPair3(const ToolShape* a, const ToolShape* b, ToolPairResult* p
 	pair->distance = distanceBetween(pair->pointA, pair->pointB);
 }
 
+void toolQueryPair(const ToolScene* scene, int i, int j, ToolPairResult* pair)
+{
+	memset(pair, 0, sizeof *pair);
+	pair->a = i;
+	pair->b = j;
+	if (scene->dimension == 2)
+	{
+		queryPair2(&scene->shapes[i], &scene->shapes[j], pair);
+	}
+	else
+	{
+		queryPair3(&scene->shapes[i], &scene->shapes[j], pair);
+	}
+}
+
 bool toolQueryScene(const ToolScene* scene, ToolSceneResult* result)
 {
 	result->scene = scene;
@@ -130,16 +146,7 @@ bool toolQueryScene(const ToolScene* scene, ToolSceneResult* result)
 		for (int j = i + 1; j < n; ++j)
 		{
 			ToolPairResult* pair = &result->pairs[result->pairCount++];
-			pair->a = i;
-			pair->b = j;
-			if (scene->dimension == 2)
-			{
-				queryPair2(&scene->shapes[i], &scene->shapes[j], pair);
-			}
-			else
-			{
-				queryPair3(&scene->shapes[i], &scene->shapes[j], pair);
-			}
+			toolQueryPair(scene, i, j, pair);
 			result->overlapCount += pair->overlap ? 1 : 0;
 		}
 	}

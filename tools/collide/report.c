@@ -3,7 +3,12 @@
 #include "scene.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
+
+#if !defined(_WIN32)
+#include <unistd.h>
+#endif
 
 const char* toolFormatNumber(double value, char* buffer, size_t size)
 {
@@ -277,4 +282,134 @@ void toolPrintReport(FILE* out, const ToolSceneResult* results, int sceneCount)
 				results[s].pairCount == 1 ? "" : "s", results[s].overlapCount);
 	}
 	printContacts(out, results, sceneCount);
+}
+
+/* The widest text toolFormatNumber prints: "-999999.9999" (fixed point below 1e6), the exponent
+ * form "-1.234e+30" being shorter. */
+#define NUMBER_WIDTH 12
+
+/* Pairs between two progress lines. */
+#define PROGRESS_STEP 65536
+
+bool toolStreamReport(FILE* out, const ToolDocument* document, bool progress)
+{
+	Row header = {{"scene", "A", "B", "overlap", "distance", "closest point on A", "closest point on B"}};
+	int widths[COLUMN_COUNT];
+	for (int c = 0; c < COLUMN_COUNT; ++c)
+	{
+		widths[c] = displayWidth(header.cells[c]);
+	}
+	/* Every width known before the first pair: the names', and the widest numbers and points. */
+	int dimension = 2;
+	for (int s = 0; s < document->sceneCount; ++s)
+	{
+		const ToolScene* scene = &document->scenes[s];
+		int width = displayWidth(scene->name);
+		widths[COLUMN_SCENE] = width > widths[COLUMN_SCENE] ? width : widths[COLUMN_SCENE];
+		dimension = scene->dimension > dimension ? scene->dimension : dimension;
+		for (int i = 0; i < scene->shapeCount; ++i)
+		{
+			width = displayWidth(scene->shapes[i].name);
+			widths[COLUMN_A] = width > widths[COLUMN_A] ? width : widths[COLUMN_A];
+			widths[COLUMN_B] = width > widths[COLUMN_B] ? width : widths[COLUMN_B];
+		}
+	}
+	widths[COLUMN_DISTANCE] = NUMBER_WIDTH > widths[COLUMN_DISTANCE] ? NUMBER_WIDTH : widths[COLUMN_DISTANCE];
+	int pointWidth = 2 + dimension * NUMBER_WIDTH + 2 * (dimension - 1); /* "(x, y, z)" */
+	for (int c = COLUMN_POINT_A; c <= COLUMN_POINT_B; ++c)
+	{
+		widths[c] = pointWidth > widths[c] ? pointWidth : widths[c];
+	}
+	printRow(out, &header, widths);
+	Row rule;
+	for (int c = 0; c < COLUMN_COUNT; ++c)
+	{
+		int width = widths[c] < (int)sizeof rule.cells[c] - 1 ? widths[c] : (int)sizeof rule.cells[c] - 1;
+		memset(rule.cells[c], '-', (size_t)width);
+		rule.cells[c][width] = 0;
+	}
+	printRow(out, &rule, widths);
+
+	/* Per scene: the counts of the summary, and the 2D contacts kept for their table. */
+	ToolSceneResult* kept = calloc((size_t)(document->sceneCount > 0 ? document->sceneCount : 1), sizeof *kept);
+	if (kept == NULL)
+	{
+		return false;
+	}
+	bool ok = true;
+	int capacity = 0;
+	for (int s = 0; ok && s < document->sceneCount; ++s)
+	{
+		const ToolScene* scene = &document->scenes[s];
+		ToolSceneResult* result = &kept[s];
+		result->scene = scene;
+		capacity = 0;
+		long long total = (long long)scene->shapeCount * (scene->shapeCount - 1) / 2, done = 0;
+		bool showProgress = progress && total >= PROGRESS_STEP;
+		for (int i = 0; ok && i < scene->shapeCount; ++i)
+		{
+			for (int j = i + 1; ok && j < scene->shapeCount; ++j)
+			{
+				ToolPairResult pair;
+				toolQueryPair(scene, i, j, &pair);
+				result->overlapCount += pair.overlap ? 1 : 0;
+				Row row;
+				fillRow(result, &pair, &row);
+				printRow(out, &row, widths);
+				if (pair.hasContact)
+				{
+					if (result->pairCount == capacity)
+					{
+						int grown = capacity ? 2 * capacity : 64;
+						ToolPairResult* bigger = realloc(result->pairs, (size_t)grown * sizeof *bigger);
+						if (bigger == NULL)
+						{
+							ok = false;
+							break;
+						}
+						result->pairs = bigger;
+						capacity = grown;
+					}
+					result->pairs[result->pairCount++] = pair;
+				}
+				if (showProgress && ++done % PROGRESS_STEP == 0)
+				{
+					fflush(out);
+					fprintf(stderr, "\r%s: %lld of %lld pairs", scene->name, done, total);
+				}
+			}
+		}
+		if (showProgress)
+		{
+			fprintf(stderr, "\r%*s\r", (int)strlen(scene->name) + 48, "");
+		}
+	}
+	if (ok)
+	{
+		fputc('\n', out);
+		for (int s = 0; s < document->sceneCount; ++s)
+		{
+			const ToolScene* scene = &document->scenes[s];
+			int pairs = scene->shapeCount * (scene->shapeCount - 1) / 2;
+			fprintf(out, "%s (%dD): %d shape%s, %d pair%s, %d overlapping\n", scene->name, scene->dimension,
+					scene->shapeCount, scene->shapeCount == 1 ? "" : "s", pairs, pairs == 1 ? "" : "s",
+					kept[s].overlapCount);
+		}
+		printContacts(out, kept, document->sceneCount);
+	}
+	for (int s = 0; s < document->sceneCount; ++s)
+	{
+		free(kept[s].pairs);
+	}
+	free(kept);
+	return ok;
+}
+
+bool toolStderrIsTerminal(void)
+{
+#if defined(_WIN32)
+	return false;
+#else
+	return isatty(STDERR_FILENO) != 0;
+#endif
 }

@@ -101,8 +101,20 @@ typedef struct ToolSceneResult
 bool toolQueryScene(const ToolScene* scene, ToolSceneResult* result);
 void toolFreeSceneResult(ToolSceneResult* result);
 
+/* One pair (shapes i < j of the scene). */
+void toolQueryPair(const ToolScene* scene, int i, int j, ToolPairResult* pair);
+
 /* The table of every pair and one summary line per scene. */
 void toolPrintReport(FILE* out, const ToolSceneResult* results, int sceneCount);
+
+/* The same report, streamed: each pair is computed and printed at once (the columns take the
+ * widths of the longest names and of the widest numbers the format can print, so no pass over
+ * the results is needed), keeping only the 2D contacts for their table at the end. With
+ * `progress`, a line on stderr counts the pairs of each large scene. false when out of memory. */
+bool toolStreamReport(FILE* out, const ToolDocument* document, bool progress);
+
+/* Whether stderr is a terminal (progress lines go there only then). */
+bool toolStderrIsTerminal(void);
 
 /* Writes the picture; false (with errno set by stdio) when the file cannot be written. */
 bool toolWriteSvg(const char* path, const ToolSceneResult* results, int sceneCount);

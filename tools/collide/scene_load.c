@@ -244,7 +244,17 @@ static bool checkNumber(Loader* loader, const char* key, const char* what, doubl
 	}
 	if (fabs(value) > TOOL_MAX_MAGNITUDE)
 	{
-		return failAt(loader, key, "%s = %g is outside the supported range [-%g, %g]", what, value,
+		/* The value with every digit it needs (%g rounded 1000000001 to the limit 1e+09). */
+		char digits[40];
+		for (int precision = 6; precision <= 17; ++precision)
+		{
+			snprintf(digits, sizeof digits, "%.*g", precision, value);
+			if (strtod(digits, NULL) == value)
+			{
+				break;
+			}
+		}
+		return failAt(loader, key, "%s = %s is outside the supported range [-%g, %g]", what, digits,
 					  TOOL_MAX_MAGNITUDE, TOOL_MAX_MAGNITUDE);
 	}
 	return true;
@@ -1257,26 +1267,29 @@ static bool readFile(const char* path, char** text, size_t* length, ToolError* e
 	}
 	while (ok)
 	{
+		/* Room for one byte past the limit (to see it) and the NUL, never more. */
+		const size_t most = (size_t)TOOL_MAX_FILE_BYTES + 2;
 		if (used + 1 >= capacity)
 		{
-			if (capacity > TOOL_MAX_FILE_BYTES)
-			{
-				char reason[128];
-				snprintf(reason, sizeof reason, "file is larger than %u MiB", TOOL_MAX_FILE_BYTES >> 20);
-				ok = fail(error, 0, reason);
-				break;
-			}
-			char* bigger = realloc(buffer, capacity * 2);
+			size_t next = capacity * 2 < most ? capacity * 2 : most;
+			char* bigger = realloc(buffer, next);
 			if (bigger == NULL)
 			{
 				ok = fail(error, 0, "out of memory");
 				break;
 			}
 			buffer = bigger;
-			capacity *= 2;
+			capacity = next;
 		}
 		size_t got = fread(buffer + used, 1, capacity - 1 - used, file);
 		used += got;
+		if (used > TOOL_MAX_FILE_BYTES)
+		{
+			char reason[128];
+			snprintf(reason, sizeof reason, "file is larger than %u MiB", TOOL_MAX_FILE_BYTES >> 20);
+			ok = fail(error, 0, reason);
+			break;
+		}
 		if (got == 0)
 		{
 			if (ferror(file))
@@ -1387,6 +1400,12 @@ bool toolLoadDocument(const char* path, ToolDocument* document, ToolError* error
 		snprintf(reason, sizeof reason, "arrays and objects are nested deeper than %d levels",
 				 TOOL_MAX_NESTING);
 		ok = fail(error, jsonLineOfOffset(start, startLength, tooDeep), reason);
+	}
+	size_t lexicalOffset = 0;
+	const char* lexicalReason = NULL;
+	if (ok && !jsonCheckLexical(start, startLength, &lexicalOffset, &lexicalReason))
+	{
+		ok = fail(error, jsonLineOfOffset(start, startLength, lexicalOffset), lexicalReason);
 	}
 	cJSON* root = NULL;
 	if (ok)
