@@ -657,7 +657,8 @@ static bool oneWayPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Ma
 
 /* Ground from x = -5 to 30 and 34 to 90 (top y = 0), the pit between them bridged by a 5 m
  * kinematic platform swinging +-0.5 m; a one-way platform (x 20-26, top 2 m), a static ledge
- * (x 44-50, 3 m up); pick-ups at x = 5, 15, 25, 35, 45; a capsule character walking at 5 m/s
+ * (x 44-50, 3 m up); pick-ups at x = 5, 15, 25 (above the one-way platform), 35, 45; a capsule
+ * character walking at 5 m/s
  * that jumps once at x = 17.5 onto the one-way platform and stops at x = 70. */
 static void createSideScroller(World2Scene* scene)
 {
@@ -690,7 +691,9 @@ static void createSideScroller(World2Scene* scene)
 	cd2Circle pickup = {{0, 0}, CD_R(0.3)};
 	for (int i = 0; i < WORLD2_PICKUPS; ++i)
 	{
-		cd2BodyId body = addStatic(scene, vec(CD_R(5.0) + CD_R(10.0) * (cdReal)i, CD_R(1.0)));
+		/* The third is above the one-way platform, on the character's way across it. */
+		cdReal y = i == 2 ? CD_R(3.0) : CD_R(1.0);
+		cd2BodyId body = addStatic(scene, vec(CD_R(5.0) + CD_R(10.0) * (cdReal)i, y));
 		scene->pickups[i] = cd2CreateCircleShape(body, &sensor, &pickup);
 	}
 
@@ -754,10 +757,11 @@ static void countPickups(World2Scene* scene)
 }
 
 /* slingshot: a 0.3 m disc of density 5 shot at (30, 8) m/s from (0, 1) into two towers of pillars
- * and planks (x 20 and 24) and a rope bridge of 8 planks between two posts (x 30 to 34). */
+ * and planks (x 20 and 24) and a rope bridge of 8 planks between two posts (x 30 to 34), on a
+ * ground 410 m long (the light blocks fly far). */
 static void createSlingshot(World2Scene* scene)
 {
-	(void)addGroundBox(scene, CD_R(-10.0), CD_R(60.0), 0);
+	(void)addGroundBox(scene, CD_R(-10.0), CD_R(400.0), 0);
 	cd2BodyDef def = cd2DefaultBodyDef();
 	def.type = CD_DYNAMIC_BODY;
 	cd2ShapeDef shape = cd2DefaultShapeDef();
@@ -940,10 +944,6 @@ bool world2SceneSnapshot(const World2Scene* scene, World2Snapshot* out)
 			continue;
 		}
 		cd2BodyType type = cd2Body_GetType(id);
-		if (type == CD_STATIC_BODY)
-		{
-			continue;
-		}
 		cd2Vec p = cd2Body_GetPosition(id), v = cd2Body_GetLinearVelocity(id);
 		World2Body b;
 		b.key = (uint64_t)(uint32_t)id.index1 | ((uint64_t)id.generation << 32);
@@ -954,7 +954,7 @@ bool world2SceneSnapshot(const World2Scene* scene, World2Snapshot* out)
 		b.vy = (double)v.y;
 		b.w = (double)cd2Body_GetAngularVelocity(id);
 		b.mass = (double)cd2Body_GetMass(id);
-		b.type = type == CD_DYNAMIC_BODY ? WORLD2_DYNAMIC : WORLD2_KINEMATIC;
+		b.type = type == CD_DYNAMIC_BODY ? WORLD2_DYNAMIC : (type == CD_KINEMATIC_BODY ? WORLD2_KINEMATIC : WORLD2_STATIC);
 		if (!world2SnapshotAdd(out, &b))
 		{
 			return false;
@@ -1012,7 +1012,8 @@ static World2Quality slingshotQuality(const World2Scene* scene, const World2Snap
 	}
 	for (int j = 0; j < end->count; ++j)
 	{
-		below += (end->bodies[j].type == WORLD2_DYNAMIC && end->bodies[j].y < -0.5) ? 1 : 0;
+		const World2Body* b = &end->bodies[j];
+		below += (b->type == WORLD2_DYNAMIC && b->y < -0.5 && b->x > -10.0 && b->x < 400.0) ? 1 : 0;
 	}
 	double worstGap = 0.0;
 	for (int i = 0; i < scene->bridgeJointCount; ++i)

@@ -73,7 +73,7 @@ bool world2SceneCreate(World2Scene* scene, World2SceneId id, int workerCount);
 /* The scene's own per-step code (rain's ragdolls, the character, the moving platform), then one
  * cd2World_Step at 60 Hz with the scene's sub-step count. stepIndex counts from 0. */
 void world2SceneStep(World2Scene* scene, int stepIndex);
-/* Appends every live non-static body to out (key: index and generation of its id). */
+/* Appends every live body to out (key: index and generation of its id). */
 bool world2SceneSnapshot(const World2Scene* scene, World2Snapshot* out);
 /* world2CheckQuality, and for side_scroller and slingshot the scene's own criterion. */
 World2Quality world2SceneQuality(const World2Scene* scene, const World2Snapshot* start, const World2Snapshot* end,

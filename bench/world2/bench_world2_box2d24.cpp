@@ -65,10 +65,6 @@ static bool box2d24Snapshot(void* world, World2Snapshot* out)
 {
 	for (b2Body* body = static_cast<b2World*>(world)->GetBodyList(); body != nullptr; body = body->GetNext())
 	{
-		if (body->GetType() == b2_staticBody)
-		{
-			continue;
-		}
 		World2Body b;
 		b.key = (uint64_t)(uintptr_t)body;
 		b.x = body->GetPosition().x;
@@ -78,7 +74,8 @@ static bool box2d24Snapshot(void* world, World2Snapshot* out)
 		b.vy = body->GetLinearVelocity().y;
 		b.w = body->GetAngularVelocity();
 		b.mass = body->GetMass();
-		b.type = body->GetType() == b2_dynamicBody ? WORLD2_DYNAMIC : WORLD2_KINEMATIC;
+		b.type = body->GetType() == b2_dynamicBody ? WORLD2_DYNAMIC
+				 : (body->GetType() == b2_kinematicBody ? WORLD2_KINEMATIC : WORLD2_STATIC);
 		if (!world2SnapshotAdd(out, &b))
 		{
 			return false;

@@ -117,16 +117,12 @@ typedef struct SnapshotContext
 	bool ok;
 } SnapshotContext;
 
-/* Every body once: through its first shape. Static bodies are left out. */
+/* Every body once: through its first shape. */
 static bool collectShape(b2ShapeId shapeId, void* context)
 {
 	SnapshotContext* c = (SnapshotContext*)context;
 	b2BodyId body = b2Shape_GetBody(shapeId);
 	b2BodyType type = b2Body_GetType(body);
-	if (type == b2_staticBody)
-	{
-		return true;
-	}
 	b2ShapeId first;
 	if (b2Body_GetShapes(body, &first, 1) < 1 || first.index1 != shapeId.index1 || first.generation != shapeId.generation)
 	{
@@ -143,7 +139,7 @@ static bool collectShape(b2ShapeId shapeId, void* context)
 	b.vy = v.y;
 	b.w = b2Body_GetAngularVelocity(body);
 	b.mass = b2Body_GetMass(body);
-	b.type = type == b2_dynamicBody ? WORLD2_DYNAMIC : WORLD2_KINEMATIC;
+	b.type = type == b2_dynamicBody ? WORLD2_DYNAMIC : (type == b2_kinematicBody ? WORLD2_KINEMATIC : WORLD2_STATIC);
 	c->ok = c->ok && world2SnapshotAdd(c->out, &b);
 	return true;
 }

@@ -64,10 +64,6 @@ typedef struct ChipmunkSnapshot
 static void addBody(cpBody* body, void* data)
 {
 	ChipmunkSnapshot* c = (ChipmunkSnapshot*)data;
-	if (cpBodyGetType(body) == CP_BODY_TYPE_STATIC)
-	{
-		return;
-	}
 	cpVect p = cpBodyGetPosition(body), v = cpBodyGetVelocity(body);
 	World2Body b;
 	b.key = (uint64_t)(uintptr_t)body;
@@ -77,8 +73,10 @@ static void addBody(cpBody* body, void* data)
 	b.vx = v.x;
 	b.vy = v.y;
 	b.w = cpBodyGetAngularVelocity(body);
-	b.mass = cpBodyGetMass(body);
-	b.type = cpBodyGetType(body) == CP_BODY_TYPE_DYNAMIC ? WORLD2_DYNAMIC : WORLD2_KINEMATIC;
+	b.mass = cpBodyGetType(body) == CP_BODY_TYPE_DYNAMIC ? cpBodyGetMass(body) : 0.0;
+	b.type = cpBodyGetType(body) == CP_BODY_TYPE_DYNAMIC
+				 ? WORLD2_DYNAMIC
+				 : (cpBodyGetType(body) == CP_BODY_TYPE_KINEMATIC ? WORLD2_KINEMATIC : WORLD2_STATIC);
 	c->ok = c->ok && world2SnapshotAdd(c->out, &b);
 }
 
