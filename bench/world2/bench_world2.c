@@ -1,14 +1,15 @@
 /* collide_bench_world2: the 2D world scenes on collide and the peers in the same run.
  *
  *   collide_bench_world2 [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--runs R]
- *                        [--steps N] [--workers 1|2|12] [--smoke] [--list]
+ *                        [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]
  *
  * For every scene, engine and worker count (1 and 2 where the engine has threads) the scene is
  * built R times (default 3) and stepped its step count at 60 Hz with its sub-step count; the
  * first step is not timed (as in Box2D v3's benchmark app). ms/step is the median of the runs.
  * Memory is the heap growth (glibc mallinfo2) from before the world to after building the scene,
  * per body, and from there to after the last step, per contact (contacts the engine reports at the
- * end). The quality criterion (scenes/world2_quality.h) is judged on the first run's snapshots.
+ * end). --budget S: no further run of a (scene, engine, workers) starts after S seconds on it (the
+ * figure then says how many runs it is the median of). The quality criterion (scenes/world2_quality.h) is judged on the first run's snapshots.
  * --smoke: pyramid_20, 30 steps, 1 run, 1 worker; exits 1 unless every built column ran and
  * computed its quality criterion. Exit 2 on bad arguments. */
 #define _POSIX_C_SOURCE 200809L
@@ -99,6 +100,7 @@ typedef struct Result
 	bool ran;
 	const char* error;
 	double msPerStep[2]; /* 1 and 2 workers; < 0: not run */
+	int runCount[2];
 	int bodies, contacts;
 	double bytesPerBody, bytesPerContact; /* < 0: not measurable */
 	World2Quality quality;
@@ -112,6 +114,7 @@ typedef struct Options
 	int steps; /* 0: the scene's own */
 	bool workers[2];
 	bool smoke;
+	double budget; /* seconds per (scene, engine, workers) after which no more runs start; 0: none */
 } Options;
 
 /* One run; fills ms/step and, when measure, bodies, contacts, memory and quality. */
@@ -164,7 +167,9 @@ static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int st
 		{
 			r->error = "snapshot failed";
 		}
-		r->bytesPerBody = (m0 >= 0.0 && bodies0 > 0) ? (m1 - m0) / (double)bodies0 : -1.0;
+		/* Per body only when the scene made most of its bodies when built (rain makes them while
+		 * it steps). */
+		r->bytesPerBody = (m0 >= 0.0 && bodies0 > 0 && 2 * bodies0 >= r->bodies) ? (m1 - m0) / (double)bodies0 : -1.0;
 		r->bytesPerContact = (m0 >= 0.0 && r->contacts > 0) ? (m2 - m1) / (double)r->contacts : -1.0;
 		r->quality.computed = false;
 		if (e->quality != NULL)
@@ -182,32 +187,61 @@ static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int st
 	return true;
 }
 
-static void runEngine(const World2Engine* e, World2SceneId id, const Options* o, Result* r)
+/* Every engine that builds the scene, runs interleaved (run 1 of each engine, then run 2 of each...)
+ * so that a busy spell of a shared machine falls on all columns alike. */
+static void runScene(World2SceneId id, const Options* o, Result* results)
 {
 	const World2SceneInfo* info = world2SceneInfo(id);
 	int steps = o->steps > 0 ? o->steps : info->stepCount;
-	r->msPerStep[0] = r->msPerStep[1] = -1.0;
-	r->bytesPerBody = r->bytesPerContact = -1.0;
+	bool active[ENGINE_COUNT];
+	for (int e = 0; e < ENGINE_COUNT; ++e)
+	{
+		Result* r = &results[e];
+		memset(r, 0, sizeof(*r));
+		r->msPerStep[0] = r->msPerStep[1] = -1.0;
+		r->bytesPerBody = r->bytesPerContact = -1.0;
+		active[e] = o->engines[e] && engines[e].engine != NULL && engines[e].engine->supports(id);
+	}
 	for (int w = 1; w <= 2; ++w)
 	{
-		if (!o->workers[w - 1] || w > e->maxWorkers)
+		if (!o->workers[w - 1])
 		{
 			continue;
 		}
-		double times[MAX_RUNS];
-		int n = 0;
+		static double times[ENGINE_COUNT][MAX_RUNS];
+		double spent[ENGINE_COUNT] = {0};
 		for (int run = 0; run < o->runs; ++run)
 		{
-			bool measure = !r->ran && run == 0;
-			if (!runOnce(e, id, w, steps, measure, &times[n], r))
+			for (int e = 0; e < ENGINE_COUNT; ++e)
 			{
-				return;
+				Result* r = &results[e];
+				if (!active[e] || w > engines[e].engine->maxWorkers || (r->error != NULL && !r->ran) ||
+					(run > 0 && o->budget > 0.0 && spent[e] > o->budget))
+				{
+					continue;
+				}
+				bool measure = !r->ran;
+				double begin = nowSeconds();
+				double ms = 0.0;
+				if (!runOnce(engines[e].engine, id, w, steps, measure, &ms, r))
+				{
+					active[e] = false;
+					continue;
+				}
+				spent[e] += nowSeconds() - begin;
+				r->ran = true;
+				times[e][r->runCount[w - 1]++] = ms;
 			}
-			r->ran = true;
-			++n;
 		}
-		qsort(times, (size_t)n, sizeof(double), compareDoubles);
-		r->msPerStep[w - 1] = (n % 2 == 1) ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+		for (int e = 0; e < ENGINE_COUNT; ++e)
+		{
+			int n = results[e].runCount[w - 1];
+			if (n > 0)
+			{
+				qsort(times[e], (size_t)n, sizeof(double), compareDoubles);
+				results[e].msPerStep[w - 1] = (n % 2 == 1) ? times[e][n / 2] : 0.5 * (times[e][n / 2 - 1] + times[e][n / 2]);
+			}
+		}
 	}
 }
 
@@ -262,7 +296,7 @@ static const char* engineNameOf(int i)
 static void usage(void)
 {
 	fprintf(stderr, "usage: collide_bench_world2 [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--runs R]\n"
-					"                            [--steps N] [--workers 1|2|12] [--smoke] [--list]\n");
+					"                            [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]\n");
 }
 
 int main(int argc, char** argv)
@@ -324,6 +358,16 @@ int main(int argc, char** argv)
 			if (o.steps < 2 || o.steps > 1000000)
 			{
 				fprintf(stderr, "collide_bench_world2: --steps takes 2-1000000\n");
+				return 2;
+			}
+			++i;
+		}
+		else if (strcmp(a, "--budget") == 0 && v != NULL)
+		{
+			o.budget = atof(v);
+			if (!(o.budget >= 0.0 && o.budget < 1e6))
+			{
+				fprintf(stderr, "collide_bench_world2: --budget takes seconds >= 0\n");
 				return 2;
 			}
 			++i;
@@ -400,18 +444,12 @@ int main(int argc, char** argv)
 		World2SceneId id = (World2SceneId)s;
 		const World2SceneInfo* info = world2SceneInfo(id);
 		Result* v3 = NULL;
+		runScene(id, &o, results[s]);
 		for (int e = 0; e < ENGINE_COUNT; ++e)
 		{
-			if (!o.engines[e] || engines[e].engine == NULL || !engines[e].engine->supports(id))
+			if (strcmp(engines[e].name, "box2d-v3") == 0 && results[s][e].ran)
 			{
-				continue;
-			}
-			Result* r = &results[s][e];
-			memset(r, 0, sizeof(*r));
-			runEngine(engines[e].engine, id, &o, r);
-			if (strcmp(engines[e].name, "box2d-v3") == 0 && r->ran)
-			{
-				v3 = r;
+				v3 = &results[s][e];
 			}
 		}
 		for (int e = 0; e < ENGINE_COUNT; ++e)
@@ -439,8 +477,13 @@ int main(int argc, char** argv)
 			}
 			printf("| %s | %s |", info->name, engines[e].name);
 			printf(" %d | %d |", r->bodies, r->contacts);
-			printFigure(r->msPerStep[0], "%.3f", 1);
-			printFigure(r->msPerStep[1], "%.3f", 1);
+			for (int w = 0; w < 2; ++w)
+			{
+				char format[32];
+				snprintf(format, sizeof(format), r->runCount[w] < o.runs ? "%%.3f (%d run%s)" : "%%.3f",
+						 r->runCount[w], r->runCount[w] == 1 ? "" : "s");
+				printFigure(r->msPerStep[w], format, 1);
+			}
 			printFigure((r->msPerStep[0] > 0.0 && r->msPerStep[1] > 0.0) ? r->msPerStep[0] / r->msPerStep[1] : -1.0,
 						"%.2fx", 1);
 			printFigure(r->bytesPerBody, "%.0f", 1);
