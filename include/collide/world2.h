@@ -14,6 +14,7 @@
 
 #include "collide/broad.h"
 #include "collide/cast.h"
+#include "collide/chain2.h"
 #include "collide/manifold2.h"
 
 #ifdef __cplusplus
