@@ -100,6 +100,7 @@ typedef struct Result
 	bool ran;
 	const char* error;
 	double msPerStep[2]; /* 1 and 2 workers; < 0: not run */
+	double minMsPerStep[2]; /* the fastest run: other processes only ever add time */
 	int runCount[2];
 	int bodies, contacts;
 	double bytesPerBody, bytesPerContact; /* < 0: not measurable */
@@ -187,36 +188,33 @@ static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int st
 	return true;
 }
 
-/* Every engine that builds the scene, runs interleaved (run 1 of each engine, then run 2 of each...)
- * so that a busy spell of a shared machine falls on all columns alike. */
+/* Every engine that builds the scene, with runs interleaved (run 1 of every engine and worker
+ * count, then run 2...) so that a busy spell of a shared machine falls on all columns alike. */
 static void runScene(World2SceneId id, const Options* o, Result* results)
 {
 	const World2SceneInfo* info = world2SceneInfo(id);
 	int steps = o->steps > 0 ? o->steps : info->stepCount;
 	bool active[ENGINE_COUNT];
+	static double times[ENGINE_COUNT][2][MAX_RUNS];
+	double spent[ENGINE_COUNT][2];
 	for (int e = 0; e < ENGINE_COUNT; ++e)
 	{
 		Result* r = &results[e];
 		memset(r, 0, sizeof(*r));
-		r->msPerStep[0] = r->msPerStep[1] = -1.0;
+		r->msPerStep[0] = r->msPerStep[1] = r->minMsPerStep[0] = r->minMsPerStep[1] = -1.0;
 		r->bytesPerBody = r->bytesPerContact = -1.0;
 		active[e] = o->engines[e] && engines[e].engine != NULL && engines[e].engine->supports(id);
+		spent[e][0] = spent[e][1] = 0.0;
 	}
-	for (int w = 1; w <= 2; ++w)
+	for (int run = 0; run < o->runs; ++run)
 	{
-		if (!o->workers[w - 1])
-		{
-			continue;
-		}
-		static double times[ENGINE_COUNT][MAX_RUNS];
-		double spent[ENGINE_COUNT] = {0};
-		for (int run = 0; run < o->runs; ++run)
+		for (int w = 1; w <= 2; ++w)
 		{
 			for (int e = 0; e < ENGINE_COUNT; ++e)
 			{
 				Result* r = &results[e];
-				if (!active[e] || w > engines[e].engine->maxWorkers || (r->error != NULL && !r->ran) ||
-					(run > 0 && o->budget > 0.0 && spent[e] > o->budget))
+				if (!o->workers[w - 1] || !active[e] || w > engines[e].engine->maxWorkers ||
+					(run > 0 && o->budget > 0.0 && spent[e][w - 1] > o->budget))
 				{
 					continue;
 				}
@@ -228,18 +226,23 @@ static void runScene(World2SceneId id, const Options* o, Result* results)
 					active[e] = false;
 					continue;
 				}
-				spent[e] += nowSeconds() - begin;
+				spent[e][w - 1] += nowSeconds() - begin;
 				r->ran = true;
-				times[e][r->runCount[w - 1]++] = ms;
+				times[e][w - 1][r->runCount[w - 1]++] = ms;
 			}
 		}
-		for (int e = 0; e < ENGINE_COUNT; ++e)
+	}
+	for (int e = 0; e < ENGINE_COUNT; ++e)
+	{
+		for (int w = 0; w < 2; ++w)
 		{
-			int n = results[e].runCount[w - 1];
+			int n = results[e].runCount[w];
 			if (n > 0)
 			{
-				qsort(times[e], (size_t)n, sizeof(double), compareDoubles);
-				results[e].msPerStep[w - 1] = (n % 2 == 1) ? times[e][n / 2] : 0.5 * (times[e][n / 2 - 1] + times[e][n / 2]);
+				double* t = times[e][w];
+				qsort(t, (size_t)n, sizeof(double), compareDoubles);
+				results[e].msPerStep[w] = (n % 2 == 1) ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+				results[e].minMsPerStep[w] = t[0];
 			}
 		}
 	}
@@ -410,8 +413,9 @@ int main(int argc, char** argv)
 
 	printf("collide_bench_world2: %s, build %s, library flags '%s'\n", BENCH_COMPILER, BENCH_BUILD_TYPE,
 		   BENCH_LIBRARY_FLAGS);
-	printf("%d run(s) per figure (median), 60 Hz; ms/step excludes the first step; memory: heap growth per body "
-		   "(building) and per contact (stepping)\n",
+	printf("%d run(s) per figure: median (and fastest run), interleaved across engines and worker counts; 60 Hz; "
+		   "ms/step excludes the first step; memory: heap growth per body (building) and per contact (stepping); "
+		   "x v3: median / Box2D v3's median\n",
 		   o.runs);
 	for (int e = 0; e < ENGINE_COUNT; ++e)
 	{
@@ -479,10 +483,21 @@ int main(int argc, char** argv)
 			printf(" %d | %d |", r->bodies, r->contacts);
 			for (int w = 0; w < 2; ++w)
 			{
-				char format[32];
-				snprintf(format, sizeof(format), r->runCount[w] < o.runs ? "%%.3f (%d run%s)" : "%%.3f",
-						 r->runCount[w], r->runCount[w] == 1 ? "" : "s");
-				printFigure(r->msPerStep[w], format, 1);
+				char cell[64];
+				if (r->msPerStep[w] < 0.0)
+				{
+					snprintf(cell, sizeof(cell), "-");
+				}
+				else if (r->runCount[w] < o.runs)
+				{
+					snprintf(cell, sizeof(cell), "%.3f (min %.3f, %d run%s)", r->msPerStep[w], r->minMsPerStep[w],
+							 r->runCount[w], r->runCount[w] == 1 ? "" : "s");
+				}
+				else
+				{
+					snprintf(cell, sizeof(cell), "%.3f (min %.3f)", r->msPerStep[w], r->minMsPerStep[w]);
+				}
+				printf(" %s |", cell);
 			}
 			printFigure((r->msPerStep[0] > 0.0 && r->msPerStep[1] > 0.0) ? r->msPerStep[0] / r->msPerStep[1] : -1.0,
 						"%.2fx", 1);
