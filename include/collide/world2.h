@@ -100,11 +100,11 @@ typedef struct cd2WorldDef
 	cd2Vec gravity;				  /* m/s^2, default (0, -10) */
 	cdReal restitutionThreshold;  /* approach speeds below this do not bounce (1 m/s) */
 	cdReal hitEventThreshold;	  /* approach speed that makes a hit event (1 m/s) */
-	cdReal contactHertz;		  /* contact stiffness (30 Hz, capped at a quarter of the sub-step rate) */
+	cdReal contactHertz;		  /* contact stiffness (30 Hz, capped at an eighth of the sub-step rate) */
 	cdReal contactDampingRatio;	  /* 10 */
 	cdReal contactPushMaxVelocity; /* most speed at which overlap is pushed apart (3 m/s) */
-	cdReal jointHertz;			  /* 60 */
-	cdReal jointDampingRatio;	  /* 2 (5 in Box2D's) */
+	cdReal jointHertz;			  /* 60 (capped at a quarter of the sub-step rate) */
+	cdReal jointDampingRatio;	  /* 2 */
 	cdReal maximumLinearSpeed;	  /* 400 m/s (scaled by the length units) */
 	cdReal lengthUnitsPerMeter;	  /* 0: keep cdGetLengthUnitsPerMeter(); else set it */
 	bool enableSleep;
@@ -483,6 +483,22 @@ CD_API void cd2MotorJoint_SetLinearOffset(cd2JointId jointId, cd2Vec linearOffse
 CD_API void cd2MotorJoint_SetAngularOffset(cd2JointId jointId, cdReal angularOffset);
 CD_API void cd2DistanceJoint_SetLength(cd2JointId jointId, cdReal length);
 CD_API cdReal cd2DistanceJoint_GetCurrentLength(cd2JointId jointId);
+CD_API void cd2DistanceJoint_SetLengthRange(cd2JointId jointId, cdReal minLength, cdReal maxLength);
+/* Springs (distance, revolute, prismatic, wheel): on/off, stiffness and damping ratio. */
+CD_API void cd2Joint_EnableSpring(cd2JointId jointId, bool flag);
+CD_API void cd2Joint_SetSpringHertz(cd2JointId jointId, cdReal hertz);
+CD_API void cd2Joint_SetSpringDampingRatio(cd2JointId jointId, cdReal dampingRatio);
+/* Motors (distance, revolute, prismatic, wheel): maxMotor is a force (distance, prismatic) or a
+ * torque (revolute, wheel); the speed is linear or angular likewise. */
+CD_API void cd2Joint_EnableMotor(cd2JointId jointId, bool flag);
+CD_API void cd2Joint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed);
+CD_API void cd2Joint_SetMaxMotor(cd2JointId jointId, cdReal maxForceOrTorque);
+/* Limits (distance: use cd2DistanceJoint_SetLengthRange; revolute: angles; prismatic and wheel:
+ * translations), lower <= upper. */
+CD_API void cd2Joint_EnableLimit(cd2JointId jointId, bool flag);
+CD_API void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper);
+/* Translation of B's anchor along the axis from A's (prismatic and wheel joints). */
+CD_API cdReal cd2Joint_GetTranslation(cd2JointId jointId);
 
 /* ---- events: arrays valid until the next step -------------------------------------------------- */
 typedef struct cd2ContactBeginTouchEvent
@@ -593,6 +609,67 @@ CD_API void cd2World_CastRay(cd2WorldId worldId, cd2Vec origin, cd2Vec translati
 /* The world-space shape moved by translation; normal and point of each hit as cd2ShapeCast. */
 CD_API void cd2World_CastShape(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation,
 							   cd2QueryFilter filter, cd2CastResultFcn* fcn, void* context);
+
+/* ---- kinematic character mover ---------------------------------------------------------------
+ * A character moved by your code, not by the solver: a capsule that casts along its path, collects
+ * the planes of what it touches, and slides along them (walks up slopes, stops at walls, stands on
+ * platforms). One frame, in the spirit of Box2D v3's mover:
+ *
+ *     target = cd2Add(position, cd2Scale(dt, velocity));
+ *     for (int i = 0; i < 4; ++i) {          // collect the planes around the target, solve them
+ *         planeCount = 0;
+ *         cd2World_CollideMover(world, &capsuleAtTarget, filter, CollectPlane, &planes);
+ *         target = cd2Add(target, cd2SolvePlanes(CD2_VEC_ZERO, planes, planeCount));
+ *     }
+ *     cdReal t = cd2World_CastMover(world, &capsuleAtPosition, cd2Sub(target, position), filter);
+ *     position = cd2Lerp(position, target, t);
+ *     velocity = cd2ClipVector(velocity, planes, planeCount);
+ *
+ * (tests/test_world2_features.c, TestMover, is this loop in full.) */
+typedef struct cd2PlaneResult
+{
+	cd2ShapeId shapeId;
+	cd2Vec normal;	   /* unit, from the shape to the mover */
+	cdReal separation; /* along normal: > 0 apart (within the speculative distance), < 0 overlapping */
+	cd2Vec point;	   /* the deepest contact point */
+} cd2PlaneResult;
+
+/* Return false to stop. */
+typedef bool cd2PlaneResultFcn(const cd2PlaneResult* plane, void* context);
+
+/* The planes of the non-sensor shapes touching (or within CD_SPECULATIVE_DISTANCE of) the capsule. */
+CD_API void cd2World_CollideMover(cd2WorldId worldId, const cd2Capsule* mover, cd2QueryFilter filter,
+								  cd2PlaneResultFcn* fcn, void* context);
+/* The fraction in [0, 1] of translation the capsule can move before it touches a non-sensor shape
+ * that it does not already overlap (1 when nothing is in the way). */
+CD_API cdReal cd2World_CastMover(cd2WorldId worldId, const cd2Capsule* mover, cd2Vec translation,
+								 cd2QueryFilter filter);
+/* The smallest change of targetDelta (iteratively, every plane in turn) after which the mover
+ * moved by the result overlaps no plane: separation + dot(normal, result) >= 0 for each. */
+CD_API cd2Vec cd2SolvePlanes(cd2Vec targetDelta, const cd2PlaneResult* planes, int count);
+/* The vector without its components into the planes the mover touches (separation below the
+ * linear slop): a velocity that slides along walls and floors instead of pushing into them. */
+CD_API cd2Vec cd2ClipVector(cd2Vec vector, const cd2PlaneResult* planes, int count);
+
+/* ---- debug draw ------------------------------------------------------------------------------
+ * cd2World_Draw calls these for what the flags select, in world coordinates; any callback may be
+ * NULL. Colours are 0xRRGGBB: static bodies grey, kinematic blue, awake dynamic bodies orange,
+ * sleeping ones dim, sensors yellow, joints teal, contact points red (normals green), AABBs
+ * purple. For the tool's SVG/PNG frames, the web demos and your own renderer. */
+typedef struct cd2DebugDraw
+{
+	/* A solid convex polygon (its vertices) grown by radius (0: sharp). */
+	void (*drawPolygon)(const cd2Vec* vertices, int count, cdReal radius, uint32_t color, void* context);
+	void (*drawCircle)(cd2Transform transform, cdReal radius, uint32_t color, void* context);
+	void (*drawCapsule)(cd2Vec p1, cd2Vec p2, cdReal radius, uint32_t color, void* context);
+	void (*drawSegment)(cd2Vec p1, cd2Vec p2, uint32_t color, void* context);
+	void (*drawPoint)(cd2Vec p, cdReal size, uint32_t color, void* context);
+	bool drawShapes, drawJoints, drawAabbs, drawContacts;
+	void* context;
+} cd2DebugDraw;
+
+CD_API cd2DebugDraw cd2DefaultDebugDraw(void); /* no callbacks; shapes and joints on */
+CD_API void cd2World_Draw(cd2WorldId worldId, const cd2DebugDraw* draw);
 
 /* ---- snapshots ---------------------------------------------------------------------------------
  * The whole simulation state (bodies, shapes, contacts with their warm-start impulses, joints,

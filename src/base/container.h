@@ -16,28 +16,28 @@
 bool cdArrayReserve(void** data, int* capacity, int needed, size_t elementSize);
 
 /* A typed growable array: struct { T* data; int count, capacity; }. */
-#define CD_ARRAY(T)                                                                                        \
-	struct                                                                                                 \
-	{                                                                                                      \
-		T* data;                                                                                           \
-		int count;                                                                                         \
-		int capacity;                                                                                      \
+#define CD_ARRAY(T)                                                                                          \
+	struct                                                                                                   \
+	{                                                                                                        \
+		T* data;                                                                                             \
+		int count;                                                                                           \
+		int capacity;                                                                                        \
 	}
 
-#define cdArrayReserveFor(array, needed)                                                                   \
+#define cdArrayReserveFor(array, needed)                                                                     \
 	cdArrayReserve((void**)&(array).data, &(array).capacity, (needed), sizeof(*(array).data))
 
 /* Appends; evaluates to false when memory ran out. */
-#define cdArrayPush(array, value)                                                                          \
+#define cdArrayPush(array, value)                                                                            \
 	(cdArrayReserveFor(array, (array).count + 1) ? ((array).data[(array).count++] = (value), true) : false)
 
-#define cdArrayFree(array)                                                                                 \
-	do                                                                                                     \
-	{                                                                                                      \
-		cdFree((array).data);                                                                              \
-		(array).data = NULL;                                                                               \
-		(array).count = 0;                                                                                 \
-		(array).capacity = 0;                                                                              \
+#define cdArrayFree(array)                                                                                   \
+	do                                                                                                       \
+	{                                                                                                        \
+		cdFree((array).data);                                                                                \
+		(array).data = NULL;                                                                                 \
+		(array).count = 0;                                                                                   \
+		(array).capacity = 0;                                                                                \
 	} while (0)
 
 /* ---- id pool (id_pool.c) -----------------------------------------------------------------------

@@ -71,13 +71,15 @@ cd2BodyId cd2CreateBody(cd2WorldId worldId, const cd2BodyDef* def)
 		CD2_REFUSE("cd2CreateBody: the world is locked during the step");
 		return CD2_NULL_BODY_ID;
 	}
-	if (def == NULL || (def->type != CD_STATIC_BODY && def->type != CD_KINEMATIC_BODY && def->type != CD_DYNAMIC_BODY) ||
-		!cd2IsValidVec(def->position) || !cd2IsValidRot(def->rotation) || !cd2IsValidVec(def->linearVelocity) ||
-		!cdIsValidReal(def->angularVelocity) || !cd2IsNonNegative(def->linearDamping) ||
-		!cd2IsNonNegative(def->angularDamping) || !cdIsValidReal(def->gravityScale) ||
-		!cd2IsNonNegative(def->sleepThreshold))
+	if (def == NULL ||
+		(def->type != CD_STATIC_BODY && def->type != CD_KINEMATIC_BODY && def->type != CD_DYNAMIC_BODY) ||
+		!cd2IsValidVec(def->position) || !cd2IsValidRot(def->rotation) ||
+		!cd2IsValidVec(def->linearVelocity) || !cdIsValidReal(def->angularVelocity) ||
+		!cd2IsNonNegative(def->linearDamping) || !cd2IsNonNegative(def->angularDamping) ||
+		!cdIsValidReal(def->gravityScale) || !cd2IsNonNegative(def->sleepThreshold))
 	{
-		CD2_REFUSE("cd2CreateBody: bad body definition (NaN/Inf, non-unit rotation, negative damping, bad type)");
+		CD2_REFUSE(
+			"cd2CreateBody: bad body definition (NaN/Inf, non-unit rotation, negative damping, bad type)");
 		return CD2_NULL_BODY_ID;
 	}
 	int index = cdIdPool_Alloc(&world->bodyPool);
@@ -209,26 +211,26 @@ static void cd2ComputeExtents(cd2World* world, cd2Body* body)
 		cdReal inner = CD_R(0.0);
 		switch (shape->type)
 		{
-		case CD2_WORLD_SHAPE_CIRCLE:
-			inner = shape->geometry.circle.radius;
-			break;
-		case CD2_WORLD_SHAPE_CAPSULE:
-			inner = shape->geometry.capsule.radius;
-			break;
-		case CD2_WORLD_SHAPE_POLYGON:
-		{
-			const cd2Polygon* p = &shape->geometry.polygon;
-			cdReal d = CD_REAL_MAX;
-			for (int i = 0; i < p->count; ++i)
+			case CD2_WORLD_SHAPE_CIRCLE:
+				inner = shape->geometry.circle.radius;
+				break;
+			case CD2_WORLD_SHAPE_CAPSULE:
+				inner = shape->geometry.capsule.radius;
+				break;
+			case CD2_WORLD_SHAPE_POLYGON:
 			{
-				d = cdMin(d, cd2Dot(p->normals[i], cd2Sub(p->vertices[i], p->centroid)));
+				const cd2Polygon* p = &shape->geometry.polygon;
+				cdReal d = CD_REAL_MAX;
+				for (int i = 0; i < p->count; ++i)
+				{
+					d = cdMin(d, cd2Dot(p->normals[i], cd2Sub(p->vertices[i], p->centroid)));
+				}
+				inner = cdMax(d, CD_R(0.0)) + p->radius;
+				break;
 			}
-			inner = cdMax(d, CD_R(0.0)) + p->radius;
-			break;
-		}
-		default:
-			inner = CD_R(0.0);
-			break;
+			default:
+				inner = CD_R(0.0);
+				break;
 		}
 		minExtent = cdMin(minExtent, inner);
 	}
@@ -302,7 +304,7 @@ void cd2UpdateBodyMass(cd2World* world, int bodyIndex)
 }
 
 /* ---- getters and setters ------------------------------------------------------------------- */
-#define CD2_BODY_GET(ret, fallback, expr) /* ret: documentation only */                                                                    \
+#define CD2_BODY_GET(ret, fallback, expr) /* ret: documentation only */                                      \
 	cd2World* world = NULL;                                                                                  \
 	cd2Body* body = cd2LookupBody(bodyId, &world, false);                                                    \
 	(void)world;                                                                                             \
@@ -504,13 +506,17 @@ void cd2Body_SetLinearVelocity(cd2BodyId bodyId, cd2Vec velocity)
 {
 	cd2World* world = NULL;
 	cd2Body* body = cd2LookupBody(bodyId, &world, true);
-	if (body == NULL || body->type == CD_STATIC_BODY)
+	if (body == NULL)
 	{
 		return;
 	}
 	if (!cd2IsValidVec(velocity))
 	{
 		CD2_REFUSE("cd2Body_SetLinearVelocity: NaN/Inf velocity");
+		return;
+	}
+	if (body->type == CD_STATIC_BODY)
+	{
 		return;
 	}
 	if (cd2Dot(velocity, velocity) > CD_R(0.0))
@@ -524,13 +530,17 @@ void cd2Body_SetAngularVelocity(cd2BodyId bodyId, cdReal angularVelocity)
 {
 	cd2World* world = NULL;
 	cd2Body* body = cd2LookupBody(bodyId, &world, true);
-	if (body == NULL || body->type == CD_STATIC_BODY || body->fixedRotation)
+	if (body == NULL)
 	{
 		return;
 	}
 	if (!cdIsValidReal(angularVelocity))
 	{
 		CD2_REFUSE("cd2Body_SetAngularVelocity: NaN/Inf");
+		return;
+	}
+	if (body->type == CD_STATIC_BODY || body->fixedRotation)
+	{
 		return;
 	}
 	if (angularVelocity != CD_R(0.0))
@@ -544,13 +554,17 @@ void cd2Body_SetAngularVelocity(cd2BodyId bodyId, cdReal angularVelocity)
 static cd2Body* cd2BodyForPush(cd2BodyId bodyId, cd2World** world, bool wake, bool valid)
 {
 	cd2Body* body = cd2LookupBody(bodyId, world, true);
-	if (body == NULL || body->type != CD_DYNAMIC_BODY)
+	if (body == NULL)
 	{
 		return NULL;
 	}
 	if (!valid)
 	{
 		CD2_REFUSE("NaN/Inf force, torque, impulse or point");
+		return NULL;
+	}
+	if (body->type != CD_DYNAMIC_BODY)
+	{
 		return NULL;
 	}
 	if (!body->awake)
@@ -598,8 +612,7 @@ void cd2Body_ApplyTorque(cd2BodyId bodyId, cdReal torque, bool wake)
 void cd2Body_ApplyLinearImpulse(cd2BodyId bodyId, cd2Vec impulse, cd2Vec worldPoint, bool wake)
 {
 	cd2World* world = NULL;
-	cd2Body* body =
-		cd2BodyForPush(bodyId, &world, wake, cd2IsValidVec(impulse) && cd2IsValidVec(worldPoint));
+	cd2Body* body = cd2BodyForPush(bodyId, &world, wake, cd2IsValidVec(impulse) && cd2IsValidVec(worldPoint));
 	if (body != NULL)
 	{
 		body->linearVelocity = cd2MulAdd(body->linearVelocity, body->invMass, impulse);

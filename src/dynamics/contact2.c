@@ -17,21 +17,50 @@ cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* sh
 		const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
 		switch (b.type)
 		{
-		case CD2_SHAPE_CIRCLE:
-			return cd2CollideChainSegmentCircle(seg, b.circle, speculativeDistance);
-		case CD2_SHAPE_CAPSULE:
-			return cd2CollideChainSegmentCapsule(seg, b.capsule, speculativeDistance);
-		case CD2_SHAPE_POLYGON:
-			return cd2CollideChainSegmentPolygon(seg, &b.polygon, speculativeDistance);
-		default:
-		{
-			cd2Capsule capsule = {b.segment.p1, b.segment.p2, CD_R(0.0)};
-			return cd2CollideChainSegmentCapsule(seg, capsule, speculativeDistance);
-		}
+			case CD2_SHAPE_CIRCLE:
+				return cd2CollideChainSegmentCircle(seg, b.circle, speculativeDistance);
+			case CD2_SHAPE_CAPSULE:
+				return cd2CollideChainSegmentCapsule(seg, b.capsule, speculativeDistance);
+			case CD2_SHAPE_POLYGON:
+				return cd2CollideChainSegmentPolygon(seg, &b.polygon, speculativeDistance);
+			default:
+			{
+				cd2Capsule capsule = {b.segment.p1, b.segment.p2, CD_R(0.0)};
+				return cd2CollideChainSegmentCapsule(seg, capsule, speculativeDistance);
+			}
 		}
 	}
 	cd2Shape a = cd2MakeTaggedShape(shapeA, CD2_TRANSFORM_IDENTITY);
 	return cd2Collide(&a, &b, speculativeDistance);
+}
+
+/* The key that matches a point with last step's for warm starting: a name of the point that
+ * does not change while the same features touch, whichever way the manifold describes them.
+ * - A clipped polygon point's id says whether it is an incident vertex (code 0/1) or was clipped
+ *   at a side of the reference edge (2/3); with aligned boxes that flips from step to step while
+ *   the point stays where it is. The incident edge runs against the reference edge, so its vertex
+ *   1 is the one clipped at side 2 and vertex 0 the one clipped at side 3: one slot for {1, 2},
+ *   one for {0, 3}.
+ * - Between two near-parallel faces the reference face switches between A's and B's (the flip
+ *   bit) as the bodies rock by a fraction of the slop. Name the point by (edge of A, edge of B)
+ *   instead of (reference, incident); the reference edge runs the other way round when it is B's,
+ *   so the slots swap too. */
+static uint32_t cd2WarmStartKey(uint32_t id)
+{
+	uint32_t code = (id >> 16) & 0xffu;
+	if (code > 3u || (id >> 25) != 0u)
+	{
+		return id;
+	}
+	bool flip = (id & CD2_FEATURE_FLIP) != 0u;
+	uint32_t reference = id & 0xffu, incident = (id >> 8) & 0xffu;
+	uint32_t slot = (code == 1u || code == 2u) ? 1u : 0u;
+	uint32_t edgeA = flip ? incident : reference, edgeB = flip ? reference : incident;
+	if (flip)
+	{
+		slot = 1u - slot;
+	}
+	return edgeA | edgeB << 8 | slot << 16;
 }
 
 /* ---- pairs ------------------------------------------------------------------------------------- */
@@ -271,9 +300,45 @@ static bool cd2SensorOverlaps(cd2World* world, const cd2Contact* contact)
 	return cd2Overlap(&ta, &tb);
 }
 
-void cd2UpdateContacts(cd2World* world)
+void cd2UpdateSensors(cd2World* world)
 {
-	cdReal speculative = CD_SPECULATIVE_DISTANCE;
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse || (contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			continue;
+		}
+		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
+		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
+		if (!bodyA->awake && !bodyB->awake)
+		{
+			continue;
+		}
+		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+		bool touching = cd2SensorOverlaps(world, contact);
+		if (touching && !wasTouching)
+		{
+			cd2SensorBeginTouchEvent e;
+			e.sensorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeA : contact->shapeB);
+			e.visitorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeB : contact->shapeA);
+			if (!cdArrayPush(world->sensorBeginEvents, e))
+			{
+				world->outOfMemory = true;
+			}
+			contact->flags |= CD2_CONTACT_TOUCHING;
+		}
+		else if (!touching && wasTouching)
+		{
+			cd2EmitEndEvent(world, contact);
+			contact->flags &= ~(uint32_t)CD2_CONTACT_TOUCHING;
+		}
+	}
+}
+
+void cd2UpdateContacts(cd2World* world, cdReal timeStep)
+{
 	for (int i = 0; i < world->contacts.count; ++i)
 	{
 		cd2Contact* contact = world->contacts.data + i;
@@ -299,21 +364,16 @@ void cd2UpdateContacts(cd2World* world)
 		contact->flags &= ~(uint32_t)CD2_CONTACT_DISABLED;
 		if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
 		{
-			touching = cd2SensorOverlaps(world, contact);
-			if (touching && !wasTouching)
-			{
-				cd2SensorBeginTouchEvent e;
-				e.sensorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeA : contact->shapeB);
-				e.visitorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeB : contact->shapeA);
-				if (!cdArrayPush(world->sensorBeginEvents, e))
-				{
-					world->outOfMemory = true;
-				}
-			}
+			continue; /* sensors are updated after the solve (cd2UpdateSensors) */
 		}
-		else
 		{
 			cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
+			/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
+			 * fast body is caught at the surface rather than found inside it a step later. */
+			cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
+							 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
+							 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
+			cdReal speculative = CD_SPECULATIVE_DISTANCE + timeStep * closing;
 			cd2Manifold m = cd2CollideLocal(shapeA, shapeB, cd2InvMulTransforms(xfA, xfB), speculative);
 			cd2ContactPoint old[2];
 			int oldCount = contact->pointCount;
@@ -332,7 +392,7 @@ void cd2UpdateContacts(cd2World* world)
 				/* Warm starting: the same features keep their impulses. */
 				for (int j = 0; j < oldCount; ++j)
 				{
-					if (old[j].id == cp->id)
+					if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
 					{
 						cp->normalImpulse = old[j].normalImpulse;
 						cp->tangentImpulse = old[j].tangentImpulse;

@@ -4,7 +4,9 @@
  * push never adds kinetic energy. Separation is tracked from the bodies' position deltas since
  * the start of the step, with anchors fixed at the step's start (no narrowphase per sub-step).
  * Points that are still apart are speculative: they only stop the gap from closing within the
- * sub-step. Restitution runs once after the sub-steps on the approach speeds of the step's start. */
+ * sub-step. Restitution runs once after the sub-steps and reverses the fastest approach speed each
+ * point saw before it was reached (so a speculative contact that catches a falling ball at the
+ * surface bounces it with its impact speed, not with its speed at the start of the step). */
 #include "world2_internal.h"
 
 static cd2SolverBody s_staticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
@@ -36,7 +38,7 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 		c->invMassB = c->indexB < 0 ? CD_R(0.0) : bodyB->invMass;
 		c->invIB = c->indexB < 0 ? CD_R(0.0) : bodyB->invInertia;
 		c->softness = (c->invMassA == CD_R(0.0) || c->invMassB == CD_R(0.0)) ? context->staticSoftness
-																			  : context->contactSoftness;
+																			 : context->contactSoftness;
 		c->normal = contact->normal;
 		c->friction = contact->friction;
 		c->restitution = contact->restitution;
@@ -47,6 +49,16 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 		c->rollingMass = iSum > CD_R(0.0) ? CD_R(1.0) / iSum : CD_R(0.0);
 		c->pointCount = contact->pointCount;
 		cd2Vec n = c->normal, t = cd2RightPerp(n);
+		cd2Vec accA = CD2_VEC_ZERO, accB = CD2_VEC_ZERO;
+		if (c->invMassA > CD_R(0.0))
+		{
+			accA = cd2MulAdd(cd2Scale(c->invMassA, bodyA->force), bodyA->gravityScale, world->gravity);
+		}
+		if (c->invMassB > CD_R(0.0))
+		{
+			accB = cd2MulAdd(cd2Scale(c->invMassB, bodyB->force), bodyB->gravityScale, world->gravity);
+		}
+		c->normalAcceleration = cd2Dot(n, cd2Sub(accB, accA));
 		cd2Vec vA = bodyA->linearVelocity, vB = bodyB->linearVelocity;
 		cdReal wA = bodyA->angularVelocity, wB = bodyB->angularVelocity;
 		if (c->indexA < 0)
@@ -156,6 +168,12 @@ void cd2SolveContacts(cd2StepContext* context, bool useBias)
 			}
 			cd2Vec dv = cd2Sub(cd2Add(vB, cd2CrossSV(wB, rB)), cd2Add(vA, cd2CrossSV(wA, rA)));
 			cdReal vn = cd2Dot(dv, n);
+			if (useBias && vn < cp->relativeVelocity)
+			{
+				/* The approach speed when the point is reached (gravity of the sub-steps before it
+				 * included): what restitution reverses. */
+				cp->relativeVelocity = vn;
+			}
 			cdReal impulse = -cp->normalMass * (massScale * vn + bias) - impulseScale * cp->normalImpulse;
 			cdReal newImpulse = cdMax(cp->normalImpulse + impulse, CD_R(0.0));
 			impulse = newImpulse - cp->normalImpulse;
@@ -241,7 +259,11 @@ void cd2ApplyRestitution(cd2StepContext* context)
 			cd2Vec rA = cp->anchorA, rB = cp->anchorB;
 			cd2Vec dv = cd2Sub(cd2Add(vB, cd2CrossSV(wB, rB)), cd2Add(vA, cd2CrossSV(wA, rA)));
 			cdReal vn = cd2Dot(dv, n);
-			cdReal impulse = -cp->normalMass * (vn + c->restitution * cp->relativeVelocity);
+			/* The approach was recorded at the start of the sub-step that reached the point, after
+			 * that sub-step's acceleration; the bounce leaves before the next one's: add one
+			 * sub-step of acceleration so that the flight up mirrors the flight down. */
+			cdReal approach = cdMin(cp->relativeVelocity + context->h * c->normalAcceleration, CD_R(0.0));
+			cdReal impulse = -cp->normalMass * (vn + c->restitution * approach);
 			cdReal newImpulse = cdMax(cp->normalImpulse + impulse, CD_R(0.0));
 			impulse = newImpulse - cp->normalImpulse;
 			cp->normalImpulse = newImpulse;

@@ -24,14 +24,16 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 	const cd2WorldShape* other = world->shapes.data + otherIndex;
 	const cd2Body* body = world->bodies.data + c->bodyIndex;
 	const cd2Body* otherBody = world->bodies.data + other->body;
-	if (other->body == c->bodyIndex || other->isSensor || !cd2ShouldShapesCollide(shape->filter, other->filter))
+	if (other->body == c->bodyIndex || other->isSensor ||
+		!cd2ShouldShapesCollide(shape->filter, other->filter))
 	{
 		return true;
 	}
 	if (otherBody->type != CD_STATIC_BODY)
 	{
 		/* Only bullets sweep against moving bodies, and never against other bullets. */
-		if (!body->isBullet || otherBody->isBullet || !cd2ShouldBodiesCollide(world, c->bodyIndex, other->body))
+		if (!body->isBullet || otherBody->isBullet ||
+			!cd2ShouldBodiesCollide(world, c->bodyIndex, other->body))
 		{
 			return true;
 		}
@@ -52,7 +54,8 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 	cd2Shape b = cd2MakeTaggedShape(other, CD2_TRANSFORM_IDENTITY);
 	cdReal angle = cd2RotGetAngle(otherXf.q);
 	cd2Sweep otherSweep = {otherBody->localCenter, otherBody->center, otherBody->center, angle, angle};
-	cdToiOutput out = cd2TimeOfImpact(&a, &c->sweep, &b, &otherSweep, CD_LINEAR_SLOP, CD_R(0.25) * CD_LINEAR_SLOP);
+	cdToiOutput out =
+		cd2TimeOfImpact(&a, &c->sweep, &b, &otherSweep, CD_LINEAR_SLOP, CD_R(0.25) * CD_LINEAR_SLOP);
 	if ((out.state == CD_TOI_HIT || out.state == CD_TOI_FAILED) && CD_R(0.0) < out.t && out.t < c->fraction)
 	{
 		c->fraction = out.t;
@@ -73,7 +76,8 @@ void cd2SolveContinuous(cd2World* world, int bodyIndex)
 	c.sweep.center1 = body->center;
 	c.sweep.angle0 = angle0;
 	c.sweep.angle1 = angle0 + cd2RotGetAngle(cd2InvMulRot(body->rotation0, body->transform.q));
-	cd2Transform xf0 = {cd2Sub(body->center0, cd2RotateVector(body->rotation0, body->localCenter)), body->rotation0};
+	cd2Transform xf0 = {cd2Sub(body->center0, cd2RotateVector(body->rotation0, body->localCenter)),
+						body->rotation0};
 	for (int s = body->headShape; s != CD2_NULL_INDEX; s = world->shapes.data[s].nextShape)
 	{
 		const cd2WorldShape* shape = world->shapes.data + s;
@@ -82,7 +86,8 @@ void cd2SolveContinuous(cd2World* world, int bodyIndex)
 			continue;
 		}
 		c.shapeIndex = s;
-		cd2Aabb box = cd2AabbUnion(cd2ComputeWorldShapeAabb(shape, xf0), cd2ComputeWorldShapeAabb(shape, body->transform));
+		cd2Aabb box = cd2AabbUnion(cd2ComputeWorldShapeAabb(shape, xf0),
+								   cd2ComputeWorldShapeAabb(shape, body->transform));
 		cd2BroadPhase_Query(world->broadPhase, box, cd2ContinuousCallback, &c);
 	}
 	if (c.fraction < CD_R(1.0))

@@ -29,8 +29,8 @@ void cd2WarmStartDistanceJoint(cd2JointSolverArgs* args)
 }
 
 /* One-sided soft row along axis: keeps C >= 0 (C = length - min, or max - length with sign -1). */
-static void cd2SolveDistanceLimit(cd2JointSolverArgs* args, cd2Vec rA, cd2Vec rB, cd2Vec axis, cdReal C, cdReal sign,
-								  cdReal* accumulated, bool useBias)
+static void cd2SolveDistanceLimit(cd2JointSolverArgs* args, cd2Vec rA, cd2Vec rB, cd2Vec axis, cdReal C,
+								  cdReal sign, cdReal* accumulated, bool useBias)
 {
 	cd2JointData* d = &args->joint->data;
 	cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
@@ -93,8 +93,10 @@ void cd2SolveDistanceJoint(cd2JointSolverArgs* args, bool useBias)
 		}
 		if (d->enableLimit)
 		{
-			cd2SolveDistanceLimit(args, rA, rB, axis, length - d->minLength, CD_R(1.0), &d->lowerImpulse, useBias);
-			cd2SolveDistanceLimit(args, rA, rB, axis, d->maxLength - length, CD_R(-1.0), &d->upperImpulse, useBias);
+			cd2SolveDistanceLimit(args, rA, rB, axis, length - d->minLength, CD_R(1.0), &d->lowerImpulse,
+								  useBias);
+			cd2SolveDistanceLimit(args, rA, rB, axis, d->maxLength - length, CD_R(-1.0), &d->upperImpulse,
+								  useBias);
 		}
 	}
 	if (d->enableMotor)

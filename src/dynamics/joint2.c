@@ -88,7 +88,8 @@ static cd2Joint* cd2CreateJointRecord(cd2WorldId worldId, cd2BodyId idA, cd2Body
 	if (a == NULL || b == NULL || idA.index1 == idB.index1 || idA.world0 != world->index ||
 		idB.world0 != world->index || !valid)
 	{
-		CD2_REFUSE("joint creation: stale body ids, the same body twice, or a bad definition (NaN, negative)");
+		CD2_REFUSE(
+			"joint creation: stale body ids, the same body twice, or a bad definition (NaN, negative)");
 		return NULL;
 	}
 	int index = cdIdPool_Alloc(&world->jointPool);
@@ -260,7 +261,8 @@ cd2JointId cd2CreateFilterJoint(cd2WorldId worldId, const cd2FilterJointDef* def
 		CD2_REFUSE("cd2CreateFilterJoint: NULL def");
 		return id;
 	}
-	cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_FILTER_JOINT, false, def->userData, true, &id);
+	cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_FILTER_JOINT, false, def->userData, true,
+						 &id);
 	return id;
 }
 
@@ -272,8 +274,9 @@ cd2JointId cd2CreateMotorJoint(cd2WorldId worldId, const cd2MotorJointDef* def)
 		CD2_REFUSE("cd2CreateMotorJoint: NULL def");
 		return id;
 	}
-	bool valid = cd2IsValidVec(def->linearOffset) && cd2Finite(def->angularOffset) && cd2NonNeg(def->maxForce) &&
-				 cd2NonNeg(def->maxTorque) && cd2NonNeg(def->correctionFactor) && def->correctionFactor <= CD_R(1.0);
+	bool valid = cd2IsValidVec(def->linearOffset) && cd2Finite(def->angularOffset) &&
+				 cd2NonNeg(def->maxForce) && cd2NonNeg(def->maxTorque) && cd2NonNeg(def->correctionFactor) &&
+				 def->correctionFactor <= CD_R(1.0);
 	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_MOTOR_JOINT,
 										   def->collideConnected, def->userData, valid, &id);
 	if (joint != NULL)
@@ -358,8 +361,9 @@ cd2JointId cd2CreateRevoluteJoint(cd2WorldId worldId, const cd2RevoluteJointDef*
 	}
 	bool valid = cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
 				 cd2Finite(def->referenceAngle) && cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) &&
-				 cd2Finite(def->lowerAngle) && cd2Finite(def->upperAngle) && def->lowerAngle <= def->upperAngle &&
-				 cd2NonNeg(def->maxMotorTorque) && cd2Finite(def->motorSpeed);
+				 cd2Finite(def->lowerAngle) && cd2Finite(def->upperAngle) &&
+				 def->lowerAngle <= def->upperAngle && cd2NonNeg(def->maxMotorTorque) &&
+				 cd2Finite(def->motorSpeed);
 	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_REVOLUTE_JOINT,
 										   def->collideConnected, def->userData, valid, &id);
 	if (joint != NULL)
@@ -390,8 +394,9 @@ cd2JointId cd2CreateWeldJoint(cd2WorldId worldId, const cd2WeldJointDef* def)
 		return id;
 	}
 	bool valid = cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
-				 cd2Finite(def->referenceAngle) && cd2NonNeg(def->linearHertz) && cd2NonNeg(def->angularHertz) &&
-				 cd2NonNeg(def->linearDampingRatio) && cd2NonNeg(def->angularDampingRatio);
+				 cd2Finite(def->referenceAngle) && cd2NonNeg(def->linearHertz) &&
+				 cd2NonNeg(def->angularHertz) && cd2NonNeg(def->linearDampingRatio) &&
+				 cd2NonNeg(def->angularDampingRatio);
 	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_WELD_JOINT,
 										   def->collideConnected, def->userData, valid, &id);
 	if (joint != NULL)
@@ -577,6 +582,10 @@ void cd2RevoluteJoint_EnableMotor(cd2JointId jointId, bool flag)
 	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
 	if (joint != NULL)
 	{
+		if (joint->data.enableMotor != flag)
+		{
+			joint->data.motorImpulse = CD_R(0.0);
+		}
 		joint->data.enableMotor = flag;
 	}
 }
@@ -604,13 +613,19 @@ void cd2RevoluteJoint_EnableLimit(cd2JointId jointId, bool flag)
 	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
 	if (joint != NULL)
 	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
 		joint->data.enableLimit = flag;
 	}
 }
 
 void cd2RevoluteJoint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
 {
-	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, cd2Finite(lower) && cd2Finite(upper) && lower <= upper);
+	cd2Joint* joint =
+		cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, cd2Finite(lower) && cd2Finite(upper) && lower <= upper);
 	if (joint != NULL)
 	{
 		joint->data.lower = cdClamp(lower, -CD_PI, CD_PI);
@@ -626,7 +641,8 @@ cdReal cd2RevoluteJoint_GetAngle(cd2JointId jointId)
 	{
 		return CD_R(0.0);
 	}
-	cd2Rot qA = world->bodies.data[joint->bodyA].transform.q, qB = world->bodies.data[joint->bodyB].transform.q;
+	cd2Rot qA = world->bodies.data[joint->bodyA].transform.q,
+		   qB = world->bodies.data[joint->bodyB].transform.q;
 	cdReal angle = cd2RotGetAngle(cd2InvMulRot(qA, qB)) - joint->data.referenceAngle;
 	while (angle > CD_PI)
 	{
@@ -688,6 +704,153 @@ cdReal cd2DistanceJoint_GetCurrentLength(cd2JointId jointId)
 	return cd2VecDistance(pA, pB);
 }
 
+void cd2DistanceJoint_SetLengthRange(cd2JointId jointId, cdReal minLength, cdReal maxLength)
+{
+	cd2Joint* joint =
+		cd2JointForSet(jointId, CD2_DISTANCE_JOINT,
+					   cd2NonNeg(minLength) && !(maxLength != maxLength) && minLength <= maxLength);
+	if (joint != NULL)
+	{
+		joint->data.minLength = minLength;
+		joint->data.maxLength = maxLength;
+	}
+}
+
+/* A joint of one of the kinds that have springs, motors or limits, for a setter. */
+static cd2Joint* cd2JointForOption(cd2JointId jointId, bool valid, bool allowWeld)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return NULL;
+	}
+	bool kind = joint->type == CD2_DISTANCE_JOINT || joint->type == CD2_REVOLUTE_JOINT ||
+				joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT ||
+				(allowWeld && joint->type == CD2_WELD_JOINT);
+	if (!kind || !valid)
+	{
+		CD2_REFUSE("joint setter: this joint kind has no such option, or a NaN/Inf/negative value");
+		return NULL;
+	}
+	cd2WakeBody(world, joint->bodyA);
+	cd2WakeBody(world, joint->bodyB);
+	return joint;
+}
+
+void cd2Joint_EnableSpring(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableSpring != flag)
+		{
+			joint->data.springImpulse = CD_R(0.0); /* warm starting must not keep a removed spring */
+		}
+		joint->data.enableSpring = flag;
+	}
+}
+
+void cd2Joint_SetSpringHertz(cd2JointId jointId, cdReal hertz)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(hertz), true);
+	if (joint != NULL)
+	{
+		joint->data.hertz = hertz;
+	}
+}
+
+void cd2Joint_SetSpringDampingRatio(cd2JointId jointId, cdReal dampingRatio)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(dampingRatio), true);
+	if (joint != NULL)
+	{
+		joint->data.dampingRatio = dampingRatio;
+	}
+}
+
+void cd2Joint_EnableMotor(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableMotor != flag)
+		{
+			joint->data.motorImpulse = CD_R(0.0);
+		}
+		joint->data.enableMotor = flag;
+	}
+}
+
+void cd2Joint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2Finite(motorSpeed), false);
+	if (joint != NULL)
+	{
+		joint->data.motorSpeed = motorSpeed;
+	}
+}
+
+void cd2Joint_SetMaxMotor(cd2JointId jointId, cdReal maxForceOrTorque)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(maxForceOrTorque), false);
+	if (joint != NULL)
+	{
+		joint->data.maxMotorForce = maxForceOrTorque;
+	}
+}
+
+void cd2Joint_EnableLimit(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
+		joint->data.enableLimit = flag;
+	}
+}
+
+void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
+{
+	cd2Joint* joint =
+		cd2JointForOption(jointId, cd2Finite(lower) && cd2Finite(upper) && lower <= upper, false);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (joint->type == CD2_DISTANCE_JOINT)
+	{
+		CD2_REFUSE("cd2Joint_SetLimits: use cd2DistanceJoint_SetLengthRange for distance joints");
+		return;
+	}
+	if (joint->type == CD2_REVOLUTE_JOINT)
+	{
+		lower = cdClamp(lower, -CD_PI, CD_PI);
+		upper = cdClamp(upper, -CD_PI, CD_PI);
+	}
+	joint->data.lower = lower;
+	joint->data.upper = upper;
+}
+
+cdReal cd2Joint_GetTranslation(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	if (joint == NULL || (joint->type != CD2_PRISMATIC_JOINT && joint->type != CD2_WHEEL_JOINT))
+	{
+		return CD_R(0.0);
+	}
+	const cd2Body* a = world->bodies.data + joint->bodyA;
+	const cd2Body* b = world->bodies.data + joint->bodyB;
+	cd2Vec pA = cd2TransformPoint(a->transform, joint->data.localAnchorA);
+	cd2Vec pB = cd2TransformPoint(b->transform, joint->data.localAnchorB);
+	return cd2Dot(cd2RotateVector(a->transform.q, joint->data.localAxisA), cd2Sub(pB, pA));
+}
+
 /* ---- solver dispatch ----------------------------------------------------------------------------- */
 static cd2SolverBody s_jointStaticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
 										  {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
@@ -737,7 +900,8 @@ void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 		d->anchorA = cd2RotateVector(a->transform.q, cd2Sub(d->localAnchorA, a->localCenter));
 		d->anchorB = cd2RotateVector(b->transform.q, cd2Sub(d->localAnchorB, b->localCenter));
 		d->deltaCenter = cd2Sub(b->center, a->center);
-		d->deltaAngle = cd2UnwindAngle(cd2RotGetAngle(cd2InvMulRot(a->transform.q, b->transform.q)) - d->referenceAngle);
+		d->deltaAngle =
+			cd2UnwindAngle(cd2RotGetAngle(cd2InvMulRot(a->transform.q, b->transform.q)) - d->referenceAngle);
 		d->jointSoftness = context->jointSoftness;
 		if (joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT)
 		{
@@ -751,29 +915,29 @@ void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 		cd2MakeArgs(world, context, index, &args, &scratchA, &scratchB);
 		switch (joint->type)
 		{
-		case CD2_DISTANCE_JOINT:
-			cd2PrepareDistanceJoint(&args);
-			break;
-		case CD2_REVOLUTE_JOINT:
-			cd2PrepareRevoluteJoint(&args);
-			break;
-		case CD2_WELD_JOINT:
-			cd2PrepareWeldJoint(&args);
-			break;
-		case CD2_MOUSE_JOINT:
-			cd2PrepareMouseJoint(&args);
-			break;
-		case CD2_MOTOR_JOINT:
-			cd2PrepareMotorJoint(&args);
-			break;
-		case CD2_PRISMATIC_JOINT:
-			cd2PreparePrismaticJoint(&args);
-			break;
-		case CD2_WHEEL_JOINT:
-			cd2PrepareWheelJoint(&args);
-			break;
-		case CD2_FILTER_JOINT:
-			break;
+			case CD2_DISTANCE_JOINT:
+				cd2PrepareDistanceJoint(&args);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				cd2PrepareRevoluteJoint(&args);
+				break;
+			case CD2_WELD_JOINT:
+				cd2PrepareWeldJoint(&args);
+				break;
+			case CD2_MOUSE_JOINT:
+				cd2PrepareMouseJoint(&args);
+				break;
+			case CD2_MOTOR_JOINT:
+				cd2PrepareMotorJoint(&args);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				cd2PreparePrismaticJoint(&args);
+				break;
+			case CD2_WHEEL_JOINT:
+				cd2PrepareWheelJoint(&args);
+				break;
+			case CD2_FILTER_JOINT:
+				break;
 		}
 	}
 }
@@ -787,29 +951,29 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
 		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
 		switch (args.joint->type)
 		{
-		case CD2_DISTANCE_JOINT:
-			cd2WarmStartDistanceJoint(&args);
-			break;
-		case CD2_REVOLUTE_JOINT:
-			cd2WarmStartRevoluteJoint(&args);
-			break;
-		case CD2_WELD_JOINT:
-			cd2WarmStartWeldJoint(&args);
-			break;
-		case CD2_MOUSE_JOINT:
-			cd2WarmStartMouseJoint(&args);
-			break;
-		case CD2_MOTOR_JOINT:
-			cd2WarmStartMotorJoint(&args);
-			break;
-		case CD2_PRISMATIC_JOINT:
-			cd2WarmStartPrismaticJoint(&args);
-			break;
-		case CD2_WHEEL_JOINT:
-			cd2WarmStartWheelJoint(&args);
-			break;
-		case CD2_FILTER_JOINT:
-			break;
+			case CD2_DISTANCE_JOINT:
+				cd2WarmStartDistanceJoint(&args);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				cd2WarmStartRevoluteJoint(&args);
+				break;
+			case CD2_WELD_JOINT:
+				cd2WarmStartWeldJoint(&args);
+				break;
+			case CD2_MOUSE_JOINT:
+				cd2WarmStartMouseJoint(&args);
+				break;
+			case CD2_MOTOR_JOINT:
+				cd2WarmStartMotorJoint(&args);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				cd2WarmStartPrismaticJoint(&args);
+				break;
+			case CD2_WHEEL_JOINT:
+				cd2WarmStartWheelJoint(&args);
+				break;
+			case CD2_FILTER_JOINT:
+				break;
 		}
 	}
 }
@@ -823,29 +987,29 @@ void cd2SolveJoints(cd2World* world, cd2StepContext* context, bool useBias)
 		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
 		switch (args.joint->type)
 		{
-		case CD2_DISTANCE_JOINT:
-			cd2SolveDistanceJoint(&args, useBias);
-			break;
-		case CD2_REVOLUTE_JOINT:
-			cd2SolveRevoluteJoint(&args, useBias);
-			break;
-		case CD2_WELD_JOINT:
-			cd2SolveWeldJoint(&args, useBias);
-			break;
-		case CD2_MOUSE_JOINT:
-			cd2SolveMouseJoint(&args, useBias);
-			break;
-		case CD2_MOTOR_JOINT:
-			cd2SolveMotorJoint(&args, useBias);
-			break;
-		case CD2_PRISMATIC_JOINT:
-			cd2SolvePrismaticJoint(&args, useBias);
-			break;
-		case CD2_WHEEL_JOINT:
-			cd2SolveWheelJoint(&args, useBias);
-			break;
-		case CD2_FILTER_JOINT:
-			break;
+			case CD2_DISTANCE_JOINT:
+				cd2SolveDistanceJoint(&args, useBias);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				cd2SolveRevoluteJoint(&args, useBias);
+				break;
+			case CD2_WELD_JOINT:
+				cd2SolveWeldJoint(&args, useBias);
+				break;
+			case CD2_MOUSE_JOINT:
+				cd2SolveMouseJoint(&args, useBias);
+				break;
+			case CD2_MOTOR_JOINT:
+				cd2SolveMotorJoint(&args, useBias);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				cd2SolvePrismaticJoint(&args, useBias);
+				break;
+			case CD2_WHEEL_JOINT:
+				cd2SolveWheelJoint(&args, useBias);
+				break;
+			case CD2_FILTER_JOINT:
+				break;
 		}
 	}
 }
@@ -861,37 +1025,38 @@ void cd2StoreJointReactions(cd2World* world, cd2StepContext* context)
 		cdReal torque = CD_R(0.0);
 		switch (joint->type)
 		{
-		case CD2_DISTANCE_JOINT:
-			force = cd2Scale(d->impulse + d->lowerImpulse - d->upperImpulse + d->motorImpulse, d->axisA);
-			break;
-		case CD2_REVOLUTE_JOINT:
-			force = d->linearImpulse;
-			torque = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
-			break;
-		case CD2_WELD_JOINT:
-		case CD2_MOTOR_JOINT:
-			force = d->linearImpulse;
-			torque = d->angularImpulse;
-			break;
-		case CD2_MOUSE_JOINT:
-			force = d->linearImpulse;
-			break;
-		case CD2_PRISMATIC_JOINT:
-		{
-			cdReal axial = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
-			force = cd2Add(cd2Scale(d->linearImpulse.x, cd2LeftPerp(d->axisA)), cd2Scale(axial, d->axisA));
-			torque = d->linearImpulse.y;
-			break;
-		}
-		case CD2_WHEEL_JOINT:
-		{
-			cdReal axial = d->springImpulse + d->lowerImpulse - d->upperImpulse;
-			force = cd2Add(cd2Scale(d->impulse, cd2LeftPerp(d->axisA)), cd2Scale(axial, d->axisA));
-			torque = d->motorImpulse;
-			break;
-		}
-		case CD2_FILTER_JOINT:
-			break;
+			case CD2_DISTANCE_JOINT:
+				force = cd2Scale(d->impulse + d->lowerImpulse - d->upperImpulse + d->motorImpulse, d->axisA);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				force = d->linearImpulse;
+				torque = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
+				break;
+			case CD2_WELD_JOINT:
+			case CD2_MOTOR_JOINT:
+				force = d->linearImpulse;
+				torque = d->angularImpulse;
+				break;
+			case CD2_MOUSE_JOINT:
+				force = d->linearImpulse;
+				break;
+			case CD2_PRISMATIC_JOINT:
+			{
+				cdReal axial = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
+				force =
+					cd2Add(cd2Scale(d->linearImpulse.x, cd2LeftPerp(d->axisA)), cd2Scale(axial, d->axisA));
+				torque = d->linearImpulse.y;
+				break;
+			}
+			case CD2_WHEEL_JOINT:
+			{
+				cdReal axial = d->springImpulse + d->lowerImpulse - d->upperImpulse;
+				force = cd2Add(cd2Scale(d->impulse, cd2LeftPerp(d->axisA)), cd2Scale(axial, d->axisA));
+				torque = d->motorImpulse;
+				break;
+			}
+			case CD2_FILTER_JOINT:
+				break;
 		}
 		joint->constraintForce = cd2Scale(inv_h, force);
 		joint->constraintTorque = inv_h * torque;

@@ -11,7 +11,8 @@ static inline cdReal cd2RelativeAngle(cd2Rot a, cd2Rot b)
 }
 
 /* Applies P at rA on A (negative) and at rB on B (positive), plus an angular impulse L. */
-static inline void cd2ApplyJointImpulse(cd2SolverBody* a, cd2SolverBody* b, cd2Vec rA, cd2Vec rB, cd2Vec P, cdReal L)
+static inline void cd2ApplyJointImpulse(cd2SolverBody* a, cd2SolverBody* b, cd2Vec rA, cd2Vec rB, cd2Vec P,
+										cdReal L)
 {
 	a->linearVelocity = cd2MulSub(a->linearVelocity, a->invMass, P);
 	a->angularVelocity -= a->invInertia * (cd2Cross(rA, P) + L);
@@ -27,7 +28,8 @@ static inline cd2Vec cd2AnchorVelocity(const cd2SolverBody* a, const cd2SolverBo
 }
 
 /* The point constraint's 2x2 effective mass matrix. */
-static inline cd2Mat22 cd2PointMassMatrix(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
+static inline cd2Mat22 cd2PointMassMatrix(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA,
+										  cd2Vec rB)
 {
 	cdReal mA = a->invMass, mB = b->invMass, iA = a->invInertia, iB = b->invInertia;
 	cd2Mat22 K;

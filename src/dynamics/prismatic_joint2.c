@@ -49,7 +49,6 @@ void cd2PreparePrismaticJoint(cd2JointSolverArgs* args)
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
 }
 
-
 void cd2WarmStartPrismaticJoint(cd2JointSolverArgs* args)
 {
 	cd2JointData* d = &args->joint->data;

@@ -81,35 +81,37 @@ static cd2Polygon cd2TransformPolygon(const cd2Polygon* p, cd2Transform xf)
 
 cd2Shape cd2MakeTaggedShape(const cd2WorldShape* shape, cd2Transform xf)
 {
+	/* Only the member of the shape's type is written: this runs twice per contact per step, and
+	 * clearing the whole union (a polygon's size) cost more than the transform. */
 	cd2Shape out;
-	memset(&out, 0, sizeof(out));
+	out.type = CD2_SHAPE_CIRCLE;
 	switch (shape->type)
 	{
-	case CD2_WORLD_SHAPE_CIRCLE:
-		out.type = CD2_SHAPE_CIRCLE;
-		out.circle.center = cd2TransformPoint(xf, shape->geometry.circle.center);
-		out.circle.radius = shape->geometry.circle.radius;
-		break;
-	case CD2_WORLD_SHAPE_CAPSULE:
-		out.type = CD2_SHAPE_CAPSULE;
-		out.capsule.p1 = cd2TransformPoint(xf, shape->geometry.capsule.p1);
-		out.capsule.p2 = cd2TransformPoint(xf, shape->geometry.capsule.p2);
-		out.capsule.radius = shape->geometry.capsule.radius;
-		break;
-	case CD2_WORLD_SHAPE_POLYGON:
-		out.type = CD2_SHAPE_POLYGON;
-		out.polygon = cd2TransformPolygon(&shape->geometry.polygon, xf);
-		break;
-	case CD2_WORLD_SHAPE_SEGMENT:
-		out.type = CD2_SHAPE_SEGMENT;
-		out.segment.p1 = cd2TransformPoint(xf, shape->geometry.segment.p1);
-		out.segment.p2 = cd2TransformPoint(xf, shape->geometry.segment.p2);
-		break;
-	case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
-		out.type = CD2_SHAPE_SEGMENT;
-		out.segment.p1 = cd2TransformPoint(xf, shape->geometry.chainSegment.p1);
-		out.segment.p2 = cd2TransformPoint(xf, shape->geometry.chainSegment.p2);
-		break;
+		case CD2_WORLD_SHAPE_CIRCLE:
+			out.type = CD2_SHAPE_CIRCLE;
+			out.circle.center = cd2TransformPoint(xf, shape->geometry.circle.center);
+			out.circle.radius = shape->geometry.circle.radius;
+			break;
+		case CD2_WORLD_SHAPE_CAPSULE:
+			out.type = CD2_SHAPE_CAPSULE;
+			out.capsule.p1 = cd2TransformPoint(xf, shape->geometry.capsule.p1);
+			out.capsule.p2 = cd2TransformPoint(xf, shape->geometry.capsule.p2);
+			out.capsule.radius = shape->geometry.capsule.radius;
+			break;
+		case CD2_WORLD_SHAPE_POLYGON:
+			out.type = CD2_SHAPE_POLYGON;
+			out.polygon = cd2TransformPolygon(&shape->geometry.polygon, xf);
+			break;
+		case CD2_WORLD_SHAPE_SEGMENT:
+			out.type = CD2_SHAPE_SEGMENT;
+			out.segment.p1 = cd2TransformPoint(xf, shape->geometry.segment.p1);
+			out.segment.p2 = cd2TransformPoint(xf, shape->geometry.segment.p2);
+			break;
+		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
+			out.type = CD2_SHAPE_SEGMENT;
+			out.segment.p1 = cd2TransformPoint(xf, shape->geometry.chainSegment.p1);
+			out.segment.p2 = cd2TransformPoint(xf, shape->geometry.chainSegment.p2);
+			break;
 	}
 	return out;
 }
@@ -126,6 +128,13 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 	const cd2Body* body = world->bodies.data + shape->body;
 	cd2Aabb aabb = cd2ComputeWorldShapeAabb(shape, body->transform);
 	aabb = cd2AabbInflate(aabb, CD_SPECULATIVE_DISTANCE);
+	if (body->type != CD_STATIC_BODY && world->stepTimeStep > CD_R(0.0))
+	{
+		/* Reach where the body will be next step, so its contacts exist before it gets there. */
+		cd2Vec d = cd2Scale(world->stepTimeStep, body->linearVelocity);
+		cd2Aabb ahead = {cd2Add(aabb.min, d), cd2Add(aabb.max, d)};
+		aabb = cd2AabbUnion(aabb, ahead);
+	}
 	shape->aabb = aabb;
 	if (!body->enabled)
 	{
@@ -410,7 +419,8 @@ static cd2ChainRec* cd2LookupChain(cd2ChainId id, cd2World** outWorld, bool muta
 {
 	cd2World* world = cd2GetWorldFromIndex(id.world0);
 	if (world == NULL || id.index1 <= 0 || id.index1 > world->chains.count ||
-		!world->chains.data[id.index1 - 1].inUse || world->chains.data[id.index1 - 1].generation != id.generation)
+		!world->chains.data[id.index1 - 1].inUse ||
+		world->chains.data[id.index1 - 1].generation != id.generation)
 	{
 		CD2_REFUSE("stale or null chain id");
 		return NULL;

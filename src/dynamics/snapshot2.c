@@ -261,14 +261,15 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	for (int i = 0; ok && i < s.contacts.count; ++i)
 	{
 		const cd2Contact* c = s.contacts.data + i;
-		ok = !c->inUse || (c->shapeA >= 0 && c->shapeA < s.shapes.count && c->shapeB >= 0 &&
-						   c->shapeB < s.shapes.count && c->bodyA >= 0 && c->bodyA < s.bodies.count &&
-						   c->bodyB >= 0 && c->bodyB < s.bodies.count);
+		ok = !c->inUse ||
+			 (c->shapeA >= 0 && c->shapeA < s.shapes.count && c->shapeB >= 0 && c->shapeB < s.shapes.count &&
+			  c->bodyA >= 0 && c->bodyA < s.bodies.count && c->bodyB >= 0 && c->bodyB < s.bodies.count);
 	}
 	for (int i = 0; ok && i < s.joints.count; ++i)
 	{
 		const cd2Joint* j = s.joints.data + i;
-		ok = !j->inUse || (j->bodyA >= 0 && j->bodyA < s.bodies.count && j->bodyB >= 0 && j->bodyB < s.bodies.count);
+		ok = !j->inUse ||
+			 (j->bodyA >= 0 && j->bodyA < s.bodies.count && j->bodyB >= 0 && j->bodyB < s.bodies.count);
 	}
 	if (!ok)
 	{
@@ -343,7 +344,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->islands.data = s.islands.data;
 	world->islands.count = s.islands.count;
 	world->islands.capacity = s.islands.capacity;
-	cdIdPool* pools[6] = {&world->bodyPool, &world->shapePool, &world->chainPool,
+	cdIdPool* pools[6] = {&world->bodyPool,	   &world->shapePool, &world->chainPool,
 						  &world->contactPool, &world->jointPool, &world->islandPool};
 	for (int i = 0; i < 6; ++i)
 	{
@@ -367,5 +368,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->sensorBeginEvents.count = 0;
 	world->sensorEndEvents.count = 0;
 	world->moveEvents.count = 0;
+	world->stepEndEventCount = 0;
+	world->stepSensorEndEventCount = 0;
 	return CD_OK;
 }

@@ -6,6 +6,8 @@
  * independent sets and run them wide. */
 #include "world2_internal.h"
 
+#include "../base/graph_color.h"
+
 cd2Softness cd2MakeSoft(cdReal hertz, cdReal zeta, cdReal h)
 {
 	cd2Softness soft = {CD_R(0.0), CD_R(1.0), CD_R(0.0)};
@@ -129,7 +131,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	cdReal contactHertz = cdMin(world->contactHertz, CD_R(0.125) * context.inv_h);
 	context.contactSoftness = cd2MakeSoft(contactHertz, world->contactDampingRatio, context.h);
 	context.staticSoftness = cd2MakeSoft(CD_R(2.0) * contactHertz, world->contactDampingRatio, context.h);
-	context.jointSoftness = cd2MakeSoft(CD_R(2.0) * contactHertz, world->jointDampingRatio, context.h);
+	/* Joints: the world's joint stiffness, capped at a quarter of the sub-step rate. */
+	cdReal jointHertz = cdMin(world->jointHertz, CD_R(0.25) * context.inv_h);
+	context.jointSoftness = cd2MakeSoft(jointHertz, world->jointDampingRatio, context.h);
 	context.restitutionThreshold = world->restitutionThreshold;
 	context.maxLinearVelocity = world->maximumLinearSpeed * cdGetLengthUnitsPerMeter();
 	context.contactPushMaxVelocity = world->contactPushMaxVelocity * cdGetLengthUnitsPerMeter();
@@ -137,7 +141,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* The awake bodies, dense. */
 	int bodyCapacity = world->bodies.count;
-	context.bodies = (cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
+	context.bodies =
+		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
 	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL))
 	{
@@ -180,11 +185,42 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		{
 			continue;
 		}
-		if (world->bodies.data[contact->bodyA].solverIndex < 0 && world->bodies.data[contact->bodyB].solverIndex < 0)
+		if (world->bodies.data[contact->bodyA].solverIndex < 0 &&
+			world->bodies.data[contact->bodyB].solverIndex < 0)
 		{
 			continue;
 		}
 		context.constraints[context.constraintCount++].contact = i;
+	}
+	/* Colour order (see graph_color.h). */
+	if (context.constraintCount > 1)
+	{
+		int n = context.constraintCount;
+		int* bodyA = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* bodyB = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* colors = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* order = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* contacts = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && contacts != NULL)
+		{
+			for (int i = 0; i < n; ++i)
+			{
+				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
+				const cd2Body* a = world->bodies.data + contact->bodyA;
+				const cd2Body* b = world->bodies.data + contact->bodyB;
+				/* Kinematic bodies are immovable for the solver: no colour. */
+				bodyA[i] = a->type == CD_DYNAMIC_BODY ? a->solverIndex : CD2_NULL_INDEX;
+				bodyB[i] = b->type == CD_DYNAMIC_BODY ? b->solverIndex : CD2_NULL_INDEX;
+				contacts[i] = context.constraints[i].contact;
+			}
+			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
+			{
+				for (int i = 0; i < n; ++i)
+				{
+					context.constraints[i].contact = contacts[order[i]];
+				}
+			}
+		}
 	}
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
 	for (int i = 0; i < world->joints.count && context.joints != NULL; ++i)

@@ -9,8 +9,9 @@ void cd2PrepareWeldJoint(cd2JointSolverArgs* args)
 	cdReal k = args->a->invInertia + args->b->invInertia;
 	d->axialMass = k > CD_R(0.0) ? CD_R(1.0) / k : CD_R(0.0);
 	d->springSoftness = d->hertz == CD_R(0.0) ? d->jointSoftness : cd2MakeSoft(d->hertz, d->dampingRatio, h);
-	d->angularSoftness = d->angularHertz == CD_R(0.0) ? d->jointSoftness
-													  : cd2MakeSoft(d->angularHertz, d->angularDampingRatio, h);
+	d->angularSoftness = d->angularHertz == CD_R(0.0)
+							 ? d->jointSoftness
+							 : cd2MakeSoft(d->angularHertz, d->angularDampingRatio, h);
 }
 
 void cd2WarmStartWeldJoint(cd2JointSolverArgs* args)

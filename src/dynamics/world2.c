@@ -205,21 +205,39 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 		return;
 	}
 	world->locked = true;
+	/* Drop the last step's events; keep end events that destructions between the steps added. */
+	int keepEnd = world->endEvents.count - world->stepEndEventCount;
+	if (keepEnd > 0 && world->stepEndEventCount > 0)
+	{
+		memmove(world->endEvents.data, world->endEvents.data + world->stepEndEventCount,
+				(size_t)keepEnd * sizeof(cd2ContactEndTouchEvent));
+	}
+	world->endEvents.count = keepEnd;
+	int keepSensorEnd = world->sensorEndEvents.count - world->stepSensorEndEventCount;
+	if (keepSensorEnd > 0 && world->stepSensorEndEventCount > 0)
+	{
+		memmove(world->sensorEndEvents.data, world->sensorEndEvents.data + world->stepSensorEndEventCount,
+				(size_t)keepSensorEnd * sizeof(cd2SensorEndTouchEvent));
+	}
+	world->sensorEndEvents.count = keepSensorEnd;
 	world->beginEvents.count = 0;
-	world->endEvents.count = 0;
 	world->hitEvents.count = 0;
 	world->sensorBeginEvents.count = 0;
-	world->sensorEndEvents.count = 0;
 	world->moveEvents.count = 0;
 
 	/* New pairs become contacts, then every awake contact gets its manifold. */
+	world->stepTimeStep = timeStep;
 	cd2UpdateBroadPhasePairs(world);
-	cd2UpdateContacts(world);
+	cd2UpdateContacts(world, timeStep);
 	if (timeStep > CD_R(0.0))
 	{
 		cd2Solve(world, timeStep, subStepCount);
 	}
+	cd2UpdateSensors(world);
 	cdArena_Reset(&world->arena);
+	world->stepTimeStep = CD_R(0.0);
+	world->stepEndEventCount = world->endEvents.count;
+	world->stepSensorEndEventCount = world->sensorEndEvents.count;
 	world->locked = false;
 }
 

@@ -128,9 +128,9 @@ typedef struct cd2JointData
 	cd2Vec localAxisA;
 	cdReal referenceAngle;
 	cdReal length, minLength, maxLength;
-	cdReal hertz, dampingRatio;		 /* spring */
+	cdReal hertz, dampingRatio; /* spring */
 	cdReal angularHertz, angularDampingRatio;
-	cdReal lower, upper;			 /* limit (angle or translation) */
+	cdReal lower, upper;			  /* limit (angle or translation) */
 	cdReal motorSpeed, maxMotorForce; /* force or torque */
 	cdReal maxForce, maxTorque, correctionFactor;
 	cd2Vec target, linearOffset;
@@ -194,6 +194,7 @@ typedef struct cd2ContactConstraint
 	cdReal invMassA, invIA, invMassB, invIB;
 	cdReal friction, restitution, rollingResistance, tangentSpeed;
 	cdReal rollingImpulse, rollingMass;
+	cdReal normalAcceleration; /* of B relative to A from gravity and forces, along the normal */
 	cd2Softness softness;
 	int pointCount;
 	cd2ContactConstraintPoint points[2];
@@ -231,8 +232,8 @@ typedef struct cd2World
 	bool locked;
 	/* settings (saved with the state) */
 	cd2Vec gravity;
-	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio,
-		contactPushMaxVelocity, jointHertz, jointDampingRatio, maximumLinearSpeed;
+	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio, contactPushMaxVelocity,
+		jointHertz, jointDampingRatio, maximumLinearSpeed;
 	bool enableSleep, enableContinuous;
 	/* objects */
 	CD_ARRAY(cd2Body) bodies;
@@ -258,6 +259,10 @@ typedef struct cd2World
 	cd2SensorBeginArray sensorBeginEvents;
 	cd2SensorEndArray sensorEndEvents;
 	cd2MoveEventArray moveEvents;
+	/* End events recorded by the last step; those appended after it (a shape destroyed between
+	 * steps) are kept for the next step's arrays. */
+	int stepEndEventCount, stepSensorEndEventCount;
+	cdReal stepTimeStep; /* of the step in progress (0 outside a step) */
 	cdArena arena;
 	bool outOfMemory;
 } cd2World;
@@ -291,7 +296,9 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 
 /* ---- contact2.c ------------------------------------------------------------------------------ */
 void cd2UpdateBroadPhasePairs(cd2World* world);
-void cd2UpdateContacts(cd2World* world);
+void cd2UpdateContacts(cd2World* world, cdReal timeStep);
+/* Sensor overlaps at the end of the step, with their begin and end events. */
+void cd2UpdateSensors(cd2World* world);
 void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies);
 /* The single place where a pair's manifold is computed: shapes in their body frames, B's
  * transform in A's frame; the manifold comes back in A's frame. */

@@ -11,7 +11,8 @@ cd2QueryFilter cd2DefaultQueryFilter(void)
 
 static bool cd2QueryAccepts(const cd2WorldShape* shape, cd2QueryFilter filter)
 {
-	return (shape->filter.categoryBits & filter.maskBits) != 0 && (shape->filter.maskBits & filter.categoryBits) != 0;
+	return (shape->filter.categoryBits & filter.maskBits) != 0 &&
+		   (shape->filter.maskBits & filter.categoryBits) != 0;
 }
 
 typedef struct cd2OverlapContext
@@ -143,7 +144,8 @@ void cd2World_CastRay(cd2WorldId worldId, cd2Vec origin, cd2Vec translation, cd2
 	cd2BroadPhase_RayCast(world->broadPhase, ray, cd2RayCallback, &c);
 }
 
-static cdReal cd2ClosestCallback(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal, cdReal fraction, void* context)
+static cdReal cd2ClosestCallback(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal, cdReal fraction,
+								 void* context)
 {
 	cd2RayResult* result = (cd2RayResult*)context;
 	result->shapeId = shapeId;
@@ -154,7 +156,8 @@ static cdReal cd2ClosestCallback(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal
 	return fraction;
 }
 
-cd2RayResult cd2World_CastRayClosest(cd2WorldId worldId, cd2Vec origin, cd2Vec translation, cd2QueryFilter filter)
+cd2RayResult cd2World_CastRayClosest(cd2WorldId worldId, cd2Vec origin, cd2Vec translation,
+									 cd2QueryFilter filter)
 {
 	cd2RayResult result;
 	memset(&result, 0, sizeof(result));
@@ -209,7 +212,8 @@ void cd2World_CastShape(cd2WorldId worldId, const cd2Shape* shape, cd2Vec transl
 						cd2CastResultFcn* fcn, void* context)
 {
 	cd2World* world = cd2QueryWorld(worldId);
-	if (world == NULL || fcn == NULL || shape == NULL || !cd2IsValidShape(shape) || !cd2IsValidVec(translation))
+	if (world == NULL || fcn == NULL || shape == NULL || !cd2IsValidShape(shape) ||
+		!cd2IsValidVec(translation))
 	{
 		return;
 	}
