@@ -28,13 +28,15 @@ import sys
 VERBS = [
     "Make", "Compute", "Create", "Destroy", "Validate", "IsValid", "Is", "Get", "Set", "Default",
     "Alloc", "Free", "Transform", "Inv", "Mul", "Query", "Find", "Update", "Move", "Rebuild",
+    "Clip", "Solve",
 ]
 # Query families: the generic dispatchers and their pair functions are named after them.
 FAMILIES = [
     "Overlap", "PointIn", "ClosestPointOn", "ClosestPoints", "Raycast", "Distance", "Collide",
     "ShapeCast", "TimeOfImpact",
 ]
-VALUE_TYPES = ["Aabb", "Vec", "Rot", "Quat", "Mat22", "Mat33", "Transform", "Manifold"]
+VALUE_TYPES = ["Aabb", "Vec", "Rot", "Quat", "Mat22", "Mat33", "Transform", "Manifold",
+               "WorldId", "BodyId", "ShapeId", "JointId", "ChainId"]
 MATH_HEADERS = {"math2.h", "math3.h", "base.h"}
 
 # name -> reason. Keep this list short: every line is a name users must learn as an exception.
@@ -140,10 +142,13 @@ def check(include_dir):
     functions, types, macros, constants, shape_enums = parse(include_dir)
     errors = []
     handles = {t for t, h in types.items() if h.endswith("(opaque)")}
-    for name in functions:
+    for name, (_, _, first) in functions.items():
+        # cdNDestroyX(X*) frees a handle X; cdNDestroyX(XId) destroys an object known by an id
+        # (the worlds' bodies, shapes, joints), whose methods are cdNX_Verb(XId, ...).
         m = re.match(r"^(cd[23]?)Destroy(\w+)$", name)
-        if m:
+        if m and re.match(r"^(?:const\s+)?" + m.group(1) + m.group(2) + r"\s*\*", first):
             handles.add(m.group(1) + m.group(2))
+    created = {m.group(1) + m.group(2) for m in (re.match(r"^(cd[23]?)Create(\w+)$", f) for f in functions) if m}
 
     for name, header in types.items():
         if not re.match(r"^cd[23]?[A-Z][A-Za-z0-9]*$", name):
@@ -176,7 +181,7 @@ def check(include_dir):
             handle, verb = rest.split("_", 1)
             if not re.match(r"^[A-Z][A-Za-z0-9]*$", handle) or not re.match(r"^[A-Z][A-Za-z0-9]*$", verb):
                 errors.append(f"method {name} ({header}): prefix + Type_Verb, both PascalCase")
-            elif prefix + handle not in types and prefix + handle + "Id" not in types:
+            elif prefix + handle not in types and prefix + handle + "Id" not in types and prefix + handle not in created:
                 errors.append(f"method {name} ({header}): {prefix + handle} is not a public type")
             elif verb in ("Create", "Destroy"):
                 errors.append(f"method {name} ({header}): objects are made and freed by {prefix}{verb}{handle}")
