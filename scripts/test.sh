@@ -26,7 +26,7 @@ run_suite() {
 }
 
 run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_BUILD_JS_TESTS=ON
-run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON
+run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON -DCOLLIDE_BENCH_BOX2D_V3=OFF
 # The sanitizer build also builds the libFuzzer targets and runs each for a fixed number of
 # inputs (fuzz/CMakeLists.txt).
-CC=clang CXX=clang++ run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON -DCOLLIDE_BUILD_FUZZ=ON
+CC=clang CXX=clang++ run_suite sanitize -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON -DCOLLIDE_BUILD_FUZZ=ON -DCOLLIDE_BENCH_BOX2D_V3=OFF
