@@ -876,7 +876,7 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 		return failAt(loader, NULL, "a body must be an object, not %s", jsonTypeName(object));
 	}
 	ToolWorldBody* entry = &loader->out->bodies[index];
-	if (!checkFields(loader, object, s_bodyFields) || !readName(loader, object, entry->name))
+	if (!readName(loader, object, entry->name))
 	{
 		return false;
 	}
@@ -890,6 +890,10 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 				return failAt(loader, "name", "the name is already used by body #%d", i + 1);
 			}
 		}
+	}
+	if (!checkFields(loader, object, s_bodyFields))
+	{
+		return false;
 	}
 	cd2BodyDef def = cd2DefaultBodyDef();
 	const cJSON* type = cJSON_GetObjectItemCaseSensitive(object, "type");
