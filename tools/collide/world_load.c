@@ -31,6 +31,8 @@ typedef struct WLoader
 	int depth;
 	char context[160]; /* "body \"crate\"", "joint #3", ... prefixed to messages */
 	ToolWorld* out;
+	int* nameOrder; /* indices of the named bodies, sorted by name (for joints' look-ups) */
+	int namedCount;
 } WLoader;
 
 /* ---- the world API's refusals ---------------------------------------------------------------- */
@@ -512,8 +514,10 @@ static const Field s_shapeDefFields[] = {
 	{"oneWay", FIELD_SPECIAL, 0},
 	{"filter", FIELD_SPECIAL, 0},
 	{"type", FIELD_SPECIAL, 0},
+	{NULL, FIELD_SPECIAL, 0},
 };
-#define SHAPE_DEF_FIELD_COUNT (sizeof s_shapeDefFields / sizeof s_shapeDefFields[0])
+/* Without the terminator. */
+#define SHAPE_DEF_FIELD_COUNT (sizeof s_shapeDefFields / sizeof s_shapeDefFields[0] - 1)
 
 /* The geometry keys of each shape type (besides the common keys above). */
 typedef struct ShapeType
@@ -883,13 +887,6 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 	if (entry->name[0] != 0)
 	{
 		snprintf(loader->context, sizeof loader->context, "body \"%s\"", entry->name);
-		for (int i = 0; i < index; ++i)
-		{
-			if (strcmp(loader->out->bodies[i].name, entry->name) == 0)
-			{
-				return failAt(loader, "name", "the name is already used by body #%d", i + 1);
-			}
-		}
 	}
 	if (!checkFields(loader, object, s_bodyFields))
 	{
@@ -1105,12 +1102,24 @@ static bool findBody(WLoader* loader, const cJSON* object, const char* key, cd2B
 	{
 		return failAt(loader, key, "\"%s\" must be the name of a body, not %s", key, jsonTypeName(item));
 	}
-	for (int i = 0; i < loader->out->bodyCount; ++i)
+	int lo = 0, hi = loader->namedCount;
+	while (lo < hi)
 	{
-		if (loader->out->bodies[i].name[0] != 0 && strcmp(loader->out->bodies[i].name, item->valuestring) == 0)
+		int mid = lo + (hi - lo) / 2;
+		int body = loader->nameOrder[mid];
+		int order = strcmp(loader->out->bodies[body].name, item->valuestring);
+		if (order == 0)
 		{
-			*out = loader->out->bodies[i].id;
+			*out = loader->out->bodies[body].id;
 			return true;
+		}
+		if (order < 0)
+		{
+			lo = mid + 1;
+		}
+		else
+		{
+			hi = mid;
 		}
 	}
 	char shown[48];
@@ -1336,6 +1345,67 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 	return true;
 }
 
+/* ---- body names: sorted once, so that duplicates and joints' look-ups cost n log n ----------- */
+
+static const ToolWorldBody* s_sortBodies;
+
+static int compareBodyNames(const void* a, const void* b)
+{
+	int ia = *(const int*)a, ib = *(const int*)b;
+	int order = strcmp(s_sortBodies[ia].name, s_sortBodies[ib].name);
+	return order != 0 ? order : (ia > ib) - (ia < ib);
+}
+
+/* Sorts the named bodies; a name used twice is an error at its second use (the earliest such
+ * use in the file). Called with the path at "world". */
+static bool indexBodyNames(WLoader* loader)
+{
+	const ToolWorld* out = loader->out;
+	loader->nameOrder = malloc((size_t)(out->bodyCount > 0 ? out->bodyCount : 1) * sizeof(int));
+	if (loader->nameOrder == NULL)
+	{
+		return failAt(loader, NULL, "out of memory");
+	}
+	int n = 0;
+	for (int i = 0; i < out->bodyCount; ++i)
+	{
+		if (out->bodies[i].name[0] != 0)
+		{
+			loader->nameOrder[n++] = i;
+		}
+	}
+	loader->namedCount = n;
+	s_sortBodies = out->bodies;
+	qsort(loader->nameOrder, (size_t)n, sizeof(int), compareBodyNames);
+	int second = -1, first = -1;
+	for (int k = 1; k < n; ++k)
+	{
+		int a = loader->nameOrder[k - 1], b = loader->nameOrder[k];
+		if (strcmp(out->bodies[a].name, out->bodies[b].name) == 0 && (second < 0 || b < second))
+		{
+			/* Equal names sort by index: a is the earlier use (or a later duplicate of the first). */
+			int k0 = k - 1;
+			while (k0 > 0 && strcmp(out->bodies[loader->nameOrder[k0 - 1]].name, out->bodies[b].name) == 0)
+			{
+				--k0;
+			}
+			second = b;
+			first = loader->nameOrder[k0];
+		}
+	}
+	if (second >= 0)
+	{
+		snprintf(loader->context, sizeof loader->context, "body \"%s\"", out->bodies[second].name);
+		pushKey(loader, "bodies");
+		pushIndex(loader, second);
+		failAt(loader, "name", "the name is already used by body #%d", first + 1);
+		pop(loader);
+		pop(loader);
+		return false;
+	}
+	return true;
+}
+
 /* ---- the world ------------------------------------------------------------------------------- */
 
 static const Field s_worldFields[] = {
@@ -1446,6 +1516,10 @@ static bool readWorld(WLoader* loader, const cJSON* root, ToolWorld* out)
 	const cJSON* const arrays[2] = {bodies, joints};
 	for (int list = 0; list < 2; ++list)
 	{
+		if (list == 1 && !indexBodyNames(loader))
+		{
+			return false;
+		}
 		if (arrays[list] == NULL)
 		{
 			continue;
@@ -1490,6 +1564,7 @@ bool toolLoadWorld(const char* path, ToolWorld* world, ToolError* error)
 	cdSetAssertFcn(recordRefusal);
 	bool ok = readWorld(&loader, root, world);
 	cdSetAssertFcn(NULL);
+	free(loader.nameOrder);
 	cJSON_Delete(root);
 	free(text);
 	if (!ok)
