@@ -3,6 +3,9 @@
 #   [-DSTEPS=n] [-DBODIES=n] [-DARGS="..."] [-DXMLLINT=path]
 # csv: exit 0, a summary, and a CSV with a header and BODIES * (STEPS + 1) rows of 11 finite fields.
 # free-fall: the ball's height after 1 s is 100 - g t^2 / 2 within 1%, x unchanged.
+# one-way: the side-scroller's hero, thrown up from y = 1 under a one-way ledge (top at y = 3.15),
+# passes through it and stands on it: after STEPS steps y is 3.9 (+-0.05: capsule half-height
+# 0.75 above the top) and x is over the ledge.
 # png: frames 0, 10 and 20 exist and are PNG files of 320 x 240 pixels (signature and IHDR).
 # no-png: a build without cairo refuses --png with a clear message and exit 2.
 # svg: the final frame is an SVG document (well-formed XML when xmllint is there).
@@ -33,7 +36,7 @@ if(MODE STREQUAL "help")
   return()
 endif()
 
-if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall")
+if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall" OR MODE STREQUAL "one-way")
   set(csv ${OUT_DIR}/states.csv)
   run_tool(${SCENE} --steps ${STEPS} --csv ${csv})
   if(NOT status STREQUAL "0" OR NOT out MATCHES "steps: ${STEPS} of" OR NOT out MATCHES "ms/step: [0-9.]+"
@@ -67,6 +70,20 @@ if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall")
     endif()
     math(EXPR index "${index} + 1")
   endforeach()
+  if(MODE STREQUAL "one-way")
+    set(hero "")
+    foreach(line IN LISTS lines)
+      if(line MATCHES "^${STEPS},[^,]*,[0-9]+,hero,")
+        set(hero "${line}")
+      endif()
+    endforeach()
+    string(REPLACE "," ";" fields "${hero}")
+    list(GET fields 4 x)
+    list(GET fields 5 y)
+    if(NOT y MATCHES "^3\\.(8[5-9]|9[0-4])" OR NOT x MATCHES "^-[0-3]\\.")
+      message(FATAL_ERROR "the hero did not land on the one-way ledge: ${hero}")
+    endif()
+  endif()
   if(MODE STREQUAL "free-fall")
     list(GET lines -1 last)
     string(REPLACE "," ";" fields "${last}")
