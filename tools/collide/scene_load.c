@@ -1173,6 +1173,11 @@ static bool readDocument(Loader* loader, const cJSON* root, ToolDocument* docume
 	const cJSON* scenes = cJSON_GetObjectItemCaseSensitive(root, "scenes");
 	if (scenes == NULL)
 	{
+		if (cJSON_GetObjectItemCaseSensitive(root, "world") != NULL)
+		{
+			return failAt(loader, "world",
+						  "this is a physics scene (\"world\"): run it with `collide run`, see docs/SCENES.md");
+		}
 		if (cJSON_GetObjectItemCaseSensitive(root, "shapes") == NULL)
 		{
 			return failAt(loader, NULL,

@@ -171,7 +171,7 @@ static const char* printable(const char* text, char* buffer, size_t size)
 
 typedef enum FieldKind
 {
-	FIELD_REAL,	  /* any number in range */
+	FIELD_REAL, /* any number in range */
 	FIELD_BOOL,
 	FIELD_VEC,	  /* [x, y] */
 	FIELD_ANGLE,  /* radians; the key "...Degrees" variant is not offered: use "angle"/"degrees" */
@@ -206,8 +206,8 @@ static bool checkFields(WLoader* loader, const cJSON* object, const Field* field
 				size_t used = strlen(list);
 				snprintf(list + used, sizeof list - used, "%s\"%s\"", i > 0 ? ", " : "", fields[i].key);
 			}
-			return failAt(loader, key, "unknown field \"%s\" (expected %s)", printable(key, shown, sizeof shown),
-						  list);
+			return failAt(loader, key, "unknown field \"%s\" (expected %s)",
+						  printable(key, shown, sizeof shown), list);
 		}
 		for (const cJSON* other = object->child; other != child; other = other->next)
 		{
@@ -344,7 +344,8 @@ static bool readInt(WLoader* loader, const cJSON* object, const char* key, int m
 	}
 	if (value != floor(value) || value < (double)min || value > (double)max)
 	{
-		return failAt(loader, key, "\"%s\" must be a whole number from %d to %d, not %g", key, min, max, value);
+		return failAt(loader, key, "\"%s\" must be a whole number from %d to %d, not %g", key, min, max,
+					  value);
 	}
 	*out = (int)value;
 	return true;
@@ -424,7 +425,8 @@ static bool readBits(WLoader* loader, const cJSON* item, const char* key, uint64
 		double v = item->valuedouble;
 		if (!(v >= 0.0) || v > 9007199254740992.0 || v != floor(v))
 		{
-			return failAt(loader, key, "\"%s\" must be a whole number from 0 to 2^53, or a \"0x...\" string", key);
+			return failAt(loader, key, "\"%s\" must be a whole number from 0 to 2^53, or a \"0x...\" string",
+						  key);
 		}
 		*out = (uint64_t)v;
 		return true;
@@ -461,7 +463,8 @@ static bool readBits(WLoader* loader, const cJSON* item, const char* key, uint64
 		*out = value;
 		return true;
 	}
-	return failAt(loader, key, "\"%s\" must be a number or a \"0x...\" string, not %s", key, jsonTypeName(item));
+	return failAt(loader, key, "\"%s\" must be a number or a \"0x...\" string, not %s", key,
+				  jsonTypeName(item));
 }
 
 static bool readFilter(WLoader* loader, const cJSON* object, cd2Filter* filter)
@@ -676,7 +679,8 @@ static bool readShape(WLoader* loader, const cJSON* object, cd2BodyId body)
 	else if (strcmp(name, "capsule") == 0)
 	{
 		cd2Capsule capsule;
-		if (!readRequiredVec(loader, object, "p1", &capsule.p1) || !readRequiredVec(loader, object, "p2", &capsule.p2) ||
+		if (!readRequiredVec(loader, object, "p1", &capsule.p1) ||
+			!readRequiredVec(loader, object, "p2", &capsule.p2) ||
 			!readRequiredNumber(loader, object, "radius", &radius))
 		{
 			return false;
@@ -687,7 +691,8 @@ static bool readShape(WLoader* loader, const cJSON* object, cd2BodyId body)
 	else if (strcmp(name, "segment") == 0)
 	{
 		cd2Segment segment;
-		if (!readRequiredVec(loader, object, "p1", &segment.p1) || !readRequiredVec(loader, object, "p2", &segment.p2))
+		if (!readRequiredVec(loader, object, "p1", &segment.p1) ||
+			!readRequiredVec(loader, object, "p2", &segment.p2))
 		{
 			return false;
 		}
@@ -921,7 +926,8 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 					  printable(type->valuestring, shown, sizeof shown));
 	}
 	double angle = 0.0;
-	if (!readFields(loader, object, s_bodyFields, &def) || !readAngle(loader, object, "angle", "degrees", &angle))
+	if (!readFields(loader, object, s_bodyFields, &def) ||
+		!readAngle(loader, object, "angle", "degrees", &angle))
 	{
 		return false;
 	}
@@ -938,7 +944,8 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 	cd2BodyId id = cd2CreateBody(loader->out->world, &def);
 	if (cd2IsNullBodyId(id))
 	{
-		return failAt(loader, NULL, "refused by the world: %s", s_refusal[0] != 0 ? s_refusal : "invalid body");
+		return failAt(loader, NULL, "refused by the world: %s",
+					  s_refusal[0] != 0 ? s_refusal : "invalid body");
 	}
 	entry->id = id;
 	loader->out->bodyCount = index + 1;
@@ -976,7 +983,10 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 
 #define JOINT_COMMON_FIELDS                                                                                  \
 	{"type", FIELD_SPECIAL, 0}, {"name", FIELD_SPECIAL, 0}, {"bodyA", FIELD_SPECIAL, 0},                     \
-		{"bodyB", FIELD_SPECIAL, 0}, {"anchor", FIELD_SPECIAL, 0}
+		{"bodyB", FIELD_SPECIAL, 0},                                                                         \
+	{                                                                                                        \
+		"anchor", FIELD_SPECIAL, 0                                                                           \
+	}
 
 static const Field s_distanceFields[] = {
 	JOINT_COMMON_FIELDS,
@@ -1123,7 +1133,8 @@ static bool findBody(WLoader* loader, const cJSON* object, const char* key, cd2B
 		}
 	}
 	char shown[48];
-	return failAt(loader, key, "\"%s\": no body is named \"%s\"", key, printable(item->valuestring, shown, sizeof shown));
+	return failAt(loader, key, "\"%s\": no body is named \"%s\"", key,
+				  printable(item->valuestring, shown, sizeof shown));
 }
 
 static bool readJoint(WLoader* loader, const cJSON* object, int index)
@@ -1155,9 +1166,10 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 	{
 		const char* name;
 		const Field* fields;
-	} types[] = {{"distance", s_distanceFields}, {"filter", s_filterFields},	   {"motor", s_motorFields},
-				 {"mouse", s_mouseFields},		 {"prismatic", s_prismaticFields}, {"revolute", s_revoluteFields},
-				 {"weld", s_weldFields},		 {"wheel", s_wheelFields}};
+	} types[] = {{"distance", s_distanceFields},   {"filter", s_filterFields},
+				 {"motor", s_motorFields},		   {"mouse", s_mouseFields},
+				 {"prismatic", s_prismaticFields}, {"revolute", s_revoluteFields},
+				 {"weld", s_weldFields},		   {"wheel", s_wheelFields}};
 	int kind = -1;
 	for (int i = 0; i < (int)(sizeof types / sizeof types[0]); ++i)
 	{
@@ -1169,10 +1181,11 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 	if (kind < 0)
 	{
 		char shown[48];
-		return failAt(loader, "type",
-					  "unknown joint type \"%s\" (expected distance, filter, motor, mouse, prismatic, revolute, "
-					  "weld or wheel)",
-					  printable(typeItem->valuestring, shown, sizeof shown));
+		return failAt(
+			loader, "type",
+			"unknown joint type \"%s\" (expected distance, filter, motor, mouse, prismatic, revolute, "
+			"weld or wheel)",
+			printable(typeItem->valuestring, shown, sizeof shown));
 	}
 	const Field* fields = types[kind].fields;
 	cd2BodyId bodyA, bodyB;
@@ -1200,7 +1213,8 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 	}
 	if (hasAnchor && kind != 0 && kind != 4 && kind != 5 && kind != 6 && kind != 7)
 	{
-		return failAt(loader, "anchor", "\"anchor\" is for distance, prismatic, revolute, weld and wheel joints");
+		return failAt(loader, "anchor",
+					  "\"anchor\" is for distance, prismatic, revolute, weld and wheel joints");
 	}
 	if (hasAnchorB && !hasAnchor)
 	{
@@ -1208,7 +1222,8 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 	}
 	cd2Vec localA = cd2Body_GetLocalPoint(bodyA, anchor);
 	cd2Vec localB = cd2Body_GetLocalPoint(bodyB, hasAnchorB ? anchorB : anchor);
-	cdReal referenceAngle = cd2RotGetAngle(cd2Body_GetRotation(bodyB)) - cd2RotGetAngle(cd2Body_GetRotation(bodyA));
+	cdReal referenceAngle =
+		cd2RotGetAngle(cd2Body_GetRotation(bodyB)) - cd2RotGetAngle(cd2Body_GetRotation(bodyA));
 	s_refusal[0] = 0;
 	cd2WorldId world = loader->out->world;
 	cd2JointId id = CD2_NULL_JOINT_ID;
@@ -1339,7 +1354,8 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 	}
 	if (cd2IsNullJointId(id))
 	{
-		return failAt(loader, NULL, "refused by the world: %s", s_refusal[0] != 0 ? s_refusal : "invalid joint");
+		return failAt(loader, NULL, "refused by the world: %s",
+					  s_refusal[0] != 0 ? s_refusal : "invalid joint");
 	}
 	loader->out->jointCount += 1;
 	return true;
@@ -1440,7 +1456,8 @@ static bool readView(WLoader* loader, const cJSON* object, ToolWorld* out)
 		return failAt(loader, "view", "\"view\" must be an object with \"min\" and \"max\", not %s",
 					  jsonTypeName(view));
 	}
-	static const Field fields[] = {{"min", FIELD_SPECIAL, 0}, {"max", FIELD_SPECIAL, 0}, {NULL, FIELD_SPECIAL, 0}};
+	static const Field fields[] = {
+		{"min", FIELD_SPECIAL, 0}, {"max", FIELD_SPECIAL, 0}, {NULL, FIELD_SPECIAL, 0}};
 	pushKey(loader, "view");
 	cd2Vec lo, hi;
 	bool ok = checkFields(loader, view, fields) && readRequiredVec(loader, view, "min", &lo) &&
@@ -1465,7 +1482,8 @@ static bool readWorld(WLoader* loader, const cJSON* root, ToolWorld* out)
 {
 	if (!cJSON_IsObject(root))
 	{
-		return failAt(loader, NULL, "the top level must be an object with \"world\", not %s", jsonTypeName(root));
+		return failAt(loader, NULL, "the top level must be an object with \"world\", not %s",
+					  jsonTypeName(root));
 	}
 	static const Field rootFields[] = {{"world", FIELD_SPECIAL, 0}, {NULL, FIELD_SPECIAL, 0}};
 	if (!checkFields(loader, root, rootFields))
@@ -1475,7 +1493,8 @@ static bool readWorld(WLoader* loader, const cJSON* root, ToolWorld* out)
 	const cJSON* object = cJSON_GetObjectItemCaseSensitive(root, "world");
 	if (object == NULL)
 	{
-		return failAt(loader, NULL, "the top level needs \"world\" (a physics scene; `collide query` reads shape scenes)");
+		return failAt(loader, NULL,
+					  "the top level needs \"world\" (a physics scene; `collide query` reads shape scenes)");
 	}
 	if (!cJSON_IsObject(object))
 	{
@@ -1489,7 +1508,8 @@ static bool readWorld(WLoader* loader, const cJSON* root, ToolWorld* out)
 	int bodyCount, jointCount;
 	if (!checkFields(loader, object, s_worldFields) || !readFields(loader, object, s_worldFields, &def) ||
 		!readOptionalNumber(loader, object, "timeStep", &timeStep) ||
-		!readInt(loader, object, "subSteps", 1, TOOL_MAX_SUB_STEPS, &out->subSteps) || !readView(loader, object, out) ||
+		!readInt(loader, object, "subSteps", 1, TOOL_MAX_SUB_STEPS, &out->subSteps) ||
+		!readView(loader, object, out) ||
 		!readArray(loader, object, "bodies", 0, TOOL_MAX_WORLD_BODIES, &bodies, &bodyCount) ||
 		!readArray(loader, object, "joints", 0, TOOL_MAX_WORLD_JOINTS, &joints, &jointCount))
 	{

@@ -116,7 +116,8 @@ static void drawPolygon(const cd2Vec* vertices, int count, cdReal radius, uint32
 		}
 		else
 		{
-			fprintf(c->svg, "\" fill=\"%s\" fill-opacity=\"0.45\" stroke=\"%s\" stroke-width=\"1\"/>\n", col, col);
+			fprintf(c->svg, "\" fill=\"%s\" fill-opacity=\"0.45\" stroke=\"%s\" stroke-width=\"1\"/>\n", col,
+					col);
 		}
 		return;
 	}
@@ -225,8 +226,10 @@ static void drawSegment(cd2Vec p1, cd2Vec p2, uint32_t color, void* context)
 	{
 		char col[8];
 		svgColor(col, color);
-		fprintf(c->svg, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"1.5\"/>\n",
-				toX(c, (double)p1.x), toY(c, (double)p1.y), toX(c, (double)p2.x), toY(c, (double)p2.y), col);
+		fprintf(
+			c->svg,
+			"<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"1.5\"/>\n",
+			toX(c, (double)p1.x), toY(c, (double)p1.y), toX(c, (double)p2.x), toY(c, (double)p2.y), col);
 		return;
 	}
 #ifdef COLLIDE_TOOL_CAIRO
@@ -464,8 +467,9 @@ bool toolWriteFramePng(const char* path, cd2WorldId world, const ToolView* view,
 	(void)world;
 	(void)view;
 	(void)flags;
-	snprintf(reason, reasonSize, "this collide was built without cairo: no PNG output (install libcairo2-dev "
-								 "and rebuild)");
+	snprintf(reason, reasonSize,
+			 "this collide was built without cairo: no PNG output (install libcairo2-dev "
+			 "and rebuild)");
 	return false;
 }
 #endif

@@ -143,7 +143,8 @@ static bool parseDrawList(const char* text, ToolDrawFlags* flags)
 
 /* One-way platforms: a contact with a "oneWay" shape counts only while the other shape is above
  * it (the normal from the platform points up) and not sunk into it. */
-static bool oneWayPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold, void* context)
+static bool oneWayPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold,
+						   void* context)
 {
 	(void)context;
 	double sign;
@@ -202,9 +203,9 @@ static bool writeCsvRows(FILE* csv, const ToolWorld* world, long step, double ti
 		cd2Vec p = cd2Body_GetPosition(body);
 		cd2Vec v = cd2Body_GetLinearVelocity(body);
 		double angle = (double)cd2RotGetAngle(cd2Body_GetRotation(body));
-		fprintf(csv, "%ld,%.9g,%d,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", step, time, i, world->bodies[i].name,
-				(double)p.x, (double)p.y, angle, (double)v.x, (double)v.y, (double)cd2Body_GetAngularVelocity(body),
-				cd2Body_IsAwake(body) ? 1 : 0);
+		fprintf(csv, "%ld,%.9g,%d,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", step, time, i,
+				world->bodies[i].name, (double)p.x, (double)p.y, angle, (double)v.x, (double)v.y,
+				(double)cd2Body_GetAngularVelocity(body), cd2Body_IsAwake(body) ? 1 : 0);
 	}
 	return !ferror(csv);
 }
@@ -237,7 +238,8 @@ static void seriesName(const char* svgPath, long step, char* out, size_t size)
 	snprintf(out, size, "%.*s-%06ld.svg", (int)n, svgPath, step);
 }
 
-static bool writeFrames(const RunOptions* o, const ToolWorld* world, const ToolView* view, long step, bool last)
+static bool writeFrames(const RunOptions* o, const ToolWorld* world, const ToolView* view, long step,
+						bool last)
 {
 	char path[4096];
 	if (o->pngDir != NULL && (last || step % o->every == 0))
@@ -374,8 +376,8 @@ static int runScene(const RunOptions* o)
 		printf("steps: %ld of %.6g s, %d sub-steps (%.6g s simulated)\n", o->steps, dt, subSteps,
 			   (double)o->steps * dt);
 		printf("ms/step: %.4f\n", o->steps > 0 ? 1000.0 * stepSeconds / (double)o->steps : 0.0);
-		printf("bodies: %d (%d dynamic, %d sleeping), shapes: %d, joints: %d\n", counters.bodyCount, dynamicCount,
-			   sleeping, counters.shapeCount, counters.jointCount);
+		printf("bodies: %d (%d dynamic, %d sleeping), shapes: %d, joints: %d\n", counters.bodyCount,
+			   dynamicCount, sleeping, counters.shapeCount, counters.jointCount);
 		printf("contacts: %d (%d touching)\n", counters.contactCount, counters.touchingContactCount);
 		if (o->csvPath != NULL)
 		{
@@ -439,7 +441,7 @@ int toolRunMain(int argc, char** argv)
 			o.quiet = true;
 			continue;
 		}
-		static const char* const withValue[] = {"--steps", "--dt", "--substeps", "--svg",  "--png",
+		static const char* const withValue[] = {"--steps", "--dt",	 "--substeps", "--svg", "--png",
 												"--every", "--size", "--draw",	   "--csv", NULL};
 		bool known = false;
 		for (int k = 0; withValue[k] != NULL; ++k)
@@ -515,7 +517,8 @@ int toolRunMain(int argc, char** argv)
 		{
 			if (!parseDrawList(value, &o.draw))
 			{
-				return runUsageError("--draw takes a comma-separated list of shapes, joints, contacts, aabbs");
+				return runUsageError(
+					"--draw takes a comma-separated list of shapes, joints, contacts, aabbs");
 			}
 		}
 		else if (strcmp(arg, "--svg") == 0)
@@ -526,8 +529,9 @@ int toolRunMain(int argc, char** argv)
 		{
 			if (!toolHasPng())
 			{
-				fprintf(stderr, "collide run: --png: this collide was built without cairo, so it cannot write "
-								"PNG files (install libcairo2-dev and rebuild; --svg works without it)\n");
+				fprintf(stderr,
+						"collide run: --png: this collide was built without cairo, so it cannot write "
+						"PNG files (install libcairo2-dev and rebuild; --svg works without it)\n");
 				return RUN_EXIT_ERROR;
 			}
 			o.pngDir = value;
