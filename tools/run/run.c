@@ -328,6 +328,7 @@ static int runScene(const RunOptions* o)
 		status = RUN_EXIT_ERROR;
 	}
 	double stepSeconds = 0.0;
+	long contactBegins = 0, sensorBegins = 0;
 	long step = 0;
 	long progressEvery = o->steps / 100 > 0 ? o->steps / 100 : 1;
 	for (step = 1; status == 0 && step <= o->steps; ++step)
@@ -335,6 +336,10 @@ static int runScene(const RunOptions* o)
 		double t0 = nowSeconds();
 		cd2World_Step(world.world, (cdReal)dt, subSteps);
 		stepSeconds += nowSeconds() - t0;
+		cd2ContactEvents contactEvents = cd2World_GetContactEvents(world.world);
+		cd2SensorEvents sensorEvents = cd2World_GetSensorEvents(world.world);
+		contactBegins += contactEvents.beginCount;
+		sensorBegins += sensorEvents.beginCount;
 		if (csv != NULL && !writeCsvRows(csv, &world, step, (double)step * dt))
 		{
 			status = RUN_EXIT_ERROR;
@@ -379,6 +384,7 @@ static int runScene(const RunOptions* o)
 		printf("bodies: %d (%d dynamic, %d sleeping), shapes: %d, joints: %d\n", counters.bodyCount,
 			   dynamicCount, sleeping, counters.shapeCount, counters.jointCount);
 		printf("contacts: %d (%d touching)\n", counters.contactCount, counters.touchingContactCount);
+		printf("events: %ld contacts began, %ld sensor entries\n", contactBegins, sensorBegins);
 		if (o->csvPath != NULL)
 		{
 			printf("csv: %s (%ld rows)\n", o->csvPath, (long)world.bodyCount * (o->steps + 1));

@@ -40,7 +40,8 @@ if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall" OR MODE STREQUAL "one-way")
   set(csv ${OUT_DIR}/states.csv)
   run_tool(${SCENE} --steps ${STEPS} --csv ${csv})
   if(NOT status STREQUAL "0" OR NOT out MATCHES "steps: ${STEPS} of" OR NOT out MATCHES "ms/step: [0-9.]+"
-     OR NOT out MATCHES "bodies: ${BODIES} " OR NOT out MATCHES "contacts: [0-9]+")
+     OR NOT out MATCHES "bodies: ${BODIES} " OR NOT out MATCHES "contacts: [0-9]+"
+     OR NOT out MATCHES "events: [0-9]+ contacts began, [0-9]+ sensor entries")
     message(FATAL_ERROR "expected exit 0 and the summary\n${context}")
   endif()
   file(STRINGS ${csv} lines)
