@@ -30,8 +30,6 @@ typedef struct Canvas
 #ifdef COLLIDE_TOOL_CAIRO
 	cairo_t* cr;
 #endif
-	/* bounds mode: only grows the box */
-	BoundsContext* bounds;
 } Canvas;
 
 static double toX(const Canvas* c, double x)
@@ -87,14 +85,6 @@ static void cairoFillStroke(cairo_t* cr, uint32_t color)
 static void drawPolygon(const cd2Vec* vertices, int count, cdReal radius, uint32_t color, void* context)
 {
 	Canvas* c = context;
-	if (c->bounds != NULL)
-	{
-		for (int i = 0; i < count; ++i)
-		{
-			grow(c->bounds, (double)vertices[i].x, (double)vertices[i].y, (double)radius);
-		}
-		return;
-	}
 	double r = (double)radius * c->scale;
 	if (c->svg != NULL)
 	{
@@ -149,11 +139,6 @@ static void drawCircle(cd2Transform transform, cdReal radius, uint32_t color, vo
 {
 	Canvas* c = context;
 	double x = (double)transform.p.x, y = (double)transform.p.y;
-	if (c->bounds != NULL)
-	{
-		grow(c->bounds, x, y, (double)radius);
-		return;
-	}
 	double r = (double)radius * c->scale;
 	/* A radius line shows the rotation. */
 	double ex = x + (double)radius * (double)transform.q.c, ey = y + (double)radius * (double)transform.q.s;
@@ -182,12 +167,6 @@ static void drawCircle(cd2Transform transform, cdReal radius, uint32_t color, vo
 static void drawCapsule(cd2Vec p1, cd2Vec p2, cdReal radius, uint32_t color, void* context)
 {
 	Canvas* c = context;
-	if (c->bounds != NULL)
-	{
-		grow(c->bounds, (double)p1.x, (double)p1.y, (double)radius);
-		grow(c->bounds, (double)p2.x, (double)p2.y, (double)radius);
-		return;
-	}
 	double r = (double)radius * c->scale;
 	if (c->svg != NULL)
 	{
@@ -216,12 +195,6 @@ static void drawCapsule(cd2Vec p1, cd2Vec p2, cdReal radius, uint32_t color, voi
 static void drawSegment(cd2Vec p1, cd2Vec p2, uint32_t color, void* context)
 {
 	Canvas* c = context;
-	if (c->bounds != NULL)
-	{
-		grow(c->bounds, (double)p1.x, (double)p1.y, 0.0);
-		grow(c->bounds, (double)p2.x, (double)p2.y, 0.0);
-		return;
-	}
 	if (c->svg != NULL)
 	{
 		char col[8];
@@ -246,10 +219,6 @@ static void drawSegment(cd2Vec p1, cd2Vec p2, uint32_t color, void* context)
 static void drawPoint(cd2Vec p, cdReal size, uint32_t color, void* context)
 {
 	Canvas* c = context;
-	if (c->bounds != NULL)
-	{
-		return; /* points (contacts) lie on shapes already counted */
-	}
 	double r = fmax(1.0, 0.5 * (double)size);
 	if (c->svg != NULL)
 	{
@@ -331,30 +300,59 @@ static ToolView finishView(double minX, double minY, double maxX, double maxY, i
 	return view;
 }
 
-static ToolView viewFromWorld(cd2WorldId world, int width, int height)
+/* Grows b by every shape box of the bodies (only the non-static ones when movingOnly). */
+static void growByBodies(BoundsContext* b, const cd2BodyId* bodies, int count, bool movingOnly)
+{
+	cd2ShapeId shapes[64];
+	for (int i = 0; i < count; ++i)
+	{
+		if (!cd2Body_IsValid(bodies[i]) || (movingOnly && cd2Body_GetType(bodies[i]) == CD_STATIC_BODY))
+		{
+			continue;
+		}
+		int total = cd2Body_GetShapeCount(bodies[i]);
+		int n = cd2Body_GetShapes(bodies[i], shapes, 64);
+		for (int k = 0; k < n; ++k)
+		{
+			cd2Aabb box = cd2Shape_GetAabb(shapes[k]);
+			grow(b, (double)box.min.x, (double)box.min.y, 0.0);
+			grow(b, (double)box.max.x, (double)box.max.y, 0.0);
+		}
+		if (total > n)
+		{
+			/* A body with very many shapes (a long chain): its position stands for the rest. */
+			cd2Vec p = cd2Body_GetPosition(bodies[i]);
+			grow(b, (double)p.x, (double)p.y, 0.0);
+		}
+	}
+}
+
+/* The moving bodies' shapes (static ground often reaches far beyond the action), or every
+ * shape when nothing moves; grown by 10% and 1 m on each side. */
+static ToolView viewFromBodies(const cd2BodyId* bodies, int count, int width, int height)
 {
 	BoundsContext bounds = {0, 0, 0, 0, false};
-	Canvas canvas;
-	memset(&canvas, 0, sizeof canvas);
-	canvas.bounds = &bounds;
-	ToolDrawFlags flags = {true, false, false, false};
-	cd2DebugDraw draw = makeDraw(&canvas, flags);
-	cd2World_Draw(world, &draw);
+	growByBodies(&bounds, bodies, count, true);
+	if (!bounds.any)
+	{
+		growByBodies(&bounds, bodies, count, false);
+	}
 	if (!bounds.any)
 	{
 		return finishView(-10.0, -10.0, 10.0, 10.0, width, height);
 	}
-	double mx = 0.05 * (bounds.maxX - bounds.minX) + 0.1, my = 0.05 * (bounds.maxY - bounds.minY) + 0.1;
+	double mx = 0.1 * (bounds.maxX - bounds.minX) + 1.0, my = 0.1 * (bounds.maxY - bounds.minY) + 1.0;
 	return finishView(bounds.minX - mx, bounds.minY - my, bounds.maxX + mx, bounds.maxY + my, width, height);
 }
 
-ToolView toolMakeView(cd2WorldId world, const double* viewMin, const double* viewMax, int width, int height)
+ToolView toolMakeView(const cd2BodyId* bodies, int bodyCount, const double* viewMin, const double* viewMax,
+					  int width, int height)
 {
 	if (viewMin != NULL && viewMax != NULL)
 	{
 		return finishView(viewMin[0], viewMin[1], viewMax[0], viewMax[1], width, height);
 	}
-	return viewFromWorld(world, width, height);
+	return viewFromBodies(bodies, bodyCount, width, height);
 }
 
 static double viewScale(const ToolView* view)

@@ -14,9 +14,11 @@ typedef struct ToolView
 	int width, height; /* pixels */
 } ToolView;
 
-/* The rectangle of the file's "view", or the boxes of every shape grown by 5%; the picture's
- * height follows the rectangle's aspect for the given width (within [16, 4096] pixels). */
-ToolView toolMakeView(cd2WorldId world, const double* viewMin, const double* viewMax, int width, int height);
+/* The rectangle of the file's "view", or else the boxes of the moving bodies' shapes (of all
+ * shapes when nothing moves) grown by 10% and 1 m; widened to the picture's aspect. The height
+ * (0: from the rectangle's aspect for the given width, within [16, 4096]) and width in pixels. */
+ToolView toolMakeView(const cd2BodyId* bodies, int bodyCount, const double* viewMin, const double* viewMax,
+					  int width, int height);
 
 /* The flags of cd2DebugDraw to use (shapes, joints, contacts, aabbs). */
 typedef struct ToolDrawFlags

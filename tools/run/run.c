@@ -12,6 +12,10 @@
 #include "frame.h"
 #include "world_scene.h"
 
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+#include "world2_scenes.h"
+#endif
+
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -26,7 +30,8 @@
 
 static const char* const s_runUsage =
 	"usage: collide run SCENE.json [--steps N] [--dt SECONDS] [--substeps K] [--svg OUT.svg]\n"
-	"                  [--png DIR] [--every K] [--size W[xH]] [--draw LIST] [--csv OUT.csv] [--quiet]\n";
+	"                  [--png DIR] [--every K] [--size W[xH]] [--draw LIST] [--csv OUT.csv] [--quiet]\n"
+	"       collide run --scene NAME [--steps N] [same output options]\n";
 
 static void printRunHelp(void)
 {
@@ -46,8 +51,20 @@ static void printRunHelp(void)
 		  "                  (default shapes,joints)\n"
 		  "  --csv OUT.csv   body states: step,time,body,name,x,y,angle,vx,vy,w,awake per body and step\n"
 		  "                  (step 0 is the initial state)\n"
-		  "  --quiet         no progress bar and no summary\n",
+		  "  --quiet         no progress bar and no summary\n"
+		  "  --scene NAME    instead of a file, a built-in scene of scenes/world2_scenes with its own\n"
+		  "                  per-step code, 60 Hz and sub-steps (default steps: the scene's count)\n",
 		  stdout);
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+	fputs("                  NAME:", stdout);
+	for (int i = 0; i < (int)WORLD2_SCENE_COUNT; ++i)
+	{
+		printf(" %s", world2SceneInfo((World2SceneId)i)->name);
+	}
+	fputs("\n", stdout);
+#else
+	fputs("                  (not in this build: the scene library was not built)\n", stdout);
+#endif
 	if (!toolHasPng())
 	{
 		fputs("\nThis build has no PNG support (built without cairo: install libcairo2-dev and rebuild).\n",
@@ -195,11 +212,16 @@ static void progressBar(long step, long steps, bool done)
 	fflush(stderr);
 }
 
-static bool writeCsvRows(FILE* csv, const ToolWorld* world, long step, double time)
+static bool writeCsvRows(FILE* csv, const ToolWorld* world, long step, double time, long* rows)
 {
 	for (int i = 0; i < world->bodyCount; ++i)
 	{
 		cd2BodyId body = world->bodies[i].id;
+		if (!cd2Body_IsValid(body))
+		{
+			continue; /* destroyed by a built-in scene's own code */
+		}
+		*rows += 1;
 		cd2Vec p = cd2Body_GetPosition(body);
 		cd2Vec v = cd2Body_GetLinearVelocity(body);
 		double angle = (double)cd2RotGetAngle(cd2Body_GetRotation(body));
@@ -225,6 +247,8 @@ typedef struct RunOptions
 	int width, height;
 	ToolDrawFlags draw;
 	bool quiet;
+	const char* sceneName;
+	bool hasSteps;
 } RunOptions;
 
 /* "out.svg" -> "out-000120.svg" */
@@ -272,11 +296,85 @@ static bool writeFrames(const RunOptions* o, const ToolWorld* world, const ToolV
 	return true;
 }
 
-static int runScene(const RunOptions* o)
+/* The world being run: from a file, or a built-in scene (its bodies change as it runs). */
+typedef struct RunWorld
 {
-	ToolWorld world;
+	ToolWorld file; /* for a built-in scene: world, timeStep, subSteps and a copy of its body list */
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+	World2Scene scene;
+#endif
+	bool builtIn;
+	long steps;
+} RunWorld;
+
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+/* Copies the scene's body list (rain spawns ragdolls as it runs). */
+static bool syncSceneBodies(RunWorld* run)
+{
+	if (run->scene.bodyCount > run->file.bodyCount || run->file.bodies == NULL)
+	{
+		size_t count = (size_t)(run->scene.bodyCount > 0 ? run->scene.bodyCount : 1);
+		ToolWorldBody* bigger = realloc(run->file.bodies, count * sizeof(ToolWorldBody));
+		if (bigger == NULL)
+		{
+			return false;
+		}
+		run->file.bodies = bigger;
+	}
+	for (int i = 0; i < run->scene.bodyCount; ++i)
+	{
+		run->file.bodies[i].id = run->scene.bodies[i];
+		run->file.bodies[i].name[0] = 0;
+	}
+	run->file.bodyCount = run->scene.bodyCount;
+	return true;
+}
+#endif
+
+/* Loads the file or builds the built-in scene; prints the error and returns false on failure. */
+static bool openWorld(const RunOptions* o, RunWorld* run)
+{
+	memset(run, 0, sizeof *run);
+	run->steps = o->steps;
+	if (o->sceneName != NULL)
+	{
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+		World2SceneId id = world2SceneFind(o->sceneName);
+		if (id == WORLD2_SCENE_COUNT)
+		{
+			fprintf(stderr,
+					"collide run: no built-in scene is named '%.64s' (collide run --help lists them)\n",
+					o->sceneName);
+			return false;
+		}
+		if (!world2SceneCreate(&run->scene, id, 1))
+		{
+			fprintf(stderr, "collide run: %s: the scene could not be built (out of memory?)\n", o->sceneName);
+			return false;
+		}
+		run->builtIn = true;
+		run->file.world = run->scene.world;
+		run->file.timeStep = 1.0 / 60.0;
+		run->file.subSteps = world2SceneInfo(id)->subStepCount;
+		if (!o->hasSteps)
+		{
+			run->steps = world2SceneInfo(id)->stepCount;
+		}
+		if (!syncSceneBodies(run))
+		{
+			world2SceneDestroy(&run->scene);
+			free(run->file.bodies);
+			fprintf(stderr, "collide run: out of memory\n");
+			return false;
+		}
+		return true;
+#else
+		fprintf(stderr, "collide run: --scene: this build has no built-in scenes (scenes/world2_scenes)\n");
+		return false;
+#endif
+	}
 	ToolError error;
-	if (!toolLoadWorld(o->path, &world, &error))
+	if (!toolLoadWorld(o->path, &run->file, &error))
 	{
 		if (error.line > 0)
 		{
@@ -286,23 +384,66 @@ static int runScene(const RunOptions* o)
 		{
 			fprintf(stderr, "%s: %s\n", o->path, error.message);
 		}
+		return false;
+	}
+	if (run->file.oneWayCount > 0)
+	{
+		cd2World_SetPreSolveCallback(run->file.world, oneWayPreSolve, NULL);
+	}
+	return true;
+}
+
+/* One step: the built-in scene's own code and step, or cd2World_Step. */
+static bool stepWorld(RunWorld* run, long stepIndex, double dt, int subSteps)
+{
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+	if (run->builtIn)
+	{
+		world2SceneStep(&run->scene, (int)stepIndex);
+		return syncSceneBodies(run);
+	}
+#endif
+	(void)stepIndex;
+	cd2World_Step(run->file.world, (cdReal)dt, subSteps);
+	return true;
+}
+
+static void closeWorld(RunWorld* run)
+{
+#ifdef COLLIDE_TOOL_WORLD2_SCENES
+	if (run->builtIn)
+	{
+		world2SceneDestroy(&run->scene);
+		free(run->file.bodies);
+		memset(run, 0, sizeof *run);
+		return;
+	}
+#endif
+	toolFreeWorld(&run->file);
+}
+
+static int runScene(const RunOptions* o)
+{
+	RunWorld run;
+	if (!openWorld(o, &run))
+	{
 		return RUN_EXIT_ERROR;
 	}
-	double dt = o->hasDt ? o->dt : world.timeStep;
-	int subSteps = o->subSteps > 0 ? (int)o->subSteps : world.subSteps;
-	if (world.oneWayCount > 0)
-	{
-		cd2World_SetPreSolveCallback(world.world, oneWayPreSolve, NULL);
-	}
+	ToolWorld* world = &run.file;
+	const char* title = o->sceneName != NULL ? o->sceneName : o->path;
+	long steps = run.steps;
+	double dt = o->hasDt ? o->dt : world->timeStep;
+	int subSteps = o->subSteps > 0 ? (int)o->subSteps : world->subSteps;
 	int status = 0;
 	FILE* csv = NULL;
+	long csvRows = 0;
 	if (o->csvPath != NULL)
 	{
 		csv = fopen(o->csvPath, "w");
 		if (csv == NULL)
 		{
 			fprintf(stderr, "%s: cannot write: %s\n", o->csvPath, strerror(errno));
-			toolFreeWorld(&world);
+			closeWorld(&run);
 			return RUN_EXIT_ERROR;
 		}
 		fputs("step,time,body,name,x,y,angle,vx,vy,w,awake\n", csv);
@@ -316,78 +457,94 @@ static int runScene(const RunOptions* o)
 			status = RUN_EXIT_ERROR;
 		}
 	}
-	ToolView view = toolMakeView(world.world, world.hasView ? world.viewMin : NULL,
-								 world.hasView ? world.viewMax : NULL, o->width, o->height);
+	cd2BodyId* bodyIds = malloc((size_t)(world->bodyCount > 0 ? world->bodyCount : 1) * sizeof(cd2BodyId));
+	if (bodyIds == NULL)
+	{
+		fprintf(stderr, "collide run: out of memory\n");
+		if (csv != NULL)
+		{
+			fclose(csv);
+		}
+		closeWorld(&run);
+		return RUN_EXIT_ERROR;
+	}
+	for (int i = 0; i < world->bodyCount; ++i)
+	{
+		bodyIds[i] = world->bodies[i].id;
+	}
+	ToolView view = toolMakeView(bodyIds, world->bodyCount, world->hasView ? world->viewMin : NULL,
+								 world->hasView ? world->viewMax : NULL, o->width, o->height);
+	free(bodyIds);
+	RunOptions frameOptions = *o;
+	frameOptions.path = title;
 	bool progress = !o->quiet && isatty(fileno(stderr));
-	if (status == 0 && csv != NULL && !writeCsvRows(csv, &world, 0, 0.0))
+	if (status == 0 && csv != NULL && !writeCsvRows(csv, world, 0, 0.0, &csvRows))
 	{
 		status = RUN_EXIT_ERROR;
 	}
-	if (status == 0 && !writeFrames(o, &world, &view, 0, o->steps == 0))
+	if (status == 0 && !writeFrames(&frameOptions, world, &view, 0, steps == 0))
 	{
 		status = RUN_EXIT_ERROR;
 	}
 	double stepSeconds = 0.0;
 	long contactBegins = 0, sensorBegins = 0;
-	long step = 0;
-	long progressEvery = o->steps / 100 > 0 ? o->steps / 100 : 1;
-	for (step = 1; status == 0 && step <= o->steps; ++step)
+	long progressEvery = steps / 100 > 0 ? steps / 100 : 1;
+	for (long step = 1; status == 0 && step <= steps; ++step)
 	{
 		double t0 = nowSeconds();
-		cd2World_Step(world.world, (cdReal)dt, subSteps);
+		if (!stepWorld(&run, step - 1, dt, subSteps))
+		{
+			fprintf(stderr, "collide run: out of memory\n");
+			status = RUN_EXIT_ERROR;
+			break;
+		}
 		stepSeconds += nowSeconds() - t0;
-		cd2ContactEvents contactEvents = cd2World_GetContactEvents(world.world);
-		cd2SensorEvents sensorEvents = cd2World_GetSensorEvents(world.world);
+		cd2ContactEvents contactEvents = cd2World_GetContactEvents(world->world);
+		cd2SensorEvents sensorEvents = cd2World_GetSensorEvents(world->world);
 		contactBegins += contactEvents.beginCount;
 		sensorBegins += sensorEvents.beginCount;
-		if (csv != NULL && !writeCsvRows(csv, &world, step, (double)step * dt))
+		if (csv != NULL && !writeCsvRows(csv, world, step, (double)step * dt, &csvRows))
 		{
 			status = RUN_EXIT_ERROR;
 		}
-		if (status == 0 && !writeFrames(o, &world, &view, step, step == o->steps))
+		if (status == 0 && !writeFrames(&frameOptions, world, &view, step, step == steps))
 		{
 			status = RUN_EXIT_ERROR;
 		}
-		if (progress && (step % progressEvery == 0 || step == o->steps))
+		if (progress && (step % progressEvery == 0 || step == steps))
 		{
-			progressBar(step, o->steps, step == o->steps);
+			progressBar(step, steps, step == steps);
 		}
 	}
-	if (csv != NULL)
+	if (csv != NULL && fclose(csv) != 0 && status == 0)
 	{
-		if (fclose(csv) != 0 && status == 0)
-		{
-			fprintf(stderr, "%s: cannot write: %s\n", o->csvPath, strerror(errno));
-			status = RUN_EXIT_ERROR;
-		}
-		else if (status != 0 && errno != 0)
-		{
-			/* reported where it happened */
-		}
+		fprintf(stderr, "%s: cannot write: %s\n", o->csvPath, strerror(errno));
+		status = RUN_EXIT_ERROR;
 	}
 	if (status == 0 && !o->quiet)
 	{
-		cd2Counters counters = cd2World_GetCounters(world.world);
+		cd2Counters counters = cd2World_GetCounters(world->world);
 		int sleeping = 0, dynamicCount = 0;
-		for (int i = 0; i < world.bodyCount; ++i)
+		for (int i = 0; i < world->bodyCount; ++i)
 		{
-			if (cd2Body_GetType(world.bodies[i].id) == CD_DYNAMIC_BODY)
+			cd2BodyId body = world->bodies[i].id;
+			if (cd2Body_IsValid(body) && cd2Body_GetType(body) == CD_DYNAMIC_BODY)
 			{
 				++dynamicCount;
-				sleeping += cd2Body_IsAwake(world.bodies[i].id) ? 0 : 1;
+				sleeping += cd2Body_IsAwake(body) ? 0 : 1;
 			}
 		}
-		printf("scene: %s\n", o->path);
-		printf("steps: %ld of %.6g s, %d sub-steps (%.6g s simulated)\n", o->steps, dt, subSteps,
-			   (double)o->steps * dt);
-		printf("ms/step: %.4f\n", o->steps > 0 ? 1000.0 * stepSeconds / (double)o->steps : 0.0);
+		printf("scene: %s\n", title);
+		printf("steps: %ld of %.6g s, %d sub-steps (%.6g s simulated)\n", steps, dt, subSteps,
+			   (double)steps * dt);
+		printf("ms/step: %.4f\n", steps > 0 ? 1000.0 * stepSeconds / (double)steps : 0.0);
 		printf("bodies: %d (%d dynamic, %d sleeping), shapes: %d, joints: %d\n", counters.bodyCount,
 			   dynamicCount, sleeping, counters.shapeCount, counters.jointCount);
 		printf("contacts: %d (%d touching)\n", counters.contactCount, counters.touchingContactCount);
 		printf("events: %ld contacts began, %ld sensor entries\n", contactBegins, sensorBegins);
 		if (o->csvPath != NULL)
 		{
-			printf("csv: %s (%ld rows)\n", o->csvPath, (long)world.bodyCount * (o->steps + 1));
+			printf("csv: %s (%ld rows)\n", o->csvPath, csvRows);
 		}
 		if (o->svgPath != NULL)
 		{
@@ -403,7 +560,7 @@ static int runScene(const RunOptions* o)
 			status = RUN_EXIT_ERROR;
 		}
 	}
-	toolFreeWorld(&world);
+	closeWorld(&run);
 	return status;
 }
 
@@ -447,8 +604,9 @@ int toolRunMain(int argc, char** argv)
 			o.quiet = true;
 			continue;
 		}
-		static const char* const withValue[] = {"--steps", "--dt",	 "--substeps", "--svg", "--png",
-												"--every", "--size", "--draw",	   "--csv", NULL};
+		static const char* const withValue[] = {"--steps", "--dt",	  "--substeps", "--svg",
+												"--png",   "--every", "--size",		"--draw",
+												"--csv",   "--scene", NULL};
 		bool known = false;
 		for (int k = 0; withValue[k] != NULL; ++k)
 		{
@@ -472,6 +630,7 @@ int toolRunMain(int argc, char** argv)
 			{
 				return runUsageError("--steps must be a whole number from 0 to 100000000");
 			}
+			o.hasSteps = true;
 		}
 		else if (strcmp(arg, "--dt") == 0)
 		{
@@ -527,6 +686,10 @@ int toolRunMain(int argc, char** argv)
 					"--draw takes a comma-separated list of shapes, joints, contacts, aabbs");
 			}
 		}
+		else if (strcmp(arg, "--scene") == 0)
+		{
+			o.sceneName = value;
+		}
 		else if (strcmp(arg, "--svg") == 0)
 		{
 			o.svgPath = value;
@@ -547,9 +710,18 @@ int toolRunMain(int argc, char** argv)
 			o.csvPath = value;
 		}
 	}
-	if (o.path == NULL)
+	if (o.sceneName != NULL && o.path != NULL)
 	{
-		return runUsageError("run needs a scene file");
+		return runUsageError("give a scene file or --scene NAME, not both");
+	}
+	if (o.sceneName != NULL && (o.hasDt || o.subSteps > 0))
+	{
+		return runUsageError(
+			"a built-in scene (--scene) runs at its own 60 Hz and sub-steps: no --dt or --substeps");
+	}
+	if (o.path == NULL && o.sceneName == NULL)
+	{
+		return runUsageError("run needs a scene file (or --scene NAME)");
 	}
 	return runScene(&o);
 }

@@ -1,6 +1,6 @@
 # `collide run` on one scene and what it must produce.
 #   -DTOOL=path -DMODE=csv|free-fall|png|no-png|svg|usage|help -DOUT_DIR=dir [-DSCENE=file]
-#   [-DSTEPS=n] [-DBODIES=n] [-DARGS="..."] [-DXMLLINT=path]
+#   [-DBUILTIN=name] [-DSTEPS=n] [-DBODIES=n] [-DARGS="..."] [-DXMLLINT=path]
 # csv: exit 0, a summary, and a CSV with a header and BODIES * (STEPS + 1) rows of 11 finite fields.
 # free-fall: the ball's height after 1 s is 100 - g t^2 / 2 within 1%, x unchanged.
 # one-way: the side-scroller's hero, thrown up from y = 1 under a one-way ledge (top at y = 3.15),
@@ -10,6 +10,10 @@
 # no-png: a build without cairo refuses --png with a clear message and exit 2.
 # svg: the final frame is an SVG document (well-formed XML when xmllint is there).
 # usage: ARGS is a bad command line: exit 2 and the usage line.
+# BUILTIN=name runs the built-in scene `--scene name` instead of SCENE.
+if(DEFINED BUILTIN)
+  set(SCENE --scene ${BUILTIN})
+endif()
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
 function(run_tool)
