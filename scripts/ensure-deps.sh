@@ -10,6 +10,8 @@ collide_missing_packages() {
 	command -v make >/dev/null 2>&1 || missing+=(make)
 	command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
 	dpkg -s libcjson-dev >/dev/null 2>&1 || missing+=(libcjson-dev)
+	# PNG frames of `collide run` (the tool builds without it, with SVG frames only).
+	dpkg -s libcairo2-dev >/dev/null 2>&1 || missing+=(libcairo2-dev)
 	if [ "${1:-}" = "tests" ]; then
 		command -v clang >/dev/null 2>&1 || missing+=(clang)
 		# clang's AddressSanitizer/UBSan runtime lives in a separate package on Debian 12.

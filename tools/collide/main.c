@@ -2,12 +2,14 @@
  *
  *   collide query FILE.json [--svg OUT.svg]
  *   collide broad [options]      (broad.c: the broadphase benchmark scene)
+ *   collide run SCENE.json [...] (tools/run: steps a physics scene, docs/SCENES.md)
  *
  * Reads a scene file (format: scene_load.c, examples/README.md), runs the overlap test and the
  * closest-point query of every pair of shapes within each scene, prints a table, and optionally
  * draws the scenes into an SVG picture. Exit codes: 0 success, 2 any error (usage, unreadable or
  * invalid file, unwritable picture). Errors go to stderr as "FILE:LINE: reason". */
 #include "broad.h"
+#include "run.h"
 #include "scene.h"
 
 #include <errno.h>
@@ -19,6 +21,7 @@
 
 static const char* const s_usage =
 	"usage: collide query FILE.json [--svg OUT.svg]\n"
+	"       collide run SCENE.json [--steps N] [--svg OUT.svg] [--png DIR] [--csv OUT.csv] ...\n"
 	"       collide broad [--dim 2|3] [--n N] [--structure NAME|all] [--scene moving|mix]\n"
 	"                     [--frames K] [--warmup W]\n"
 	"       collide --help | --version\n";
@@ -36,6 +39,9 @@ static void printHelp(void)
 		  "                  joined by a thin line\n"
 		  "  --help          show this help\n"
 		  "  --version       show the version of the tool and of the collide library\n"
+		  "\n"
+		  "`collide run` steps a physics scene file (docs/SCENES.md) and writes frames and body\n"
+		  "states (`collide run --help`).\n"
 		  "\n"
 		  "`collide broad` runs the broadphase benchmark scene on the chosen structures and prints\n"
 		  "their figures (`collide broad --help`).\n"
@@ -149,6 +155,10 @@ int main(int argc, char** argv)
 	if (strcmp(command, "broad") == 0)
 	{
 		return toolBroadMain(argc - 1, argv + 1);
+	}
+	if (strcmp(command, "run") == 0)
+	{
+		return toolRunMain(argc - 1, argv + 1);
 	}
 	if (strcmp(command, "query") != 0)
 	{

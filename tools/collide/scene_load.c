@@ -42,6 +42,7 @@
  * path of the offending value (json_locate.c). */
 #include "json_locate.h"
 #include "scene.h"
+#include "world_scene.h"
 
 #include <cjson/cJSON.h>
 
@@ -1182,6 +1183,11 @@ static bool readDocument(Loader* loader, const cJSON* root, ToolDocument* docume
 	const cJSON* scenes = cJSON_GetObjectItemCaseSensitive(root, "scenes");
 	if (scenes == NULL)
 	{
+		if (cJSON_GetObjectItemCaseSensitive(root, "world") != NULL)
+		{
+			return failAt(loader, "world",
+						  "this is a physics scene (\"world\"): run it with `collide run`, see docs/SCENES.md");
+		}
 		if (cJSON_GetObjectItemCaseSensitive(root, "shapes") == NULL)
 		{
 			return failAt(loader, NULL,
@@ -1362,11 +1368,13 @@ static bool syntaxError(const char* text, size_t length, size_t offset, ToolErro
 	return fail(error, line, reason);
 }
 
-bool toolLoadDocument(const char* path, ToolDocument* document, ToolError* error)
+bool toolReadJsonFile(const char* path, char** textOut, size_t* lengthOut, void** rootOut, ToolError* error)
 {
-	memset(document, 0, sizeof *document);
 	error->line = 0;
 	error->message[0] = 0;
+	*textOut = NULL;
+	*lengthOut = 0;
+	*rootOut = NULL;
 
 	char* text;
 	size_t length;
@@ -1421,16 +1429,36 @@ bool toolLoadDocument(const char* path, ToolDocument* document, ToolError* error
 			ok = syntaxError(start, startLength, offset, error);
 		}
 	}
-	if (ok)
+	if (!ok)
 	{
-		Loader loader;
-		memset(&loader, 0, sizeof loader);
-		loader.text = start;
-		loader.length = startLength;
-		loader.error = error;
-		loader.shapeIndex = -1;
-		ok = readDocument(&loader, root, document);
+		cJSON_Delete(root);
+		free(text);
+		return false;
 	}
+	*textOut = text;
+	*lengthOut = startLength;
+	*rootOut = root;
+	return true;
+}
+
+bool toolLoadDocument(const char* path, ToolDocument* document, ToolError* error)
+{
+	memset(document, 0, sizeof *document);
+	char* text;
+	size_t length;
+	void* rootPointer;
+	if (!toolReadJsonFile(path, &text, &length, &rootPointer, error))
+	{
+		return false;
+	}
+	cJSON* root = rootPointer;
+	Loader loader;
+	memset(&loader, 0, sizeof loader);
+	loader.text = text;
+	loader.length = length;
+	loader.error = error;
+	loader.shapeIndex = -1;
+	bool ok = readDocument(&loader, root, document);
 	cJSON_Delete(root);
 	free(text);
 	if (!ok)

@@ -1,10 +1,13 @@
 # Runs `collide query FILE` on one malformed input and checks what a user sees: exit code 2 (and
 # not a crash), one line on stderr that starts with "FILE:LINE: " (or "FILE: " with NO_LINE) and
 # names the reason, and no sanitizer report.
-#   -DTOOL=path -DFILE=path [-DLINE=n] [-DREASON=regex] [-DNO_LINE=ON]
-execute_process(COMMAND ${TOOL} query ${FILE}
+#   -DTOOL=path -DFILE=path [-DLINE=n] [-DREASON=regex] [-DNO_LINE=ON] [-DCOMMAND=query|run]
+if(NOT DEFINED COMMAND)
+  set(COMMAND query)
+endif()
+execute_process(COMMAND ${TOOL} ${COMMAND} ${FILE}
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-set(context "collide query ${FILE}\nexit: ${status}\nstdout: ${out}\nstderr: ${err}")
+set(context "collide ${COMMAND} ${FILE}\nexit: ${status}\nstdout: ${out}\nstderr: ${err}")
 if(NOT status STREQUAL "2")
   message(FATAL_ERROR "expected exit code 2\n${context}")
 endif()
