@@ -1,0 +1,2 @@
+import { startShell } from '../common/shell2d.js';
+startShell('slingshot', 'Slingshot');
