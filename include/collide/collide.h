@@ -16,5 +16,6 @@
 #include "collide/mesh3.h"
 #include "collide/broad.h"
 #include "collide/cast.h"
+#include "collide/world2.h"
 
 #endif

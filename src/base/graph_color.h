@@ -1,0 +1,24 @@
+/* collide: greedy graph colouring of constraints (dimension-free). Two constraints of one colour
+ * never share a movable body, so a colour can be solved in any order, in SIMD lanes or on several
+ * threads with the same result. The sequential solver already runs in colour order, so that the
+ * wide and parallel solvers to come keep its results (on the pyramids the colour order and the
+ * plain index order hold equally well, docs/DYNAMICS.md). */
+#ifndef COLLIDE_GRAPH_COLOR_H
+#define COLLIDE_GRAPH_COLOR_H
+
+#include "container.h"
+
+/* Colours tried before a constraint goes to the overflow colour (solved last, sequentially). */
+#define CD_GRAPH_COLOR_COUNT 24
+
+/* bodyA[i], bodyB[i]: dense indices of the constraint's movable bodies in [0, bodyCount), or -1
+ * for an immovable one (static, or asleep this step), which takes no colour. Writes each
+ * constraint's colour (0 .. CD_GRAPH_COLOR_COUNT, the last being the overflow) to colors and
+ * reorders order[0..count) to run colour by colour, keeping the index order within a colour.
+ * Constraints with one immovable body start at colour 1, leaving colour 0 to the pairs of movable
+ * bodies (those are the many). Scratch memory comes from the arena; returns false when it runs
+ * out (order is then the index order). */
+bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
+						cdArena* arena);
+
+#endif

@@ -1,0 +1,139 @@
+/* collide: hash map from 64-bit pair keys to ints, open addressing with linear probing and
+ * backward-shift deletion (no tombstones, so lookups stay short after many removals). */
+#include "container.h"
+
+static uint32_t cdHashKey(uint64_t key)
+{
+	key ^= key >> 33;
+	key *= 0xff51afd7ed558ccdull;
+	key ^= key >> 33;
+	return (uint32_t)key;
+}
+
+void cdPairSet_Destroy(cdPairSet* set)
+{
+	cdFree(set->keys);
+	cdFree(set->values);
+	memset(set, 0, sizeof(*set));
+}
+
+void cdPairSet_Clear(cdPairSet* set)
+{
+	if (set->capacity > 0)
+	{
+		memset(set->keys, 0, (size_t)set->capacity * sizeof(uint64_t));
+	}
+	set->count = 0;
+}
+
+static bool cdPairSet_Grow(cdPairSet* set)
+{
+	int capacity = set->capacity == 0 ? 32 : 2 * set->capacity;
+	uint64_t* keys = (uint64_t*)cdAlloc((size_t)capacity * sizeof(uint64_t));
+	int* values = (int*)cdAlloc((size_t)capacity * sizeof(int));
+	if (keys == NULL || values == NULL)
+	{
+		cdFree(keys);
+		cdFree(values);
+		return false;
+	}
+	memset(keys, 0, (size_t)capacity * sizeof(uint64_t));
+	uint32_t mask = (uint32_t)capacity - 1u;
+	for (int i = 0; i < set->capacity; ++i)
+	{
+		uint64_t stored = set->keys[i];
+		if (stored == 0)
+		{
+			continue;
+		}
+		uint32_t slot = cdHashKey(stored - 1) & mask;
+		while (keys[slot] != 0)
+		{
+			slot = (slot + 1) & mask;
+		}
+		keys[slot] = stored;
+		values[slot] = set->values[i];
+	}
+	cdFree(set->keys);
+	cdFree(set->values);
+	set->keys = keys;
+	set->values = values;
+	set->capacity = capacity;
+	return true;
+}
+
+bool cdPairSet_Add(cdPairSet* set, uint64_t key, int value)
+{
+	if (2 * (set->count + 1) > set->capacity && !cdPairSet_Grow(set))
+	{
+		return false;
+	}
+	uint32_t mask = (uint32_t)set->capacity - 1u;
+	uint32_t slot = cdHashKey(key) & mask;
+	while (set->keys[slot] != 0)
+	{
+		if (set->keys[slot] == key + 1)
+		{
+			set->values[slot] = value;
+			return true;
+		}
+		slot = (slot + 1) & mask;
+	}
+	set->keys[slot] = key + 1;
+	set->values[slot] = value;
+	set->count += 1;
+	return true;
+}
+
+static int cdPairSet_Slot(const cdPairSet* set, uint64_t key)
+{
+	if (set->capacity == 0)
+	{
+		return -1;
+	}
+	uint32_t mask = (uint32_t)set->capacity - 1u;
+	uint32_t slot = cdHashKey(key) & mask;
+	while (set->keys[slot] != 0)
+	{
+		if (set->keys[slot] == key + 1)
+		{
+			return (int)slot;
+		}
+		slot = (slot + 1) & mask;
+	}
+	return -1;
+}
+
+int cdPairSet_Find(const cdPairSet* set, uint64_t key)
+{
+	int slot = cdPairSet_Slot(set, key);
+	return slot < 0 ? -1 : set->values[slot];
+}
+
+bool cdPairSet_Remove(cdPairSet* set, uint64_t key)
+{
+	int found = cdPairSet_Slot(set, key);
+	if (found < 0)
+	{
+		return false;
+	}
+	uint32_t mask = (uint32_t)set->capacity - 1u;
+	uint32_t hole = (uint32_t)found;
+	uint32_t next = (hole + 1) & mask;
+	while (set->keys[next] != 0)
+	{
+		uint32_t home = cdHashKey(set->keys[next] - 1) & mask;
+		/* Move the entry back into the hole when its home is not in (hole, next]. */
+		bool between = hole <= next ? (hole < home && home <= next) : (hole < home || home <= next);
+		if (!between)
+		{
+			set->keys[hole] = set->keys[next];
+			set->values[hole] = set->values[next];
+			hole = next;
+		}
+		next = (next + 1) & mask;
+	}
+	set->keys[hole] = 0;
+	set->count -= 1;
+	return true;
+}

@@ -1,0 +1,455 @@
+/* collide: 2D contacts: broadphase pairs become contacts, each step updates their manifolds
+ * (warm-started by feature id) and emits the begin/end and sensor events. */
+#include "world2_internal.h"
+
+#include <stdlib.h>
+
+/* ---- the narrowphase in local frames ------------------------------------------------------------
+ * The one place that computes a pair's manifold: A stays in its body frame and B is placed in A's
+ * frame, so the result is in A's frame and the solver can hold anchors relative to the bodies.
+ * (Swap for the public local-frame manifold functions when they land.) */
+cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
+							cdReal speculativeDistance)
+{
+	cd2Shape b = cd2MakeTaggedShape(shapeB, xfAB);
+	if (shapeA->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
+	{
+		const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
+		switch (b.type)
+		{
+			case CD2_SHAPE_CIRCLE:
+				return cd2CollideChainSegmentCircle(seg, b.circle, speculativeDistance);
+			case CD2_SHAPE_CAPSULE:
+				return cd2CollideChainSegmentCapsule(seg, b.capsule, speculativeDistance);
+			case CD2_SHAPE_POLYGON:
+				return cd2CollideChainSegmentPolygon(seg, &b.polygon, speculativeDistance);
+			default:
+			{
+				cd2Capsule capsule = {b.segment.p1, b.segment.p2, CD_R(0.0)};
+				return cd2CollideChainSegmentCapsule(seg, capsule, speculativeDistance);
+			}
+		}
+	}
+	cd2Shape a = cd2MakeTaggedShape(shapeA, CD2_TRANSFORM_IDENTITY);
+	return cd2Collide(&a, &b, speculativeDistance);
+}
+
+/* The key that matches a point with last step's for warm starting: a name of the point that
+ * does not change while the same features touch, whichever way the manifold describes them.
+ * - A clipped polygon point's id says whether it is an incident vertex (code 0/1) or was clipped
+ *   at a side of the reference edge (2/3); with aligned boxes that flips from step to step while
+ *   the point stays where it is. The incident edge runs against the reference edge, so its vertex
+ *   1 is the one clipped at side 2 and vertex 0 the one clipped at side 3: one slot for {1, 2},
+ *   one for {0, 3}.
+ * - Between two near-parallel faces the reference face switches between A's and B's (the flip
+ *   bit) as the bodies rock by a fraction of the slop. Name the point by (edge of A, edge of B)
+ *   instead of (reference, incident); the reference edge runs the other way round when it is B's,
+ *   so the slots swap too. */
+static uint32_t cd2WarmStartKey(uint32_t id)
+{
+	uint32_t code = (id >> 16) & 0xffu;
+	if (code > 3u || (id >> 25) != 0u)
+	{
+		return id;
+	}
+	bool flip = (id & CD2_FEATURE_FLIP) != 0u;
+	uint32_t reference = id & 0xffu, incident = (id >> 8) & 0xffu;
+	uint32_t slot = (code == 1u || code == 2u) ? 1u : 0u;
+	uint32_t edgeA = flip ? incident : reference, edgeB = flip ? reference : incident;
+	if (flip)
+	{
+		slot = 1u - slot;
+	}
+	return edgeA | edgeB << 8 | slot << 16;
+}
+
+/* ---- pairs ------------------------------------------------------------------------------------- */
+typedef struct cd2PairCollector
+{
+	CD_ARRAY(uint64_t) pairs;
+} cd2PairCollector;
+
+static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context)
+{
+	(void)proxyA;
+	(void)proxyB;
+	cd2PairCollector* collector = (cd2PairCollector*)context;
+	uint64_t key = cdPairKey((int)userDataA, (int)userDataB);
+	if (!cdArrayPush(collector->pairs, key))
+	{
+		/* dropped: the pair comes back when one of the boxes moves again */
+	}
+}
+
+static int cd2ComparePairKeys(const void* a, const void* b)
+{
+	uint64_t x = *(const uint64_t*)a, y = *(const uint64_t*)b;
+	return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+static bool cd2ShouldCreateContact(cd2World* world, int indexA, int indexB)
+{
+	const cd2WorldShape* a = world->shapes.data + indexA;
+	const cd2WorldShape* b = world->shapes.data + indexB;
+	if (a->body == b->body || (a->isSensor && b->isSensor))
+	{
+		return false;
+	}
+	if (a->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT && b->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
+	{
+		return false;
+	}
+	if (!cd2ShouldShapesCollide(a->filter, b->filter))
+	{
+		return false;
+	}
+	const cd2Body* bodyA = world->bodies.data + a->body;
+	const cd2Body* bodyB = world->bodies.data + b->body;
+	if (a->isSensor || b->isSensor)
+	{
+		const cd2WorldShape* sensor = a->isSensor ? a : b;
+		const cd2WorldShape* visitor = a->isSensor ? b : a;
+		return sensor->enableSensorEvents && visitor->enableSensorEvents &&
+			   (bodyA->type != CD_STATIC_BODY || bodyB->type != CD_STATIC_BODY);
+	}
+	if (!cd2ShouldBodiesCollide(world, a->body, b->body))
+	{
+		return false;
+	}
+	if (world->customFilterFcn != NULL &&
+		!world->customFilterFcn(cd2MakeShapeId(world, indexA), cd2MakeShapeId(world, indexB),
+								world->customFilterContext))
+	{
+		return false;
+	}
+	return true;
+}
+
+static void cd2LinkContactEdge(cd2World* world, int contactIndex, int side, int bodyIndex)
+{
+	cd2Contact* contact = world->contacts.data + contactIndex;
+	cd2Body* body = world->bodies.data + bodyIndex;
+	int key = (contactIndex << 1) | side;
+	contact->prevKey[side] = CD2_NULL_INDEX;
+	contact->nextKey[side] = body->headContactKey;
+	if (body->headContactKey != CD2_NULL_INDEX)
+	{
+		cd2Contact* head = world->contacts.data + cd2EdgeContact(body->headContactKey);
+		head->prevKey[cd2EdgeSide(body->headContactKey)] = key;
+	}
+	body->headContactKey = key;
+}
+
+static void cd2UnlinkContactEdge(cd2World* world, int contactIndex, int side, int bodyIndex)
+{
+	cd2Contact* contact = world->contacts.data + contactIndex;
+	int prev = contact->prevKey[side], next = contact->nextKey[side];
+	if (prev != CD2_NULL_INDEX)
+	{
+		world->contacts.data[cd2EdgeContact(prev)].nextKey[cd2EdgeSide(prev)] = next;
+	}
+	else
+	{
+		world->bodies.data[bodyIndex].headContactKey = next;
+	}
+	if (next != CD2_NULL_INDEX)
+	{
+		world->contacts.data[cd2EdgeContact(next)].prevKey[cd2EdgeSide(next)] = prev;
+	}
+}
+
+static void cd2CreateContact(cd2World* world, int indexA, int indexB)
+{
+	/* A chain segment is always shape A (its manifolds point from the terrain). */
+	if (world->shapes.data[indexB].type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
+	{
+		int t = indexA;
+		indexA = indexB;
+		indexB = t;
+	}
+	int index = cdIdPool_Alloc(&world->contactPool);
+	if (index < 0 || !cdArrayReserveFor(world->contacts, index + 1) ||
+		!cdPairSet_Add(&world->pairs, cdPairKey(indexA, indexB), index))
+	{
+		if (index >= 0)
+		{
+			cdIdPool_Free(&world->contactPool, index);
+		}
+		world->outOfMemory = true;
+		return;
+	}
+	if (index >= world->contacts.count)
+	{
+		world->contacts.count = index + 1;
+	}
+	const cd2WorldShape* a = world->shapes.data + indexA;
+	const cd2WorldShape* b = world->shapes.data + indexB;
+	cd2Contact* contact = world->contacts.data + index;
+	memset(contact, 0, sizeof(*contact));
+	contact->inUse = true;
+	contact->shapeA = indexA;
+	contact->shapeB = indexB;
+	contact->bodyA = a->body;
+	contact->bodyB = b->body;
+	contact->flags = (a->isSensor || b->isSensor) ? CD2_CONTACT_SENSOR : 0u;
+	/* Mixing rules: geometric mean friction, larger restitution, larger rolling resistance. */
+	contact->friction = cdSqrt(a->friction * b->friction);
+	contact->restitution = cdMax(a->restitution, b->restitution);
+	contact->rollingResistance = cdMax(a->rollingResistance, b->rollingResistance);
+	contact->tangentSpeed = a->tangentSpeed + b->tangentSpeed;
+	cd2LinkContactEdge(world, index, 0, a->body);
+	cd2LinkContactEdge(world, index, 1, b->body);
+}
+
+void cd2UpdateBroadPhasePairs(cd2World* world)
+{
+	cd2PairCollector collector;
+	memset(&collector, 0, sizeof(collector));
+	cd2BroadPhase_UpdatePairs(world->broadPhase, cd2CollectPair, &collector);
+	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
+	 * history, shape indices are part of the saved state. */
+	if (collector.pairs.count > 1)
+	{
+		qsort(collector.pairs.data, (size_t)collector.pairs.count, sizeof(uint64_t), cd2ComparePairKeys);
+	}
+	for (int i = 0; i < collector.pairs.count; ++i)
+	{
+		uint64_t key = collector.pairs.data[i];
+		if (i > 0 && collector.pairs.data[i - 1] == key)
+		{
+			continue;
+		}
+		int indexA = (int)(uint32_t)key, indexB = (int)(uint32_t)(key >> 32);
+		if (!world->shapes.data[indexA].inUse || !world->shapes.data[indexB].inUse ||
+			cdPairSet_Find(&world->pairs, key) >= 0 || !cd2ShouldCreateContact(world, indexA, indexB))
+		{
+			continue;
+		}
+		cd2CreateContact(world, indexA, indexB);
+	}
+	cdArrayFree(collector.pairs);
+}
+
+static void cd2EmitEndEvent(cd2World* world, const cd2Contact* contact)
+{
+	const cd2WorldShape* a = world->shapes.data + contact->shapeA;
+	const cd2WorldShape* b = world->shapes.data + contact->shapeB;
+	if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
+	{
+		cd2SensorEndTouchEvent e;
+		e.sensorShapeId = cd2MakeShapeId(world, a->isSensor ? contact->shapeA : contact->shapeB);
+		e.visitorShapeId = cd2MakeShapeId(world, a->isSensor ? contact->shapeB : contact->shapeA);
+		if (!cdArrayPush(world->sensorEndEvents, e))
+		{
+			world->outOfMemory = true;
+		}
+	}
+	else if (a->enableContactEvents || b->enableContactEvents)
+	{
+		cd2ContactEndTouchEvent e;
+		e.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
+		e.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
+		if (!cdArrayPush(world->endEvents, e))
+		{
+			world->outOfMemory = true;
+		}
+	}
+}
+
+void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies)
+{
+	cd2Contact* contact = world->contacts.data + contactIndex;
+	if ((contact->flags & CD2_CONTACT_TOUCHING) != 0)
+	{
+		cd2EmitEndEvent(world, contact);
+		if (wakeBodies && (contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			cd2WakeBody(world, contact->bodyA);
+			cd2WakeBody(world, contact->bodyB);
+		}
+	}
+	cdPairSet_Remove(&world->pairs, cdPairKey(contact->shapeA, contact->shapeB));
+	cd2UnlinkContactEdge(world, contactIndex, 0, contact->bodyA);
+	cd2UnlinkContactEdge(world, contactIndex, 1, contact->bodyB);
+	contact->inUse = false;
+	cdIdPool_Free(&world->contactPool, contactIndex);
+}
+
+static cd2Manifold cd2WorldManifold(const cd2Contact* contact)
+{
+	cd2Manifold m;
+	memset(&m, 0, sizeof(m));
+	m.normal = contact->normal;
+	m.pointCount = contact->pointCount;
+	for (int i = 0; i < contact->pointCount; ++i)
+	{
+		m.points[i].point = contact->points[i].point;
+		m.points[i].separation = contact->points[i].separation;
+		m.points[i].id = contact->points[i].id;
+	}
+	return m;
+}
+
+/* The sensor test: do the shapes overlap (touching counts)? */
+static bool cd2SensorOverlaps(cd2World* world, const cd2Contact* contact)
+{
+	const cd2WorldShape* a = world->shapes.data + contact->shapeA;
+	const cd2WorldShape* b = world->shapes.data + contact->shapeB;
+	cd2Shape ta = cd2MakeTaggedShape(a, world->bodies.data[a->body].transform);
+	cd2Shape tb = cd2MakeTaggedShape(b, world->bodies.data[b->body].transform);
+	return cd2Overlap(&ta, &tb);
+}
+
+void cd2UpdateSensors(cd2World* world)
+{
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse || (contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			continue;
+		}
+		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
+		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
+		if (!bodyA->awake && !bodyB->awake)
+		{
+			continue;
+		}
+		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+		bool touching = cd2SensorOverlaps(world, contact);
+		if (touching && !wasTouching)
+		{
+			cd2SensorBeginTouchEvent e;
+			e.sensorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeA : contact->shapeB);
+			e.visitorShapeId = cd2MakeShapeId(world, shapeA->isSensor ? contact->shapeB : contact->shapeA);
+			if (!cdArrayPush(world->sensorBeginEvents, e))
+			{
+				world->outOfMemory = true;
+			}
+			contact->flags |= CD2_CONTACT_TOUCHING;
+		}
+		else if (!touching && wasTouching)
+		{
+			cd2EmitEndEvent(world, contact);
+			contact->flags &= ~(uint32_t)CD2_CONTACT_TOUCHING;
+		}
+	}
+}
+
+void cd2UpdateContacts(cd2World* world, cdReal timeStep)
+{
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse)
+		{
+			continue;
+		}
+		cd2Body* bodyA = world->bodies.data + contact->bodyA;
+		cd2Body* bodyB = world->bodies.data + contact->bodyB;
+		if (!bodyA->awake && !bodyB->awake)
+		{
+			continue; /* sleeping (or static against sleeping): keep as is */
+		}
+		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+		const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
+		if (!cd2OverlapAabbAabb(shapeA->fatAabb, shapeB->fatAabb))
+		{
+			cd2DestroyContact(world, i, false);
+			continue;
+		}
+		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+		bool touching;
+		contact->flags &= ~(uint32_t)CD2_CONTACT_DISABLED;
+		if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
+		{
+			continue; /* sensors are updated after the solve (cd2UpdateSensors) */
+		}
+		{
+			cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
+			/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
+			 * fast body is caught at the surface rather than found inside it a step later. */
+			cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
+							 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
+							 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
+			cdReal speculative = CD_SPECULATIVE_DISTANCE + timeStep * closing;
+			cd2Manifold m = cd2CollideLocal(shapeA, shapeB, cd2InvMulTransforms(xfA, xfB), speculative);
+			cd2ContactPoint old[2];
+			int oldCount = contact->pointCount;
+			memcpy(old, contact->points, sizeof(old));
+			contact->pointCount = m.pointCount;
+			contact->normal = cd2RotateVector(xfA.q, m.normal);
+			for (int k = 0; k < m.pointCount; ++k)
+			{
+				cd2ContactPoint* cp = contact->points + k;
+				memset(cp, 0, sizeof(*cp));
+				cp->point = cd2TransformPoint(xfA, m.points[k].point);
+				cp->anchorA = cd2Sub(cp->point, bodyA->center);
+				cp->anchorB = cd2Sub(cp->point, bodyB->center);
+				cp->separation = m.points[k].separation;
+				cp->id = m.points[k].id;
+				/* Warm starting: the same features keep their impulses. */
+				for (int j = 0; j < oldCount; ++j)
+				{
+					if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
+					{
+						cp->normalImpulse = old[j].normalImpulse;
+						cp->tangentImpulse = old[j].tangentImpulse;
+						break;
+					}
+				}
+			}
+			touching = m.pointCount > 0;
+			if (touching && world->preSolveFcn != NULL &&
+				(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents))
+			{
+				cd2Manifold wm = cd2WorldManifold(contact);
+				if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA),
+										cd2MakeShapeId(world, contact->shapeB), &wm, world->preSolveContext))
+				{
+					contact->flags |= CD2_CONTACT_DISABLED;
+				}
+			}
+			if (touching && !wasTouching && (shapeA->enableContactEvents || shapeB->enableContactEvents))
+			{
+				cd2ContactBeginTouchEvent e;
+				e.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
+				e.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
+				e.manifold = cd2WorldManifold(contact);
+				if (!cdArrayPush(world->beginEvents, e))
+				{
+					world->outOfMemory = true;
+				}
+			}
+			if (!touching)
+			{
+				contact->rollingImpulse = CD_R(0.0);
+			}
+		}
+		if (touching)
+		{
+			contact->flags |= CD2_CONTACT_TOUCHING;
+		}
+		else
+		{
+			contact->flags &= ~(uint32_t)CD2_CONTACT_TOUCHING;
+		}
+		if (wasTouching && !touching)
+		{
+			cd2EmitEndEvent(world, contact);
+		}
+		if (touching && !wasTouching && (contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			/* A new touch joins islands: wake the sleeping side. */
+			if (!bodyA->awake)
+			{
+				cd2WakeBody(world, contact->bodyA);
+			}
+			if (!bodyB->awake)
+			{
+				cd2WakeBody(world, contact->bodyB);
+			}
+		}
+	}
+}

@@ -1,0 +1,305 @@
+/* collide: the soft contact solver (the soft step). Each contact point is a soft constraint with
+ * the world's contact hertz and damping ratio, solved with "bias" (pushing overlap apart at a
+ * limited speed) in the main pass of each sub-step and without it in the relax pass, so that the
+ * push never adds kinetic energy. Separation is tracked from the bodies' position deltas since
+ * the start of the step, with anchors fixed at the step's start (no narrowphase per sub-step).
+ * Points that are still apart are speculative: they only stop the gap from closing within the
+ * sub-step. Restitution runs once after the sub-steps and reverses the fastest approach speed each
+ * point saw before it was reached (so a speculative contact that catches a falling ball at the
+ * surface bounces it with its impact speed, not with its speed at the start of the step). */
+#include "world2_internal.h"
+
+static cd2SolverBody s_staticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+									 {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+
+static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index, cd2SolverBody* scratch)
+{
+	if (index < 0)
+	{
+		*scratch = s_staticBody;
+		return scratch;
+	}
+	return context->bodies + index;
+}
+
+void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
+{
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		cd2ContactConstraint* c = context->constraints + i;
+		const cd2Contact* contact = world->contacts.data + c->contact;
+		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
+		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
+		c->indexA = bodyA->solverIndex;
+		c->indexB = bodyB->solverIndex;
+		/* A sleeping or static body is immovable for this step. */
+		c->invMassA = c->indexA < 0 ? CD_R(0.0) : bodyA->invMass;
+		c->invIA = c->indexA < 0 ? CD_R(0.0) : bodyA->invInertia;
+		c->invMassB = c->indexB < 0 ? CD_R(0.0) : bodyB->invMass;
+		c->invIB = c->indexB < 0 ? CD_R(0.0) : bodyB->invInertia;
+		c->softness = (c->invMassA == CD_R(0.0) || c->invMassB == CD_R(0.0)) ? context->staticSoftness
+																			 : context->contactSoftness;
+		c->normal = contact->normal;
+		c->friction = contact->friction;
+		c->restitution = contact->restitution;
+		c->rollingResistance = contact->rollingResistance;
+		c->tangentSpeed = contact->tangentSpeed;
+		c->rollingImpulse = contact->rollingImpulse;
+		cdReal iSum = c->invIA + c->invIB;
+		c->rollingMass = iSum > CD_R(0.0) ? CD_R(1.0) / iSum : CD_R(0.0);
+		c->pointCount = contact->pointCount;
+		cd2Vec n = c->normal, t = cd2RightPerp(n);
+		cd2Vec accA = CD2_VEC_ZERO, accB = CD2_VEC_ZERO;
+		if (c->invMassA > CD_R(0.0))
+		{
+			accA = cd2MulAdd(cd2Scale(c->invMassA, bodyA->force), bodyA->gravityScale, world->gravity);
+		}
+		if (c->invMassB > CD_R(0.0))
+		{
+			accB = cd2MulAdd(cd2Scale(c->invMassB, bodyB->force), bodyB->gravityScale, world->gravity);
+		}
+		c->normalAcceleration = cd2Dot(n, cd2Sub(accB, accA));
+		cd2Vec vA = bodyA->linearVelocity, vB = bodyB->linearVelocity;
+		cdReal wA = bodyA->angularVelocity, wB = bodyB->angularVelocity;
+		if (c->indexA < 0)
+		{
+			vA = CD2_VEC_ZERO;
+			wA = CD_R(0.0);
+		}
+		if (c->indexB < 0)
+		{
+			vB = CD2_VEC_ZERO;
+			wB = CD_R(0.0);
+		}
+		for (int k = 0; k < c->pointCount; ++k)
+		{
+			const cd2ContactPoint* mp = contact->points + k;
+			cd2ContactConstraintPoint* cp = c->points + k;
+			cp->anchorA = mp->anchorA;
+			cp->anchorB = mp->anchorB;
+			cp->baseSeparation = mp->separation - cd2Dot(cd2Sub(mp->anchorB, mp->anchorA), n);
+			cp->normalImpulse = context->enableWarmStarting ? mp->normalImpulse : CD_R(0.0);
+			cp->tangentImpulse = context->enableWarmStarting ? mp->tangentImpulse : CD_R(0.0);
+			cp->maxNormalImpulse = CD_R(0.0);
+			cdReal rnA = cd2Cross(cp->anchorA, n), rnB = cd2Cross(cp->anchorB, n);
+			cdReal kNormal = c->invMassA + c->invMassB + c->invIA * rnA * rnA + c->invIB * rnB * rnB;
+			cp->normalMass = kNormal > CD_R(0.0) ? CD_R(1.0) / kNormal : CD_R(0.0);
+			cdReal rtA = cd2Cross(cp->anchorA, t), rtB = cd2Cross(cp->anchorB, t);
+			cdReal kTangent = c->invMassA + c->invMassB + c->invIA * rtA * rtA + c->invIB * rtB * rtB;
+			cp->tangentMass = kTangent > CD_R(0.0) ? CD_R(1.0) / kTangent : CD_R(0.0);
+			cd2Vec vrA = cd2Add(vA, cd2CrossSV(wA, cp->anchorA));
+			cd2Vec vrB = cd2Add(vB, cd2CrossSV(wB, cp->anchorB));
+			cp->relativeVelocity = cd2Dot(n, cd2Sub(vrB, vrA));
+		}
+	}
+}
+
+void cd2WarmStartContacts(cd2StepContext* context)
+{
+	cd2SolverBody scratchA, scratchB;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		cd2ContactConstraint* c = context->constraints + i;
+		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
+		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
+		cd2Vec n = c->normal, t = cd2RightPerp(n);
+		cd2Vec vA = a->linearVelocity, vB = b->linearVelocity;
+		cdReal wA = a->angularVelocity, wB = b->angularVelocity;
+		for (int k = 0; k < c->pointCount; ++k)
+		{
+			const cd2ContactConstraintPoint* cp = c->points + k;
+			cd2Vec P = cd2Add(cd2Scale(cp->normalImpulse, n), cd2Scale(cp->tangentImpulse, t));
+			wA -= c->invIA * cd2Cross(cp->anchorA, P);
+			vA = cd2MulSub(vA, c->invMassA, P);
+			wB += c->invIB * cd2Cross(cp->anchorB, P);
+			vB = cd2MulAdd(vB, c->invMassB, P);
+		}
+		wA -= c->invIA * c->rollingImpulse;
+		wB += c->invIB * c->rollingImpulse;
+		if (c->indexA >= 0)
+		{
+			a->linearVelocity = vA;
+			a->angularVelocity = wA;
+		}
+		if (c->indexB >= 0)
+		{
+			b->linearVelocity = vB;
+			b->angularVelocity = wB;
+		}
+	}
+}
+
+void cd2SolveContacts(cd2StepContext* context, bool useBias)
+{
+	cd2SolverBody scratchA, scratchB;
+	cdReal inv_h = context->inv_h;
+	cdReal maxPush = context->contactPushMaxVelocity;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		cd2ContactConstraint* c = context->constraints + i;
+		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
+		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
+		cdReal mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
+		cd2Vec vA = a->linearVelocity, vB = b->linearVelocity;
+		cdReal wA = a->angularVelocity, wB = b->angularVelocity;
+		cd2Vec dpA = a->deltaPosition, dpB = b->deltaPosition;
+		cd2Rot dqA = a->deltaRotation, dqB = b->deltaRotation;
+		cd2Vec n = c->normal, t = cd2RightPerp(n);
+		cdReal totalNormalImpulse = CD_R(0.0);
+
+		for (int k = 0; k < c->pointCount; ++k)
+		{
+			cd2ContactConstraintPoint* cp = c->points + k;
+			cd2Vec rA = cp->anchorA, rB = cp->anchorB;
+			/* Current separation from the position deltas. */
+			cd2Vec prA = cd2Add(dpA, cd2RotateVector(dqA, rA));
+			cd2Vec prB = cd2Add(dpB, cd2RotateVector(dqB, rB));
+			cdReal s = cd2Dot(cd2Sub(prB, prA), n) + cp->baseSeparation;
+			cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
+			if (s > CD_R(0.0))
+			{
+				bias = s * inv_h; /* speculative: close at most the gap */
+			}
+			else if (useBias)
+			{
+				massScale = c->softness.massScale;
+				impulseScale = c->softness.impulseScale;
+				bias = cdMax(massScale * c->softness.biasRate * s, -maxPush);
+			}
+			cd2Vec dv = cd2Sub(cd2Add(vB, cd2CrossSV(wB, rB)), cd2Add(vA, cd2CrossSV(wA, rA)));
+			cdReal vn = cd2Dot(dv, n);
+			if (useBias && vn < cp->relativeVelocity)
+			{
+				/* The approach speed when the point is reached (gravity of the sub-steps before it
+				 * included): what restitution reverses. */
+				cp->relativeVelocity = vn;
+			}
+			cdReal impulse = -cp->normalMass * (massScale * vn + bias) - impulseScale * cp->normalImpulse;
+			cdReal newImpulse = cdMax(cp->normalImpulse + impulse, CD_R(0.0));
+			impulse = newImpulse - cp->normalImpulse;
+			cp->normalImpulse = newImpulse;
+			cp->maxNormalImpulse = cdMax(cp->maxNormalImpulse, impulse);
+			totalNormalImpulse += newImpulse;
+			cd2Vec P = cd2Scale(impulse, n);
+			vA = cd2MulSub(vA, mA, P);
+			wA -= iA * cd2Cross(rA, P);
+			vB = cd2MulAdd(vB, mB, P);
+			wB += iB * cd2Cross(rB, P);
+		}
+
+		/* Friction and rolling resistance in the relax pass only, on the normal impulses the biased
+		 * pass found: friction then never fights the push-out. */
+		for (int k = 0; k < c->pointCount && !useBias; ++k)
+		{
+			cd2ContactConstraintPoint* cp = c->points + k;
+			cd2Vec rA = cp->anchorA, rB = cp->anchorB;
+			cd2Vec dv = cd2Sub(cd2Add(vB, cd2CrossSV(wB, rB)), cd2Add(vA, cd2CrossSV(wA, rA)));
+			cdReal vt = cd2Dot(dv, t) - c->tangentSpeed;
+			cdReal impulse = -cp->tangentMass * vt;
+			cdReal maxFriction = c->friction * cp->normalImpulse;
+			cdReal newImpulse = cdClamp(cp->tangentImpulse + impulse, -maxFriction, maxFriction);
+			impulse = newImpulse - cp->tangentImpulse;
+			cp->tangentImpulse = newImpulse;
+			cd2Vec P = cd2Scale(impulse, t);
+			vA = cd2MulSub(vA, mA, P);
+			wA -= iA * cd2Cross(rA, P);
+			vB = cd2MulAdd(vB, mB, P);
+			wB += iB * cd2Cross(rB, P);
+		}
+
+		if (c->rollingResistance > CD_R(0.0) && !useBias)
+		{
+			cdReal maxLambda = c->rollingResistance * totalNormalImpulse;
+			cdReal lambda = -c->rollingMass * (wB - wA);
+			cdReal newLambda = cdClamp(c->rollingImpulse + lambda, -maxLambda, maxLambda);
+			lambda = newLambda - c->rollingImpulse;
+			c->rollingImpulse = newLambda;
+			wA -= iA * lambda;
+			wB += iB * lambda;
+		}
+
+		if (c->indexA >= 0)
+		{
+			a->linearVelocity = vA;
+			a->angularVelocity = wA;
+		}
+		if (c->indexB >= 0)
+		{
+			b->linearVelocity = vB;
+			b->angularVelocity = wB;
+		}
+	}
+}
+
+void cd2ApplyRestitution(cd2StepContext* context)
+{
+	cd2SolverBody scratchA, scratchB;
+	cdReal threshold = context->restitutionThreshold;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		cd2ContactConstraint* c = context->constraints + i;
+		if (c->restitution == CD_R(0.0))
+		{
+			continue;
+		}
+		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
+		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
+		cdReal mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
+		cd2Vec vA = a->linearVelocity, vB = b->linearVelocity;
+		cdReal wA = a->angularVelocity, wB = b->angularVelocity;
+		cd2Vec n = c->normal;
+		for (int k = 0; k < c->pointCount; ++k)
+		{
+			cd2ContactConstraintPoint* cp = c->points + k;
+			/* Only points that were approaching fast enough and actually pushed bounce. */
+			if (cp->relativeVelocity > -threshold || cp->maxNormalImpulse == CD_R(0.0))
+			{
+				continue;
+			}
+			cd2Vec rA = cp->anchorA, rB = cp->anchorB;
+			cd2Vec dv = cd2Sub(cd2Add(vB, cd2CrossSV(wB, rB)), cd2Add(vA, cd2CrossSV(wA, rA)));
+			cdReal vn = cd2Dot(dv, n);
+			/* The approach was recorded at the start of the sub-step that reached the point, after
+			 * that sub-step's acceleration; the bounce leaves before the next one's: add one
+			 * sub-step of acceleration so that the flight up mirrors the flight down. */
+			cdReal approach = cdMin(cp->relativeVelocity + context->h * c->normalAcceleration, CD_R(0.0));
+			cdReal impulse = -cp->normalMass * (vn + c->restitution * approach);
+			cdReal newImpulse = cdMax(cp->normalImpulse + impulse, CD_R(0.0));
+			impulse = newImpulse - cp->normalImpulse;
+			cp->normalImpulse = newImpulse;
+			cp->maxNormalImpulse = cdMax(cp->maxNormalImpulse, impulse);
+			cd2Vec P = cd2Scale(impulse, n);
+			vA = cd2MulSub(vA, mA, P);
+			wA -= iA * cd2Cross(rA, P);
+			vB = cd2MulAdd(vB, mB, P);
+			wB += iB * cd2Cross(rB, P);
+		}
+		if (c->indexA >= 0)
+		{
+			a->linearVelocity = vA;
+			a->angularVelocity = wA;
+		}
+		if (c->indexB >= 0)
+		{
+			b->linearVelocity = vB;
+			b->angularVelocity = wB;
+		}
+	}
+}
+
+void cd2StoreImpulses(cd2World* world, cd2StepContext* context)
+{
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		const cd2ContactConstraint* c = context->constraints + i;
+		cd2Contact* contact = world->contacts.data + c->contact;
+		contact->rollingImpulse = c->rollingImpulse;
+		for (int k = 0; k < c->pointCount; ++k)
+		{
+			contact->points[k].normalImpulse = c->points[k].normalImpulse;
+			contact->points[k].tangentImpulse = c->points[k].tangentImpulse;
+			contact->points[k].maxNormalImpulse = c->points[k].maxNormalImpulse;
+			contact->points[k].relativeVelocity = c->points[k].relativeVelocity;
+		}
+	}
+}

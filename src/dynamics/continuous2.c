@@ -1,0 +1,99 @@
+/* collide: continuous collision for the 2D world. A fast body (one that moved more than half its
+ * inner extent in the step) is swept from its start to its end pose against static shapes, and a
+ * bullet also against the other moving bodies' final poses, with cd2TimeOfImpact; it is then put
+ * back at the first time of impact (its velocity is kept, so the next step's contact stops it).
+ * This is what keeps a fast ball from tunnelling through a thin wall. */
+#include "world2_internal.h"
+
+typedef struct cd2ContinuousContext
+{
+	cd2World* world;
+	int bodyIndex;
+	int shapeIndex;
+	cd2Sweep sweep;
+	cdReal fraction;
+} cd2ContinuousContext;
+
+static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
+{
+	(void)proxyId;
+	cd2ContinuousContext* c = (cd2ContinuousContext*)context;
+	cd2World* world = c->world;
+	int otherIndex = (int)userData;
+	const cd2WorldShape* shape = world->shapes.data + c->shapeIndex;
+	const cd2WorldShape* other = world->shapes.data + otherIndex;
+	const cd2Body* body = world->bodies.data + c->bodyIndex;
+	const cd2Body* otherBody = world->bodies.data + other->body;
+	if (other->body == c->bodyIndex || other->isSensor ||
+		!cd2ShouldShapesCollide(shape->filter, other->filter))
+	{
+		return true;
+	}
+	if (otherBody->type != CD_STATIC_BODY)
+	{
+		/* Only bullets sweep against moving bodies, and never against other bullets. */
+		if (!body->isBullet || otherBody->isBullet ||
+			!cd2ShouldBodiesCollide(world, c->bodyIndex, other->body))
+		{
+			return true;
+		}
+	}
+	cd2Transform otherXf = otherBody->transform;
+	if (other->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
+	{
+		/* One-sided: a body that starts behind the segment passes. */
+		cd2Vec p1 = cd2TransformPoint(otherXf, other->geometry.chainSegment.p1);
+		cd2Vec p2 = cd2TransformPoint(otherXf, other->geometry.chainSegment.p2);
+		cd2Vec normal = cd2RightPerp(cd2Sub(p2, p1));
+		if (cd2Dot(normal, cd2Sub(c->sweep.center0, p1)) < CD_R(0.0))
+		{
+			return true;
+		}
+	}
+	cd2Shape a = cd2MakeTaggedShape(shape, CD2_TRANSFORM_IDENTITY);
+	cd2Shape b = cd2MakeTaggedShape(other, CD2_TRANSFORM_IDENTITY);
+	cdReal angle = cd2RotGetAngle(otherXf.q);
+	cd2Sweep otherSweep = {otherBody->localCenter, otherBody->center, otherBody->center, angle, angle};
+	cdToiOutput out =
+		cd2TimeOfImpact(&a, &c->sweep, &b, &otherSweep, CD_LINEAR_SLOP, CD_R(0.25) * CD_LINEAR_SLOP);
+	if ((out.state == CD_TOI_HIT || out.state == CD_TOI_FAILED) && CD_R(0.0) < out.t && out.t < c->fraction)
+	{
+		c->fraction = out.t;
+	}
+	return true;
+}
+
+void cd2SolveContinuous(cd2World* world, int bodyIndex)
+{
+	cd2Body* body = world->bodies.data + bodyIndex;
+	cd2ContinuousContext c;
+	c.world = world;
+	c.bodyIndex = bodyIndex;
+	c.fraction = CD_R(1.0);
+	cdReal angle0 = cd2RotGetAngle(body->rotation0);
+	c.sweep.localCenter = body->localCenter;
+	c.sweep.center0 = body->center0;
+	c.sweep.center1 = body->center;
+	c.sweep.angle0 = angle0;
+	c.sweep.angle1 = angle0 + cd2RotGetAngle(cd2InvMulRot(body->rotation0, body->transform.q));
+	cd2Transform xf0 = {cd2Sub(body->center0, cd2RotateVector(body->rotation0, body->localCenter)),
+						body->rotation0};
+	for (int s = body->headShape; s != CD2_NULL_INDEX; s = world->shapes.data[s].nextShape)
+	{
+		const cd2WorldShape* shape = world->shapes.data + s;
+		if (shape->isSensor)
+		{
+			continue;
+		}
+		c.shapeIndex = s;
+		cd2Aabb box = cd2AabbUnion(cd2ComputeWorldShapeAabb(shape, xf0),
+								   cd2ComputeWorldShapeAabb(shape, body->transform));
+		cd2BroadPhase_Query(world->broadPhase, box, cd2ContinuousCallback, &c);
+	}
+	if (c.fraction < CD_R(1.0))
+	{
+		cd2Transform xf = cd2GetSweepTransform(&c.sweep, c.fraction);
+		body->transform = xf;
+		body->center = cd2TransformPoint(xf, body->localCenter);
+	}
+}

@@ -1,0 +1,254 @@
+/* collide: islands and sleep. Each step groups the awake dynamic bodies that touch (non-sensor
+ * contacts) or are jointed, with a union-find over body indices; a group whose bodies have all
+ * been slower than their sleep threshold for CD2_TIME_TO_SLEEP seconds goes to sleep as one
+ * island: its bodies leave the solver's arrays and their contacts are no longer updated until
+ * something wakes the island (a new touch, a force with wake, a teleport, a joint). The
+ * bookkeeping is indices only, nothing 2D-specific beyond the body and contact records. */
+#include "world2_internal.h"
+
+static int cd2FindRoot(int* parent, int i)
+{
+	while (parent[i] != i)
+	{
+		parent[i] = parent[parent[i]];
+		i = parent[i];
+	}
+	return i;
+}
+
+static void cd2Union(int* parent, int a, int b)
+{
+	int ra = cd2FindRoot(parent, a), rb = cd2FindRoot(parent, b);
+	if (ra == rb)
+	{
+		return;
+	}
+	/* The smaller index becomes the root: the result does not depend on the order of unions. */
+	if (ra < rb)
+	{
+		parent[rb] = ra;
+	}
+	else
+	{
+		parent[ra] = rb;
+	}
+}
+
+static bool cd2IsSleepCandidate(const cd2Body* body)
+{
+	return body->inUse && body->enabled && body->awake && body->type == CD_DYNAMIC_BODY;
+}
+
+void cd2WakeIsland(cd2World* world, int islandId)
+{
+	if (islandId < 0 || islandId >= world->islands.count || !world->islands.data[islandId].inUse)
+	{
+		return;
+	}
+	cd2Island* island = world->islands.data + islandId;
+	int b = island->headBody;
+	while (b != CD2_NULL_INDEX)
+	{
+		cd2Body* body = world->bodies.data + b;
+		int next = body->islandNext;
+		body->awake = true;
+		body->sleepTime = CD_R(0.0);
+		body->islandId = CD2_NULL_INDEX;
+		body->islandNext = CD2_NULL_INDEX;
+		b = next;
+	}
+	island->inUse = false;
+	island->headBody = CD2_NULL_INDEX;
+	island->bodyCount = 0;
+	cdIdPool_Free(&world->islandPool, islandId);
+}
+
+/* A new sleeping island; CD2_NULL_INDEX when memory runs out (the bodies then stay awake). */
+static int cd2NewIsland(cd2World* world)
+{
+	int id = cdIdPool_Alloc(&world->islandPool);
+	if (id < 0 || !cdArrayReserveFor(world->islands, id + 1))
+	{
+		if (id >= 0)
+		{
+			cdIdPool_Free(&world->islandPool, id);
+		}
+		return CD2_NULL_INDEX;
+	}
+	if (id >= world->islands.count)
+	{
+		world->islands.count = id + 1;
+	}
+	cd2Island* island = world->islands.data + id;
+	island->inUse = true;
+	island->headBody = CD2_NULL_INDEX;
+	island->bodyCount = 0;
+	return id;
+}
+
+static void cd2PutToSleep(cd2World* world, int islandId, int bodyIndex)
+{
+	cd2Body* body = world->bodies.data + bodyIndex;
+	cd2Island* island = world->islands.data + islandId;
+	body->awake = false;
+	body->linearVelocity = CD2_VEC_ZERO;
+	body->angularVelocity = CD_R(0.0);
+	body->islandId = islandId;
+	body->islandNext = island->headBody;
+	island->headBody = bodyIndex;
+	island->bodyCount += 1;
+}
+
+/* Builds the groups of the awake dynamic bodies into parent (size bodies.count). */
+static void cd2BuildGroups(cd2World* world, int* parent)
+{
+	for (int i = 0; i < world->bodies.count; ++i)
+	{
+		parent[i] = i;
+	}
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		const cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse || (contact->flags & CD2_CONTACT_TOUCHING) == 0 ||
+			(contact->flags & CD2_CONTACT_SENSOR) != 0)
+		{
+			continue;
+		}
+		if (cd2IsSleepCandidate(world->bodies.data + contact->bodyA) &&
+			cd2IsSleepCandidate(world->bodies.data + contact->bodyB))
+		{
+			cd2Union(parent, contact->bodyA, contact->bodyB);
+		}
+	}
+	for (int i = 0; i < world->joints.count; ++i)
+	{
+		const cd2Joint* joint = world->joints.data + i;
+		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
+		{
+			continue;
+		}
+		if (cd2IsSleepCandidate(world->bodies.data + joint->bodyA) &&
+			cd2IsSleepCandidate(world->bodies.data + joint->bodyB))
+		{
+			cd2Union(parent, joint->bodyA, joint->bodyB);
+		}
+	}
+}
+
+void cd2UpdateSleep(cd2World* world)
+{
+	int n = world->bodies.count;
+	if (n == 0)
+	{
+		return;
+	}
+	int* parent = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+	cdReal* minSleep = (cdReal*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(cdReal));
+	int* islandOfRoot = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+	if (parent == NULL || minSleep == NULL || islandOfRoot == NULL)
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	cd2BuildGroups(world, parent);
+	for (int i = 0; i < n; ++i)
+	{
+		minSleep[i] = CD_REAL_MAX;
+		islandOfRoot[i] = CD2_NULL_INDEX;
+	}
+	for (int i = 0; i < n; ++i)
+	{
+		const cd2Body* body = world->bodies.data + i;
+		if (cd2IsSleepCandidate(body))
+		{
+			int root = cd2FindRoot(parent, i);
+			minSleep[root] = cdMin(minSleep[root], body->sleepTime);
+		}
+	}
+	/* Kinematic bodies sleep alone once they stop. */
+	for (int i = 0; i < n; ++i)
+	{
+		const cd2Body* body = world->bodies.data + i;
+		if (body->inUse && body->enabled && body->awake && body->type == CD_KINEMATIC_BODY &&
+			body->sleepTime >= CD2_TIME_TO_SLEEP)
+		{
+			int island = cd2NewIsland(world);
+			if (island != CD2_NULL_INDEX)
+			{
+				cd2PutToSleep(world, island, i);
+			}
+		}
+	}
+	/* Bodies in decreasing index order, so each island's list runs in increasing order. */
+	for (int i = n - 1; i >= 0; --i)
+	{
+		const cd2Body* body = world->bodies.data + i;
+		if (!cd2IsSleepCandidate(body))
+		{
+			continue;
+		}
+		int root = cd2FindRoot(parent, i);
+		if (minSleep[root] < CD2_TIME_TO_SLEEP)
+		{
+			continue;
+		}
+		if (islandOfRoot[root] == CD2_NULL_INDEX)
+		{
+			islandOfRoot[root] = cd2NewIsland(world);
+			if (islandOfRoot[root] == CD2_NULL_INDEX)
+			{
+				minSleep[root] = CD_R(0.0);
+				continue;
+			}
+		}
+		cd2PutToSleep(world, islandOfRoot[root], i);
+	}
+}
+
+void cd2SleepBodyGroup(cd2World* world, int bodyIndex)
+{
+	cd2Body* start = world->bodies.data + bodyIndex;
+	if (start->type == CD_STATIC_BODY || !start->awake)
+	{
+		return;
+	}
+	if (start->type == CD_KINEMATIC_BODY)
+	{
+		int island = cd2NewIsland(world);
+		if (island != CD2_NULL_INDEX)
+		{
+			cd2PutToSleep(world, island, bodyIndex);
+		}
+		return;
+	}
+	int n = world->bodies.count;
+	int* parent = (int*)cdAlloc((size_t)n * sizeof(int));
+	if (parent == NULL)
+	{
+		return;
+	}
+	cd2BuildGroups(world, parent);
+	int root = cd2FindRoot(parent, bodyIndex);
+	int island = cd2NewIsland(world);
+	if (island != CD2_NULL_INDEX)
+	{
+		for (int i = n - 1; i >= 0; --i)
+		{
+			if (cd2IsSleepCandidate(world->bodies.data + i) && cd2FindRoot(parent, i) == root)
+			{
+				cd2PutToSleep(world, island, i);
+			}
+		}
+	}
+	cdFree(parent);
+}
+
+void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex)
+{
+	cd2Body* body = world->bodies.data + bodyIndex;
+	if (body->islandId == CD2_NULL_INDEX)
+	{
+		return;
+	}
+	cd2WakeIsland(world, body->islandId);
+}

@@ -1,0 +1,1064 @@
+/* collide: 2D joints: creation and destruction, the body lists, the dispatch to the per-kind
+ * solvers (distance_joint2.c, revolute_joint2.c, ...) and the reaction forces. Joints are soft
+ * constraints like contacts: the point and angle constraints use the world's joint softness, and
+ * springs their own hertz and damping ratio. */
+#include "world2_internal.h"
+
+cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id)
+{
+	if (world == NULL || id.index1 <= 0 || id.index1 > world->joints.count)
+	{
+		return NULL;
+	}
+	cd2Joint* joint = world->joints.data + (id.index1 - 1);
+	if (!joint->inUse || joint->generation != id.generation)
+	{
+		return NULL;
+	}
+	return joint;
+}
+
+static cd2Joint* cd2LookupJoint(cd2JointId id, cd2World** outWorld, bool mutating)
+{
+	cd2World* world = cd2GetWorldFromIndex(id.world0);
+	cd2Joint* joint = cd2GetJoint(world, id);
+	if (joint == NULL)
+	{
+		CD2_REFUSE("stale or null joint id");
+		return NULL;
+	}
+	if (mutating && world->locked)
+	{
+		CD2_REFUSE("the world is locked during the step");
+		return NULL;
+	}
+	*outWorld = world;
+	return joint;
+}
+
+static void cd2LinkJointEdge(cd2World* world, int jointIndex, int side, int bodyIndex)
+{
+	cd2Joint* joint = world->joints.data + jointIndex;
+	cd2Body* body = world->bodies.data + bodyIndex;
+	int key = (jointIndex << 1) | side;
+	joint->prevKey[side] = CD2_NULL_INDEX;
+	joint->nextKey[side] = body->headJointKey;
+	if (body->headJointKey != CD2_NULL_INDEX)
+	{
+		world->joints.data[body->headJointKey >> 1].prevKey[body->headJointKey & 1] = key;
+	}
+	body->headJointKey = key;
+}
+
+static void cd2UnlinkJointEdge(cd2World* world, int jointIndex, int side, int bodyIndex)
+{
+	cd2Joint* joint = world->joints.data + jointIndex;
+	int prev = joint->prevKey[side], next = joint->nextKey[side];
+	if (prev != CD2_NULL_INDEX)
+	{
+		world->joints.data[prev >> 1].nextKey[prev & 1] = next;
+	}
+	else
+	{
+		world->bodies.data[bodyIndex].headJointKey = next;
+	}
+	if (next != CD2_NULL_INDEX)
+	{
+		world->joints.data[next >> 1].prevKey[next & 1] = prev;
+	}
+}
+
+/* Creates the joint record with its bodies; the kind fills data. NULL on refusal. */
+static cd2Joint* cd2CreateJointRecord(cd2WorldId worldId, cd2BodyId idA, cd2BodyId idB, cd2JointType type,
+									  bool collideConnected, void* userData, bool valid, cd2JointId* outId)
+{
+	*outId = CD2_NULL_JOINT_ID;
+	cd2World* world = cd2GetWorld(worldId);
+	if (world == NULL)
+	{
+		return NULL;
+	}
+	if (world->locked)
+	{
+		CD2_REFUSE("joint creation: the world is locked during the step");
+		return NULL;
+	}
+	cd2Body* a = cd2GetBody(world, idA);
+	cd2Body* b = cd2GetBody(world, idB);
+	if (a == NULL || b == NULL || idA.index1 == idB.index1 || idA.world0 != world->index ||
+		idB.world0 != world->index || !valid)
+	{
+		CD2_REFUSE(
+			"joint creation: stale body ids, the same body twice, or a bad definition (NaN, negative)");
+		return NULL;
+	}
+	int index = cdIdPool_Alloc(&world->jointPool);
+	if (index < 0 || !cdArrayReserveFor(world->joints, index + 1))
+	{
+		if (index >= 0)
+		{
+			cdIdPool_Free(&world->jointPool, index);
+		}
+		return NULL;
+	}
+	if (index >= world->joints.count)
+	{
+		world->joints.count = index + 1;
+	}
+	cd2Joint* joint = world->joints.data + index;
+	memset(joint, 0, sizeof(*joint));
+	joint->generation = cd2NextGeneration(world);
+	joint->inUse = true;
+	joint->type = type;
+	joint->bodyA = idA.index1 - 1;
+	joint->bodyB = idB.index1 - 1;
+	joint->collideConnected = collideConnected;
+	joint->userData = userData;
+	cd2LinkJointEdge(world, index, 0, joint->bodyA);
+	cd2LinkJointEdge(world, index, 1, joint->bodyB);
+	/* Contacts between the bodies go when the joint says so. */
+	if (!collideConnected)
+	{
+		int key = world->bodies.data[joint->bodyA].headContactKey;
+		while (key != CD2_NULL_INDEX)
+		{
+			cd2Contact* contact = world->contacts.data + cd2EdgeContact(key);
+			int next = contact->nextKey[cd2EdgeSide(key)];
+			int other = cd2EdgeSide(key) == 0 ? contact->bodyB : contact->bodyA;
+			if (other == joint->bodyB && (contact->flags & CD2_CONTACT_SENSOR) == 0)
+			{
+				cd2DestroyContact(world, cd2EdgeContact(key), false);
+			}
+			key = next;
+		}
+	}
+	cd2WakeBody(world, joint->bodyA);
+	cd2WakeBody(world, joint->bodyB);
+	cd2JointId id = {index + 1, world->index, joint->generation};
+	*outId = id;
+	return joint;
+}
+
+static bool cd2Finite(cdReal a)
+{
+	return cdIsValidReal(a);
+}
+
+static bool cd2NonNeg(cdReal a)
+{
+	return cdIsValidReal(a) && a >= CD_R(0.0);
+}
+
+/* ---- defaults ---------------------------------------------------------------------------------- */
+cd2DistanceJointDef cd2DefaultDistanceJointDef(void)
+{
+	cd2DistanceJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.length = CD_R(1.0);
+	def.maxLength = CD_REAL_MAX;
+	return def;
+}
+
+cd2FilterJointDef cd2DefaultFilterJointDef(void)
+{
+	cd2FilterJointDef def;
+	memset(&def, 0, sizeof(def));
+	return def;
+}
+
+cd2MotorJointDef cd2DefaultMotorJointDef(void)
+{
+	cd2MotorJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.maxForce = CD_R(1.0);
+	def.maxTorque = CD_R(1.0);
+	def.correctionFactor = CD_R(0.3);
+	return def;
+}
+
+cd2MouseJointDef cd2DefaultMouseJointDef(void)
+{
+	cd2MouseJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.hertz = CD_R(4.0);
+	def.dampingRatio = CD_R(1.0);
+	def.maxForce = CD_R(1.0);
+	return def;
+}
+
+cd2PrismaticJointDef cd2DefaultPrismaticJointDef(void)
+{
+	cd2PrismaticJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.localAxisA = cd2MakeVec(CD_R(1.0), CD_R(0.0));
+	return def;
+}
+
+cd2RevoluteJointDef cd2DefaultRevoluteJointDef(void)
+{
+	cd2RevoluteJointDef def;
+	memset(&def, 0, sizeof(def));
+	return def;
+}
+
+cd2WeldJointDef cd2DefaultWeldJointDef(void)
+{
+	cd2WeldJointDef def;
+	memset(&def, 0, sizeof(def));
+	return def;
+}
+
+cd2WheelJointDef cd2DefaultWheelJointDef(void)
+{
+	cd2WheelJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.localAxisA = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	def.enableSpring = true;
+	def.hertz = CD_R(1.0);
+	def.dampingRatio = CD_R(0.7);
+	return def;
+}
+
+/* ---- creation ---------------------------------------------------------------------------------- */
+cd2JointId cd2CreateDistanceJoint(cd2WorldId worldId, const cd2DistanceJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	bool valid = def != NULL && cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
+				 cd2NonNeg(def->length) && cd2NonNeg(def->minLength) && !(def->maxLength != def->maxLength) &&
+				 def->maxLength >= def->minLength && cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) &&
+				 cd2NonNeg(def->maxMotorForce) && cd2Finite(def->motorSpeed);
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateDistanceJoint: NULL def");
+		return id;
+	}
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_DISTANCE_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		cd2JointData* d = &joint->data;
+		d->localAnchorA = def->localAnchorA;
+		d->localAnchorB = def->localAnchorB;
+		d->length = cdMax(def->length, CD_LINEAR_SLOP);
+		d->minLength = def->minLength;
+		d->maxLength = def->maxLength;
+		d->enableSpring = def->enableSpring;
+		d->hertz = def->hertz;
+		d->dampingRatio = def->dampingRatio;
+		d->enableLimit = def->enableLimit;
+		d->enableMotor = def->enableMotor;
+		d->maxMotorForce = def->maxMotorForce;
+		d->motorSpeed = def->motorSpeed;
+	}
+	return id;
+}
+
+cd2JointId cd2CreateFilterJoint(cd2WorldId worldId, const cd2FilterJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateFilterJoint: NULL def");
+		return id;
+	}
+	cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_FILTER_JOINT, false, def->userData, true,
+						 &id);
+	return id;
+}
+
+cd2JointId cd2CreateMotorJoint(cd2WorldId worldId, const cd2MotorJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateMotorJoint: NULL def");
+		return id;
+	}
+	bool valid = cd2IsValidVec(def->linearOffset) && cd2Finite(def->angularOffset) &&
+				 cd2NonNeg(def->maxForce) && cd2NonNeg(def->maxTorque) && cd2NonNeg(def->correctionFactor) &&
+				 def->correctionFactor <= CD_R(1.0);
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_MOTOR_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		joint->data.linearOffset = def->linearOffset;
+		joint->data.angularOffset = def->angularOffset;
+		joint->data.maxForce = def->maxForce;
+		joint->data.maxTorque = def->maxTorque;
+		joint->data.correctionFactor = def->correctionFactor;
+	}
+	return id;
+}
+
+cd2JointId cd2CreateMouseJoint(cd2WorldId worldId, const cd2MouseJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateMouseJoint: NULL def");
+		return id;
+	}
+	bool valid = cd2IsValidVec(def->target) && cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) &&
+				 cd2NonNeg(def->maxForce);
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_MOUSE_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		cd2World* world = cd2GetWorld(worldId);
+		const cd2Body* b = world->bodies.data + joint->bodyB;
+		joint->data.target = def->target;
+		joint->data.localAnchorB = cd2InvTransformPoint(b->transform, def->target);
+		joint->data.hertz = def->hertz;
+		joint->data.dampingRatio = def->dampingRatio;
+		joint->data.maxForce = def->maxForce;
+	}
+	return id;
+}
+
+cd2JointId cd2CreatePrismaticJoint(cd2WorldId worldId, const cd2PrismaticJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreatePrismaticJoint: NULL def");
+		return id;
+	}
+	cdReal axisLength = cd2Length(def->localAxisA);
+	bool valid = cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
+				 cd2IsValidVec(def->localAxisA) && axisLength > CD_R(0.0) && cd2Finite(def->referenceAngle) &&
+				 cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) && cd2Finite(def->lowerTranslation) &&
+				 cd2Finite(def->upperTranslation) && def->lowerTranslation <= def->upperTranslation &&
+				 cd2NonNeg(def->maxMotorForce) && cd2Finite(def->motorSpeed);
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_PRISMATIC_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		cd2JointData* d = &joint->data;
+		d->localAnchorA = def->localAnchorA;
+		d->localAnchorB = def->localAnchorB;
+		d->localAxisA = cd2Normalize(def->localAxisA);
+		d->referenceAngle = def->referenceAngle;
+		d->enableSpring = def->enableSpring;
+		d->hertz = def->hertz;
+		d->dampingRatio = def->dampingRatio;
+		d->enableLimit = def->enableLimit;
+		d->lower = def->lowerTranslation;
+		d->upper = def->upperTranslation;
+		d->enableMotor = def->enableMotor;
+		d->maxMotorForce = def->maxMotorForce;
+		d->motorSpeed = def->motorSpeed;
+	}
+	return id;
+}
+
+cd2JointId cd2CreateRevoluteJoint(cd2WorldId worldId, const cd2RevoluteJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateRevoluteJoint: NULL def");
+		return id;
+	}
+	bool valid = cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
+				 cd2Finite(def->referenceAngle) && cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) &&
+				 cd2Finite(def->lowerAngle) && cd2Finite(def->upperAngle) &&
+				 def->lowerAngle <= def->upperAngle && cd2NonNeg(def->maxMotorTorque) &&
+				 cd2Finite(def->motorSpeed);
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_REVOLUTE_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		cd2JointData* d = &joint->data;
+		d->localAnchorA = def->localAnchorA;
+		d->localAnchorB = def->localAnchorB;
+		d->referenceAngle = def->referenceAngle;
+		d->enableSpring = def->enableSpring;
+		d->hertz = def->hertz;
+		d->dampingRatio = def->dampingRatio;
+		d->enableLimit = def->enableLimit;
+		d->lower = cdClamp(def->lowerAngle, -CD_PI, CD_PI);
+		d->upper = cdClamp(def->upperAngle, -CD_PI, CD_PI);
+		d->enableMotor = def->enableMotor;
+		d->maxMotorForce = def->maxMotorTorque;
+		d->motorSpeed = def->motorSpeed;
+	}
+	return id;
+}
+
+cd2JointId cd2CreateWeldJoint(cd2WorldId worldId, const cd2WeldJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateWeldJoint: NULL def");
+		return id;
+	}
+	bool valid = cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
+				 cd2Finite(def->referenceAngle) && cd2NonNeg(def->linearHertz) &&
+				 cd2NonNeg(def->angularHertz) && cd2NonNeg(def->linearDampingRatio) &&
+				 cd2NonNeg(def->angularDampingRatio);
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_WELD_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		cd2JointData* d = &joint->data;
+		d->localAnchorA = def->localAnchorA;
+		d->localAnchorB = def->localAnchorB;
+		d->referenceAngle = def->referenceAngle;
+		d->hertz = def->linearHertz;
+		d->dampingRatio = def->linearDampingRatio;
+		d->angularHertz = def->angularHertz;
+		d->angularDampingRatio = def->angularDampingRatio;
+	}
+	return id;
+}
+
+cd2JointId cd2CreateWheelJoint(cd2WorldId worldId, const cd2WheelJointDef* def)
+{
+	cd2JointId id = CD2_NULL_JOINT_ID;
+	if (def == NULL)
+	{
+		CD2_REFUSE("cd2CreateWheelJoint: NULL def");
+		return id;
+	}
+	cdReal axisLength = cd2Length(def->localAxisA);
+	bool valid = cd2IsValidVec(def->localAnchorA) && cd2IsValidVec(def->localAnchorB) &&
+				 cd2IsValidVec(def->localAxisA) && axisLength > CD_R(0.0) && cd2NonNeg(def->hertz) &&
+				 cd2NonNeg(def->dampingRatio) && cd2Finite(def->lowerTranslation) &&
+				 cd2Finite(def->upperTranslation) && def->lowerTranslation <= def->upperTranslation &&
+				 cd2NonNeg(def->maxMotorTorque) && cd2Finite(def->motorSpeed);
+	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_WHEEL_JOINT,
+										   def->collideConnected, def->userData, valid, &id);
+	if (joint != NULL)
+	{
+		cd2JointData* d = &joint->data;
+		d->localAnchorA = def->localAnchorA;
+		d->localAnchorB = def->localAnchorB;
+		d->localAxisA = cd2Normalize(def->localAxisA);
+		d->enableSpring = def->enableSpring;
+		d->hertz = def->hertz;
+		d->dampingRatio = def->dampingRatio;
+		d->enableLimit = def->enableLimit;
+		d->lower = def->lowerTranslation;
+		d->upper = def->upperTranslation;
+		d->enableMotor = def->enableMotor;
+		d->maxMotorForce = def->maxMotorTorque;
+		d->motorSpeed = def->motorSpeed;
+	}
+	return id;
+}
+
+void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies)
+{
+	cd2Joint* joint = world->joints.data + jointIndex;
+	int a = joint->bodyA, b = joint->bodyB;
+	bool refilter = !joint->collideConnected;
+	cd2UnlinkJointEdge(world, jointIndex, 0, a);
+	cd2UnlinkJointEdge(world, jointIndex, 1, b);
+	joint->inUse = false;
+	joint->generation = 0;
+	cdIdPool_Free(&world->jointPool, jointIndex);
+	if (wakeBodies)
+	{
+		cd2WakeBody(world, a);
+		cd2WakeBody(world, b);
+	}
+	/* The bodies may collide now: let the broadphase report their pairs again. */
+	if (refilter)
+	{
+		cd2Body* body = world->bodies.data + b;
+		for (int s = body->headShape; s != CD2_NULL_INDEX; s = world->shapes.data[s].nextShape)
+		{
+			cd2WorldShape* shape = world->shapes.data + s;
+			if (shape->proxyId != CD_NULL_PROXY)
+			{
+				cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
+				shape->proxyId = CD_NULL_PROXY;
+				cd2UpdateShapeBounds(world, s, false);
+			}
+		}
+	}
+}
+
+void cd2DestroyJoint(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint != NULL)
+	{
+		cd2DestroyJointInternal(world, jointId.index1 - 1, true);
+	}
+}
+
+bool cd2Joint_IsValid(cd2JointId jointId)
+{
+	return cd2GetJoint(cd2GetWorldFromIndex(jointId.world0), jointId) != NULL;
+}
+
+cd2JointType cd2Joint_GetType(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->type : CD2_DISTANCE_JOINT;
+}
+
+cd2BodyId cd2Joint_GetBodyA(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? cd2MakeBodyId(world, joint->bodyA) : CD2_NULL_BODY_ID;
+}
+
+cd2BodyId cd2Joint_GetBodyB(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? cd2MakeBodyId(world, joint->bodyB) : CD2_NULL_BODY_ID;
+}
+
+cd2Vec cd2Joint_GetConstraintForce(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->constraintForce : CD2_VEC_ZERO;
+}
+
+cdReal cd2Joint_GetConstraintTorque(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->constraintTorque : CD_R(0.0);
+}
+
+void* cd2Joint_GetUserData(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->userData : NULL;
+}
+
+void cd2Joint_SetUserData(cd2JointId jointId, void* userData)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	if (joint != NULL)
+	{
+		joint->userData = userData;
+	}
+}
+
+void cd2Joint_WakeBodies(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint != NULL)
+	{
+		cd2WakeBody(world, joint->bodyA);
+		cd2WakeBody(world, joint->bodyB);
+	}
+}
+
+/* A joint of the given type for a setter (wakes its bodies), or NULL with a refusal. */
+static cd2Joint* cd2JointForSet(cd2JointId jointId, cd2JointType type, bool valid)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return NULL;
+	}
+	if (joint->type != type || !valid)
+	{
+		CD2_REFUSE("joint setter: wrong joint type or NaN/Inf/negative value");
+		return NULL;
+	}
+	cd2WakeBody(world, joint->bodyA);
+	cd2WakeBody(world, joint->bodyB);
+	return joint;
+}
+
+void cd2RevoluteJoint_EnableMotor(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
+	if (joint != NULL)
+	{
+		if (joint->data.enableMotor != flag)
+		{
+			joint->data.motorImpulse = CD_R(0.0);
+		}
+		joint->data.enableMotor = flag;
+	}
+}
+
+void cd2RevoluteJoint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, cd2Finite(motorSpeed));
+	if (joint != NULL)
+	{
+		joint->data.motorSpeed = motorSpeed;
+	}
+}
+
+void cd2RevoluteJoint_SetMaxMotorTorque(cd2JointId jointId, cdReal torque)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, cd2NonNeg(torque));
+	if (joint != NULL)
+	{
+		joint->data.maxMotorForce = torque;
+	}
+}
+
+void cd2RevoluteJoint_EnableLimit(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
+	if (joint != NULL)
+	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
+		joint->data.enableLimit = flag;
+	}
+}
+
+void cd2RevoluteJoint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
+{
+	cd2Joint* joint =
+		cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, cd2Finite(lower) && cd2Finite(upper) && lower <= upper);
+	if (joint != NULL)
+	{
+		joint->data.lower = cdClamp(lower, -CD_PI, CD_PI);
+		joint->data.upper = cdClamp(upper, -CD_PI, CD_PI);
+	}
+}
+
+cdReal cd2RevoluteJoint_GetAngle(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	if (joint == NULL || joint->type != CD2_REVOLUTE_JOINT)
+	{
+		return CD_R(0.0);
+	}
+	cd2Rot qA = world->bodies.data[joint->bodyA].transform.q,
+		   qB = world->bodies.data[joint->bodyB].transform.q;
+	cdReal angle = cd2RotGetAngle(cd2InvMulRot(qA, qB)) - joint->data.referenceAngle;
+	while (angle > CD_PI)
+	{
+		angle -= CD_R(2.0) * CD_PI;
+	}
+	while (angle < -CD_PI)
+	{
+		angle += CD_R(2.0) * CD_PI;
+	}
+	return angle;
+}
+
+void cd2MouseJoint_SetTarget(cd2JointId jointId, cd2Vec target)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_MOUSE_JOINT, cd2IsValidVec(target));
+	if (joint != NULL)
+	{
+		joint->data.target = target;
+	}
+}
+
+void cd2MotorJoint_SetLinearOffset(cd2JointId jointId, cd2Vec linearOffset)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_MOTOR_JOINT, cd2IsValidVec(linearOffset));
+	if (joint != NULL)
+	{
+		joint->data.linearOffset = linearOffset;
+	}
+}
+
+void cd2MotorJoint_SetAngularOffset(cd2JointId jointId, cdReal angularOffset)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_MOTOR_JOINT, cd2Finite(angularOffset));
+	if (joint != NULL)
+	{
+		joint->data.angularOffset = angularOffset;
+	}
+}
+
+void cd2DistanceJoint_SetLength(cd2JointId jointId, cdReal length)
+{
+	cd2Joint* joint = cd2JointForSet(jointId, CD2_DISTANCE_JOINT, cd2NonNeg(length));
+	if (joint != NULL)
+	{
+		joint->data.length = cdMax(length, CD_LINEAR_SLOP);
+	}
+}
+
+cdReal cd2DistanceJoint_GetCurrentLength(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	if (joint == NULL || joint->type != CD2_DISTANCE_JOINT)
+	{
+		return CD_R(0.0);
+	}
+	cd2Vec pA = cd2TransformPoint(world->bodies.data[joint->bodyA].transform, joint->data.localAnchorA);
+	cd2Vec pB = cd2TransformPoint(world->bodies.data[joint->bodyB].transform, joint->data.localAnchorB);
+	return cd2VecDistance(pA, pB);
+}
+
+void cd2DistanceJoint_SetLengthRange(cd2JointId jointId, cdReal minLength, cdReal maxLength)
+{
+	cd2Joint* joint =
+		cd2JointForSet(jointId, CD2_DISTANCE_JOINT,
+					   cd2NonNeg(minLength) && !(maxLength != maxLength) && minLength <= maxLength);
+	if (joint != NULL)
+	{
+		joint->data.minLength = minLength;
+		joint->data.maxLength = maxLength;
+	}
+}
+
+/* A joint of one of the kinds that have springs, motors or limits, for a setter. */
+static cd2Joint* cd2JointForOption(cd2JointId jointId, bool valid, bool allowWeld)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return NULL;
+	}
+	bool kind = joint->type == CD2_DISTANCE_JOINT || joint->type == CD2_REVOLUTE_JOINT ||
+				joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT ||
+				(allowWeld && joint->type == CD2_WELD_JOINT);
+	if (!kind || !valid)
+	{
+		CD2_REFUSE("joint setter: this joint kind has no such option, or a NaN/Inf/negative value");
+		return NULL;
+	}
+	cd2WakeBody(world, joint->bodyA);
+	cd2WakeBody(world, joint->bodyB);
+	return joint;
+}
+
+void cd2Joint_EnableSpring(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableSpring != flag)
+		{
+			joint->data.springImpulse = CD_R(0.0); /* warm starting must not keep a removed spring */
+		}
+		joint->data.enableSpring = flag;
+	}
+}
+
+void cd2Joint_SetSpringHertz(cd2JointId jointId, cdReal hertz)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(hertz), true);
+	if (joint != NULL)
+	{
+		joint->data.hertz = hertz;
+	}
+}
+
+void cd2Joint_SetSpringDampingRatio(cd2JointId jointId, cdReal dampingRatio)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(dampingRatio), true);
+	if (joint != NULL)
+	{
+		joint->data.dampingRatio = dampingRatio;
+	}
+}
+
+void cd2Joint_EnableMotor(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableMotor != flag)
+		{
+			joint->data.motorImpulse = CD_R(0.0);
+		}
+		joint->data.enableMotor = flag;
+	}
+}
+
+void cd2Joint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2Finite(motorSpeed), false);
+	if (joint != NULL)
+	{
+		joint->data.motorSpeed = motorSpeed;
+	}
+}
+
+void cd2Joint_SetMaxMotor(cd2JointId jointId, cdReal maxForceOrTorque)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, cd2NonNeg(maxForceOrTorque), false);
+	if (joint != NULL)
+	{
+		joint->data.maxMotorForce = maxForceOrTorque;
+	}
+}
+
+void cd2Joint_EnableLimit(cd2JointId jointId, bool flag)
+{
+	cd2Joint* joint = cd2JointForOption(jointId, true, false);
+	if (joint != NULL)
+	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
+		joint->data.enableLimit = flag;
+	}
+}
+
+void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
+{
+	cd2Joint* joint =
+		cd2JointForOption(jointId, cd2Finite(lower) && cd2Finite(upper) && lower <= upper, false);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (joint->type == CD2_DISTANCE_JOINT)
+	{
+		CD2_REFUSE("cd2Joint_SetLimits: use cd2DistanceJoint_SetLengthRange for distance joints");
+		return;
+	}
+	if (joint->type == CD2_REVOLUTE_JOINT)
+	{
+		lower = cdClamp(lower, -CD_PI, CD_PI);
+		upper = cdClamp(upper, -CD_PI, CD_PI);
+	}
+	joint->data.lower = lower;
+	joint->data.upper = upper;
+}
+
+cdReal cd2Joint_GetTranslation(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	if (joint == NULL || (joint->type != CD2_PRISMATIC_JOINT && joint->type != CD2_WHEEL_JOINT))
+	{
+		return CD_R(0.0);
+	}
+	const cd2Body* a = world->bodies.data + joint->bodyA;
+	const cd2Body* b = world->bodies.data + joint->bodyB;
+	cd2Vec pA = cd2TransformPoint(a->transform, joint->data.localAnchorA);
+	cd2Vec pB = cd2TransformPoint(b->transform, joint->data.localAnchorB);
+	return cd2Dot(cd2RotateVector(a->transform.q, joint->data.localAxisA), cd2Sub(pB, pA));
+}
+
+/* ---- solver dispatch ----------------------------------------------------------------------------- */
+static cd2SolverBody s_jointStaticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+										  {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+
+static void cd2MakeArgs(cd2World* world, cd2StepContext* context, int jointIndex, cd2JointSolverArgs* args,
+						cd2SolverBody* scratchA, cd2SolverBody* scratchB)
+{
+	cd2Joint* joint = world->joints.data + jointIndex;
+	int ia = world->bodies.data[joint->bodyA].solverIndex;
+	int ib = world->bodies.data[joint->bodyB].solverIndex;
+	*scratchA = s_jointStaticBody;
+	*scratchB = s_jointStaticBody;
+	args->joint = joint;
+	args->a = ia >= 0 ? context->bodies + ia : scratchA;
+	args->b = ib >= 0 ? context->bodies + ib : scratchB;
+	args->context = context;
+}
+
+static cdReal cd2UnwindAngle(cdReal angle)
+{
+	if (angle < -CD_PI)
+	{
+		return angle + CD_R(2.0) * CD_PI;
+	}
+	if (angle > CD_PI)
+	{
+		return angle - CD_R(2.0) * CD_PI;
+	}
+	return angle;
+}
+
+void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
+{
+	cd2SolverBody scratchA, scratchB;
+	for (int i = 0; i < context->jointCount; ++i)
+	{
+		int index = context->joints[i];
+		cd2Joint* joint = world->joints.data + index;
+		const cd2Body* a = world->bodies.data + joint->bodyA;
+		const cd2Body* b = world->bodies.data + joint->bodyB;
+		cd2JointData* d = &joint->data;
+		if (joint->type == CD2_MOTOR_JOINT)
+		{
+			d->localAnchorA = d->linearOffset;
+			d->localAnchorB = CD2_VEC_ZERO;
+		}
+		d->anchorA = cd2RotateVector(a->transform.q, cd2Sub(d->localAnchorA, a->localCenter));
+		d->anchorB = cd2RotateVector(b->transform.q, cd2Sub(d->localAnchorB, b->localCenter));
+		d->deltaCenter = cd2Sub(b->center, a->center);
+		d->deltaAngle =
+			cd2UnwindAngle(cd2RotGetAngle(cd2InvMulRot(a->transform.q, b->transform.q)) - d->referenceAngle);
+		d->jointSoftness = context->jointSoftness;
+		if (joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT)
+		{
+			d->axisA = cd2RotateVector(a->transform.q, d->localAxisA);
+		}
+		if (joint->type == CD2_MOUSE_JOINT)
+		{
+			d->deltaCenter = cd2Sub(b->center, d->target);
+		}
+		cd2JointSolverArgs args;
+		cd2MakeArgs(world, context, index, &args, &scratchA, &scratchB);
+		switch (joint->type)
+		{
+			case CD2_DISTANCE_JOINT:
+				cd2PrepareDistanceJoint(&args);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				cd2PrepareRevoluteJoint(&args);
+				break;
+			case CD2_WELD_JOINT:
+				cd2PrepareWeldJoint(&args);
+				break;
+			case CD2_MOUSE_JOINT:
+				cd2PrepareMouseJoint(&args);
+				break;
+			case CD2_MOTOR_JOINT:
+				cd2PrepareMotorJoint(&args);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				cd2PreparePrismaticJoint(&args);
+				break;
+			case CD2_WHEEL_JOINT:
+				cd2PrepareWheelJoint(&args);
+				break;
+			case CD2_FILTER_JOINT:
+				break;
+		}
+	}
+}
+
+void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
+{
+	cd2SolverBody scratchA, scratchB;
+	for (int i = 0; i < context->jointCount; ++i)
+	{
+		cd2JointSolverArgs args;
+		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
+		switch (args.joint->type)
+		{
+			case CD2_DISTANCE_JOINT:
+				cd2WarmStartDistanceJoint(&args);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				cd2WarmStartRevoluteJoint(&args);
+				break;
+			case CD2_WELD_JOINT:
+				cd2WarmStartWeldJoint(&args);
+				break;
+			case CD2_MOUSE_JOINT:
+				cd2WarmStartMouseJoint(&args);
+				break;
+			case CD2_MOTOR_JOINT:
+				cd2WarmStartMotorJoint(&args);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				cd2WarmStartPrismaticJoint(&args);
+				break;
+			case CD2_WHEEL_JOINT:
+				cd2WarmStartWheelJoint(&args);
+				break;
+			case CD2_FILTER_JOINT:
+				break;
+		}
+	}
+}
+
+void cd2SolveJoints(cd2World* world, cd2StepContext* context, bool useBias)
+{
+	cd2SolverBody scratchA, scratchB;
+	for (int i = 0; i < context->jointCount; ++i)
+	{
+		cd2JointSolverArgs args;
+		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
+		switch (args.joint->type)
+		{
+			case CD2_DISTANCE_JOINT:
+				cd2SolveDistanceJoint(&args, useBias);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				cd2SolveRevoluteJoint(&args, useBias);
+				break;
+			case CD2_WELD_JOINT:
+				cd2SolveWeldJoint(&args, useBias);
+				break;
+			case CD2_MOUSE_JOINT:
+				cd2SolveMouseJoint(&args, useBias);
+				break;
+			case CD2_MOTOR_JOINT:
+				cd2SolveMotorJoint(&args, useBias);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				cd2SolvePrismaticJoint(&args, useBias);
+				break;
+			case CD2_WHEEL_JOINT:
+				cd2SolveWheelJoint(&args, useBias);
+				break;
+			case CD2_FILTER_JOINT:
+				break;
+		}
+	}
+}
+
+void cd2StoreJointReactions(cd2World* world, cd2StepContext* context)
+{
+	cdReal inv_h = context->inv_h;
+	for (int i = 0; i < context->jointCount; ++i)
+	{
+		cd2Joint* joint = world->joints.data + context->joints[i];
+		const cd2JointData* d = &joint->data;
+		cd2Vec force = CD2_VEC_ZERO;
+		cdReal torque = CD_R(0.0);
+		switch (joint->type)
+		{
+			case CD2_DISTANCE_JOINT:
+				force = cd2Scale(d->impulse + d->lowerImpulse - d->upperImpulse + d->motorImpulse, d->axisA);
+				break;
+			case CD2_REVOLUTE_JOINT:
+				force = d->linearImpulse;
+				torque = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
+				break;
+			case CD2_WELD_JOINT:
+			case CD2_MOTOR_JOINT:
+				force = d->linearImpulse;
+				torque = d->angularImpulse;
+				break;
+			case CD2_MOUSE_JOINT:
+				force = d->linearImpulse;
+				break;
+			case CD2_PRISMATIC_JOINT:
+			{
+				cdReal axial = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
+				force =
+					cd2Add(cd2Scale(d->linearImpulse.x, cd2LeftPerp(d->axisA)), cd2Scale(axial, d->axisA));
+				torque = d->linearImpulse.y;
+				break;
+			}
+			case CD2_WHEEL_JOINT:
+			{
+				cdReal axial = d->springImpulse + d->lowerImpulse - d->upperImpulse;
+				force = cd2Add(cd2Scale(d->impulse, cd2LeftPerp(d->axisA)), cd2Scale(axial, d->axisA));
+				torque = d->motorImpulse;
+				break;
+			}
+			case CD2_FILTER_JOINT:
+				break;
+		}
+		joint->constraintForce = cd2Scale(inv_h, force);
+		joint->constraintTorque = inv_h * torque;
+	}
+}

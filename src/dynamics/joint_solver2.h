@@ -1,0 +1,50 @@
+/* collide: helpers shared by the per-kind 2D joint solvers. */
+#ifndef COLLIDE_JOINT_SOLVER2_H
+#define COLLIDE_JOINT_SOLVER2_H
+
+#include "world2_internal.h"
+
+/* Angle of B relative to A over the sub-steps (small: the step's own rotation). */
+static inline cdReal cd2RelativeAngle(cd2Rot a, cd2Rot b)
+{
+	return cd2RotGetAngle(cd2InvMulRot(a, b));
+}
+
+/* Applies P at rA on A (negative) and at rB on B (positive), plus an angular impulse L. */
+static inline void cd2ApplyJointImpulse(cd2SolverBody* a, cd2SolverBody* b, cd2Vec rA, cd2Vec rB, cd2Vec P,
+										cdReal L)
+{
+	a->linearVelocity = cd2MulSub(a->linearVelocity, a->invMass, P);
+	a->angularVelocity -= a->invInertia * (cd2Cross(rA, P) + L);
+	b->linearVelocity = cd2MulAdd(b->linearVelocity, b->invMass, P);
+	b->angularVelocity += b->invInertia * (cd2Cross(rB, P) + L);
+}
+
+/* The relative velocity of the anchor points. */
+static inline cd2Vec cd2AnchorVelocity(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
+{
+	return cd2Sub(cd2Add(b->linearVelocity, cd2CrossSV(b->angularVelocity, rB)),
+				  cd2Add(a->linearVelocity, cd2CrossSV(a->angularVelocity, rA)));
+}
+
+/* The point constraint's 2x2 effective mass matrix. */
+static inline cd2Mat22 cd2PointMassMatrix(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA,
+										  cd2Vec rB)
+{
+	cdReal mA = a->invMass, mB = b->invMass, iA = a->invInertia, iB = b->invInertia;
+	cd2Mat22 K;
+	K.cx.x = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
+	K.cy.x = -rA.y * rA.x * iA - rB.y * rB.x * iB;
+	K.cx.y = K.cy.x;
+	K.cy.y = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
+	return K;
+}
+
+/* The current separation of the anchors (from the step's start plus the position deltas). */
+static inline cd2Vec cd2AnchorSeparation(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB,
+										 cd2Vec deltaCenter)
+{
+	return cd2Add(cd2Add(cd2Sub(b->deltaPosition, a->deltaPosition), cd2Sub(rB, rA)), deltaCenter);
+}
+
+#endif

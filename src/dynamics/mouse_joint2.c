@@ -1,0 +1,53 @@
+/* collide: the mouse joint: a soft spring pulling a point of body B towards a world target, with
+ * a force cap (dragging bodies with the mouse or a finger). Body A is only the ground. */
+#include "joint_solver2.h"
+
+void cd2PrepareMouseJoint(cd2JointSolverArgs* args)
+{
+	cd2Joint* joint = args->joint;
+	cd2JointData* d = &joint->data;
+	/* (cd2PrepareJoints set deltaCenter to centre of B - target.) */
+	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
+}
+
+void cd2WarmStartMouseJoint(cd2JointSolverArgs* args)
+{
+	cd2JointData* d = &args->joint->data;
+	cd2SolverBody* b = args->b;
+	cd2Vec rB = cd2RotateVector(b->deltaRotation, d->anchorB);
+	b->linearVelocity = cd2MulAdd(b->linearVelocity, b->invMass, d->linearImpulse);
+	b->angularVelocity += b->invInertia * cd2Cross(rB, d->linearImpulse);
+}
+
+void cd2SolveMouseJoint(cd2JointSolverArgs* args, bool useBias)
+{
+	(void)useBias; /* a spring: always soft */
+	cd2JointData* d = &args->joint->data;
+	cd2SolverBody* b = args->b;
+	cdReal h = args->context->h;
+	cd2Vec rB = cd2RotateVector(b->deltaRotation, d->anchorB);
+	cd2Vec Cdot = cd2Add(b->linearVelocity, cd2CrossSV(b->angularVelocity, rB));
+	/* deltaCenter holds centreB - target at the step's start (see cd2PrepareJoints). */
+	cd2Vec separation = cd2Add(cd2Add(d->deltaCenter, b->deltaPosition), rB);
+	cd2Vec bias = cd2Scale(d->springSoftness.biasRate, separation);
+	cdReal massScale = d->springSoftness.massScale, impulseScale = d->springSoftness.impulseScale;
+	cdReal mB = b->invMass, iB = b->invInertia;
+	cd2Mat22 K;
+	K.cx.x = mB + iB * rB.y * rB.y;
+	K.cx.y = -iB * rB.x * rB.y;
+	K.cy.x = K.cx.y;
+	K.cy.y = mB + iB * rB.x * rB.x;
+	cd2Vec x = cd2Solve22(K, cd2Add(Cdot, bias));
+	cd2Vec impulse = cd2Sub(cd2Scale(-massScale, x), cd2Scale(impulseScale, d->linearImpulse));
+	cd2Vec old = d->linearImpulse;
+	d->linearImpulse = cd2Add(d->linearImpulse, impulse);
+	cdReal maxImpulse = d->maxForce * h;
+	cdReal len2 = cd2Dot(d->linearImpulse, d->linearImpulse);
+	if (len2 > maxImpulse * maxImpulse)
+	{
+		d->linearImpulse = cd2Scale(maxImpulse / cdSqrt(len2), d->linearImpulse);
+	}
+	impulse = cd2Sub(d->linearImpulse, old);
+	b->linearVelocity = cd2MulAdd(b->linearVelocity, mB, impulse);
+	b->angularVelocity += iB * cd2Cross(rB, impulse);
+}

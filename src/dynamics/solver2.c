@@ -1,0 +1,349 @@
+/* collide: the 2D step's solve: the dense arrays of awake bodies and touching contacts, the
+ * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
+ * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
+ * hit and move events, sleep). Single-threaded and in index order: the same input gives the same
+ * bits. The arrays are laid out so that a later graph colouring can split the constraints into
+ * independent sets and run them wide. */
+#include "world2_internal.h"
+
+#include "../base/graph_color.h"
+
+cd2Softness cd2MakeSoft(cdReal hertz, cdReal zeta, cdReal h)
+{
+	cd2Softness soft = {CD_R(0.0), CD_R(1.0), CD_R(0.0)};
+	if (hertz == CD_R(0.0))
+	{
+		return soft;
+	}
+	cdReal omega = CD_R(2.0) * CD_PI * hertz;
+	cdReal a1 = CD_R(2.0) * zeta + h * omega;
+	cdReal a2 = h * omega * a1;
+	cdReal a3 = CD_R(1.0) / (CD_R(1.0) + a2);
+	soft.biasRate = omega / a1;
+	soft.massScale = a2 * a3;
+	soft.impulseScale = a3;
+	return soft;
+}
+
+cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle)
+{
+	cd2Rot q2 = {q.c - deltaAngle * q.s, q.s + deltaAngle * q.c};
+	cdReal mag = cdSqrt(q2.s * q2.s + q2.c * q2.c);
+	cdReal invMag = mag > CD_R(0.0) ? CD_R(1.0) / mag : CD_R(0.0);
+	cd2Rot out = {q2.c * invMag, q2.s * invMag};
+	return out;
+}
+
+static void cd2IntegrateVelocities(cd2World* world, cd2StepContext* context)
+{
+	cdReal h = context->h;
+	cdReal maxLinear = context->maxLinearVelocity;
+	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
+	for (int i = 0; i < context->bodyCount; ++i)
+	{
+		const cd2Body* body = world->bodies.data + context->bodyIndices[i];
+		cd2SolverBody* s = context->bodies + i;
+		if (body->type != CD_DYNAMIC_BODY)
+		{
+			continue;
+		}
+		cd2Vec v = s->linearVelocity;
+		cdReal w = s->angularVelocity;
+		cd2Vec dv = cd2Scale(h * body->invMass,
+							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
+		cdReal dw = h * body->invInertia * body->torque;
+		/* Damping as an implicit factor: stable for any damping and step. */
+		v = cd2MulAdd(dv, CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping), v);
+		w = dw + w / (CD_R(1.0) + h * body->angularDamping);
+		if (cd2Dot(v, v) > maxLinear * maxLinear)
+		{
+			v = cd2Scale(maxLinear / cd2Length(v), v);
+		}
+		if (w * w > maxAngular * maxAngular)
+		{
+			w = w > CD_R(0.0) ? maxAngular : -maxAngular;
+		}
+		s->linearVelocity = v;
+		s->angularVelocity = w;
+	}
+}
+
+static void cd2IntegratePositions(cd2StepContext* context)
+{
+	cdReal h = context->h;
+	for (int i = 0; i < context->bodyCount; ++i)
+	{
+		cd2SolverBody* s = context->bodies + i;
+		s->deltaRotation = cd2IntegrateRotation(s->deltaRotation, h * s->angularVelocity);
+		s->deltaPosition = cd2MulAdd(s->deltaPosition, h, s->linearVelocity);
+	}
+}
+
+/* Hit events: touching contacts whose approach speed exceeded the threshold and that pushed. */
+static void cd2ReportHits(cd2World* world, cd2StepContext* context)
+{
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		const cd2Contact* contact = world->contacts.data + context->constraints[i].contact;
+		const cd2WorldShape* a = world->shapes.data + contact->shapeA;
+		const cd2WorldShape* b = world->shapes.data + contact->shapeB;
+		if (!a->enableHitEvents && !b->enableHitEvents)
+		{
+			continue;
+		}
+		cd2ContactHitEvent event;
+		memset(&event, 0, sizeof(event));
+		event.approachSpeed = world->hitEventThreshold;
+		bool hit = false;
+		for (int k = 0; k < contact->pointCount; ++k)
+		{
+			cdReal approach = -contact->points[k].relativeVelocity;
+			if (approach > event.approachSpeed && contact->points[k].maxNormalImpulse > CD_R(0.0))
+			{
+				event.approachSpeed = approach;
+				event.point = contact->points[k].point;
+				hit = true;
+			}
+		}
+		if (hit)
+		{
+			event.normal = contact->normal;
+			event.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
+			event.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
+			if (!cdArrayPush(world->hitEvents, event))
+			{
+				world->outOfMemory = true;
+			}
+		}
+	}
+}
+
+void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
+{
+	cd2StepContext context;
+	memset(&context, 0, sizeof(context));
+	context.dt = timeStep;
+	context.inv_dt = CD_R(1.0) / timeStep;
+	context.subStepCount = subStepCount;
+	context.h = timeStep / (cdReal)subStepCount;
+	context.inv_h = (cdReal)subStepCount * context.inv_dt;
+	/* Stiffer than an eighth of the sub-step rate would ring. */
+	cdReal contactHertz = cdMin(world->contactHertz, CD_R(0.125) * context.inv_h);
+	context.contactSoftness = cd2MakeSoft(contactHertz, world->contactDampingRatio, context.h);
+	context.staticSoftness = cd2MakeSoft(CD_R(2.0) * contactHertz, world->contactDampingRatio, context.h);
+	/* Joints: the world's joint stiffness, capped at a quarter of the sub-step rate. */
+	cdReal jointHertz = cdMin(world->jointHertz, CD_R(0.25) * context.inv_h);
+	context.jointSoftness = cd2MakeSoft(jointHertz, world->jointDampingRatio, context.h);
+	context.restitutionThreshold = world->restitutionThreshold;
+	context.maxLinearVelocity = world->maximumLinearSpeed * cdGetLengthUnitsPerMeter();
+	context.contactPushMaxVelocity = world->contactPushMaxVelocity * cdGetLengthUnitsPerMeter();
+	context.enableWarmStarting = true;
+
+	/* The awake bodies, dense. */
+	int bodyCapacity = world->bodies.count;
+	context.bodies =
+		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
+	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL))
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	for (int i = 0; i < world->bodies.count; ++i)
+	{
+		cd2Body* body = world->bodies.data + i;
+		body->solverIndex = CD2_NULL_INDEX;
+		if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
+		{
+			continue;
+		}
+		int k = context.bodyCount++;
+		body->solverIndex = k;
+		body->center0 = body->center;
+		body->rotation0 = body->transform.q;
+		body->isFast = false;
+		context.bodyIndices[k] = i;
+		cd2SolverBody* s = context.bodies + k;
+		s->linearVelocity = body->linearVelocity;
+		s->angularVelocity = body->angularVelocity;
+		s->deltaPosition = CD2_VEC_ZERO;
+		s->deltaRotation = CD2_ROT_IDENTITY;
+		s->invMass = body->invMass;
+		s->invInertia = body->invInertia;
+	}
+
+	/* Touching contacts with an awake body. */
+	int contactCapacity = world->contacts.count;
+	context.constraints = (cd2ContactConstraint*)cdArena_Alloc(
+		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
+	for (int i = 0; i < world->contacts.count && context.constraints != NULL; ++i)
+	{
+		const cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse || contact->pointCount == 0 ||
+			(contact->flags & (CD2_CONTACT_SENSOR | CD2_CONTACT_DISABLED)) != 0 ||
+			(contact->flags & CD2_CONTACT_TOUCHING) == 0)
+		{
+			continue;
+		}
+		if (world->bodies.data[contact->bodyA].solverIndex < 0 &&
+			world->bodies.data[contact->bodyB].solverIndex < 0)
+		{
+			continue;
+		}
+		context.constraints[context.constraintCount++].contact = i;
+	}
+	/* Colour order (see graph_color.h). */
+	if (context.constraintCount > 1)
+	{
+		int n = context.constraintCount;
+		int* bodyA = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* bodyB = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* colors = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* order = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* contacts = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && contacts != NULL)
+		{
+			for (int i = 0; i < n; ++i)
+			{
+				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
+				const cd2Body* a = world->bodies.data + contact->bodyA;
+				const cd2Body* b = world->bodies.data + contact->bodyB;
+				/* Kinematic bodies are immovable for the solver: no colour. */
+				bodyA[i] = a->type == CD_DYNAMIC_BODY ? a->solverIndex : CD2_NULL_INDEX;
+				bodyB[i] = b->type == CD_DYNAMIC_BODY ? b->solverIndex : CD2_NULL_INDEX;
+				contacts[i] = context.constraints[i].contact;
+			}
+			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
+			{
+				for (int i = 0; i < n; ++i)
+				{
+					context.constraints[i].contact = contacts[order[i]];
+				}
+			}
+		}
+	}
+	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
+	for (int i = 0; i < world->joints.count && context.joints != NULL; ++i)
+	{
+		const cd2Joint* joint = world->joints.data + i;
+		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
+		{
+			continue;
+		}
+		const cd2Body* a = world->bodies.data + joint->bodyA;
+		const cd2Body* b = world->bodies.data + joint->bodyB;
+		if (!a->enabled || !b->enabled || (a->solverIndex < 0 && b->solverIndex < 0))
+		{
+			continue;
+		}
+		context.joints[context.jointCount++] = i;
+	}
+
+	cd2PrepareContacts(world, &context);
+	cd2PrepareJoints(world, &context);
+	for (int step = 0; step < subStepCount; ++step)
+	{
+		cd2IntegrateVelocities(world, &context);
+		cd2WarmStartJoints(world, &context);
+		cd2WarmStartContacts(&context);
+		cd2SolveJoints(world, &context, true);
+		cd2SolveContacts(&context, true);
+		cd2IntegratePositions(&context);
+		cd2SolveJoints(world, &context, false);
+		cd2SolveContacts(&context, false);
+	}
+	cd2ApplyRestitution(&context);
+	cd2StoreImpulses(world, &context);
+	cd2StoreJointReactions(world, &context);
+
+	/* Finalize: velocities and transforms back into the bodies. */
+	bool sleepAllowed = world->enableSleep;
+	for (int k = 0; k < context.bodyCount; ++k)
+	{
+		cd2Body* body = world->bodies.data + context.bodyIndices[k];
+		const cd2SolverBody* s = context.bodies + k;
+		body->linearVelocity = s->linearVelocity;
+		body->angularVelocity = s->angularVelocity;
+		body->center = cd2Add(body->center, s->deltaPosition);
+		body->transform.q = cd2NormalizeRot(cd2MulRot(s->deltaRotation, body->transform.q));
+		body->transform.p = cd2Sub(body->center, cd2RotateVector(body->transform.q, body->localCenter));
+		body->force = CD2_VEC_ZERO;
+		body->torque = CD_R(0.0);
+		cdReal speed = cd2Length(body->linearVelocity);
+		cdReal sleepVelocity = cdMax(body->maxExtent * cdAbs(body->angularVelocity), speed);
+		if (!sleepAllowed || !body->enableSleep || sleepVelocity > body->sleepThreshold)
+		{
+			body->sleepTime = CD_R(0.0);
+		}
+		else
+		{
+			body->sleepTime += timeStep;
+		}
+		if (world->enableContinuous && body->type == CD_DYNAMIC_BODY)
+		{
+			/* Fast: it may have moved through something thinner than half its inner extent. */
+			cdReal travel = speed * timeStep + cdAbs(body->angularVelocity) * timeStep * body->maxExtent;
+			body->isFast = body->isBullet || CD_R(0.5) * body->minExtent < travel;
+		}
+	}
+	/* A moving kinematic body keeps what touches it awake. */
+	for (int k = 0; k < context.bodyCount; ++k)
+	{
+		cd2Body* body = world->bodies.data + context.bodyIndices[k];
+		if (body->type != CD_KINEMATIC_BODY || body->sleepTime > CD_R(0.0))
+		{
+			continue;
+		}
+		for (int key = body->headContactKey; key != CD2_NULL_INDEX;)
+		{
+			const cd2Contact* contact = world->contacts.data + cd2EdgeContact(key);
+			int other = cd2EdgeSide(key) == 0 ? contact->bodyB : contact->bodyA;
+			if ((contact->flags & CD2_CONTACT_TOUCHING) != 0 && (contact->flags & CD2_CONTACT_SENSOR) == 0)
+			{
+				world->bodies.data[other].sleepTime = CD_R(0.0);
+			}
+			key = contact->nextKey[cd2EdgeSide(key)];
+		}
+	}
+	/* Continuous collision: non-bullets first (against static), then bullets (against static and
+	 * the others' final positions). */
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		for (int k = 0; k < context.bodyCount; ++k)
+		{
+			int index = context.bodyIndices[k];
+			cd2Body* body = world->bodies.data + index;
+			if (body->isFast && body->isBullet == (pass == 1))
+			{
+				cd2SolveContinuous(world, index);
+			}
+		}
+	}
+	for (int k = 0; k < context.bodyCount; ++k)
+	{
+		cd2Body* body = world->bodies.data + context.bodyIndices[k];
+		for (int s = body->headShape; s != CD2_NULL_INDEX; s = world->shapes.data[s].nextShape)
+		{
+			cd2UpdateShapeBounds(world, s, false);
+		}
+	}
+	cd2ReportHits(world, &context);
+	if (sleepAllowed)
+	{
+		cd2UpdateSleep(world);
+	}
+	for (int k = 0; k < context.bodyCount; ++k)
+	{
+		int index = context.bodyIndices[k];
+		cd2Body* body = world->bodies.data + index;
+		cd2BodyMoveEvent event;
+		event.transform = body->transform;
+		event.bodyId = cd2MakeBodyId(world, index);
+		event.userData = body->userData;
+		event.fellAsleep = !body->awake;
+		if (!cdArrayPush(world->moveEvents, event))
+		{
+			world->outOfMemory = true;
+		}
+	}
+}

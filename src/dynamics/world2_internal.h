@@ -1,0 +1,381 @@
+/* collide: the 2D world's internal data. Everything a snapshot saves is plain data (indices, no
+ * pointers except user data), so the state is a set of arrays; see snapshot2.c. */
+#ifndef COLLIDE_WORLD2_INTERNAL_H
+#define COLLIDE_WORLD2_INTERNAL_H
+
+#include "collide/world2.h"
+
+#include "../base/container.h"
+
+#define CD2_NULL_INDEX (-1)
+
+/* Seconds a body must stay below its sleep threshold before its island may sleep. */
+#define CD2_TIME_TO_SLEEP CD_R(0.5)
+/* Fat-box margin of shapes (scaled by the length units). */
+#define CD2_AABB_MARGIN (CD_R(0.1) * cdGetLengthUnitsPerMeter())
+/* Most rotation per sub-step (radians), so the small-angle rotation update stays accurate. */
+#define CD2_MAX_ROTATION (CD_R(0.25) * CD_PI)
+
+/* ---- bodies ---------------------------------------------------------------------------------- */
+typedef struct cd2Body
+{
+	uint32_t generation;
+	bool inUse;
+	cd2BodyType type;
+	cd2Transform transform; /* of the body origin */
+	cd2Vec center;			/* world centre of mass */
+	cd2Vec center0;			/* at the start of the step (continuous collision) */
+	cd2Rot rotation0;
+	cd2Vec localCenter;
+	cd2Vec linearVelocity;
+	cdReal angularVelocity;
+	cd2Vec force;
+	cdReal torque;
+	cdReal mass, invMass, inertia, invInertia;
+	cdReal linearDamping, angularDamping, gravityScale, sleepThreshold, sleepTime;
+	cdReal minExtent, maxExtent; /* of the shapes about the centre of mass */
+	bool enableSleep, awake, fixedRotation, isBullet, enabled, customMass, isFast;
+	int headShape, shapeCount;
+	int headContactKey; /* contact edge key: contactIndex << 1 | side */
+	int headJointKey;
+	int islandId; /* sleeping island, or CD2_NULL_INDEX */
+	int islandNext;
+	int solverIndex; /* in the step's dense awake arrays, or CD2_NULL_INDEX */
+	void* userData;
+} cd2Body;
+
+/* ---- shapes ---------------------------------------------------------------------------------- */
+typedef struct cd2WorldShape
+{
+	uint32_t generation;
+	bool inUse;
+	cd2WorldShapeType type;
+	int body;
+	int nextShape; /* in the body's list */
+	int chain;	   /* CD2_NULL_INDEX unless a chain segment */
+	int nextChainShape;
+	union
+	{
+		cd2Circle circle;
+		cd2Capsule capsule;
+		cd2Polygon polygon;
+		cd2Segment segment;
+		cd2ChainSegment chainSegment;
+	} geometry; /* body frame */
+	cdReal density, friction, restitution, rollingResistance, tangentSpeed;
+	cd2Filter filter;
+	bool isSensor, enableSensorEvents, enableContactEvents, enableHitEvents, enablePreSolveEvents;
+	int proxyId;
+	cd2Aabb aabb;	 /* tight, world */
+	cd2Aabb fatAabb; /* what the broadphase holds */
+	void* userData;
+} cd2WorldShape;
+
+typedef struct cd2ChainRec
+{
+	uint32_t generation;
+	bool inUse;
+	int body;
+	int headShape;
+	int segmentCount;
+	void* userData;
+} cd2ChainRec;
+
+/* ---- contacts -------------------------------------------------------------------------------- */
+typedef struct cd2ContactPoint
+{
+	cd2Vec anchorA, anchorB; /* from the centres of mass to the point, world orientation */
+	cd2Vec point;			 /* world, at the last update */
+	cdReal separation;
+	uint32_t id;
+	cdReal normalImpulse, tangentImpulse, maxNormalImpulse;
+	cdReal relativeVelocity; /* normal approach speed at the start of the step (negative: closing) */
+} cd2ContactPoint;
+
+enum
+{
+	CD2_CONTACT_TOUCHING = 1 << 0,
+	CD2_CONTACT_SENSOR = 1 << 1,
+	CD2_CONTACT_DISABLED = 1 << 2, /* by the pre-solve callback, this step */
+	CD2_CONTACT_EVENTS = 1 << 3,
+	CD2_CONTACT_HIT_EVENTS = 1 << 4,
+	CD2_CONTACT_PRESOLVE = 1 << 5
+};
+
+typedef struct cd2Contact
+{
+	bool inUse;
+	uint32_t flags;
+	int shapeA, shapeB, bodyA, bodyB;
+	int prevKey[2], nextKey[2]; /* edges in bodyA's (0) and bodyB's (1) lists */
+	cd2Vec normal;				/* world, from A to B */
+	int pointCount;
+	cd2ContactPoint points[2];
+	cdReal rollingImpulse;
+	cdReal friction, restitution, rollingResistance, tangentSpeed;
+} cd2Contact;
+
+/* ---- joints ---------------------------------------------------------------------------------- */
+typedef struct cd2Softness
+{
+	cdReal biasRate, massScale, impulseScale;
+} cd2Softness;
+
+typedef struct cd2JointData
+{
+	/* definition */
+	cd2Vec localAnchorA, localAnchorB; /* body frames, from the body origins */
+	cd2Vec localAxisA;
+	cdReal referenceAngle;
+	cdReal length, minLength, maxLength;
+	cdReal hertz, dampingRatio; /* spring */
+	cdReal angularHertz, angularDampingRatio;
+	cdReal lower, upper;			  /* limit (angle or translation) */
+	cdReal motorSpeed, maxMotorForce; /* force or torque */
+	cdReal maxForce, maxTorque, correctionFactor;
+	cd2Vec target, linearOffset;
+	cdReal angularOffset;
+	bool enableSpring, enableLimit, enableMotor;
+	/* accumulated impulses (warm starting) */
+	cd2Vec linearImpulse;
+	cdReal impulse, angularImpulse, springImpulse, motorImpulse, lowerImpulse, upperImpulse;
+	/* the step's solver data */
+	cd2Vec anchorA, anchorB, deltaCenter, axisA;
+	cdReal deltaAngle, axialMass;
+	cd2Softness springSoftness, jointSoftness, angularSoftness;
+} cd2JointData;
+
+typedef struct cd2Joint
+{
+	uint32_t generation;
+	bool inUse;
+	cd2JointType type;
+	int bodyA, bodyB;
+	int prevKey[2], nextKey[2];
+	bool collideConnected;
+	cd2JointData data;
+	cd2Vec constraintForce; /* last step */
+	cdReal constraintTorque;
+	void* userData;
+} cd2Joint;
+
+/* ---- islands (sleeping groups) --------------------------------------------------------------- */
+typedef struct cd2Island
+{
+	bool inUse;
+	int headBody;
+	int bodyCount;
+} cd2Island;
+
+/* ---- solver scratch -------------------------------------------------------------------------- */
+typedef struct cd2SolverBody
+{
+	cd2Vec linearVelocity;
+	cdReal angularVelocity;
+	cd2Vec deltaPosition;
+	cd2Rot deltaRotation;
+	cdReal invMass, invInertia;
+} cd2SolverBody;
+
+typedef struct cd2ContactConstraintPoint
+{
+	cd2Vec anchorA, anchorB;
+	cdReal baseSeparation;
+	cdReal relativeVelocity;
+	cdReal normalImpulse, tangentImpulse, maxNormalImpulse;
+	cdReal normalMass, tangentMass;
+} cd2ContactConstraintPoint;
+
+typedef struct cd2ContactConstraint
+{
+	int contact;
+	int indexA, indexB; /* solver bodies, CD2_NULL_INDEX for static (or sleeping) */
+	cd2Vec normal;
+	cdReal invMassA, invIA, invMassB, invIB;
+	cdReal friction, restitution, rollingResistance, tangentSpeed;
+	cdReal rollingImpulse, rollingMass;
+	cdReal normalAcceleration; /* of B relative to A from gravity and forces, along the normal */
+	cd2Softness softness;
+	int pointCount;
+	cd2ContactConstraintPoint points[2];
+} cd2ContactConstraint;
+
+typedef struct cd2StepContext
+{
+	cdReal dt, inv_dt, h, inv_h;
+	int subStepCount;
+	cd2Softness contactSoftness, staticSoftness, jointSoftness;
+	cdReal restitutionThreshold, maxLinearVelocity, contactPushMaxVelocity;
+	cd2SolverBody* bodies; /* dense, awake (dynamic and kinematic) */
+	int* bodyIndices;	   /* world body index of each solver body */
+	int bodyCount;
+	cd2ContactConstraint* constraints;
+	int constraintCount;
+	int* joints;
+	int jointCount;
+	bool enableWarmStarting;
+} cd2StepContext;
+
+/* ---- events ---------------------------------------------------------------------------------- */
+typedef CD_ARRAY(cd2ContactBeginTouchEvent) cd2BeginEventArray;
+typedef CD_ARRAY(cd2ContactEndTouchEvent) cd2EndEventArray;
+typedef CD_ARRAY(cd2ContactHitEvent) cd2HitEventArray;
+typedef CD_ARRAY(cd2SensorBeginTouchEvent) cd2SensorBeginArray;
+typedef CD_ARRAY(cd2SensorEndTouchEvent) cd2SensorEndArray;
+typedef CD_ARRAY(cd2BodyMoveEvent) cd2MoveEventArray;
+
+/* ---- the world ------------------------------------------------------------------------------- */
+typedef struct cd2World
+{
+	uint16_t index;
+	uint16_t generation;
+	bool locked;
+	/* settings (saved with the state) */
+	cd2Vec gravity;
+	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio, contactPushMaxVelocity,
+		jointHertz, jointDampingRatio, maximumLinearSpeed;
+	bool enableSleep, enableContinuous;
+	/* objects */
+	CD_ARRAY(cd2Body) bodies;
+	CD_ARRAY(cd2WorldShape) shapes;
+	CD_ARRAY(cd2ChainRec) chains;
+	CD_ARRAY(cd2Contact) contacts;
+	CD_ARRAY(cd2Joint) joints;
+	CD_ARRAY(cd2Island) islands;
+	cdIdPool bodyPool, shapePool, chainPool, contactPool, jointPool, islandPool;
+	cdPairSet pairs; /* shape pair -> contact index */
+	cd2BroadPhase* broadPhase;
+	uint32_t generationCounter; /* never restored, so ids from a discarded future stay stale */
+	/* callbacks (not part of the state) */
+	cd2PreSolveFcn* preSolveFcn;
+	void* preSolveContext;
+	cd2CustomFilterFcn* customFilterFcn;
+	void* customFilterContext;
+	void* userData;
+	/* events of the last step */
+	cd2BeginEventArray beginEvents;
+	cd2EndEventArray endEvents;
+	cd2HitEventArray hitEvents;
+	cd2SensorBeginArray sensorBeginEvents;
+	cd2SensorEndArray sensorEndEvents;
+	cd2MoveEventArray moveEvents;
+	/* End events recorded by the last step; those appended after it (a shape destroyed between
+	 * steps) are kept for the next step's arrays. */
+	int stepEndEventCount, stepSensorEndEventCount;
+	cdReal stepTimeStep; /* of the step in progress (0 outside a step) */
+	cdArena arena;
+	bool outOfMemory;
+} cd2World;
+
+/* ---- world2.c -------------------------------------------------------------------------------- */
+cd2World* cd2GetWorld(cd2WorldId id);	   /* NULL (and an assert) when stale */
+cd2World* cd2GetWorldQuiet(cd2WorldId id); /* NULL when stale, no assert */
+cd2World* cd2GetWorldFromIndex(uint16_t world0);
+/* Reports a refused call through the assert hook (debug builds abort by default). */
+void cd2Refuse(const char* reason, const char* file, int line);
+#define CD2_REFUSE(reason) cd2Refuse(reason, __FILE__, __LINE__)
+uint32_t cd2NextGeneration(cd2World* world);
+
+/* ---- body2.c --------------------------------------------------------------------------------- */
+cd2Body* cd2GetBody(cd2World* world, cd2BodyId id); /* NULL when stale */
+cd2BodyId cd2MakeBodyId(const cd2World* world, int index);
+void cd2UpdateBodyMass(cd2World* world, int bodyIndex);
+void cd2WakeBody(cd2World* world, int bodyIndex);
+bool cd2ShouldBodiesCollide(const cd2World* world, int bodyA, int bodyB); /* joints */
+
+/* ---- shape2.c -------------------------------------------------------------------------------- */
+cd2WorldShape* cd2GetShape(cd2World* world, cd2ShapeId id);
+cd2ShapeId cd2MakeShapeId(const cd2World* world, int index);
+/* The shape as a tagged shape, transformed by xf (body frame when xf is the identity). */
+cd2Shape cd2MakeTaggedShape(const cd2WorldShape* shape, cd2Transform xf);
+cd2Aabb cd2ComputeWorldShapeAabb(const cd2WorldShape* shape, cd2Transform xf);
+bool cd2ShouldShapesCollide(cd2Filter a, cd2Filter b);
+void cd2DestroyShapeInternal(cd2World* world, int shapeIndex, bool wakeBodies);
+/* Brings the broadphase box up to date after a move; teleport: the body jumped. */
+void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
+
+/* ---- contact2.c ------------------------------------------------------------------------------ */
+void cd2UpdateBroadPhasePairs(cd2World* world);
+void cd2UpdateContacts(cd2World* world, cdReal timeStep);
+/* Sensor overlaps at the end of the step, with their begin and end events. */
+void cd2UpdateSensors(cd2World* world);
+void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies);
+/* The single place where a pair's manifold is computed: shapes in their body frames, B's
+ * transform in A's frame; the manifold comes back in A's frame. */
+cd2Manifold cd2CollideLocal(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
+							cdReal speculativeDistance);
+
+/* ---- contact_solver2.c ----------------------------------------------------------------------- */
+void cd2PrepareContacts(cd2World* world, cd2StepContext* context);
+void cd2WarmStartContacts(cd2StepContext* context);
+void cd2SolveContacts(cd2StepContext* context, bool useBias);
+void cd2ApplyRestitution(cd2StepContext* context);
+void cd2StoreImpulses(cd2World* world, cd2StepContext* context);
+
+/* ---- solver2.c ------------------------------------------------------------------------------- */
+void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount);
+cd2Softness cd2MakeSoft(cdReal hertz, cdReal zeta, cdReal h);
+cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle);
+
+/* ---- island.c -------------------------------------------------------------------------------- */
+void cd2WakeIsland(cd2World* world, int islandId);
+/* Groups the awake bodies by touching contacts and joints and puts to sleep each group whose
+ * bodies have all rested for CD2_TIME_TO_SLEEP. */
+void cd2UpdateSleep(cd2World* world);
+/* Puts the body's connected group to sleep now. */
+void cd2SleepBodyGroup(cd2World* world, int bodyIndex);
+void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
+
+/* ---- joint2.c -------------------------------------------------------------------------------- */
+cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id);
+void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies);
+void cd2PrepareJoints(cd2World* world, cd2StepContext* context);
+void cd2WarmStartJoints(cd2World* world, cd2StepContext* context);
+void cd2SolveJoints(cd2World* world, cd2StepContext* context, bool useBias);
+void cd2StoreJointReactions(cd2World* world, cd2StepContext* context);
+
+/* The per-kind solvers (one file each). */
+typedef struct cd2JointSolverArgs
+{
+	cd2Joint* joint;
+	cd2SolverBody* a; /* a zero body for static ones */
+	cd2SolverBody* b;
+	cd2StepContext* context;
+} cd2JointSolverArgs;
+
+void cd2PrepareDistanceJoint(cd2JointSolverArgs* args);
+void cd2WarmStartDistanceJoint(cd2JointSolverArgs* args);
+void cd2SolveDistanceJoint(cd2JointSolverArgs* args, bool useBias);
+void cd2PrepareRevoluteJoint(cd2JointSolverArgs* args);
+void cd2WarmStartRevoluteJoint(cd2JointSolverArgs* args);
+void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias);
+void cd2PrepareWeldJoint(cd2JointSolverArgs* args);
+void cd2WarmStartWeldJoint(cd2JointSolverArgs* args);
+void cd2SolveWeldJoint(cd2JointSolverArgs* args, bool useBias);
+void cd2PrepareMouseJoint(cd2JointSolverArgs* args);
+void cd2WarmStartMouseJoint(cd2JointSolverArgs* args);
+void cd2SolveMouseJoint(cd2JointSolverArgs* args, bool useBias);
+void cd2PrepareMotorJoint(cd2JointSolverArgs* args);
+void cd2WarmStartMotorJoint(cd2JointSolverArgs* args);
+void cd2SolveMotorJoint(cd2JointSolverArgs* args, bool useBias);
+void cd2PreparePrismaticJoint(cd2JointSolverArgs* args);
+void cd2WarmStartPrismaticJoint(cd2JointSolverArgs* args);
+void cd2SolvePrismaticJoint(cd2JointSolverArgs* args, bool useBias);
+void cd2PrepareWheelJoint(cd2JointSolverArgs* args);
+void cd2WarmStartWheelJoint(cd2JointSolverArgs* args);
+void cd2SolveWheelJoint(cd2JointSolverArgs* args, bool useBias);
+
+/* ---- continuous2.c --------------------------------------------------------------------------- */
+void cd2SolveContinuous(cd2World* world, int bodyIndex);
+
+/* Contact edge keys. */
+static inline int cd2EdgeContact(int key)
+{
+	return key >> 1;
+}
+static inline int cd2EdgeSide(int key)
+{
+	return key & 1;
+}
+
+#endif

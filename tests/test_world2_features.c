@@ -1,0 +1,806 @@
+/* Tests of the 2D world's joints, events, callbacks, filters, queries, chains and continuous
+ * collision. */
+#include "test.h"
+
+#include <collide/collide.h>
+
+#include <string.h>
+
+#define DT (CD_R(1.0) / CD_R(60.0))
+
+static cd2BodyId MakeStaticBox(cd2WorldId world, cd2Vec position, cdReal hx, cdReal hy)
+{
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.position = position;
+	cd2BodyId body = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {hx, hy}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2CreatePolygonShape(body, &sd, &box);
+	return body;
+}
+
+static cd2BodyId MakeBall(cd2WorldId world, cd2Vec position, cdReal radius, bool bullet)
+{
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.type = CD_DYNAMIC_BODY;
+	bd.position = position;
+	bd.isBullet = bullet;
+	cd2BodyId body = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, radius};
+	cd2CreateCircleShape(body, &sd, &circle);
+	return body;
+}
+
+/* A pendulum: a 1 kg ball on a massless revolute arm keeps its energy within 1% over 10 s. */
+static void TestPendulumEnergy(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.enableSleep = false;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cdReal length = CD_R(2.0);
+	/* Start horizontal. */
+	cd2BodyId bob = MakeBall(world, cd2MakeVec(length, CD_R(0.0)), CD_R(0.25), false);
+	cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+	jd.bodyIdA = ground;
+	jd.bodyIdB = bob;
+	jd.localAnchorA = CD2_VEC_ZERO;
+	jd.localAnchorB = cd2MakeVec(-length, CD_R(0.0));
+	cd2JointId joint = cd2CreateRevoluteJoint(world, &jd);
+	TEST_CHECK(cd2Joint_IsValid(joint));
+	cdReal m = cd2Body_GetMass(bob), I = cd2Body_GetRotationalInertia(bob);
+	cdReal g = CD_R(10.0);
+	double e0 = 0.0; /* at rest at height 0 */
+	double worst = 0.0;
+	for (int i = 0; i < 600; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		cd2Vec p = cd2Body_GetPosition(bob);
+		cd2Vec v = cd2Body_GetLinearVelocity(bob);
+		cdReal w = cd2Body_GetAngularVelocity(bob);
+		double e = 0.5 * (double)m * (double)cd2Dot(v, v) + 0.5 * (double)I * (double)w * (double)w +
+				   (double)m * (double)g * (double)p.y;
+		/* relative to the largest energy in play, m g L */
+		double drift = fabs(e - e0) / ((double)m * (double)g * (double)length);
+		worst = drift > worst ? drift : worst;
+		TEST_CHECK(fabs((double)cd2Length(p) - (double)length) < 0.01);
+	}
+	TEST_CHECKF(worst < 0.01, "energy drift %g of m g L", worst);
+	/* At the bottom the arm carries the weight and the centripetal force: reaction along the arm. */
+	cd2Vec f = cd2Joint_GetConstraintForce(joint);
+	TEST_CHECK(cdIsValidReal(f.x) && cdIsValidReal(f.y) && cd2Length(f) > CD_R(0.0));
+	cd2DestroyWorld(world);
+}
+
+/* A hanging box on a revolute joint at rest: the reaction force is its weight. */
+static void TestJointReaction(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.enableSleep = false;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2BodyId bob = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(0.25), false);
+	cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+	jd.bodyIdA = ground;
+	jd.bodyIdB = bob;
+	jd.localAnchorB = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	cd2JointId joint = cd2CreateRevoluteJoint(world, &jd);
+	for (int i = 0; i < 120; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	cdReal weight = cd2Body_GetMass(bob) * CD_R(10.0);
+	cd2Vec f = cd2Joint_GetConstraintForce(joint);
+	TEST_CHECK_NEAR(f.y, weight, 0.01 * weight);
+	TEST_CHECK_NEAR(f.x, 0.0, 0.01 * weight);
+	cd2DestroyWorld(world);
+}
+
+static void TestJointKinds(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.enableSleep = false;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+
+	/* Distance joint, rigid: the length holds. */
+	cd2BodyId a = MakeBall(world, cd2MakeVec(CD_R(-10.0), CD_R(-3.0)), CD_R(0.2), false);
+	cd2DistanceJointDef dj = cd2DefaultDistanceJointDef();
+	dj.bodyIdA = ground;
+	dj.bodyIdB = a;
+	dj.localAnchorA = cd2MakeVec(CD_R(-10.0), CD_R(0.0));
+	dj.length = CD_R(3.0);
+	cd2Body_SetLinearVelocity(a, cd2MakeVec(CD_R(5.0), CD_R(0.0)));
+	cd2JointId distance = cd2CreateDistanceJoint(world, &dj);
+
+	/* Distance joint as a rope: at most 2 m, may be shorter. */
+	cd2BodyId rope = MakeBall(world, cd2MakeVec(CD_R(-5.0), CD_R(-1.0)), CD_R(0.2), false);
+	dj.localAnchorA = cd2MakeVec(CD_R(-5.0), CD_R(0.0));
+	dj.bodyIdB = rope;
+	dj.enableSpring = true;
+	dj.hertz = CD_R(0.0);
+	dj.enableLimit = true;
+	dj.minLength = CD_R(0.0);
+	dj.maxLength = CD_R(2.0);
+	cd2CreateDistanceJoint(world, &dj);
+
+	/* Weld: a box welded to the ground stays put. */
+	cd2BodyId welded = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(0.3), false);
+	cd2WeldJointDef wj = cd2DefaultWeldJointDef();
+	wj.bodyIdA = ground;
+	wj.bodyIdB = welded;
+	wj.localAnchorA = cd2MakeVec(CD_R(0.0), CD_R(-1.0));
+	cd2CreateWeldJoint(world, &wj);
+
+	/* Prismatic along x with limits [-1, 1]: gravity cannot move it, a push stops at the limit. */
+	cd2BodyId slider = MakeBall(world, cd2MakeVec(CD_R(5.0), CD_R(0.0)), CD_R(0.3), false);
+	cd2PrismaticJointDef pj = cd2DefaultPrismaticJointDef();
+	pj.bodyIdA = ground;
+	pj.bodyIdB = slider;
+	pj.localAnchorA = cd2MakeVec(CD_R(5.0), CD_R(0.0));
+	pj.enableLimit = true;
+	pj.lowerTranslation = -CD_R(1.0);
+	pj.upperTranslation = CD_R(1.0);
+	cd2CreatePrismaticJoint(world, &pj);
+	cd2Body_SetLinearVelocity(slider, cd2MakeVec(CD_R(4.0), CD_R(0.0)));
+
+	/* Mouse joint pulls a ball to the target. */
+	cd2BodyId dragged = MakeBall(world, cd2MakeVec(CD_R(10.0), CD_R(0.0)), CD_R(0.3), false);
+	cd2MouseJointDef mj = cd2DefaultMouseJointDef();
+	mj.bodyIdA = ground;
+	mj.bodyIdB = dragged;
+	mj.target = cd2MakeVec(CD_R(10.0), CD_R(0.0));
+	mj.hertz = CD_R(5.0);
+	mj.dampingRatio = CD_R(0.7);
+	mj.maxForce = CD_R(1000.0) * cd2Body_GetMass(dragged);
+	cd2JointId mouse = cd2CreateMouseJoint(world, &mj);
+	cd2MouseJoint_SetTarget(mouse, cd2MakeVec(CD_R(12.0), CD_R(1.0)));
+
+	/* Motor joint drives a ball to an offset from the ground. */
+	cd2BodyId driven = MakeBall(world, cd2MakeVec(CD_R(15.0), CD_R(0.0)), CD_R(0.3), false);
+	cd2MotorJointDef tj = cd2DefaultMotorJointDef();
+	tj.bodyIdA = ground;
+	tj.bodyIdB = driven;
+	tj.linearOffset = cd2MakeVec(CD_R(16.0), CD_R(1.0));
+	tj.maxForce = CD_R(500.0);
+	tj.maxTorque = CD_R(100.0);
+	cd2CreateMotorJoint(world, &tj);
+
+	/* Wheel joint: the wheel hangs on its suspension spring below the anchor, free to spin. */
+	cd2BodyId wheel = MakeBall(world, cd2MakeVec(CD_R(20.0), CD_R(0.0)), CD_R(0.3), false);
+	cd2WheelJointDef hj = cd2DefaultWheelJointDef();
+	hj.bodyIdA = ground;
+	hj.bodyIdB = wheel;
+	hj.localAnchorA = cd2MakeVec(CD_R(20.0), CD_R(0.0));
+	hj.hertz = CD_R(2.0);
+	hj.enableMotor = true;
+	hj.motorSpeed = CD_R(3.0);
+	hj.maxMotorTorque = CD_R(100.0);
+	cd2CreateWheelJoint(world, &hj);
+
+	/* Revolute with motor: spins at the motor speed; with limit: stops at the limit. */
+	cd2BodyId spinner = MakeBall(world, cd2MakeVec(CD_R(25.0), CD_R(0.0)), CD_R(0.3), false);
+	cd2RevoluteJointDef rj = cd2DefaultRevoluteJointDef();
+	rj.bodyIdA = ground;
+	rj.bodyIdB = spinner;
+	rj.localAnchorA = cd2MakeVec(CD_R(25.0), CD_R(0.0));
+	rj.enableMotor = true;
+	rj.motorSpeed = CD_R(2.0);
+	rj.maxMotorTorque = CD_R(1000.0);
+	cd2CreateRevoluteJoint(world, &rj);
+	cd2BodyId limited = MakeBall(world, cd2MakeVec(CD_R(31.0), CD_R(0.0)), CD_R(0.3), false);
+	rj.bodyIdB = limited;
+	rj.localAnchorA = cd2MakeVec(CD_R(30.0), CD_R(0.0));
+	rj.localAnchorB = cd2MakeVec(CD_R(-1.0), CD_R(0.0));
+	rj.enableMotor = false;
+	rj.enableLimit = true;
+	rj.lowerAngle = -CD_R(0.5);
+	rj.upperAngle = CD_R(0.5);
+	cd2JointId limitJoint = cd2CreateRevoluteJoint(world, &rj);
+
+	for (int i = 0; i < 180; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2DistanceJoint_GetCurrentLength(distance), 3.0, 0.01);
+	cd2Vec ropeEnd = cd2Body_GetPosition(rope);
+	TEST_CHECK_NEAR(cd2VecDistance(ropeEnd, cd2MakeVec(CD_R(-5.0), CD_R(0.0))), 2.0, 0.02);
+	TEST_CHECK_NEAR(cd2Body_GetPosition(welded).y, -1.0, 0.01);
+	cd2Vec s = cd2Body_GetPosition(slider);
+	TEST_CHECK_NEAR(s.y, 0.0, 0.01);
+	TEST_CHECK(s.x <= CD_R(6.0) + CD_R(0.01) && s.x >= CD_R(3.99));
+	cd2Vec d = cd2Body_GetPosition(dragged);
+	TEST_CHECKF(cd2VecDistance(d, cd2MakeVec(CD_R(12.0), CD_R(1.0))) < CD_R(0.1), "dragged to %g %g",
+				(double)d.x, (double)d.y);
+	cd2Vec m = cd2Body_GetPosition(driven);
+	TEST_CHECKF(cd2VecDistance(m, cd2MakeVec(CD_R(16.0), CD_R(1.0))) < CD_R(0.05), "driven to %g %g",
+				(double)m.x, (double)m.y);
+	cd2Vec w = cd2Body_GetPosition(wheel);
+	TEST_CHECK_NEAR(w.x, 20.0, 0.01);
+	TEST_CHECK(w.y < CD_R(0.0));
+	TEST_CHECK_NEAR(cd2Body_GetAngularVelocity(wheel), 3.0, 0.05);
+	TEST_CHECK_NEAR(cd2Body_GetAngularVelocity(spinner), 2.0, 0.01);
+	TEST_CHECK_NEAR(cd2Body_GetPosition(spinner).x, 25.0, 0.01);
+	cdReal angle = cd2RevoluteJoint_GetAngle(limitJoint);
+	TEST_CHECKF(angle >= -CD_R(0.52) && angle <= -CD_R(0.45), "limited angle %g", (double)angle);
+	cd2DestroyWorld(world);
+}
+
+/* The generic joint setters: a prismatic slider driven by its motor stops at its limit. */
+static void TestJointSetters(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2BodyId slider = MakeBall(world, CD2_VEC_ZERO, CD_R(0.3), false);
+	cd2PrismaticJointDef pj = cd2DefaultPrismaticJointDef();
+	pj.bodyIdA = ground;
+	pj.bodyIdB = slider;
+	cd2JointId joint = cd2CreatePrismaticJoint(world, &pj);
+	cd2Joint_EnableMotor(joint, true);
+	cd2Joint_SetMaxMotor(joint, CD_R(100.0));
+	cd2Joint_SetMotorSpeed(joint, CD_R(1.0));
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), 1.0, 0.02);
+	TEST_CHECK_NEAR(cd2Body_GetLinearVelocity(slider).x, 1.0, 0.01);
+	cd2Joint_SetLimits(joint, -CD_R(0.5), CD_R(1.5));
+	cd2Joint_EnableLimit(joint, true);
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), 1.5, 0.01);
+	/* Reverse: it runs back to the lower limit. */
+	cd2Joint_SetMotorSpeed(joint, -CD_R(2.0));
+	for (int i = 0; i < 90; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), -0.5, 0.01);
+	TEST_CHECK_NEAR(cd2Body_GetPosition(slider).y, 0.0, 1e-3);
+	/* A spring pulls it back to 0 once the motor is off. */
+	cd2Joint_EnableMotor(joint, false);
+	cd2Joint_EnableSpring(joint, true);
+	cd2Joint_SetSpringHertz(joint, CD_R(2.0));
+	cd2Joint_SetSpringDampingRatio(joint, CD_R(1.0));
+	for (int i = 0; i < 180; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Joint_GetTranslation(joint), 0.0, 0.01);
+	cd2DestroyWorld(world);
+}
+
+/* Filter joint and collideConnected: bodies that would collide do not. */
+static void TestFilterJointAndFilters(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyId ground = MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	cd2BodyId ghost = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), false);
+	cd2FilterJointDef fj = cd2DefaultFilterJointDef();
+	fj.bodyIdA = ground;
+	fj.bodyIdB = ghost;
+	cd2JointId filter = cd2CreateFilterJoint(world, &fj);
+	TEST_CHECK(cd2Joint_IsValid(filter));
+	/* Category/mask: this ball does not see category 2. */
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.type = CD_DYNAMIC_BODY;
+	bd.position = cd2MakeVec(CD_R(5.0), CD_R(2.0));
+	cd2BodyId masked = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.filter.categoryBits = 4;
+	sd.filter.maskBits = ~(uint64_t)1;
+	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.5)};
+	cd2CreateCircleShape(masked, &sd, &circle);
+	/* Same negative group: never collide; positive: always. */
+	cd2BodyId g1 = MakeBall(world, cd2MakeVec(CD_R(10.0), CD_R(0.5)), CD_R(0.5), false);
+	cd2ShapeId g1s[1];
+	cd2Body_GetShapes(g1, g1s, 1);
+	bd.position = cd2MakeVec(CD_R(10.0), CD_R(3.0));
+	cd2BodyId g2 = cd2CreateBody(world, &bd);
+	sd = cd2DefaultShapeDef();
+	sd.filter.groupIndex = -3;
+	cd2CreateCircleShape(g2, &sd, &circle);
+	cd2Filter f = cd2Shape_GetFilter(g1s[0]);
+	f.groupIndex = -3;
+	cd2Shape_SetFilter(g1s[0], f);
+	for (int i = 0; i < 90; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(cd2Body_GetPosition(ghost).y < CD_R(-1.0)); /* fell through the ground */
+	TEST_CHECK(cd2Body_GetPosition(masked).y < CD_R(-1.0));
+	TEST_CHECK_NEAR(cd2Body_GetPosition(g1).y, 0.5, 0.02); /* on the ground */
+	TEST_CHECK_NEAR(cd2Body_GetPosition(g2).y, 0.5, 0.02); /* through g1 onto the ground, not on g1 */
+	/* Destroying the filter joint lets the ground catch the next ball that way. */
+	cd2DestroyJoint(filter);
+	TEST_CHECK(!cd2Joint_IsValid(filter));
+	cd2DestroyWorld(world);
+}
+
+static int g_hits;
+
+/* Sensor events fire exactly once per entry and per exit. */
+static void TestSensorEvents(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId zoneBody = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.isSensor = true;
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2ShapeId zone = cd2CreatePolygonShape(zoneBody, &sd, &box);
+	/* A ball passes through the sensor three times (it bounces between walls far away). */
+	bd.type = CD_KINEMATIC_BODY;
+	bd.position = cd2MakeVec(CD_R(-5.0), CD_R(0.0));
+	cd2BodyId visitor = cd2CreateBody(world, &bd);
+	sd = cd2DefaultShapeDef();
+	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.25)};
+	cd2ShapeId visitorShape = cd2CreateCircleShape(visitor, &sd, &circle);
+	int begins = 0, ends = 0, wrong = 0;
+	cdReal speed = CD_R(4.0);
+	cd2Body_SetLinearVelocity(visitor, cd2MakeVec(speed, CD_R(0.0)));
+	for (int i = 0; i < 600; ++i)
+	{
+		cdReal x = cd2Body_GetPosition(visitor).x;
+		if (x > CD_R(5.0))
+		{
+			cd2Body_SetLinearVelocity(visitor, cd2MakeVec(-speed, CD_R(0.0)));
+		}
+		else if (x < CD_R(-5.0))
+		{
+			cd2Body_SetLinearVelocity(visitor, cd2MakeVec(speed, CD_R(0.0)));
+		}
+		cd2World_Step(world, DT, 4);
+		cd2SensorEvents se = cd2World_GetSensorEvents(world);
+		for (int k = 0; k < se.beginCount; ++k)
+		{
+			wrong += !cd2ShapeIdEqual(se.beginEvents[k].sensorShapeId, zone) ||
+					 !cd2ShapeIdEqual(se.beginEvents[k].visitorShapeId, visitorShape);
+		}
+		begins += se.beginCount;
+		ends += se.endCount;
+		/* Inside means between the begin and the end. */
+		cdReal now = cd2Body_GetPosition(visitor).x;
+		bool inside = cdAbs(now) < CD_R(1.25);
+		TEST_CHECK(inside == (begins > ends));
+	}
+	/* 600 steps at 4 m/s = 40 m of travel over a 10 m course: 4 crossings. */
+	TEST_CHECKF(begins == 4 && ends == 4, "begins %d ends %d", begins, ends);
+	TEST_CHECK(wrong == 0);
+	/* Destroying the visitor while inside reports its exit at the next step. */
+	cd2Body_SetTransform(visitor, CD2_VEC_ZERO, CD2_ROT_IDENTITY);
+	cd2Body_SetLinearVelocity(visitor, CD2_VEC_ZERO);
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetSensorEvents(world).beginCount == 1);
+	cd2DestroyBody(visitor);
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetSensorEvents(world).endCount == 1);
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetSensorEvents(world).endCount == 0);
+	cd2DestroyWorld(world);
+}
+
+static void TestContactAndHitEvents(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.hitEventThreshold = CD_R(2.0);
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyId ground = MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	(void)ground;
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.type = CD_DYNAMIC_BODY;
+	bd.position = cd2MakeVec(CD_R(0.0), CD_R(5.0));
+	cd2BodyId ball = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.enableHitEvents = true;
+	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.5)};
+	cd2ShapeId ballShape = cd2CreateCircleShape(ball, &sd, &circle);
+	int begins = 0, hits = 0, moves = 0;
+	cdReal approach = CD_R(0.0);
+	for (int i = 0; i < 120; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		cd2ContactEvents ce = cd2World_GetContactEvents(world);
+		for (int k = 0; k < ce.beginCount; ++k)
+		{
+			const cd2ContactBeginTouchEvent* e = ce.beginEvents + k;
+			bool ballIsB = cd2ShapeIdEqual(e->shapeIdB, ballShape);
+			TEST_CHECK(ballIsB || cd2ShapeIdEqual(e->shapeIdA, ballShape));
+			TEST_CHECK(e->manifold.pointCount == 1);
+			/* normal from A to B: up when the ball is B */
+			TEST_CHECK_NEAR(e->manifold.normal.y, ballIsB ? 1.0 : -1.0, 1e-4);
+			TEST_CHECK(cdAbs(e->manifold.points[0].point.y) < CD_R(0.2));
+		}
+		begins += ce.beginCount;
+		for (int k = 0; k < ce.hitCount; ++k)
+		{
+			approach = ce.hitEvents[k].approachSpeed;
+		}
+		hits += ce.hitCount;
+		moves += cd2World_GetBodyEvents(world).moveCount;
+	}
+	g_hits = hits;
+	TEST_CHECK(begins == 1);
+	TEST_CHECK(hits == 1);
+	/* Falling 4.5 m: sqrt(2 g h) = 9.49 m/s. */
+	TEST_CHECK_NEAR(approach, 9.49, 0.2);
+	TEST_CHECK(moves > 30 && moves <= 120);
+	/* Destroying the ball reports the end of its touch. */
+	cd2DestroyBody(ball);
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetContactEvents(world).endCount == 1);
+	cd2DestroyWorld(world);
+}
+
+/* One-way platform: the pre-solve callback disables contacts where the body comes from below. */
+static bool OneWay(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold, void* context)
+{
+	cd2ShapeId platform = *(const cd2ShapeId*)context;
+	cdReal sign;
+	if (cd2ShapeIdEqual(shapeIdA, platform))
+	{
+		sign = CD_R(1.0);
+	}
+	else if (cd2ShapeIdEqual(shapeIdB, platform))
+	{
+		sign = -CD_R(1.0);
+	}
+	else
+	{
+		return true;
+	}
+	/* Solid only when the normal from the platform to the other points up. */
+	return sign * manifold->normal.y > CD_R(0.5);
+}
+
+static bool RejectAll(cd2ShapeId a, cd2ShapeId b, void* context)
+{
+	(void)a;
+	(void)b;
+	*(int*)context += 1;
+	return false;
+}
+
+static void TestPreSolveAndCustomFilter(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.position = cd2MakeVec(CD_R(0.0), CD_R(3.0));
+	cd2BodyId platformBody = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.enablePreSolveEvents = true;
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(3.0), CD_R(0.1)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2ShapeId platform = cd2CreatePolygonShape(platformBody, &sd, &box);
+	cd2World_SetPreSolveCallback(world, OneWay, &platform);
+	/* Launched up from below, the ball passes the platform and lands on top of it. */
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(0.0)), CD_R(0.25), false);
+	cd2Body_SetLinearVelocity(ball, cd2MakeVec(CD_R(0.0), CD_R(10.0)));
+	for (int i = 0; i < 180; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Body_GetPosition(ball).y, 3.35, 0.02);
+
+	/* A custom filter that rejects every pair: a ball dropped on the platform falls through. */
+	int calls = 0;
+	cd2World_SetCustomFilterCallback(world, RejectAll, &calls);
+	cd2BodyId other = MakeBall(world, cd2MakeVec(CD_R(2.0), CD_R(5.0)), CD_R(0.25), false);
+	for (int i = 0; i < 90; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(calls >= 1);
+	TEST_CHECK(cd2Body_GetPosition(other).y < CD_R(2.0));
+	cd2DestroyWorld(world);
+}
+
+static bool CountOverlap(cd2ShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+static cdReal CollectAll(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal, cdReal fraction, void* context)
+{
+	(void)shapeId;
+	(void)point;
+	(void)normal;
+	(void)fraction;
+	*(int*)context += 1;
+	return CD_R(1.0);
+}
+
+static void TestQueries(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	for (int i = 0; i < 5; ++i)
+	{
+		MakeStaticBox(world, cd2MakeVec((cdReal)(3 * i), CD_R(2.0)), CD_R(0.5), CD_R(0.5));
+	}
+	cd2QueryFilter filter = cd2DefaultQueryFilter();
+	cd2RayResult r = cd2World_CastRayClosest(world, cd2MakeVec(CD_R(3.0), CD_R(10.0)),
+											 cd2MakeVec(CD_R(0.0), CD_R(-20.0)), filter);
+	TEST_CHECK(r.hit);
+	TEST_CHECK_NEAR(r.point.y, 2.5, 1e-4);
+	TEST_CHECK_NEAR(r.normal.y, 1.0, 1e-5);
+	TEST_CHECK_NEAR(r.fraction, 7.5 / 20.0, 1e-5);
+	r = cd2World_CastRayClosest(world, cd2MakeVec(CD_R(1.5), CD_R(10.0)), cd2MakeVec(CD_R(0.0), CD_R(-20.0)),
+								filter);
+	TEST_CHECK(r.hit);
+	TEST_CHECK_NEAR(r.point.y, 0.0, 1e-4);
+	int count = 0;
+	cd2World_CastRay(world, cd2MakeVec(CD_R(-5.0), CD_R(2.0)), cd2MakeVec(CD_R(30.0), CD_R(0.0)), filter,
+					 CollectAll, &count);
+	TEST_CHECK(count == 5);
+	count = 0;
+	cd2Aabb box = {{CD_R(-1.0), CD_R(1.0)}, {CD_R(4.0), CD_R(3.0)}};
+	cd2World_OverlapAabb(world, box, filter, CountOverlap, &count);
+	TEST_CHECK(count == 2);
+	count = 0;
+	cd2Shape circle = cd2MakeCircleShape((cd2Circle){{CD_R(1.5), CD_R(2.0)}, CD_R(1.2)});
+	cd2World_OverlapShape(world, &circle, filter, CountOverlap, &count);
+	TEST_CHECK(count == 2);
+	count = 0;
+	circle.circle.radius = CD_R(0.9);
+	cd2World_OverlapShape(world, &circle, filter, CountOverlap, &count);
+	TEST_CHECK(count == 0);
+	count = 0;
+	cd2World_CastShape(world, &circle, cd2MakeVec(CD_R(0.0), CD_R(-5.0)), filter, CollectAll, &count);
+	TEST_CHECK(count == 1); /* only the ground */
+	/* A filter that excludes the default category sees nothing. */
+	cd2QueryFilter none = {1u, 2u};
+	r = cd2World_CastRayClosest(world, cd2MakeVec(CD_R(3.0), CD_R(10.0)), cd2MakeVec(CD_R(0.0), CD_R(-20.0)),
+								none);
+	TEST_CHECK(!r.hit);
+	cd2DestroyWorld(world);
+}
+
+/* A ball rolls down a chain slope and rests in its valley, never falling through. */
+static void TestChain(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId terrain = cd2CreateBody(world, &bd);
+	/* A V-shaped valley, running right to left (free side up). */
+	cd2Vec points[21];
+	for (int i = 0; i < 21; ++i)
+	{
+		cdReal x = (cdReal)(10 - i);
+		points[i] = cd2MakeVec(x, CD_R(0.2) * cdAbs(x));
+	}
+	cd2ChainDef cd = cd2DefaultChainDef();
+	cd.points = points;
+	cd.count = 21;
+	cd2ChainId chain = cd2CreateChainShape(terrain, &cd);
+	TEST_CHECK(cd2Chain_IsValid(chain));
+	TEST_CHECK(cd2Chain_GetSegmentCount(chain) == 20);
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(6.0), CD_R(3.0)), CD_R(0.25), false);
+	cd2BodyId box;
+	{
+		bd.type = CD_DYNAMIC_BODY;
+		bd.position = cd2MakeVec(CD_R(-6.0), CD_R(3.0));
+		box = cd2CreateBody(world, &bd);
+		cd2ShapeDef sd = cd2DefaultShapeDef();
+		sd.friction = CD_R(0.0);
+		cd2Polygon poly;
+		cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.3), CD_R(0.2)}, {CD_R(1.0), CD_R(0.0)}},
+						  &poly);
+		cd2CreatePolygonShape(box, &sd, &poly);
+	}
+	cd2Body_SetAngularDamping(ball, CD_R(1.0));
+	cd2Body_SetLinearDamping(box, CD_R(1.0));
+	for (int i = 0; i < 900; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		TEST_CHECK(cd2Body_GetPosition(ball).y > CD_R(0.0));
+	}
+	cd2Vec p = cd2Body_GetPosition(ball);
+	TEST_CHECKF(cdAbs(p.x) < CD_R(0.5) && p.y < CD_R(0.5), "ball at %g %g", (double)p.x, (double)p.y);
+	p = cd2Body_GetPosition(box);
+	TEST_CHECKF(cdAbs(p.x) < CD_R(1.0) && p.y > CD_R(0.0) && p.y < CD_R(0.6), "box at %g %g", (double)p.x,
+				(double)p.y);
+	cd2DestroyChainShape(chain);
+	TEST_CHECK(!cd2Chain_IsValid(chain));
+	cd2DestroyWorld(world);
+}
+
+/* Fast small bodies never tunnel through a thin static wall: bullets at 1000 m/s (against the
+ * wall, through continuous collision) and fast ordinary bodies. */
+static void TestContinuous(void)
+{
+	TestRng rng = TestRngMake(11);
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.0)), CD_R(0.05), CD_R(20.0));
+	int crossed = 0, shots = 10000;
+	for (int s = 0; s < shots; ++s)
+	{
+		cdReal y = (cdReal)TestRngRange(&rng, -10.0, 10.0);
+		cdReal x = (cdReal)TestRngRange(&rng, -30.0, -2.0);
+		cdReal vy = (cdReal)TestRngRange(&rng, -50.0, 50.0);
+		cd2BodyId bullet = MakeBall(world, cd2MakeVec(x, y), CD_R(0.05), s % 2 == 0);
+		cd2Body_SetLinearVelocity(bullet, cd2MakeVec(CD_R(1000.0), vy));
+		for (int i = 0; i < 10; ++i)
+		{
+			cd2World_Step(world, DT, 4);
+		}
+		crossed += cd2Body_GetPosition(bullet).x > CD_R(0.0);
+		cd2DestroyBody(bullet);
+	}
+	TEST_CHECKF(crossed == 0, "%d of %d crossed", crossed, shots);
+	/* A bullet against a thin dynamic plank (continuous against moving bodies). */
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.type = CD_DYNAMIC_BODY;
+	bd.position = cd2MakeVec(-CD_R(5.0), CD_R(0.0));
+	cd2BodyId plank = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.density = CD_R(10.0);
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.05), CD_R(2.0)}, {CD_R(1.0), CD_R(0.0)}},
+					  &box);
+	cd2CreatePolygonShape(plank, &sd, &box);
+	cd2BodyId bullet = MakeBall(world, cd2MakeVec(-CD_R(20.0), CD_R(0.0)), CD_R(0.05), true);
+	cd2Body_SetLinearVelocity(bullet, cd2MakeVec(CD_R(600.0), CD_R(0.0)));
+	for (int i = 0; i < 3; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(cd2Body_GetPosition(bullet).x < cd2Body_GetPosition(plank).x);
+	TEST_CHECK(cd2Body_GetLinearVelocity(plank).x > CD_R(0.0)); /* it was hit */
+	cd2DestroyWorld(world);
+}
+
+/* Disable/enable, set type, set transform, mass data. */
+static void TestBodyControls(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), false);
+	cd2MassData md = cd2Body_GetMassData(ball);
+	TEST_CHECK_NEAR(md.mass, 3.14159265 * 0.25, 1e-4);
+	md.mass = CD_R(10.0);
+	cd2Body_SetMassData(ball, md);
+	TEST_CHECK_NEAR(cd2Body_GetMass(ball), 10.0, 0.0);
+	cd2Body_ApplyMassFromShapes(ball);
+	TEST_CHECK_NEAR(cd2Body_GetMass(ball), 3.14159265 * 0.25, 1e-4);
+	cd2Body_Disable(ball);
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(!cd2Body_IsEnabled(ball));
+	TEST_CHECK_NEAR(cd2Body_GetPosition(ball).y, 2.0, 0.0);
+	cd2Body_Enable(ball);
+	for (int i = 0; i < 120; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Body_GetPosition(ball).y, 0.5, 0.02);
+	cd2Body_SetType(ball, CD_KINEMATIC_BODY);
+	cd2Body_SetLinearVelocity(ball, cd2MakeVec(CD_R(1.0), CD_R(0.0)));
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Body_GetPosition(ball).x, 1.0, 1e-3);
+	TEST_CHECK(cd2Body_GetType(ball) == CD_KINEMATIC_BODY);
+	cd2Body_SetTransform(ball, cd2MakeVec(CD_R(3.0), CD_R(4.0)), cd2MakeRot(CD_R(0.5)));
+	TEST_CHECK_NEAR(cd2Body_GetPosition(ball).x, 3.0, 0.0);
+	TEST_CHECK_NEAR(cd2RotGetAngle(cd2Body_GetRotation(ball)), 0.5, 1e-5);
+	cd2Vec wp = cd2Body_GetWorldPoint(ball, cd2MakeVec(CD_R(1.0), CD_R(0.0)));
+	cd2Vec lp = cd2Body_GetLocalPoint(ball, wp);
+	TEST_CHECK_NEAR(lp.x, 1.0, 1e-5);
+	TEST_CHECK_NEAR(lp.y, 0.0, 1e-5);
+	cd2DestroyWorld(world);
+}
+
+typedef struct DrawCount
+{
+	int polygons, circles, capsules, segments, points;
+} DrawCount;
+
+static void CountPolygon(const cd2Vec* vertices, int count, cdReal radius, uint32_t color, void* context)
+{
+	(void)vertices;
+	(void)radius;
+	(void)color;
+	TEST_CHECK(count == 4);
+	((DrawCount*)context)->polygons += 1;
+}
+
+static void CountCircle(cd2Transform transform, cdReal radius, uint32_t color, void* context)
+{
+	(void)transform;
+	(void)color;
+	TEST_CHECK_NEAR(radius, 0.5, 0.0);
+	((DrawCount*)context)->circles += 1;
+}
+
+static void CountSegment(cd2Vec p1, cd2Vec p2, uint32_t color, void* context)
+{
+	(void)p1;
+	(void)p2;
+	(void)color;
+	((DrawCount*)context)->segments += 1;
+}
+
+static void CountPoint(cd2Vec p, cdReal size, uint32_t color, void* context)
+{
+	(void)p;
+	(void)size;
+	(void)color;
+	((DrawCount*)context)->points += 1;
+}
+
+static void TestDebugDraw(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), false);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId anchor = cd2CreateBody(world, &bd);
+	cd2DistanceJointDef dj = cd2DefaultDistanceJointDef();
+	dj.bodyIdA = anchor;
+	dj.bodyIdB = ball;
+	dj.length = CD_R(3.0);
+	cd2CreateDistanceJoint(world, &dj);
+	cd2World_Step(world, DT, 4);
+	DrawCount count;
+	memset(&count, 0, sizeof(count));
+	cd2DebugDraw draw = cd2DefaultDebugDraw();
+	draw.drawPolygon = CountPolygon;
+	draw.drawCircle = CountCircle;
+	draw.drawSegment = CountSegment;
+	draw.drawPoint = CountPoint;
+	draw.drawContacts = true;
+	draw.drawAabbs = true;
+	draw.context = &count;
+	cd2World_Draw(world, &draw);
+	TEST_CHECK(count.polygons == 1);
+	TEST_CHECK(count.circles == 1);
+	TEST_CHECK(count.points == 1);				 /* the ball's contact with the ground */
+	TEST_CHECK(count.segments == 2 * 4 + 3 + 1); /* two boxes, the joint, the contact normal */
+	cd2DestroyWorld(world);
+}
+
+int main(void)
+{
+	TEST_RUN(TestPendulumEnergy);
+	TEST_RUN(TestJointReaction);
+	TEST_RUN(TestJointKinds);
+	TEST_RUN(TestJointSetters);
+	TEST_RUN(TestFilterJointAndFilters);
+	TEST_RUN(TestSensorEvents);
+	TEST_RUN(TestContactAndHitEvents);
+	TEST_RUN(TestPreSolveAndCustomFilter);
+	TEST_RUN(TestQueries);
+	TEST_RUN(TestChain);
+	TEST_RUN(TestContinuous);
+	TEST_RUN(TestBodyControls);
+	TEST_RUN(TestDebugDraw);
+	return TEST_SUMMARY();
+}
