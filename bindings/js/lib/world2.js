@@ -1,4 +1,4 @@
-// The 2D world (collide/world2.h) for JavaScript: World2 with Body2, Shape2 and Joint2 handles.
+// The 2D world (collide/world2.h) for JavaScript: World2 with Body2, BodyShape2 and Joint2 handles.
 // Export layer: src/world2_exports.c. Ids are (index1, generation) pairs inside one world; a
 // handle whose object was destroyed (by destroy(), with its body, or by restoring an older
 // snapshot) throws a TypeError naming the call.
@@ -602,7 +602,7 @@ export class Body2 {
   }
 
   _addShape(index1, generation, userData) {
-    const s = new Shape2(this, index1, generation);
+    const s = new BodyShape2(this, index1, generation);
     s.userData = userData;
     this._shapeList.push(s);
     this.world._shapes.set(key(index1, generation), s);
@@ -642,7 +642,7 @@ export class Body2 {
   }
 }
 
-export class Shape2 {
+export class BodyShape2 {
   constructor(body, index1, generation) {
     this.body = body;
     this._i = index1;
@@ -656,9 +656,9 @@ export class Shape2 {
 
   _call(name, exportName, ...args) {
     const world = this.body.world;
-    if (this._i === 0 || world._w < 0) throw staleError('Shape2', name);
+    if (this._i === 0 || world._w < 0) throw staleError('BodyShape2', name);
     const r = E()[exportName](world._w, this._i, this._g, ...args);
-    if (r === 0) throw staleError('Shape2', name);
+    if (r === 0) throw staleError('BodyShape2', name);
     return r;
   }
 
