@@ -157,19 +157,23 @@ class BroadPhase {
     const idPtr = place(ids, Int32Array, 'ids', true);
     const boxPtr = place(aabbs, Float32Array, 'aabbs');
     let dPtr = 0;
+    let ownD = false;
     if (displacements !== undefined) {
-      // A third array: copy into a fresh block when it is not already wasm memory.
       if (displacements.buffer === w.memoryBuffer()) {
         dPtr = displacements.byteOffset;
       } else {
+        if (w.isOldBuffer(displacements.buffer)) {
+          throw new TypeError('displacements is a view of wasm memory that was detached when the memory grew; pass the WasmArray itself');
+        }
+        // A third array: copied into a block of its own for this call.
         dPtr = w.exports.malloc(displacements.byteLength + 16);
         if (dPtr === 0) throw new Error('collide: out of wasm memory');
-        w.views();
+        ownD = true;
         new Float32Array(w.memoryBuffer(), dPtr, displacements.length).set(displacements);
       }
     }
     const r = w.exports.bpMoveProxies(h, count, idPtr, boxPtr, dPtr);
-    if (dPtr !== 0 && displacements.buffer !== w.memoryBuffer() && !w.isOldBuffer(displacements.buffer)) w.exports.free(dPtr);
+    if (ownD) w.exports.free(dPtr);
     w.views();
     if (r < 0) throw new RangeError(`ids[${-r - 1}] = ${ids[-r - 1]} is not a live proxy (nothing was moved)`);
     return r;

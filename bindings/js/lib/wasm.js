@@ -140,7 +140,7 @@ export function init(options = {}) {
     const instance = await WebAssembly.instantiate(module, stubImports(module));
     exports = instance.exports;
     memory = exports.memory;
-    simd = useSimd;
+    simd = exports.isSimd() === 1;
     views();
     S = exports.scratch() >> 2;
     if (exports.isDouble() !== 0) throw new Error('collide: the wasm build must use float');

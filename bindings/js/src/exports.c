@@ -54,6 +54,16 @@ EXPORT("free") void cdjsFree(void* memory)
 	free(memory);
 }
 
+/* 1 in the build compiled for wasm SIMD (-msimd128), 0 in the scalar build. */
+EXPORT("isSimd") int cdjsIsSimd(void)
+{
+#ifdef __wasm_simd128__
+	return 1;
+#else
+	return 0;
+#endif
+}
+
 EXPORT("isDouble") int cdjsIsDouble(void)
 {
 	return cdGetRealIsDouble();

@@ -165,6 +165,12 @@ test('the 2D broadphase matches brute force on fat boxes; WasmArray views are re
     check();
     assert.ok(bp.updatePairs().length > 0);
     assert.equal(bp.moveProxy(0, bp.getFatAabb(0)), false, 'a box inside its fat box changes nothing');
+    // A predicted displacement stretches the fat box along it (by the multiplier, 4 by default).
+    const before = bp.getFatAabb(1);
+    const moved = new Float32Array([before.min.x + 30, before.min.y, before.max.x + 30, before.max.y]);
+    assert.equal(bp.moveProxies(new Int32Array([1]), moved, new Float32Array([1, 0])), 1);
+    const stretched = bp.getFatAabb(1);
+    assert.ok(stretched.max.x >= moved[2] + 4 - 1e-4 && stretched.min.x <= moved[0] + 1e-4, JSON.stringify(stretched));
     bp.rebuild();
     check();
     assert.equal(bp.validate(), true);
@@ -212,4 +218,21 @@ for (let i = 0; i < 5; i++) { globalThis.gc(); await new Promise((r) => setTimeo
   assert.match(leaked, /a BroadPhase2 was garbage-collected without destroy\(\)/);
   const clean = spawnSync(process.execPath, ['--expose-gc', '--input-type=module', '-e', script(true)], { cwd }).stderr.toString();
   assert.equal(clean, '');
+});
+
+test('init() takes the wasm as bytes, as a path or as a compiled module', () => {
+  const cwd = fileURLToPath(new URL('..', import.meta.url));
+  const script = `
+import { readFileSync } from 'node:fs';
+import * as c from 'collide';
+const how = process.argv[1];
+const file = how.endsWith('scalar') ? 'dist/collide.wasm' : 'dist/collide-simd.wasm';
+const wasm = how.startsWith('bytes') ? readFileSync(file) : how.startsWith('module') ? new WebAssembly.Module(readFileSync(file)) : file;
+await c.init({ wasm });
+console.log(JSON.stringify([c.isSimdBuild(), c.overlap2(c.circle({ x: 0, y: 0 }, 1), c.circle({ x: 2, y: 0 }, 1))]));
+`;
+  for (const how of ['bytes-scalar', 'bytes-simd', 'path-scalar', 'module-simd']) {
+    const out = execFileSync(process.execPath, ['--input-type=module', '-e', script, how], { cwd }).toString();
+    assert.deepEqual(JSON.parse(out), [how.endsWith('simd'), true], how);
+  }
 });
