@@ -476,6 +476,70 @@ static bool RejectAll(cd2ShapeId a, cd2ShapeId b, void* context)
 	return false;
 }
 
+typedef struct LockProbe
+{
+	cd2WorldId world;
+	cd2BodyId body;
+	int calls;
+} LockProbe;
+
+static int g_lockRefusals;
+
+static bool CountLockRefusal(const char* condition, const char* fileName, int lineNumber)
+{
+	(void)condition;
+	(void)fileName;
+	(void)lineNumber;
+	++g_lockRefusals;
+	return false;
+}
+
+/* Tries to change the world from inside the step. */
+static bool MutateDuringStep(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold,
+							 void* context)
+{
+	(void)shapeIdA;
+	(void)shapeIdB;
+	(void)manifold;
+	LockProbe* probe = (LockProbe*)context;
+	probe->calls += 1;
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	TEST_CHECK(cd2IsNullBodyId(cd2CreateBody(probe->world, &bd)));
+	cd2Body_SetLinearVelocity(probe->body, cd2MakeVec(CD_R(100.0), CD_R(0.0)));
+	cd2DestroyBody(probe->body);
+	cd2World_Step(probe->world, CD_R(1.0) / CD_R(60.0), 4);
+	return true;
+}
+
+/* The world is locked during the step: calls from a callback are refused. */
+static void TestLockedWorld(void)
+{
+	cdSetAssertFcn(CountLockRefusal);
+	g_lockRefusals = 0;
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.enablePreSolveEvents = true;
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(-1.0)}, {CD_R(10.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}},
+					  &box);
+	cd2CreatePolygonShape(ground, &sd, &box);
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), false);
+	LockProbe probe = {world, ball, 0};
+	cd2World_SetPreSolveCallback(world, MutateDuringStep, &probe);
+	cd2World_Step(world, CD_R(1.0) / CD_R(60.0), 4);
+	TEST_CHECK(probe.calls == 1);
+	TEST_CHECK(g_lockRefusals == 4);
+	TEST_CHECK(cd2Body_IsValid(ball));
+	TEST_CHECK(cdAbs(cd2Body_GetLinearVelocity(ball).x) < CD_R(0.01));
+	TEST_CHECK(cd2World_GetCounters(world).bodyCount == 2);
+	cd2World_SetPreSolveCallback(world, NULL, NULL);
+	cd2DestroyWorld(world);
+	cdSetAssertFcn(NULL);
+}
+
 static void TestPreSolveAndCustomFilter(void)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
@@ -717,6 +781,259 @@ static void TestBodyControls(void)
 	cd2DestroyWorld(world);
 }
 
+/* The small accessors: each one read back or seen to act. */
+static void TestAccessors(void)
+{
+	int tag = 7;
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2World_SetUserData(world, &tag);
+	TEST_CHECK(cd2World_GetUserData(world) == &tag);
+	cd2World_EnableContinuous(world, true);
+	cd2BodyId ground = MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+
+	/* Body accessors. */
+	cd2BodyId b = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(5.0)), CD_R(0.5), false);
+	TEST_CHECK(cd2World_IsValid(cd2Body_GetWorld(b)));
+	cd2Body_SetUserData(b, &tag);
+	TEST_CHECK(cd2Body_GetUserData(b) == &tag);
+	cd2Body_SetLinearDamping(b, CD_R(0.5));
+	cd2Body_SetAngularDamping(b, CD_R(0.25));
+	cd2Body_SetGravityScale(b, CD_R(0.0));
+	TEST_CHECK_NEAR(cd2Body_GetLinearDamping(b), 0.5, 0.0);
+	TEST_CHECK_NEAR(cd2Body_GetAngularDamping(b), 0.25, 0.0);
+	TEST_CHECK_NEAR(cd2Body_GetGravityScale(b), 0.0, 0.0);
+	cd2Body_SetBullet(b, true);
+	TEST_CHECK(cd2Body_IsBullet(b));
+	cd2Body_SetBullet(b, false);
+	cd2Body_EnableSleep(b, false);
+	for (int i = 0; i < 120; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Body_GetPosition(b).y, 5.0, 1e-6); /* no gravity */
+	TEST_CHECK(cd2Body_IsAwake(b));						  /* sleep disabled for it */
+	cd2Body_SetTransform(b, cd2MakeVec(CD_R(0.0), CD_R(5.0)), cd2MakeRot(CD_R(0.5)));
+	cd2Vec wv = cd2Body_GetWorldVector(b, cd2MakeVec(CD_R(1.0), CD_R(0.0)));
+	TEST_CHECK_NEAR(wv.x, cos(0.5), 1e-5);
+	cd2Vec lv = cd2Body_GetLocalVector(b, wv);
+	TEST_CHECK_NEAR(lv.x, 1.0, 1e-5);
+	TEST_CHECK_NEAR(cd2Body_GetWorldCenterOfMass(b).y, 5.0, 1e-5);
+	TEST_CHECK_NEAR(cd2Body_GetLocalCenterOfMass(b).x, 0.0, 0.0);
+	/* A force off the centre turns it; a fixed-rotation body does not turn. */
+	cd2Body_ApplyForce(b, cd2MakeVec(CD_R(0.0), CD_R(10.0)), cd2MakeVec(CD_R(1.0), CD_R(5.0)), true);
+	cd2Body_ApplyAngularImpulse(b, CD_R(0.1), true);
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2Body_GetAngularVelocity(b) > CD_R(0.0));
+	cd2Body_SetFixedRotation(b, true);
+	TEST_CHECK(cd2Body_IsFixedRotation(b));
+	cd2Body_ApplyAngularImpulse(b, CD_R(1.0), true);
+	TEST_CHECK_NEAR(cd2Body_GetAngularVelocity(b), 0.0, 0.0);
+	cd2Body_SetFixedRotation(b, false);
+
+	/* Shape accessors. */
+	cd2ShapeId shape;
+	TEST_CHECK(cd2Body_GetShapes(b, &shape, 1) == 1);
+	TEST_CHECK(cd2Shape_GetType(shape) == CD2_WORLD_SHAPE_CIRCLE);
+	TEST_CHECK(cd2BodyIdEqual(cd2Shape_GetBody(shape), b));
+	TEST_CHECK(!cd2Shape_IsSensor(shape));
+	cd2Shape_SetUserData(shape, &tag);
+	TEST_CHECK(cd2Shape_GetUserData(shape) == &tag);
+	cd2Shape_SetFriction(shape, CD_R(0.3));
+	cd2Shape_SetRestitution(shape, CD_R(0.2));
+	TEST_CHECK_NEAR(cd2Shape_GetFriction(shape), 0.3, 1e-6);
+	TEST_CHECK_NEAR(cd2Shape_GetRestitution(shape), 0.2, 1e-6);
+	TEST_CHECK_NEAR(cd2Shape_GetDensity(shape), 1.0, 0.0);
+	cdReal mass = cd2Body_GetMass(b);
+	cd2Shape_SetDensity(shape, CD_R(2.0), true);
+	TEST_CHECK_NEAR(cd2Body_GetMass(b), 2.0 * (double)mass, 1e-5);
+	cd2Shape ws = cd2Shape_GetWorldShape(shape);
+	TEST_CHECK(ws.type == CD2_SHAPE_CIRCLE);
+	TEST_CHECK_NEAR(ws.circle.center.y, cd2Body_GetPosition(b).y, 1e-6);
+	cd2Aabb box = cd2Shape_GetAabb(shape);
+	TEST_CHECK_NEAR(box.max.y - box.min.y, 1.0, 1e-5);
+	TEST_CHECK(cd2DefaultFilter().categoryBits == 1u && cd2DefaultFilter().maskBits == UINT64_MAX);
+	/* Without contact events on either shape, a landing reports nothing; with hit events, a hit. */
+	cd2Shape_EnableContactEvents(shape, false);
+	cd2ShapeId groundShape;
+	cd2Body_GetShapes(ground, &groundShape, 1);
+	cd2Shape_EnableContactEvents(groundShape, false);
+	cd2Shape_EnableHitEvents(shape, true);
+	cd2Shape_EnableSensorEvents(shape, true);
+	cd2Shape_EnablePreSolveEvents(shape, false);
+	cd2Body_SetGravityScale(b, CD_R(1.0));
+	int begins = 0, hits = 0;
+	for (int i = 0; i < 120; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		begins += cd2World_GetContactEvents(world).beginCount;
+		hits += cd2World_GetContactEvents(world).hitCount;
+	}
+	TEST_CHECK(begins == 0);
+	TEST_CHECKF(hits >= 1 && hits <= 3, "hits %d",
+				hits); /* restitution 0.2: a bounce or two after the landing */
+
+	/* Joint accessors and setters. */
+	cd2BodyId arm = MakeBall(world, cd2MakeVec(CD_R(10.0), CD_R(5.0)), CD_R(0.3), false);
+	cd2RevoluteJointDef rj = cd2DefaultRevoluteJointDef();
+	rj.bodyIdA = ground;
+	rj.bodyIdB = arm;
+	rj.localAnchorA = cd2MakeVec(CD_R(10.0), CD_R(6.0));
+	rj.localAnchorB = cd2MakeVec(CD_R(0.0), CD_R(0.0));
+	rj.userData = &tag;
+	cd2JointId joint = cd2CreateRevoluteJoint(world, &rj);
+	TEST_CHECK(cd2Joint_GetType(joint) == CD2_REVOLUTE_JOINT);
+	TEST_CHECK(cd2BodyIdEqual(cd2Joint_GetBodyA(joint), ground) &&
+			   cd2BodyIdEqual(cd2Joint_GetBodyB(joint), arm));
+	TEST_CHECK(cd2Joint_GetUserData(joint) == &tag);
+	cd2Joint_SetUserData(joint, NULL);
+	TEST_CHECK(cd2Joint_GetUserData(joint) == NULL);
+	cd2RevoluteJoint_EnableMotor(joint, true);
+	cd2RevoluteJoint_SetMaxMotorTorque(joint, CD_R(1000.0));
+	cd2RevoluteJoint_SetMotorSpeed(joint, CD_R(0.0));
+	cd2RevoluteJoint_SetLimits(joint, -CD_R(0.2), CD_R(0.2));
+	cd2RevoluteJoint_EnableLimit(joint, true);
+	cd2World_EnableSleeping(world, false);
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	cd2Joint_WakeBodies(joint);
+	/* The motor holds the arm (anchored 1 m above its centre) horizontal... it is straight below:
+	 * no torque needed; the reaction is its weight. */
+	TEST_CHECK_NEAR(cd2Joint_GetConstraintTorque(joint), 0.0, 0.05);
+	TEST_CHECK_NEAR(cd2Joint_GetConstraintForce(joint).y, cd2Body_GetMass(arm) * CD_R(10.0), 0.05);
+	cd2DestroyJoint(joint);
+
+	cd2BodyId driven = MakeBall(world, cd2MakeVec(CD_R(20.0), CD_R(5.0)), CD_R(0.3), false);
+	cd2MotorJointDef mj = cd2DefaultMotorJointDef();
+	mj.bodyIdA = ground;
+	mj.bodyIdB = driven;
+	mj.linearOffset = cd2MakeVec(CD_R(20.0), CD_R(5.0));
+	mj.maxForce = CD_R(500.0);
+	mj.maxTorque = CD_R(50.0);
+	cd2JointId motor = cd2CreateMotorJoint(world, &mj);
+	cd2MotorJoint_SetLinearOffset(motor, cd2MakeVec(CD_R(21.0), CD_R(5.0)));
+	cd2MotorJoint_SetAngularOffset(motor, CD_R(0.5));
+	cd2BodyId pair = MakeBall(world, cd2MakeVec(CD_R(30.0), CD_R(5.0)), CD_R(0.3), false);
+	cd2DistanceJointDef dj = cd2DefaultDistanceJointDef();
+	dj.bodyIdA = ground;
+	dj.bodyIdB = pair;
+	dj.localAnchorA = cd2MakeVec(CD_R(30.0), CD_R(7.0));
+	dj.length = CD_R(2.0);
+	cd2JointId distance = cd2CreateDistanceJoint(world, &dj);
+	cd2DistanceJoint_SetLength(distance, CD_R(1.0));
+	for (int i = 0; i < 120; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK_NEAR(cd2Body_GetPosition(driven).x, 21.0, 0.02);
+	TEST_CHECK_NEAR(cd2RotGetAngle(cd2Body_GetRotation(driven)), 0.5, 0.02);
+	TEST_CHECK_NEAR(cd2DistanceJoint_GetCurrentLength(distance), 1.0, 0.01);
+	/* As a rope of 0.5 to 3 m with a soft spring of rest length 1 m it hangs lower. */
+	cd2Joint_EnableSpring(distance, true);
+	cd2Joint_SetSpringHertz(distance, CD_R(1.0));
+	cd2DistanceJoint_SetLengthRange(distance, CD_R(0.5), CD_R(3.0));
+	cd2Joint_EnableLimit(distance, true);
+	for (int i = 0; i < 240; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	cdReal hanging = cd2DistanceJoint_GetCurrentLength(distance);
+	TEST_CHECKF(hanging > CD_R(1.1) && hanging <= CD_R(3.01), "length %g", (double)hanging);
+	cd2DestroyWorld(world);
+}
+
+typedef struct PlaneList
+{
+	cd2PlaneResult planes[16];
+	int count;
+} PlaneList;
+
+static bool CollectPlane(const cd2PlaneResult* plane, void* context)
+{
+	PlaneList* list = (PlaneList*)context;
+	if (list->count < 16)
+	{
+		list->planes[list->count++] = *plane;
+	}
+	return true;
+}
+
+static cd2Capsule MoverAt(cd2Vec bottom)
+{
+	cd2Capsule c = {cd2Add(bottom, cd2MakeVec(CD_R(0.0), CD_R(0.3))),
+					cd2Add(bottom, cd2MakeVec(CD_R(0.0), CD_R(1.0))), CD_R(0.3)};
+	return c;
+}
+
+/* One frame of the character mover loop of world2.h. */
+static void MoveCharacter(cd2WorldId world, cd2Vec* position, cd2Vec* velocity, cdReal dt)
+{
+	cd2QueryFilter filter = cd2DefaultQueryFilter();
+	cd2Vec target = cd2MulAdd(*position, dt, *velocity);
+	PlaneList list;
+	list.count = 0;
+	for (int i = 0; i < 4; ++i)
+	{
+		list.count = 0;
+		cd2Capsule atTarget = MoverAt(target);
+		cd2World_CollideMover(world, &atTarget, filter, CollectPlane, &list);
+		target = cd2Add(target, cd2SolvePlanes(CD2_VEC_ZERO, list.planes, list.count));
+	}
+	cd2Capsule atPosition = MoverAt(*position);
+	cdReal t = cd2World_CastMover(world, &atPosition, cd2Sub(target, *position), filter);
+	*position = cd2Lerp(*position, target, t);
+	*velocity = cd2ClipVector(*velocity, list.planes, list.count);
+}
+
+/* The mover walks along the ground into a wall and stops there; walks up a 20 degree slope. */
+static void TestMover(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	MakeStaticBox(world, cd2MakeVec(CD_R(5.0), CD_R(1.5)), CD_R(0.5), CD_R(1.5)); /* wall face at x = 4.5 */
+	cdReal slope = (cdReal)tan(20.0 * 3.14159265358979 / 180.0);
+	{
+		cd2BodyDef bd = cd2DefaultBodyDef();
+		cd2BodyId ramp = cd2CreateBody(world, &bd);
+		cd2Vec points[3] = {
+			{-CD_R(3.0), CD_R(0.0)}, {-CD_R(13.0), CD_R(0.0)}, {-CD_R(13.0), CD_R(10.0) * slope}};
+		cd2Polygon triangle;
+		TEST_CHECK(cd2MakePolygon(points, 3, &triangle) == CD_OK);
+		cd2ShapeDef sd = cd2DefaultShapeDef();
+		cd2CreatePolygonShape(ramp, &sd, &triangle);
+	}
+	cdReal dt = CD_R(1.0) / CD_R(60.0);
+	cd2Vec position = cd2MakeVec(CD_R(0.0), CD_R(0.5)); /* starts in the air: falls to the ground */
+	cd2Vec velocity = CD2_VEC_ZERO;
+	for (int i = 0; i < 180; ++i)
+	{
+		velocity.x = CD_R(3.0);
+		velocity.y -= CD_R(10.0) * dt;
+		MoveCharacter(world, &position, &velocity, dt);
+		TEST_CHECK(position.y > -CD_R(0.02));
+	}
+	TEST_CHECK_NEAR(position.x, 4.2, 0.03);
+	TEST_CHECK_NEAR(position.y, 0.0, 0.03);
+	TEST_CHECK(cdAbs(velocity.y) < CD_R(0.2)); /* standing, not accumulating a fall */
+	/* Back to the left and up the slope. */
+	position = cd2MakeVec(-CD_R(2.0), CD_R(0.0));
+	velocity = CD2_VEC_ZERO;
+	for (int i = 0; i < 120; ++i)
+	{
+		velocity.x = -CD_R(3.0);
+		velocity.y -= CD_R(10.0) * dt;
+		MoveCharacter(world, &position, &velocity, dt);
+	}
+	cdReal ground = (-CD_R(3.0) - position.x) * slope;
+	TEST_CHECKF(position.x < -CD_R(6.0) && position.y > CD_R(1.0), "mover at %g %g", (double)position.x,
+				(double)position.y);
+	TEST_CHECK_NEAR(position.y, ground, 0.05);
+	cd2DestroyWorld(world);
+}
+
 typedef struct DrawCount
 {
 	int polygons, circles, capsules, segments, points;
@@ -797,10 +1114,13 @@ int main(void)
 	TEST_RUN(TestSensorEvents);
 	TEST_RUN(TestContactAndHitEvents);
 	TEST_RUN(TestPreSolveAndCustomFilter);
+	TEST_RUN(TestLockedWorld);
 	TEST_RUN(TestQueries);
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);
+	TEST_RUN(TestMover);
+	TEST_RUN(TestAccessors);
 	return TEST_SUMMARY();
 }

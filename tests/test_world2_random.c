@@ -394,9 +394,9 @@ static void RunSequence(uint64_t seed, int operations)
 static void TestRandomSequences(void)
 {
 	cdSetAssertFcn(CountRefusal);
-	for (uint64_t seed = 1; seed <= 6; ++seed)
+	for (uint64_t seed = 1; seed <= 40; ++seed)
 	{
-		RunSequence(seed, 600);
+		RunSequence(seed, 1500); /* seed 40 ran away to NaN before the speed caps held after the joints */
 	}
 	cdSetAssertFcn(NULL);
 }

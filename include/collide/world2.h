@@ -610,6 +610,47 @@ CD_API void cd2World_CastRay(cd2WorldId worldId, cd2Vec origin, cd2Vec translati
 CD_API void cd2World_CastShape(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation,
 							   cd2QueryFilter filter, cd2CastResultFcn* fcn, void* context);
 
+/* ---- kinematic character mover ---------------------------------------------------------------
+ * A character moved by your code, not by the solver: a capsule that casts along its path, collects
+ * the planes of what it touches, and slides along them (walks up slopes, stops at walls, stands on
+ * platforms). One frame, in the spirit of Box2D v3's mover:
+ *
+ *     target = cd2Add(position, cd2Scale(dt, velocity));
+ *     for (int i = 0; i < 4; ++i) {          // collect the planes around the target, solve them
+ *         planeCount = 0;
+ *         cd2World_CollideMover(world, &capsuleAtTarget, filter, CollectPlane, &planes);
+ *         target = cd2Add(target, cd2SolvePlanes(CD2_VEC_ZERO, planes, planeCount));
+ *     }
+ *     cdReal t = cd2World_CastMover(world, &capsuleAtPosition, cd2Sub(target, position), filter);
+ *     position = cd2Lerp(position, target, t);
+ *     velocity = cd2ClipVector(velocity, planes, planeCount);
+ *
+ * (tests/test_world2_features.c, TestMover, is this loop in full.) */
+typedef struct cd2PlaneResult
+{
+	cd2ShapeId shapeId;
+	cd2Vec normal;	   /* unit, from the shape to the mover */
+	cdReal separation; /* along normal: > 0 apart (within the speculative distance), < 0 overlapping */
+	cd2Vec point;	   /* the deepest contact point */
+} cd2PlaneResult;
+
+/* Return false to stop. */
+typedef bool cd2PlaneResultFcn(const cd2PlaneResult* plane, void* context);
+
+/* The planes of the non-sensor shapes touching (or within CD_SPECULATIVE_DISTANCE of) the capsule. */
+CD_API void cd2World_CollideMover(cd2WorldId worldId, const cd2Capsule* mover, cd2QueryFilter filter,
+								  cd2PlaneResultFcn* fcn, void* context);
+/* The fraction in [0, 1] of translation the capsule can move before it touches a non-sensor shape
+ * that it does not already overlap (1 when nothing is in the way). */
+CD_API cdReal cd2World_CastMover(cd2WorldId worldId, const cd2Capsule* mover, cd2Vec translation,
+								 cd2QueryFilter filter);
+/* The smallest change of targetDelta (iteratively, every plane in turn) after which the mover
+ * moved by the result overlaps no plane: separation + dot(normal, result) >= 0 for each. */
+CD_API cd2Vec cd2SolvePlanes(cd2Vec targetDelta, const cd2PlaneResult* planes, int count);
+/* The vector without its components into the planes the mover touches (separation below the
+ * linear slop): a velocity that slides along walls and floors instead of pushing into them. */
+CD_API cd2Vec cd2ClipVector(cd2Vec vector, const cd2PlaneResult* planes, int count);
+
 /* ---- debug draw ------------------------------------------------------------------------------
  * cd2World_Draw calls these for what the flags select, in world coordinates; any callback may be
  * NULL. Colours are 0xRRGGBB: static bodies grey, kinematic blue, awake dynamic bodies orange,

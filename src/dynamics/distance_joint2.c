@@ -63,6 +63,9 @@ void cd2SolveDistanceJoint(cd2JointSolverArgs* args, bool useBias)
 	cdReal length = cd2Length(delta);
 	cd2Vec axis = length > CD_R(0.0) ? cd2Scale(CD_R(1.0) / length, delta) : d->axisA;
 	d->axisA = axis;
+	/* The effective mass along the current axis and lever arms: a spinning body turns them far
+	 * within a step, and the step-start mass would then overshoot. */
+	d->axialMass = cd2AxialMass(a, b, rA, rB, axis);
 	bool rigid = !d->enableSpring || d->minLength == d->maxLength;
 	if (rigid)
 	{

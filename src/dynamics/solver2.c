@@ -71,9 +71,21 @@ static void cd2IntegrateVelocities(cd2World* world, cd2StepContext* context)
 static void cd2IntegratePositions(cd2StepContext* context)
 {
 	cdReal h = context->h;
+	cdReal maxLinear = context->maxLinearVelocity;
+	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = 0; i < context->bodyCount; ++i)
 	{
 		cd2SolverBody* s = context->bodies + i;
+		/* The speed caps hold after the constraints too: conflicting joints (a loop of rigid joints
+		 * that cannot all hold) must not run away. */
+		if (cd2Dot(s->linearVelocity, s->linearVelocity) > maxLinear * maxLinear)
+		{
+			s->linearVelocity = cd2Scale(maxLinear / cd2Length(s->linearVelocity), s->linearVelocity);
+		}
+		if (s->angularVelocity * s->angularVelocity > maxAngular * maxAngular)
+		{
+			s->angularVelocity = s->angularVelocity > CD_R(0.0) ? maxAngular : -maxAngular;
+		}
 		s->deltaRotation = cd2IntegrateRotation(s->deltaRotation, h * s->angularVelocity);
 		s->deltaPosition = cd2MulAdd(s->deltaPosition, h, s->linearVelocity);
 	}
@@ -264,6 +276,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		const cd2SolverBody* s = context.bodies + k;
 		body->linearVelocity = s->linearVelocity;
 		body->angularVelocity = s->angularVelocity;
+		/* The relax pass and restitution come after the last position update: cap once more. */
+		if (cd2Dot(body->linearVelocity, body->linearVelocity) >
+			context.maxLinearVelocity * context.maxLinearVelocity)
+		{
+			body->linearVelocity =
+				cd2Scale(context.maxLinearVelocity / cd2Length(body->linearVelocity), body->linearVelocity);
+		}
 		body->center = cd2Add(body->center, s->deltaPosition);
 		body->transform.q = cd2NormalizeRot(cd2MulRot(s->deltaRotation, body->transform.q));
 		body->transform.p = cd2Sub(body->center, cd2RotateVector(body->transform.q, body->localCenter));
