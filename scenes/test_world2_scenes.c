@@ -107,11 +107,15 @@ static void TestJointGridCriterion(void)
 	TEST_CHECK(q.computed && q.pass);
 	TEST_CHECK_NEAR(q.value, 0.0, 1e-12);
 	/* Turning one disc a quarter turn moves its four anchors: the gap to its neighbours is
-	 * |(0.5, 0) - (0, 0.5)| = 0.707 m. */
+	 * |(0.5, 0) - (0, 0.5)| = 0.707 m, more than half a link. */
 	end.bodies[4].angle = 0.5 * 3.14159265358979323846;
 	q = world2CheckQuality(WORLD2_JOINT_GRID, &start, &end, 1.0);
 	TEST_CHECK(q.computed && !q.pass);
 	TEST_CHECK_NEAR(q.value, sqrt(0.5), 1e-9);
+	end.bodies[4].angle = 0.25 * 3.14159265358979323846; /* 0.38 m: stretched, not torn */
+	q = world2CheckQuality(WORLD2_JOINT_GRID, &start, &end, 1.0);
+	TEST_CHECK(q.computed && q.pass);
+	TEST_CHECK_NEAR(q.value, sqrt(2.0 - sqrt(2.0)) * 0.5, 1e-9);
 	world2SnapshotFree(&start);
 	world2SnapshotFree(&end);
 }

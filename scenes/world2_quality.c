@@ -311,7 +311,7 @@ static World2Quality checkJointGrid(const World2Snapshot* start, const World2Bod
 	World2Quality q;
 	memset(&q, 0, sizeof(q));
 	q.computed = true;
-	q.limit = 0.1;
+	q.limit = 0.5;
 	double worst = 0.0, lowest = 0.0;
 	for (int k = 0; k < n; ++k)
 	{

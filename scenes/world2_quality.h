@@ -8,8 +8,9 @@
  *
  *   pyramid_20, pyramid_40, large_pyramid, many_pyramids: every apex (a box with no box resting
  *     on it at the start) moved less than 2 cm;
- *   joint_grid: every revolute joint's anchors (the grid's neighbours, 1 m apart) are less than
- *     10 cm apart at the end;
+ *   joint_grid: the grid does not tear: every revolute joint's anchors (the grid's neighbours,
+ *     1 m apart) are less than half a link (0.5 m) apart at the end (10,000 discs hanging from 7
+ *     stretch the soft joints by some 40 cm in Box2D v3 and in collide);
  *   rain: no body is below the lowest floor (y < -1 m) or non-finite;
  *   smash: the total linear momentum (no gravity) is kept within 1%;
  *   spinner: no body escaped the 40 m ring;
