@@ -323,7 +323,19 @@ export class World2 {
   castShape(shape: Shape2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
   saveState(): Uint8Array;
   restoreState(state: Uint8Array | ArrayBuffer | ArrayBufferView): void;
+  /** Kinematic character mover: planes of the shapes touching a world-space capsule. */
+  collideMover(capsule: MoverCapsule2, filter?: QueryFilter2): MoverPlane2[];
+  /** Fraction of translation the capsule can move before it touches a shape it does not overlap. */
+  castMover(capsule: MoverCapsule2, translation: Vec2, filter?: QueryFilter2): number;
+  /** One frame of the mover loop; capsule in the character's frame. */
+  moveCharacter(options: { capsule: MoverCapsule2; position: Vec2; velocity: Vec2; dt: number; filter?: QueryFilter2; oneWayBits?: Bits64 }):
+    { position: Vec2; velocity: Vec2; planes: MoverPlane2[] };
 }
+
+export interface MoverCapsule2 { p1: Vec2; p2: Vec2; radius: number }
+export interface MoverPlane2 { shape: BodyShape2 | null; normal: Vec2; separation: number; point: Vec2 }
+export function solvePlanes2(targetDelta: Vec2, planes: { normal: Vec2; separation: number; point?: Vec2 }[]): Vec2;
+export function clipVector2(vector: Vec2, planes: { normal: Vec2; separation: number; point?: Vec2 }[]): Vec2;
 
 export class Body2 {
   private constructor();

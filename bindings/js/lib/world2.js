@@ -844,3 +844,92 @@ export class Joint2 {
 
 export const BODY2_TYPES = BODY_TYPES;
 export const JOINT2_TYPES = JOINT_TYPES;
+
+// ---- kinematic character mover (world2.h) ------------------------------------------------------
+
+function writeCapsule(at, capsule, name) {
+  obj(capsule, name);
+  const p1 = vec2(capsule.p1, `${name}.p1`), p2 = vec2(capsule.p2, `${name}.p2`);
+  const r = num(capsule.radius, `${name}.radius`);
+  if (r <= 0) throw new RangeError(`${name}.radius must be > 0, got ${r}`);
+  w.F32.set([p1[0], p1[1], p2[0], p2[1], r], at);
+}
+
+function readPlanes(world, ptr, count) {
+  const out = [], p = ptr >> 2, f = w.F32, i = w.I32;
+  for (let k = 0; k < count; k++) {
+    const q = p + 7 * k;
+    out.push({ shape: world._shape(i[q], i[q + 1]), normal: { x: f[q + 2], y: f[q + 3] }, separation: f[q + 4], point: { x: f[q + 5], y: f[q + 6] } });
+  }
+  return out;
+}
+
+/**
+ * The planes of the non-sensor shapes touching (or within the speculative distance of) a capsule
+ * {p1, p2, radius} in world space: [{shape, normal (from the shape to the mover), separation, point}].
+ */
+World2.prototype.collideMover = function collideMover(capsule, filter) {
+  this._check('collideMover');
+  writeCapsule(io(), capsule, 'capsule');
+  writeQueryFilter(io() + 5, filter, 'filter');
+  const ptr = E().mover2Collide(this._w);
+  return readPlanes(this, ptr, w.I32[io()]);
+};
+
+/** The fraction in [0, 1] of translation the capsule can move before it touches a shape it does not already overlap. */
+World2.prototype.castMover = function castMover(capsule, translation, filter) {
+  this._check('castMover');
+  writeCapsule(io(), capsule, 'capsule');
+  w.F32.set(vec2(translation, 'translation'), io() + 5);
+  writeQueryFilter(io() + 7, filter, 'filter');
+  return E().mover2Cast(this._w);
+};
+
+/**
+ * One frame of the kinematic character mover (the loop of world2.h: collect the planes around the
+ * target and solve them four times, cast from the position to the target, clip the velocity).
+ * options: capsule {p1, p2, radius} in the character's frame, position, velocity, dt, filter,
+ * oneWayBits (shapes whose category has one of these bits hold the character only from above).
+ * Returns {position, velocity, planes}; a plane with normal.y > 0.7 is ground under the feet.
+ */
+World2.prototype.moveCharacter = function moveCharacter(options) {
+  this._check('moveCharacter');
+  obj(options, 'options');
+  const p = io();
+  writeCapsule(p, options.capsule, 'options.capsule');
+  const pos = vec2(options.position, 'options.position'), vel = vec2(options.velocity, 'options.velocity');
+  const dt = num(options.dt, 'options.dt');
+  if (dt < 0) throw new RangeError(`options.dt must be >= 0, got ${dt}`);
+  w.F32.set([pos[0], pos[1], vel[0], vel[1], dt], p + 5);
+  writeQueryFilter(p + 10, options.filter, 'options.filter');
+  writeWords(p + 14, bits64(options.oneWayBits, 'options.oneWayBits', [0, 0]));
+  const ptr = E().mover2Move(this._w);
+  if (ptr === 0) throw new RangeError('options is not valid');
+  const f = w.F32;
+  const result = { position: { x: f[p], y: f[p + 1] }, velocity: { x: f[p + 2], y: f[p + 3] } };
+  result.planes = readPlanes(this, ptr, w.I32[p + 4]);
+  return result;
+};
+
+function planesCall(what, vector, planes, name) {
+  w.requireInit();
+  const v = vec2(vector, name);
+  if (!Array.isArray(planes)) throw new TypeError(`planes must be an array, got ${describe(planes)}`);
+  if (planes.length > 32) throw new RangeError(`planes must hold at most 32 planes, got ${planes.length}`);
+  const p = io();
+  w.I32[p] = planes.length;
+  planes.forEach((pl, k) => {
+    obj(pl, `planes[${k}]`);
+    const n = vec2(pl.normal, `planes[${k}].normal`);
+    const pt = pl.point === undefined ? [0, 0] : vec2(pl.point, `planes[${k}].point`);
+    w.F32.set([0, 0, n[0], n[1], num(pl.separation, `planes[${k}].separation`), pt[0], pt[1]], p + 1 + 7 * k);
+  });
+  w.F32.set(v, p + 1 + 7 * planes.length);
+  E().mover2Planes(what);
+  return { x: w.F32[p], y: w.F32[p + 1] };
+}
+
+/** cd2SolvePlanes: the smallest change of targetDelta after which the mover overlaps no plane. */
+export function solvePlanes2(targetDelta, planes) { return planesCall(0, targetDelta, planes, 'targetDelta'); }
+/** cd2ClipVector: the vector without its components into the planes the mover touches. */
+export function clipVector2(vector, planes) { return planesCall(1, vector, planes, 'vector'); }

@@ -1510,3 +1510,183 @@ EXPORT("world2RestoreState") int cdjsWorld2RestoreState(int world0, const void* 
 	}
 	return (int)cd2World_RestoreState(w->id, buffer, (size_t)size);
 }
+
+/* ---- kinematic character mover (world2.h) ------------------------------------------------------
+ * Planes as 7 floats: shape index1 gen (ints), normal x y, separation, point x y. */
+#define MOVER_MAX_PLANES 32
+
+typedef struct MoverPlanes
+{
+	cd2PlaneResult planes[MOVER_MAX_PLANES];
+	int count;
+	uint64_t oneWayBits;
+} MoverPlanes;
+
+/* One-way shapes (category in oneWayBits) only hold the mover up from above: their planes count
+ * when the normal points up and the mover is not already deep inside. */
+static bool collectPlane(const cd2PlaneResult* plane, void* context)
+{
+	MoverPlanes* list = (MoverPlanes*)context;
+	if (list->oneWayBits != 0 && (cd2Shape_GetFilter(plane->shapeId).categoryBits & list->oneWayBits) != 0)
+	{
+		if (plane->normal.y < 0.7f || plane->separation < -0.05f)
+		{
+			return true;
+		}
+	}
+	if (list->count < MOVER_MAX_PLANES)
+	{
+		list->planes[list->count++] = *plane;
+	}
+	return true;
+}
+
+static void putPlanes(const MoverPlanes* list)
+{
+	g_outCount = 0;
+	if (!outReserve(7 * list->count + 1))
+	{
+		putInt(IO, 0);
+		return;
+	}
+	for (int i = 0; i < list->count; ++i)
+	{
+		const cd2PlaneResult* p = list->planes + i;
+		float* o = g_out + 7 * i;
+		putShape(o, p->shapeId);
+		o[2] = p->normal.x;
+		o[3] = p->normal.y;
+		o[4] = p->separation;
+		o[5] = p->point.x;
+		o[6] = p->point.y;
+	}
+	putInt(IO, list->count);
+}
+
+static bool readCapsule(const float* in, cd2Capsule* out)
+{
+	for (int i = 0; i < 5; ++i)
+	{
+		if (!isfinite(in[i]))
+		{
+			return false;
+		}
+	}
+	*out = (cd2Capsule){{in[0], in[1]}, {in[2], in[3]}, in[4]};
+	return in[4] > 0.0f;
+}
+
+/* IO in: capsule (p1 x y, p2 x y, radius; world), filter (4 words). Planes to the output list,
+ * count in IO[0]; returns the list's byte pointer (NULL for a stale world or bad capsule). */
+EXPORT("mover2Collide") float* cdjsMover2Collide(int world0)
+{
+	JsWorld* w = getWorld(world0);
+	cd2Capsule capsule;
+	if (w == NULL || !readCapsule(IO, &capsule))
+	{
+		putInt(IO, -1);
+		return NULL;
+	}
+	MoverPlanes list;
+	list.count = 0;
+	list.oneWayBits = 0;
+	cd2World_CollideMover(w->id, &capsule, queryFilter(IO + 5), collectPlane, &list);
+	putPlanes(&list);
+	return g_out;
+}
+
+/* IO in: capsule (5), translation x y, filter (4 words). Returns the fraction, -1 on bad input. */
+EXPORT("mover2Cast") float cdjsMover2Cast(int world0)
+{
+	JsWorld* w = getWorld(world0);
+	cd2Capsule capsule;
+	if (w == NULL || !readCapsule(IO, &capsule) || !isfinite(IO[5]) || !isfinite(IO[6]))
+	{
+		return -1.0f;
+	}
+	return cd2World_CastMover(w->id, &capsule, (cd2Vec){IO[5], IO[6]}, queryFilter(IO + 7));
+}
+
+/* IO in: planes count (int), then planes (7 floats each, from the output list layout), then the
+ * vector x y; what: 0 cd2SolvePlanes, 1 cd2ClipVector. IO out: x y. */
+EXPORT("mover2Planes") int cdjsMover2Planes(int what)
+{
+	int count = getInt(IO);
+	if (count < 0 || count > MOVER_MAX_PLANES)
+	{
+		return 0;
+	}
+	cd2PlaneResult planes[MOVER_MAX_PLANES];
+	const float* p = IO + 1;
+	for (int i = 0; i < count; ++i, p += 7)
+	{
+		planes[i].shapeId = CD2_NULL_SHAPE_ID;
+		planes[i].normal = (cd2Vec){p[2], p[3]};
+		planes[i].separation = p[4];
+		planes[i].point = (cd2Vec){p[5], p[6]};
+	}
+	cd2Vec v = {p[0], p[1]};
+	cd2Vec r = what == 0 ? cd2SolvePlanes(v, planes, count) : cd2ClipVector(v, planes, count);
+	IO[0] = r.x;
+	IO[1] = r.y;
+	return 1;
+}
+
+/* One frame of world2.h's mover loop. IO in: capsule in the character's frame (p1 x y, p2 x y,
+ * radius), position x y, velocity x y, dt, filter (4 words), oneWayBits (2 words). IO out:
+ * position x y, velocity x y, then the planes of the target (output list, count in IO[4]).
+ * Returns the output list's byte pointer, NULL on bad input. */
+EXPORT("mover2Move") float* cdjsMover2Move(int world0)
+{
+	JsWorld* w = getWorld(world0);
+	const float* in = IO;
+	cd2Capsule local;
+	if (w == NULL || !readCapsule(in, &local))
+	{
+		return NULL;
+	}
+	for (int i = 5; i < 10; ++i)
+	{
+		if (!isfinite(in[i]))
+		{
+			return NULL;
+		}
+	}
+	cd2Vec position = {in[5], in[6]}, velocity = {in[7], in[8]};
+	float dt = in[9];
+	cd2QueryFilter filter = queryFilter(in + 10);
+	MoverPlanes list;
+	list.count = 0;
+	list.oneWayBits = getU64(in + 14);
+	cd2Vec target = cd2MulAdd(position, dt, velocity);
+	for (int i = 0; i < 4; ++i)
+	{
+		list.count = 0;
+		cd2Capsule at = {cd2Add(target, local.p1), cd2Add(target, local.p2), local.radius};
+		cd2World_CollideMover(w->id, &at, filter, collectPlane, &list);
+		target = cd2Add(target, cd2SolvePlanes(CD2_VEC_ZERO, list.planes, list.count));
+	}
+	cd2Capsule here = {cd2Add(position, local.p1), cd2Add(position, local.p2), local.radius};
+	cd2Vec delta = cd2Sub(target, position);
+	cd2QueryFilter castFilter = filter;
+	if (list.oneWayBits != 0)
+	{
+		/* Rising or overlapping a one-way shape: it must not stop the cast. */
+		if (delta.y >= 0.0f)
+		{
+			castFilter.maskBits &= ~list.oneWayBits;
+		}
+	}
+	float t = cd2World_CastMover(w->id, &here, delta, castFilter);
+	position = cd2Lerp(position, target, t);
+	velocity = cd2ClipVector(velocity, list.planes, list.count);
+	putPlanes(&list);
+	float* o = IO;
+	int count = getInt(IO);
+	o[0] = position.x;
+	o[1] = position.y;
+	o[2] = velocity.x;
+	o[3] = velocity.y;
+	putInt(o + 4, count);
+	return g_out;
+}

@@ -288,3 +288,45 @@ test('bad input throws TypeError or RangeError naming the argument', () => {
   assert.throws(() => world.step(DT), { name: 'TypeError', message: /step: this World2 was destroyed/ });
   assert.throws(() => ground.position, { name: 'TypeError', message: /Body2 was destroyed/ });
 });
+
+test('the character mover stops at a wall, stands on the ground and walks up a 20 degree slope', () => {
+  const world = new c.World2();
+  world.createBody({ position: { x: 0, y: -1 } }).createShape(c.box2({ x: 0, y: 0 }, { x: 50, y: 1 }));
+  world.createBody({ position: { x: 5, y: 1.5 } }).createShape(c.box2({ x: 0, y: 0 }, { x: 0.5, y: 1.5 })); // wall face at x = 4.5
+  const slope = Math.tan(20 * Math.PI / 180);
+  world.createBody().createShape(c.polygon([{ x: -3, y: 0 }, { x: -13, y: 0 }, { x: -13, y: 10 * slope }]));
+  // The capsule's feet at the character's position: radius 0.3, from 0.3 to 1.0 above it.
+  const capsule = { p1: { x: 0, y: 0.3 }, p2: { x: 0, y: 1 }, radius: 0.3 };
+  let position = { x: 0, y: 0.5 }, velocity = { x: 0, y: 0 }, planes = [];
+  for (let i = 0; i < 180; i++) {
+    velocity = { x: 3, y: velocity.y - 10 / 60 };
+    ({ position, velocity, planes } = world.moveCharacter({ capsule, position, velocity, dt: 1 / 60 }));
+    assert.ok(position.y > -0.02);
+  }
+  // Stopped by the wall: its face at 4.5 minus the radius 0.3; standing on the ground.
+  assert.ok(Math.abs(position.x - 4.2) < 0.03 && Math.abs(position.y) < 0.03, `at ${position.x}, ${position.y}`);
+  assert.ok(Math.abs(velocity.y) < 0.2);
+  assert.ok(planes.some((p) => p.normal.y > 0.99) && planes.some((p) => p.normal.x < -0.99), 'ground and wall planes');
+  position = { x: -2, y: 0 }; velocity = { x: 0, y: 0 };
+  for (let i = 0; i < 120; i++) {
+    velocity = { x: -3, y: velocity.y - 10 / 60 };
+    ({ position, velocity } = world.moveCharacter({ capsule, position, velocity, dt: 1 / 60 }));
+  }
+  assert.ok(position.x < -6 && Math.abs(position.y - (-3 - position.x) * slope) < 0.05, `on the slope at ${position.x}, ${position.y}`);
+  // The building blocks: planes of a capsule resting on the ground, a cast, solve and clip.
+  const resting = world.collideMover({ p1: { x: 0, y: 0.3 }, p2: { x: 0, y: 1 }, radius: 0.3 });
+  assert.equal(resting.length, 1);
+  assert.ok(Math.abs(resting[0].normal.y - 1) < 1e-5 && Math.abs(resting[0].separation) < 1e-4);
+  const t = world.castMover({ p1: { x: 0, y: 1.3 }, p2: { x: 0, y: 2 }, radius: 0.3 }, { x: 0, y: -2 });
+  assert.ok(Math.abs(t - 0.5) < 0.01, `cast fraction ${t}`);
+  const floor = [{ normal: { x: 0, y: 1 }, separation: -0.1, point: { x: 0, y: 0 } }];
+  // Separation -0.1 and a target 1 m into the floor: pushed up to 0.1 m above (float rounding).
+  const solved = c.solvePlanes2({ x: 1, y: -1 }, floor);
+  assert.ok(solved.x === 1 && Math.abs(solved.y - 0.1) < 1e-6, `solved ${solved.x}, ${solved.y}`);
+  const clipped = c.clipVector2({ x: 2, y: -5 }, floor);
+  assert.equal(clipped.x, 2);
+  assert.ok(Math.abs(clipped.y) < 1e-6);
+  assert.throws(() => world.moveCharacter({ capsule: { p1: { x: 0, y: 0 }, p2: { x: 0, y: 1 }, radius: 0 }, position, velocity, dt: 1 / 60 }), { name: 'RangeError', message: /options\.capsule\.radius/ });
+  assert.throws(() => world.moveCharacter({ capsule, position: { x: NaN, y: 0 }, velocity, dt: 1 / 60 }), { name: 'RangeError', message: /options\.position\.x/ });
+  world.destroy();
+});
