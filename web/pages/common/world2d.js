@@ -1,7 +1,7 @@
 // Shared by the pages on collide's 2D world: the navigation bar, a camera from world metres (y up)
 // to canvas pixels (y down), and drawing every body of a World2 from one getTransforms() view
 // (one call into wasm per frame, not one per body). Each body's userData.draw lists what to draw
-// in the body frame: {box: [hx, hy]}, {circle: r}, {capsule: [halfLength, r]} (along x) or
+// in the body frame: {box: [hx, hy]}, {circle: r}, {capsule: [halfLength, r]} (along y) or
 // {poly: [[x, y], ...]}, with a fill colour.
 import { PAGES } from './hud.js';
 
@@ -55,9 +55,9 @@ export function drawWorld(ctx, camera, world, options = {}) {
       } else if (item.circle) {
         ctx.arc(item.at?.[0] ?? 0, item.at?.[1] ?? 0, item.circle, 0, 2 * Math.PI);
       } else if (item.capsule) {
-        const [h, r] = item.capsule;
-        ctx.arc(0, h, r, 0, Math.PI);
-        ctx.arc(0, -h, r, Math.PI, 2 * Math.PI);
+        const [h, r] = item.capsule, ox = item.at?.[0] ?? 0, oy = item.at?.[1] ?? 0;
+        ctx.arc(ox, oy + h, r, 0, Math.PI);
+        ctx.arc(ox, oy - h, r, Math.PI, 2 * Math.PI);
         ctx.closePath();
       } else if (item.poly) {
         item.poly.forEach(([x, y], i) => (i ? ctx.lineTo(x, y) : ctx.moveTo(x, y)));

@@ -38,7 +38,7 @@ staticBox(-6.5, 3, 0.5, 3.5, '#4a5266');
 staticBox(48.5, 3, 0.5, 3.5, '#4a5266');
 // A solid platform and a one-way platform above the ground.
 staticBox(9, 2.2, 1.5, 0.25, '#4a5266');
-const [, oneWay] = staticBox(25, 2.4, 2.5, 0.15, '#5fbf6a', { enablePreSolveEvents: true });
+const [, oneWay] = staticBox(25, 2.4, 2.5, 0.15, '#5fbf6a', { enablePreSolveEvents: true, filter: { categoryBits: 1 | 2 } });
 // The moving platform: kinematic, back and forth over the pit.
 const mover = world.createBody({ type: 'kinematic', position: { x: 17, y: -0.25 } });
 mover.createShape(box2({ x: 0, y: 0 }, { x: 1.5, y: 0.25 }), { friction: 0.8 });
@@ -50,10 +50,15 @@ for (let i = 0; i < 3; i++) {
   crate.userData = { draw: [{ box: [0.4, 0.4], stroke: '#2a1a08' }], color: '#b07a3c', dynamic: true };
 }
 
-// The character: a capsule standing upright (the capsule's axis along y), fixed rotation.
-const character = world.createBody({ type: 'dynamic', position: { x: 0, y: 1.2 }, fixedRotation: true, enableSleep: false });
-const feet = character.createShape(capsule2({ x: 0, y: -0.4 }, { x: 0, y: 0.4 }, 0.35), { density: 1, friction: 0, enablePreSolveEvents: true, enableSensorEvents: true });
-character.userData = { draw: [{ capsule: [0.4, 0.35], stroke: '#ffffff' }, { circle: 0.08, at: [0.15, 0.5], color: '#0b0e14' }], color: '#f07040' };
+// The character: a kinematic capsule moved by collide's character mover (world.moveCharacter:
+// cast, collect the planes it touches, slide along them). Its position is the bottom of its feet.
+const CAPSULE = { p1: { x: 0, y: 0.35 }, p2: { x: 0, y: 1.15 }, radius: 0.35 };
+const CHARACTER_BIT = 4, ONE_WAY_BIT = 2;
+const MOVER_FILTER = { categoryBits: 1, maskBits: 0xFFFFFFFFFFFFFFFFn & ~BigInt(CHARACTER_BIT) };
+const character = world.createBody({ type: 'kinematic', position: { x: 0, y: 0.5 } });
+const feet = character.createShape(capsule2(CAPSULE.p1, CAPSULE.p2, CAPSULE.radius), { enableSensorEvents: true, filter: { categoryBits: CHARACTER_BIT } });
+character.userData = { draw: [{ capsule: [0.4, 0.35], at: [0, 0.75], stroke: '#ffffff' }, { circle: 0.08, at: [0.15, 1.25], color: '#0b0e14' }], color: '#f07040' };
+let velocity = { x: 0, y: 0 }, planes = [];
 
 // Pick-ups: sensor circles (yellow) along the way, one above the one-way platform, one across the pit.
 const pickupSpots = [[4, 0.8], [9, 3.2], [17, 2.0], [25, 3.3], [36, 0.8]];
@@ -66,14 +71,12 @@ for (const [x, y] of pickupSpots) {
 }
 demo.pickups = pickups.size;
 
-// One-way platform: keep the contact only when the character is above the platform's top and
-// not moving up through it.
+// One-way platform: the character mover holds the character on it only from above (its
+// oneWayBits); for the dynamic crates a pre-solve callback keeps the contact only when the normal
+// points up out of the platform.
 world.setPreSolve((a, b, manifold) => {
-  const platformIsA = a === oneWay;
-  if (!platformIsA && b !== oneWay) return true;
-  const other = platformIsA ? b : a;
-  if (other !== feet) return true;
-  const ny = platformIsA ? manifold.normal.y : -manifold.normal.y; // from the platform to the character
+  if (a !== oneWay && b !== oneWay) return true;
+  const ny = a === oneWay ? manifold.normal.y : -manifold.normal.y; // from the platform to the crate
   return ny > 0.5;
 });
 
@@ -83,34 +86,29 @@ const KEYMAP = { ArrowLeft: 'left', KeyA: 'left', ArrowRight: 'right', KeyD: 'ri
 window.addEventListener('keydown', (e) => { const k = KEYMAP[e.code]; if (k) { keys.add(k); e.preventDefault(); } });
 window.addEventListener('keyup', (e) => { const k = KEYMAP[e.code]; if (k) keys.delete(k); });
 
-function grounded() {
-  const p = character.position;
-  for (const dx of [-0.3, 0, 0.3]) {
-    const hit = world.castRayClosest({ x: p.x + dx, y: p.y - 0.7 }, { x: 0, y: -0.15 });
-    if (hit !== null && hit.shape !== feet && !hit.shape?.isSensor) return true;
-  }
-  return false;
-}
+const onGround = () => planes.some((p) => p.normal.y > 0.7);
 
-let time = 0, jumpCooldown = 0;
+let time = 0;
+const GRAVITY = 20, DT = 1 / 60;
 function step() {
   // The moving platform: velocity along a sine, 3 m each side of the pit's middle.
-  time += 1 / 60;
-  mover.linearVelocity = { x: 3 * Math.cos(time * 0.8) * 0.8, y: 0 };
-  // The character: walk by setting the horizontal velocity, jump with an impulse.
-  const v = character.linearVelocity;
+  time += DT;
+  const platformVx = 3 * Math.cos(time * 0.8) * 0.8;
+  mover.linearVelocity = { x: platformVx, y: 0 };
+  // The character: walking speed from the keys, gravity, a jump from the ground; standing on the
+  // moving platform carries it along.
+  const grounded = onGround();
   const dir = (keys.has('right') ? 1 : 0) - (keys.has('left') ? 1 : 0);
-  const onGround = grounded();
-  let vx = dir * 6;
-  if (onGround && dir === 0) vx = 0;
-  else if (!onGround && dir === 0) vx = v.x * 0.98;
-  character.linearVelocity = { x: vx, y: v.y };
-  jumpCooldown = Math.max(0, jumpCooldown - 1);
-  if (keys.has('jump') && onGround && jumpCooldown === 0) {
-    character.applyLinearImpulseToCenter({ x: 0, y: character.mass * 10 });
-    jumpCooldown = 15;
-  }
-  world.step(1 / 60, 4);
+  const carry = planes.some((p) => p.normal.y > 0.7 && p.shape?.body === mover) ? platformVx : 0;
+  velocity = { x: 6 * dir, y: velocity.y - GRAVITY * DT };
+  if (keys.has('jump') && grounded) velocity.y = 10;
+  const from = character.position;
+  const r = world.moveCharacter({ capsule: CAPSULE, position: from, velocity: { x: velocity.x + carry, y: velocity.y }, dt: DT, filter: MOVER_FILTER, oneWayBits: ONE_WAY_BIT });
+  velocity = { x: velocity.x, y: r.velocity.y };
+  planes = r.planes;
+  // The kinematic body reaches the mover's answer during the step (and pushes crates on the way).
+  character.linearVelocity = { x: (r.position.x - from.x) / DT, y: (r.position.y - from.y) / DT };
+  world.step(DT, 4);
   for (const e of world.getEvents().sensorBegin) {
     if (e.visitor === feet && pickups.has(e.sensor)) {
       pickups.delete(e.sensor);
@@ -121,7 +119,7 @@ function step() {
     }
   }
   // Fell into the pit: back to the start.
-  if (character.position.y < -6) character.setTransform({ x: 0, y: 1.2 }, 0);
+  if (character.position.y < -6) { character.setTransform({ x: 0, y: 0.5 }, 0); velocity = { x: 0, y: 0 }; }
 }
 
 function draw() {
