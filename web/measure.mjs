@@ -20,7 +20,8 @@ const cases = [
   ['bounds3d broadphase grid 3000', 'bounds3d/', broad('grid', '3000')],
   ['bounds3d broadphase tree 3000', 'bounds3d/', broad('tree', '3000')],
   ['bounds3d broadphase grid 5000', 'bounds3d/', broad('grid', '5000')],
-  ['scroller (shell)', 'scroller/', []],
+  ['scroller', 'scroller/', []],
+  ['slingshot', 'slingshot/', []],
 ];
 console.log('| page | frame ms | work ms | collide ms | objects |\n|---|---|---|---|---|');
 for (const [name, path, actions] of cases) {

@@ -234,3 +234,189 @@ export class BroadPhase2 extends BroadPhaseBase<Vec2, Aabb2, Ray2> {
 export class BroadPhase3 extends BroadPhaseBase<Vec3, Aabb3, Ray3> {
   constructor(def?: BroadPhaseDef<Aabb3>);
 }
+
+// ---- the 2D world (collide/world2.h) --------------------------------------------------------
+
+export type BodyType2 = 'static' | 'kinematic' | 'dynamic';
+export type JointType2 = 'distance' | 'filter' | 'motor' | 'mouse' | 'prismatic' | 'revolute' | 'weld' | 'wheel';
+export const BODY2_TYPES: readonly BodyType2[];
+export const JOINT2_TYPES: readonly JointType2[];
+
+/** 64-bit masks: a number up to 2^53 - 1 or a bigint. */
+export type Bits64 = number | bigint;
+export interface Filter2 { categoryBits?: Bits64; maskBits?: Bits64; groupIndex?: number }
+export interface QueryFilter2 { categoryBits?: Bits64; maskBits?: Bits64 }
+
+export interface WorldDef2 {
+  gravity?: Vec2; enableSleep?: boolean; enableContinuous?: boolean;
+  contactHertz?: number; contactDampingRatio?: number; jointHertz?: number; jointDampingRatio?: number;
+  restitutionThreshold?: number; hitEventThreshold?: number; maximumLinearSpeed?: number; contactPushMaxVelocity?: number;
+}
+
+export interface BodyDef2 {
+  type?: BodyType2; position?: Vec2; angle?: number; linearVelocity?: Vec2; angularVelocity?: number;
+  linearDamping?: number; angularDamping?: number; gravityScale?: number; sleepThreshold?: number;
+  enableSleep?: boolean; isAwake?: boolean; fixedRotation?: boolean; isBullet?: boolean; isEnabled?: boolean;
+  userData?: unknown;
+}
+
+export interface ShapeDef2 {
+  density?: number; friction?: number; restitution?: number; rollingResistance?: number; tangentSpeed?: number;
+  filter?: Filter2; isSensor?: boolean; enableSensorEvents?: boolean; enableContactEvents?: boolean;
+  enableHitEvents?: boolean; enablePreSolveEvents?: boolean; userData?: unknown;
+}
+
+export interface JointDef2 {
+  type: JointType2; bodyA: Body2; bodyB: Body2;
+  localAnchorA?: Vec2; localAnchorB?: Vec2; localAxisA?: Vec2; referenceAngle?: number;
+  enableSpring?: boolean; hertz?: number; dampingRatio?: number;
+  enableLimit?: boolean; lowerAngle?: number; upperAngle?: number; lowerTranslation?: number; upperTranslation?: number;
+  minLength?: number; maxLength?: number; length?: number;
+  enableMotor?: boolean; maxMotorTorque?: number; maxMotorForce?: number; motorSpeed?: number;
+  collideConnected?: boolean; target?: Vec2; maxForce?: number; maxTorque?: number;
+  linearOffset?: Vec2; angularOffset?: number; correctionFactor?: number;
+  linearHertz?: number; linearDampingRatio?: number; angularHertz?: number; angularDampingRatio?: number;
+  userData?: unknown;
+}
+
+export interface Transform2 { x: number; y: number; cos: number; sin: number }
+export interface Counters2 {
+  bodyCount: number; shapeCount: number; contactCount: number; touchingContactCount: number;
+  jointCount: number; awakeBodyCount: number; islandCount: number;
+}
+export interface ContactManifold2 { normal: Vec2; points: Vec2[]; separation: number }
+export interface WorldEvents2 {
+  contactBegin: { shapeA: BodyShape2 | null; shapeB: BodyShape2 | null; normal: Vec2; points: { x: number; y: number; separation: number }[] }[];
+  contactEnd: { shapeA: BodyShape2 | null; shapeB: BodyShape2 | null }[];
+  hits: { shapeA: BodyShape2 | null; shapeB: BodyShape2 | null; point: Vec2; normal: Vec2; approachSpeed: number }[];
+  sensorBegin: { sensor: BodyShape2 | null; visitor: BodyShape2 | null }[];
+  sensorEnd: { sensor: BodyShape2 | null; visitor: BodyShape2 | null }[];
+  moves: { body: Body2 | null; x: number; y: number; cos: number; sin: number; fellAsleep: boolean }[];
+}
+export interface WorldHit2 { shape: BodyShape2 | null; point: Vec2; normal: Vec2; fraction: number }
+
+/** A 2D physics world. Call destroy() when done. */
+export class World2 {
+  constructor(def?: WorldDef2);
+  /** The bodies, in the order of getTransforms(). */
+  readonly bodies: Body2[];
+  readonly destroyed: boolean;
+  destroy(): void;
+  step(timeStep: number, subStepCount?: number): void;
+  gravity: Vec2;
+  enableSleeping(flag: boolean): void;
+  enableContinuous(flag: boolean): void;
+  readonly counters: Counters2;
+  createBody(def?: BodyDef2): Body2;
+  createJoint(def: JointDef2): Joint2;
+  /** 4 floats per body (x, y, cos, sin): a view of wasm memory, refreshed by each call. */
+  getTransforms(): Float32Array;
+  /** 7 floats per body (x, y, cos, sin, vx, vy, angular velocity), a copy. */
+  getStates(): Float32Array;
+  getEvents(): WorldEvents2;
+  setPreSolve(fcn: ((shapeA: BodyShape2 | null, shapeB: BodyShape2 | null, manifold: ContactManifold2) => boolean) | null): void;
+  setCustomFilter(fcn: ((shapeA: BodyShape2 | null, shapeB: BodyShape2 | null) => boolean) | null): void;
+  overlapAabb(aabb: Aabb2, filter?: QueryFilter2): (BodyShape2 | null)[];
+  overlapShape(shape: Shape2, filter?: QueryFilter2): (BodyShape2 | null)[];
+  castRayClosest(origin: Vec2, translation: Vec2, filter?: QueryFilter2): WorldHit2 | null;
+  castRay(origin: Vec2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
+  castShape(shape: Shape2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
+  saveState(): Uint8Array;
+  restoreState(state: Uint8Array | ArrayBuffer | ArrayBufferView): void;
+  /** Kinematic character mover: planes of the shapes touching a world-space capsule. */
+  collideMover(capsule: MoverCapsule2, filter?: QueryFilter2): MoverPlane2[];
+  /** Fraction of translation the capsule can move before it touches a shape it does not overlap. */
+  castMover(capsule: MoverCapsule2, translation: Vec2, filter?: QueryFilter2): number;
+  /** One frame of the mover loop; capsule in the character's frame. */
+  moveCharacter(options: { capsule: MoverCapsule2; position: Vec2; velocity: Vec2; dt: number; filter?: QueryFilter2; oneWayBits?: Bits64 }):
+    { position: Vec2; velocity: Vec2; planes: MoverPlane2[] };
+}
+
+export interface MoverCapsule2 { p1: Vec2; p2: Vec2; radius: number }
+export interface MoverPlane2 { shape: BodyShape2 | null; normal: Vec2; separation: number; point: Vec2 }
+export function solvePlanes2(targetDelta: Vec2, planes: { normal: Vec2; separation: number; point?: Vec2 }[]): Vec2;
+export function clipVector2(vector: Vec2, planes: { normal: Vec2; separation: number; point?: Vec2 }[]): Vec2;
+
+export class Body2 {
+  private constructor();
+  readonly world: World2;
+  readonly destroyed: boolean;
+  userData: unknown;
+  destroy(): void;
+  type: BodyType2;
+  position: Vec2;
+  angle: number;
+  readonly transform: Transform2;
+  setTransform(position: Vec2, angle: number): void;
+  linearVelocity: Vec2;
+  angularVelocity: number;
+  readonly mass: number;
+  readonly inertia: number;
+  readonly worldCenterOfMass: Vec2;
+  awake: boolean;
+  enabled: boolean;
+  fixedRotation: boolean;
+  bullet: boolean;
+  gravityScale: number;
+  linearDamping: number;
+  angularDamping: number;
+  enableSleep(flag: boolean): void;
+  applyForce(force: Vec2, point: Vec2, wake?: boolean): void;
+  applyForceToCenter(force: Vec2, wake?: boolean): void;
+  applyTorque(torque: number, wake?: boolean): void;
+  applyLinearImpulse(impulse: Vec2, point: Vec2, wake?: boolean): void;
+  applyLinearImpulseToCenter(impulse: Vec2, wake?: boolean): void;
+  applyAngularImpulse(impulse: number, wake?: boolean): void;
+  readonly shapes: BodyShape2[];
+  createShape(geometry: Shape2, def?: ShapeDef2): BodyShape2;
+  createChain(points: Vec2[], options?: { loop?: boolean; friction?: number; restitution?: number }): BodyShape2[];
+}
+
+/** A shape attached to a body (the geometry types are Shape2). */
+export class BodyShape2 {
+  private constructor();
+  readonly body: Body2;
+  readonly destroyed: boolean;
+  userData: unknown;
+  destroy(): void;
+  readonly type: 'circle' | 'capsule' | 'polygon' | 'segment' | 'chainSegment';
+  readonly isSensor: boolean;
+  density: number;
+  friction: number;
+  restitution: number;
+  readonly aabb: Aabb2;
+  filter: Filter2 | { categoryBits: bigint; maskBits: bigint; groupIndex: number };
+  enableSensorEvents(flag: boolean): void;
+  enableContactEvents(flag: boolean): void;
+  enableHitEvents(flag: boolean): void;
+  enablePreSolveEvents(flag: boolean): void;
+}
+
+export class Joint2 {
+  private constructor();
+  readonly world: World2;
+  readonly type: JointType2;
+  readonly bodyA: Body2;
+  readonly bodyB: Body2;
+  readonly destroyed: boolean;
+  userData: unknown;
+  destroy(): void;
+  readonly constraintForce: Vec2;
+  readonly constraintTorque: number;
+  readonly angle: number;
+  readonly translation: number;
+  readonly currentLength: number;
+  enableMotor(flag: boolean): void;
+  set motorSpeed(v: number);
+  set maxMotor(v: number);
+  enableLimit(flag: boolean): void;
+  setLimits(lower: number, upper: number): void;
+  enableSpring(flag: boolean): void;
+  set springHertz(v: number);
+  set springDampingRatio(v: number);
+  set target(t: Vec2);
+  set length(v: number);
+  set linearOffset(v: Vec2);
+  set angularOffset(v: number);
+  wakeBodies(): void;
+}

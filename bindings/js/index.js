@@ -1,5 +1,5 @@
 // collide for JavaScript: the package's main module. `await init()` once; everything else is
-// synchronous. Modules per area live in lib/; the 2D world (World2) will join as lib/world2.js.
+// synchronous. Modules per area live in lib/; the 2D world is lib/world2.js.
 export { init, simdSupported, isSimdBuild } from './lib/wasm.js';
 export { WasmArray } from './lib/memory.js';
 export {
@@ -25,3 +25,4 @@ export {
   rectsIntersectCircle,
 } from './lib/texts.js';
 export { BroadPhase2, BroadPhase3, BROADPHASE_TYPES } from './lib/broadphase.js';
+export { World2, Body2, BodyShape2, Joint2, BODY2_TYPES, JOINT2_TYPES, solvePlanes2, clipVector2 } from './lib/world2.js';

@@ -79,6 +79,9 @@ async function fetchBytes(source) {
   return response.arrayBuffer();
 }
 
+/** Handlers of the functions the module imports from "collide" (set by lib/world2.js). */
+export const callbacks = { preSolve: () => 1, customFilter: () => 1 };
+
 function stubImports(module) {
   // The library never does I/O; libc's stdio is linked in (the assert handler) but only
   // reachable after a failed assertion, which release builds compile out. Each WASI import
@@ -86,6 +89,12 @@ function stubImports(module) {
   const imports = {};
   for (const imp of WebAssembly.Module.imports(module)) {
     if (imp.kind !== 'function') continue;
+    if (imp.module === 'collide') {
+      // The 2D world's callbacks (pre-solve, custom filter): lib/world2.js installs the handlers.
+      imports.collide ??= {};
+      imports.collide[imp.name] = (...args) => callbacks[imp.name](...args);
+      continue;
+    }
     imports[imp.module] ??= {};
     imports[imp.module][imp.name] = imp.name === 'proc_exit'
       ? (code) => { throw new Error(`collide: wasm exited with code ${code}`); }

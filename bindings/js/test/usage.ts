@@ -89,7 +89,7 @@ export async function main(): Promise<number> {
   const names: readonly string[] = [...BROADPHASE_TYPES, ...SHAPE2_TYPES, ...SHAPE3_TYPES];
   return Number(hit) + cp.x + frac + d + (sep ?? 0) + Number(cast.hit) + state.length + bounds.max.x + mass + all3.length +
     texts.length + idx.length + canvas.length + view.length + Number(moved) + changed + pairs.length + q2.length + st +
-    names.length + MAX_POLYGON_VERTICES + Number(build);
+    names.length + MAX_POLYGON_VERTICES + Number(build) + world2Usage();
 }
 
 // Calls that must not type-check (never run).
@@ -100,4 +100,27 @@ export function typeErrors(): void {
   circle({ x: 0, y: 0 }, '1');
   // @ts-expect-error ids must be an Int32Array
   new BroadPhase2().moveProxies([1, 2], new Float32Array(8));
+}
+
+// The 2D world (called by main() once the module is loaded).
+import * as c from 'collide';
+export function world2Usage(): number {
+  const world = new c.World2({ gravity: { x: 0, y: -10 } });
+  const ground = world.createBody();
+  ground.createShape(c.box2({ x: 0, y: -1 }, { x: 50, y: 1 }));
+  const body: c.Body2 = world.createBody({ type: 'dynamic', position: { x: 0, y: 4 } });
+  const shape: c.BodyShape2 = body.createShape(c.circle({ x: 0, y: 0 }, 0.5), { density: 1, enableHitEvents: true });
+  const joint: c.Joint2 = world.createJoint({ type: 'revolute', bodyA: ground, bodyB: body, localAnchorB: { x: 0, y: 1 } });
+  world.setPreSolve((a, b, m) => m.normal.y > 0 && a !== b);
+  world.step(1 / 60, 4);
+  const t: Float32Array = world.getTransforms();
+  const ev: c.WorldEvents2 = world.getEvents();
+  const hit = world.castRayClosest({ x: 0, y: 10 }, { x: 0, y: -20 });
+  const state: Uint8Array = world.saveState();
+  world.restoreState(state);
+  const p: c.Vec2 = body.position;
+  joint.motorSpeed = 1;
+  void [t, ev, hit, p, shape.friction];
+  world.destroy();
+  return world.destroyed ? 1 : 0;
 }
