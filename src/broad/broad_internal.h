@@ -6,10 +6,10 @@
  * box queries, ray casts and, optionally, the full pair set. It is plugged in through a small
  * vtable per dimension (cd2BroadBackend / cd3BroadBackend below).
  *
- * Writing a backend once for both dimensions: define CD_BROAD_DIM to 2 or 3 and include
- * "broad/broad_dim.h"; it maps BD(Name) to cd2Name / cd3Name and bdAabb, bdVec, bdRay,
- * BD_AXES, bdBoxOverlap, ... to the types and helpers of that dimension. Then include a shared
- * .inc body from a 2D and a 3D .c file (see tree2.c / tree3.c). */
+ * Writing a backend once for both dimensions: define CD_DIM to 2 or 3 and include "base/dim.h"
+ * (the one mechanism for code shared by 2D and 3D); CD_DIM_NAME(BroadBoxOverlap) is then
+ * cd2BroadBoxOverlap or cd3BroadBoxOverlap, CD_AABB, CD_VEC, CD_RAY the types of that dimension.
+ * Then include a shared .inc body from a 2D and a 3D .c file (see tree2.c / tree3.c). */
 #ifndef COLLIDE_BROAD_INTERNAL_H
 #define COLLIDE_BROAD_INTERNAL_H
 

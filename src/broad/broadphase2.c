@@ -1,3 +1,3 @@
 /* collide: the 2D broadphase frontend (shared body in broadphase.inc). */
-#define CD_BROAD_DIM 2
+#define CD_DIM 2
 #include "broad/broadphase.inc"

@@ -1,3 +1,3 @@
 /* collide: the 3D broadphase frontend (shared body in broadphase.inc). */
-#define CD_BROAD_DIM 3
+#define CD_DIM 3
 #include "broad/broadphase.inc"

@@ -1,3 +1,3 @@
 /* collide: 2D sweep-and-prune (shared body in sap.inc). */
-#define CD_BROAD_DIM 2
+#define CD_DIM 2
 #include "broad/sap.inc"

@@ -1,3 +1,3 @@
 /* collide: 3D sweep-and-prune (shared body in sap.inc). */
-#define CD_BROAD_DIM 3
+#define CD_DIM 3
 #include "broad/sap.inc"

@@ -5,15 +5,11 @@
 
 #include <string.h>
 
-#define CD_DIM(name) cd2##name
-#define CAST_VEC cd2Vec
-#define CAST_SHAPE cd2Shape
-#define CAST_SWEEP cd2Sweep
-#define CAST_TRANSFORM cd2Transform
-#define CAST_OUTPUT cd2CastOutput
+/* The dimension of cast.inc (base/dim.h: CD_DIM_NAME, CD_VEC, CD_SHAPE, CD_SWEEP,
+ * CD_TRANSFORM) and the most contact axes a pair of shapes can have. */
+#define CD_DIM 2
+#include "base/dim.h"
 #define CAST_MAX_AXES (2 + 2 * CD2_MAX_POLYGON_VERTICES)
-#define CAST_CORE cd2Core
-#define CAST_SIMPLEX cd2GjkSimplex
 
 static bool MakeCastCore(const cd2Shape* shape, cd2Core* core)
 {

@@ -6,15 +6,11 @@
 
 #include <string.h>
 
-#define CD_DIM(name) cd3##name
-#define CAST_VEC cd3Vec
-#define CAST_SHAPE cd3Shape
-#define CAST_SWEEP cd3Sweep
-#define CAST_TRANSFORM cd3Transform
-#define CAST_OUTPUT cd3CastOutput
+/* The dimension of cast.inc (base/dim.h: CD_DIM_NAME, CD_VEC, CD_SHAPE, CD_SWEEP,
+ * CD_TRANSFORM) and the most contact axes a pair of shapes can have. */
+#define CD_DIM 3
+#include "base/dim.h"
 #define CAST_MAX_AXES 8
-#define CAST_CORE cd3Core
-#define CAST_SIMPLEX cd3GjkSimplex
 
 /* Half-spaces have no core: their casts take the advancement. */
 static bool MakeCastCore(const cd3Shape* shape, cd3Core* core)

@@ -6,6 +6,7 @@
  * translation; zero-length rays never hit the non-solid segment; *hit is untouched on a miss. */
 #include "collide/query2.h"
 
+#define CD_DIM 2
 #include "query/raycast_common.h"
 #include "query/pairs2.h"
 
@@ -169,7 +170,7 @@ static cdSlabResult cd2RaycastLocalBox(cd2Vec lower, cd2Vec upper, cd2Vec origin
 	cdReal lo[2] = {lower.x, lower.y};
 	cdReal hi[2] = {upper.x, upper.y};
 	int axis = 0;
-	cdSlabResult result = cdRaycastSlabs(2, o, d, lo, hi, fraction, &axis);
+	cdSlabResult result = cd2RaycastSlabs(o, d, lo, hi, fraction, &axis);
 	if (result == CD_SLAB_HIT)
 	{
 		cdReal sign = d[axis] > CD_R(0.0) ? CD_R(-1.0) : CD_R(1.0);

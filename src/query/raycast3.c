@@ -12,6 +12,7 @@
 #include "collide/query3.h"
 
 #include "query/pairs3.h"
+#define CD_DIM 3
 #include "query/raycast_common.h"
 #include "query/wide3.h"
 
@@ -215,7 +216,7 @@ static cdSlabResult cd3RaycastLocalBox(cd3Vec lower, cd3Vec upper, cd3Vec origin
 	cdReal lo[3] = {lower.x, lower.y, lower.z};
 	cdReal hi[3] = {upper.x, upper.y, upper.z};
 	int axis = 0;
-	cdSlabResult result = cdRaycastSlabs(3, o, d, lo, hi, fraction, &axis);
+	cdSlabResult result = cd3RaycastSlabs(o, d, lo, hi, fraction, &axis);
 	if (result == CD_SLAB_HIT)
 	{
 		cdReal n[3] = {CD_R(0.0), CD_R(0.0), CD_R(0.0)};
