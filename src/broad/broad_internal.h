@@ -15,6 +15,8 @@
 
 #include "collide/broad.h"
 
+#include "base/radix_sort.h"
+
 #include <string.h>
 
 /* Debug operation counters (off unless built with -DCD_BROAD_COUNT_OPS): how many tree nodes
@@ -170,14 +172,6 @@ bool cdBroadReserve(void** array, int* capacity, int needed, size_t elementSize)
  * tree's nodes take 64 MB: with 4 KB pages nearly every node read at random also misses the TLB
  * and walks the page table. Call before the block is first written. */
 void cdBroadAdviseLarge(void* memory, size_t bytes);
-
-/* Sorts `count` keys ascending (LSD radix sort over the bits in use). `scratch` holds `count`
- * keys. The result may land in either buffer: the function returns the one that holds it. */
-uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count);
-
-/* The same, ordering by the bits from `lowestBit` up only (keys equal there keep their order;
- * below the radix-sort size the whole key is compared). */
-uint64_t* cdBroadSortKeysFrom(uint64_t* keys, uint64_t* scratch, int count, int lowestBit);
 
 /* Number of bits needed for values below `count` (at least 1). */
 int cdBroadBitsFor(int count);

@@ -1,4 +1,5 @@
-/* collide: broadphase pieces shared by 2D and 3D: type names, array growth, key sorting. */
+/* collide: broadphase pieces shared by 2D and 3D: type names, array growth. The key sort is the
+ * shared radix sort of src/base/radix_sort.c. */
 #if defined(__linux__) && !defined(_DEFAULT_SOURCE)
 #define _DEFAULT_SOURCE /* madvise */
 #endif
@@ -87,79 +88,4 @@ int cdBroadBitsFor(int count)
 		++bits;
 	}
 	return bits;
-}
-
-enum
-{
-	CD_RADIX_BITS = 11,
-	CD_RADIX_BUCKETS = 1 << CD_RADIX_BITS,
-	CD_INSERTION_SORT_LIMIT = 48
-};
-
-uint64_t* cdBroadSortKeys(uint64_t* keys, uint64_t* scratch, int count)
-{
-	return cdBroadSortKeysFrom(keys, scratch, count, 0);
-}
-
-uint64_t* cdBroadSortKeysFrom(uint64_t* keys, uint64_t* scratch, int count, int lowestBit)
-{
-	if (count < CD_INSERTION_SORT_LIMIT)
-	{
-		for (int i = 1; i < count; ++i)
-		{
-			uint64_t key = keys[i];
-			int j = i - 1;
-			while (j >= 0 && keys[j] > key)
-			{
-				keys[j + 1] = keys[j];
-				--j;
-			}
-			keys[j + 1] = key;
-		}
-		return keys;
-	}
-
-	uint64_t used = 0;
-	for (int i = 0; i < count; ++i)
-	{
-		used |= keys[i];
-	}
-	int bits = 0;
-	while (bits < 64 && (used >> bits) != 0)
-	{
-		++bits;
-	}
-
-	uint32_t histogram[CD_RADIX_BUCKETS];
-	uint64_t* from = keys;
-	uint64_t* to = scratch;
-	for (int shift = lowestBit; shift < bits; shift += CD_RADIX_BITS)
-	{
-		memset(histogram, 0, sizeof(histogram));
-		for (int i = 0; i < count; ++i)
-		{
-			++histogram[(from[i] >> shift) & (CD_RADIX_BUCKETS - 1)];
-		}
-		/* A digit all keys share would only copy the array. */
-		if (histogram[(from[0] >> shift) & (CD_RADIX_BUCKETS - 1)] == (uint32_t)count)
-		{
-			continue;
-		}
-		uint32_t offset = 0;
-		for (int b = 0; b < CD_RADIX_BUCKETS; ++b)
-		{
-			uint32_t n = histogram[b];
-			histogram[b] = offset;
-			offset += n;
-		}
-		for (int i = 0; i < count; ++i)
-		{
-			uint64_t key = from[i];
-			to[histogram[(key >> shift) & (CD_RADIX_BUCKETS - 1)]++] = key;
-		}
-		uint64_t* swap = from;
-		from = to;
-		to = swap;
-	}
-	return from;
 }
