@@ -20,6 +20,7 @@
  * Points are reported midway between the surfaces; the normal points from A to B. */
 #include "collide/manifold2.h"
 
+#include "pairs2.h"
 #include "sat2_separation.h"
 
 /* Cores apart by more than this many linear slops take the closest-feature path (and
@@ -953,6 +954,28 @@ static void InitShapeCore(Core* core, const cd2Shape* shape)
 cd2Manifold cd2Collide(const cd2Shape* a, const cd2Shape* b, cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
+	/* A pair with a typed function in the pair table (pairs2.h) calls it, in the table's (enum)
+	 * order; the CORE pairs (AABBs and boxes, which collide as polygons) take the cores below. */
+	{
+		bool flip = a->type > b->type;
+		const cd2Shape* first = flip ? b : a;
+		const cd2Shape* second = flip ? a : b;
+		switch (CD2_PAIR_KEY(first->type, second->type))
+		{
+#define CD2_COLLIDE_TYPED_CASE(A, B, Collide)                                                                \
+	case CD2_PAIR_KEY(CD2_TYPE_##A, CD2_TYPE_##B):                                                         \
+	{                                                                                                      \
+		cd2Manifold typed = Collide(CD2_SHAPE_ARG(A, first), CD2_SHAPE_ARG(B, second), speculativeDistance); \
+		return flip ? Flipped(typed) : typed;                                                              \
+	}
+#define CD2_COLLIDE_CASE(A, B, Overlap, Distance, Collide) CD_PAIR_TYPED(Collide, CD2_COLLIDE_TYPED_CASE)(A, B, Collide)
+			CD2_PAIR_TABLE(CD2_COLLIDE_CASE)
+#undef CD2_COLLIDE_CASE
+#undef CD2_COLLIDE_TYPED_CASE
+			default:
+				break;
+		}
+	}
 	bool swap = CanonicalRank(a->type) > CanonicalRank(b->type);
 	if (swap)
 	{

@@ -22,6 +22,8 @@
 #ifndef COLLIDE_PAIRS2_H
 #define COLLIDE_PAIRS2_H
 
+#include "pair_table.h"
+
 #define CD2_SHAPE_TABLE(X)                                                                                   \
 	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle)                                   \
 	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule)                               \

@@ -23,6 +23,8 @@
 #ifndef COLLIDE_PAIRS3_H
 #define COLLIDE_PAIRS3_H
 
+#include "pair_table.h"
+
 #define CD3_SHAPE_TABLE(X)                                                                                   \
 	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere)                                   \
 	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule)                               \

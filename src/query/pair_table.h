@@ -1,0 +1,28 @@
+/* collide: helpers for expanding the pair tables (pairs2.h, pairs3.h; internal).
+ *
+ * A Collide column names either a typed pair function or CORE (only the generic cd2Collide /
+ * cd3Collide handles the pair). CD_PAIR_TYPED(Collide, MACRO) expands to MACRO for a typed pair
+ * and to CD_PAIR_SKIP (which swallows its arguments) for CORE, so a row macro can write
+ *
+ *     CD_PAIR_TYPED(Collide, MY_TYPED_CASE)(A, B, Collide)
+ *
+ * and never mentions CORE as a function. (The test pastes the column to CD_PAIR_PROBE_: only
+ * CD_PAIR_PROBE_CORE is a macro, and it adds an argument.) */
+#ifndef COLLIDE_PAIR_TABLE_H
+#define COLLIDE_PAIR_TABLE_H
+
+#define CD_PAIR_CAT(a, b) CD_PAIR_CAT_I(a, b)
+#define CD_PAIR_CAT_I(a, b) a##b
+#define CD_PAIR_SECOND(a, b, ...) b
+#define CD_PAIR_SECOND_I(...) CD_PAIR_SECOND(__VA_ARGS__)
+#define CD_PAIR_PROBE_CORE ~, 1
+
+/* 1 when column is CORE, else 0. */
+#define CD_PAIR_IS_CORE(column) CD_PAIR_SECOND_I(CD_PAIR_CAT(CD_PAIR_PROBE_, column), 0, ~)
+
+#define CD_PAIR_SKIP(...)
+#define CD_PAIR_SELECT_0(macro) macro
+#define CD_PAIR_SELECT_1(macro) CD_PAIR_SKIP
+#define CD_PAIR_TYPED(column, macro) CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_IS_CORE(column))(macro)
+
+#endif
