@@ -20,6 +20,7 @@
 #include "collide/manifold3.h"
 
 #include "epa3.h"
+#include "pairs3.h"
 #include "sat3.h"
 #include "sat3_box.h"
 #include "sat3_support.h"
@@ -1954,6 +1955,30 @@ static void InitPolytope(cd3Polytope* p, const cd3Shape* s)
 cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
+	/* A pair with a typed function in the pair tables (pairs3.h) calls it, in the tables' (enum)
+	 * order; the CORE pairs (an AABB collides as a box) take the polytopes below, and the NONE
+	 * pairs (planes, segments) have no manifold. */
+	{
+		bool flip = a->type > b->type;
+		const cd3Shape* first = flip ? b : a;
+		const cd3Shape* second = flip ? a : b;
+		switch (CD3_PAIR_KEY(first->type, second->type))
+		{
+#define CD3_COLLIDE_TYPED_CASE(A, B, Collide)                                                                \
+	case CD3_PAIR_KEY(CD3_TYPE_##A, CD3_TYPE_##B):                                                         \
+	{                                                                                                      \
+		cd3Manifold typed = Collide(CD3_SHAPE_ARG(A, first), CD3_SHAPE_ARG(B, second), speculativeDistance); \
+		return flip ? Flipped(typed) : typed;                                                              \
+	}
+#define CD3_COLLIDE_CASE(A, B, Overlap, Distance, Collide) CD_PAIR_TYPED(Collide, CD3_COLLIDE_TYPED_CASE)(A, B, Collide)
+			CD3_PAIR_TABLE(CD3_COLLIDE_CASE)
+			CD3_HULL_PAIR_TABLE(CD3_COLLIDE_CASE)
+#undef CD3_COLLIDE_CASE
+#undef CD3_COLLIDE_TYPED_CASE
+			default:
+				break;
+		}
+	}
 	int rankA = Rank(a->type), rankB = Rank(b->type);
 	if (rankA < 0 || rankB < 0)
 	{

@@ -1,13 +1,14 @@
 /* collide: helpers for expanding the pair tables (pairs2.h, pairs3.h; internal).
  *
- * A Collide column names either a typed pair function or CORE (only the generic cd2Collide /
- * cd3Collide handles the pair). CD_PAIR_TYPED(Collide, MACRO) expands to MACRO for a typed pair
- * and to CD_PAIR_SKIP (which swallows its arguments) for CORE, so a row macro can write
+ * A Collide column names either a typed pair function, CORE (only the generic cd2Collide /
+ * cd3Collide handles the pair) or NONE (no manifold). CD_PAIR_TYPED(Collide, MACRO) expands to
+ * MACRO for a typed pair and to CD_PAIR_SKIP (which swallows its arguments) for CORE and NONE,
+ * so a row macro can write
  *
  *     CD_PAIR_TYPED(Collide, MY_TYPED_CASE)(A, B, Collide)
  *
- * and never mentions CORE as a function. (The test pastes the column to CD_PAIR_PROBE_: only
- * CD_PAIR_PROBE_CORE is a macro, and it adds an argument.) */
+ * and never calls CORE or NONE as a function. (The test pastes the column to CD_PAIR_PROBE_: only
+ * CD_PAIR_PROBE_CORE and CD_PAIR_PROBE_NONE are macros, and they add an argument.) */
 #ifndef COLLIDE_PAIR_TABLE_H
 #define COLLIDE_PAIR_TABLE_H
 
@@ -16,13 +17,14 @@
 #define CD_PAIR_SECOND(a, b, ...) b
 #define CD_PAIR_SECOND_I(...) CD_PAIR_SECOND(__VA_ARGS__)
 #define CD_PAIR_PROBE_CORE ~, 1
+#define CD_PAIR_PROBE_NONE ~, 1
 
-/* 1 when column is CORE, else 0. */
-#define CD_PAIR_IS_CORE(column) CD_PAIR_SECOND_I(CD_PAIR_CAT(CD_PAIR_PROBE_, column), 0, ~)
+/* 1 when column is CORE or NONE, 0 when it names a typed function. */
+#define CD_PAIR_IS_UNTYPED(column) CD_PAIR_SECOND_I(CD_PAIR_CAT(CD_PAIR_PROBE_, column), 0, ~)
 
 #define CD_PAIR_SKIP(...)
 #define CD_PAIR_SELECT_0(macro) macro
 #define CD_PAIR_SELECT_1(macro) CD_PAIR_SKIP
-#define CD_PAIR_TYPED(column, macro) CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_IS_CORE(column))(macro)
+#define CD_PAIR_TYPED(column, macro) CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_IS_UNTYPED(column))(macro)
 
 #endif
