@@ -171,7 +171,7 @@ static int g_shapeRows[CD2_SHAPE_TYPE_COUNT];
 
 static void TestPairTables(void)
 {
-#define COUNT_SHAPE(Name, PointIn, ClosestPointOn, Raycast) ++g_shapeRows[CD2_TYPE_##Name];
+#define COUNT_SHAPE(Name, PointIn, ClosestPointOn, Raycast, ...) ++g_shapeRows[CD2_TYPE_##Name];
 	CD2_SHAPE_TABLE(COUNT_SHAPE)
 #undef COUNT_SHAPE
 #define COUNT_PAIR(A, B, Overlap, Distance, Collide) ++g_pairRows[CD2_TYPE_##A][CD2_TYPE_##B];

@@ -190,7 +190,7 @@ static int g_shapeRows[CD3_SHAPE_TYPE_COUNT];
 
 static void TestPairTables(void)
 {
-#define COUNT_SHAPE(Name, PointIn, ClosestPointOn, Raycast) ++g_shapeRows[CD3_TYPE_##Name];
+#define COUNT_SHAPE(Name, PointIn, ClosestPointOn, Raycast, ...) ++g_shapeRows[CD3_TYPE_##Name];
 	CD3_SHAPE_TABLE(COUNT_SHAPE)
 #undef COUNT_SHAPE
 #define COUNT_PAIR(A, B, Overlap, Distance, Collide) ++g_pairRows[CD3_TYPE_##A][CD3_TYPE_##B];

@@ -3,6 +3,8 @@
  * circular sectors at the corners. Everything is accumulated in double. */
 #include "collide/geometry2.h"
 
+#include "query/pairs2.h"
+
 #define MASS_PI 3.14159265358979323846
 
 /* Mass, first moment and polar second moment about a reference point, summed over pieces. */
@@ -166,28 +168,33 @@ cd2MassData cd2ComputePolygonMass(const cd2Polygon* polygon, cdReal density)
 	return Finish(&m, refX, refY);
 }
 
+/* A segment has no area: zero mass at its midpoint (the shape table's ComputeMass for Segment). */
+static cd2MassData SegmentMass(cd2Segment segment, cdReal density)
+{
+	(void)density;
+	cd2MassData none;
+	none.mass = CD_R(0.0);
+	none.center = cd2Lerp(segment.p1, segment.p2, CD_R(0.5));
+	none.rotationalInertia = CD_R(0.0);
+	return none;
+}
+
 cd2MassData cd2ComputeShapeMass(const cd2Shape* shape, cdReal density)
 {
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			return cd2ComputeCircleMass(shape->circle, density);
-		case CD2_SHAPE_CAPSULE:
-			return cd2ComputeCapsuleMass(shape->capsule, density);
-		case CD2_SHAPE_AABB:
-			return cd2ComputeAabbMass(shape->aabb, density);
-		case CD2_SHAPE_BOX:
-			return cd2ComputeBoxMass(shape->box, density);
-		case CD2_SHAPE_POLYGON:
-			return cd2ComputePolygonMass(&shape->polygon, density);
-		default:
+#define CD2_MASS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass)  \
+	case CD2_TYPE_##Name:                                                                                  \
+		return ComputeMass(CD2_SHAPE_ARG(Name, shape), density);
+		CD2_SHAPE_TABLE(CD2_MASS_CASE)
+#undef CD2_MASS_CASE
+		case CD2_SHAPE_TYPE_COUNT:
 			break;
 	}
 	cd2MassData none;
 	none.mass = CD_R(0.0);
-	none.center = shape->type == CD2_SHAPE_SEGMENT ? cd2Lerp(shape->segment.p1, shape->segment.p2, CD_R(0.5))
-												   : cd2MakeVec(CD_R(0.0), CD_R(0.0));
+	none.center = cd2MakeVec(CD_R(0.0), CD_R(0.0));
 	none.rotationalInertia = CD_R(0.0);
 	return none;
 }

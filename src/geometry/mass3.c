@@ -3,6 +3,8 @@
  * derivations, our own arrangement). Everything is accumulated in double. */
 #include "collide/geometry3.h"
 
+#include "query/pairs3.h"
+
 /* A symmetric tensor in double, rows. */
 typedef struct DMat
 {
@@ -218,29 +220,37 @@ cd3MassData cd3ComputeHullMass(cd3HullShape shape, cdReal density)
 	return data;
 }
 
+/* Shapes without volume (the shape table's ComputeMass for them): zero mass at the centroid. */
+static cd3MassData TriangleMass(cd3Triangle t, cdReal density)
+{
+	(void)density;
+	return Zero(cd3Scale(CD_R(1.0) / CD_R(3.0), cd3Add(t.a, cd3Add(t.b, t.c))));
+}
+
+static cd3MassData SegmentMass(cd3Segment segment, cdReal density)
+{
+	(void)density;
+	return Zero(cd3Lerp(segment.p1, segment.p2, CD_R(0.5)));
+}
+
+/* A half-space has no finite mass nor centroid: zero mass at the origin. */
+static cd3MassData PlaneMass(cd3Plane plane, cdReal density)
+{
+	(void)plane;
+	(void)density;
+	return Zero(CD3_VEC_ZERO);
+}
+
 cd3MassData cd3ComputeShapeMass(const cd3Shape* shape, cdReal density)
 {
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return cd3ComputeSphereMass(shape->sphere, density);
-		case CD3_SHAPE_CAPSULE:
-			return cd3ComputeCapsuleMass(shape->capsule, density);
-		case CD3_SHAPE_AABB:
-			return cd3ComputeAabbMass(shape->aabb, density);
-		case CD3_SHAPE_BOX:
-			return cd3ComputeBoxMass(shape->box, density);
-		case CD3_SHAPE_HULL:
-			return cd3ComputeHullMass(shape->hull, density);
-		case CD3_SHAPE_TRIANGLE:
-		{
-			cd3Triangle t = shape->triangle;
-			return Zero(cd3Scale(CD_R(1.0) / CD_R(3.0), cd3Add(t.a, cd3Add(t.b, t.c))));
-		}
-		case CD3_SHAPE_SEGMENT:
-			return Zero(cd3Lerp(shape->segment.p1, shape->segment.p2, CD_R(0.5)));
-		case CD3_SHAPE_PLANE:
+#define CD3_MASS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass)  \
+	case CD3_TYPE_##Name:                                                                                  \
+		return ComputeMass(CD3_SHAPE_ARG(Name, shape), density);
+		CD3_SHAPE_TABLE(CD3_MASS_CASE)
+#undef CD3_MASS_CASE
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}

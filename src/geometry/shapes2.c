@@ -1,22 +1,17 @@
 /* collide: 2D shapes: type names, tagged-shape constructors, validators and bounds. */
 #include "collide/geometry2.h"
 
+#include "query/pairs2.h"
+
 const char* cd2GetShapeTypeName(cd2ShapeType type)
 {
 	switch (type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			return "circle";
-		case CD2_SHAPE_CAPSULE:
-			return "capsule";
-		case CD2_SHAPE_AABB:
-			return "aabb";
-		case CD2_SHAPE_BOX:
-			return "box";
-		case CD2_SHAPE_POLYGON:
-			return "polygon";
-		case CD2_SHAPE_SEGMENT:
-			return "segment";
+#define CD2_TYPE_NAME_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, ...)                             \
+	case CD2_TYPE_##Name:                                                                                  \
+		return TypeName;
+		CD2_SHAPE_TABLE(CD2_TYPE_NAME_CASE)
+#undef CD2_TYPE_NAME_CASE
 		case CD2_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -277,18 +272,11 @@ cdResult cd2ValidateShape(const cd2Shape* shape)
 	}
 	switch (shape->type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			return ValidateCircle(shape->circle);
-		case CD2_SHAPE_CAPSULE:
-			return ValidateCapsule(shape->capsule);
-		case CD2_SHAPE_AABB:
-			return ValidateAabb(shape->aabb);
-		case CD2_SHAPE_BOX:
-			return ValidateBox(shape->box);
-		case CD2_SHAPE_POLYGON:
-			return ValidatePolygon(&shape->polygon);
-		case CD2_SHAPE_SEGMENT:
-			return ValidateSegment(shape->segment);
+#define CD2_VALIDATE_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ...)                   \
+	case CD2_TYPE_##Name:                                                                                  \
+		return Validate(CD2_SHAPE_ARG(Name, shape));
+		CD2_SHAPE_TABLE(CD2_VALIDATE_CASE)
+#undef CD2_VALIDATE_CASE
 		case CD2_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -343,23 +331,22 @@ cd2Aabb cd2ComputeSegmentAabb(cd2Segment segment)
 	return aabb;
 }
 
+/* An AABB shape is its own bounds (the shape table's ComputeAabb for Aabb). */
+static cd2Aabb AabbOfAabb(cd2Aabb aabb)
+{
+	return aabb;
+}
+
 cd2Aabb cd2ComputeShapeAabb(const cd2Shape* shape)
 {
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			return cd2ComputeCircleAabb(shape->circle);
-		case CD2_SHAPE_CAPSULE:
-			return cd2ComputeCapsuleAabb(shape->capsule);
-		case CD2_SHAPE_AABB:
-			return shape->aabb;
-		case CD2_SHAPE_BOX:
-			return cd2ComputeBoxAabb(shape->box);
-		case CD2_SHAPE_POLYGON:
-			return cd2ComputePolygonAabb(&shape->polygon);
-		case CD2_SHAPE_SEGMENT:
-			return cd2ComputeSegmentAabb(shape->segment);
+#define CD2_AABB_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ...)          \
+	case CD2_TYPE_##Name:                                                                                  \
+		return ComputeAabb(CD2_SHAPE_ARG(Name, shape));
+		CD2_SHAPE_TABLE(CD2_AABB_CASE)
+#undef CD2_AABB_CASE
 		case CD2_SHAPE_TYPE_COUNT:
 			break;
 	}

@@ -1,26 +1,17 @@
 /* collide: 3D shapes: type names, tagged-shape makers, validators and bounds. */
 #include "collide/geometry3.h"
 
+#include "query/pairs3.h"
+
 const char* cd3GetShapeTypeName(cd3ShapeType type)
 {
 	switch (type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return "sphere";
-		case CD3_SHAPE_CAPSULE:
-			return "capsule";
-		case CD3_SHAPE_AABB:
-			return "aabb";
-		case CD3_SHAPE_BOX:
-			return "box";
-		case CD3_SHAPE_TRIANGLE:
-			return "triangle";
-		case CD3_SHAPE_PLANE:
-			return "plane";
-		case CD3_SHAPE_SEGMENT:
-			return "segment";
-		case CD3_SHAPE_HULL:
-			return "hull";
+#define CD3_TYPE_NAME_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, ...)                             \
+	case CD3_TYPE_##Name:                                                                                  \
+		return TypeName;
+		CD3_SHAPE_TABLE(CD3_TYPE_NAME_CASE)
+#undef CD3_TYPE_NAME_CASE
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -275,22 +266,11 @@ cdResult cd3ValidateShape(const cd3Shape* shape)
 	}
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return ValidateSphere(shape->sphere);
-		case CD3_SHAPE_CAPSULE:
-			return ValidateCapsule(shape->capsule);
-		case CD3_SHAPE_AABB:
-			return ValidateAabb(shape->aabb);
-		case CD3_SHAPE_BOX:
-			return ValidateBox(shape->box);
-		case CD3_SHAPE_TRIANGLE:
-			return ValidateTriangle(shape->triangle);
-		case CD3_SHAPE_PLANE:
-			return ValidatePlane(shape->plane);
-		case CD3_SHAPE_SEGMENT:
-			return ValidateSegment(shape->segment);
-		case CD3_SHAPE_HULL:
-			return ValidateHullShape(shape->hull);
+#define CD3_VALIDATE_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ...)                   \
+	case CD3_TYPE_##Name:                                                                                  \
+		return Validate(CD3_SHAPE_ARG(Name, shape));
+		CD3_SHAPE_TABLE(CD3_VALIDATE_CASE)
+#undef CD3_VALIDATE_CASE
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}
@@ -395,27 +375,22 @@ cd3Aabb cd3ComputeHullShapeAabb(cd3HullShape hull)
 	return aabb;
 }
 
+/* An AABB shape is its own bounds (the shape table's ComputeAabb for Aabb). */
+static cd3Aabb AabbOfAabb(cd3Aabb aabb)
+{
+	return aabb;
+}
+
 cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape)
 {
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			return cd3ComputeSphereAabb(shape->sphere);
-		case CD3_SHAPE_CAPSULE:
-			return cd3ComputeCapsuleAabb(shape->capsule);
-		case CD3_SHAPE_AABB:
-			return shape->aabb;
-		case CD3_SHAPE_BOX:
-			return cd3ComputeBoxAabb(shape->box);
-		case CD3_SHAPE_TRIANGLE:
-			return cd3ComputeTriangleAabb(shape->triangle);
-		case CD3_SHAPE_PLANE:
-			return cd3ComputePlaneAabb(shape->plane);
-		case CD3_SHAPE_SEGMENT:
-			return cd3ComputeSegmentAabb(shape->segment);
-		case CD3_SHAPE_HULL:
-			return cd3ComputeHullShapeAabb(shape->hull);
+#define CD3_AABB_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ...)          \
+	case CD3_TYPE_##Name:                                                                                  \
+		return ComputeAabb(CD3_SHAPE_ARG(Name, shape));
+		CD3_SHAPE_TABLE(CD3_AABB_CASE)
+#undef CD3_AABB_CASE
 		case CD3_SHAPE_TYPE_COUNT:
 			break;
 	}

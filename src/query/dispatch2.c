@@ -45,7 +45,7 @@ bool cd2PointInShape(const cd2Shape* shape, cd2Vec p)
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-#define CD2_POINT_IN_CASE(Name, PointIn, ClosestPointOn, Raycast)                                          \
+#define CD2_POINT_IN_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                       \
 	case CD2_TYPE_##Name:                                                                                  \
 		return PointIn(p, CD2_SHAPE_ARG(Name, shape));
 		CD2_SHAPE_TABLE(CD2_POINT_IN_CASE)
@@ -62,7 +62,7 @@ cd2Vec cd2ClosestPointOnShape(const cd2Shape* shape, cd2Vec p)
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-#define CD2_CLOSEST_CASE(Name, PointIn, ClosestPointOn, Raycast)                                           \
+#define CD2_CLOSEST_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                        \
 	case CD2_TYPE_##Name:                                                                                  \
 		return ClosestPointOn(CD2_SHAPE_ARG(Name, shape), p);
 		CD2_SHAPE_TABLE(CD2_CLOSEST_CASE)

@@ -7,10 +7,15 @@
  * Per shape, besides its table row: CD2_TYPE_<Name> (its cd2ShapeType) and CD2_ARG_OF_<Name>(s)
  * (how its functions take it from a const cd2Shape* s: the union member by value or by pointer).
  *
- * CD2_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast)
+ * CD2_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb,
+ *                       ComputeMass)
  *   Name     the shape's name in function names (Circle);
  *   PointIn  the containment test, called PointIn(p, shape) (a shape with no inside names the
- *            dispatcher's tolerance test); ClosestPointOn(shape, p); Raycast(shape, ray, hit).
+ *            dispatcher's tolerance test); ClosestPointOn(shape, p); Raycast(shape, ray, hit);
+ *   TypeName the string of cd2GetShapeTypeName; Validate(shape) its cdResult check (static in
+ *            geometry/shapes2.c); ComputeAabb(shape) its bounds (geometry/shapes2.c);
+ *            ComputeMass(shape, density) its mass (geometry/mass2.c; zero mass for a segment).
+ *   A column is expanded only in the file that holds its functions, so static helpers are fine.
  *
  * CD2_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
  *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b));
@@ -25,12 +30,18 @@
 #include "pair_table.h"
 
 #define CD2_SHAPE_TABLE(X)                                                                                   \
-	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle)                                   \
-	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule)                               \
-	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb)                                           \
-	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox)                                               \
-	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon)                               \
-	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment)
+	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle,                                   \
+	  "circle", ValidateCircle, cd2ComputeCircleAabb, cd2ComputeCircleMass)                                  \
+	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule,                               \
+	  "capsule", ValidateCapsule, cd2ComputeCapsuleAabb, cd2ComputeCapsuleMass)                              \
+	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb,                                           \
+	  "aabb", ValidateAabb, AabbOfAabb, cd2ComputeAabbMass)                                                  \
+	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox,                                               \
+	  "box", ValidateBox, cd2ComputeBoxAabb, cd2ComputeBoxMass)                                              \
+	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon,                               \
+	  "polygon", ValidatePolygon, cd2ComputePolygonAabb, cd2ComputePolygonMass)                              \
+	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment,                                 \
+	  "segment", ValidateSegment, cd2ComputeSegmentAabb, SegmentMass)
 
 #define CD2_PAIR_TABLE(X)                                                                                    \
 	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                                   \

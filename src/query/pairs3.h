@@ -8,9 +8,14 @@
  * Per shape, besides its table row: CD3_TYPE_<Name> (its cd3ShapeType) and CD3_ARG_OF_<Name>(s)
  * (how its functions take it from a const cd3Shape* s: the union member).
  *
- * CD3_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast)
+ * CD3_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb,
+ *                       ComputeMass)
  *   PointIn(p, shape) (a shape with no inside names the dispatcher's tolerance test),
- *   ClosestPointOn(shape, p), Raycast(shape, ray, hit).
+ *   ClosestPointOn(shape, p), Raycast(shape, ray, hit); TypeName the string of
+ *   cd3GetShapeTypeName; Validate(shape) (static in geometry/shapes3.c), ComputeAabb(shape)
+ *   (geometry/shapes3.c), ComputeMass(shape, density) (geometry/mass3.c; zero mass at the
+ *   centroid for shapes without volume). A column is expanded only in the file that holds its
+ *   functions, so static helpers are fine.
  *
  * CD3_PAIR_TABLE(X) and CD3_HULL_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
  *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b)); GJK for the hull pairs
@@ -26,14 +31,22 @@
 #include "pair_table.h"
 
 #define CD3_SHAPE_TABLE(X)                                                                                   \
-	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere)                                   \
-	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule)                               \
-	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb)                                           \
-	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox)                                               \
-	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle)                             \
-	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane)                                       \
-	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment)                                 \
-	X(Hull, cd3PointInHull, cd3ClosestPointOnHull, cd3RaycastHull)
+	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere,                                   \
+	  "sphere", ValidateSphere, cd3ComputeSphereAabb, cd3ComputeSphereMass)                                  \
+	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule,                               \
+	  "capsule", ValidateCapsule, cd3ComputeCapsuleAabb, cd3ComputeCapsuleMass)                              \
+	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb,                                           \
+	  "aabb", ValidateAabb, AabbOfAabb, cd3ComputeAabbMass)                                                  \
+	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox,                                               \
+	  "box", ValidateBox, cd3ComputeBoxAabb, cd3ComputeBoxMass)                                              \
+	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle,                             \
+	  "triangle", ValidateTriangle, cd3ComputeTriangleAabb, TriangleMass)                                    \
+	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane,                                       \
+	  "plane", ValidatePlane, cd3ComputePlaneAabb, PlaneMass)                                                \
+	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment,                                 \
+	  "segment", ValidateSegment, cd3ComputeSegmentAabb, SegmentMass)                                        \
+	X(Hull, cd3PointInHull, cd3ClosestPointOnHull, cd3RaycastHull,                                           \
+	  "hull", ValidateHullShape, cd3ComputeHullShapeAabb, cd3ComputeHullMass)
 
 #define CD3_PAIR_TABLE(X)                                                                                    \
 	X(Sphere, Sphere, cd3OverlapSphereSphere, GJK, cd3CollideSphereSphere)                                   \
