@@ -22,6 +22,8 @@ collide_missing_packages() {
 		for peer in libbullet-dev libfcl-dev libbox2d-dev libccd-dev libqhull-dev; do
 			dpkg -s "$peer" >/dev/null 2>&1 || missing+=("$peer")
 		done
+		# The 2D world benchmark's Chipmunk column (bench/world2).
+		dpkg -s libchipmunk-dev >/dev/null 2>&1 || missing+=(libchipmunk-dev)
 	fi
 	echo "${missing[@]:-}"
 }

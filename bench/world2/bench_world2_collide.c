@@ -1,0 +1,74 @@
+/* The collide column: the scenes of scenes/world2_scenes.c in a collide world with its defaults
+ * (b2-like soft step), workerCount workers. */
+#include "bench_world2.h"
+
+#include "world2_scenes.h"
+
+#include <stdlib.h>
+
+static bool collideSupports(World2SceneId scene)
+{
+	return scene < WORLD2_SCENE_COUNT;
+}
+
+static void* collideCreate(World2SceneId id, int workerCount)
+{
+	World2Scene* scene = (World2Scene*)malloc(sizeof(World2Scene));
+	if (scene == NULL)
+	{
+		return NULL;
+	}
+	if (!world2SceneCreate(scene, id, workerCount))
+	{
+		free(scene);
+		return NULL;
+	}
+	return scene;
+}
+
+static void collideStep(void* world, World2SceneId id, int stepIndex, float timeStep, int subStepCount)
+{
+	(void)id;
+	(void)timeStep;
+	(void)subStepCount; /* the scene's own (world2_quality.h), the same figures */
+	world2SceneStep((World2Scene*)world, stepIndex);
+}
+
+static bool collideSnapshot(void* world, World2Snapshot* out)
+{
+	return world2SceneSnapshot((const World2Scene*)world, out);
+}
+
+static void collideCounts(void* world, int* bodyCount, int* contactCount)
+{
+	cd2Counters c = cd2World_GetCounters(((World2Scene*)world)->world);
+	*bodyCount = c.bodyCount;
+	*contactCount = c.contactCount;
+}
+
+static void collideDestroy(void* world)
+{
+	world2SceneDestroy((World2Scene*)world);
+	free(world);
+}
+
+static World2Quality collideQuality(void* world, World2SceneId id, const World2Snapshot* start,
+									const World2Snapshot* end, double time)
+{
+	(void)id;
+	return world2SceneQuality((const World2Scene*)world, start, end, time);
+}
+
+const World2Engine world2EngineCollide = {
+	"collide",
+	"collide's 2D world (defaults of cd2DefaultWorldDef), 4 sub-steps, scenes/world2_scenes.c; workerCount is "
+	"passed to cd2CreateWorld, which runs one thread today (its 2w figures are a second 1-thread measurement)",
+	2,
+	collideSupports,
+	collideCreate,
+	collideStep,
+	collideSnapshot,
+	collideCounts,
+	collideDestroy,
+	collideQuality,
+};
