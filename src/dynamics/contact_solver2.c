@@ -97,7 +97,7 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 void cd2WarmStartContacts(cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
@@ -134,7 +134,7 @@ void cd2SolveContacts(cd2StepContext* context, bool useBias)
 	cd2SolverBody scratchA, scratchB;
 	cdReal inv_h = context->inv_h;
 	cdReal maxPush = context->contactPushMaxVelocity;
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);

@@ -153,8 +153,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* The awake bodies, dense. */
 	int bodyCapacity = world->bodies.count;
+	/* One more: the zero body the wide contact solver points immovable bodies at. */
 	context.bodies =
-		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
+		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2SolverBody));
 	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL))
 	{
@@ -182,6 +183,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		s->deltaRotation = CD2_ROT_IDENTITY;
 		s->invMass = body->invMass;
 		s->invInertia = body->invInertia;
+	}
+
+	{
+		cd2SolverBody* zero = context.bodies + context.bodyCount;
+		memset(zero, 0, sizeof(*zero));
+		zero->deltaRotation = CD2_ROT_IDENTITY;
 	}
 
 	/* Touching contacts with an awake body. */
@@ -230,7 +237,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 				for (int i = 0; i < n; ++i)
 				{
 					context.constraints[i].contact = contacts[order[i]];
+					bodyA[i] = colors[order[i]];
 				}
+				context.colorOfConstraint = bodyA;
 			}
 		}
 	}
@@ -252,18 +261,28 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 
 	cd2PrepareContacts(world, &context);
+	if (!cd2PrepareContactsWide(world, &context))
+	{
+		/* Out of scratch memory: every constraint one by one. */
+		context.wideCount = 0;
+		context.overflowStart = 0;
+	}
 	cd2PrepareJoints(world, &context);
 	for (int step = 0; step < subStepCount; ++step)
 	{
 		cd2IntegrateVelocities(world, &context);
 		cd2WarmStartJoints(world, &context);
+		cd2WarmStartContactsWide(&context);
 		cd2WarmStartContacts(&context);
 		cd2SolveJoints(world, &context, true);
+		cd2SolveContactsWide(&context, true);
 		cd2SolveContacts(&context, true);
 		cd2IntegratePositions(&context);
 		cd2SolveJoints(world, &context, false);
+		cd2SolveContactsWide(&context, false);
 		cd2SolveContacts(&context, false);
 	}
+	cd2StoreContactsWide(&context);
 	cd2ApplyRestitution(&context);
 	cd2StoreImpulses(world, &context);
 	cd2StoreJointReactions(world, &context);

@@ -6,6 +6,7 @@
 #include "collide/world2.h"
 
 #include "../base/container.h"
+#include "wide2.h"
 
 #define CD2_NULL_INDEX (-1)
 
@@ -200,6 +201,27 @@ typedef struct cd2ContactConstraint
 	cd2ContactConstraintPoint points[2];
 } cd2ContactConstraint;
 
+/* Up to CD_W contact constraints of one colour side by side (no two share a movable body), one per
+ * lane; empty lanes have zero masses and point at the zero body. */
+typedef struct cd2ContactPointWide
+{
+	cdW anchorAx, anchorAy, anchorBx, anchorBy;
+	cdW baseSeparation, relativeVelocity;
+	cdW normalImpulse, tangentImpulse, maxNormalImpulse;
+	cdW normalMass, tangentMass;
+} cd2ContactPointWide;
+
+typedef struct cd2ContactConstraintWide
+{
+	cdW invMassA, invIA, invMassB, invIB;
+	cdW normalX, normalY;
+	cdW friction, tangentSpeed, rollingResistance, rollingMass, rollingImpulse;
+	cdW biasRate, massScale, impulseScale;
+	cd2ContactPointWide points[2];
+	int indexA[CD_W], indexB[CD_W]; /* solver bodies; the zero body (index bodyCount) when immovable */
+	int constraint[CD_W];			/* index in the constraint array, -1 for an empty lane */
+} cd2ContactConstraintWide;
+
 typedef struct cd2StepContext
 {
 	cdReal dt, inv_dt, h, inv_h;
@@ -211,6 +233,12 @@ typedef struct cd2StepContext
 	int bodyCount;
 	cd2ContactConstraint* constraints;
 	int constraintCount;
+	/* The coloured constraints in wide blocks, colour by colour; the constraints from
+	 * overflowStart on (the overflow colour) are solved one by one after them. */
+	cd2ContactConstraintWide* wide;
+	int wideCount;
+	int overflowStart;
+	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
 	bool enableWarmStarting;
@@ -310,6 +338,10 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context);
 void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
+bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
+void cd2WarmStartContactsWide(cd2StepContext* context);
+void cd2SolveContactsWide(cd2StepContext* context, bool useBias);
+void cd2StoreContactsWide(cd2StepContext* context);
 void cd2StoreImpulses(cd2World* world, cd2StepContext* context);
 
 /* ---- solver2.c ------------------------------------------------------------------------------- */
