@@ -191,7 +191,32 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		zero->deltaRotation = CD2_ROT_IDENTITY;
 	}
 
-	/* Touching contacts with an awake body. */
+	/* Per world body: its solver index, and the same for dynamic bodies only (the colouring's;
+	 * kinematic bodies are immovable for the solver and take no colour). Small arrays, so that
+	 * the contact loops below do not visit the bodies. */
+	int* solverOf = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	int* colorBodyOf = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	context.accelerations = (cd2Vec*)cdArena_Alloc(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
+	if (bodyCapacity > 0 && (solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	for (int i = 0; i < world->bodies.count; ++i)
+	{
+		const cd2Body* body = world->bodies.data + i;
+		solverOf[i] = body->solverIndex;
+		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? body->solverIndex : CD2_NULL_INDEX;
+		if (body->solverIndex >= 0)
+		{
+			context.accelerations[body->solverIndex] =
+				body->invMass > CD_R(0.0)
+					? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
+					: CD2_VEC_ZERO;
+		}
+	}
+
+	/* Touching contacts with an awake body, prepared in index order. */
 	int contactCapacity = world->contacts.count;
 	context.constraints = (cd2ContactConstraint*)cdArena_Alloc(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
@@ -204,13 +229,17 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		{
 			continue;
 		}
-		if (world->bodies.data[contact->bodyA].solverIndex < 0 &&
-			world->bodies.data[contact->bodyB].solverIndex < 0)
+		int indexA = solverOf[contact->bodyA], indexB = solverOf[contact->bodyB];
+		if (indexA < 0 && indexB < 0)
 		{
 			continue;
 		}
-		context.constraints[context.constraintCount++].contact = i;
+		cd2ContactConstraint* c = context.constraints + context.constraintCount++;
+		c->contact = i;
+		c->indexA = indexA;
+		c->indexB = indexB;
 	}
+	cd2PrepareContacts(world, &context);
 	/* Colour order (see graph_color.h). */
 	if (context.constraintCount > 1)
 	{
@@ -219,26 +248,24 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		int* bodyB = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
 		int* colors = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
 		int* order = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* contacts = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && contacts != NULL)
+		cd2ContactConstraint* sorted =
+			(cd2ContactConstraint*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
+		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && sorted != NULL)
 		{
 			for (int i = 0; i < n; ++i)
 			{
 				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
-				const cd2Body* a = world->bodies.data + contact->bodyA;
-				const cd2Body* b = world->bodies.data + contact->bodyB;
-				/* Kinematic bodies are immovable for the solver: no colour. */
-				bodyA[i] = a->type == CD_DYNAMIC_BODY ? a->solverIndex : CD2_NULL_INDEX;
-				bodyB[i] = b->type == CD_DYNAMIC_BODY ? b->solverIndex : CD2_NULL_INDEX;
-				contacts[i] = context.constraints[i].contact;
+				bodyA[i] = colorBodyOf[contact->bodyA];
+				bodyB[i] = colorBodyOf[contact->bodyB];
 			}
 			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
 			{
 				for (int i = 0; i < n; ++i)
 				{
-					context.constraints[i].contact = contacts[order[i]];
+					sorted[i] = context.constraints[order[i]];
 					bodyA[i] = colors[order[i]];
 				}
+				context.constraints = sorted;
 				context.colorOfConstraint = bodyA;
 			}
 		}
@@ -260,7 +287,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.joints[context.jointCount++] = i;
 	}
 
-	cd2PrepareContacts(world, &context);
 	if (!cd2PrepareContactsWide(world, &context))
 	{
 		/* Out of scratch memory: every constraint one by one. */

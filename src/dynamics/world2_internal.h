@@ -230,6 +230,7 @@ typedef struct cd2StepContext
 	cdReal restitutionThreshold, maxLinearVelocity, contactPushMaxVelocity;
 	cd2SolverBody* bodies; /* dense, awake (dynamic and kinematic) */
 	int* bodyIndices;	   /* world body index of each solver body */
+	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
 	cd2ContactConstraint* constraints;
 	int constraintCount;
