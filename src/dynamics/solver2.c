@@ -34,27 +34,23 @@ cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle)
 	return out;
 }
 
-static void cd2IntegrateVelocities(cd2World* world, cd2StepContext* context)
+static void cd2IntegrateVelocities(cd2StepContext* context)
 {
-	cdReal h = context->h;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = 0; i < context->bodyCount; ++i)
 	{
-		const cd2Body* body = world->bodies.data + context->bodyIndices[i];
+		const cd2SolverBodyParams* p = context->params + i;
 		cd2SolverBody* s = context->bodies + i;
-		if (body->type != CD_DYNAMIC_BODY)
+		if (!p->dynamic)
 		{
 			continue;
 		}
 		cd2Vec v = s->linearVelocity;
 		cdReal w = s->angularVelocity;
-		cd2Vec dv = cd2Scale(h * body->invMass,
-							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
-		cdReal dw = h * body->invInertia * body->torque;
 		/* Damping as an implicit factor: stable for any damping and step. */
-		v = cd2MulAdd(dv, CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping), v);
-		w = dw + w / (CD_R(1.0) + h * body->angularDamping);
+		v = cd2MulAdd(p->deltaV, p->linearDamping, v);
+		w = p->deltaW + w / p->angularDamping;
 		if (cd2Dot(v, v) > maxLinear * maxLinear)
 		{
 			v = cd2Scale(maxLinear / cd2Length(v), v);
@@ -94,9 +90,10 @@ static void cd2IntegratePositions(cd2StepContext* context)
 /* Hit events: touching contacts whose approach speed exceeded the threshold and that pushed. */
 static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 {
+	/* In contact index order: the contacts are read front to back. */
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
-		const cd2Contact* contact = world->contacts.data + context->constraints[i].contact;
+		const cd2Contact* contact = world->contacts.data + context->indexOrder[i].contact;
 		const cd2WorldShape* a = world->shapes.data + contact->shapeA;
 		const cd2WorldShape* b = world->shapes.data + contact->shapeB;
 		if (!a->enableHitEvents && !b->enableHitEvents)
@@ -157,7 +154,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	context.bodies =
 		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2SolverBody));
 	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL))
+	context.params =
+		(cd2SolverBodyParams*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
+	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL))
 	{
 		world->outOfMemory = true;
 		return;
@@ -183,6 +182,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		s->deltaRotation = CD2_ROT_IDENTITY;
 		s->invMass = body->invMass;
 		s->invInertia = body->invInertia;
+		cd2SolverBodyParams* p = context.params + k;
+		cdReal h = context.h;
+		p->dynamic = body->type == CD_DYNAMIC_BODY;
+		p->deltaV = cd2Scale(h * body->invMass, cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
+		p->deltaW = h * body->invInertia * body->torque;
+		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
+		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
 	}
 
 	{
@@ -240,6 +246,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		c->indexB = indexB;
 	}
 	cd2PrepareContacts(world, &context);
+	context.indexOrder = context.constraints;
 	/* Colour order (see graph_color.h). */
 	if (context.constraintCount > 1)
 	{
@@ -296,7 +303,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	cd2PrepareJoints(world, &context);
 	for (int step = 0; step < subStepCount; ++step)
 	{
-		cd2IntegrateVelocities(world, &context);
+		cd2IntegrateVelocities(&context);
 		cd2WarmStartJoints(world, &context);
 		cd2WarmStartContactsWide(&context);
 		cd2WarmStartContacts(&context);

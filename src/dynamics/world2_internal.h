@@ -178,6 +178,16 @@ typedef struct cd2SolverBody
 	cdReal invMass, invInertia;
 } cd2SolverBody;
 
+/* What the velocity integration needs of a solver body, per sub-step, dense. */
+typedef struct cd2SolverBodyParams
+{
+	cd2Vec deltaV;		 /* from gravity and force over a sub-step */
+	cdReal deltaW;		 /* from torque over a sub-step */
+	cdReal linearDamping;  /* implicit factor 1 / (1 + h damping) */
+	cdReal angularDamping; /* its divisor 1 + h damping */
+	bool dynamic;
+} cd2SolverBodyParams;
+
 typedef struct cd2ContactConstraintPoint
 {
 	cd2Vec anchorA, anchorB;
@@ -230,9 +240,11 @@ typedef struct cd2StepContext
 	cdReal restitutionThreshold, maxLinearVelocity, contactPushMaxVelocity;
 	cd2SolverBody* bodies; /* dense, awake (dynamic and kinematic) */
 	int* bodyIndices;	   /* world body index of each solver body */
+	cd2SolverBodyParams* params;
 	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
 	cd2ContactConstraint* constraints;
+	cd2ContactConstraint* indexOrder; /* the same before the colour sort, in contact index order */
 	int constraintCount;
 	/* The coloured constraints in wide blocks, colour by colour; the constraints from
 	 * overflowStart on (the overflow colour) are solved one by one after them. */
