@@ -110,7 +110,7 @@ static uint64_t RunPile(int workerCount, int* bodyCountOut)
 	return h;
 }
 
-int main(void)
+static void TestSameBitsEveryRunAndWorkerCount(void)
 {
 	int count = 0;
 	uint64_t reference = RunPile(1, &count);
@@ -135,5 +135,10 @@ int main(void)
 	TEST_CHECKF(reference == committed, "hash %016llx, committed %016llx", (unsigned long long)reference,
 				(unsigned long long)committed);
 #endif
+}
+
+int main(void)
+{
+	TEST_RUN(TestSameBitsEveryRunAndWorkerCount);
 	return TEST_SUMMARY();
 }

@@ -99,7 +99,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 		blockCount += (j - i + CD_W - 1) / CD_W;
 		i = j;
 	}
-	cd2ContactConstraintWide* wide = (cd2ContactConstraintWide*)cdArena_Alloc(
+	cd2ContactConstraintWide* wide = (cd2ContactConstraintWide*)cdArena_AllocUncleared(
 		&world->arena, (size_t)blockCount * sizeof(cd2ContactConstraintWide));
 	if (blockCount > 0 && wide == NULL)
 	{

@@ -94,9 +94,7 @@ static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
 		const cd2Contact* contact = world->contacts.data + context->indexOrder[i].contact;
-		const cd2WorldShape* a = world->shapes.data + contact->shapeA;
-		const cd2WorldShape* b = world->shapes.data + contact->shapeB;
-		if (!a->enableHitEvents && !b->enableHitEvents)
+		if ((contact->flags & CD2_CONTACT_HIT_EVENTS) == 0)
 		{
 			continue;
 		}
@@ -152,10 +150,10 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	int bodyCapacity = world->bodies.count;
 	/* One more: the zero body the wide contact solver points immovable bodies at. */
 	context.bodies =
-		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2SolverBody));
-	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
+		(cd2SolverBody*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2SolverBody));
+	context.bodyIndices = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	context.params =
-		(cd2SolverBodyParams*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
+		(cd2SolverBodyParams*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
 	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL))
 	{
 		world->outOfMemory = true;
@@ -200,9 +198,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	/* Per world body: its solver index, and the same for dynamic bodies only (the colouring's;
 	 * kinematic bodies are immovable for the solver and take no colour). Small arrays, so that
 	 * the contact loops below do not visit the bodies. */
-	int* solverOf = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	int* colorBodyOf = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	context.accelerations = (cd2Vec*)cdArena_Alloc(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
+	int* solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	context.accelerations = (cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
 	if (bodyCapacity > 0 && (solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
 	{
 		world->outOfMemory = true;
@@ -223,8 +221,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 
 	/* Touching contacts with an awake body, prepared in index order. */
+	int hitCandidates = 0;
 	int contactCapacity = world->contacts.count;
-	context.constraints = (cd2ContactConstraint*)cdArena_Alloc(
+	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
 	for (int i = 0; i < world->contacts.count && context.constraints != NULL; ++i)
 	{
@@ -240,6 +239,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		{
 			continue;
 		}
+		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
 		cd2ContactConstraint* c = context.constraints + context.constraintCount++;
 		c->contact = i;
 		c->indexA = indexA;
@@ -251,12 +251,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	if (context.constraintCount > 1)
 	{
 		int n = context.constraintCount;
-		int* bodyA = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* bodyB = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* colors = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* order = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
+		int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		cd2ContactConstraint* sorted =
-			(cd2ContactConstraint*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
+			(cd2ContactConstraint*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
 		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && sorted != NULL)
 		{
 			for (int i = 0; i < n; ++i)
@@ -398,7 +398,10 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			cd2UpdateShapeBounds(world, s, false);
 		}
 	}
-	cd2ReportHits(world, &context);
+	if (hitCandidates > 0)
+	{
+		cd2ReportHits(world, &context);
+	}
 	if (sleepAllowed)
 	{
 		cd2UpdateSleep(world);
