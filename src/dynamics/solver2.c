@@ -1,9 +1,10 @@
 /* collide: the 2D step's solve: the dense arrays of awake bodies and touching contacts, the
  * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
  * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
- * hit and move events, sleep). Single-threaded and in index order: the same input gives the same
- * bits. The arrays are laid out so that a later graph colouring can split the constraints into
- * independent sets and run them wide. */
+ * hit and move events, sleep). Single-threaded, in index and colour order: the same input gives
+ * the same bits. The contacts are prepared in index order, then sorted by graph colour; the
+ * coloured ones are solved four at a time (contact_solver_wide2.c), the overflow colour and the
+ * joints one by one. */
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
