@@ -602,18 +602,18 @@ static void TestQueries(void)
 		MakeStaticBox(world, cd2MakeVec((cdReal)(3 * i), CD_R(2.0)), CD_R(0.5), CD_R(0.5));
 	}
 	cd2QueryFilter filter = cd2DefaultQueryFilter();
-	cd2RayResult r = cd2World_CastRayClosest(world, cd2MakeVec(CD_R(3.0), CD_R(10.0)),
+	cd2RayResult r = cd2World_RaycastClosest(world, cd2MakeVec(CD_R(3.0), CD_R(10.0)),
 											 cd2MakeVec(CD_R(0.0), CD_R(-20.0)), filter);
 	TEST_CHECK(r.hit);
 	TEST_CHECK_NEAR(r.point.y, 2.5, 1e-4);
 	TEST_CHECK_NEAR(r.normal.y, 1.0, 1e-5);
 	TEST_CHECK_NEAR(r.fraction, 7.5 / 20.0, 1e-5);
-	r = cd2World_CastRayClosest(world, cd2MakeVec(CD_R(1.5), CD_R(10.0)), cd2MakeVec(CD_R(0.0), CD_R(-20.0)),
+	r = cd2World_RaycastClosest(world, cd2MakeVec(CD_R(1.5), CD_R(10.0)), cd2MakeVec(CD_R(0.0), CD_R(-20.0)),
 								filter);
 	TEST_CHECK(r.hit);
 	TEST_CHECK_NEAR(r.point.y, 0.0, 1e-4);
 	int count = 0;
-	cd2World_CastRay(world, cd2MakeVec(CD_R(-5.0), CD_R(2.0)), cd2MakeVec(CD_R(30.0), CD_R(0.0)), filter,
+	cd2World_Raycast(world, cd2MakeVec(CD_R(-5.0), CD_R(2.0)), cd2MakeVec(CD_R(30.0), CD_R(0.0)), filter,
 					 CollectAll, &count);
 	TEST_CHECK(count == 5);
 	count = 0;
@@ -629,11 +629,11 @@ static void TestQueries(void)
 	cd2World_OverlapShape(world, &circle, filter, CountOverlap, &count);
 	TEST_CHECK(count == 0);
 	count = 0;
-	cd2World_CastShape(world, &circle, cd2MakeVec(CD_R(0.0), CD_R(-5.0)), filter, CollectAll, &count);
+	cd2World_ShapeCast(world, &circle, cd2MakeVec(CD_R(0.0), CD_R(-5.0)), filter, CollectAll, &count);
 	TEST_CHECK(count == 1); /* only the ground */
 	/* A filter that excludes the default category sees nothing. */
 	cd2QueryFilter none = {1u, 2u};
-	r = cd2World_CastRayClosest(world, cd2MakeVec(CD_R(3.0), CD_R(10.0)), cd2MakeVec(CD_R(0.0), CD_R(-20.0)),
+	r = cd2World_RaycastClosest(world, cd2MakeVec(CD_R(3.0), CD_R(10.0)), cd2MakeVec(CD_R(0.0), CD_R(-20.0)),
 								none);
 	TEST_CHECK(!r.hit);
 	cd2DestroyWorld(world);

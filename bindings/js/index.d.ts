@@ -318,9 +318,9 @@ export class World2 {
   setCustomFilter(fcn: ((shapeA: BodyShape2 | null, shapeB: BodyShape2 | null) => boolean) | null): void;
   overlapAabb(aabb: Aabb2, filter?: QueryFilter2): (BodyShape2 | null)[];
   overlapShape(shape: Shape2, filter?: QueryFilter2): (BodyShape2 | null)[];
-  castRayClosest(origin: Vec2, translation: Vec2, filter?: QueryFilter2): WorldHit2 | null;
-  castRay(origin: Vec2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
-  castShape(shape: Shape2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
+  raycastClosest(origin: Vec2, translation: Vec2, filter?: QueryFilter2): WorldHit2 | null;
+  raycast(origin: Vec2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
+  shapeCast(shape: Shape2, translation: Vec2, filter?: QueryFilter2): WorldHit2[];
   saveState(): Uint8Array;
   restoreState(state: Uint8Array | ArrayBuffer | ArrayBufferView): void;
   /** Kinematic character mover: planes of the shapes touching a world-space capsule. */

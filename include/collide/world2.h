@@ -602,12 +602,12 @@ CD_API void cd2World_OverlapAabb(cd2WorldId worldId, cd2Aabb aabb, cd2QueryFilte
 CD_API void cd2World_OverlapShape(cd2WorldId worldId, const cd2Shape* shape, cd2QueryFilter filter,
 								  cd2OverlapResultFcn* fcn, void* context);
 /* Ray origin + t * translation, t in [0, 1]; sensors are skipped; chains one-sided. */
-CD_API cd2RayResult cd2World_CastRayClosest(cd2WorldId worldId, cd2Vec origin, cd2Vec translation,
+CD_API cd2RayResult cd2World_RaycastClosest(cd2WorldId worldId, cd2Vec origin, cd2Vec translation,
 											cd2QueryFilter filter);
-CD_API void cd2World_CastRay(cd2WorldId worldId, cd2Vec origin, cd2Vec translation, cd2QueryFilter filter,
+CD_API void cd2World_Raycast(cd2WorldId worldId, cd2Vec origin, cd2Vec translation, cd2QueryFilter filter,
 							 cd2CastResultFcn* fcn, void* context);
 /* The world-space shape moved by translation; normal and point of each hit as cd2ShapeCast. */
-CD_API void cd2World_CastShape(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation,
+CD_API void cd2World_ShapeCast(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation,
 							   cd2QueryFilter filter, cd2CastResultFcn* fcn, void* context);
 
 /* ---- kinematic character mover ---------------------------------------------------------------

@@ -1,7 +1,7 @@
 /* collide: bump arena for per-step scratch memory. */
 #include "container.h"
 
-void* cdArena_Alloc(cdArena* arena, size_t size)
+void* cdArena_AllocUncleared(cdArena* arena, size_t size)
 {
 	if (size == 0)
 	{
@@ -32,7 +32,16 @@ void* cdArena_Alloc(cdArena* arena, size_t size)
 	{
 		arena->peak = arena->used;
 	}
-	memset(memory, 0, size);
+	return memory;
+}
+
+void* cdArena_Alloc(cdArena* arena, size_t size)
+{
+	void* memory = cdArena_AllocUncleared(arena, size);
+	if (memory != NULL)
+	{
+		memset(memory, 0, (size + 31u) & ~(size_t)31u);
+	}
 	return memory;
 }
 

@@ -141,6 +141,8 @@ typedef struct cdArena
 
 /* Zeroed memory, or NULL when memory runs out (or size is 0). */
 void* cdArena_Alloc(cdArena* arena, size_t size);
+/* The same without zeroing the block: for large arrays the caller writes before reading. */
+void* cdArena_AllocUncleared(cdArena* arena, size_t size);
 /* Frees everything handed out; grows the main block to the peak use of the last round. */
 void cdArena_Reset(cdArena* arena);
 void cdArena_Destroy(cdArena* arena);

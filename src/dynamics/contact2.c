@@ -30,7 +30,17 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 			}
 		}
 	}
-	cd2Shape a = cd2MakeTaggedShape(shapeA, CD2_TRANSFORM_IDENTITY);
+	cd2Shape a;
+	if (shapeA->type == CD2_WORLD_SHAPE_POLYGON)
+	{
+		/* In its own frame: a copy, no transform. */
+		a.type = CD2_SHAPE_POLYGON;
+		a.polygon = shapeA->geometry.polygon;
+	}
+	else
+	{
+		a = cd2MakeTaggedShape(shapeA, CD2_TRANSFORM_IDENTITY);
+	}
 	return cd2Collide(&a, &b, speculativeDistance);
 }
 
@@ -361,7 +371,12 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		}
 		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
 		bool touching;
-		contact->flags &= ~(uint32_t)CD2_CONTACT_DISABLED;
+		contact->flags &= ~(uint32_t)(CD2_CONTACT_DISABLED | CD2_CONTACT_HIT_EVENTS);
+		/* The shapes' current hit-event flags, for the solver's hit report this step. */
+		if (shapeA->enableHitEvents || shapeB->enableHitEvents)
+		{
+			contact->flags |= CD2_CONTACT_HIT_EVENTS;
+		}
 		if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
 		{
 			continue; /* sensors are updated after the solve (cd2UpdateSensors) */

@@ -24,19 +24,21 @@ static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index,
 
 void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 {
+	/* Runs in contact index order (before the colour sort), reading the dense solver bodies: the
+	 * contacts are read front to back and the bodies from a small array. */
+	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
 		const cd2Contact* contact = world->contacts.data + c->contact;
-		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
-		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
-		c->indexA = bodyA->solverIndex;
-		c->indexB = bodyB->solverIndex;
 		/* A sleeping or static body is immovable for this step. */
-		c->invMassA = c->indexA < 0 ? CD_R(0.0) : bodyA->invMass;
-		c->invIA = c->indexA < 0 ? CD_R(0.0) : bodyA->invInertia;
-		c->invMassB = c->indexB < 0 ? CD_R(0.0) : bodyB->invMass;
-		c->invIB = c->indexB < 0 ? CD_R(0.0) : bodyB->invInertia;
+		const cd2SolverBody* bodyA = c->indexA < 0 ? &zeroBody : context->bodies + c->indexA;
+		const cd2SolverBody* bodyB = c->indexB < 0 ? &zeroBody : context->bodies + c->indexB;
+		c->invMassA = bodyA->invMass;
+		c->invIA = bodyA->invInertia;
+		c->invMassB = bodyB->invMass;
+		c->invIB = bodyB->invInertia;
 		c->softness = (c->invMassA == CD_R(0.0) || c->invMassB == CD_R(0.0)) ? context->staticSoftness
 																			 : context->contactSoftness;
 		c->normal = contact->normal;
@@ -49,28 +51,11 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 		c->rollingMass = iSum > CD_R(0.0) ? CD_R(1.0) / iSum : CD_R(0.0);
 		c->pointCount = contact->pointCount;
 		cd2Vec n = c->normal, t = cd2RightPerp(n);
-		cd2Vec accA = CD2_VEC_ZERO, accB = CD2_VEC_ZERO;
-		if (c->invMassA > CD_R(0.0))
-		{
-			accA = cd2MulAdd(cd2Scale(c->invMassA, bodyA->force), bodyA->gravityScale, world->gravity);
-		}
-		if (c->invMassB > CD_R(0.0))
-		{
-			accB = cd2MulAdd(cd2Scale(c->invMassB, bodyB->force), bodyB->gravityScale, world->gravity);
-		}
+		cd2Vec accA = c->indexA < 0 ? CD2_VEC_ZERO : context->accelerations[c->indexA];
+		cd2Vec accB = c->indexB < 0 ? CD2_VEC_ZERO : context->accelerations[c->indexB];
 		c->normalAcceleration = cd2Dot(n, cd2Sub(accB, accA));
 		cd2Vec vA = bodyA->linearVelocity, vB = bodyB->linearVelocity;
 		cdReal wA = bodyA->angularVelocity, wB = bodyB->angularVelocity;
-		if (c->indexA < 0)
-		{
-			vA = CD2_VEC_ZERO;
-			wA = CD_R(0.0);
-		}
-		if (c->indexB < 0)
-		{
-			vB = CD2_VEC_ZERO;
-			wB = CD_R(0.0);
-		}
 		for (int k = 0; k < c->pointCount; ++k)
 		{
 			const cd2ContactPoint* mp = contact->points + k;
@@ -97,7 +82,7 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
 void cd2WarmStartContacts(cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
@@ -134,7 +119,7 @@ void cd2SolveContacts(cd2StepContext* context, bool useBias)
 	cd2SolverBody scratchA, scratchB;
 	cdReal inv_h = context->inv_h;
 	cdReal maxPush = context->contactPushMaxVelocity;
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);

@@ -1,9 +1,10 @@
 /* collide: the 2D step's solve: the dense arrays of awake bodies and touching contacts, the
  * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
  * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
- * hit and move events, sleep). Single-threaded and in index order: the same input gives the same
- * bits. The arrays are laid out so that a later graph colouring can split the constraints into
- * independent sets and run them wide. */
+ * hit and move events, sleep). Single-threaded, in index and colour order: the same input gives
+ * the same bits. The contacts are prepared in index order, then sorted by graph colour; the
+ * coloured ones are solved four at a time (contact_solver_wide2.c), the overflow colour and the
+ * joints one by one. */
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
@@ -34,27 +35,23 @@ cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle)
 	return out;
 }
 
-static void cd2IntegrateVelocities(cd2World* world, cd2StepContext* context)
+static void cd2IntegrateVelocities(cd2StepContext* context)
 {
-	cdReal h = context->h;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = 0; i < context->bodyCount; ++i)
 	{
-		const cd2Body* body = world->bodies.data + context->bodyIndices[i];
+		const cd2SolverBodyParams* p = context->params + i;
 		cd2SolverBody* s = context->bodies + i;
-		if (body->type != CD_DYNAMIC_BODY)
+		if (!p->dynamic)
 		{
 			continue;
 		}
 		cd2Vec v = s->linearVelocity;
 		cdReal w = s->angularVelocity;
-		cd2Vec dv = cd2Scale(h * body->invMass,
-							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
-		cdReal dw = h * body->invInertia * body->torque;
 		/* Damping as an implicit factor: stable for any damping and step. */
-		v = cd2MulAdd(dv, CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping), v);
-		w = dw + w / (CD_R(1.0) + h * body->angularDamping);
+		v = cd2MulAdd(p->deltaV, p->linearDamping, v);
+		w = p->deltaW + w / p->angularDamping;
 		if (cd2Dot(v, v) > maxLinear * maxLinear)
 		{
 			v = cd2Scale(maxLinear / cd2Length(v), v);
@@ -94,12 +91,11 @@ static void cd2IntegratePositions(cd2StepContext* context)
 /* Hit events: touching contacts whose approach speed exceeded the threshold and that pushed. */
 static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 {
+	/* In contact index order: the contacts are read front to back. */
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
-		const cd2Contact* contact = world->contacts.data + context->constraints[i].contact;
-		const cd2WorldShape* a = world->shapes.data + contact->shapeA;
-		const cd2WorldShape* b = world->shapes.data + contact->shapeB;
-		if (!a->enableHitEvents && !b->enableHitEvents)
+		const cd2Contact* contact = world->contacts.data + context->indexOrder[i].contact;
+		if ((contact->flags & CD2_CONTACT_HIT_EVENTS) == 0)
 		{
 			continue;
 		}
@@ -153,10 +149,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* The awake bodies, dense. */
 	int bodyCapacity = world->bodies.count;
+	/* One more: the zero body the wide contact solver points immovable bodies at. */
 	context.bodies =
-		(cd2SolverBody*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBody));
-	context.bodyIndices = (int*)cdArena_Alloc(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL))
+		(cd2SolverBody*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2SolverBody));
+	context.bodyIndices = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	context.params =
+		(cd2SolverBodyParams*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
+	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL))
 	{
 		world->outOfMemory = true;
 		return;
@@ -182,11 +181,50 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		s->deltaRotation = CD2_ROT_IDENTITY;
 		s->invMass = body->invMass;
 		s->invInertia = body->invInertia;
+		cd2SolverBodyParams* p = context.params + k;
+		cdReal h = context.h;
+		p->dynamic = body->type == CD_DYNAMIC_BODY;
+		p->deltaV = cd2Scale(h * body->invMass, cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
+		p->deltaW = h * body->invInertia * body->torque;
+		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
+		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
 	}
 
-	/* Touching contacts with an awake body. */
+	{
+		cd2SolverBody* zero = context.bodies + context.bodyCount;
+		memset(zero, 0, sizeof(*zero));
+		zero->deltaRotation = CD2_ROT_IDENTITY;
+	}
+
+	/* Per world body: its solver index, and the same for dynamic bodies only (the colouring's;
+	 * kinematic bodies are immovable for the solver and take no colour). Small arrays, so that
+	 * the contact loops below do not visit the bodies. */
+	int* solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	context.accelerations = (cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
+	if (bodyCapacity > 0 && (solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	for (int i = 0; i < world->bodies.count; ++i)
+	{
+		const cd2Body* body = world->bodies.data + i;
+		solverOf[i] = body->solverIndex;
+		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? body->solverIndex : CD2_NULL_INDEX;
+		if (body->solverIndex >= 0)
+		{
+			context.accelerations[body->solverIndex] =
+				body->invMass > CD_R(0.0)
+					? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
+					: CD2_VEC_ZERO;
+		}
+	}
+
+	/* Touching contacts with an awake body, prepared in index order. */
+	int hitCandidates = 0;
 	int contactCapacity = world->contacts.count;
-	context.constraints = (cd2ContactConstraint*)cdArena_Alloc(
+	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
 	for (int i = 0; i < world->contacts.count && context.constraints != NULL; ++i)
 	{
@@ -197,40 +235,46 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		{
 			continue;
 		}
-		if (world->bodies.data[contact->bodyA].solverIndex < 0 &&
-			world->bodies.data[contact->bodyB].solverIndex < 0)
+		int indexA = solverOf[contact->bodyA], indexB = solverOf[contact->bodyB];
+		if (indexA < 0 && indexB < 0)
 		{
 			continue;
 		}
-		context.constraints[context.constraintCount++].contact = i;
+		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
+		cd2ContactConstraint* c = context.constraints + context.constraintCount++;
+		c->contact = i;
+		c->indexA = indexA;
+		c->indexB = indexB;
 	}
+	cd2PrepareContacts(world, &context);
+	context.indexOrder = context.constraints;
 	/* Colour order (see graph_color.h). */
 	if (context.constraintCount > 1)
 	{
 		int n = context.constraintCount;
-		int* bodyA = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* bodyB = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* colors = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* order = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		int* contacts = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
-		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && contacts != NULL)
+		int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+		cd2ContactConstraint* sorted =
+			(cd2ContactConstraint*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
+		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && sorted != NULL)
 		{
 			for (int i = 0; i < n; ++i)
 			{
 				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
-				const cd2Body* a = world->bodies.data + contact->bodyA;
-				const cd2Body* b = world->bodies.data + contact->bodyB;
-				/* Kinematic bodies are immovable for the solver: no colour. */
-				bodyA[i] = a->type == CD_DYNAMIC_BODY ? a->solverIndex : CD2_NULL_INDEX;
-				bodyB[i] = b->type == CD_DYNAMIC_BODY ? b->solverIndex : CD2_NULL_INDEX;
-				contacts[i] = context.constraints[i].contact;
+				bodyA[i] = colorBodyOf[contact->bodyA];
+				bodyB[i] = colorBodyOf[contact->bodyB];
 			}
 			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
 			{
 				for (int i = 0; i < n; ++i)
 				{
-					context.constraints[i].contact = contacts[order[i]];
+					sorted[i] = context.constraints[order[i]];
+					bodyA[i] = colors[order[i]];
 				}
+				context.constraints = sorted;
+				context.colorOfConstraint = bodyA;
 			}
 		}
 	}
@@ -251,19 +295,28 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.joints[context.jointCount++] = i;
 	}
 
-	cd2PrepareContacts(world, &context);
+	if (!cd2PrepareContactsWide(world, &context))
+	{
+		/* Out of scratch memory: every constraint one by one. */
+		context.wideCount = 0;
+		context.overflowStart = 0;
+	}
 	cd2PrepareJoints(world, &context);
 	for (int step = 0; step < subStepCount; ++step)
 	{
-		cd2IntegrateVelocities(world, &context);
+		cd2IntegrateVelocities(&context);
 		cd2WarmStartJoints(world, &context);
+		cd2WarmStartContactsWide(&context);
 		cd2WarmStartContacts(&context);
 		cd2SolveJoints(world, &context, true);
+		cd2SolveContactsWide(&context, true);
 		cd2SolveContacts(&context, true);
 		cd2IntegratePositions(&context);
 		cd2SolveJoints(world, &context, false);
+		cd2SolveContactsWide(&context, false);
 		cd2SolveContacts(&context, false);
 	}
+	cd2StoreContactsWide(&context);
 	cd2ApplyRestitution(&context);
 	cd2StoreImpulses(world, &context);
 	cd2StoreJointReactions(world, &context);
@@ -346,7 +399,10 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			cd2UpdateShapeBounds(world, s, false);
 		}
 	}
-	cd2ReportHits(world, &context);
+	if (hitCandidates > 0)
+	{
+		cd2ReportHits(world, &context);
+	}
 	if (sleepAllowed)
 	{
 		cd2UpdateSleep(world);

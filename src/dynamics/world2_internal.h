@@ -6,6 +6,7 @@
 #include "collide/world2.h"
 
 #include "../base/container.h"
+#include "wide2.h"
 
 #define CD2_NULL_INDEX (-1)
 
@@ -177,6 +178,16 @@ typedef struct cd2SolverBody
 	cdReal invMass, invInertia;
 } cd2SolverBody;
 
+/* What the velocity integration needs of a solver body, per sub-step, dense. */
+typedef struct cd2SolverBodyParams
+{
+	cd2Vec deltaV;		 /* from gravity and force over a sub-step */
+	cdReal deltaW;		 /* from torque over a sub-step */
+	cdReal linearDamping;  /* implicit factor 1 / (1 + h damping) */
+	cdReal angularDamping; /* its divisor 1 + h damping */
+	bool dynamic;
+} cd2SolverBodyParams;
+
 typedef struct cd2ContactConstraintPoint
 {
 	cd2Vec anchorA, anchorB;
@@ -200,6 +211,27 @@ typedef struct cd2ContactConstraint
 	cd2ContactConstraintPoint points[2];
 } cd2ContactConstraint;
 
+/* Up to CD_W contact constraints of one colour side by side (no two share a movable body), one per
+ * lane; empty lanes have zero masses and point at the zero body. */
+typedef struct cd2ContactPointWide
+{
+	cdW anchorAx, anchorAy, anchorBx, anchorBy;
+	cdW baseSeparation, relativeVelocity;
+	cdW normalImpulse, tangentImpulse, maxNormalImpulse;
+	cdW normalMass, tangentMass;
+} cd2ContactPointWide;
+
+typedef struct cd2ContactConstraintWide
+{
+	cdW invMassA, invIA, invMassB, invIB;
+	cdW normalX, normalY;
+	cdW friction, tangentSpeed, rollingResistance, rollingMass, rollingImpulse;
+	cdW biasRate, massScale, impulseScale;
+	cd2ContactPointWide points[2];
+	int indexA[CD_W], indexB[CD_W]; /* solver bodies; the zero body (index bodyCount) when immovable */
+	int constraint[CD_W];			/* index in the constraint array, -1 for an empty lane */
+} cd2ContactConstraintWide;
+
 typedef struct cd2StepContext
 {
 	cdReal dt, inv_dt, h, inv_h;
@@ -208,9 +240,18 @@ typedef struct cd2StepContext
 	cdReal restitutionThreshold, maxLinearVelocity, contactPushMaxVelocity;
 	cd2SolverBody* bodies; /* dense, awake (dynamic and kinematic) */
 	int* bodyIndices;	   /* world body index of each solver body */
+	cd2SolverBodyParams* params;
+	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
 	cd2ContactConstraint* constraints;
+	cd2ContactConstraint* indexOrder; /* the same before the colour sort, in contact index order */
 	int constraintCount;
+	/* The coloured constraints in wide blocks, colour by colour; the constraints from
+	 * overflowStart on (the overflow colour) are solved one by one after them. */
+	cd2ContactConstraintWide* wide;
+	int wideCount;
+	int overflowStart;
+	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
 	bool enableWarmStarting;
@@ -310,6 +351,10 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context);
 void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
+bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
+void cd2WarmStartContactsWide(cd2StepContext* context);
+void cd2SolveContactsWide(cd2StepContext* context, bool useBias);
+void cd2StoreContactsWide(cd2StepContext* context);
 void cd2StoreImpulses(cd2World* world, cd2StepContext* context);
 
 /* ---- solver2.c ------------------------------------------------------------------------------- */

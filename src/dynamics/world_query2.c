@@ -131,7 +131,7 @@ static cdReal cd2RayCallback(cd2Ray ray, cdReal maxFraction, int proxyId, uint64
 	return answer > maxFraction ? maxFraction : answer;
 }
 
-void cd2World_CastRay(cd2WorldId worldId, cd2Vec origin, cd2Vec translation, cd2QueryFilter filter,
+void cd2World_Raycast(cd2WorldId worldId, cd2Vec origin, cd2Vec translation, cd2QueryFilter filter,
 					  cd2CastResultFcn* fcn, void* context)
 {
 	cd2World* world = cd2QueryWorld(worldId);
@@ -156,13 +156,13 @@ static cdReal cd2ClosestCallback(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal
 	return fraction;
 }
 
-cd2RayResult cd2World_CastRayClosest(cd2WorldId worldId, cd2Vec origin, cd2Vec translation,
+cd2RayResult cd2World_RaycastClosest(cd2WorldId worldId, cd2Vec origin, cd2Vec translation,
 									 cd2QueryFilter filter)
 {
 	cd2RayResult result;
 	memset(&result, 0, sizeof(result));
 	result.fraction = CD_R(1.0);
-	cd2World_CastRay(worldId, origin, translation, filter, cd2ClosestCallback, &result);
+	cd2World_Raycast(worldId, origin, translation, filter, cd2ClosestCallback, &result);
 	return result;
 }
 
@@ -208,7 +208,7 @@ static bool cd2ShapeCastCallback(int proxyId, uint64_t userData, void* context)
 	return true;
 }
 
-void cd2World_CastShape(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation, cd2QueryFilter filter,
+void cd2World_ShapeCast(cd2WorldId worldId, const cd2Shape* shape, cd2Vec translation, cd2QueryFilter filter,
 						cd2CastResultFcn* fcn, void* context)
 {
 	cd2World* world = cd2QueryWorld(worldId);

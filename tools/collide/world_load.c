@@ -820,7 +820,7 @@ static bool readChain(WLoader* loader, const cJSON* object, cd2BodyId body)
 					  s_refusal[0] != 0 ? s_refusal : "invalid chain");
 	}
 	loader->out->chainCount += 1;
-	loader->out->shapeCount += cd2Chain_GetSegmentCount(id);
+	loader->out->shapeCount += cd2ChainShape_GetSegmentCount(id);
 	return true;
 }
 

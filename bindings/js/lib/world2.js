@@ -358,36 +358,36 @@ export class World2 {
   }
 
   /** The closest hit of the ray origin + t * translation (t in [0, 1]), or null. */
-  castRayClosest(origin, translation, filter) {
-    this._check('castRayClosest');
+  raycastClosest(origin, translation, filter) {
+    this._check('raycastClosest');
     const o = vec2(origin, 'origin'), t = vec2(translation, 'translation');
     const p = io();
     w.F32.set([o[0], o[1], t[0], t[1]], p);
     writeQueryFilter(p + 4, filter, 'filter');
-    if (E().world2CastRayClosest(this._w) === 0) return null;
+    if (E().world2RaycastClosest(this._w) === 0) return null;
     const f = w.F32, i = w.I32;
     return { shape: this._shape(i[p + 1], i[p + 2]), point: { x: f[p + 3], y: f[p + 4] }, normal: { x: f[p + 5], y: f[p + 6] }, fraction: f[p + 7] };
   }
 
   /** Every hit of the ray (unordered): [{shape, point, normal, fraction}]. */
-  castRay(origin, translation, filter) {
-    this._check('castRay');
+  raycast(origin, translation, filter) {
+    this._check('raycast');
     const o = vec2(origin, 'origin'), t = vec2(translation, 'translation');
     const p = io();
     w.F32.set([o[0], o[1], t[0], t[1]], p);
     writeQueryFilter(p + 4, filter, 'filter');
-    return this._readHits(E().world2CastRay(this._w), 'ray');
+    return this._readHits(E().world2Raycast(this._w), 'ray');
   }
 
   /** Every hit of a world-space shape moved by translation: [{shape, point, normal, fraction}]. */
-  castShape(shape, translation, filter) {
-    this._check('castShape');
+  shapeCast(shape, translation, filter) {
+    this._check('shapeCast');
     encode2(shape, w.S, 'shape');
     const t = vec2(translation, 'translation');
     const p = io();
     w.F32[p] = t[0]; w.F32[p + 1] = t[1];
     writeQueryFilter(p + 2, filter, 'filter');
-    return this._readHits(E().world2CastShape(this._w), 'shape');
+    return this._readHits(E().world2ShapeCast(this._w), 'shape');
   }
 
   /** The whole simulation state as bytes (same build only: see world2.h's snapshots). */

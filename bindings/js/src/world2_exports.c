@@ -711,7 +711,7 @@ EXPORT("chain2Create") int cdjsChain2Create(int world0, int index1, int generati
 	{
 		return -1;
 	}
-	return cd2Chain_GetSegmentCount(chain);
+	return cd2ChainShape_GetSegmentCount(chain);
 }
 
 /* The body's shape ids into the output list (index1, generation each); count in IO[0]. */
@@ -1421,7 +1421,7 @@ EXPORT("world2OverlapShape") float* cdjsWorld2OverlapShape(int world0)
 
 /* IO in: origin x y, translation x y, filter. IO out: hit (int), shape index1 gen (ints), point
  * x y, normal x y, fraction. */
-EXPORT("world2CastRayClosest") int cdjsWorld2CastRayClosest(int world0)
+EXPORT("world2RaycastClosest") int cdjsWorld2RaycastClosest(int world0)
 {
 	JsWorld* w = getWorld(world0);
 	if (w == NULL)
@@ -1429,7 +1429,7 @@ EXPORT("world2CastRayClosest") int cdjsWorld2CastRayClosest(int world0)
 		return 0;
 	}
 	const float* in = IO;
-	cd2RayResult r = cd2World_CastRayClosest(w->id, (cd2Vec){in[0], in[1]}, (cd2Vec){in[2], in[3]}, queryFilter(in + 4));
+	cd2RayResult r = cd2World_RaycastClosest(w->id, (cd2Vec){in[0], in[1]}, (cd2Vec){in[2], in[3]}, queryFilter(in + 4));
 	float* o = IO;
 	putInt(o, r.hit ? 1 : 0);
 	putShape(o + 1, r.shapeId);
@@ -1441,8 +1441,8 @@ EXPORT("world2CastRayClosest") int cdjsWorld2CastRayClosest(int world0)
 	return r.hit ? 1 : 0;
 }
 
-/* Every hit along the ray (unordered). IO in as world2CastRayClosest; count out in IO[0]. */
-EXPORT("world2CastRay") float* cdjsWorld2CastRay(int world0)
+/* Every hit along the ray (unordered). IO in as world2RaycastClosest; count out in IO[0]. */
+EXPORT("world2Raycast") float* cdjsWorld2Raycast(int world0)
 {
 	JsWorld* w = getWorld(world0);
 	g_outCount = 0;
@@ -1454,14 +1454,14 @@ EXPORT("world2CastRay") float* cdjsWorld2CastRay(int world0)
 	const float* in = IO;
 	cd2Vec origin = {in[0], in[1]}, translation = {in[2], in[3]};
 	cd2QueryFilter filter = queryFilter(in + 4);
-	cd2World_CastRay(w->id, origin, translation, filter, collectRay, NULL);
+	cd2World_Raycast(w->id, origin, translation, filter, collectRay, NULL);
 	putInt(IO, g_outCount / 7);
 	return g_out;
 }
 
 /* Shape in slot A (world space) moved by IO's translation x y; IO in: translation, filter. Hits as
- * world2CastRay. */
-EXPORT("world2CastShape") float* cdjsWorld2CastShape(int world0)
+ * world2Raycast. */
+EXPORT("world2ShapeCast") float* cdjsWorld2ShapeCast(int world0)
 {
 	JsWorld* w = getWorld(world0);
 	g_outCount = 0;
@@ -1478,7 +1478,7 @@ EXPORT("world2CastShape") float* cdjsWorld2CastShape(int world0)
 		putInt(IO, -1);
 		return NULL;
 	}
-	cd2World_CastShape(w->id, &shape, translation, filter, collectRay, NULL);
+	cd2World_ShapeCast(w->id, &shape, translation, filter, collectRay, NULL);
 	putInt(IO, g_outCount / 7);
 	return g_out;
 }

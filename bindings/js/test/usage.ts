@@ -115,7 +115,7 @@ export function world2Usage(): number {
   world.step(1 / 60, 4);
   const t: Float32Array = world.getTransforms();
   const ev: c.WorldEvents2 = world.getEvents();
-  const hit = world.castRayClosest({ x: 0, y: 10 }, { x: 0, y: -20 });
+  const hit = world.raycastClosest({ x: 0, y: 10 }, { x: 0, y: -20 });
   const state: Uint8Array = world.saveState();
   world.restoreState(state);
   const p: c.Vec2 = body.position;

@@ -170,20 +170,20 @@ test('ray casts and overlap queries hit the right shapes at the right places', (
   const { world, groundShape } = groundWorld();
   const b = world.createBody({ position: { x: 3, y: 2 } });
   const s = b.createShape(unitBox());
-  const hit = world.castRayClosest({ x: 3.2, y: 10 }, { x: 0, y: -20 });
+  const hit = world.raycastClosest({ x: 3.2, y: 10 }, { x: 0, y: -20 });
   assert.equal(hit.shape, s);
   assert.ok(Math.abs(hit.point.y - 2.5) < 1e-5 && Math.abs(hit.point.x - 3.2) < 1e-6);
   assert.ok(Math.abs(hit.normal.y - 1) < 1e-6);
   assert.ok(Math.abs(hit.fraction - 7.5 / 20) < 1e-6);
-  const all = world.castRay({ x: 3.2, y: 10 }, { x: 0, y: -20 });
+  const all = world.raycast({ x: 3.2, y: 10 }, { x: 0, y: -20 });
   assert.deepEqual(new Set(all.map((h) => h.shape)), new Set([s, groundShape]));
-  assert.equal(world.castRayClosest({ x: 3.2, y: 10 }, { x: 0, y: 1 }), null);
+  assert.equal(world.raycastClosest({ x: 3.2, y: 10 }, { x: 0, y: 1 }), null);
   assert.deepEqual(world.overlapAabb({ min: { x: 2.9, y: 1.9 }, max: { x: 3.1, y: 2.1 } }), [s]);
   assert.deepEqual(world.overlapShape(c.circle({ x: 3, y: 2.9 }, 0.5)), [s]);
   assert.deepEqual(world.overlapShape(c.circle({ x: 3, y: 3.1 }, 0.5)), []);
   // Filters: a query whose mask misses the shapes' category finds nothing.
   assert.deepEqual(world.overlapAabb({ min: { x: 2.9, y: 1.9 }, max: { x: 3.1, y: 2.1 } }, { maskBits: 2 }), []);
-  const cast = world.castShape(c.circle({ x: 3, y: 6 }, 0.5), { x: 0, y: -6 });
+  const cast = world.shapeCast(c.circle({ x: 3, y: 6 }, 0.5), { x: 0, y: -6 });
   const first = cast.find((h) => h.shape === s);
   assert.ok(first && Math.abs(first.fraction - 3 / 6) < 0.01, `cast fraction ${first?.fraction}`);
   world.destroy();
@@ -270,7 +270,7 @@ test('bad input throws TypeError or RangeError naming the argument', () => {
   assert.throws(() => world.createJoint({ type: 'revolute', bodyA: ground, bodyB: {} }), { name: 'TypeError', message: /def\.bodyB/ });
   assert.throws(() => world.setPreSolve(42), { name: 'TypeError', message: /fcn/ });
   assert.throws(() => world.overlapAabb({ min: { x: 1, y: 1 }, max: { x: 0, y: 0 } }), { name: 'RangeError', message: /aabb/ });
-  assert.throws(() => world.castRayClosest({ x: 0, y: 0 }, { x: NaN, y: 1 }), { name: 'RangeError', message: /translation\.x/ });
+  assert.throws(() => world.raycastClosest({ x: 0, y: 0 }, { x: NaN, y: 1 }), { name: 'RangeError', message: /translation\.x/ });
   assert.throws(() => world.overlapAabb({ min: { x: 0, y: 0 }, max: { x: 1, y: 1 } }, { maskBits: -1 }), { name: 'RangeError', message: /filter\.maskBits/ });
 
   // Destroyed objects and stale ids.

@@ -1,0 +1,333 @@
+/* collide: the wide contact solver. The coloured contact constraints (graph_color.h: no two of a
+ * colour share a movable body) are packed CD_W to a block, colour by colour, and solved a block at a
+ * time with the helpers of wide2.h: the same arithmetic as the one-by-one solver of
+ * contact_solver2.c, lane by lane, so a colour's result does not depend on how it is cut into
+ * blocks, and the SIMD and scalar versions of the helpers give the same bits. Immovable bodies
+ * (static, asleep) point at the zero body after the awake ones, whose velocity stays zero. The
+ * overflow colour stays with the one-by-one solver, after the blocks. */
+#include "world2_internal.h"
+
+#include "../base/graph_color.h"
+
+#include <string.h>
+
+/* The gather below reads a solver body as nine consecutive reals. */
+typedef char cd2SolverBodyIsPacked[sizeof(cd2SolverBody) == 9 * sizeof(cdReal) ? 1 : -1];
+
+typedef struct cd2BodyLanes
+{
+	cdW vx, vy, w, dpx, dpy, qc, qs;
+} cd2BodyLanes;
+
+static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const int* index)
+{
+	cd2BodyLanes out;
+#if CD_WIDE_SSE
+	const float* b0 = (const float*)(bodies + index[0]);
+	const float* b1 = (const float*)(bodies + index[1]);
+	const float* b2 = (const float*)(bodies + index[2]);
+	const float* b3 = (const float*)(bodies + index[3]);
+	__m128 r0 = _mm_loadu_ps(b0), r1 = _mm_loadu_ps(b1), r2 = _mm_loadu_ps(b2), r3 = _mm_loadu_ps(b3);
+	_MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+	out.vx = r0;
+	out.vy = r1;
+	out.w = r2;
+	out.dpx = r3;
+	__m128 s0 = _mm_loadu_ps(b0 + 4), s1 = _mm_loadu_ps(b1 + 4), s2 = _mm_loadu_ps(b2 + 4),
+		   s3 = _mm_loadu_ps(b3 + 4);
+	_MM_TRANSPOSE4_PS(s0, s1, s2, s3);
+	out.dpy = s0;
+	out.qc = s1;
+	out.qs = s2;
+#else
+	for (int i = 0; i < CD_W; ++i)
+	{
+		const cd2SolverBody* b = bodies + index[i];
+		out.vx.v[i] = b->linearVelocity.x;
+		out.vy.v[i] = b->linearVelocity.y;
+		out.w.v[i] = b->angularVelocity;
+		out.dpx.v[i] = b->deltaPosition.x;
+		out.dpy.v[i] = b->deltaPosition.y;
+		out.qc.v[i] = b->deltaRotation.c;
+		out.qs.v[i] = b->deltaRotation.s;
+	}
+#endif
+	return out;
+}
+
+/* Writes the velocities back, lane 0 first (lanes that share the zero body or a kinematic body
+ * write it unchanged). */
+static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, cdW vx, cdW vy, cdW w)
+{
+	cdReal x[CD_W], y[CD_W], a[CD_W];
+	cdWStore(x, vx);
+	cdWStore(y, vy);
+	cdWStore(a, w);
+	for (int i = 0; i < CD_W; ++i)
+	{
+		cd2SolverBody* b = bodies + index[i];
+		b->linearVelocity.x = x[i];
+		b->linearVelocity.y = y[i];
+		b->angularVelocity = a[i];
+	}
+}
+
+bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
+{
+	int n = context->constraintCount;
+	const int* color = context->colorOfConstraint;
+	context->wideCount = 0;
+	context->overflowStart = 0;
+	if (color == NULL || n == 0)
+	{
+		return true;
+	}
+	int overflowStart = n;
+	int blockCount = 0;
+	for (int i = 0; i < n;)
+	{
+		if (color[i] >= CD_GRAPH_COLOR_COUNT)
+		{
+			overflowStart = i;
+			break;
+		}
+		int j = i;
+		while (j < n && color[j] == color[i])
+		{
+			++j;
+		}
+		blockCount += (j - i + CD_W - 1) / CD_W;
+		i = j;
+	}
+	cd2ContactConstraintWide* wide = (cd2ContactConstraintWide*)cdArena_AllocUncleared(
+		&world->arena, (size_t)blockCount * sizeof(cd2ContactConstraintWide));
+	if (blockCount > 0 && wide == NULL)
+	{
+		return false;
+	}
+	memset(wide, 0, (size_t)blockCount * sizeof(cd2ContactConstraintWide));
+	int zeroBody = context->bodyCount;
+	int block = 0;
+	for (int i = 0; i < overflowStart;)
+	{
+		int j = i;
+		while (j < overflowStart && color[j] == color[i])
+		{
+			++j;
+		}
+		for (int start = i; start < j; start += CD_W, ++block)
+		{
+			cd2ContactConstraintWide* w = wide + block;
+			for (int lane = 0; lane < CD_W; ++lane)
+			{
+				w->indexA[lane] = zeroBody;
+				w->indexB[lane] = zeroBody;
+				w->constraint[lane] = -1;
+				/* An empty lane's rotation is the identity, like the zero body's. */
+				if (start + lane >= j)
+				{
+					continue;
+				}
+				const cd2ContactConstraint* c = context->constraints + start + lane;
+				w->constraint[lane] = start + lane;
+				w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
+				w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
+				cdWSetLane(&w->invMassA, lane, c->invMassA);
+				cdWSetLane(&w->invIA, lane, c->invIA);
+				cdWSetLane(&w->invMassB, lane, c->invMassB);
+				cdWSetLane(&w->invIB, lane, c->invIB);
+				cdWSetLane(&w->normalX, lane, c->normal.x);
+				cdWSetLane(&w->normalY, lane, c->normal.y);
+				cdWSetLane(&w->friction, lane, c->friction);
+				cdWSetLane(&w->tangentSpeed, lane, c->tangentSpeed);
+				cdWSetLane(&w->rollingResistance, lane, c->rollingResistance);
+				cdWSetLane(&w->rollingMass, lane, c->rollingMass);
+				cdWSetLane(&w->rollingImpulse, lane, c->rollingImpulse);
+				cdWSetLane(&w->biasRate, lane, c->softness.biasRate);
+				cdWSetLane(&w->massScale, lane, c->softness.massScale);
+				cdWSetLane(&w->impulseScale, lane, c->softness.impulseScale);
+				for (int k = 0; k < c->pointCount; ++k)
+				{
+					const cd2ContactConstraintPoint* cp = c->points + k;
+					cd2ContactPointWide* wp = w->points + k;
+					cdWSetLane(&wp->anchorAx, lane, cp->anchorA.x);
+					cdWSetLane(&wp->anchorAy, lane, cp->anchorA.y);
+					cdWSetLane(&wp->anchorBx, lane, cp->anchorB.x);
+					cdWSetLane(&wp->anchorBy, lane, cp->anchorB.y);
+					cdWSetLane(&wp->baseSeparation, lane, cp->baseSeparation);
+					cdWSetLane(&wp->relativeVelocity, lane, cp->relativeVelocity);
+					cdWSetLane(&wp->normalImpulse, lane, cp->normalImpulse);
+					cdWSetLane(&wp->tangentImpulse, lane, cp->tangentImpulse);
+					cdWSetLane(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
+					cdWSetLane(&wp->normalMass, lane, cp->normalMass);
+					cdWSetLane(&wp->tangentMass, lane, cp->tangentMass);
+				}
+			}
+		}
+		i = j;
+	}
+	context->wide = wide;
+	context->wideCount = blockCount;
+	context->overflowStart = overflowStart;
+	return true;
+}
+
+void cd2WarmStartContactsWide(cd2StepContext* context)
+{
+	cd2SolverBody* bodies = context->bodies;
+	for (int i = 0; i < context->wideCount; ++i)
+	{
+		cd2ContactConstraintWide* c = context->wide + i;
+		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
+		cd2BodyLanes b = cd2GatherBodies(bodies, c->indexB);
+		cdW nx = c->normalX, ny = c->normalY;
+		cdW tx = ny, ty = cdWNeg(nx);
+		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
+		for (int k = 0; k < 2; ++k)
+		{
+			const cd2ContactPointWide* cp = c->points + k;
+			cdW Px = cdWAdd(cdWMul(cp->normalImpulse, nx), cdWMul(cp->tangentImpulse, tx));
+			cdW Py = cdWAdd(cdWMul(cp->normalImpulse, ny), cdWMul(cp->tangentImpulse, ty));
+			cdW crossA = cdWSub(cdWMul(cp->anchorAx, Py), cdWMul(cp->anchorAy, Px));
+			wA = cdWSub(wA, cdWMul(c->invIA, crossA));
+			vAx = cdWSub(vAx, cdWMul(c->invMassA, Px));
+			vAy = cdWSub(vAy, cdWMul(c->invMassA, Py));
+			cdW crossB = cdWSub(cdWMul(cp->anchorBx, Py), cdWMul(cp->anchorBy, Px));
+			wB = cdWAdd(wB, cdWMul(c->invIB, crossB));
+			vBx = cdWAdd(vBx, cdWMul(c->invMassB, Px));
+			vBy = cdWAdd(vBy, cdWMul(c->invMassB, Py));
+		}
+		wA = cdWSub(wA, cdWMul(c->invIA, c->rollingImpulse));
+		wB = cdWAdd(wB, cdWMul(c->invIB, c->rollingImpulse));
+		cd2ScatterVelocities(bodies, c->indexA, vAx, vAy, wA);
+		cd2ScatterVelocities(bodies, c->indexB, vBx, vBy, wB);
+	}
+}
+
+void cd2SolveContactsWide(cd2StepContext* context, bool useBias)
+{
+	cd2SolverBody* bodies = context->bodies;
+	cdW inv_h = cdWSplat(context->inv_h);
+	cdW minBias = cdWSplat(-context->contactPushMaxVelocity);
+	cdW zero = cdWZero(), one = cdWSplat(CD_R(1.0));
+	for (int i = 0; i < context->wideCount; ++i)
+	{
+		cd2ContactConstraintWide* c = context->wide + i;
+		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
+		cd2BodyLanes b = cd2GatherBodies(bodies, c->indexB);
+		cdW mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
+		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
+		cdW nx = c->normalX, ny = c->normalY;
+		cdW totalNormalImpulse = zero;
+		for (int k = 0; k < 2; ++k)
+		{
+			cd2ContactPointWide* cp = c->points + k;
+			cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
+			/* Current separation from the position deltas. */
+			cdW prAx = cdWAdd(a.dpx, cdWSub(cdWMul(a.qc, rAx), cdWMul(a.qs, rAy)));
+			cdW prAy = cdWAdd(a.dpy, cdWAdd(cdWMul(a.qs, rAx), cdWMul(a.qc, rAy)));
+			cdW prBx = cdWAdd(b.dpx, cdWSub(cdWMul(b.qc, rBx), cdWMul(b.qs, rBy)));
+			cdW prBy = cdWAdd(b.dpy, cdWAdd(cdWMul(b.qs, rBx), cdWMul(b.qc, rBy)));
+			cdW s = cdWAdd(cdWAdd(cdWMul(cdWSub(prBx, prAx), nx), cdWMul(cdWSub(prBy, prAy), ny)),
+						   cp->baseSeparation);
+			cdW apart = cdWGreater(s, zero);
+			cdW bias, massScale, impulseScale;
+			if (useBias)
+			{
+				cdW softBias = cdWMax(cdWMul(cdWMul(c->massScale, c->biasRate), s), minBias);
+				bias = cdWSelect(apart, cdWMul(s, inv_h), softBias);
+				massScale = cdWSelect(apart, one, c->massScale);
+				impulseScale = cdWSelect(apart, zero, c->impulseScale);
+			}
+			else
+			{
+				bias = cdWSelect(apart, cdWMul(s, inv_h), zero);
+				massScale = one;
+				impulseScale = zero;
+			}
+			cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
+			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
+			if (useBias)
+			{
+				cp->relativeVelocity = cdWMin(vn, cp->relativeVelocity);
+			}
+			cdW impulse = cdWSub(cdWMul(cdWNeg(cp->normalMass), cdWAdd(cdWMul(massScale, vn), bias)),
+								 cdWMul(impulseScale, cp->normalImpulse));
+			cdW newImpulse = cdWMax(cdWAdd(cp->normalImpulse, impulse), zero);
+			impulse = cdWSub(newImpulse, cp->normalImpulse);
+			cp->normalImpulse = newImpulse;
+			cp->maxNormalImpulse = cdWMax(cp->maxNormalImpulse, impulse);
+			totalNormalImpulse = cdWAdd(totalNormalImpulse, newImpulse);
+			cdW Px = cdWMul(impulse, nx), Py = cdWMul(impulse, ny);
+			vAx = cdWSub(vAx, cdWMul(mA, Px));
+			vAy = cdWSub(vAy, cdWMul(mA, Py));
+			wA = cdWSub(wA, cdWMul(iA, cdWSub(cdWMul(rAx, Py), cdWMul(rAy, Px))));
+			vBx = cdWAdd(vBx, cdWMul(mB, Px));
+			vBy = cdWAdd(vBy, cdWMul(mB, Py));
+			wB = cdWAdd(wB, cdWMul(iB, cdWSub(cdWMul(rBx, Py), cdWMul(rBy, Px))));
+		}
+
+		if (!useBias)
+		{
+			/* Friction and rolling resistance in the relax pass only (see contact_solver2.c). */
+			cdW tx = ny, ty = cdWNeg(nx);
+			for (int k = 0; k < 2; ++k)
+			{
+				cd2ContactPointWide* cp = c->points + k;
+				cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
+				cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+				cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
+				cdW vt = cdWSub(cdWAdd(cdWMul(dvx, tx), cdWMul(dvy, ty)), c->tangentSpeed);
+				cdW impulse = cdWMul(cdWNeg(cp->tangentMass), vt);
+				cdW maxFriction = cdWMul(c->friction, cp->normalImpulse);
+				cdW newImpulse = cdWClamp(cdWAdd(cp->tangentImpulse, impulse), cdWNeg(maxFriction), maxFriction);
+				impulse = cdWSub(newImpulse, cp->tangentImpulse);
+				cp->tangentImpulse = newImpulse;
+				cdW Px = cdWMul(impulse, tx), Py = cdWMul(impulse, ty);
+				vAx = cdWSub(vAx, cdWMul(mA, Px));
+				vAy = cdWSub(vAy, cdWMul(mA, Py));
+				wA = cdWSub(wA, cdWMul(iA, cdWSub(cdWMul(rAx, Py), cdWMul(rAy, Px))));
+				vBx = cdWAdd(vBx, cdWMul(mB, Px));
+				vBy = cdWAdd(vBy, cdWMul(mB, Py));
+				wB = cdWAdd(wB, cdWMul(iB, cdWSub(cdWMul(rBx, Py), cdWMul(rBy, Px))));
+			}
+			cdW rolling = cdWGreater(c->rollingResistance, zero);
+			cdW maxLambda = cdWMul(c->rollingResistance, totalNormalImpulse);
+			cdW lambda = cdWMul(cdWNeg(c->rollingMass), cdWSub(wB, wA));
+			cdW newLambda = cdWClamp(cdWAdd(c->rollingImpulse, lambda), cdWNeg(maxLambda), maxLambda);
+			lambda = cdWSub(newLambda, c->rollingImpulse);
+			c->rollingImpulse = cdWSelect(rolling, newLambda, c->rollingImpulse);
+			wA = cdWSelect(rolling, cdWSub(wA, cdWMul(iA, lambda)), wA);
+			wB = cdWSelect(rolling, cdWAdd(wB, cdWMul(iB, lambda)), wB);
+		}
+		cd2ScatterVelocities(bodies, c->indexA, vAx, vAy, wA);
+		cd2ScatterVelocities(bodies, c->indexB, vBx, vBy, wB);
+	}
+}
+
+void cd2StoreContactsWide(cd2StepContext* context)
+{
+	for (int i = 0; i < context->wideCount; ++i)
+	{
+		const cd2ContactConstraintWide* w = context->wide + i;
+		for (int lane = 0; lane < CD_W; ++lane)
+		{
+			if (w->constraint[lane] < 0)
+			{
+				continue;
+			}
+			cd2ContactConstraint* c = context->constraints + w->constraint[lane];
+			c->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
+			for (int k = 0; k < c->pointCount; ++k)
+			{
+				const cd2ContactPointWide* wp = w->points + k;
+				cd2ContactConstraintPoint* cp = c->points + k;
+				cp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
+				cp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
+				cp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
+				cp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+			}
+		}
+	}
+}
