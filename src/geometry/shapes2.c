@@ -7,8 +7,8 @@ const char* cd2GetShapeTypeName(cd2ShapeType type)
 {
 	switch (type)
 	{
-#define CD2_TYPE_NAME_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, ...)                             \
-	case CD2_TYPE_##Name:                                                                                  \
+#define CD2_TYPE_NAME_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, ...)                            \
+	case CD2_TYPE_##Name:                                                                                    \
 		return TypeName;
 		CD2_SHAPE_TABLE(CD2_TYPE_NAME_CASE)
 #undef CD2_TYPE_NAME_CASE
@@ -273,7 +273,7 @@ cdResult cd2ValidateShape(const cd2Shape* shape)
 	switch (shape->type)
 	{
 #define CD2_VALIDATE_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ...)                   \
-	case CD2_TYPE_##Name:                                                                                  \
+	case CD2_TYPE_##Name:                                                                                    \
 		return Validate(CD2_SHAPE_ARG(Name, shape));
 		CD2_SHAPE_TABLE(CD2_VALIDATE_CASE)
 #undef CD2_VALIDATE_CASE
@@ -343,7 +343,7 @@ cd2Aabb cd2ComputeShapeAabb(const cd2Shape* shape)
 	switch (shape->type)
 	{
 #define CD2_AABB_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ...)          \
-	case CD2_TYPE_##Name:                                                                                  \
+	case CD2_TYPE_##Name:                                                                                    \
 		return ComputeAabb(CD2_SHAPE_ARG(Name, shape));
 		CD2_SHAPE_TABLE(CD2_AABB_CASE)
 #undef CD2_AABB_CASE

@@ -7,8 +7,8 @@ const char* cd3GetShapeTypeName(cd3ShapeType type)
 {
 	switch (type)
 	{
-#define CD3_TYPE_NAME_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, ...)                             \
-	case CD3_TYPE_##Name:                                                                                  \
+#define CD3_TYPE_NAME_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, ...)                            \
+	case CD3_TYPE_##Name:                                                                                    \
 		return TypeName;
 		CD3_SHAPE_TABLE(CD3_TYPE_NAME_CASE)
 #undef CD3_TYPE_NAME_CASE
@@ -267,7 +267,7 @@ cdResult cd3ValidateShape(const cd3Shape* shape)
 	switch (shape->type)
 	{
 #define CD3_VALIDATE_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ...)                   \
-	case CD3_TYPE_##Name:                                                                                  \
+	case CD3_TYPE_##Name:                                                                                    \
 		return Validate(CD3_SHAPE_ARG(Name, shape));
 		CD3_SHAPE_TABLE(CD3_VALIDATE_CASE)
 #undef CD3_VALIDATE_CASE
@@ -387,7 +387,7 @@ cd3Aabb cd3ComputeShapeAabb(const cd3Shape* shape)
 	switch (shape->type)
 	{
 #define CD3_AABB_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ...)          \
-	case CD3_TYPE_##Name:                                                                                  \
+	case CD3_TYPE_##Name:                                                                                    \
 		return ComputeAabb(CD3_SHAPE_ARG(Name, shape));
 		CD3_SHAPE_TABLE(CD3_AABB_CASE)
 #undef CD3_AABB_CASE

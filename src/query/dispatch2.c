@@ -46,7 +46,7 @@ bool cd2PointInShape(const cd2Shape* shape, cd2Vec p)
 	switch (shape->type)
 	{
 #define CD2_POINT_IN_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                       \
-	case CD2_TYPE_##Name:                                                                                  \
+	case CD2_TYPE_##Name:                                                                                    \
 		return PointIn(p, CD2_SHAPE_ARG(Name, shape));
 		CD2_SHAPE_TABLE(CD2_POINT_IN_CASE)
 #undef CD2_POINT_IN_CASE
@@ -63,7 +63,7 @@ cd2Vec cd2ClosestPointOnShape(const cd2Shape* shape, cd2Vec p)
 	switch (shape->type)
 	{
 #define CD2_CLOSEST_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                        \
-	case CD2_TYPE_##Name:                                                                                  \
+	case CD2_TYPE_##Name:                                                                                    \
 		return ClosestPointOn(CD2_SHAPE_ARG(Name, shape), p);
 		CD2_SHAPE_TABLE(CD2_CLOSEST_CASE)
 #undef CD2_CLOSEST_CASE

@@ -84,7 +84,7 @@ bool cd3PointInShape(const cd3Shape* shape, cd3Vec p)
 	switch (shape->type)
 	{
 #define CD3_POINT_IN_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                       \
-	case CD3_TYPE_##Name:                                                                                  \
+	case CD3_TYPE_##Name:                                                                                    \
 		return PointIn(p, CD3_SHAPE_ARG(Name, shape));
 		CD3_SHAPE_TABLE(CD3_POINT_IN_CASE)
 #undef CD3_POINT_IN_CASE
@@ -101,7 +101,7 @@ cd3Vec cd3ClosestPointOnShape(const cd3Shape* shape, cd3Vec p)
 	switch (shape->type)
 	{
 #define CD3_CLOSEST_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                        \
-	case CD3_TYPE_##Name:                                                                                  \
+	case CD3_TYPE_##Name:                                                                                    \
 		return ClosestPointOn(CD3_SHAPE_ARG(Name, shape), p);
 		CD3_SHAPE_TABLE(CD3_CLOSEST_CASE)
 #undef CD3_CLOSEST_CASE

@@ -963,12 +963,13 @@ cd2Manifold cd2Collide(const cd2Shape* a, const cd2Shape* b, cdReal speculativeD
 		switch (CD2_PAIR_KEY(first->type, second->type))
 		{
 #define CD2_COLLIDE_TYPED_CASE(A, B, Collide)                                                                \
-	case CD2_PAIR_KEY(CD2_TYPE_##A, CD2_TYPE_##B):                                                         \
-	{                                                                                                      \
+	case CD2_PAIR_KEY(CD2_TYPE_##A, CD2_TYPE_##B):                                                           \
+	{                                                                                                        \
 		cd2Manifold typed = Collide(CD2_SHAPE_ARG(A, first), CD2_SHAPE_ARG(B, second), speculativeDistance); \
-		return flip ? Flipped(typed) : typed;                                                              \
+		return flip ? Flipped(typed) : typed;                                                                \
 	}
-#define CD2_COLLIDE_CASE(A, B, Overlap, Distance, Collide) CD_PAIR_TYPED(Collide, CD2_COLLIDE_TYPED_CASE)(A, B, Collide)
+#define CD2_COLLIDE_CASE(A, B, Overlap, Distance, Collide)                                                   \
+	CD_PAIR_TYPED(Collide, CD2_COLLIDE_TYPED_CASE)(A, B, Collide)
 			CD2_PAIR_TABLE(CD2_COLLIDE_CASE)
 #undef CD2_COLLIDE_CASE
 #undef CD2_COLLIDE_TYPED_CASE

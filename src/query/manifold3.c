@@ -1965,12 +1965,13 @@ cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal speculativeD
 		switch (CD3_PAIR_KEY(first->type, second->type))
 		{
 #define CD3_COLLIDE_TYPED_CASE(A, B, Collide)                                                                \
-	case CD3_PAIR_KEY(CD3_TYPE_##A, CD3_TYPE_##B):                                                         \
-	{                                                                                                      \
+	case CD3_PAIR_KEY(CD3_TYPE_##A, CD3_TYPE_##B):                                                           \
+	{                                                                                                        \
 		cd3Manifold typed = Collide(CD3_SHAPE_ARG(A, first), CD3_SHAPE_ARG(B, second), speculativeDistance); \
-		return flip ? Flipped(typed) : typed;                                                              \
+		return flip ? Flipped(typed) : typed;                                                                \
 	}
-#define CD3_COLLIDE_CASE(A, B, Overlap, Distance, Collide) CD_PAIR_TYPED(Collide, CD3_COLLIDE_TYPED_CASE)(A, B, Collide)
+#define CD3_COLLIDE_CASE(A, B, Overlap, Distance, Collide)                                                   \
+	CD_PAIR_TYPED(Collide, CD3_COLLIDE_TYPED_CASE)(A, B, Collide)
 			CD3_PAIR_TABLE(CD3_COLLIDE_CASE)
 			CD3_HULL_PAIR_TABLE(CD3_COLLIDE_CASE)
 #undef CD3_COLLIDE_CASE

@@ -397,7 +397,7 @@ bool cd2Raycast(const cd2Shape* shape, cd2Ray ray, cd2RayHit* hit)
 	switch (shape->type)
 	{
 #define CD2_RAYCAST_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                        \
-	case CD2_TYPE_##Name:                                                                                  \
+	case CD2_TYPE_##Name:                                                                                    \
 		return Raycast(CD2_SHAPE_ARG(Name, shape), ray, hit);
 		CD2_SHAPE_TABLE(CD2_RAYCAST_CASE)
 #undef CD2_RAYCAST_CASE

@@ -531,7 +531,7 @@ bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit)
 	switch (shape->type)
 	{
 #define CD3_RAYCAST_CASE(Name, PointIn, ClosestPointOn, Raycast, ...)                                        \
-	case CD3_TYPE_##Name:                                                                                  \
+	case CD3_TYPE_##Name:                                                                                    \
 		return Raycast(CD3_SHAPE_ARG(Name, shape), ray, hit);
 		CD3_SHAPE_TABLE(CD3_RAYCAST_CASE)
 #undef CD3_RAYCAST_CASE
