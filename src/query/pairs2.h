@@ -1,7 +1,8 @@
 /* collide: the 2D shape table and pair table (internal). Every shape type has one row in
  * CD2_SHAPE_TABLE and every unordered pair of shape types one row in CD2_PAIR_TABLE, in the
  * canonical order of cd2ShapeType (the order pair functions name their shapes). The generic
- * dispatchers expand them (dispatch2.c, raycast2.c) and so do the matrix tests, so adding a shape
+ * dispatchers expand them (dispatch2.c, raycast2.c, manifold2.c,
+ * geometry/shapes2.c, geometry/mass2.c) and so do the matrix tests, so adding a shape
  * means writing its functions and adding its rows (CONTRIBUTING.md, "Adding a shape").
  *
  * Per shape, besides its table row: CD2_TYPE_<Name> (its cd2ShapeType) and CD2_ARG_OF_<Name>(s)

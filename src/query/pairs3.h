@@ -2,7 +2,8 @@
  * CD3_SHAPE_TABLE and every unordered pair of shape types one row in CD3_PAIR_TABLE (pairs with a
  * closed-form overlap test) or CD3_HULL_PAIR_TABLE (pairs with a hull: overlap by GJK), in the
  * canonical order of cd3ShapeType (the order pair functions name their shapes). The generic
- * dispatchers expand them (dispatch3.c, raycast3.c) and so do the matrix tests, so adding a shape
+ * dispatchers expand them (dispatch3.c, raycast3.c, manifold3.c,
+ * geometry/shapes3.c, geometry/mass3.c) and so do the matrix tests, so adding a shape
  * means writing its functions and adding its rows (CONTRIBUTING.md, "Adding a shape").
  *
  * Per shape, besides its table row: CD3_TYPE_<Name> (its cd3ShapeType) and CD3_ARG_OF_<Name>(s)
