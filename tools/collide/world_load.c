@@ -337,7 +337,7 @@ static bool readInt(WLoader* loader, const cJSON* object, const char* key, int m
 	{
 		return true;
 	}
-	double value;
+	double value = 0.0;
 	if (!numberItem(loader, item, key, &value))
 	{
 		return false;
@@ -361,7 +361,7 @@ static bool readAngle(WLoader* loader, const cJSON* object, const char* radiansK
 	{
 		return failAt(loader, degreesKey, "give \"%s\" or \"%s\", not both", radiansKey, degreesKey);
 	}
-	double value;
+	double value = 0.0;
 	if (r != NULL)
 	{
 		if (!numberItem(loader, r, radiansKey, &value))
