@@ -10,8 +10,7 @@
  * library's validator accepts, each hull shape with the hull the document owns); every pair's
  * answer is finite with a non-negative distance, and a 2D contact has 1 or 2 points, a unit
  * normal and finite separations. */
-#define _POSIX_C_SOURCE 200809L /* mkstemp */
-
+#include "fuzz_scratch.h"
 #include "scene.h"
 
 #include <math.h>
@@ -21,7 +20,6 @@
 #include <string.h>
 #include <unistd.h>
 
-static char s_path[256];
 static FILE* s_null;
 
 static void Fail(const char* what, int scene, int shape)
@@ -29,45 +27,6 @@ static void Fail(const char* what, int scene, int shape)
 	fprintf(stderr, "fuzz_scene: %s (scene %d, shape %d)\n", what, scene, shape);
 	fflush(stderr);
 	abort();
-}
-
-static void RemoveScratchFile(void)
-{
-	if (s_path[0] != 0)
-	{
-		remove(s_path);
-	}
-}
-
-static bool Setup(void)
-{
-	if (s_path[0] != 0)
-	{
-		return true;
-	}
-	const char* dir = getenv("TMPDIR");
-	snprintf(s_path, sizeof s_path, "%s/fuzz_scene_XXXXXX", dir != NULL && dir[0] != 0 ? dir : "/tmp");
-	int fd = mkstemp(s_path);
-	if (fd < 0)
-	{
-		s_path[0] = 0;
-		return false;
-	}
-	close(fd);
-	atexit(RemoveScratchFile);
-	s_null = fopen("/dev/null", "w");
-	return s_null != NULL;
-}
-
-static bool WriteInput(const uint8_t* data, size_t size)
-{
-	FILE* file = fopen(s_path, "wb");
-	if (file == NULL)
-	{
-		return false;
-	}
-	bool ok = fwrite(data, 1, size, file) == size;
-	return fclose(file) == 0 && ok;
 }
 
 static void CheckDocument(const ToolDocument* document)
@@ -155,15 +114,16 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-	if (!Setup() || !WriteInput(data, size))
+	const char* path = WriteScratchFile("fuzz_scene", data, size);
+	if (s_null == NULL && (s_null = fopen("/dev/null", "w")) == NULL)
 	{
-		fprintf(stderr, "fuzz_scene: cannot write the scratch file %s\n", s_path);
+		fprintf(stderr, "fuzz_scene: cannot open /dev/null\n");
 		abort();
 	}
 	ToolDocument document;
 	ToolError error;
 	memset(&error, 0x5a, sizeof error);
-	if (!toolLoadDocument(s_path, &document, &error))
+	if (!toolLoadDocument(path, &document, &error))
 	{
 		if (document.sceneCount != 0 || document.scenes != NULL)
 		{

@@ -9,8 +9,7 @@
  * a loaded world holds what the format allows (counts within the limits, every body id valid, a
  * time step in (0, 1], 1 to 64 sub-steps); three steps keep every body's position, angle and
  * velocities finite. */
-#define _POSIX_C_SOURCE 200809L /* mkstemp */
-
+#include "fuzz_scratch.h"
 #include "world_scene.h"
 
 #include <math.h>
@@ -20,51 +19,12 @@
 #include <string.h>
 #include <unistd.h>
 
-static char s_path[256];
 
 static void Fail(const char* what, int body)
 {
 	fprintf(stderr, "fuzz_world_scene: %s (body %d)\n", what, body);
 	fflush(stderr);
 	abort();
-}
-
-static void RemoveScratchFile(void)
-{
-	if (s_path[0] != 0)
-	{
-		remove(s_path);
-	}
-}
-
-static bool Setup(void)
-{
-	if (s_path[0] != 0)
-	{
-		return true;
-	}
-	const char* dir = getenv("TMPDIR");
-	snprintf(s_path, sizeof s_path, "%s/fuzz_world_scene_XXXXXX", dir != NULL && dir[0] != 0 ? dir : "/tmp");
-	int fd = mkstemp(s_path);
-	if (fd < 0)
-	{
-		s_path[0] = 0;
-		return false;
-	}
-	close(fd);
-	atexit(RemoveScratchFile);
-	return true;
-}
-
-static bool WriteInput(const uint8_t* data, size_t size)
-{
-	FILE* file = fopen(s_path, "wb");
-	if (file == NULL)
-	{
-		return false;
-	}
-	bool ok = fwrite(data, 1, size, file) == size;
-	return fclose(file) == 0 && ok;
 }
 
 static bool Finite2(cd2Vec v)
@@ -76,15 +36,11 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-	if (!Setup() || !WriteInput(data, size))
-	{
-		fprintf(stderr, "fuzz_world_scene: cannot write the scratch file %s\n", s_path);
-		abort();
-	}
+	const char* path = WriteScratchFile("fuzz_world_scene", data, size);
 	ToolWorld world;
 	ToolError error;
 	memset(&error, 0x5a, sizeof error);
-	if (!toolLoadWorld(s_path, &world, &error))
+	if (!toolLoadWorld(path, &world, &error))
 	{
 		if (world.world.index1 != 0 || world.bodies != NULL || world.bodyCount != 0)
 		{

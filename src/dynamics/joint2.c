@@ -577,9 +577,11 @@ static cd2Joint* cd2JointForSet(cd2JointId jointId, cd2JointType type, bool vali
 	return joint;
 }
 
-void cd2RevoluteJoint_EnableMotor(cd2JointId jointId, bool flag)
+/* The bodies of the setters shared by the typed ones (cd2RevoluteJoint_...) and the generic ones
+ * (cd2Joint_...); `joint` is NULL when the setter refused. Turning a motor or a limit on or off
+ * drops its accumulated impulse: warm starting must not keep a removed constraint. */
+static void cd2ApplyEnableMotor(cd2Joint* joint, bool flag)
 {
-	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
 	if (joint != NULL)
 	{
 		if (joint->data.enableMotor != flag)
@@ -588,6 +590,36 @@ void cd2RevoluteJoint_EnableMotor(cd2JointId jointId, bool flag)
 		}
 		joint->data.enableMotor = flag;
 	}
+}
+
+static void cd2ApplyEnableLimit(cd2Joint* joint, bool flag)
+{
+	if (joint != NULL)
+	{
+		if (joint->data.enableLimit != flag)
+		{
+			joint->data.lowerImpulse = CD_R(0.0);
+			joint->data.upperImpulse = CD_R(0.0);
+		}
+		joint->data.enableLimit = flag;
+	}
+}
+
+/* A revolute joint's limits are angles, kept within [-pi, pi]. */
+static void cd2ApplyLimits(cd2Joint* joint, cdReal lower, cdReal upper)
+{
+	if (joint->type == CD2_REVOLUTE_JOINT)
+	{
+		lower = cdClamp(lower, -CD_PI, CD_PI);
+		upper = cdClamp(upper, -CD_PI, CD_PI);
+	}
+	joint->data.lower = lower;
+	joint->data.upper = upper;
+}
+
+void cd2RevoluteJoint_EnableMotor(cd2JointId jointId, bool flag)
+{
+	cd2ApplyEnableMotor(cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true), flag);
 }
 
 void cd2RevoluteJoint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed)
@@ -610,16 +642,7 @@ void cd2RevoluteJoint_SetMaxMotorTorque(cd2JointId jointId, cdReal torque)
 
 void cd2RevoluteJoint_EnableLimit(cd2JointId jointId, bool flag)
 {
-	cd2Joint* joint = cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true);
-	if (joint != NULL)
-	{
-		if (joint->data.enableLimit != flag)
-		{
-			joint->data.lowerImpulse = CD_R(0.0);
-			joint->data.upperImpulse = CD_R(0.0);
-		}
-		joint->data.enableLimit = flag;
-	}
+	cd2ApplyEnableLimit(cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, true), flag);
 }
 
 void cd2RevoluteJoint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
@@ -628,8 +651,7 @@ void cd2RevoluteJoint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
 		cd2JointForSet(jointId, CD2_REVOLUTE_JOINT, cd2Finite(lower) && cd2Finite(upper) && lower <= upper);
 	if (joint != NULL)
 	{
-		joint->data.lower = cdClamp(lower, -CD_PI, CD_PI);
-		joint->data.upper = cdClamp(upper, -CD_PI, CD_PI);
+		cd2ApplyLimits(joint, lower, upper);
 	}
 }
 
@@ -771,15 +793,7 @@ void cd2Joint_SetSpringDampingRatio(cd2JointId jointId, cdReal dampingRatio)
 
 void cd2Joint_EnableMotor(cd2JointId jointId, bool flag)
 {
-	cd2Joint* joint = cd2JointForOption(jointId, true, false);
-	if (joint != NULL)
-	{
-		if (joint->data.enableMotor != flag)
-		{
-			joint->data.motorImpulse = CD_R(0.0);
-		}
-		joint->data.enableMotor = flag;
-	}
+	cd2ApplyEnableMotor(cd2JointForOption(jointId, true, false), flag);
 }
 
 void cd2Joint_SetMotorSpeed(cd2JointId jointId, cdReal motorSpeed)
@@ -802,16 +816,7 @@ void cd2Joint_SetMaxMotor(cd2JointId jointId, cdReal maxForceOrTorque)
 
 void cd2Joint_EnableLimit(cd2JointId jointId, bool flag)
 {
-	cd2Joint* joint = cd2JointForOption(jointId, true, false);
-	if (joint != NULL)
-	{
-		if (joint->data.enableLimit != flag)
-		{
-			joint->data.lowerImpulse = CD_R(0.0);
-			joint->data.upperImpulse = CD_R(0.0);
-		}
-		joint->data.enableLimit = flag;
-	}
+	cd2ApplyEnableLimit(cd2JointForOption(jointId, true, false), flag);
 }
 
 void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
@@ -827,13 +832,7 @@ void cd2Joint_SetLimits(cd2JointId jointId, cdReal lower, cdReal upper)
 		CD2_REFUSE("cd2Joint_SetLimits: use cd2DistanceJoint_SetLengthRange for distance joints");
 		return;
 	}
-	if (joint->type == CD2_REVOLUTE_JOINT)
-	{
-		lower = cdClamp(lower, -CD_PI, CD_PI);
-		upper = cdClamp(upper, -CD_PI, CD_PI);
-	}
-	joint->data.lower = lower;
-	joint->data.upper = upper;
+	cd2ApplyLimits(joint, lower, upper);
 }
 
 cdReal cd2Joint_GetTranslation(cd2JointId jointId)

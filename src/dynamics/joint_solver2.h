@@ -47,4 +47,29 @@ static inline cd2Vec cd2AnchorSeparation(const cd2SolverBody* a, const cd2Solver
 	return cd2Add(cd2Add(cd2Sub(b->deltaPosition, a->deltaPosition), cd2Sub(rB, rA)), deltaCenter);
 }
 
+/* One side of a limit (lower or upper) of mass `mass`: C is the distance to the limit (positive
+ * while inside it) and Cdot the rate at which C grows. Speculative while C > 0 (stops exactly at
+ * the limit), soft with the joint's softness when pushing out with bias. Accumulates into
+ * *accumulated, which stays non-negative, and returns the impulse to apply along the side. */
+static inline cdReal cd2SolveLimitSide(const cd2JointData* d, const cd2StepContext* context, bool useBias,
+									   cdReal mass, cdReal C, cdReal Cdot, cdReal* accumulated)
+{
+	cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
+	if (C > CD_R(0.0))
+	{
+		bias = C * context->inv_h;
+	}
+	else if (useBias)
+	{
+		bias = d->jointSoftness.biasRate * C;
+		massScale = d->jointSoftness.massScale;
+		impulseScale = d->jointSoftness.impulseScale;
+	}
+	cdReal impulse = -mass * massScale * (Cdot + bias) - impulseScale * *accumulated;
+	cdReal newImpulse = cdMax(*accumulated + impulse, CD_R(0.0));
+	impulse = newImpulse - *accumulated;
+	*accumulated = newImpulse;
+	return impulse;
+}
+
 #endif

@@ -105,22 +105,8 @@ void cd2SolveAxialRows(cd2JointSolverArgs* args, bool useBias, bool motorIsLinea
 			cdReal sign = side == 0 ? CD_R(1.0) : CD_R(-1.0);
 			cdReal C = side == 0 ? f.translation - d->lower : d->upper - f.translation;
 			cdReal* accumulated = side == 0 ? &d->lowerImpulse : &d->upperImpulse;
-			cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
-			if (C > CD_R(0.0))
-			{
-				bias = C * context->inv_h;
-			}
-			else if (useBias)
-			{
-				bias = d->jointSoftness.biasRate * C;
-				massScale = d->jointSoftness.massScale;
-				impulseScale = d->jointSoftness.impulseScale;
-			}
 			cdReal Cdot = sign * cd2AxialVelocity(args, &f);
-			cdReal impulse = -axialMass * massScale * (Cdot + bias) - impulseScale * *accumulated;
-			cdReal newImpulse = cdMax(*accumulated + impulse, CD_R(0.0));
-			impulse = newImpulse - *accumulated;
-			*accumulated = newImpulse;
+			cdReal impulse = cd2SolveLimitSide(d, context, useBias, axialMass, C, Cdot, accumulated);
 			cd2ApplyAxial(args, &f, sign * impulse);
 		}
 	}

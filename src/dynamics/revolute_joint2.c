@@ -55,49 +55,15 @@ void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias)
 	if (d->enableLimit && !fixedRotation)
 	{
 		/* lower */
-		{
-			cdReal C = jointAngle - d->lower;
-			cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
-			if (C > CD_R(0.0))
-			{
-				bias = C * context->inv_h;
-			}
-			else if (useBias)
-			{
-				bias = d->jointSoftness.biasRate * C;
-				massScale = d->jointSoftness.massScale;
-				impulseScale = d->jointSoftness.impulseScale;
-			}
-			cdReal Cdot = b->angularVelocity - a->angularVelocity;
-			cdReal impulse = -d->axialMass * massScale * (Cdot + bias) - impulseScale * d->lowerImpulse;
-			cdReal newImpulse = cdMax(d->lowerImpulse + impulse, CD_R(0.0));
-			impulse = newImpulse - d->lowerImpulse;
-			d->lowerImpulse = newImpulse;
-			a->angularVelocity -= iA * impulse;
-			b->angularVelocity += iB * impulse;
-		}
+		cdReal impulse = cd2SolveLimitSide(d, context, useBias, d->axialMass, jointAngle - d->lower,
+										   b->angularVelocity - a->angularVelocity, &d->lowerImpulse);
+		a->angularVelocity -= iA * impulse;
+		b->angularVelocity += iB * impulse;
 		/* upper: the same with the sign flipped */
-		{
-			cdReal C = d->upper - jointAngle;
-			cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
-			if (C > CD_R(0.0))
-			{
-				bias = C * context->inv_h;
-			}
-			else if (useBias)
-			{
-				bias = d->jointSoftness.biasRate * C;
-				massScale = d->jointSoftness.massScale;
-				impulseScale = d->jointSoftness.impulseScale;
-			}
-			cdReal Cdot = a->angularVelocity - b->angularVelocity;
-			cdReal impulse = -d->axialMass * massScale * (Cdot + bias) - impulseScale * d->upperImpulse;
-			cdReal newImpulse = cdMax(d->upperImpulse + impulse, CD_R(0.0));
-			impulse = newImpulse - d->upperImpulse;
-			d->upperImpulse = newImpulse;
-			a->angularVelocity += iA * impulse;
-			b->angularVelocity -= iB * impulse;
-		}
+		impulse = cd2SolveLimitSide(d, context, useBias, d->axialMass, d->upper - jointAngle,
+									a->angularVelocity - b->angularVelocity, &d->upperImpulse);
+		a->angularVelocity += iA * impulse;
+		b->angularVelocity -= iB * impulse;
 	}
 	/* The point. */
 	{

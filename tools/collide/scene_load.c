@@ -40,7 +40,7 @@
  * Every error names the file, the line where it was found and the reason. cJSON keeps no
  * positions, so after a semantic error the loader finds the line by walking the text along the
  * path of the offending value (json_locate.c). */
-#include "json_locate.h"
+#include "json_read.h"
 #include "scene.h"
 #include "world_scene.h"
 
@@ -53,69 +53,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TOOL_MAX_PATH 8
-
 typedef struct Loader
 {
-	const char* text;
-	size_t length;
-	ToolError* error;
-	JsonPathStep path[TOOL_MAX_PATH];
-	int depth;
+	JsonReader json; /* the text and the path being read */
 	int dimension;
 	const char* shapeName; /* for messages; NULL before the shape's name is known */
 	int shapeIndex;
 	const char* sceneName; /* for messages about a scene itself */
 } Loader;
-
-static void pushKey(Loader* loader, const char* key)
-{
-	if (loader->depth < TOOL_MAX_PATH)
-	{
-		loader->path[loader->depth].key = key;
-		loader->path[loader->depth].index = 0;
-	}
-	++loader->depth;
-}
-
-static void pushIndex(Loader* loader, int index)
-{
-	if (loader->depth < TOOL_MAX_PATH)
-	{
-		loader->path[loader->depth].key = NULL;
-		loader->path[loader->depth].index = index;
-	}
-	++loader->depth;
-}
-
-static void pop(Loader* loader)
-{
-	--loader->depth;
-}
-
-/* The line of the current path plus `key` (when not NULL), or of the nearest enclosing value that
- * can be found. */
-static int currentLine(const Loader* loader, const char* key)
-{
-	JsonPathStep path[TOOL_MAX_PATH + 1];
-	int depth = loader->depth < TOOL_MAX_PATH ? loader->depth : TOOL_MAX_PATH;
-	memcpy(path, loader->path, (size_t)depth * sizeof(JsonPathStep));
-	if (key != NULL)
-	{
-		path[depth].key = key;
-		path[depth].index = 0;
-		++depth;
-	}
-	for (; depth >= 0; --depth)
-	{
-		size_t offset;
-		if (jsonLocate(loader->text, loader->length, path, depth, &offset))
-		{
-			return jsonLineOfOffset(loader->text, loader->length, offset);
-		}
-	}
-	return 0;
-}
 
 /* Records an error about the value at the current path (plus `key`). Always returns false. */
 #if defined(__GNUC__)
@@ -130,111 +75,35 @@ failAt(Loader* loader, const char* key, const char* format, ...)
 	vsnprintf(reason, sizeof reason, format, args);
 	va_end(args);
 	/* An error about a whole shape points at its name: that is where a reader looks for it. */
-	loader->error->line = currentLine(loader, key == NULL && loader->shapeName != NULL ? "name" : key);
+	ToolError* error = loader->json.error;
+	error->line = jsonReaderLine(&loader->json, key == NULL && loader->shapeName != NULL ? "name" : key);
 	if (loader->shapeName != NULL)
 	{
-		snprintf(loader->error->message, sizeof loader->error->message, "shape \"%s\": %s", loader->shapeName,
-				 reason);
+		snprintf(error->message, sizeof error->message, "shape \"%s\": %s", loader->shapeName, reason);
 	}
 	else if (loader->shapeIndex >= 0)
 	{
-		snprintf(loader->error->message, sizeof loader->error->message, "shape #%d: %s",
-				 loader->shapeIndex + 1, reason);
+		snprintf(error->message, sizeof error->message, "shape #%d: %s", loader->shapeIndex + 1, reason);
 	}
 	else if (loader->sceneName != NULL)
 	{
-		snprintf(loader->error->message, sizeof loader->error->message, "scene \"%s\": %s", loader->sceneName,
-				 reason);
+		snprintf(error->message, sizeof error->message, "scene \"%s\": %s", loader->sceneName, reason);
 	}
 	else
 	{
-		snprintf(loader->error->message, sizeof loader->error->message, "%s", reason);
+		snprintf(error->message, sizeof error->message, "%s", reason);
 	}
 	return false;
 }
 
-static const char* jsonTypeName(const cJSON* item)
-{
-	if (cJSON_IsObject(item))
-	{
-		return "an object";
-	}
-	if (cJSON_IsArray(item))
-	{
-		return "an array";
-	}
-	if (cJSON_IsString(item))
-	{
-		return "a string";
-	}
-	if (cJSON_IsNumber(item))
-	{
-		return "a number";
-	}
-	if (cJSON_IsBool(item))
-	{
-		return "a boolean";
-	}
-	if (cJSON_IsNull(item))
-	{
-		return "null";
-	}
-	return "an unknown value";
-}
-
 /* ---- fields ---------------------------------------------------------------------------------- */
-
-/* A user's string, safe to quote in a one-line message: control characters and bytes outside
- * ASCII become '?', and it is cut after 40 characters. */
-static const char* printable(const char* text, char* buffer, size_t size)
-{
-	size_t n = 0;
-	for (const unsigned char* p = (const unsigned char*)text; *p != 0 && n + 4 < size && n < 40; ++p)
-	{
-		buffer[n++] = (*p >= 0x20 && *p < 0x7f) ? (char)*p : '?';
-	}
-	if (text[n] != 0 && n + 4 < size)
-	{
-		memcpy(buffer + n, "...", 3);
-		n += 3;
-	}
-	buffer[n] = 0;
-	return buffer;
-}
 
 /* Rejects unknown and repeated keys (comment is always allowed). `allowed` ends with NULL. */
 static bool checkKeys(Loader* loader, const cJSON* object, const char* const* allowed)
 {
-	for (const cJSON* child = object->child; child != NULL; child = child->next)
-	{
-		const char* key = child->string != NULL ? child->string : "";
-		bool known = strcmp(key, "comment") == 0;
-		for (int i = 0; !known && allowed[i] != NULL; ++i)
-		{
-			known = strcmp(key, allowed[i]) == 0;
-		}
-		if (!known)
-		{
-			char list[256] = "";
-			for (int i = 0; allowed[i] != NULL; ++i)
-			{
-				size_t used = strlen(list);
-				snprintf(list + used, sizeof list - used, "%s\"%s\"", i > 0 ? ", " : "", allowed[i]);
-			}
-			char shown[48];
-			return failAt(loader, key, "unknown field \"%s\" (expected %s)",
-						  printable(key, shown, sizeof shown), list);
-		}
-		for (const cJSON* other = object->child; other != child; other = other->next)
-		{
-			if (other->string != NULL && strcmp(other->string, key) == 0)
-			{
-				char shown[48];
-				return failAt(loader, key, "field \"%s\" appears twice", printable(key, shown, sizeof shown));
-			}
-		}
-	}
-	return true;
+	char reason[384];
+	const char* key = jsonFindBadKey(object, allowed, sizeof allowed[0], reason, sizeof reason);
+	return key == NULL || failAt(loader, key, "%s", reason);
 }
 
 static bool checkNumber(Loader* loader, const char* key, const char* what, double value)
@@ -1038,7 +907,7 @@ static bool readShape(Loader* loader, const cJSON* object, ToolShape* shape)
 		return false;
 	}
 	loader->shapeName = shape->name;
-	shape->line = currentLine(loader, "name");
+	shape->line = jsonReaderLine(&loader->json, "name");
 
 	const cJSON* typeItem = cJSON_GetObjectItemCaseSensitive(object, "type");
 	if (typeItem == NULL)
@@ -1056,7 +925,7 @@ static bool readShape(Loader* loader, const cJSON* object, ToolShape* shape)
 	{
 		char shown[48];
 		return failAt(loader, "type", "unknown shape type \"%s\" in a %dD scene (expected one of %s)",
-					  printable(typeItem->valuestring, shown, sizeof shown), loader->dimension, types);
+					  jsonPrintable(typeItem->valuestring, shown, sizeof shown), loader->dimension, types);
 	}
 	shape->typeName = info->name;
 	if (!checkKeys(loader, object, info->fields))
@@ -1136,11 +1005,11 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 	{
 		return failAt(loader, NULL, "out of memory");
 	}
-	pushKey(loader, "shapes");
+	jsonReaderPushKey(&loader->json, "shapes");
 	int index = 0;
 	for (const cJSON* item = shapes->child; item != NULL; item = item->next, ++index)
 	{
-		pushIndex(loader, index);
+		jsonReaderPushIndex(&loader->json, index);
 		loader->shapeName = NULL;
 		loader->shapeIndex = index;
 		bool ok = readShape(loader, item, &scene->shapes[index]);
@@ -1156,18 +1025,18 @@ static bool readScene(Loader* loader, const cJSON* object, int sceneIndex, ToolS
 				}
 			}
 		}
-		pop(loader);
+		jsonReaderPop(&loader->json);
 		if (!ok)
 		{
 			/* Not counted in shapeCount, so toolFreeDocument would not see its hull. */
 			cd3DestroyHull(scene->shapes[index].hull);
 			scene->shapes[index].hull = NULL;
-			pop(loader);
+			jsonReaderPop(&loader->json);
 			return false;
 		}
 		++scene->shapeCount;
 	}
-	pop(loader);
+	jsonReaderPop(&loader->json);
 	loader->shapeName = NULL;
 	loader->shapeIndex = -1;
 	return true;
@@ -1227,21 +1096,21 @@ static bool readDocument(Loader* loader, const cJSON* root, ToolDocument* docume
 	{
 		return failAt(loader, NULL, "out of memory");
 	}
-	pushKey(loader, "scenes");
+	jsonReaderPushKey(&loader->json, "scenes");
 	int index = 0;
 	for (const cJSON* item = scenes->child; item != NULL; item = item->next, ++index)
 	{
-		pushIndex(loader, index);
+		jsonReaderPushIndex(&loader->json, index);
 		document->sceneCount = index + 1;
 		bool ok = readScene(loader, item, index, &document->scenes[index]);
-		pop(loader);
+		jsonReaderPop(&loader->json);
 		if (!ok)
 		{
-			pop(loader);
+			jsonReaderPop(&loader->json);
 			return false;
 		}
 	}
-	pop(loader);
+	jsonReaderPop(&loader->json);
 	return true;
 }
 
@@ -1454,9 +1323,9 @@ bool toolLoadDocument(const char* path, ToolDocument* document, ToolError* error
 	cJSON* root = rootPointer;
 	Loader loader;
 	memset(&loader, 0, sizeof loader);
-	loader.text = text;
-	loader.length = length;
-	loader.error = error;
+	loader.json.text = text;
+	loader.json.length = length;
+	loader.json.error = error;
 	loader.shapeIndex = -1;
 	bool ok = readDocument(&loader, root, document);
 	cJSON_Delete(root);

@@ -8,7 +8,7 @@
  * unknown body names and counts out of range are errors, and so is every definition the world
  * API refuses (its refusal reason, caught through the assert hook, becomes the message). Each
  * error names the line of the offending value (json_locate.c walks the text along its path). */
-#include "json_locate.h"
+#include "json_read.h"
 #include "world_scene.h"
 
 #include <cjson/cJSON.h>
@@ -20,15 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define WL_MAX_PATH 8
-
 typedef struct WLoader
 {
-	const char* text;
-	size_t length;
-	ToolError* error;
-	JsonPathStep path[WL_MAX_PATH];
-	int depth;
+	JsonReader json; /* the text and the path being read */
 	char context[160]; /* "body \"crate\"", "joint #3", ... prefixed to messages */
 	ToolWorld* out;
 	int* nameOrder; /* indices of the named bodies, sorted by name (for joints' look-ups) */
@@ -54,53 +48,6 @@ static bool recordRefusal(const char* condition, const char* fileName, int lineN
 
 /* ---- paths and messages ---------------------------------------------------------------------- */
 
-static void pushKey(WLoader* loader, const char* key)
-{
-	if (loader->depth < WL_MAX_PATH)
-	{
-		loader->path[loader->depth].key = key;
-		loader->path[loader->depth].index = 0;
-	}
-	++loader->depth;
-}
-
-static void pushIndex(WLoader* loader, int index)
-{
-	if (loader->depth < WL_MAX_PATH)
-	{
-		loader->path[loader->depth].key = NULL;
-		loader->path[loader->depth].index = index;
-	}
-	++loader->depth;
-}
-
-static void pop(WLoader* loader)
-{
-	--loader->depth;
-}
-
-static int currentLine(const WLoader* loader, const char* key)
-{
-	JsonPathStep path[WL_MAX_PATH + 1];
-	int depth = loader->depth < WL_MAX_PATH ? loader->depth : WL_MAX_PATH;
-	memcpy(path, loader->path, (size_t)depth * sizeof(JsonPathStep));
-	if (key != NULL)
-	{
-		path[depth].key = key;
-		path[depth].index = 0;
-		++depth;
-	}
-	for (; depth >= 0; --depth)
-	{
-		size_t offset;
-		if (jsonLocate(loader->text, loader->length, path, depth, &offset))
-		{
-			return jsonLineOfOffset(loader->text, loader->length, offset);
-		}
-	}
-	return 0;
-}
-
 #if defined(__GNUC__)
 __attribute__((format(printf, 3, 4)))
 #endif
@@ -112,59 +59,17 @@ failAt(WLoader* loader, const char* key, const char* format, ...)
 	va_start(args, format);
 	vsnprintf(reason, sizeof reason, format, args);
 	va_end(args);
-	loader->error->line = currentLine(loader, key);
+	ToolError* error = loader->json.error;
+	error->line = jsonReaderLine(&loader->json, key);
 	if (loader->context[0] != 0)
 	{
-		snprintf(loader->error->message, sizeof loader->error->message, "%s: %s", loader->context, reason);
+		snprintf(error->message, sizeof error->message, "%s: %s", loader->context, reason);
 	}
 	else
 	{
-		snprintf(loader->error->message, sizeof loader->error->message, "%s", reason);
+		snprintf(error->message, sizeof error->message, "%s", reason);
 	}
 	return false;
-}
-
-static const char* jsonTypeName(const cJSON* item)
-{
-	if (cJSON_IsObject(item))
-	{
-		return "an object";
-	}
-	if (cJSON_IsArray(item))
-	{
-		return "an array";
-	}
-	if (cJSON_IsString(item))
-	{
-		return "a string";
-	}
-	if (cJSON_IsNumber(item))
-	{
-		return "a number";
-	}
-	if (cJSON_IsBool(item))
-	{
-		return "a boolean";
-	}
-	return "null";
-}
-
-/* A user's string made safe for a one-line message. */
-static const char* printable(const char* text, char* buffer, size_t size)
-{
-	size_t n = 0;
-	const unsigned char* p = (const unsigned char*)text;
-	for (; *p != 0 && n + 4 < size && n < 40; ++p)
-	{
-		buffer[n++] = (*p >= 0x20 && *p < 0x7f) ? (char)*p : '?';
-	}
-	if (*p != 0 && n + 4 < size)
-	{
-		memcpy(buffer + n, "...", 3);
-		n += 3;
-	}
-	buffer[n] = 0;
-	return buffer;
 }
 
 /* ---- fields ---------------------------------------------------------------------------------- */
@@ -189,35 +94,9 @@ typedef struct Field
  * always allowed. */
 static bool checkFields(WLoader* loader, const cJSON* object, const Field* fields)
 {
-	for (const cJSON* child = object->child; child != NULL; child = child->next)
-	{
-		const char* key = child->string != NULL ? child->string : "";
-		bool known = strcmp(key, "comment") == 0;
-		for (int i = 0; !known && fields[i].key != NULL; ++i)
-		{
-			known = strcmp(key, fields[i].key) == 0;
-		}
-		char shown[48];
-		if (!known)
-		{
-			char list[600] = "";
-			for (int i = 0; fields[i].key != NULL; ++i)
-			{
-				size_t used = strlen(list);
-				snprintf(list + used, sizeof list - used, "%s\"%s\"", i > 0 ? ", " : "", fields[i].key);
-			}
-			return failAt(loader, key, "unknown field \"%s\" (expected %s)",
-						  printable(key, shown, sizeof shown), list);
-		}
-		for (const cJSON* other = object->child; other != child; other = other->next)
-		{
-			if (other->string != NULL && strcmp(other->string, key) == 0)
-			{
-				return failAt(loader, key, "field \"%s\" appears twice", printable(key, shown, sizeof shown));
-			}
-		}
-	}
-	return true;
+	char reason[320];
+	const char* key = jsonFindBadKey(object, fields, sizeof fields[0], reason, sizeof reason);
+	return key == NULL || failAt(loader, key, "%s", reason);
 }
 
 static bool checkNumber(WLoader* loader, const char* key, double value)
@@ -482,7 +361,7 @@ static bool readFilter(WLoader* loader, const cJSON* object, cd2Filter* filter)
 								   {"maskBits", FIELD_SPECIAL, 0},
 								   {"groupIndex", FIELD_SPECIAL, 0},
 								   {NULL, FIELD_SPECIAL, 0}};
-	pushKey(loader, "filter");
+	jsonReaderPushKey(&loader->json, "filter");
 	bool ok = checkFields(loader, item, fields);
 	const cJSON* bits = cJSON_GetObjectItemCaseSensitive(item, "categoryBits");
 	if (ok && bits != NULL)
@@ -498,7 +377,7 @@ static bool readFilter(WLoader* loader, const cJSON* object, cd2Filter* filter)
 	{
 		ok = readInt(loader, item, "groupIndex", -1000000000, 1000000000, &filter->groupIndex);
 	}
-	pop(loader);
+	jsonReaderPop(&loader->json);
 	return ok;
 }
 
@@ -623,7 +502,7 @@ static bool readShape(WLoader* loader, const cJSON* object, cd2BodyId body)
 		char shown[48];
 		return failAt(loader, "type",
 					  "unknown shape type \"%s\" (expected circle, capsule, box, polygon or segment)",
-					  printable(typeItem->valuestring, shown, sizeof shown));
+					  jsonPrintable(typeItem->valuestring, shown, sizeof shown));
 	}
 	Field fields[SHAPE_DEF_FIELD_COUNT + 7];
 	size_t fieldCount = 0;
@@ -729,22 +608,22 @@ static bool readShape(WLoader* loader, const cJSON* object, cd2BodyId body)
 				return false;
 			}
 			cd2Vec vertices[CD2_MAX_POLYGON_VERTICES];
-			pushKey(loader, "points");
+			jsonReaderPushKey(&loader->json, "points");
 			int index = 0;
 			for (const cJSON* point = points->child; point != NULL; point = point->next, ++index)
 			{
 				char what[48];
 				snprintf(what, sizeof what, "point #%d", index + 1);
-				pushIndex(loader, index);
+				jsonReaderPushIndex(&loader->json, index);
 				bool ok = vecItem(loader, point, NULL, what, &vertices[index]);
-				pop(loader);
+				jsonReaderPop(&loader->json);
 				if (!ok)
 				{
-					pop(loader);
+					jsonReaderPop(&loader->json);
 					return false;
 				}
 			}
-			pop(loader);
+			jsonReaderPop(&loader->json);
 			result = cd2MakeRoundedPolygon(vertices, count, (cdReal)radius, &polygon);
 		}
 		if (result != CD_OK)
@@ -792,23 +671,23 @@ static bool readChain(WLoader* loader, const cJSON* object, cd2BodyId body)
 	{
 		return failAt(loader, NULL, "out of memory");
 	}
-	pushKey(loader, "points");
+	jsonReaderPushKey(&loader->json, "points");
 	int index = 0;
 	for (const cJSON* point = points->child; point != NULL; point = point->next, ++index)
 	{
 		char what[48];
 		snprintf(what, sizeof what, "point #%d", index + 1);
-		pushIndex(loader, index);
+		jsonReaderPushIndex(&loader->json, index);
 		bool ok = vecItem(loader, point, NULL, what, &vertices[index]);
-		pop(loader);
+		jsonReaderPop(&loader->json);
 		if (!ok)
 		{
-			pop(loader);
+			jsonReaderPop(&loader->json);
 			free(vertices);
 			return false;
 		}
 	}
-	pop(loader);
+	jsonReaderPop(&loader->json);
 	def.points = vertices;
 	def.count = count;
 	s_refusal[0] = 0;
@@ -923,7 +802,7 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 	{
 		char shown[48];
 		return failAt(loader, "type", "unknown body type \"%s\" (expected static, kinematic or dynamic)",
-					  printable(type->valuestring, shown, sizeof shown));
+					  jsonPrintable(type->valuestring, shown, sizeof shown));
 	}
 	double angle = 0.0;
 	if (!readFields(loader, object, s_bodyFields, &def) ||
@@ -959,22 +838,22 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 		{
 			continue;
 		}
-		pushKey(loader, lists[list]);
+		jsonReaderPushKey(&loader->json, lists[list]);
 		int k = 0;
 		for (const cJSON* item = arrays[list]->child; item != NULL; item = item->next, ++k)
 		{
 			snprintf(loader->context, sizeof loader->context, "%s, %s #%d", bodyContext,
 					 list == 0 ? "shape" : "chain", k + 1);
-			pushIndex(loader, k);
+			jsonReaderPushIndex(&loader->json, k);
 			bool ok = list == 0 ? readShape(loader, item, id) : readChain(loader, item, id);
-			pop(loader);
+			jsonReaderPop(&loader->json);
 			if (!ok)
 			{
-				pop(loader);
+				jsonReaderPop(&loader->json);
 				return false;
 			}
 		}
-		pop(loader);
+		jsonReaderPop(&loader->json);
 	}
 	return true;
 }
@@ -1134,7 +1013,7 @@ static bool findBody(WLoader* loader, const cJSON* object, const char* key, cd2B
 	}
 	char shown[48];
 	return failAt(loader, key, "\"%s\": no body is named \"%s\"", key,
-				  printable(item->valuestring, shown, sizeof shown));
+				  jsonPrintable(item->valuestring, shown, sizeof shown));
 }
 
 static bool readJoint(WLoader* loader, const cJSON* object, int index)
@@ -1185,7 +1064,7 @@ static bool readJoint(WLoader* loader, const cJSON* object, int index)
 			loader, "type",
 			"unknown joint type \"%s\" (expected distance, filter, motor, mouse, prismatic, revolute, "
 			"weld or wheel)",
-			printable(typeItem->valuestring, shown, sizeof shown));
+			jsonPrintable(typeItem->valuestring, shown, sizeof shown));
 	}
 	const Field* fields = types[kind].fields;
 	cd2BodyId bodyA, bodyB;
@@ -1412,11 +1291,11 @@ static bool indexBodyNames(WLoader* loader)
 	if (second >= 0)
 	{
 		snprintf(loader->context, sizeof loader->context, "body \"%s\"", out->bodies[second].name);
-		pushKey(loader, "bodies");
-		pushIndex(loader, second);
+		jsonReaderPushKey(&loader->json, "bodies");
+		jsonReaderPushIndex(&loader->json, second);
 		failAt(loader, "name", "the name is already used by body #%d", first + 1);
-		pop(loader);
-		pop(loader);
+		jsonReaderPop(&loader->json);
+		jsonReaderPop(&loader->json);
 		return false;
 	}
 	return true;
@@ -1458,7 +1337,7 @@ static bool readView(WLoader* loader, const cJSON* object, ToolWorld* out)
 	}
 	static const Field fields[] = {
 		{"min", FIELD_SPECIAL, 0}, {"max", FIELD_SPECIAL, 0}, {NULL, FIELD_SPECIAL, 0}};
-	pushKey(loader, "view");
+	jsonReaderPushKey(&loader->json, "view");
 	cd2Vec lo, hi;
 	bool ok = checkFields(loader, view, fields) && readRequiredVec(loader, view, "min", &lo) &&
 			  readRequiredVec(loader, view, "max", &hi);
@@ -1466,7 +1345,7 @@ static bool readView(WLoader* loader, const cJSON* object, ToolWorld* out)
 	{
 		ok = failAt(loader, "max", "\"view\": \"max\" must be greater than \"min\" on both axes");
 	}
-	pop(loader);
+	jsonReaderPop(&loader->json);
 	if (ok)
 	{
 		out->hasView = true;
@@ -1500,7 +1379,7 @@ static bool readWorld(WLoader* loader, const cJSON* root, ToolWorld* out)
 	{
 		return failAt(loader, "world", "\"world\" must be an object, not %s", jsonTypeName(object));
 	}
-	pushKey(loader, "world");
+	jsonReaderPushKey(&loader->json, "world");
 	cd2WorldDef def = cd2DefaultWorldDef();
 	double timeStep = 1.0 / 60.0;
 	const cJSON* bodies;
@@ -1544,22 +1423,22 @@ static bool readWorld(WLoader* loader, const cJSON* root, ToolWorld* out)
 		{
 			continue;
 		}
-		pushKey(loader, lists[list]);
+		jsonReaderPushKey(&loader->json, lists[list]);
 		int index = 0;
 		for (const cJSON* item = arrays[list]->child; item != NULL; item = item->next, ++index)
 		{
-			pushIndex(loader, index);
+			jsonReaderPushIndex(&loader->json, index);
 			bool ok = list == 0 ? readBody(loader, item, index) : readJoint(loader, item, index);
-			pop(loader);
+			jsonReaderPop(&loader->json);
 			if (!ok)
 			{
 				return false;
 			}
 		}
-		pop(loader);
+		jsonReaderPop(&loader->json);
 	}
 	loader->context[0] = 0;
-	pop(loader);
+	jsonReaderPop(&loader->json);
 	return true;
 }
 
@@ -1576,9 +1455,9 @@ bool toolLoadWorld(const char* path, ToolWorld* world, ToolError* error)
 	}
 	WLoader loader;
 	memset(&loader, 0, sizeof loader);
-	loader.text = text;
-	loader.length = length;
-	loader.error = error;
+	loader.json.text = text;
+	loader.json.length = length;
+	loader.json.error = error;
 	loader.out = world;
 	s_refusal[0] = 0;
 	cdSetAssertFcn(recordRefusal);

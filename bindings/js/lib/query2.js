@@ -102,6 +102,15 @@ export function shapeCast2(a, b, translation) {
 const TOI_STATES = ['hit', 'separated', 'overlapped', 'failed'];
 export { TOI_STATES };
 
+/** [targetSeparation, tolerance] of the time-of-impact options (shared with query3.js). */
+export function toiOptions(options) {
+  obj(options, 'options');
+  const target = options.targetSeparation === undefined ? 0.005 : nonNeg(options.targetSeparation, 'options.targetSeparation');
+  const tol = options.tolerance === undefined ? 0.00125 : num(options.tolerance, 'options.tolerance');
+  if (tol <= 0) throw new RangeError(`options.tolerance must be > 0, got ${tol}`);
+  return [target, tol];
+}
+
 function sweep2(s, name, f, at) {
   obj(s, name);
   const lc = s.localCenter === undefined ? [0, 0] : vec2(s.localCenter, `${name}.localCenter`);
@@ -120,10 +129,7 @@ function sweep2(s, name, f, at) {
  */
 export function timeOfImpact2(a, sweepA, b, sweepB, options = {}) {
   prepAB(a, b);
-  obj(options, 'options');
-  const target = options.targetSeparation === undefined ? 0.005 : nonNeg(options.targetSeparation, 'options.targetSeparation');
-  const tol = options.tolerance === undefined ? 0.00125 : num(options.tolerance, 'options.tolerance');
-  if (tol <= 0) throw new RangeError(`options.tolerance must be > 0, got ${tol}`);
+  const [target, tol] = toiOptions(options);
   const f = w.F32, io = IO();
   sweep2(sweepA, 'sweepA', f, io);
   sweep2(sweepB, 'sweepB', f, io + 8);

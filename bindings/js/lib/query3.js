@@ -4,7 +4,7 @@
 import * as w from './wasm.js';
 import { nonNeg, num, obj, vec3, quat, checkCode } from './check.js';
 import { encode3 } from './shapes3.js';
-import { TOI_STATES } from './query2.js';
+import { TOI_STATES, toiOptions } from './query2.js';
 
 const IO = () => w.S + 128;
 const v = (x, y, z) => ({ x, y, z });
@@ -104,10 +104,7 @@ function sweep3(s, name, f, at) {
 /** Time of impact; sweeps {localCenter?, center0, center1?, rotation0?, rotation1?}. */
 export function timeOfImpact3(a, sweepA, b, sweepB, options = {}) {
   prepAB(a, b);
-  obj(options, 'options');
-  const target = options.targetSeparation === undefined ? 0.005 : nonNeg(options.targetSeparation, 'options.targetSeparation');
-  const tol = options.tolerance === undefined ? 0.00125 : num(options.tolerance, 'options.tolerance');
-  if (tol <= 0) throw new RangeError(`options.tolerance must be > 0, got ${tol}`);
+  const [target, tol] = toiOptions(options);
   const f = w.F32, io = IO();
   sweep3(sweepA, 'sweepA', f, io);
   sweep3(sweepB, 'sweepB', f, io + 17);
