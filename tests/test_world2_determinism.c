@@ -266,9 +266,21 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 #endif
 }
 
+static int s_refusals = 0;
+
+static bool CountRefusal(const char* condition, const char* fileName, int lineNumber)
+{
+	(void)condition;
+	(void)fileName;
+	(void)lineNumber;
+	++s_refusals;
+	return false; /* no abort: the call returns a null id */
+}
+
 /* enqueueTask without finishTask (or the reverse) cannot work: refused. */
 static void TestHalfATaskSystemIsRefused(void)
 {
+	cdSetAssertFcn(CountRefusal);
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	wd.workerCount = 2;
 	wd.enqueueTask = TestEnqueue;
@@ -278,6 +290,8 @@ static void TestHalfATaskSystemIsRefused(void)
 	wd.finishTask = TestFinish;
 	world = cd2CreateWorld(&wd);
 	TEST_CHECK(!cd2World_IsValid(world));
+	TEST_CHECK(s_refusals == 2);
+	cdSetAssertFcn(NULL);
 	wd.finishTask = NULL;
 	world = cd2CreateWorld(&wd);
 	TEST_CHECK(cd2World_IsValid(world));
