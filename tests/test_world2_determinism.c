@@ -26,8 +26,8 @@ typedef struct TestTaskSystem
 {
 	bool threaded;
 	int workerCount;
-	int enqueued;	/* tasks handed to the system */
-	int badRanges;	/* pieces shorter than minRange (not last) or tasks with no items */
+	int enqueued;  /* tasks handed to the system */
+	int badRanges; /* pieces shorter than minRange (not last) or tasks with no items */
 	cdTaskCallback* task;
 	void* taskContext;
 	int itemCount, minRange;
@@ -63,7 +63,8 @@ static void* TestThreadMain(void* arg)
 }
 #endif
 
-static void* TestEnqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+static void* TestEnqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext,
+						 void* userContext)
 {
 	TestTaskSystem* system = (TestTaskSystem*)userContext;
 	system->enqueued++;
@@ -245,8 +246,9 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 				memset(&system, 0, sizeof(system));
 				system.threaded = threaded != 0;
 				h = RunPile(workers[k], &system, &n);
-				TEST_CHECKF(h == reference, "run %d, %d workers, user tasks (%s): hash %016llx, single thread %016llx",
-							run, workers[k], threaded ? "threads" : "inline", (unsigned long long)h,
+				TEST_CHECKF(h == reference,
+							"run %d, %d workers, user tasks (%s): hash %016llx, single thread %016llx", run,
+							workers[k], threaded ? "threads" : "inline", (unsigned long long)h,
 							(unsigned long long)reference);
 				/* One worker: the step runs alone; more: the step hands its stages to the system. */
 				TEST_CHECKF(workers[k] == 1 ? system.enqueued == 0 : system.enqueued > STEPS,

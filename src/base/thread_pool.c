@@ -177,7 +177,8 @@ void cdThreadPool_Destroy(cdThreadPool* pool)
 	cdFree(pool);
 }
 
-void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext,
+						   void* userContext)
 {
 	cdThreadPool* pool = (cdThreadPool*)userContext;
 	if (itemCount <= 0)

@@ -57,8 +57,8 @@ static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const in
 
 /* Writes the velocities of the movable lanes back (the zero body and kinematic bodies are shared by
  * blocks of one colour, which may run on different threads: they are only read). */
-static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, const unsigned char* moves, cdW vx,
-										cdW vy, cdW w)
+static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, const unsigned char* moves,
+										cdW vx, cdW vy, cdW w)
 {
 	cdReal x[CD_W], y[CD_W], a[CD_W];
 	cdWStore(x, vx);
@@ -141,8 +141,10 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 				w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
 				w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
 				/* Immovable: both inverse masses zero (the velocity update would add nothing). */
-				w->movesA[lane] = (unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
-				w->movesB[lane] = (unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
+				w->movesA[lane] =
+					(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
+				w->movesB[lane] =
+					(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
 				cdWSetLane(&w->invMassA, lane, c->invMassA);
 				cdWSetLane(&w->invIA, lane, c->invIA);
 				cdWSetLane(&w->invMassB, lane, c->invMassB);

@@ -1,10 +1,11 @@
 /* collide: the 2D step's solve: the dense arrays of awake bodies and touching contacts, the
  * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
  * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
- * hit and move events, sleep). Single-threaded, in index and colour order: the same input gives
- * the same bits. The contacts are prepared in index order, then sorted by graph colour; the
- * coloured ones are solved four at a time (contact_solver_wide2.c), the overflow colour and the
- * joints one by one. */
+ * hit and move events, sleep). Integration, the wide solve (colour by colour) and the first part of
+ * finalize run as tasks over index ranges on the world's workers (cd2RunTask); each item writes
+ * only its own body or block, so the same input gives the same bits for any worker count. The
+ * contacts are prepared in index order, then sorted by graph colour; the coloured ones are solved
+ * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one. */
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
@@ -144,7 +145,7 @@ static void cd2FinalizeBodies(int start, int end, uint32_t workerIndex, void* ta
 			cdReal travel = speed * timeStep + cdAbs(body->angularVelocity) * timeStep * body->maxExtent;
 			body->isFast = body->isBullet || CD_R(0.5) * body->minExtent < travel;
 		}
-}
+	}
 }
 
 static void cd2WarmStartWideTask(int start, int end, uint32_t workerIndex, void* taskContext)
