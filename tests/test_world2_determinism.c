@@ -12,6 +12,114 @@
 #include <stdint.h>
 #include <string.h>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <pthread.h>
+#define HAVE_PTHREADS 1
+#else
+#define HAVE_PTHREADS 0
+#endif
+
+/* A user task system for the tests: every task is cut into pieces of minRange items, run either
+ * inline in reverse order at finishTask (workerIndex cycling), or on two threads of its own
+ * started by enqueueTask and joined by finishTask (the pieces dealt out alternately). */
+typedef struct TestTaskSystem
+{
+	bool threaded;
+	int workerCount;
+	int enqueued;  /* tasks handed to the system */
+	int badRanges; /* pieces shorter than minRange (not last) or tasks with no items */
+	cdTaskCallback* task;
+	void* taskContext;
+	int itemCount, minRange;
+} TestTaskSystem;
+
+typedef struct TestThreadJob
+{
+	TestTaskSystem* system;
+	int first; /* piece index to start from; every second piece after it */
+} TestThreadJob;
+
+static void RunPieces(TestTaskSystem* system, int first, int stride)
+{
+	int piece = system->minRange > 0 ? system->minRange : 1;
+	int pieceCount = (system->itemCount + piece - 1) / piece;
+	for (int k = first; k < pieceCount; k += stride)
+	{
+		int start = k * piece;
+		int end = start + piece < system->itemCount ? start + piece : system->itemCount;
+		system->task(start, end, (uint32_t)(k % system->workerCount), system->taskContext);
+	}
+}
+
+#if HAVE_PTHREADS
+static TestThreadJob s_jobs[2];
+static pthread_t s_threads[2];
+
+static void* TestThreadMain(void* arg)
+{
+	TestThreadJob* job = (TestThreadJob*)arg;
+	RunPieces(job->system, job->first, 2);
+	return NULL;
+}
+#endif
+
+static void* TestEnqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext,
+						 void* userContext)
+{
+	TestTaskSystem* system = (TestTaskSystem*)userContext;
+	system->enqueued++;
+	if (itemCount <= 0 || minRange < 1)
+	{
+		system->badRanges++;
+	}
+	system->task = task;
+	system->taskContext = taskContext;
+	system->itemCount = itemCount;
+	system->minRange = minRange;
+#if HAVE_PTHREADS
+	if (system->threaded)
+	{
+		for (int i = 0; i < 2; ++i)
+		{
+			s_jobs[i].system = system;
+			s_jobs[i].first = i;
+			if (pthread_create(s_threads + i, NULL, TestThreadMain, s_jobs + i) != 0)
+			{
+				/* Could not start a thread: run its share here. */
+				RunPieces(system, i, 2);
+				s_threads[i] = pthread_self();
+			}
+		}
+	}
+#endif
+	return system;
+}
+
+static void TestFinish(void* userTask, void* userContext)
+{
+	TestTaskSystem* system = (TestTaskSystem*)userContext;
+	TEST_CHECK(userTask == system);
+#if HAVE_PTHREADS
+	if (system->threaded)
+	{
+		for (int i = 0; i < 2; ++i)
+		{
+			if (!pthread_equal(s_threads[i], pthread_self()))
+			{
+				pthread_join(s_threads[i], NULL);
+			}
+		}
+		return;
+	}
+#endif
+	int piece = system->minRange > 0 ? system->minRange : 1;
+	int pieceCount = (system->itemCount + piece - 1) / piece;
+	for (int k = pieceCount - 1; k >= 0; --k)
+	{
+		RunPieces(system, k, pieceCount + 1);
+	}
+}
+
 #define DT (CD_R(1.0) / CD_R(60.0))
 #define STEPS 180
 
@@ -34,10 +142,17 @@ static void HashReal(uint64_t* h, cdReal value)
 	HashBytes(h, &value, sizeof(value));
 }
 
-static uint64_t RunPile(int workerCount, int* bodyCountOut)
+static uint64_t RunPile(int workerCount, TestTaskSystem* system, int* bodyCountOut)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	wd.workerCount = workerCount;
+	if (system != NULL)
+	{
+		system->workerCount = workerCount;
+		wd.enqueueTask = TestEnqueue;
+		wd.finishTask = TestFinish;
+		wd.userTaskContext = system;
+	}
 	cd2WorldId world = cd2CreateWorld(&wd);
 	cd2BodyDef bd = cd2DefaultBodyDef();
 	cd2BodyId ground = cd2CreateBody(world, &bd);
@@ -113,7 +228,7 @@ static uint64_t RunPile(int workerCount, int* bodyCountOut)
 static void TestSameBitsEveryRunAndWorkerCount(void)
 {
 	int count = 0;
-	uint64_t reference = RunPile(1, &count);
+	uint64_t reference = RunPile(1, NULL, &count);
 	TEST_CHECK(count == 78 + 24);
 	for (int run = 0; run < 2; ++run)
 	{
@@ -121,9 +236,25 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 		for (int k = 0; k < 3; ++k)
 		{
 			int n = 0;
-			uint64_t h = RunPile(workers[k], &n);
+			uint64_t h = RunPile(workers[k], NULL, &n);
 			TEST_CHECKF(h == reference, "run %d, %d workers: hash %016llx, single thread %016llx", run, workers[k],
 						(unsigned long long)h, (unsigned long long)reference);
+			/* The user's task system, inline (pieces in reverse order) and on its own threads. */
+			for (int threaded = 0; threaded < 2; ++threaded)
+			{
+				TestTaskSystem system;
+				memset(&system, 0, sizeof(system));
+				system.threaded = threaded != 0;
+				h = RunPile(workers[k], &system, &n);
+				TEST_CHECKF(h == reference,
+							"run %d, %d workers, user tasks (%s): hash %016llx, single thread %016llx", run,
+							workers[k], threaded ? "threads" : "inline", (unsigned long long)h,
+							(unsigned long long)reference);
+				/* One worker: the step runs alone; more: the step hands its stages to the system. */
+				TEST_CHECKF(workers[k] == 1 ? system.enqueued == 0 : system.enqueued > STEPS,
+							"%d workers: %d tasks enqueued", workers[k], system.enqueued);
+				TEST_CHECK(system.badRanges == 0);
+			}
 		}
 	}
 #if defined(__x86_64__) || defined(_M_X64)
@@ -137,8 +268,67 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 #endif
 }
 
+static int s_refusals = 0;
+
+static bool CountRefusal(const char* condition, const char* fileName, int lineNumber)
+{
+	(void)condition;
+	(void)fileName;
+	(void)lineNumber;
+	++s_refusals;
+	return false; /* no abort: the call returns a null id */
+}
+
+/* enqueueTask without finishTask (or the reverse) cannot work: refused. */
+static void TestHalfATaskSystemIsRefused(void)
+{
+	cdSetAssertFcn(CountRefusal);
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.workerCount = 2;
+	wd.enqueueTask = TestEnqueue;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	TEST_CHECK(!cd2World_IsValid(world));
+	wd.enqueueTask = NULL;
+	wd.finishTask = TestFinish;
+	world = cd2CreateWorld(&wd);
+	TEST_CHECK(!cd2World_IsValid(world));
+	TEST_CHECK(s_refusals == 2);
+	cdSetAssertFcn(NULL);
+	wd.finishTask = NULL;
+	world = cd2CreateWorld(&wd);
+	TEST_CHECK(cd2World_IsValid(world));
+	cd2DestroyWorld(world);
+}
+
+/* Worlds with the built-in pool are created and destroyed many times (threads started and joined,
+ * nothing left behind: the sanitizer builds check the leaks), stepping once or not at all. */
+static void TestPoolCreateDestroy(void)
+{
+	for (int i = 0; i < 20; ++i)
+	{
+		cd2WorldDef wd = cd2DefaultWorldDef();
+		wd.workerCount = 1 + i % 4;
+		cd2WorldId world = cd2CreateWorld(&wd);
+		TEST_CHECK(cd2World_IsValid(world));
+		if (i % 2 == 0)
+		{
+			cd2BodyDef bd = cd2DefaultBodyDef();
+			bd.type = CD_DYNAMIC_BODY;
+			cd2BodyId body = cd2CreateBody(world, &bd);
+			cd2ShapeDef sd = cd2DefaultShapeDef();
+			cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.5)};
+			cd2CreateCircleShape(body, &sd, &circle);
+			cd2World_Step(world, DT, 4);
+			TEST_CHECK(cd2Body_GetPosition(body).y < CD_R(0.0));
+		}
+		cd2DestroyWorld(world);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestSameBitsEveryRunAndWorkerCount);
+	TEST_RUN(TestHalfATaskSystemIsRefused);
+	TEST_RUN(TestPoolCreateDestroy);
 	return TEST_SUMMARY();
 }

@@ -87,8 +87,17 @@ static inline bool cd2ShapeIdEqual(cd2ShapeId a, cd2ShapeId b)
 	return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
 }
 
-/* ---- task system (threads are a later step: the step runs single-threaded today and calls
- * neither callback; the fields are here so that programs written now keep compiling). ---------- */
+/* ---- task system --------------------------------------------------------------------------------
+ * With workerCount > 1 the step runs some of its stages (integration, the contact solver colour by
+ * colour, finalizing the bodies) as tasks over index ranges. Give enqueueTask and finishTask to let
+ * your own job system run them, or neither for the built-in pool (workerCount - 1 threads, started
+ * by cd2CreateWorld and joined by cd2DestroyWorld; none in WebAssembly builds).
+ * enqueueTask must make task(start, end, workerIndex, taskContext) run over ranges that cover
+ * [0, itemCount) exactly once, each at least minRange items long unless it is the last, on any
+ * threads, with workerIndex < workerCount distinct among the calls running at the same moment; it
+ * returns a handle that the step passes to finishTask, which returns once every range is done (a
+ * NULL handle means the task already ran, and finishTask is not called). The results are the same
+ * bits for any worker count and any split. */
 typedef void cdTaskCallback(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext);
 typedef void* cdEnqueueTaskCallback(cdTaskCallback* task, int itemCount, int minRange, void* taskContext,
 									void* userContext);
@@ -109,7 +118,7 @@ typedef struct cd2WorldDef
 	cdReal lengthUnitsPerMeter;	  /* 0: keep cdGetLengthUnitsPerMeter(); else set it */
 	bool enableSleep;
 	bool enableContinuous;
-	int workerCount; /* 1 today */
+	int workerCount; /* 1: the step runs on the calling thread (see the task system above) */
 	cdEnqueueTaskCallback* enqueueTask;
 	cdFinishTaskCallback* finishTask;
 	void* userTaskContext;

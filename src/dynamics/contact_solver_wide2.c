@@ -55,9 +55,10 @@ static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const in
 	return out;
 }
 
-/* Writes the velocities back, lane 0 first (lanes that share the zero body or a kinematic body
- * write it unchanged). */
-static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, cdW vx, cdW vy, cdW w)
+/* Writes the velocities of the movable lanes back (the zero body and kinematic bodies are shared by
+ * blocks of one colour, which may run on different threads: they are only read). */
+static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, const unsigned char* moves,
+										cdW vx, cdW vy, cdW w)
 {
 	cdReal x[CD_W], y[CD_W], a[CD_W];
 	cdWStore(x, vx);
@@ -65,6 +66,10 @@ static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index,
 	cdWStore(a, w);
 	for (int i = 0; i < CD_W; ++i)
 	{
+		if (moves[i] == 0)
+		{
+			continue;
+		}
 		cd2SolverBody* b = bodies + index[i];
 		b->linearVelocity.x = x[i];
 		b->linearVelocity.y = y[i];
@@ -78,6 +83,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	const int* color = context->colorOfConstraint;
 	context->wideCount = 0;
 	context->overflowStart = 0;
+	context->colorCount = 0;
 	if (color == NULL || n == 0)
 	{
 		return true;
@@ -108,6 +114,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	memset(wide, 0, (size_t)blockCount * sizeof(cd2ContactConstraintWide));
 	int zeroBody = context->bodyCount;
 	int block = 0;
+	int colorCount = 0;
 	for (int i = 0; i < overflowStart;)
 	{
 		int j = i;
@@ -115,6 +122,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 		{
 			++j;
 		}
+		context->colorBlockStart[colorCount++] = block;
 		for (int start = i; start < j; start += CD_W, ++block)
 		{
 			cd2ContactConstraintWide* w = wide + block;
@@ -132,6 +140,11 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 				w->constraint[lane] = start + lane;
 				w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
 				w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
+				/* Immovable: both inverse masses zero (the velocity update would add nothing). */
+				w->movesA[lane] =
+					(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
+				w->movesB[lane] =
+					(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
 				cdWSetLane(&w->invMassA, lane, c->invMassA);
 				cdWSetLane(&w->invIA, lane, c->invIA);
 				cdWSetLane(&w->invMassB, lane, c->invMassB);
@@ -166,16 +179,18 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 		}
 		i = j;
 	}
+	context->colorBlockStart[colorCount] = block;
+	context->colorCount = colorCount;
 	context->wide = wide;
 	context->wideCount = blockCount;
 	context->overflowStart = overflowStart;
 	return true;
 }
 
-void cd2WarmStartContactsWide(cd2StepContext* context)
+void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
 {
 	cd2SolverBody* bodies = context->bodies;
-	for (int i = 0; i < context->wideCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2ContactConstraintWide* c = context->wide + i;
 		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
@@ -199,18 +214,18 @@ void cd2WarmStartContactsWide(cd2StepContext* context)
 		}
 		wA = cdWSub(wA, cdWMul(c->invIA, c->rollingImpulse));
 		wB = cdWAdd(wB, cdWMul(c->invIB, c->rollingImpulse));
-		cd2ScatterVelocities(bodies, c->indexA, vAx, vAy, wA);
-		cd2ScatterVelocities(bodies, c->indexB, vBx, vBy, wB);
+		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA);
+		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB);
 	}
 }
 
-void cd2SolveContactsWide(cd2StepContext* context, bool useBias)
+void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias)
 {
 	cd2SolverBody* bodies = context->bodies;
 	cdW inv_h = cdWSplat(context->inv_h);
 	cdW minBias = cdWSplat(-context->contactPushMaxVelocity);
 	cdW zero = cdWZero(), one = cdWSplat(CD_R(1.0));
-	for (int i = 0; i < context->wideCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2ContactConstraintWide* c = context->wide + i;
 		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
@@ -301,8 +316,8 @@ void cd2SolveContactsWide(cd2StepContext* context, bool useBias)
 			wA = cdWSelect(rolling, cdWSub(wA, cdWMul(iA, lambda)), wA);
 			wB = cdWSelect(rolling, cdWAdd(wB, cdWMul(iB, lambda)), wB);
 		}
-		cd2ScatterVelocities(bodies, c->indexA, vAx, vAy, wA);
-		cd2ScatterVelocities(bodies, c->indexB, vBx, vBy, wB);
+		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA);
+		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB);
 	}
 }
 

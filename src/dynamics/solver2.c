@@ -1,13 +1,15 @@
 /* collide: the 2D step's solve: the dense arrays of awake bodies and touching contacts, the
  * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
  * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
- * hit and move events, sleep). Single-threaded, in index and colour order: the same input gives
- * the same bits. The contacts are prepared in index order, then sorted by graph colour; the
- * coloured ones are solved four at a time (contact_solver_wide2.c), the overflow colour and the
- * joints one by one. */
+ * hit and move events, sleep). Integration, the wide solve (colour by colour) and the first part of
+ * finalize run as tasks over index ranges on the world's workers (cd2RunTask); each item writes
+ * only its own body or block, so the same input gives the same bits for any worker count. The
+ * contacts are prepared in index order, then sorted by graph colour; the coloured ones are solved
+ * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one. */
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
+#include "../base/thread_pool.h"
 
 cd2Softness cd2MakeSoft(cdReal hertz, cdReal zeta, cdReal h)
 {
@@ -35,11 +37,23 @@ cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle)
 	return out;
 }
 
-static void cd2IntegrateVelocities(cd2StepContext* context)
+/* A stage of the step run as a task over an index range (bodies or wide blocks). Every item
+ * writes only its own body or block, so the split between workers cannot change the results. */
+typedef struct cd2StageContext
 {
+	cd2World* world;
+	cd2StepContext* step;
+	int blockStart; /* the colour's first wide block */
+	bool useBias;
+} cd2StageContext;
+
+static void cd2IntegrateVelocities(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	cd2StepContext* context = ((cd2StageContext*)taskContext)->step;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
-	for (int i = 0; i < context->bodyCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		const cd2SolverBodyParams* p = context->params + i;
 		cd2SolverBody* s = context->bodies + i;
@@ -65,12 +79,14 @@ static void cd2IntegrateVelocities(cd2StepContext* context)
 	}
 }
 
-static void cd2IntegratePositions(cd2StepContext* context)
+static void cd2IntegratePositions(int start, int end, uint32_t workerIndex, void* taskContext)
 {
+	(void)workerIndex;
+	cd2StepContext* context = ((cd2StageContext*)taskContext)->step;
 	cdReal h = context->h;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
-	for (int i = 0; i < context->bodyCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2SolverBody* s = context->bodies + i;
 		/* The speed caps hold after the constraints too: conflicting joints (a loop of rigid joints
@@ -85,6 +101,77 @@ static void cd2IntegratePositions(cd2StepContext* context)
 		}
 		s->deltaRotation = cd2IntegrateRotation(s->deltaRotation, h * s->angularVelocity);
 		s->deltaPosition = cd2MulAdd(s->deltaPosition, h, s->linearVelocity);
+	}
+}
+
+static void cd2FinalizeBodies(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	cd2World* world = ((cd2StageContext*)taskContext)->world;
+	const cd2StepContext* context = ((cd2StageContext*)taskContext)->step;
+	bool sleepAllowed = world->enableSleep;
+	cdReal timeStep = context->dt;
+	for (int k = start; k < end; ++k)
+	{
+		cd2Body* body = world->bodies.data + context->bodyIndices[k];
+		const cd2SolverBody* s = context->bodies + k;
+		body->linearVelocity = s->linearVelocity;
+		body->angularVelocity = s->angularVelocity;
+		/* The relax pass and restitution come after the last position update: cap once more. */
+		if (cd2Dot(body->linearVelocity, body->linearVelocity) >
+			context->maxLinearVelocity * context->maxLinearVelocity)
+		{
+			body->linearVelocity =
+				cd2Scale(context->maxLinearVelocity / cd2Length(body->linearVelocity), body->linearVelocity);
+		}
+		body->center = cd2Add(body->center, s->deltaPosition);
+		body->transform.q = cd2NormalizeRot(cd2MulRot(s->deltaRotation, body->transform.q));
+		body->transform.p = cd2Sub(body->center, cd2RotateVector(body->transform.q, body->localCenter));
+		body->force = CD2_VEC_ZERO;
+		body->torque = CD_R(0.0);
+		cdReal speed = cd2Length(body->linearVelocity);
+		cdReal sleepVelocity = cdMax(body->maxExtent * cdAbs(body->angularVelocity), speed);
+		if (!sleepAllowed || !body->enableSleep || sleepVelocity > body->sleepThreshold)
+		{
+			body->sleepTime = CD_R(0.0);
+		}
+		else
+		{
+			body->sleepTime += timeStep;
+		}
+		if (world->enableContinuous && body->type == CD_DYNAMIC_BODY)
+		{
+			/* Fast: it may have moved through something thinner than half its inner extent. */
+			cdReal travel = speed * timeStep + cdAbs(body->angularVelocity) * timeStep * body->maxExtent;
+			body->isFast = body->isBullet || CD_R(0.5) * body->minExtent < travel;
+		}
+	}
+}
+
+static void cd2WarmStartWideTask(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	const cd2StageContext* stage = (const cd2StageContext*)taskContext;
+	cd2WarmStartContactsWide(stage->step, stage->blockStart + start, stage->blockStart + end);
+}
+
+static void cd2SolveWideTask(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	const cd2StageContext* stage = (const cd2StageContext*)taskContext;
+	cd2SolveContactsWide(stage->step, stage->blockStart + start, stage->blockStart + end, stage->useBias);
+}
+
+/* The wide blocks colour by colour: the blocks of one colour share no movable body, so they may run
+ * in any order and on any worker; each colour starts when the one before has finished. */
+static void cd2RunWide(cd2World* world, cd2StageContext* stage, cdTaskCallback* task, bool useBias)
+{
+	const cd2StepContext* context = stage->step;
+	stage->useBias = useBias;
+	for (int c = 0; c < context->colorCount; ++c)
+	{
+		stage->blockStart = context->colorBlockStart[c];
+		cd2RunTask(world, task, context->colorBlockStart[c + 1] - stage->blockStart, 4, stage);
 	}
 }
 
@@ -123,6 +210,25 @@ static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 				world->outOfMemory = true;
 			}
 		}
+	}
+}
+
+void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext)
+{
+	if (itemCount <= 0)
+	{
+		return;
+	}
+	if (world->workerCount <= 1 || world->enqueueTask == NULL || itemCount <= minRange)
+	{
+		task(0, itemCount, 0, taskContext);
+		return;
+	}
+	/* NULL: the task system ran the task already (on this thread). */
+	void* userTask = world->enqueueTask(task, itemCount, minRange, taskContext, world->userTaskContext);
+	if (userTask != NULL)
+	{
+		world->finishTask(userTask, world->userTaskContext);
 	}
 }
 
@@ -302,18 +408,19 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.overflowStart = 0;
 	}
 	cd2PrepareJoints(world, &context);
+	cd2StageContext stage = {world, &context, 0, false};
 	for (int step = 0; step < subStepCount; ++step)
 	{
-		cd2IntegrateVelocities(&context);
+		cd2RunTask(world, cd2IntegrateVelocities, context.bodyCount, 64, &stage);
 		cd2WarmStartJoints(world, &context);
-		cd2WarmStartContactsWide(&context);
+		cd2RunWide(world, &stage, cd2WarmStartWideTask, false);
 		cd2WarmStartContacts(&context);
 		cd2SolveJoints(world, &context, true);
-		cd2SolveContactsWide(&context, true);
+		cd2RunWide(world, &stage, cd2SolveWideTask, true);
 		cd2SolveContacts(&context, true);
-		cd2IntegratePositions(&context);
+		cd2RunTask(world, cd2IntegratePositions, context.bodyCount, 64, &stage);
 		cd2SolveJoints(world, &context, false);
-		cd2SolveContactsWide(&context, false);
+		cd2RunWide(world, &stage, cd2SolveWideTask, false);
 		cd2SolveContacts(&context, false);
 	}
 	cd2StoreContactsWide(&context);
@@ -323,41 +430,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* Finalize: velocities and transforms back into the bodies. */
 	bool sleepAllowed = world->enableSleep;
-	for (int k = 0; k < context.bodyCount; ++k)
-	{
-		cd2Body* body = world->bodies.data + context.bodyIndices[k];
-		const cd2SolverBody* s = context.bodies + k;
-		body->linearVelocity = s->linearVelocity;
-		body->angularVelocity = s->angularVelocity;
-		/* The relax pass and restitution come after the last position update: cap once more. */
-		if (cd2Dot(body->linearVelocity, body->linearVelocity) >
-			context.maxLinearVelocity * context.maxLinearVelocity)
-		{
-			body->linearVelocity =
-				cd2Scale(context.maxLinearVelocity / cd2Length(body->linearVelocity), body->linearVelocity);
-		}
-		body->center = cd2Add(body->center, s->deltaPosition);
-		body->transform.q = cd2NormalizeRot(cd2MulRot(s->deltaRotation, body->transform.q));
-		body->transform.p = cd2Sub(body->center, cd2RotateVector(body->transform.q, body->localCenter));
-		body->force = CD2_VEC_ZERO;
-		body->torque = CD_R(0.0);
-		cdReal speed = cd2Length(body->linearVelocity);
-		cdReal sleepVelocity = cdMax(body->maxExtent * cdAbs(body->angularVelocity), speed);
-		if (!sleepAllowed || !body->enableSleep || sleepVelocity > body->sleepThreshold)
-		{
-			body->sleepTime = CD_R(0.0);
-		}
-		else
-		{
-			body->sleepTime += timeStep;
-		}
-		if (world->enableContinuous && body->type == CD_DYNAMIC_BODY)
-		{
-			/* Fast: it may have moved through something thinner than half its inner extent. */
-			cdReal travel = speed * timeStep + cdAbs(body->angularVelocity) * timeStep * body->maxExtent;
-			body->isFast = body->isBullet || CD_R(0.5) * body->minExtent < travel;
-		}
-	}
+	cd2RunTask(world, cd2FinalizeBodies, context.bodyCount, 64, &stage);
 	/* A moving kinematic body keeps what touches it awake. */
 	for (int k = 0; k < context.bodyCount; ++k)
 	{

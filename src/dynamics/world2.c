@@ -1,5 +1,6 @@
 /* collide: 2D worlds: creation, the step's pipeline, settings, events and callbacks. */
 #include "world2_internal.h"
+#include "../base/thread_pool.h"
 
 #include <stdio.h>
 
@@ -87,7 +88,8 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 		!cd2IsNonNegative(def->contactDampingRatio) || !cd2IsNonNegative(def->contactPushMaxVelocity) ||
 		!cd2IsNonNegative(def->jointHertz) || !cd2IsNonNegative(def->jointDampingRatio) ||
 		!(cdIsValidReal(def->maximumLinearSpeed) && def->maximumLinearSpeed > CD_R(0.0)) ||
-		!cd2IsNonNegative(def->lengthUnitsPerMeter) || def->workerCount < 0)
+		!cd2IsNonNegative(def->lengthUnitsPerMeter) || def->workerCount < 0 ||
+		(def->enqueueTask == NULL) != (def->finishTask == NULL))
 	{
 		CD2_REFUSE("cd2CreateWorld: bad world definition (NaN, negative or missing value)");
 		return CD2_NULL_WORLD_ID;
@@ -145,6 +147,25 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 	world->enableSleep = def->enableSleep;
 	world->enableContinuous = def->enableContinuous;
 	world->userData = def->userData;
+	world->workerCount = def->workerCount > 1 ? def->workerCount : 1;
+	if (def->enqueueTask != NULL)
+	{
+		world->enqueueTask = def->enqueueTask;
+		world->finishTask = def->finishTask;
+		world->userTaskContext = def->userTaskContext;
+	}
+	else if (world->workerCount > 1)
+	{
+		/* No task system given: the built-in pool. Without threads (no pool) the step runs on the
+		 * calling thread, with the same results. */
+		world->threadPool = cdThreadPool_Create(world->workerCount);
+		if (world->threadPool != NULL)
+		{
+			world->enqueueTask = cdThreadPool_Enqueue;
+			world->finishTask = cdThreadPool_Finish;
+			world->userTaskContext = world->threadPool;
+		}
+	}
 	s_worlds[slot] = world;
 	cd2WorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
@@ -178,6 +199,7 @@ void cd2DestroyWorld(cd2WorldId worldId)
 	cdArrayFree(world->sensorEndEvents);
 	cdArrayFree(world->moveEvents);
 	cdArena_Destroy(&world->arena);
+	cdThreadPool_Destroy(world->threadPool);
 	s_worlds[world->index] = NULL;
 	cdFree(world);
 }

@@ -6,6 +6,7 @@
 #include "collide/world2.h"
 
 #include "../base/container.h"
+#include "../base/graph_color.h"
 #include "wide2.h"
 
 #define CD2_NULL_INDEX (-1)
@@ -229,6 +230,9 @@ typedef struct cd2ContactConstraintWide
 	cdW biasRate, massScale, impulseScale;
 	cd2ContactPointWide points[2];
 	int indexA[CD_W], indexB[CD_W]; /* solver bodies; the zero body (index bodyCount) when immovable */
+	/* 1 when the lane's body can move (its velocity is written back): immovable bodies (the zero
+	 * body, kinematic bodies) are shared between blocks of one colour and only read. */
+	unsigned char movesA[CD_W], movesB[CD_W];
 	int constraint[CD_W];			/* index in the constraint array, -1 for an empty lane */
 } cd2ContactConstraintWide;
 
@@ -251,6 +255,9 @@ typedef struct cd2StepContext
 	cd2ContactConstraintWide* wide;
 	int wideCount;
 	int overflowStart;
+	/* The blocks of colour c are [colorBlockStart[c], colorBlockStart[c + 1]). */
+	int colorBlockStart[CD_GRAPH_COLOR_COUNT + 1];
+	int colorCount;
 	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
@@ -305,6 +312,12 @@ typedef struct cd2World
 	int stepEndEventCount, stepSensorEndEventCount;
 	cdReal stepTimeStep; /* of the step in progress (0 outside a step) */
 	cdArena arena;
+	/* tasks: the user's callbacks, or the built-in pool's (see cd2RunTask) */
+	int workerCount;
+	cdEnqueueTaskCallback* enqueueTask;
+	cdFinishTaskCallback* finishTask;
+	void* userTaskContext;
+	struct cdThreadPool* threadPool;
 	bool outOfMemory;
 } cd2World;
 
@@ -351,9 +364,13 @@ void cd2PrepareContacts(cd2World* world, cd2StepContext* context);
 void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
+/* Runs task over [0, itemCount) on the world's workers (in pieces of at least minRange items) and
+ * returns when it is done; on the calling thread when there is one worker or few items. */
+void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext);
 bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
-void cd2WarmStartContactsWide(cd2StepContext* context);
-void cd2SolveContactsWide(cd2StepContext* context, bool useBias);
+/* Blocks [start, end) of the wide constraints (one colour at most, see colorBlockStart). */
+void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end);
+void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias);
 void cd2StoreContactsWide(cd2StepContext* context);
 void cd2StoreImpulses(cd2World* world, cd2StepContext* context);
 
