@@ -6,7 +6,7 @@
 
 #include "collide/collide.h"
 
-#if defined(__EMSCRIPTEN__) || defined(COLLIDE_NO_THREADS)
+#if defined(__EMSCRIPTEN__) || defined(__wasi__) || defined(COLLIDE_NO_THREADS)
 
 cdThreadPool* cdThreadPool_Create(int workerCount)
 {
