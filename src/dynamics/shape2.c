@@ -167,9 +167,13 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 	const cd2Body* body = world->bodies.data + shape->body;
 	cd2Aabb aabb = cd2ComputeWorldShapeAabb(shape, body->transform);
 	aabb = cd2AabbInflate(aabb, CD_SPECULATIVE_DISTANCE);
-	if (body->type != CD_STATIC_BODY && world->stepTimeStep > CD_R(0.0))
+	if (body->isBullet && body->type != CD_STATIC_BODY && world->stepTimeStep > CD_R(0.0))
 	{
-		/* Reach where the body will be next step, so its contacts exist before it gets there. */
+		/* A bullet reaches where it will be next step, so its contacts with moving bodies exist
+		 * before it gets there (continuous collision stops it in front of them). Other bodies do
+		 * not: the reach made every moving body's fat box overlap neighbours it could not touch, and
+		 * their contacts rely on the speculative margin and, against static shapes, on continuous
+		 * collision. */
 		cd2Vec d = cd2Scale(world->stepTimeStep, body->linearVelocity);
 		cd2Aabb ahead = {cd2Add(aabb.min, d), cd2Add(aabb.max, d)};
 		aabb = cd2AabbUnion(aabb, ahead);
