@@ -5,6 +5,28 @@
  * This is what keeps a fast ball from tunnelling through a thin wall. */
 #include "world2_internal.h"
 
+/* The core of a shape for continuous collision, as a fraction of its body's inner extent. */
+#define CD2_CORE_FRACTION CD_R(0.25)
+
+/* A shape's centroid in its body's frame. */
+static cd2Vec cd2WorldShapeCentroid(const cd2WorldShape* shape)
+{
+	switch (shape->type)
+	{
+		case CD2_WORLD_SHAPE_CIRCLE:
+			return shape->geometry.circle.center;
+		case CD2_WORLD_SHAPE_CAPSULE:
+			return cd2Lerp(shape->geometry.capsule.p1, shape->geometry.capsule.p2, CD_R(0.5));
+		case CD2_WORLD_SHAPE_POLYGON:
+			return shape->geometry.polygon.centroid;
+		case CD2_WORLD_SHAPE_SEGMENT:
+			return cd2Lerp(shape->geometry.segment.p1, shape->geometry.segment.p2, CD_R(0.5));
+		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
+			return cd2Lerp(shape->geometry.chainSegment.p1, shape->geometry.chainSegment.p2, CD_R(0.5));
+	}
+	return CD2_VEC_ZERO;
+}
+
 typedef struct cd2ContinuousContext
 {
 	cd2World* world;
@@ -59,6 +81,21 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 	if ((out.state == CD_TOI_HIT || out.state == CD_TOI_FAILED) && CD_R(0.0) < out.t && out.t < c->fraction)
 	{
 		c->fraction = out.t;
+	}
+	else if (out.t <= CD_R(0.0) && body->minExtent > CD_R(0.0))
+	{
+		/* Already touching at the start (a body pressed against a wall and then hit hard): the
+		 * whole shape gives no time of impact, so sweep its core instead, a small disc at its
+		 * centroid. Without this the body is free to pass through the wall in one step. */
+		cd2Shape core;
+		core.type = CD2_SHAPE_CIRCLE;
+		core.circle.center = cd2WorldShapeCentroid(shape);
+		core.circle.radius = CD2_CORE_FRACTION * body->minExtent;
+		out = cd2TimeOfImpact(&core, &c->sweep, &b, &otherSweep, CD_LINEAR_SLOP, CD_R(0.25) * CD_LINEAR_SLOP);
+		if ((out.state == CD_TOI_HIT || out.state == CD_TOI_FAILED) && CD_R(0.0) < out.t && out.t < c->fraction)
+		{
+			c->fraction = out.t;
+		}
 	}
 	return true;
 }

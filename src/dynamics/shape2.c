@@ -122,15 +122,58 @@ cd2Aabb cd2ComputeWorldShapeAabb(const cd2WorldShape* shape, cd2Transform xf)
 	return cd2ComputeShapeAabb(&tagged);
 }
 
+/* The fat-box margin of a moving shape: a fraction of its size, at most CD2_AABB_MARGIN. The
+ * margin spares the broadphase a move while the shape jiggles in place, but every pair of fat
+ * boxes that overlap is a contact the narrowphase updates each step; a margin as large as a small
+ * shape itself keeps two to three times the contacts of the shapes that really are close. */
+static cdReal cd2ShapeAabbMargin(const cd2WorldShape* shape)
+{
+	cdReal extent = CD_R(0.0);
+	switch (shape->type)
+	{
+		case CD2_WORLD_SHAPE_CIRCLE:
+			extent = shape->geometry.circle.radius;
+			break;
+		case CD2_WORLD_SHAPE_CAPSULE:
+			extent = CD_R(0.5) * cd2Length(cd2Sub(shape->geometry.capsule.p2, shape->geometry.capsule.p1)) +
+					 shape->geometry.capsule.radius;
+			break;
+		case CD2_WORLD_SHAPE_POLYGON:
+		{
+			const cd2Polygon* polygon = &shape->geometry.polygon;
+			cdReal far2 = CD_R(0.0);
+			for (int i = 0; i < polygon->count; ++i)
+			{
+				cd2Vec d = cd2Sub(polygon->vertices[i], polygon->centroid);
+				far2 = cdMax(far2, cd2Dot(d, d));
+			}
+			extent = cdSqrt(far2) + polygon->radius;
+			break;
+		}
+		case CD2_WORLD_SHAPE_SEGMENT:
+			extent = CD_R(0.5) * cd2Length(cd2Sub(shape->geometry.segment.p2, shape->geometry.segment.p1));
+			break;
+		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
+			extent =
+				CD_R(0.5) * cd2Length(cd2Sub(shape->geometry.chainSegment.p2, shape->geometry.chainSegment.p1));
+			break;
+	}
+	return cdMin(CD2_AABB_MARGIN, CD2_AABB_MARGIN_FRACTION * extent);
+}
+
 void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 {
 	cd2WorldShape* shape = world->shapes.data + shapeIndex;
 	const cd2Body* body = world->bodies.data + shape->body;
 	cd2Aabb aabb = cd2ComputeWorldShapeAabb(shape, body->transform);
 	aabb = cd2AabbInflate(aabb, CD_SPECULATIVE_DISTANCE);
-	if (body->type != CD_STATIC_BODY && world->stepTimeStep > CD_R(0.0))
+	if (body->isBullet && body->type != CD_STATIC_BODY && world->stepTimeStep > CD_R(0.0))
 	{
-		/* Reach where the body will be next step, so its contacts exist before it gets there. */
+		/* A bullet reaches where it will be next step, so its contacts with moving bodies exist
+		 * before it gets there (continuous collision stops it in front of them). Other bodies do
+		 * not: the reach made every moving body's fat box overlap neighbours it could not touch, and
+		 * their contacts rely on the speculative margin and, against static shapes, on continuous
+		 * collision. */
 		cd2Vec d = cd2Scale(world->stepTimeStep, body->linearVelocity);
 		cd2Aabb ahead = {cd2Add(aabb.min, d), cd2Add(aabb.max, d)};
 		aabb = cd2AabbUnion(aabb, ahead);
@@ -140,7 +183,7 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 	{
 		return;
 	}
-	cdReal margin = body->type == CD_STATIC_BODY ? CD_R(0.0) : CD2_AABB_MARGIN;
+	cdReal margin = body->type == CD_STATIC_BODY ? CD_R(0.0) : cd2ShapeAabbMargin(shape);
 	if (shape->proxyId == CD_NULL_PROXY)
 	{
 		shape->fatAabb = cd2AabbInflate(aabb, margin);

@@ -15,6 +15,11 @@
 #define CD2_TIME_TO_SLEEP CD_R(0.5)
 /* Fat-box margin of shapes (scaled by the length units). */
 #define CD2_AABB_MARGIN (CD_R(0.1) * cdGetLengthUnitsPerMeter())
+/* A shape's fat-box margin is this fraction of its extent (centre to farthest point), at most
+ * CD2_AABB_MARGIN. */
+#ifndef CD2_AABB_MARGIN_FRACTION
+#define CD2_AABB_MARGIN_FRACTION CD_R(0.125)
+#endif
 /* Most rotation per sub-step (radians), so the small-angle rotation update stays accurate. */
 #define CD2_MAX_ROTATION (CD_R(0.25) * CD_PI)
 
