@@ -41,9 +41,9 @@ MATH_HEADERS = {"math2.h", "math3.h", "base.h"}
 
 # name -> reason. Keep this list short: every line is a name users must learn as an exception.
 EXCEPTIONS = {
-    "cd3ComputeHull": "creates a cd3Hull (spelled by issue 3: Compute, as in computing a convex hull)",
-    "cd3MakeBoxHull": "creates a cd3Hull (spelled by issue 3)",
-    "cd3MakeCylinderHull": "creates a cd3Hull (spelled by issue 3)",
+    "cd3ComputeHull": "creates a cd3Hull (spelled by the hull API's contract: Compute, as in computing a convex hull)",
+    "cd3MakeBoxHull": "creates a cd3Hull (spelled by the hull API's contract)",
+    "cd3MakeCylinderHull": "creates a cd3Hull (spelled by the hull API's contract)",
     "cd3MakeConeHull": "creates a cd3Hull (the family of cd3MakeBoxHull)",
     "cdInternalAssert": "called by the CD_ASSERT macro only",
     "cd3CollideHullTriangle": "former order of cd3CollideTriangleHull, kept for one release",
