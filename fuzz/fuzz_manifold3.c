@@ -118,8 +118,9 @@ static void CheckManifold(const cd3Manifold* m, const cd3Shape* a, const cd3Shap
 		{
 			double scaleA = FuzzShapeScale3(a), scaleB = FuzzShapeScale3(b);
 			bool disparate = fmax(scaleA, scaleB) > DISPARATE_SCALE * fmin(scaleA, scaleB);
-			Fail(disparate ? "manifold-surface-disparate"
-						   : (p->separation > CD_R(0.0) ? "manifold-surface-speculative" : "manifold-surface"),
+			Fail(disparate
+					 ? "manifold-surface-disparate"
+					 : (p->separation > CD_R(0.0) ? "manifold-surface-speculative" : "manifold-surface"),
 				 "%s: point %d (%.9g %.9g %.9g) separation %.9g: %.3g off A, %.3g off B (band %.3g)", what, i,
 				 (double)p->point.x, (double)p->point.y, (double)p->point.z, (double)p->separation, offA,
 				 offB, band);

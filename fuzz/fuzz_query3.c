@@ -583,8 +583,8 @@ static void CheckRay(const cd3Shape* s, cd3Ray ray)
 		if (hit.fraction != CD_R(0.0) || Distance(hit.normal, expected) > 4.0 * FUZZ_UNIT_TOL)
 		{
 			Fail("ray-inside", "%s ray cast from inside: fraction %.9g, normal (%.9g %.9g %.9g)",
-				 cd3GetShapeTypeName(s->type), (double)hit.fraction, (double)hit.normal.x, (double)hit.normal.y,
-				 (double)hit.normal.z);
+				 cd3GetShapeTypeName(s->type), (double)hit.fraction, (double)hit.normal.x,
+				 (double)hit.normal.y, (double)hit.normal.z);
 		}
 	}
 }

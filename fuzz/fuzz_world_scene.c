@@ -19,7 +19,6 @@
 #include <string.h>
 #include <unistd.h>
 
-
 static void Fail(const char* what, int body)
 {
 	fprintf(stderr, "fuzz_world_scene: %s (body %d)\n", what, body);

@@ -36,7 +36,8 @@ static void buildPyramid(World2Snapshot* s)
 	{
 		for (int j = i; j < 4; ++j)
 		{
-			World2Body b = makeBody(key++, (i + 1) * 0.5 + (j - i) * 1.0 - 2.0, 2.0 * i * 0.5 + 0.5, WORLD2_DYNAMIC);
+			World2Body b =
+				makeBody(key++, (i + 1) * 0.5 + (j - i) * 1.0 - 2.0, 2.0 * i * 0.5 + 0.5, WORLD2_DYNAMIC);
 			TEST_CHECK(world2SnapshotAdd(s, &b));
 		}
 	}
@@ -170,7 +171,8 @@ static void TestRampCriterion(void)
 					   WORLD2_RAMP_FRICTION * cos(WORLD2_RAMP_STEEP_DEGREES * pi / 180.0));
 	double d = 0.5 * a * t * t;
 	World2Snapshot start = {0}, end = {0};
-	World2Body gentle = makeBody(1, -15.0, 0.7, WORLD2_DYNAMIC), steep = makeBody(2, 19.0, 4.0, WORLD2_DYNAMIC);
+	World2Body gentle = makeBody(1, -15.0, 0.7, WORLD2_DYNAMIC),
+			   steep = makeBody(2, 19.0, 4.0, WORLD2_DYNAMIC);
 	TEST_CHECK(world2SnapshotAdd(&start, &gentle) && world2SnapshotAdd(&start, &steep));
 	steep.x -= d * cos(40.0 * pi / 180.0);
 	steep.y -= d * sin(40.0 * pi / 180.0) * 1.01; /* 1% off along one axis: within 2% */
@@ -208,8 +210,8 @@ static void runCollideScene(World2SceneId id)
 	cd2Counters counters = cd2World_GetCounters(scene.world);
 	TEST_CHECKF(end.count == counters.bodyCount, "%s: snapshot %d bodies, world %d", info->name, end.count,
 				counters.bodyCount);
-	World2Quality q = world2SceneQuality(&scene, &start, &end,
-										 (double)(info->stepCount - info->settleStepCount) / 60.0);
+	World2Quality q =
+		world2SceneQuality(&scene, &start, &end, (double)(info->stepCount - info->settleStepCount) / 60.0);
 	TEST_CHECKF(q.computed && q.pass, "%s: %s", info->name, q.text);
 	printf("%s: %s\n", info->name, q.text);
 	world2SnapshotFree(&start);

@@ -9,10 +9,12 @@
 /* Step counts and sub-steps of Box2D v3's benchmark/main.c for its scenes; the pyramids of bases 20
  * and 40 and the card house stand 10 s after 1 s of settling. */
 static const World2SceneInfo world2Scenes[WORLD2_SCENE_COUNT] = {
-	{"pyramid_20", 660, 4, false, 60},	 {"pyramid_40", 660, 4, false, 60}, {"large_pyramid", 500, 4, true, 60},
-	{"many_pyramids", 200, 4, true, 60}, {"joint_grid", 500, 4, true, 0},	{"rain", 1000, 4, true, 0},
-	{"smash", 300, 4, true, 0},			 {"spinner", 500, 4, true, 0},		{"tumbler", 750, 4, true, 0},
-	{"card_house", 660, 4, false, 60},	 {"ramp", 120, 4, false, 0},		{"bullets", 120, 4, false, 0},
+	{"pyramid_20", 660, 4, false, 60},	 {"pyramid_40", 660, 4, false, 60},
+	{"large_pyramid", 500, 4, true, 60}, {"many_pyramids", 200, 4, true, 60},
+	{"joint_grid", 500, 4, true, 0},	 {"rain", 1000, 4, true, 0},
+	{"smash", 300, 4, true, 0},			 {"spinner", 500, 4, true, 0},
+	{"tumbler", 750, 4, true, 0},		 {"card_house", 660, 4, false, 60},
+	{"ramp", 120, 4, false, 0},			 {"bullets", 120, 4, false, 0},
 	{"side_scroller", 900, 4, false, 0}, {"slingshot", 600, 4, false, 0},
 };
 
@@ -141,7 +143,8 @@ static World2Quality fail(const char* text)
 
 /* Apexes: dynamic boxes with no dynamic body resting on them at the start (nothing within 0.6 m
  * sideways and 0.6-1.4 box heights above). Worst apex displacement < 2 cm. */
-static World2Quality checkPyramids(const World2Snapshot* start, const World2Snapshot* end, const World2Body* sortedEnd)
+static World2Quality checkPyramids(const World2Snapshot* start, const World2Snapshot* end,
+								   const World2Body* sortedEnd)
 {
 	World2Quality q;
 	memset(&q, 0, sizeof(q));
@@ -173,7 +176,8 @@ static World2Quality checkPyramids(const World2Snapshot* start, const World2Snap
 		{
 			const World2Body* o = &start->bodies[j];
 			double dy = o->y - b->y;
-			covered = (j != i && o->type == WORLD2_DYNAMIC && dy > 0.6 && dy < 1.4 && fabs(o->x - b->x) < 0.6);
+			covered =
+				(j != i && o->type == WORLD2_DYNAMIC && dy > 0.6 && dy < 1.4 && fabs(o->x - b->x) < 0.6);
 		}
 		if (!covered)
 		{
@@ -183,8 +187,8 @@ static World2Quality checkPyramids(const World2Snapshot* start, const World2Snap
 	}
 	q.value = worst;
 	q.pass = apexCount > 0 && worst < q.limit;
-	snprintf(q.text, sizeof(q.text), "worst of %d apexes moved %.2f cm; %d of %d boxes moved > 10 cm", apexCount,
-			 100.0 * worst, fallen, dynamicCount);
+	snprintf(q.text, sizeof(q.text), "worst of %d apexes moved %.2f cm; %d of %d boxes moved > 10 cm",
+			 apexCount, 100.0 * worst, fallen, dynamicCount);
 	return q;
 }
 
@@ -214,7 +218,8 @@ static World2Quality checkPyramidsFast(const World2Snapshot* start, const World2
 		table[i] = -1;
 	}
 #define W2_CELL(v) ((long long)floor((v) / 0.5))
-#define W2_HASH(cx, cy) ((size_t)(((uint64_t)(cx) * 0x9E3779B97F4A7C15ull) ^ ((uint64_t)(cy) * 0xC2B2AE3D27D4EB4Full)))
+#define W2_HASH(cx, cy)                                                                                      \
+	((size_t)(((uint64_t)(cx)*0x9E3779B97F4A7C15ull) ^ ((uint64_t)(cy)*0xC2B2AE3D27D4EB4Full)))
 	for (int i = 0; i < start->count; ++i)
 	{
 		const World2Body* b = &start->bodies[i];
@@ -278,8 +283,8 @@ static World2Quality checkPyramidsFast(const World2Snapshot* start, const World2
 	free(table);
 	q.value = worst;
 	q.pass = apexCount > 0 && worst < q.limit;
-	snprintf(q.text, sizeof(q.text), "worst of %d apexes moved %.2f cm; %d of %d boxes moved > 10 cm", apexCount,
-			 100.0 * worst, fallen, dynamicCount);
+	snprintf(q.text, sizeof(q.text), "worst of %d apexes moved %.2f cm; %d of %d boxes moved > 10 cm",
+			 apexCount, 100.0 * worst, fallen, dynamicCount);
 	return q;
 }
 
@@ -356,8 +361,8 @@ static World2Quality checkJointGrid(const World2Snapshot* start, const World2Bod
 	free(grid);
 	q.value = worst;
 	q.pass = worst < q.limit;
-	snprintf(q.text, sizeof(q.text), "%dx%d grid hangs, lowest body at y = %.1f m; largest joint gap %.2f cm", n, n,
-			 lowest, 100.0 * worst);
+	snprintf(q.text, sizeof(q.text), "%dx%d grid hangs, lowest body at y = %.1f m; largest joint gap %.2f cm",
+			 n, n, lowest, 100.0 * worst);
 	return q;
 }
 
@@ -382,8 +387,8 @@ static World2Quality checkRain(const World2Snapshot* end)
 	}
 	q.value = lowest;
 	q.pass = dynamicCount > 0 && below == 0;
-	snprintf(q.text, sizeof(q.text), "%d ragdoll bodies, %d below the lowest floor, lowest at y = %.2f m", dynamicCount,
-			 below, lowest);
+	snprintf(q.text, sizeof(q.text), "%d ragdoll bodies, %d below the lowest floor, lowest at y = %.2f m",
+			 dynamicCount, below, lowest);
 	return q;
 }
 
@@ -409,8 +414,8 @@ static World2Quality checkSmash(const World2Snapshot* start, const World2Snapsho
 	double p0 = hypot(p0x, p0y);
 	q.value = p0 > 0.0 ? hypot(p1x - p0x, p1y - p0y) / p0 : 1.0;
 	q.pass = isfinite(q.value) && q.value < q.limit;
-	snprintf(q.text, sizeof(q.text), "momentum kept within %.3f%%; %d of %d bodies moving > 0.1 m/s", 100.0 * q.value,
-			 moving, end->count);
+	snprintf(q.text, sizeof(q.text), "momentum kept within %.3f%%; %d of %d bodies moving > 0.1 m/s",
+			 100.0 * q.value, moving, end->count);
 	return q;
 }
 
@@ -441,7 +446,8 @@ static World2Quality checkSpinner(const World2Snapshot* end)
 	}
 	q.value = farthest;
 	q.pass = dynamicCount > 0 && escaped == 0;
-	snprintf(q.text, sizeof(q.text), "%d bodies, %d escaped the ring, farthest %.2f m from its centre; spinner at %.2f rad",
+	snprintf(q.text, sizeof(q.text),
+			 "%d bodies, %d escaped the ring, farthest %.2f m from its centre; spinner at %.2f rad",
 			 dynamicCount, escaped, farthest, spinnerAngle);
 	return q;
 }
@@ -484,14 +490,15 @@ static World2Quality checkTumbler(const World2Snapshot* end)
 	}
 	q.value = worst;
 	q.pass = count > 0 && escaped == 0;
-	snprintf(q.text, sizeof(q.text), "%d boxes, %d escaped the drum (turned %.2f rad), outermost at %.2f m of 9.5", count,
-			 escaped, drum->angle, worst);
+	snprintf(q.text, sizeof(q.text),
+			 "%d boxes, %d escaped the drum (turned %.2f rad), outermost at %.2f m of 9.5", count, escaped,
+			 drum->angle, worst);
 	return q;
 }
 
 /* The top body at the start (highest y) moved less than limit. */
-static World2Quality checkTop(const World2Snapshot* start, const World2Body* sortedEnd, int endCount, double limit,
-							  const char* what)
+static World2Quality checkTop(const World2Snapshot* start, const World2Body* sortedEnd, int endCount,
+							  double limit, const char* what)
 {
 	const World2Body* top = NULL;
 	for (int i = 0; i < start->count; ++i)
@@ -513,11 +520,13 @@ static World2Quality checkTop(const World2Snapshot* start, const World2Body* sor
 	q.limit = limit;
 	q.value = displacement(top, e);
 	q.pass = q.value < limit;
-	snprintf(q.text, sizeof(q.text), "%s moved %.2f cm (from y = %.3f m to %.3f m)", what, 100.0 * q.value, top->y, e->y);
+	snprintf(q.text, sizeof(q.text), "%s moved %.2f cm (from y = %.3f m to %.3f m)", what, 100.0 * q.value,
+			 top->y, e->y);
 	return q;
 }
 
-static World2Quality checkRamp(const World2Snapshot* start, const World2Body* sortedEnd, int endCount, double time)
+static World2Quality checkRamp(const World2Snapshot* start, const World2Body* sortedEnd, int endCount,
+							   double time)
 {
 	/* Layout of scenes/world2_scenes.c: the gentle ramp's block starts at x < 0, the steep one's at
 	 * x > 0; both dynamic bodies are the only ones of the scene. */
@@ -555,9 +564,10 @@ static World2Quality checkRamp(const World2Snapshot* start, const World2Body* so
 	q.limit = 0.02;
 	q.value = fabs(measured / expected - 1.0);
 	q.pass = rest < 0.01 && q.value < q.limit;
-	snprintf(q.text, sizeof(q.text),
-			 "gentle-ramp block moved %.2f cm; steep-ramp block slid at %.3f m/s^2 (expected %.3f, error %.2f%%)",
-			 100.0 * rest, measured, expected, 100.0 * q.value);
+	snprintf(
+		q.text, sizeof(q.text),
+		"gentle-ramp block moved %.2f cm; steep-ramp block slid at %.3f m/s^2 (expected %.3f, error %.2f%%)",
+		100.0 * rest, measured, expected, 100.0 * q.value);
 	return q;
 }
 
@@ -582,11 +592,13 @@ static World2Quality checkBullets(const World2Snapshot* end)
 	}
 	q.value = farthest;
 	q.pass = count > 0 && crossed == 0;
-	snprintf(q.text, sizeof(q.text), "%d bullets, %d crossed the wall, farthest at x = %.3f m", count, crossed, farthest);
+	snprintf(q.text, sizeof(q.text), "%d bullets, %d crossed the wall, farthest at x = %.3f m", count,
+			 crossed, farthest);
 	return q;
 }
 
-World2Quality world2CheckQuality(World2SceneId id, const World2Snapshot* start, const World2Snapshot* end, double time)
+World2Quality world2CheckQuality(World2SceneId id, const World2Snapshot* start, const World2Snapshot* end,
+								 double time)
 {
 	World2Quality q;
 	memset(&q, 0, sizeof(q));

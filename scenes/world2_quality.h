@@ -115,7 +115,8 @@ typedef struct World2Quality
 } World2Quality;
 
 /* Judges a scene from its first and last snapshot; time is the simulated time between them (s). */
-World2Quality world2CheckQuality(World2SceneId id, const World2Snapshot* start, const World2Snapshot* end, double time);
+World2Quality world2CheckQuality(World2SceneId id, const World2Snapshot* start, const World2Snapshot* end,
+								 double time);
 
 #ifdef __cplusplus
 }

@@ -122,8 +122,8 @@ static void createManyPyramids(World2Scene* scene)
 				cdReal y = (CD_R(2.0) * (cdReal)i + CD_R(1.0)) * extent + baseY;
 				for (int j = i; j < baseCount; ++j)
 				{
-					cdReal x = ((cdReal)i + CD_R(1.0)) * extent + CD_R(2.0) * (cdReal)(j - i) * extent + centerX -
-							   CD_R(0.5);
+					cdReal x = ((cdReal)i + CD_R(1.0)) * extent + CD_R(2.0) * (cdReal)(j - i) * extent +
+							   centerX - CD_R(0.5);
 					def.position = vec(x, y);
 					cd2CreatePolygonShape(addBody(scene, &def), &shape, &box);
 				}
@@ -207,8 +207,8 @@ static const HumanBone humanBones[WORLD2_HUMAN_BONES] = {
 	{9, 0.975f, -0.125f, 0.125f, 0.03f, 1.1f, -0.2f, 0.3f, 0.1f, 0.1f, 0.25f, false},	 /* lower right arm */
 };
 
-static void createHuman(World2Scene* scene, World2Human* human, cd2Vec position, cdReal frictionTorque, cdReal hertz,
-						cdReal dampingRatio, int groupIndex)
+static void createHuman(World2Scene* scene, World2Human* human, cd2Vec position, cdReal frictionTorque,
+						cdReal hertz, cdReal dampingRatio, int groupIndex)
 {
 	cd2BodyDef def = cd2DefaultBodyDef();
 	def.type = CD_DYNAMIC_BODY;
@@ -292,7 +292,8 @@ static const int rainGridCount = 500;
 
 static void createRain(World2Scene* scene)
 {
-	scene->rain = (World2Human*)calloc(WORLD2_RAIN_ROWS * WORLD2_RAIN_COLUMNS * WORLD2_RAIN_GROUP, sizeof(World2Human));
+	scene->rain =
+		(World2Human*)calloc(WORLD2_RAIN_ROWS * WORLD2_RAIN_COLUMNS * WORLD2_RAIN_GROUP, sizeof(World2Human));
 	if (scene->rain == NULL)
 	{
 		scene->outOfMemory = true;
@@ -346,7 +347,8 @@ static void stepRain(World2Scene* scene, int stepIndex)
 	{
 		for (int row = 0; row < WORLD2_RAIN_ROWS; ++row)
 		{
-			World2Human* group = scene->rain + (row * WORLD2_RAIN_COLUMNS + scene->rainColumnIndex) * WORLD2_RAIN_GROUP;
+			World2Human* group =
+				scene->rain + (row * WORLD2_RAIN_COLUMNS + scene->rainColumnIndex) * WORLD2_RAIN_GROUP;
 			for (int i = 0; i < WORLD2_RAIN_GROUP; ++i)
 			{
 				destroyHuman(group + i);
@@ -523,7 +525,8 @@ static cd2BodyId addGroundBox(World2Scene* scene, cdReal x0, cdReal x1, cdReal t
 {
 	cd2BodyId ground = addStatic(scene, vec(0, 0));
 	cd2ShapeDef shape = cd2DefaultShapeDef();
-	cd2Polygon box = makeBox(CD_R(0.5) * (x1 - x0), CD_R(0.5), vec(CD_R(0.5) * (x0 + x1), top - CD_R(0.5)), 0);
+	cd2Polygon box =
+		makeBox(CD_R(0.5) * (x1 - x0), CD_R(0.5), vec(CD_R(0.5) * (x0 + x1), top - CD_R(0.5)), 0);
 	cd2CreatePolygonShape(ground, &shape, &box);
 	return ground;
 }
@@ -625,7 +628,8 @@ static void createBullets(World2Scene* scene)
 
 /* side_scroller's one-way platform: contacts with it hold only from above (normal from the
  * platform to the other shape pointing up, and not yet sunk in). */
-static bool oneWayPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold, void* context)
+static bool oneWayPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold,
+						   void* context)
 {
 	const World2Scene* scene = (const World2Scene*)context;
 	cdReal sign;
@@ -954,7 +958,8 @@ bool world2SceneSnapshot(const World2Scene* scene, World2Snapshot* out)
 		b.vy = (double)v.y;
 		b.w = (double)cd2Body_GetAngularVelocity(id);
 		b.mass = (double)cd2Body_GetMass(id);
-		b.type = type == CD_DYNAMIC_BODY ? WORLD2_DYNAMIC : (type == CD_KINEMATIC_BODY ? WORLD2_KINEMATIC : WORLD2_STATIC);
+		b.type = type == CD_DYNAMIC_BODY ? WORLD2_DYNAMIC
+										 : (type == CD_KINEMATIC_BODY ? WORLD2_KINEMATIC : WORLD2_STATIC);
 		if (!world2SnapshotAdd(out, &b))
 		{
 			return false;
@@ -976,16 +981,19 @@ static World2Quality sideScrollerQuality(const World2Scene* scene)
 	}
 	q.value = (double)p.x;
 	q.limit = 69.0;
-	q.pass = (double)p.x > q.limit && scene->lowestCharacterY > 0.5 && once == WORLD2_PICKUPS && scene->landedOnOneWay;
-	snprintf(q.text, sizeof(q.text),
-			 "character at x = %.2f m, y = %.2f m (lowest %.2f); %d of %d pick-ups entered and left exactly once; "
-			 "%s the one-way platform",
-			 (double)p.x, (double)p.y, scene->lowestCharacterY, once, WORLD2_PICKUPS,
-			 scene->landedOnOneWay ? "landed on" : "never stood on");
+	q.pass = (double)p.x > q.limit && scene->lowestCharacterY > 0.5 && once == WORLD2_PICKUPS &&
+			 scene->landedOnOneWay;
+	snprintf(
+		q.text, sizeof(q.text),
+		"character at x = %.2f m, y = %.2f m (lowest %.2f); %d of %d pick-ups entered and left exactly once; "
+		"%s the one-way platform",
+		(double)p.x, (double)p.y, scene->lowestCharacterY, once, WORLD2_PICKUPS,
+		scene->landedOnOneWay ? "landed on" : "never stood on");
 	return q;
 }
 
-static World2Quality slingshotQuality(const World2Scene* scene, const World2Snapshot* start, const World2Snapshot* end)
+static World2Quality slingshotQuality(const World2Scene* scene, const World2Snapshot* start,
+									  const World2Snapshot* end)
 {
 	World2Quality q;
 	memset(&q, 0, sizeof(q));
@@ -1032,13 +1040,14 @@ static World2Quality slingshotQuality(const World2Scene* scene, const World2Snap
 	q.value = (double)toppled;
 	q.limit = 3.0;
 	q.pass = toppled >= 3 && below == 0 && worstGap < 0.05;
-	snprintf(q.text, sizeof(q.text), "%d of %d tower blocks toppled; %d bodies below the ground; bridge joints' largest gap %.2f cm",
+	snprintf(q.text, sizeof(q.text),
+			 "%d of %d tower blocks toppled; %d bodies below the ground; bridge joints' largest gap %.2f cm",
 			 toppled, blocks, below, 100.0 * worstGap);
 	return q;
 }
 
-World2Quality world2SceneQuality(const World2Scene* scene, const World2Snapshot* start, const World2Snapshot* end,
-								 double time)
+World2Quality world2SceneQuality(const World2Scene* scene, const World2Snapshot* start,
+								 const World2Snapshot* end, double time)
 {
 	if (scene->id == WORLD2_SIDE_SCROLLER)
 	{

@@ -76,8 +76,8 @@ void world2SceneStep(World2Scene* scene, int stepIndex);
 /* Appends every live body to out (key: index and generation of its id). */
 bool world2SceneSnapshot(const World2Scene* scene, World2Snapshot* out);
 /* world2CheckQuality, and for side_scroller and slingshot the scene's own criterion. */
-World2Quality world2SceneQuality(const World2Scene* scene, const World2Snapshot* start, const World2Snapshot* end,
-								 double time);
+World2Quality world2SceneQuality(const World2Scene* scene, const World2Snapshot* start,
+								 const World2Snapshot* end, double time);
 void world2SceneDestroy(World2Scene* scene);
 
 #ifdef __cplusplus

@@ -194,10 +194,13 @@ static void TestAgainstHullPathAndReference(void)
 			cd3Triangle moved = {cd3Add(t.a, shift), cd3Add(t.b, shift), cd3Add(t.c, shift)};
 			double after = ReferenceSeparation(box, moved);
 			cd3Aabb bounds = cd3ComputeTriangleAabb(t);
-			double size = 2.0 * (double)cd3Length(box.halfExtents) + (double)cd3Length(cd3Sub(bounds.max, bounds.min));
-			TEST_CHECKF(fabs(after) <= TOL, "pair %d: deepest separation %.9g; moved by it along the normal, %.3g apart",
-						i, MinSeparation(&m), after);
-			TEST_CHECKF(MinSeparation(&m) <= reference + TOL && MinSeparation(&m) >= reference - 2e-4 * size - TOL,
+			double size =
+				2.0 * (double)cd3Length(box.halfExtents) + (double)cd3Length(cd3Sub(bounds.max, bounds.min));
+			TEST_CHECKF(fabs(after) <= TOL,
+						"pair %d: deepest separation %.9g; moved by it along the normal, %.3g apart", i,
+						MinSeparation(&m), after);
+			TEST_CHECKF(MinSeparation(&m) <= reference + TOL &&
+							MinSeparation(&m) >= reference - 2e-4 * size - TOL,
 						"pair %d: deepest separation %.9g, exact %.9g", i, MinSeparation(&m), reference);
 		}
 	}

@@ -14,7 +14,8 @@ static int s_typesTested[2][CD_BROADPHASE_TYPE_COUNT];
 	do                                                                                                       \
 	{                                                                                                        \
 		bool okCall_ = (call);                                                                               \
-		TEST_CHECKF(okCall_, "%s %dD %s: %s", cdGetBroadPhaseTypeName((o)->type), (o)->dim, (o)->error, what);  \
+		TEST_CHECKF(okCall_, "%s %dD %s: %s", cdGetBroadPhaseTypeName((o)->type), (o)->dim, (o)->error,      \
+					what);                                                                                   \
 		if (!okCall_)                                                                                        \
 		{                                                                                                    \
 			return false;                                                                                    \

@@ -64,11 +64,16 @@ typedef struct Family
 static void TestRandomCastNormals(void)
 {
 	static const Family families[] = {
-		{"polygon-polygon", CD2_SHAPE_POLYGON, CD2_SHAPE_POLYGON}, {"box-box", CD2_SHAPE_BOX, CD2_SHAPE_BOX},
-		{"box-polygon", CD2_SHAPE_BOX, CD2_SHAPE_POLYGON},		   {"circle-polygon", CD2_SHAPE_CIRCLE, CD2_SHAPE_POLYGON},
-		{"polygon-circle", CD2_SHAPE_POLYGON, CD2_SHAPE_CIRCLE},   {"capsule-polygon", CD2_SHAPE_CAPSULE, CD2_SHAPE_POLYGON},
-		{"polygon-capsule", CD2_SHAPE_POLYGON, CD2_SHAPE_CAPSULE}, {"capsule-capsule", CD2_SHAPE_CAPSULE, CD2_SHAPE_CAPSULE},
-		{"circle-circle", CD2_SHAPE_CIRCLE, CD2_SHAPE_CIRCLE},	   {"aabb-box", CD2_SHAPE_AABB, CD2_SHAPE_BOX},
+		{"polygon-polygon", CD2_SHAPE_POLYGON, CD2_SHAPE_POLYGON},
+		{"box-box", CD2_SHAPE_BOX, CD2_SHAPE_BOX},
+		{"box-polygon", CD2_SHAPE_BOX, CD2_SHAPE_POLYGON},
+		{"circle-polygon", CD2_SHAPE_CIRCLE, CD2_SHAPE_POLYGON},
+		{"polygon-circle", CD2_SHAPE_POLYGON, CD2_SHAPE_CIRCLE},
+		{"capsule-polygon", CD2_SHAPE_CAPSULE, CD2_SHAPE_POLYGON},
+		{"polygon-capsule", CD2_SHAPE_POLYGON, CD2_SHAPE_CAPSULE},
+		{"capsule-capsule", CD2_SHAPE_CAPSULE, CD2_SHAPE_CAPSULE},
+		{"circle-circle", CD2_SHAPE_CIRCLE, CD2_SHAPE_CIRCLE},
+		{"aabb-box", CD2_SHAPE_AABB, CD2_SHAPE_BOX},
 	};
 	TestRng rng = TestRngMake(0xca57a0222ull);
 	for (size_t f = 0; f < sizeof(families) / sizeof(families[0]); ++f)
@@ -78,7 +83,8 @@ static void TestRandomCastNormals(void)
 		for (int i = 0; i < 3000; ++i)
 		{
 			cd2Shape a = RandomShape(&rng, families[f].a), b = RandomShape(&rng, families[f].b);
-			double angle = TestRngRange(&rng, 0.0, 6.283185307179586), distance = TestRngRange(&rng, 3.5, 4.5);
+			double angle = TestRngRange(&rng, 0.0, 6.283185307179586),
+				   distance = TestRngRange(&rng, 3.5, 4.5);
 			cd2Vec start = cd2MakeVec((cdReal)(distance * cos(angle)), (cdReal)(distance * sin(angle)));
 			cd2Vec centerA = cd2AabbCenter(cd2ComputeShapeAabb(&a));
 			cd2Vec centerB = cd2AabbCenter(cd2ComputeShapeAabb(&b));
@@ -102,17 +108,19 @@ static void TestRandomCastNormals(void)
 			{
 				if (++failures <= 3)
 				{
-					TEST_CHECKF(false, "%s pair %d: fraction %.9g normal (%.9g %.9g) cuts A by %.3g, B by %.3g",
+					TEST_CHECKF(false,
+								"%s pair %d: fraction %.9g normal (%.9g %.9g) cuts A by %.3g, B by %.3g",
 								families[f].name, i, (double)out.fraction, (double)out.normal.x,
 								(double)out.normal.y, errorA, errorB);
 					PrintShape("A", &a);
 					PrintShape("B", &b);
-					fprintf(stderr, "  translation (%.9g %.9g)\n", (double)translation.x, (double)translation.y);
+					fprintf(stderr, "  translation (%.9g %.9g)\n", (double)translation.x,
+							(double)translation.y);
 				}
 			}
 		}
-		printf("  %-16s %4d hits, %d lines cut deeper than %.0e, worst %.3g\n", families[f].name, hits, failures,
-			   LINE_TOLERANCE, worst);
+		printf("  %-16s %4d hits, %d lines cut deeper than %.0e, worst %.3g\n", families[f].name, hits,
+			   failures, LINE_TOLERANCE, worst);
 		TEST_CHECKF(hits > 1000, "%s: only %d hits", families[f].name, hits);
 		TEST_CHECKF(failures == 0, "%s: %d failures", families[f].name, failures);
 	}

@@ -121,12 +121,18 @@ typedef struct Family
 static void TestRandomCastNormals(void)
 {
 	static const Family families[] = {
-		{"box-box", CD3_SHAPE_BOX, CD3_SHAPE_BOX},			   {"hull-hull", CD3_SHAPE_HULL, CD3_SHAPE_HULL},
-		{"hull-box", CD3_SHAPE_HULL, CD3_SHAPE_BOX},		   {"box-hull", CD3_SHAPE_BOX, CD3_SHAPE_HULL},
-		{"sphere-box", CD3_SHAPE_SPHERE, CD3_SHAPE_BOX},	   {"box-sphere", CD3_SHAPE_BOX, CD3_SHAPE_SPHERE},
-		{"sphere-hull", CD3_SHAPE_SPHERE, CD3_SHAPE_HULL},	   {"capsule-box", CD3_SHAPE_CAPSULE, CD3_SHAPE_BOX},
-		{"box-capsule", CD3_SHAPE_BOX, CD3_SHAPE_CAPSULE},	   {"capsule-hull", CD3_SHAPE_CAPSULE, CD3_SHAPE_HULL},
-		{"capsule-capsule", CD3_SHAPE_CAPSULE, CD3_SHAPE_CAPSULE}, {"aabb-box", CD3_SHAPE_AABB, CD3_SHAPE_BOX},
+		{"box-box", CD3_SHAPE_BOX, CD3_SHAPE_BOX},
+		{"hull-hull", CD3_SHAPE_HULL, CD3_SHAPE_HULL},
+		{"hull-box", CD3_SHAPE_HULL, CD3_SHAPE_BOX},
+		{"box-hull", CD3_SHAPE_BOX, CD3_SHAPE_HULL},
+		{"sphere-box", CD3_SHAPE_SPHERE, CD3_SHAPE_BOX},
+		{"box-sphere", CD3_SHAPE_BOX, CD3_SHAPE_SPHERE},
+		{"sphere-hull", CD3_SHAPE_SPHERE, CD3_SHAPE_HULL},
+		{"capsule-box", CD3_SHAPE_CAPSULE, CD3_SHAPE_BOX},
+		{"box-capsule", CD3_SHAPE_BOX, CD3_SHAPE_CAPSULE},
+		{"capsule-hull", CD3_SHAPE_CAPSULE, CD3_SHAPE_HULL},
+		{"capsule-capsule", CD3_SHAPE_CAPSULE, CD3_SHAPE_CAPSULE},
+		{"aabb-box", CD3_SHAPE_AABB, CD3_SHAPE_BOX},
 		{"sphere-sphere", CD3_SHAPE_SPHERE, CD3_SHAPE_SPHERE},
 	};
 	TestRng rng = TestRngMake(0xca57a0123ull);
@@ -158,7 +164,8 @@ static void TestRandomCastNormals(void)
 			{
 				if (++failures <= 3)
 				{
-					TEST_CHECKF(false, "%s pair %d: fraction %.9g normal (%.9g %.9g %.9g) cuts A by %.3g, B by %.3g",
+					TEST_CHECKF(false,
+								"%s pair %d: fraction %.9g normal (%.9g %.9g %.9g) cuts A by %.3g, B by %.3g",
 								families[f].name, i, (double)out.fraction, (double)out.normal.x,
 								(double)out.normal.y, (double)out.normal.z, errorA, errorB);
 					PrintShape("A", &a);
@@ -168,8 +175,8 @@ static void TestRandomCastNormals(void)
 				}
 			}
 		}
-		printf("  %-16s %4d hits, %d planes cut deeper than %.0e, worst %.3g\n", families[f].name, hits, failures,
-			   PLANE_TOLERANCE, worst);
+		printf("  %-16s %4d hits, %d planes cut deeper than %.0e, worst %.3g\n", families[f].name, hits,
+			   failures, PLANE_TOLERANCE, worst);
 		TEST_CHECKF(hits > 1000, "%s: only %d hits", families[f].name, hits);
 		TEST_CHECKF(failures == 0, "%s: %d failures", families[f].name, failures);
 	}

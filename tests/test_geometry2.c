@@ -244,8 +244,8 @@ static void TestBoundsRandom(void)
 			TEST_CHECKF(
 				fabs((double)b.min.x - minX) <= tolerance && fabs((double)b.min.y - minY) <= tolerance &&
 					fabs((double)b.max.x - maxX) <= tolerance && fabs((double)b.max.y - maxY) <= tolerance,
-				"%s: box (%g %g, %g %g), expected (%g %g, %g %g)", cd2GetShapeTypeName(s.type), (double)b.min.x,
-				(double)b.min.y, (double)b.max.x, (double)b.max.y, minX, minY, maxX, maxY);
+				"%s: box (%g %g, %g %g), expected (%g %g, %g %g)", cd2GetShapeTypeName(s.type),
+				(double)b.min.x, (double)b.min.y, (double)b.max.x, (double)b.max.y, minX, minY, maxX, maxY);
 			TEST_CHECK(cd2IsValidShape(&s));
 			TEST_CHECK(cd2IsValidAabb(b));
 		}

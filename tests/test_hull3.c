@@ -75,7 +75,8 @@ static cd3Hull* CheckCloud(TestRng* rng, const char* label, const cd3Vec* points
 {
 	cd3Hull* hull = NULL;
 	cdResult result = cd3ComputeHull(points, count, &hull);
-	TEST_CHECKF(result == CD_OK && hull != NULL, "%s (%d points): %s", label, count, cdGetResultString(result));
+	TEST_CHECKF(result == CD_OK && hull != NULL, "%s (%d points): %s", label, count,
+				cdGetResultString(result));
 	if (hull == NULL)
 	{
 		return NULL;

@@ -1016,7 +1016,8 @@ static void TestRandomPairs(void)
  * which is what the solver pushes along (docs/API.md, "2D contact manifolds"). */
 static void TestDepthAlongNormal(void)
 {
-	static const cd2ShapeType types[4] = {CD2_SHAPE_POLYGON, CD2_SHAPE_BOX, CD2_SHAPE_CIRCLE, CD2_SHAPE_CAPSULE};
+	static const cd2ShapeType types[4] = {CD2_SHAPE_POLYGON, CD2_SHAPE_BOX, CD2_SHAPE_CIRCLE,
+										  CD2_SHAPE_CAPSULE};
 	TestRng rng = TestRngMake(0xde9a7402ull);
 	int checked = 0, failures = 0;
 	double worst = 0.0, deepest = 0.0;
@@ -1040,7 +1041,8 @@ static void TestDepthAlongNormal(void)
 				++checked;
 				worst = fmax(worst, fabs(after));
 				deepest = fmax(deepest, exact - separation);
-				bool ok = fabs(after) <= 2e-4 && separation <= exact + TOL && separation >= exact - FLIP_SLACK;
+				bool ok =
+					fabs(after) <= 2e-4 && separation <= exact + TOL && separation >= exact - FLIP_SLACK;
 				if (!ok && ++failures <= 3)
 				{
 					TEST_CHECKF(false, "%s-%s #%d: separation %.9g (exact %.9g); moved by it, %.3g apart",

@@ -1188,13 +1188,16 @@ static void TestExactDepth(void)
 			{
 				for (int i = 0; i < q->pointCount; ++i)
 				{
-					fprintf(stderr, "   point %d id %x sep %.9g\n", i, q->points[i].id, (double)q->points[i].separation);
+					fprintf(stderr, "   point %d id %x sep %.9g\n", i, q->points[i].id,
+							(double)q->points[i].separation);
 				}
-				fprintf(stderr, "   normal %.9g %.9g %.9g reference %.9g\n", (double)q->normal.x, (double)q->normal.y, (double)q->normal.z, reference);
+				fprintf(stderr, "   normal %.9g %.9g %.9g reference %.9g\n", (double)q->normal.x,
+						(double)q->normal.y, (double)q->normal.z, reference);
 			}
-			TEST_CHECKF(q->pointCount > 0 && smallest <= reference + tol && smallest >= reference - bias - tol,
-						"kind %d #%d order %d: smallest separation %.9g, exact %.9g", kind, n, order, smallest,
-						reference);
+			TEST_CHECKF(q->pointCount > 0 && smallest <= reference + tol &&
+							smallest >= reference - bias - tol,
+						"kind %d #%d order %d: smallest separation %.9g, exact %.9g", kind, n, order,
+						smallest, reference);
 			if (q->pointCount > 0)
 			{
 				worst = fmax(worst, fabs(after) / -reference);
@@ -2335,8 +2338,9 @@ static cd3Shape FamilyShape(TestRng* rng, int family, cd3Vec center, cd3Hull* co
 		case 2:
 			s.type = CD3_SHAPE_BOX;
 			s.box.center = center;
-			s.box.halfExtents = cd3MakeVec((cdReal)TestRngRange(rng, 0.15, 0.6), (cdReal)TestRngRange(rng, 0.15, 0.6),
-										   (cdReal)TestRngRange(rng, 0.15, 0.6));
+			s.box.halfExtents =
+				cd3MakeVec((cdReal)TestRngRange(rng, 0.15, 0.6), (cdReal)TestRngRange(rng, 0.15, 0.6),
+						   (cdReal)TestRngRange(rng, 0.15, 0.6));
 			s.box.rotation = RandomQuat(rng);
 			break;
 		default:
@@ -2406,7 +2410,8 @@ static void TestDepthAlongNormal(void)
 				{
 					if (++failures <= 3)
 					{
-						TEST_CHECKF(false, "%s-%s #%d: depth %.9g along (%.9g %.9g %.9g) leaves separation %.3g",
+						TEST_CHECKF(false,
+									"%s-%s #%d: depth %.9g along (%.9g %.9g %.9g) leaves separation %.3g",
 									names[fa], names[fb], n, depth, (double)m.normal.x, (double)m.normal.y,
 									(double)m.normal.z, after);
 						PrintShape("a", &a);
@@ -2419,8 +2424,8 @@ static void TestDepthAlongNormal(void)
 					}
 				}
 			}
-			printf("  %-8s - %-8s %3d pairs, %d off by more than 2e-4, worst %.3g\n", names[fa], names[fb], checked,
-				   failures, worst);
+			printf("  %-8s - %-8s %3d pairs, %d off by more than 2e-4, worst %.3g\n", names[fa], names[fb],
+				   checked, failures, worst);
 			TEST_CHECKF(checked > 500, "%s-%s: only %d pairs", names[fa], names[fb], checked);
 			TEST_CHECKF(failures == 0, "%s-%s: %d pairs off", names[fa], names[fb], failures);
 		}
@@ -2505,8 +2510,8 @@ static void TestFlatCapsulesDepthAlongNormal(void)
 			worst = fmax(worst, fabs(after));
 			if (!(fabs(after) <= 2e-4) && ++failures <= 3)
 			{
-				TEST_CHECKF(false, "#%d order %d: tilt %.4g, separation %.9g leaves %.3g (%d points, id %x)", n, order,
-							tilt, separation, after, m.pointCount, m.points[0].id);
+				TEST_CHECKF(false, "#%d order %d: tilt %.4g, separation %.9g leaves %.3g (%d points, id %x)",
+							n, order, tilt, separation, after, m.pointCount, m.points[0].id);
 				PrintShape("capsule", &capsule);
 				PrintShape("polytope", &poly);
 			}
@@ -2569,14 +2574,15 @@ static void TestScaleInvariance(void)
 					}
 					if (!same && ++failures <= 5)
 					{
-						TEST_CHECKF(false,
-									"%s-%s #%d scaled by %g: %d points, separation %.9g (scaled back), normal "
-									"(%.6g %.6g %.6g); unscaled %d points, %.9g, (%.6g %.6g %.6g)",
-									TypeName(a.type), TypeName(b.type), n, (double)scale, q.pointCount,
-									q.pointCount ? MinSeparation(&q) / (double)scale : 0.0, (double)q.normal.x,
-									(double)q.normal.y, (double)q.normal.z, m.pointCount,
-									m.pointCount ? MinSeparation(&m) : 0.0, (double)m.normal.x, (double)m.normal.y,
-									(double)m.normal.z);
+						TEST_CHECKF(
+							false,
+							"%s-%s #%d scaled by %g: %d points, separation %.9g (scaled back), normal "
+							"(%.6g %.6g %.6g); unscaled %d points, %.9g, (%.6g %.6g %.6g)",
+							TypeName(a.type), TypeName(b.type), n, (double)scale, q.pointCount,
+							q.pointCount ? MinSeparation(&q) / (double)scale : 0.0, (double)q.normal.x,
+							(double)q.normal.y, (double)q.normal.z, m.pointCount,
+							m.pointCount ? MinSeparation(&m) : 0.0, (double)m.normal.x, (double)m.normal.y,
+							(double)m.normal.z);
 					}
 				}
 			}

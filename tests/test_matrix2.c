@@ -162,7 +162,6 @@ static void TestOverlapMatrix(void)
 	}
 }
 
-
 /* The shape and pair tables (src/query/pairs2.h) that drive the dispatchers: one row per shape
  * type and one row per unordered pair of types, each in canonical order, every pair exactly once;
  * and each pair's typed overlap function answers as cd2Overlap in both orders. */
@@ -183,8 +182,8 @@ static void TestPairTables(void)
 		for (int j = 0; j < CD2_SHAPE_TYPE_COUNT; ++j)
 		{
 			int expected = i <= j ? 1 : 0;
-			TEST_CHECKF(g_pairRows[i][j] == expected, "%s-%s: %d pair rows, expected %d", TypeName((cd2ShapeType)i),
-						TypeName((cd2ShapeType)j), g_pairRows[i][j], expected);
+			TEST_CHECKF(g_pairRows[i][j] == expected, "%s-%s: %d pair rows, expected %d",
+						TypeName((cd2ShapeType)i), TypeName((cd2ShapeType)j), g_pairRows[i][j], expected);
 		}
 	}
 

@@ -181,7 +181,6 @@ static void TestOppositePlanes(void)
 	TEST_CHECK(separated > 100);
 }
 
-
 /* The shape and pair tables (src/query/pairs3.h) that drive the dispatchers: one row per shape
  * type and one row per unordered pair of types, each in canonical order, every pair exactly once;
  * and each pair's typed overlap function answers as cd3Overlap in both orders. */
@@ -203,8 +202,8 @@ static void TestPairTables(void)
 		for (int j = 0; j < CD3_SHAPE_TYPE_COUNT; ++j)
 		{
 			int expected = i <= j ? 1 : 0;
-			TEST_CHECKF(g_pairRows[i][j] == expected, "%s-%s: %d pair rows, expected %d", TypeName((cd3ShapeType)i),
-						TypeName((cd3ShapeType)j), g_pairRows[i][j], expected);
+			TEST_CHECKF(g_pairRows[i][j] == expected, "%s-%s: %d pair rows, expected %d",
+						TypeName((cd3ShapeType)i), TypeName((cd3ShapeType)j), g_pairRows[i][j], expected);
 		}
 	}
 

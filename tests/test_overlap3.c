@@ -609,13 +609,14 @@ static void RunRandomPairs(double scale, double offset, double band, int casesPe
 				continue; /* random half-spaces always meet; the exact cases cover the rest */
 			}
 			TEST_CHECKF(apart >= casesPerPair / 20, "%s-%s scale %g: only %d apart cases",
-						cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), scale, apart);
+						cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), scale,
+						apart);
 			if (!thin || ta == CD3_SHAPE_SPHERE || ta == CD3_SHAPE_CAPSULE || ta == CD3_SHAPE_AABB ||
 				ta == CD3_SHAPE_BOX)
 			{
 				TEST_CHECKF(overlapping >= casesPerPair / 20, "%s-%s scale %g: only %d overlapping cases",
-							cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), scale,
-							overlapping);
+							cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb),
+							scale, overlapping);
 			}
 		}
 	}
@@ -713,8 +714,8 @@ static void TestTouchingPairs(void)
 				}
 			}
 			TEST_CHECKF(touching >= 5 && apart >= 20, "%s-%s: %d touching, %d apart cases",
-						cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb), touching,
-						apart);
+						cd3GetShapeTypeName((cd3ShapeType)ta), cd3GetShapeTypeName((cd3ShapeType)tb),
+						touching, apart);
 		}
 	}
 }

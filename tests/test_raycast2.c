@@ -1164,14 +1164,14 @@ static void TestRigidTransformInvariance(void)
 		cd2RayHit hit = UntouchedHit(), movedHit = UntouchedHit();
 		bool got = cd2Raycast(&s, ray, &hit);
 		bool movedGot = cd2Raycast(&moved, movedRay, &movedHit);
-		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd2GetShapeTypeName(type),
-					i, got, movedGot);
+		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform",
+					cd2GetShapeTypeName(type), i, got, movedGot);
 		if (got && movedGot)
 		{
 			double length = DLength(D(ray.translation));
 			TEST_CHECKF(fabs((double)hit.fraction - (double)movedHit.fraction) * length <= 10 * TOL * 10,
-						"%s case %d: fraction %.9g vs %.9g", cd2GetShapeTypeName(type), i, (double)hit.fraction,
-						(double)movedHit.fraction);
+						"%s case %d: fraction %.9g vs %.9g", cd2GetShapeTypeName(type), i,
+						(double)hit.fraction, (double)movedHit.fraction);
 			DVec rotated = DRotate(xf.q, D(hit.normal));
 			TEST_CHECKF(DLength(DSub(rotated, D(movedHit.normal))) <= 10 * TOL, "%s case %d: normal",
 						cd2GetShapeTypeName(type), i);

@@ -1087,14 +1087,14 @@ static void TestRigidTransformInvariance(void)
 		cd3RayHit hit = UntouchedHit(), movedHit = UntouchedHit();
 		bool got = cd3Raycast(&s, ray, &hit);
 		bool movedGot = cd3Raycast(&moved, movedRay, &movedHit);
-		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform", cd3GetShapeTypeName(type),
-					i, got, movedGot);
+		TEST_CHECKF(got == movedGot, "%s case %d: %d vs %d after a rigid transform",
+					cd3GetShapeTypeName(type), i, got, movedGot);
 		if (got && movedGot)
 		{
 			double length = DLength(D(ray.translation));
 			TEST_CHECKF(fabs((double)hit.fraction - (double)movedHit.fraction) * length <= 10 * TOL * 10,
-						"%s case %d: fraction %.9g vs %.9g", cd3GetShapeTypeName(type), i, (double)hit.fraction,
-						(double)movedHit.fraction);
+						"%s case %d: fraction %.9g vs %.9g", cd3GetShapeTypeName(type), i,
+						(double)hit.fraction, (double)movedHit.fraction);
 			DVec rotated = DRotate(xf.q, D(hit.normal));
 			TEST_CHECKF(DLength(DSub(rotated, D(movedHit.normal))) <= 10 * TOL, "%s case %d: normal",
 						cd3GetShapeTypeName(type), i);

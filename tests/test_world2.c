@@ -15,22 +15,28 @@ static void TestContractSnippet(void)
 {
 	unsigned char buffer[1 << 16];
 	size_t capacity = sizeof(buffer);
-	cd2WorldDef wd = cd2DefaultWorldDef();      /* wd.gravity (cd2Vec), wd.workerCount (int), wd.enableSleep (bool) */
+	cd2WorldDef wd =
+		cd2DefaultWorldDef(); /* wd.gravity (cd2Vec), wd.workerCount (int), wd.enableSleep (bool) */
 	cd2WorldId world = cd2CreateWorld(&wd);
-	cd2BodyDef bd = cd2DefaultBodyDef();        /* bd.type, bd.position (cd2Vec), bd.rotation (cd2Rot),
-	                                               bd.linearVelocity, bd.angularVelocity, bd.isBullet */
+	cd2BodyDef bd = cd2DefaultBodyDef(); /* bd.type, bd.position (cd2Vec), bd.rotation (cd2Rot),
+											bd.linearVelocity, bd.angularVelocity, bd.isBullet */
 	bd.type = CD_DYNAMIC_BODY;
 	cd2BodyId body = cd2CreateBody(world, &bd);
-	cd2ShapeDef sd = cd2DefaultShapeDef();      /* sd.density, sd.friction, sd.restitution, sd.isSensor,
-	                                               sd.enableSensorEvents, sd.filter */
-	cd2Polygon box; cd2MakeBoxPolygon((cd2Box){{0, 0}, {0.5f, 0.5f}, {1, 0}}, &box);
-	cd2ShapeId shape = cd2CreatePolygonShape(body, &sd, &box);   /* also cd2CreateCircleShape(body, &sd, &circle) */
+	cd2ShapeDef sd = cd2DefaultShapeDef(); /* sd.density, sd.friction, sd.restitution, sd.isSensor,
+											  sd.enableSensorEvents, sd.filter */
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{0, 0}, {0.5f, 0.5f}, {1, 0}}, &box);
+	cd2ShapeId shape =
+		cd2CreatePolygonShape(body, &sd, &box); /* also cd2CreateCircleShape(body, &sd, &circle) */
 	cd2World_Step(world, 1.0f / 60.0f, 4);
-	cd2Vec p = cd2Body_GetPosition(body); cd2Rot q = cd2Body_GetRotation(body);
-	cd2SensorEvents se = cd2World_GetSensorEvents(world);      /* se.beginCount, se.endCount */
+	cd2Vec p = cd2Body_GetPosition(body);
+	cd2Rot q = cd2Body_GetRotation(body);
+	cd2SensorEvents se = cd2World_GetSensorEvents(world); /* se.beginCount, se.endCount */
 	size_t n = cd2World_GetStateSize(world);
-	cdResult r = cd2World_SaveState(world, buffer, capacity);   /* and cd2World_RestoreState(world, buffer, n) */
-	cd2DestroyBody(body); bool stale = !cd2Body_IsValid(body);
+	cdResult r =
+		cd2World_SaveState(world, buffer, capacity); /* and cd2World_RestoreState(world, buffer, n) */
+	cd2DestroyBody(body);
+	bool stale = !cd2Body_IsValid(body);
 	cd2DestroyWorld(world);
 
 	TEST_CHECK(cd2Shape_IsValid(shape) == false);
@@ -62,7 +68,8 @@ static void RunRamp(cdReal theta, cdReal mu, bool* rests, cdReal* acceleration)
 	cd2ShapeDef sd = cd2DefaultShapeDef();
 	sd.friction = mu;
 	cd2Polygon box;
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(-0.5)}, {CD_R(50.0), CD_R(0.5)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(-0.5)}, {CD_R(50.0), CD_R(0.5)}, {CD_R(1.0), CD_R(0.0)}},
+					  &box);
 	cd2CreatePolygonShape(ramp, &sd, &box);
 	/* The block sits on the ramp's surface at x = 10 along it. */
 	cd2Rot q = cd2MakeRot(theta);
@@ -73,7 +80,8 @@ static void RunRamp(cdReal theta, cdReal mu, bool* rests, cdReal* acceleration)
 	bd.rotation = q;
 	bd.position = cd2Add(cd2Scale(CD_R(10.0), along), cd2Scale(CD_R(0.25), up));
 	cd2BodyId block = cd2CreateBody(world, &bd);
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.25), CD_R(0.25)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.25), CD_R(0.25)}, {CD_R(1.0), CD_R(0.0)}},
+					  &box);
 	cd2CreatePolygonShape(block, &sd, &box);
 	cd2Vec p0 = cd2Body_GetPosition(block);
 	cdReal v1 = CD_R(0.0), v2 = CD_R(0.0);
@@ -106,7 +114,8 @@ static void TestRampFriction(void)
 	RunRamp(theta, mu, &rests, &a);
 	double expected = -10.0 * (sin((double)theta) - (double)mu * cos((double)theta)); /* down the ramp: -x */
 	TEST_CHECK(!rests);
-	TEST_CHECKF(fabs((double)a - expected) <= 0.02 * fabs(expected), "a = %g, expected %g", (double)a, expected);
+	TEST_CHECKF(fabs((double)a - expected) <= 0.02 * fabs(expected), "a = %g, expected %g", (double)a,
+				expected);
 }
 
 static void TestRestitutionBounces(void)
@@ -153,7 +162,8 @@ static void TestSleepAndWake(void)
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	cd2WorldId world = cd2CreateWorld(&wd);
 	MakeGround(world);
-	cd2BodyId box = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId box =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
 	int sleptAt = -1;
 	for (int i = 0; i < 120; ++i)
 	{
@@ -167,7 +177,8 @@ static void TestSleepAndWake(void)
 	TEST_CHECKF(sleptAt >= 0 && sleptAt < 120, "slept at step %d", sleptAt);
 	cd2Vec rest = cd2Body_GetPosition(box);
 	/* A second box dropped onto it wakes it at the touch. */
-	cd2BodyId dropped = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(3.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId dropped =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(3.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
 	bool woke = false;
 	for (int i = 0; i < 120 && !woke; ++i)
 	{
@@ -264,7 +275,8 @@ static void TestSnapshotRestore(void)
 	}
 	CollectState(world, bodies, N, first);
 	/* Disturb the world (a new body, a destroyed one), then roll back. */
-	cd2BodyId extra = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId extra =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
 	cd2DestroyBody(bodies[5]);
 	TEST_CHECK(cd2World_RestoreState(world, buffer, size) == CD_OK);
 	TEST_CHECK(!cd2Body_IsValid(extra)); /* created after the save: stale */
@@ -301,7 +313,8 @@ static void TestStaleIdsRefused(void)
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	cd2WorldId world = cd2CreateWorld(&wd);
 	cd2BodyId ground = MakeGround(world);
-	cd2BodyId box = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId box =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
 	cd2ShapeId shapes[1];
 	TEST_CHECK(cd2Body_GetShapes(box, shapes, 1) == 1);
 	cd2DistanceJointDef jd = cd2DefaultDistanceJointDef();
@@ -316,7 +329,8 @@ static void TestStaleIdsRefused(void)
 	TEST_CHECK(!cd2Joint_IsValid(joint)); /* destroyed with its body */
 	TEST_CHECK(g_refusals == 0);
 	/* A new body may reuse the slot: the old id must still be stale. */
-	cd2BodyId reused = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId reused =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
 	TEST_CHECK(reused.index1 == box.index1);
 	TEST_CHECK(!cd2Body_IsValid(box));
 	cd2Vec p = cd2Body_GetPosition(box);
@@ -428,9 +442,12 @@ static void TestMassRatioStack(void)
 	wd.enableSleep = false;
 	cd2WorldId world = cd2CreateWorld(&wd);
 	MakeGround(world);
-	cd2BodyId light = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
-	cd2BodyId heavy = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(1.5)), CD_R(0.5), CD_R(0.5), CD_R(100.0), CD_R(0.6));
-	cd2BodyId heavier = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.5)), CD_R(0.5), CD_R(0.5), CD_R(100.0), CD_R(0.6));
+	cd2BodyId light =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.5)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId heavy =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(1.5)), CD_R(0.5), CD_R(0.5), CD_R(100.0), CD_R(0.6));
+	cd2BodyId heavier =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(2.5)), CD_R(0.5), CD_R(0.5), CD_R(100.0), CD_R(0.6));
 	for (int i = 0; i < 300; ++i)
 	{
 		cd2World_Step(world, DT, 4);
@@ -459,8 +476,10 @@ static void TestDeepOverlapSeparates(void)
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	wd.gravity = CD2_VEC_ZERO;
 	cd2WorldId world = cd2CreateWorld(&wd);
-	cd2BodyId a = MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
-	cd2BodyId b = MakeBox(world, cd2MakeVec(CD_R(0.5), CD_R(0.1)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId a =
+		MakeBox(world, cd2MakeVec(CD_R(0.0), CD_R(0.0)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
+	cd2BodyId b =
+		MakeBox(world, cd2MakeVec(CD_R(0.5), CD_R(0.1)), CD_R(0.5), CD_R(0.5), CD_R(1.0), CD_R(0.6));
 	cdReal maxSpeed = CD_R(0.0);
 	for (int i = 0; i < 120; ++i)
 	{

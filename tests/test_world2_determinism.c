@@ -187,7 +187,8 @@ static uint64_t RunPile(int workerCount, TestTaskSystem* system, int* bodyCountO
 	{
 		bd = cd2DefaultBodyDef();
 		bd.type = CD_DYNAMIC_BODY;
-		bd.position = cd2MakeVec(CD_R(-6.0) + CD_R(0.53) * (cdReal)i, CD_R(18.0) + CD_R(0.7) * (cdReal)(i % 5));
+		bd.position =
+			cd2MakeVec(CD_R(-6.0) + CD_R(0.53) * (cdReal)i, CD_R(18.0) + CD_R(0.7) * (cdReal)(i % 5));
 		bd.angularVelocity = CD_R(0.3) * (cdReal)(i % 7) - CD_R(1.0);
 		bodies[count] = cd2CreateBody(world, &bd);
 		if (i % 2 == 0)
@@ -237,8 +238,8 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 		{
 			int n = 0;
 			uint64_t h = RunPile(workers[k], NULL, &n);
-			TEST_CHECKF(h == reference, "run %d, %d workers: hash %016llx, single thread %016llx", run, workers[k],
-						(unsigned long long)h, (unsigned long long)reference);
+			TEST_CHECKF(h == reference, "run %d, %d workers: hash %016llx, single thread %016llx", run,
+						workers[k], (unsigned long long)h, (unsigned long long)reference);
 			/* The user's task system, inline (pieces in reverse order) and on its own threads. */
 			for (int threaded = 0; threaded < 2; ++threaded)
 			{

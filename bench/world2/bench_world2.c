@@ -9,7 +9,8 @@
  * Memory is the heap growth (glibc mallinfo2) from before the world to after building the scene,
  * per body, and from there to after the last step, per contact (contacts the engine reports at the
  * end). --budget S: no further run of a (scene, engine, workers) starts after S seconds on it (the
- * figure then says how many runs it is the median of). The quality criterion (scenes/world2_quality.h) is judged on the first run's snapshots.
+ * figure then says how many runs it is the median of). The quality criterion (scenes/world2_quality.h) is
+ * judged on the first run's snapshots.
  * --smoke: pyramid_20, 30 steps, 1 run, 1 worker; exits 1 unless every built column ran and
  * computed its quality criterion. Exit 2 on bad arguments. */
 #define _POSIX_C_SOURCE 200809L
@@ -99,7 +100,7 @@ typedef struct Result
 {
 	bool ran;
 	const char* error;
-	double msPerStep[2]; /* 1 and 2 workers; < 0: not run */
+	double msPerStep[2];	/* 1 and 2 workers; < 0: not run */
 	double minMsPerStep[2]; /* the fastest run: other processes only ever add time */
 	int runCount[2];
 	int bodies, contacts;
@@ -119,8 +120,8 @@ typedef struct Options
 } Options;
 
 /* One run; fills ms/step and, when measure, bodies, contacts, memory and quality. */
-static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int steps, bool measure, double* msPerStep,
-					Result* r)
+static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int steps, bool measure,
+					double* msPerStep, Result* r)
 {
 	const World2SceneInfo* info = world2SceneInfo(id);
 	const float timeStep = 1.0f / 60.0f;
@@ -170,7 +171,8 @@ static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int st
 		}
 		/* Per body only when the scene made most of its bodies when built (rain makes them while
 		 * it steps). */
-		r->bytesPerBody = (m0 >= 0.0 && bodies0 > 0 && 2 * bodies0 >= r->bodies) ? (m1 - m0) / (double)bodies0 : -1.0;
+		r->bytesPerBody =
+			(m0 >= 0.0 && bodies0 > 0 && 2 * bodies0 >= r->bodies) ? (m1 - m0) / (double)bodies0 : -1.0;
 		r->bytesPerContact = (m0 >= 0.0 && r->contacts > 0) ? (m2 - m1) / (double)r->contacts : -1.0;
 		r->quality.computed = false;
 		if (e->quality != NULL)
@@ -298,8 +300,9 @@ static const char* engineNameOf(int i)
 
 static void usage(void)
 {
-	fprintf(stderr, "usage: collide_bench_world2 [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--runs R]\n"
-					"                            [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]\n");
+	fprintf(stderr,
+			"usage: collide_bench_world2 [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--runs R]\n"
+			"                            [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]\n");
 }
 
 int main(int argc, char** argv)
@@ -413,8 +416,10 @@ int main(int argc, char** argv)
 
 	printf("collide_bench_world2: %s, build %s, library flags '%s'\n", BENCH_COMPILER, BENCH_BUILD_TYPE,
 		   BENCH_LIBRARY_FLAGS);
-	printf("%d run(s) per figure: median (and fastest run), interleaved across engines and worker counts; 60 Hz; "
-		   "ms/step excludes the first step; memory: heap growth per body (building) and per contact (stepping); "
+	printf("%d run(s) per figure: median (and fastest run), interleaved across engines and worker counts; 60 "
+		   "Hz; "
+		   "ms/step excludes the first step; memory: heap growth per body (building) and per contact "
+		   "(stepping); "
 		   "x v3: median / Box2D v3's median\n",
 		   o.runs);
 	for (int e = 0; e < ENGINE_COUNT; ++e)
@@ -432,7 +437,8 @@ int main(int argc, char** argv)
 			printf("  %-10s %s\n", engines[e].name, engines[e].engine->settings);
 		}
 	}
-	printf("\n| scene | engine | bodies | contacts | ms/step 1w | ms/step 2w | 2w speed-up | B/body | B/contact | "
+	printf("\n| scene | engine | bodies | contacts | ms/step 1w | ms/step 2w | 2w speed-up | B/body | "
+		   "B/contact | "
 		   "x v3 1w | x v3 2w | quality |\n");
 	printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
 	fflush(stdout);
@@ -465,10 +471,11 @@ int main(int argc, char** argv)
 			Result* r = &results[s][e];
 			if (engines[e].engine == NULL || !engines[e].engine->supports(id))
 			{
-				if (engines[e].engine == NULL && (s == WORLD2_PYRAMID_20 || info->box2dScene ||
-												  strcmp(engines[e].name, "collide") == 0))
+				if (engines[e].engine == NULL &&
+					(s == WORLD2_PYRAMID_20 || info->box2dScene || strcmp(engines[e].name, "collide") == 0))
 				{
-					printf("| %s | %s | | | | | | | | | | missing: %s |\n", info->name, engines[e].name, engines[e].why);
+					printf("| %s | %s | | | | | | | | | | missing: %s |\n", info->name, engines[e].name,
+						   engines[e].why);
 				}
 				continue;
 			}
@@ -490,8 +497,8 @@ int main(int argc, char** argv)
 				}
 				else if (r->runCount[w] < o.runs)
 				{
-					snprintf(cell, sizeof(cell), "%.3f (min %.3f, %d run%s)", r->msPerStep[w], r->minMsPerStep[w],
-							 r->runCount[w], r->runCount[w] == 1 ? "" : "s");
+					snprintf(cell, sizeof(cell), "%.3f (min %.3f, %d run%s)", r->msPerStep[w],
+							 r->minMsPerStep[w], r->runCount[w], r->runCount[w] == 1 ? "" : "s");
 				}
 				else
 				{
@@ -499,15 +506,20 @@ int main(int argc, char** argv)
 				}
 				printf(" %s |", cell);
 			}
-			printFigure((r->msPerStep[0] > 0.0 && r->msPerStep[1] > 0.0) ? r->msPerStep[0] / r->msPerStep[1] : -1.0,
+			printFigure((r->msPerStep[0] > 0.0 && r->msPerStep[1] > 0.0) ? r->msPerStep[0] / r->msPerStep[1]
+																		 : -1.0,
 						"%.2fx", 1);
 			printFigure(r->bytesPerBody, "%.0f", 1);
 			printFigure(r->bytesPerContact, "%.0f", 1);
 			double ratio1 = -1.0, ratio2 = -1.0;
 			if (v3 != NULL && v3 != r)
 			{
-				ratio1 = (v3->msPerStep[0] > 0.0 && r->msPerStep[0] >= 0.0) ? r->msPerStep[0] / v3->msPerStep[0] : -1.0;
-				ratio2 = (v3->msPerStep[1] > 0.0 && r->msPerStep[1] >= 0.0) ? r->msPerStep[1] / v3->msPerStep[1] : -1.0;
+				ratio1 = (v3->msPerStep[0] > 0.0 && r->msPerStep[0] >= 0.0)
+							 ? r->msPerStep[0] / v3->msPerStep[0]
+							 : -1.0;
+				ratio2 = (v3->msPerStep[1] > 0.0 && r->msPerStep[1] >= 0.0)
+							 ? r->msPerStep[1] / v3->msPerStep[1]
+							 : -1.0;
 			}
 			printFigure(ratio1, "%.2f", 1);
 			printFigure(ratio2, "%.2f", 1);

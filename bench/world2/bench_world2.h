@@ -27,8 +27,8 @@ typedef struct World2Engine
 	void (*destroy)(void* world);
 	/* Optional: the scene's own criterion when it needs more than snapshots (events); NULL or a
 	 * result with computed == false falls back to world2CheckQuality. */
-	World2Quality (*quality)(void* world, World2SceneId scene, const World2Snapshot* start, const World2Snapshot* end,
-							 double time);
+	World2Quality (*quality)(void* world, World2SceneId scene, const World2Snapshot* start,
+							 const World2Snapshot* end, double time);
 } World2Engine;
 
 /* Defined by the adapters that are built (W2_HAVE_<ENGINE>). */

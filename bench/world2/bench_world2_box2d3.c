@@ -124,7 +124,8 @@ static bool collectShape(b2ShapeId shapeId, void* context)
 	b2BodyId body = b2Shape_GetBody(shapeId);
 	b2BodyType type = b2Body_GetType(body);
 	b2ShapeId first;
-	if (b2Body_GetShapes(body, &first, 1) < 1 || first.index1 != shapeId.index1 || first.generation != shapeId.generation)
+	if (b2Body_GetShapes(body, &first, 1) < 1 || first.index1 != shapeId.index1 ||
+		first.generation != shapeId.generation)
 	{
 		return true;
 	}
@@ -139,7 +140,8 @@ static bool collectShape(b2ShapeId shapeId, void* context)
 	b.vy = v.y;
 	b.w = b2Body_GetAngularVelocity(body);
 	b.mass = b2Body_GetMass(body);
-	b.type = type == b2_dynamicBody ? WORLD2_DYNAMIC : (type == b2_kinematicBody ? WORLD2_KINEMATIC : WORLD2_STATIC);
+	b.type = type == b2_dynamicBody ? WORLD2_DYNAMIC
+									: (type == b2_kinematicBody ? WORLD2_KINEMATIC : WORLD2_STATIC);
 	c->ok = c->ok && world2SnapshotAdd(c->out, &b);
 	return true;
 }
@@ -169,7 +171,8 @@ static void box2d3Destroy(void* world)
 
 const World2Engine world2EngineBox2d3 = {
 	"box2d-v3",
-	"Box2D v3 (source snapshot, its benchmark scenes), 4 sub-steps, continuous on, built-in scheduler for 2 workers",
+	"Box2D v3 (source snapshot, its benchmark scenes), 4 sub-steps, continuous on, built-in scheduler for 2 "
+	"workers",
 	2,
 	box2d3Supports,
 	box2d3Create,

@@ -61,7 +61,8 @@ static World2Quality collideQuality(void* world, World2SceneId id, const World2S
 
 const World2Engine world2EngineCollide = {
 	"collide",
-	"collide's 2D world (defaults of cd2DefaultWorldDef), 4 sub-steps, scenes/world2_scenes.c; workerCount is "
+	"collide's 2D world (defaults of cd2DefaultWorldDef), 4 sub-steps, scenes/world2_scenes.c; workerCount "
+	"is "
 	"passed to cd2CreateWorld (2 workers: its built-in pool)",
 	2,
 	collideSupports,

@@ -98,24 +98,38 @@ CD_API cd3Manifold cd3Collide(const cd3Shape* a, const cd3Shape* b, cdReal specu
  * the same points (in A's frame), normal, separations and feature ids as the world-space form
  * called on a and on b transformed by xfB (points by cd3TransformPoint, rotations and hull
  * transforms by cd3MulQuat / cd3MulTransforms, no normalization): B is placed in A's frame on the
- * stack (a hull only composes its transform, its vertices are never copied), A is used as given. Contacts far from
- * the origin keep their precision, since the shapes' coordinates stay those of their body frames.
- * An AABB given as B is read as a box in its own frame (rotated by xfB). */
-CD_API cd3Manifold cd3CollideSphereSphereLocal(cd3Sphere a, cd3Sphere b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideSphereCapsuleLocal(cd3Sphere a, cd3Capsule b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideSphereBoxLocal(cd3Sphere a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideSphereHullLocal(cd3Sphere a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideSphereTriangleLocal(cd3Sphere a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideCapsuleCapsuleLocal(cd3Capsule a, cd3Capsule b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideCapsuleBoxLocal(cd3Capsule a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideCapsuleHullLocal(cd3Capsule a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideCapsuleTriangleLocal(cd3Capsule a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+ * stack (a hull only composes its transform, its vertices are never copied), A is used as given. Contacts far
+ * from the origin keep their precision, since the shapes' coordinates stay those of their body frames. An
+ * AABB given as B is read as a box in its own frame (rotated by xfB). */
+CD_API cd3Manifold cd3CollideSphereSphereLocal(cd3Sphere a, cd3Sphere b, cd3Transform xfB,
+											   cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereCapsuleLocal(cd3Sphere a, cd3Capsule b, cd3Transform xfB,
+												cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereBoxLocal(cd3Sphere a, cd3Box b, cd3Transform xfB,
+											cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereHullLocal(cd3Sphere a, cd3HullShape b, cd3Transform xfB,
+											 cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideSphereTriangleLocal(cd3Sphere a, cd3Triangle b, cd3Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleCapsuleLocal(cd3Capsule a, cd3Capsule b, cd3Transform xfB,
+												 cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleBoxLocal(cd3Capsule a, cd3Box b, cd3Transform xfB,
+											 cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleHullLocal(cd3Capsule a, cd3HullShape b, cd3Transform xfB,
+											  cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideCapsuleTriangleLocal(cd3Capsule a, cd3Triangle b, cd3Transform xfB,
+												  cdReal speculativeDistance);
 CD_API cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideBoxHullLocal(cd3Box a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideBoxTriangleLocal(cd3Box a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance);
-CD_API cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB, cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxHullLocal(cd3Box a, cd3HullShape b, cd3Transform xfB,
+										  cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideBoxTriangleLocal(cd3Box a, cd3Triangle b, cd3Transform xfB,
+											  cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideHullHullLocal(cd3HullShape a, cd3HullShape b, cd3Transform xfB,
+										   cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideTriangleHullLocal(cd3Triangle a, cd3HullShape b, cd3Transform xfB,
+											   cdReal speculativeDistance);
+CD_API cd3Manifold cd3CollideTriangleTriangleLocal(cd3Triangle a, cd3Triangle b, cd3Transform xfB,
+												   cdReal speculativeDistance);
 /* cd3Collide in A's frame: either order, as cd3Collide. */
 CD_API cd3Manifold cd3CollideLocal(const cd3Shape* a, const cd3Shape* b, cd3Transform xfB,
 								   cdReal speculativeDistance);

@@ -54,7 +54,8 @@ typedef struct cd3MeshStats
  * cd3DestroyMesh); on failure *mesh is NULL and the result says why: CD_ERROR_INVALID_ARGUMENT
  * (NULL pointer, count <= 0, an index out of range), CD_ERROR_TOO_MANY_POINTS (a count above
  * its limit), CD_ERROR_NOT_FINITE,
- * CD_ERROR_OUT_OF_RANGE (a coordinate beyond CD3_MESH_MAX_COORDINATE), CD_ERROR_DEGENERATE (every triangle has zero area), CD_ERROR_OUT_OF_MEMORY. */
+ * CD_ERROR_OUT_OF_RANGE (a coordinate beyond CD3_MESH_MAX_COORDINATE), CD_ERROR_DEGENERATE (every triangle
+ * has zero area), CD_ERROR_OUT_OF_MEMORY. */
 CD_API cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indices, int triangleCount,
 							  cd3Mesh** mesh);
 CD_API void cd3DestroyMesh(cd3Mesh* mesh);

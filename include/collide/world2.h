@@ -106,16 +106,16 @@ typedef void cdFinishTaskCallback(void* userTask, void* userContext);
 /* ---- world ---------------------------------------------------------------------------------- */
 typedef struct cd2WorldDef
 {
-	cd2Vec gravity;				  /* m/s^2, default (0, -10) */
-	cdReal restitutionThreshold;  /* approach speeds below this do not bounce (1 m/s) */
-	cdReal hitEventThreshold;	  /* approach speed that makes a hit event (1 m/s) */
-	cdReal contactHertz;		  /* contact stiffness (30 Hz, capped at an eighth of the sub-step rate) */
-	cdReal contactDampingRatio;	  /* 10 */
+	cd2Vec gravity;				   /* m/s^2, default (0, -10) */
+	cdReal restitutionThreshold;   /* approach speeds below this do not bounce (1 m/s) */
+	cdReal hitEventThreshold;	   /* approach speed that makes a hit event (1 m/s) */
+	cdReal contactHertz;		   /* contact stiffness (30 Hz, capped at an eighth of the sub-step rate) */
+	cdReal contactDampingRatio;	   /* 10 */
 	cdReal contactPushMaxVelocity; /* most speed at which overlap is pushed apart (3 m/s) */
-	cdReal jointHertz;			  /* 60 (capped at a quarter of the sub-step rate) */
-	cdReal jointDampingRatio;	  /* 2 */
-	cdReal maximumLinearSpeed;	  /* 400 m/s (scaled by the length units) */
-	cdReal lengthUnitsPerMeter;	  /* 0: keep cdGetLengthUnitsPerMeter(); else set it */
+	cdReal jointHertz;			   /* 60 (capped at a quarter of the sub-step rate) */
+	cdReal jointDampingRatio;	   /* 2 */
+	cdReal maximumLinearSpeed;	   /* 400 m/s (scaled by the length units) */
+	cdReal lengthUnitsPerMeter;	   /* 0: keep cdGetLengthUnitsPerMeter(); else set it */
 	bool enableSleep;
 	bool enableContinuous;
 	int workerCount; /* 1: the step runs on the calling thread (see the task system above) */
@@ -574,7 +574,8 @@ CD_API cd2BodyEvents cd2World_GetBodyEvents(cd2WorldId worldId);
 /* Called during the step for touching contacts of shapes with enablePreSolveEvents (manifold in
  * world space); return false to disable the contact for this step (one-way platforms). Must not
  * change the world. */
-typedef bool cd2PreSolveFcn(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold, void* context);
+typedef bool cd2PreSolveFcn(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold,
+							void* context);
 /* Called when a new pair of shapes passes the category/group filter; return false to keep them
  * from colliding (for as long as their boxes keep overlapping). Must not change the world. */
 typedef bool cd2CustomFilterFcn(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, void* context);
@@ -594,7 +595,8 @@ CD_API cd2QueryFilter cd2DefaultQueryFilter(void);
 /* Return false to stop. */
 typedef bool cd2OverlapResultFcn(cd2ShapeId shapeId, void* context);
 /* Return like cd2BroadRayFcn: 0 stops, the fraction clips (closest), 1 goes on, -1 ignores. */
-typedef cdReal cd2CastResultFcn(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal, cdReal fraction, void* context);
+typedef cdReal cd2CastResultFcn(cd2ShapeId shapeId, cd2Vec point, cd2Vec normal, cdReal fraction,
+								void* context);
 
 typedef struct cd2RayResult
 {

@@ -9,7 +9,7 @@
  * frame, so the result is in A's frame and the solver can hold anchors relative to the bodies.
  * (Swap for the public local-frame manifold functions when they land.) */
 cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
-							cdReal speculativeDistance)
+							  cdReal speculativeDistance)
 {
 	cd2Shape b = cd2MakeTaggedShape(shapeB, xfAB);
 	if (shapeA->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)

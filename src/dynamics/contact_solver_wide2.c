@@ -296,7 +296,8 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 				cdW vt = cdWSub(cdWAdd(cdWMul(dvx, tx), cdWMul(dvy, ty)), c->tangentSpeed);
 				cdW impulse = cdWMul(cdWNeg(cp->tangentMass), vt);
 				cdW maxFriction = cdWMul(c->friction, cp->normalImpulse);
-				cdW newImpulse = cdWClamp(cdWAdd(cp->tangentImpulse, impulse), cdWNeg(maxFriction), maxFriction);
+				cdW newImpulse =
+					cdWClamp(cdWAdd(cp->tangentImpulse, impulse), cdWNeg(maxFriction), maxFriction);
 				impulse = cdWSub(newImpulse, cp->tangentImpulse);
 				cp->tangentImpulse = newImpulse;
 				cdW Px = cdWMul(impulse, tx), Py = cdWMul(impulse, ty);

@@ -92,7 +92,8 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 		core.circle.center = cd2WorldShapeCentroid(shape);
 		core.circle.radius = CD2_CORE_FRACTION * body->minExtent;
 		out = cd2TimeOfImpact(&core, &c->sweep, &b, &otherSweep, CD_LINEAR_SLOP, CD_R(0.25) * CD_LINEAR_SLOP);
-		if ((out.state == CD_TOI_HIT || out.state == CD_TOI_FAILED) && CD_R(0.0) < out.t && out.t < c->fraction)
+		if ((out.state == CD_TOI_HIT || out.state == CD_TOI_FAILED) && CD_R(0.0) < out.t &&
+			out.t < c->fraction)
 		{
 			c->fraction = out.t;
 		}

@@ -154,8 +154,8 @@ static cdReal cd2ShapeAabbMargin(const cd2WorldShape* shape)
 			extent = CD_R(0.5) * cd2Length(cd2Sub(shape->geometry.segment.p2, shape->geometry.segment.p1));
 			break;
 		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
-			extent =
-				CD_R(0.5) * cd2Length(cd2Sub(shape->geometry.chainSegment.p2, shape->geometry.chainSegment.p1));
+			extent = CD_R(0.5) *
+					 cd2Length(cd2Sub(shape->geometry.chainSegment.p2, shape->geometry.chainSegment.p1));
 			break;
 	}
 	return cdMin(CD2_AABB_MARGIN, CD2_AABB_MARGIN_FRACTION * extent);

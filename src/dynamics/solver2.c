@@ -256,11 +256,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	/* The awake bodies, dense. */
 	int bodyCapacity = world->bodies.count;
 	/* One more: the zero body the wide contact solver points immovable bodies at. */
-	context.bodies =
-		(cd2SolverBody*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2SolverBody));
+	context.bodies = (cd2SolverBody*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) *
+																			   sizeof(cd2SolverBody));
 	context.bodyIndices = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	context.params =
-		(cd2SolverBodyParams*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
+	context.params = (cd2SolverBodyParams*)cdArena_AllocUncleared(
+		&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
 	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL))
 	{
 		world->outOfMemory = true;
@@ -290,7 +290,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2SolverBodyParams* p = context.params + k;
 		cdReal h = context.h;
 		p->dynamic = body->type == CD_DYNAMIC_BODY;
-		p->deltaV = cd2Scale(h * body->invMass, cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
+		p->deltaV = cd2Scale(h * body->invMass,
+							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
 		p->deltaW = h * body->invInertia * body->torque;
 		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
 		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
@@ -307,7 +308,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	 * the contact loops below do not visit the bodies. */
 	int* solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	context.accelerations = (cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
+	context.accelerations =
+		(cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
 	if (bodyCapacity > 0 && (solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
 	{
 		world->outOfMemory = true;
@@ -362,8 +364,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		cd2ContactConstraint* sorted =
-			(cd2ContactConstraint*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
+		cd2ContactConstraint* sorted = (cd2ContactConstraint*)cdArena_AllocUncleared(
+			&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
 		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && sorted != NULL)
 		{
 			for (int i = 0; i < n; ++i)

@@ -79,12 +79,12 @@ typedef struct cdW
 	cdReal v[CD_W];
 } cdW;
 
-#define CD_W_LANES(expr)             \
-	cdW r;                           \
-	for (int i = 0; i < CD_W; ++i)   \
-	{                                \
-		r.v[i] = (expr);             \
-	}                                \
+#define CD_W_LANES(expr)                                                                                     \
+	cdW r;                                                                                                   \
+	for (int i = 0; i < CD_W; ++i)                                                                           \
+	{                                                                                                        \
+		r.v[i] = (expr);                                                                                     \
+	}                                                                                                        \
 	return r
 
 static inline cdW cdWZero(void)

@@ -187,8 +187,8 @@ typedef struct cd2SolverBody
 /* What the velocity integration needs of a solver body, per sub-step, dense. */
 typedef struct cd2SolverBodyParams
 {
-	cd2Vec deltaV;		 /* from gravity and force over a sub-step */
-	cdReal deltaW;		 /* from torque over a sub-step */
+	cd2Vec deltaV;		   /* from gravity and force over a sub-step */
+	cdReal deltaW;		   /* from torque over a sub-step */
 	cdReal linearDamping;  /* implicit factor 1 / (1 + h damping) */
 	cdReal angularDamping; /* its divisor 1 + h damping */
 	bool dynamic;
@@ -238,7 +238,7 @@ typedef struct cd2ContactConstraintWide
 	/* 1 when the lane's body can move (its velocity is written back): immovable bodies (the zero
 	 * body, kinematic bodies) are shared between blocks of one colour and only read. */
 	unsigned char movesA[CD_W], movesB[CD_W];
-	int constraint[CD_W];			/* index in the constraint array, -1 for an empty lane */
+	int constraint[CD_W]; /* index in the constraint array, -1 for an empty lane */
 } cd2ContactConstraintWide;
 
 typedef struct cd2StepContext
@@ -362,7 +362,7 @@ void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies);
 /* The single place where a pair's manifold is computed: shapes in their body frames, B's
  * transform in A's frame; the manifold comes back in A's frame. */
 cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
-							cdReal speculativeDistance);
+							  cdReal speculativeDistance);
 
 /* ---- contact_solver2.c ----------------------------------------------------------------------- */
 void cd2PrepareContacts(cd2World* world, cd2StepContext* context);

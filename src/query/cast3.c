@@ -368,7 +368,8 @@ static int ContactAxes(const cd3Shape* a, const cd3Shape* b, cd3Vec* axes, int c
 		}
 		if (sat.faceB >= 0)
 		{
-			count = AppendAxis(axes, count, cd3Neg(cd3RotateVector(pb.transform.q, pb.planes[sat.faceB].normal)));
+			count =
+				AppendAxis(axes, count, cd3Neg(cd3RotateVector(pb.transform.q, pb.planes[sat.faceB].normal)));
 		}
 		if (sat.edgeA >= 0)
 		{
@@ -385,7 +386,8 @@ static int ContactAxes(const cd3Shape* a, const cd3Shape* b, cd3Vec* axes, int c
 		}
 		if (sat.faceB >= 0)
 		{
-			count = AppendAxis(axes, count, cd3Neg(cd3RotateVector(pb.transform.q, pb.planes[sat.faceB].normal)));
+			count =
+				AppendAxis(axes, count, cd3Neg(cd3RotateVector(pb.transform.q, pb.planes[sat.faceB].normal)));
 		}
 	}
 	else if (polytopeA && CoreSegment(b, &b1, &b2))

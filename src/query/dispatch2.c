@@ -28,8 +28,8 @@ bool cd2Overlap(const cd2Shape* a, const cd2Shape* b)
 	}
 	switch (CD2_PAIR_KEY(a->type, b->type))
 	{
-#define CD2_OVERLAP_CASE(A, B, Overlap, Distance, Collide)                                                  \
-	case CD2_PAIR_KEY(CD2_TYPE_##A, CD2_TYPE_##B):                                                         \
+#define CD2_OVERLAP_CASE(A, B, Overlap, Distance, Collide)                                                   \
+	case CD2_PAIR_KEY(CD2_TYPE_##A, CD2_TYPE_##B):                                                           \
 		return Overlap(CD2_SHAPE_ARG(A, a), CD2_SHAPE_ARG(B, b));
 		CD2_PAIR_TABLE(CD2_OVERLAP_CASE)
 #undef CD2_OVERLAP_CASE

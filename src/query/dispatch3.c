@@ -21,8 +21,8 @@ static bool OverlapOrdered(const cd3Shape* a, const cd3Shape* b)
 {
 	switch (CD3_PAIR_KEY(a->type, b->type))
 	{
-#define CD3_OVERLAP_CASE(A, B, Overlap, Distance, Collide)                                                  \
-	case CD3_PAIR_KEY(CD3_TYPE_##A, CD3_TYPE_##B):                                                         \
+#define CD3_OVERLAP_CASE(A, B, Overlap, Distance, Collide)                                                   \
+	case CD3_PAIR_KEY(CD3_TYPE_##A, CD3_TYPE_##B):                                                           \
 		return Overlap(CD3_SHAPE_ARG(A, a), CD3_SHAPE_ARG(B, b));
 		CD3_PAIR_TABLE(CD3_OVERLAP_CASE)
 #undef CD3_OVERLAP_CASE
@@ -64,7 +64,8 @@ static bool PointOnTriangle3(cd3Vec p, cd3Triangle t)
 {
 	cd3Triangle local = {cd3Sub(t.a, p), cd3Sub(t.b, p), cd3Sub(t.c, p)};
 	cd3Vec closest = cd3ClosestPointOnTriangle(local, CD3_VEC_ZERO);
-	cdReal magnitude = cdMax(MaxAbsComponent(local.a), cdMax(MaxAbsComponent(local.b), MaxAbsComponent(local.c)));
+	cdReal magnitude =
+		cdMax(MaxAbsComponent(local.a), cdMax(MaxAbsComponent(local.b), MaxAbsComponent(local.c)));
 	cdReal tolerance = CD_POINT_IN_SHAPE_TOLERANCE * magnitude;
 	return cd3LengthSquared(closest) <= tolerance * tolerance;
 }

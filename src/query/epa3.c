@@ -330,7 +330,8 @@ static cd3Penetration Run(const Context* c)
 	Face faces[MAX_FACES];
 	int faceCount = 0;
 	static const int tetra[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-	cd3Vec inside = cd3Scale(CD_R(0.25), cd3Add(cd3Add(vertices[0].w, vertices[1].w), cd3Add(vertices[2].w, vertices[3].w)));
+	cd3Vec inside = cd3Scale(
+		CD_R(0.25), cd3Add(cd3Add(vertices[0].w, vertices[1].w), cd3Add(vertices[2].w, vertices[3].w)));
 	for (int i = 0; i < 4; ++i)
 	{
 		if (MakeFace(vertices, tetra[i][0], tetra[i][1], tetra[i][2], inside, &faces[faceCount]))

@@ -1449,8 +1449,7 @@ static cd3Manifold CollideCorePolytope(cd3Vec p1, cd3Vec p2, cdReal r, const cd3
 	{
 		return m;
 	}
-	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, RoundOff(p1, size), cp.pointA,
-					&m);
+	CoreFaceContact(p1, p2, r, b, sat.faceB, speculativeDistance, false, RoundOff(p1, size), cp.pointA, &m);
 	if (edges && m.pointCount > 0 && !CorePointOnPolytope(&m, b, size))
 	{
 		/* The face won within EDGE_BIAS of the sizes, but its point lies beside it (a capsule

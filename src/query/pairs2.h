@@ -31,18 +31,18 @@
 #include "pair_table.h"
 
 #define CD2_SHAPE_TABLE(X)                                                                                   \
-	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle,                                   \
-	  "circle", ValidateCircle, cd2ComputeCircleAabb, cd2ComputeCircleMass)                                  \
-	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule,                               \
-	  "capsule", ValidateCapsule, cd2ComputeCapsuleAabb, cd2ComputeCapsuleMass)                              \
-	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb,                                           \
-	  "aabb", ValidateAabb, AabbOfAabb, cd2ComputeAabbMass)                                                  \
-	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox,                                               \
-	  "box", ValidateBox, cd2ComputeBoxAabb, cd2ComputeBoxMass)                                              \
-	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon,                               \
-	  "polygon", ValidatePolygon, cd2ComputePolygonAabb, cd2ComputePolygonMass)                              \
-	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment,                                 \
-	  "segment", ValidateSegment, cd2ComputeSegmentAabb, SegmentMass)
+	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle, "circle", ValidateCircle,         \
+	  cd2ComputeCircleAabb, cd2ComputeCircleMass)                                                            \
+	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule, "capsule", ValidateCapsule,   \
+	  cd2ComputeCapsuleAabb, cd2ComputeCapsuleMass)                                                          \
+	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb, "aabb", ValidateAabb, AabbOfAabb,         \
+	  cd2ComputeAabbMass)                                                                                    \
+	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox, "box", ValidateBox, cd2ComputeBoxAabb,        \
+	  cd2ComputeBoxMass)                                                                                     \
+	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon, "polygon", ValidatePolygon,   \
+	  cd2ComputePolygonAabb, cd2ComputePolygonMass)                                                          \
+	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment, "segment", ValidateSegment,     \
+	  cd2ComputeSegmentAabb, SegmentMass)
 
 #define CD2_PAIR_TABLE(X)                                                                                    \
 	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                                   \

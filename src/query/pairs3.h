@@ -32,22 +32,22 @@
 #include "pair_table.h"
 
 #define CD3_SHAPE_TABLE(X)                                                                                   \
-	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere,                                   \
-	  "sphere", ValidateSphere, cd3ComputeSphereAabb, cd3ComputeSphereMass)                                  \
-	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule,                               \
-	  "capsule", ValidateCapsule, cd3ComputeCapsuleAabb, cd3ComputeCapsuleMass)                              \
-	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb,                                           \
-	  "aabb", ValidateAabb, AabbOfAabb, cd3ComputeAabbMass)                                                  \
-	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox,                                               \
-	  "box", ValidateBox, cd3ComputeBoxAabb, cd3ComputeBoxMass)                                              \
-	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle,                             \
-	  "triangle", ValidateTriangle, cd3ComputeTriangleAabb, TriangleMass)                                    \
-	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane,                                       \
-	  "plane", ValidatePlane, cd3ComputePlaneAabb, PlaneMass)                                                \
-	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment,                                 \
-	  "segment", ValidateSegment, cd3ComputeSegmentAabb, SegmentMass)                                        \
-	X(Hull, cd3PointInHull, cd3ClosestPointOnHull, cd3RaycastHull,                                           \
-	  "hull", ValidateHullShape, cd3ComputeHullShapeAabb, cd3ComputeHullMass)
+	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere, "sphere", ValidateSphere,         \
+	  cd3ComputeSphereAabb, cd3ComputeSphereMass)                                                            \
+	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule, "capsule", ValidateCapsule,   \
+	  cd3ComputeCapsuleAabb, cd3ComputeCapsuleMass)                                                          \
+	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb, "aabb", ValidateAabb, AabbOfAabb,         \
+	  cd3ComputeAabbMass)                                                                                    \
+	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox, "box", ValidateBox, cd3ComputeBoxAabb,        \
+	  cd3ComputeBoxMass)                                                                                     \
+	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle, "triangle",                 \
+	  ValidateTriangle, cd3ComputeTriangleAabb, TriangleMass)                                                \
+	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane, "plane", ValidatePlane,               \
+	  cd3ComputePlaneAabb, PlaneMass)                                                                        \
+	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment, "segment", ValidateSegment,     \
+	  cd3ComputeSegmentAabb, SegmentMass)                                                                    \
+	X(Hull, cd3PointInHull, cd3ClosestPointOnHull, cd3RaycastHull, "hull", ValidateHullShape,                \
+	  cd3ComputeHullShapeAabb, cd3ComputeHullMass)
 
 #define CD3_PAIR_TABLE(X)                                                                                    \
 	X(Sphere, Sphere, cd3OverlapSphereSphere, GJK, cd3CollideSphereSphere)                                   \

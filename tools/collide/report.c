@@ -331,7 +331,8 @@ bool toolStreamReport(FILE* out, const ToolDocument* document, bool progress)
 	printRow(out, &rule, widths);
 
 	/* Per scene: the counts of the summary, and the 2D contacts kept for their table. */
-	ToolSceneResult* kept = calloc((size_t)(document->sceneCount > 0 ? document->sceneCount : 1), sizeof *kept);
+	ToolSceneResult* kept =
+		calloc((size_t)(document->sceneCount > 0 ? document->sceneCount : 1), sizeof *kept);
 	if (kept == NULL)
 	{
 		return false;

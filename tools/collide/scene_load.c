@@ -1054,8 +1054,9 @@ static bool readDocument(Loader* loader, const cJSON* root, ToolDocument* docume
 	{
 		if (cJSON_GetObjectItemCaseSensitive(root, "world") != NULL)
 		{
-			return failAt(loader, "world",
-						  "this is a physics scene (\"world\"): run it with `collide run`, see docs/SCENES.md");
+			return failAt(
+				loader, "world",
+				"this is a physics scene (\"world\"): run it with `collide run`, see docs/SCENES.md");
 		}
 		if (cJSON_GetObjectItemCaseSensitive(root, "shapes") == NULL)
 		{

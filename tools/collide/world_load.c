@@ -22,7 +22,7 @@
 
 typedef struct WLoader
 {
-	JsonReader json; /* the text and the path being read */
+	JsonReader json;   /* the text and the path being read */
 	char context[160]; /* "body \"crate\"", "joint #3", ... prefixed to messages */
 	ToolWorld* out;
 	int* nameOrder; /* indices of the named bodies, sorted by name (for joints' look-ups) */

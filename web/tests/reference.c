@@ -3,12 +3,11 @@
  * the page's answer (computed by the wasm build through the JavaScript API) with this native
  * build's.
  *
- *   collide2 SHAPE2 SHAPE2 SPECULATIVE     -> cd2Collide   {"pointCount","normal","points":[{"point","separation","id"}]}
- *   distance2 SHAPE2 SHAPE2                -> cd2Distance  {"distance","pointA","pointB"}
- *   collide3 SHAPE3 SHAPE3 SPECULATIVE     -> cd3Collide
- *   distance3 SHAPE3 SHAPE3                -> cd3Distance
- *   overlap3 SHAPE3 SHAPE3                 -> cd3Overlap   {"overlap":true|false}
- *   pointin3 X Y Z SHAPE3                  -> cd3PointInShape {"inside":true|false}
+ *   collide2 SHAPE2 SHAPE2 SPECULATIVE     -> cd2Collide
+ * {"pointCount","normal","points":[{"point","separation","id"}]} distance2 SHAPE2 SHAPE2                ->
+ * cd2Distance  {"distance","pointA","pointB"} collide3 SHAPE3 SHAPE3 SPECULATIVE     -> cd3Collide distance3
+ * SHAPE3 SHAPE3                -> cd3Distance overlap3 SHAPE3 SHAPE3                 -> cd3Overlap
+ * {"overlap":true|false} pointin3 X Y Z SHAPE3                  -> cd3PointInShape {"inside":true|false}
  *
  *   SHAPE2: circle X Y R | capsule X1 Y1 X2 Y2 R | box X Y HX HY ANGLE (radians)
  *         | polygon N X1 Y1 ... XN YN RADIUS (world vertices) | segment X1 Y1 X2 Y2

@@ -76,8 +76,9 @@ static void pushInt(cdjsBroad* h, int32_t value)
 /* Creates a broadphase. def: type, margin, displacementMultiplier, cellSize, capacity, bounds
  * (4 or 6 floats); negative margin etc. mean "default". Returns the handle or NULL (IO-less: the
  * cdResult goes to *outResult). */
-EXPORT("bpCreate") cdjsBroad* cdjsBroadCreate(int dim, int type, float margin, float displacementMultiplier,
-											 float cellSize, int capacity, const float* bounds, int* outResult)
+EXPORT("bpCreate")
+cdjsBroad* cdjsBroadCreate(int dim, int type, float margin, float displacementMultiplier, float cellSize,
+						   int capacity, const float* bounds, int* outResult)
 {
 	*outResult = CD_OK;
 	cdjsBroad* h = calloc(1, sizeof *h);
@@ -177,11 +178,13 @@ EXPORT("bpCreateProxy") int cdjsBroadCreateProxy(cdjsBroad* h, const float* aabb
 }
 
 /* Creates `count` proxies from consecutive boxes; outIds[i] = id or -1. Returns the number made. */
-EXPORT("bpCreateProxies") int cdjsBroadCreateProxies(cdjsBroad* h, const float* boxes, int count, int32_t* outIds)
+EXPORT("bpCreateProxies")
+int cdjsBroadCreateProxies(cdjsBroad* h, const float* boxes, int count, int32_t* outIds)
 {
-	int made = h->dim == 2
-				   ? cd2BroadPhase_CreateProxies(h->bp2, (const cd2Aabb*)(const void*)boxes, NULL, count, outIds)
-				   : cd3BroadPhase_CreateProxies(h->bp3, (const cd3Aabb*)(const void*)boxes, NULL, count, outIds);
+	int made =
+		h->dim == 2
+			? cd2BroadPhase_CreateProxies(h->bp2, (const cd2Aabb*)(const void*)boxes, NULL, count, outIds)
+			: cd3BroadPhase_CreateProxies(h->bp3, (const cd3Aabb*)(const void*)boxes, NULL, count, outIds);
 	for (int i = 0; i < count; ++i)
 	{
 		int id = outIds[i];
@@ -225,7 +228,8 @@ EXPORT("bpIsLive") int cdjsBroadIsLive(const cdjsBroad* h, int id)
 }
 
 /* 1 moved (fat box changed), 0 unchanged, -1 not a live id. displacement may be NULL. */
-EXPORT("bpMoveProxy") int cdjsBroadMoveProxy(cdjsBroad* h, int id, const float* aabb, const float* displacement)
+EXPORT("bpMoveProxy")
+int cdjsBroadMoveProxy(cdjsBroad* h, int id, const float* aabb, const float* displacement)
 {
 	if (!isLive(h, id))
 	{
@@ -242,8 +246,9 @@ EXPORT("bpMoveProxy") int cdjsBroadMoveProxy(cdjsBroad* h, int id, const float* 
 }
 
 /* Returns how many fat boxes changed, or -(i + 1) when ids[i] is not live (nothing moved then). */
-EXPORT("bpMoveProxies") int cdjsBroadMoveProxies(cdjsBroad* h, int count, const int32_t* ids, const float* boxes,
-												const float* displacements)
+EXPORT("bpMoveProxies")
+int cdjsBroadMoveProxies(cdjsBroad* h, int count, const int32_t* ids, const float* boxes,
+						 const float* displacements)
 {
 	for (int i = 0; i < count; ++i)
 	{
@@ -403,7 +408,8 @@ EXPORT("bpRayCast") int cdjsBroadRayCast(cdjsBroad* h, const float* ray)
 			continue;
 		}
 		int j = kept++;
-		while (j > 0 && (h->fractions[j - 1] > fraction || (h->fractions[j - 1] == fraction && h->ints[j - 1] > id)))
+		while (j > 0 &&
+			   (h->fractions[j - 1] > fraction || (h->fractions[j - 1] == fraction && h->ints[j - 1] > id)))
 		{
 			h->fractions[j] = h->fractions[j - 1];
 			h->ints[j] = h->ints[j - 1];

@@ -334,8 +334,8 @@ static cd2Sweep sweep2(const float* s)
 EXPORT("timeOfImpact2") int cdjs2TimeOfImpact(float targetSeparation, float tolerance)
 {
 	DECODE2_AB
-	if (!finiteAll(IO, 16) || !isfinite(targetSeparation) || !isfinite(tolerance) || targetSeparation < 0.0f ||
-		tolerance <= 0.0f)
+	if (!finiteAll(IO, 16) || !isfinite(targetSeparation) || !isfinite(tolerance) ||
+		targetSeparation < 0.0f || tolerance <= 0.0f)
 	{
 		return -64;
 	}
@@ -531,8 +531,8 @@ static cd3Sweep sweep3(const float* s)
 EXPORT("timeOfImpact3") int cdjs3TimeOfImpact(float targetSeparation, float tolerance)
 {
 	DECODE3_AB
-	if (!finiteAll(IO, 34) || !isfinite(targetSeparation) || !isfinite(tolerance) || targetSeparation < 0.0f ||
-		tolerance <= 0.0f)
+	if (!finiteAll(IO, 34) || !isfinite(targetSeparation) || !isfinite(tolerance) ||
+		targetSeparation < 0.0f || tolerance <= 0.0f)
 	{
 		return -64;
 	}
@@ -784,15 +784,16 @@ EXPORT("batch") int cdjsBatch(int kind, const float* data, int count, int32_t* o
 }
 
 /* The texts' single tests with plain numbers (no memory traffic). */
-EXPORT("pointInAabb3") int cdjs3PointInAabb(float px, float py, float pz, float minX, float minY, float minZ,
-											float maxX, float maxY, float maxZ)
+EXPORT("pointInAabb3")
+int cdjs3PointInAabb(float px, float py, float pz, float minX, float minY, float minZ, float maxX, float maxY,
+					 float maxZ)
 {
 	return cd3PointInAabb((cd3Vec){px, py, pz}, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}}) ? 1 : 0;
 }
 
-EXPORT("overlapAabbAabb3") int cdjs3OverlapAabbAabb(float aMinX, float aMinY, float aMinZ, float aMaxX,
-													float aMaxY, float aMaxZ, float bMinX, float bMinY,
-													float bMinZ, float bMaxX, float bMaxY, float bMaxZ)
+EXPORT("overlapAabbAabb3")
+int cdjs3OverlapAabbAabb(float aMinX, float aMinY, float aMinZ, float aMaxX, float aMaxY, float aMaxZ,
+						 float bMinX, float bMinY, float bMinZ, float bMaxX, float bMaxY, float bMaxZ)
 {
 	return cd3OverlapAabbAabb((cd3Aabb){{aMinX, aMinY, aMinZ}, {aMaxX, aMaxY, aMaxZ}},
 							  (cd3Aabb){{bMinX, bMinY, bMinZ}, {bMaxX, bMaxY, bMaxZ}})
@@ -800,23 +801,24 @@ EXPORT("overlapAabbAabb3") int cdjs3OverlapAabbAabb(float aMinX, float aMinY, fl
 			   : 0;
 }
 
-EXPORT("pointInSphere3") int cdjs3PointInSphere(float px, float py, float pz, float cx, float cy, float cz,
-												float r)
+EXPORT("pointInSphere3")
+int cdjs3PointInSphere(float px, float py, float pz, float cx, float cy, float cz, float r)
 {
 	return cd3PointInSphere((cd3Vec){px, py, pz}, (cd3Sphere){{cx, cy, cz}, r}) ? 1 : 0;
 }
 
-EXPORT("overlapSphereSphere3") int cdjs3OverlapSphereSphere(float ax, float ay, float az, float ar, float bx,
-															float by, float bz, float br)
+EXPORT("overlapSphereSphere3")
+int cdjs3OverlapSphereSphere(float ax, float ay, float az, float ar, float bx, float by, float bz, float br)
 {
 	return cd3OverlapSphereSphere((cd3Sphere){{ax, ay, az}, ar}, (cd3Sphere){{bx, by, bz}, br}) ? 1 : 0;
 }
 
-EXPORT("overlapSphereAabb3") int cdjs3OverlapSphereAabb(float cx, float cy, float cz, float r, float minX,
-														float minY, float minZ, float maxX, float maxY,
-														float maxZ)
+EXPORT("overlapSphereAabb3")
+int cdjs3OverlapSphereAabb(float cx, float cy, float cz, float r, float minX, float minY, float minZ,
+						   float maxX, float maxY, float maxZ)
 {
-	return cd3OverlapSphereAabb((cd3Sphere){{cx, cy, cz}, r}, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}})
+	return cd3OverlapSphereAabb((cd3Sphere){{cx, cy, cz}, r},
+								(cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}})
 			   ? 1
 			   : 0;
 }

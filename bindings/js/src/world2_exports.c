@@ -279,8 +279,8 @@ EXPORT("world2Counters") void cdjsWorld2Counters(int world0)
 		return;
 	}
 	cd2Counters c = cd2World_GetCounters(w->id);
-	int values[7] = {c.bodyCount, c.shapeCount, c.contactCount, c.touchingContactCount, c.jointCount,
-					 c.awakeBodyCount, c.islandCount};
+	int values[7] = {c.bodyCount,  c.shapeCount,	 c.contactCount, c.touchingContactCount,
+					 c.jointCount, c.awakeBodyCount, c.islandCount};
 	for (int i = 0; i < 7; ++i)
 	{
 		putInt(IO + i, values[i]);
@@ -839,7 +839,8 @@ EXPORT("joint2Create") int cdjsJoint2Create(int world0)
 	}
 	const float* in = IO;
 	cd2BodyId a, b;
-	if (!validBody(world0, getInt(in + 1), getInt(in + 2), &a) || !validBody(world0, getInt(in + 3), getInt(in + 4), &b))
+	if (!validBody(world0, getInt(in + 1), getInt(in + 2), &a) ||
+		!validBody(world0, getInt(in + 3), getInt(in + 4), &b))
 	{
 		return 0;
 	}
@@ -1060,8 +1061,8 @@ EXPORT("joint2Set") int cdjsJoint2Set(int world0, int index1, int generation, in
 	}
 	const float* a = IO;
 	cd2JointType type = cd2Joint_GetType(id);
-	bool motorType = type == CD2_DISTANCE_JOINT || type == CD2_REVOLUTE_JOINT || type == CD2_PRISMATIC_JOINT ||
-					 type == CD2_WHEEL_JOINT;
+	bool motorType = type == CD2_DISTANCE_JOINT || type == CD2_REVOLUTE_JOINT ||
+					 type == CD2_PRISMATIC_JOINT || type == CD2_WHEEL_JOINT;
 	switch (what)
 	{
 		case 0:
@@ -1173,7 +1174,8 @@ EXPORT("world2Events") float* cdjsWorld2Events(int world0)
 	cd2ContactEvents c = cd2World_GetContactEvents(w->id);
 	cd2SensorEvents s = cd2World_GetSensorEvents(w->id);
 	cd2BodyEvents b = cd2World_GetBodyEvents(w->id);
-	int total = 6 + 13 * c.beginCount + 4 * c.endCount + 9 * c.hitCount + 4 * (s.beginCount + s.endCount) + 7 * b.moveCount;
+	int total = 6 + 13 * c.beginCount + 4 * c.endCount + 9 * c.hitCount + 4 * (s.beginCount + s.endCount) +
+				7 * b.moveCount;
 	if (!outReserve(total))
 	{
 		return NULL;
@@ -1258,7 +1260,8 @@ static bool preSolveThunk(cd2ShapeId a, cd2ShapeId b, const cd2Manifold* m, void
 		g_manifold[4 + 2 * k] = m->points[k].point.y;
 	}
 	g_manifold[7] = m->pointCount > 0 ? m->points[0].separation : 0.0f;
-	return cdjsImportPreSolve(a.world0, a.index1, (int)a.generation, b.index1, (int)b.generation, g_manifold) != 0;
+	return cdjsImportPreSolve(a.world0, a.index1, (int)a.generation, b.index1, (int)b.generation,
+							  g_manifold) != 0;
 }
 
 static bool customFilterThunk(cd2ShapeId a, cd2ShapeId b, void* context)
@@ -1429,7 +1432,8 @@ EXPORT("world2RaycastClosest") int cdjsWorld2RaycastClosest(int world0)
 		return 0;
 	}
 	const float* in = IO;
-	cd2RayResult r = cd2World_RaycastClosest(w->id, (cd2Vec){in[0], in[1]}, (cd2Vec){in[2], in[3]}, queryFilter(in + 4));
+	cd2RayResult r =
+		cd2World_RaycastClosest(w->id, (cd2Vec){in[0], in[1]}, (cd2Vec){in[2], in[3]}, queryFilter(in + 4));
 	float* o = IO;
 	putInt(o, r.hit ? 1 : 0);
 	putShape(o + 1, r.shapeId);

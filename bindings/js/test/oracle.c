@@ -53,8 +53,8 @@ static void pq(const char* key, cd3Quat q)
 typedef struct Shape2Case
 {
 	cd2Shape shape;
-	float angle;			/* box */
-	cd2Vec points[8];		/* polygon input */
+	float angle;	  /* box */
+	cd2Vec points[8]; /* polygon input */
 	int count;
 	float radius;
 } Shape2Case;
@@ -69,15 +69,17 @@ static Shape2Case randomShape2(int type)
 			c.shape = cd2MakeCircleShape((cd2Circle){center, rnd(0.2f, 1.5f)});
 			break;
 		case 1:
-			c.shape = cd2MakeCapsuleShape(
-				(cd2Capsule){center, {center.x + rnd(-1.5f, 1.5f), center.y + rnd(-1.5f, 1.5f)}, rnd(0.1f, 0.8f)});
+			c.shape = cd2MakeCapsuleShape((cd2Capsule){
+				center, {center.x + rnd(-1.5f, 1.5f), center.y + rnd(-1.5f, 1.5f)}, rnd(0.1f, 0.8f)});
 			break;
 		case 2:
-			c.shape = cd2MakeAabbShape((cd2Aabb){center, {center.x + rnd(0.1f, 2.0f), center.y + rnd(0.1f, 2.0f)}});
+			c.shape =
+				cd2MakeAabbShape((cd2Aabb){center, {center.x + rnd(0.1f, 2.0f), center.y + rnd(0.1f, 2.0f)}});
 			break;
 		case 3:
 			c.angle = rnd(-3.0f, 3.0f);
-			c.shape = cd2MakeBoxShape((cd2Box){center, {rnd(0.1f, 1.5f), rnd(0.1f, 1.5f)}, cd2MakeRot(c.angle)});
+			c.shape =
+				cd2MakeBoxShape((cd2Box){center, {rnd(0.1f, 1.5f), rnd(0.1f, 1.5f)}, cd2MakeRot(c.angle)});
 			break;
 		case 4:
 		{
@@ -145,7 +147,8 @@ static void printShape2(const char* key, const Shape2Case* c)
 			printf("\"type\":\"polygon\",\"vertices\":[");
 			for (int i = 0; i < c->count; ++i)
 			{
-				printf("%s{\"x\":%.9g,\"y\":%.9g}", i ? "," : "", (double)c->points[i].x, (double)c->points[i].y);
+				printf("%s{\"x\":%.9g,\"y\":%.9g}", i ? "," : "", (double)c->points[i].x,
+					   (double)c->points[i].y);
 			}
 			printf("],");
 			pf("radius", c->radius);
@@ -289,16 +292,18 @@ static Shape3Case randomShape3(int type)
 			break;
 		case 1:
 			c.shape = cd3MakeCapsuleShape((cd3Capsule){
-				center, {center.x + rnd(-1.5f, 1.5f), center.y + rnd(-1.5f, 1.5f), center.z + rnd(-1.5f, 1.5f)},
+				center,
+				{center.x + rnd(-1.5f, 1.5f), center.y + rnd(-1.5f, 1.5f), center.z + rnd(-1.5f, 1.5f)},
 				rnd(0.1f, 0.8f)});
 			break;
 		case 2:
-			c.shape = cd3MakeAabbShape(
-				(cd3Aabb){center, {center.x + rnd(0.1f, 2.0f), center.y + rnd(0.1f, 2.0f), center.z + rnd(0.1f, 2.0f)}});
+			c.shape = cd3MakeAabbShape((cd3Aabb){
+				center,
+				{center.x + rnd(0.1f, 2.0f), center.y + rnd(0.1f, 2.0f), center.z + rnd(0.1f, 2.0f)}});
 			break;
 		case 3:
-			c.shape = cd3MakeBoxShape(
-				(cd3Box){center, {rnd(0.1f, 1.5f), rnd(0.1f, 1.5f), rnd(0.1f, 1.5f)}, cd3NormalizeQuat(randomQuat())});
+			c.shape = cd3MakeBoxShape((cd3Box){
+				center, {rnd(0.1f, 1.5f), rnd(0.1f, 1.5f), rnd(0.1f, 1.5f)}, cd3NormalizeQuat(randomQuat())});
 			break;
 		case 4:
 			c.shape = cd3MakeTriangleShape((cd3Triangle){
@@ -308,7 +313,8 @@ static Shape3Case randomShape3(int type)
 			break;
 		case 5:
 			c.shape = cd3MakeSegmentShape((cd3Segment){
-				center, {center.x + rnd(-2.0f, 2.0f), center.y + rnd(-2.0f, 2.0f), center.z + rnd(-2.0f, 2.0f)}});
+				center,
+				{center.x + rnd(-2.0f, 2.0f), center.y + rnd(-2.0f, 2.0f), center.z + rnd(-2.0f, 2.0f)}});
 			break;
 		default:
 		{
@@ -471,8 +477,12 @@ static void cases3(int n)
 		pv3("normal", c.normal);
 		printf("}");
 		cd3Quat r1 = cd3NormalizeQuat(randomQuat());
-		cd3Sweep sa = {{0.0f, 0.0f, 0.0f}, {-4.0f, 0.0f, 0.0f}, {4.0f, 0.5f, 0.0f}, {0.0f, 0.0f, 0.0f, 1.0f}, r1};
-		cd3Sweep sb = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f, 1.0f},
+		cd3Sweep sa = {
+			{0.0f, 0.0f, 0.0f}, {-4.0f, 0.0f, 0.0f}, {4.0f, 0.5f, 0.0f}, {0.0f, 0.0f, 0.0f, 1.0f}, r1};
+		cd3Sweep sb = {{0.0f, 0.0f, 0.0f},
+					   {0.0f, 0.0f, 0.0f},
+					   {0.0f, 0.0f, 0.0f},
+					   {0.0f, 0.0f, 0.0f, 1.0f},
 					   {0.0f, 0.0f, 0.0f, 1.0f}};
 		cdToiOutput t = cd3TimeOfImpact(&a.shape, &sa, &b.shape, &sb, 0.005f, 0.00125f);
 		printf(",\"toi\":{");
@@ -494,8 +504,9 @@ static void cases3(int n)
 			printf(",");
 			pv3("center", md.center);
 			printf(",\"inertia\":[%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g]}", (double)md.inertia.cx.x,
-				   (double)md.inertia.cx.y, (double)md.inertia.cx.z, (double)md.inertia.cy.x, (double)md.inertia.cy.y,
-				   (double)md.inertia.cy.z, (double)md.inertia.cz.x, (double)md.inertia.cz.y, (double)md.inertia.cz.z);
+				   (double)md.inertia.cx.y, (double)md.inertia.cx.z, (double)md.inertia.cy.x,
+				   (double)md.inertia.cy.y, (double)md.inertia.cy.z, (double)md.inertia.cz.x,
+				   (double)md.inertia.cz.y, (double)md.inertia.cz.z);
 		}
 		printf("}");
 	}
@@ -506,16 +517,22 @@ static void cases3(int n)
 
 static void batch(void)
 {
-	enum { N = 500 };
+	enum
+	{
+		N = 500
+	};
 	static float boxes[N][6], spheres[N][4], points[N][3];
 	for (int i = 0; i < N; ++i)
 	{
 		float x = rnd(-10.0f, 10.0f), y = rnd(-10.0f, 10.0f), z = rnd(-10.0f, 10.0f);
 		boxes[i][0] = x, boxes[i][1] = y, boxes[i][2] = z;
-		boxes[i][3] = x + rnd(0.0f, 2.0f), boxes[i][4] = y + rnd(0.0f, 2.0f), boxes[i][5] = z + rnd(0.0f, 2.0f);
-		spheres[i][0] = rnd(-10.0f, 10.0f), spheres[i][1] = rnd(-10.0f, 10.0f), spheres[i][2] = rnd(-10.0f, 10.0f);
+		boxes[i][3] = x + rnd(0.0f, 2.0f), boxes[i][4] = y + rnd(0.0f, 2.0f),
+		boxes[i][5] = z + rnd(0.0f, 2.0f);
+		spheres[i][0] = rnd(-10.0f, 10.0f), spheres[i][1] = rnd(-10.0f, 10.0f),
+		spheres[i][2] = rnd(-10.0f, 10.0f);
 		spheres[i][3] = rnd(0.0f, 1.5f);
-		points[i][0] = rnd(-10.0f, 10.0f), points[i][1] = rnd(-10.0f, 10.0f), points[i][2] = rnd(-10.0f, 10.0f);
+		points[i][0] = rnd(-10.0f, 10.0f), points[i][1] = rnd(-10.0f, 10.0f),
+		points[i][2] = rnd(-10.0f, 10.0f);
 	}
 	cd3Aabb qb = {{-3.0f, -2.0f, -4.0f}, {4.0f, 3.0f, 2.5f}};
 	cd3Sphere qs = {{1.0f, -1.0f, 0.5f}, 4.0f};
@@ -529,10 +546,11 @@ static void batch(void)
 			   (double)spheres[i][2], (double)spheres[i][3]);
 	printf("],\"points\":[");
 	for (int i = 0; i < N; ++i)
-		printf("%s%.9g,%.9g,%.9g", i ? "," : "", (double)points[i][0], (double)points[i][1], (double)points[i][2]);
+		printf("%s%.9g,%.9g,%.9g", i ? "," : "", (double)points[i][0], (double)points[i][1],
+			   (double)points[i][2]);
 	printf("],\"queryBox\":{\"minX\":-3,\"minY\":-2,\"minZ\":-4,\"maxX\":4,\"maxY\":3,\"maxZ\":2.5}");
 	printf(",\"querySphere\":{\"x\":1,\"y\":-1,\"z\":0.5,\"radius\":4}");
-	const char* names[6] = {"pointsInsideAABB", "pointsInsideSphere", "aabbsIntersectAABB",
+	const char* names[6] = {"pointsInsideAABB",		"pointsInsideSphere",	  "aabbsIntersectAABB",
 							"aabbsIntersectSphere", "spheresIntersectSphere", "spheresIntersectAABB"};
 	for (int kind = 0; kind < 6; ++kind)
 	{
@@ -546,12 +564,24 @@ static void batch(void)
 			bool in = false;
 			switch (kind)
 			{
-				case 0: in = cd3PointInAabb(p, qb); break;
-				case 1: in = cd3PointInSphere(p, qs); break;
-				case 2: in = cd3OverlapAabbAabb(b, qb); break;
-				case 3: in = cd3OverlapSphereAabb(qs, b); break;
-				case 4: in = cd3OverlapSphereSphere(s, qs); break;
-				default: in = cd3OverlapSphereAabb(s, qb); break;
+				case 0:
+					in = cd3PointInAabb(p, qb);
+					break;
+				case 1:
+					in = cd3PointInSphere(p, qs);
+					break;
+				case 2:
+					in = cd3OverlapAabbAabb(b, qb);
+					break;
+				case 3:
+					in = cd3OverlapSphereAabb(qs, b);
+					break;
+				case 4:
+					in = cd3OverlapSphereSphere(s, qs);
+					break;
+				default:
+					in = cd3OverlapSphereAabb(s, qb);
+					break;
 			}
 			if (in)
 			{
@@ -586,21 +616,26 @@ static bool printId(int id, uint64_t userData, void* context)
 
 static void broad(void)
 {
-	enum { N = 300, FRAMES = 3 };
+	enum
+	{
+		N = 300,
+		FRAMES = 3
+	};
 	static float boxes[FRAMES][N][6];
 	for (int f = 0; f < FRAMES; ++f)
 		for (int i = 0; i < N; ++i)
 		{
 			float x = rnd(-20.0f, 20.0f), y = rnd(-20.0f, 20.0f), z = rnd(-20.0f, 20.0f);
 			float* b = boxes[f][i];
-			b[0] = x, b[1] = y, b[2] = z, b[3] = x + rnd(0.2f, 3.0f), b[4] = y + rnd(0.2f, 3.0f), b[5] = z + rnd(0.2f, 3.0f);
+			b[0] = x, b[1] = y, b[2] = z, b[3] = x + rnd(0.2f, 3.0f), b[4] = y + rnd(0.2f, 3.0f),
+			b[5] = z + rnd(0.2f, 3.0f);
 		}
 	printf("\"broad\":{\"boxes\":[");
 	for (int f = 0; f < FRAMES; ++f)
 		for (int i = 0; i < N; ++i)
 			printf("%s%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", (f || i) ? "," : "", (double)boxes[f][i][0],
-				   (double)boxes[f][i][1], (double)boxes[f][i][2], (double)boxes[f][i][3], (double)boxes[f][i][4],
-				   (double)boxes[f][i][5]);
+				   (double)boxes[f][i][1], (double)boxes[f][i][2], (double)boxes[f][i][3],
+				   (double)boxes[f][i][4], (double)boxes[f][i][5]);
 	printf("],\"n\":%d,\"frames\":%d,\"runs\":[", N, FRAMES);
 	cd3Aabb q = {{-5.0f, -5.0f, -5.0f}, {5.0f, 5.0f, 5.0f}};
 	for (int type = 0; type < CD_BROADPHASE_TYPE_COUNT; ++type)
@@ -612,8 +647,10 @@ static void broad(void)
 			return;
 		int ids[N];
 		for (int i = 0; i < N; ++i)
-			ids[i] = cd3BroadPhase_CreateProxy(bp, (cd3Aabb){{boxes[0][i][0], boxes[0][i][1], boxes[0][i][2]},
-															 {boxes[0][i][3], boxes[0][i][4], boxes[0][i][5]}}, 0);
+			ids[i] = cd3BroadPhase_CreateProxy(bp,
+											   (cd3Aabb){{boxes[0][i][0], boxes[0][i][1], boxes[0][i][2]},
+														 {boxes[0][i][3], boxes[0][i][4], boxes[0][i][5]}},
+											   0);
 		printf("%s{\"type\":%d,\"frames\":[", type ? "," : "", type);
 		for (int f = 0; f < FRAMES; ++f)
 		{
