@@ -27,4 +27,8 @@
 #define CD_PAIR_SELECT_1(macro) CD_PAIR_SKIP
 #define CD_PAIR_TYPED(column, macro) CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_IS_UNTYPED(column))(macro)
 
+/* The same for a shape table column that may be NONE (MakeCore, Radius): CD_SHAPE_HAS(Radius,
+ * MACRO)(args) expands MACRO(args) when the column names something, nothing for NONE. */
+#define CD_SHAPE_HAS(column, macro) CD_PAIR_TYPED(column, macro)
+
 #endif
