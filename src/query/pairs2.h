@@ -25,8 +25,10 @@
  *
  * CD2_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
  *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b));
- *   Distance  GJK (cd2Distance) for every pair; CLOSED_FORM names a pair that also has a
- *             closed-form closest-points function (cd2ClosestPoints<A><B>);
+ *   Distance  GJK: cd2Distance runs GJK on the cores; CLOSED_FORM: GJK too, and the pair also has
+ *             a public closed-form closest-points function (cd2ClosestPoints<A><B>); or the name
+ *             of a closed-form distance (distance2.c) that cd2Distance calls instead of GJK,
+ *             Distance(ARG_A(a), ARG_B(b)), with GJK's answer bit for bit (two circles);
  *   Collide   the contact manifold: the typed pair function cd2Collide<A><B> (and its ...Local
  *             form), or CORE when only cd2Collide handles the pair (AABBs and boxes collide as
  *             polygons). */
@@ -50,7 +52,7 @@
 	  cd2ComputeSegmentAabb, SegmentMass, cd2MakeSegmentCore, NONE)
 
 #define CD2_PAIR_TABLE(X)                                                                                    \
-	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                                   \
+	X(Circle, Circle, cd2OverlapCircleCircle, DistanceCircleCircle, cd2CollideCircleCircle)                  \
 	X(Circle, Capsule, cd2OverlapCircleCapsule, GJK, cd2CollideCircleCapsule)                                \
 	X(Circle, Aabb, cd2OverlapCircleAabb, GJK, CORE)                                                         \
 	X(Circle, Box, cd2OverlapCircleBox, GJK, CORE)                                                           \

@@ -25,8 +25,11 @@
  * CD3_PAIR_TABLE(X) and CD3_HULL_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
  *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b)); GJK for the hull pairs
  *             (cd3Overlap runs the boolean GJK on the tagged shapes);
- *   Distance  GJK (cd3Distance) for every pair; CLOSED_FORM names a pair with a closed-form
- *             closest-points function (cd3ClosestPoints<A><B>) or an exact half-space path;
+ *   Distance  GJK: cd3Distance runs GJK on the cores; CLOSED_FORM: a pair with a public
+ *             closed-form closest-points function (cd3ClosestPoints<A><B>) or an exact half-space
+ *             path in cd3Distance; or the name of a closed-form distance (distance3.c) that
+ *             cd3Distance calls instead of GJK, Distance(ARG_A(a), ARG_B(b)), with GJK's answer
+ *             bit for bit (two spheres);
  *   Collide   the contact manifold: the typed pair function cd3Collide<A><B> (and its ...Local
  *             form), CORE when only cd3Collide handles the pair (an AABB collides as a box), or
  *             NONE (planes and segments have no manifold). */
@@ -54,7 +57,7 @@
 	  cd3ComputeHullShapeAabb, cd3ComputeHullMass, cd3MakeHullCore, NONE)
 
 #define CD3_PAIR_TABLE(X)                                                                                    \
-	X(Sphere, Sphere, cd3OverlapSphereSphere, GJK, cd3CollideSphereSphere)                                   \
+	X(Sphere, Sphere, cd3OverlapSphereSphere, DistanceSphereSphere, cd3CollideSphereSphere)                  \
 	X(Sphere, Capsule, cd3OverlapSphereCapsule, GJK, cd3CollideSphereCapsule)                                \
 	X(Sphere, Aabb, cd3OverlapSphereAabb, GJK, CORE)                                                         \
 	X(Sphere, Box, cd3OverlapSphereBox, GJK, cd3CollideSphereBox)                                            \
