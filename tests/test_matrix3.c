@@ -260,7 +260,7 @@ static void CheckCore(TestRng* rng, const cd3Shape* shape, bool hasCore, cdReal 
 	}
 }
 
-/* The support columns of the shape table (MakeCore, Radius), which GJK, EPA, the casts and
+/* The support columns of the shape table (MakeCore, Radius), which GJK, the casts and
  * cd3Distance see every shape through: for random shapes of every row the core is made (none for
  * the half-space, whose MakeCore is NONE), its radius is the row's Radius (0 for a sharp shape),
  * its points grown by the radius lie in the shape's bounds, and along random directions the
