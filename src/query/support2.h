@@ -19,8 +19,9 @@ typedef struct cd2Core
 } cd2Core;
 
 /* The shape table's support columns (pairs2.h: MakeCore and Radius, one row per shape). Each
- * MakeCore(shape, core) fills the core's points and count from the tagged shape (GJK's hot path:
- * a by-value argument made GCC copy the shape first); the radius comes from the Radius column. */
+ * MakeCore(shape, core) fills the core's points and count from the tagged shape (read through the
+ * pointer, as the hand-written switch did: a by-value member made GCC copy it first); the radius
+ * comes from the Radius column. */
 #define CD2_CIRCLE_RADIUS(s) ((s)->circle.radius)
 #define CD2_CAPSULE_RADIUS(s) ((s)->capsule.radius)
 #define CD2_POLYGON_RADIUS(s) ((s)->polygon.radius)
