@@ -555,6 +555,62 @@ static void TestCacheSavesIterations(void)
 	TEST_CHECKF(warm < 0.75 * cold, "mean iterations %.2f with the cache, %.2f without", warm, cold);
 }
 
+/* cd3Distance on two spheres takes the closed form named by the pair table (src/query/pairs3.h)
+ * instead of GJK; it must give GJK's answer bit for bit (cd3DistanceWithStatus runs GJK), in both
+ * orders: random pairs, coincident and nearly coincident centres, zero radii, signed zeros and
+ * large and small scales. */
+static void TestClosedFormMatchesGjk(void)
+{
+	TestRng rng = TestRngMake(0xc105edu);
+	int checked = 0;
+	for (int i = 0; i < 6000; ++i)
+	{
+		cd3Shape a = RandomShape(&rng, CD3_SHAPE_SPHERE), b = RandomShape(&rng, CD3_SHAPE_SPHERE);
+		switch (i % 6)
+		{
+			case 1:
+				b.sphere.center = a.sphere.center;
+				break;
+			case 2:
+				b.sphere.center = cd3Add(a.sphere.center, cd3MakeVec(RandomReal(&rng, -1e-6, 1e-6),
+																	 RandomReal(&rng, -1e-6, 1e-6),
+																	 RandomReal(&rng, -1e-6, 1e-6)));
+				break;
+			case 3:
+				a.sphere.center = cd3MakeVec(-0.0f, 0.0f, -0.0f);
+				b.sphere.center = cd3MakeVec(0.0f, -0.0f, 0.0f);
+				a.sphere.radius = CD_R(0.0);
+				b.sphere.radius = CD_R(0.0);
+				break;
+			case 4:
+				a.sphere.center = cd3Scale(CD_R(1e6), a.sphere.center);
+				b.sphere.center = cd3Scale(CD_R(1e6), b.sphere.center);
+				break;
+			case 5:
+				a.sphere.center = cd3Scale(CD_R(1e-6), a.sphere.center);
+				b.sphere.center = cd3Scale(CD_R(1e-6), b.sphere.center);
+				a.sphere.radius *= CD_R(1e-6);
+				b.sphere.radius *= CD_R(1e-6);
+				break;
+			default:
+				break;
+		}
+		for (int order = 0; order < 2; ++order)
+		{
+			const cd3Shape* first = order == 0 ? &a : &b;
+			const cd3Shape* second = order == 0 ? &b : &a;
+			cdDistanceStatus status;
+			cd3ClosestPoints closed = cd3Distance(first, second);
+			cd3ClosestPoints gjk = cd3DistanceWithStatus(first, second, &status);
+			TEST_CHECKF(memcmp(&closed, &gjk, sizeof(closed)) == 0,
+						"pair %d, order %d: distance %.9g, GJK %.9g", i, order, (double)closed.distance,
+						(double)gjk.distance);
+			++checked;
+		}
+	}
+	TEST_CHECK(checked == 12000);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSpheres);
@@ -570,5 +626,6 @@ int main(void)
 	TEST_RUN(TestPointNearThinBox);
 	TEST_RUN(TestCacheAgrees);
 	TEST_RUN(TestCacheSavesIterations);
+	TEST_RUN(TestClosedFormMatchesGjk);
 	return TEST_SUMMARY();
 }

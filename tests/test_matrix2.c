@@ -11,6 +11,7 @@
 #include "test.h"
 
 #include "../src/query/pairs2.h"
+#include "../src/query/support2.h"
 
 #define BAND 1e-3
 
@@ -204,9 +205,71 @@ static void TestPairTables(void)
 	TEST_CHECK(checked == 200 * 21);
 }
 
+static void CheckCore(TestRng* rng, const cd2Shape* shape, cdReal radius, const char* name)
+{
+	cd2Core core;
+	TEST_CHECKF(cd2MakeCore(shape, &core), "%s: no core", name);
+	if (core.count < 1)
+	{
+		return;
+	}
+	TEST_CHECKF(core.radius == radius, "%s: core radius %g, row radius %g", name, (double)core.radius,
+				(double)radius);
+	cd2Aabb bounds = cd2ComputeShapeAabb(shape);
+	cdReal tolerance = CD_R(1e-4);
+	for (int i = 0; i < core.count; ++i)
+	{
+		cd2Vec p = core.points[i];
+		TEST_CHECKF(p.x - core.radius >= bounds.min.x - tolerance &&
+						p.x + core.radius <= bounds.max.x + tolerance &&
+						p.y - core.radius >= bounds.min.y - tolerance &&
+						p.y + core.radius <= bounds.max.y + tolerance,
+					"%s: core point %d outside the bounds", name, i);
+	}
+	for (int k = 0; k < 8; ++k)
+	{
+		cd2Rot r = RandomRot(rng);
+		cd2Vec u = cd2MakeVec(r.c, r.s);
+		cd2Vec support = core.points[cd2CoreSupport(&core, u)];
+		cd2Vec on = cd2MulAdd(support, CD_R(0.999) * core.radius, u);
+		cd2Vec beyond = cd2MulAdd(support, core.radius + CD_R(0.01), u);
+		cdReal off = cd2Length(cd2Sub(cd2ClosestPointOnShape(shape, on), on));
+		TEST_CHECKF(off <= tolerance, "%s: support point %g outside the shape", name, (double)off);
+		TEST_CHECKF(!cd2PointInShape(shape, beyond), "%s: the shape reaches past its support point", name);
+	}
+}
+
+/* The support columns of the shape table (MakeCore, Radius), which GJK, the casts and cd2Distance
+ * see every shape through: for random shapes of every row the core is made, its radius is the
+ * row's Radius (0 for a sharp shape), its points grown by the radius lie in the shape's bounds,
+ * and along random directions the support point (the farthest core point pushed out by the
+ * radius) lies in the shape (within 1e-4) while a point 0.01 farther along does not. */
+static void TestShapeCores(void)
+{
+	TestRng rng = TestRngMake(0xc0e5u);
+	int checked = 0;
+	for (int n = 0; n < 300; ++n)
+	{
+#define CHECK_CORE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass,     \
+				   MakeCore, Radius)                                                                         \
+	{                                                                                                        \
+		cd2Shape shape = RandomShape(&rng, CD2_TYPE_##Name);                                                 \
+		cdReal radius = CD_R(0.0);                                                                           \
+		CD_SHAPE_HAS(Radius, CORE_RADIUS)(Radius) CheckCore(&rng, &shape, radius, #Name);                    \
+		++checked;                                                                                           \
+	}
+#define CORE_RADIUS(Radius) radius = Radius(&shape);
+		CD2_SHAPE_TABLE(CHECK_CORE)
+#undef CORE_RADIUS
+#undef CHECK_CORE
+	}
+	TEST_CHECK(checked == 300 * CD2_SHAPE_TYPE_COUNT);
+}
+
 int main(void)
 {
 	TEST_RUN(TestPairTables);
+	TEST_RUN(TestShapeCores);
 	TEST_RUN(TestOverlapMatrix);
 	return TEST_SUMMARY();
 }

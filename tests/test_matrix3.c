@@ -11,6 +11,7 @@
 #include "test.h"
 
 #include "../src/query/pairs3.h"
+#include "../src/query/support3.h"
 
 #define BAND 1e-3
 
@@ -224,9 +225,75 @@ static void TestPairTables(void)
 	TEST_CHECK(checked == 200 * 28);
 }
 
+static void CheckCore(TestRng* rng, const cd3Shape* shape, bool hasCore, cdReal radius, const char* name)
+{
+	cd3Core core;
+	bool made = cd3MakeCore(shape, &core);
+	TEST_CHECKF(made == hasCore, "%s: core made %d, row has one %d", name, (int)made, (int)hasCore);
+	if (!made || core.count < 1)
+	{
+		return;
+	}
+	TEST_CHECKF(core.radius == radius, "%s: core radius %g, row radius %g", name, (double)core.radius,
+				(double)radius);
+	cd3Aabb bounds = cd3ComputeShapeAabb(shape);
+	cdReal tolerance = CD_R(1e-4);
+	for (int i = 0; i < core.count; ++i)
+	{
+		cd3Vec p = cd3CorePoint(&core, i);
+		TEST_CHECKF(p.x - core.radius >= bounds.min.x - tolerance &&
+						p.x + core.radius <= bounds.max.x + tolerance &&
+						p.y - core.radius >= bounds.min.y - tolerance &&
+						p.y + core.radius <= bounds.max.y + tolerance &&
+						p.z - core.radius >= bounds.min.z - tolerance &&
+						p.z + core.radius <= bounds.max.z + tolerance,
+					"%s: core point %d outside the bounds", name, i);
+	}
+	for (int k = 0; k < 8; ++k)
+	{
+		cd3Vec u = RandomUnit(rng);
+		cd3Vec support = cd3CorePoint(&core, cd3CoreSupport(&core, u));
+		cd3Vec on = cd3MulAdd(support, CD_R(0.999) * core.radius, u);
+		cd3Vec beyond = cd3MulAdd(support, core.radius + CD_R(0.01), u);
+		cdReal off = cd3Length(cd3Sub(cd3ClosestPointOnShape(shape, on), on));
+		TEST_CHECKF(off <= tolerance, "%s: support point %g outside the shape", name, (double)off);
+		TEST_CHECKF(!cd3PointInShape(shape, beyond), "%s: the shape reaches past its support point", name);
+	}
+}
+
+/* The support columns of the shape table (MakeCore, Radius), which GJK, the casts and
+ * cd3Distance see every shape through: for random shapes of every row the core is made (none for
+ * the half-space, whose MakeCore is NONE), its radius is the row's Radius (0 for a sharp shape),
+ * its points grown by the radius lie in the shape's bounds, and along random directions the
+ * support point (the farthest core point pushed out by the radius) lies in the shape (within
+ * 1e-4) while a point 0.01 farther along does not. */
+static void TestShapeCores(void)
+{
+	TestRng rng = TestRngMake(0xc0e5u);
+	int checked = 0;
+	for (int n = 0; n < 300; ++n)
+	{
+#define CHECK_CORE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass,     \
+				   MakeCore, Radius)                                                                         \
+	{                                                                                                        \
+		cd3Shape shape = RandomShape(&rng, CD3_TYPE_##Name);                                                 \
+		cdReal radius = CD_R(0.0);                                                                           \
+		CD_SHAPE_HAS(Radius, CORE_RADIUS)                                                                    \
+		(Radius) CheckCore(&rng, &shape, CD_PAIR_IS_UNTYPED(MakeCore) == 0, radius, #Name);                  \
+		++checked;                                                                                           \
+	}
+#define CORE_RADIUS(Radius) radius = Radius(&shape);
+		CD3_SHAPE_TABLE(CHECK_CORE)
+#undef CORE_RADIUS
+#undef CHECK_CORE
+	}
+	TEST_CHECK(checked == 300 * CD3_SHAPE_TYPE_COUNT);
+}
+
 int main(void)
 {
 	TEST_RUN(TestPairTables);
+	TEST_RUN(TestShapeCores);
 	TEST_RUN(TestOverlapMatrix);
 	TEST_RUN(TestOppositePlanes);
 	return TEST_SUMMARY();

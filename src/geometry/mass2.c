@@ -184,7 +184,8 @@ cd2MassData cd2ComputeShapeMass(const cd2Shape* shape, cdReal density)
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-#define CD2_MASS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass)  \
+#define CD2_MASS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass,  \
+					  ...)                                                                                   \
 	case CD2_TYPE_##Name:                                                                                    \
 		return ComputeMass(CD2_SHAPE_ARG(Name, shape), density);
 		CD2_SHAPE_TABLE(CD2_MASS_CASE)

@@ -246,7 +246,8 @@ cd3MassData cd3ComputeShapeMass(const cd3Shape* shape, cdReal density)
 	CD_ASSERT(shape != NULL);
 	switch (shape->type)
 	{
-#define CD3_MASS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass)  \
+#define CD3_MASS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass,  \
+					  ...)                                                                                   \
 	case CD3_TYPE_##Name:                                                                                    \
 		return ComputeMass(CD3_SHAPE_ARG(Name, shape), density);
 		CD3_SHAPE_TABLE(CD3_MASS_CASE)

@@ -48,18 +48,17 @@ static cdReal StripRadius(cd2Shape* shape)
 	cdReal radius = CD_R(0.0);
 	switch (shape->type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			radius = shape->circle.radius;
-			shape->circle.radius = CD_R(0.0);
-			break;
-		case CD2_SHAPE_CAPSULE:
-			radius = shape->capsule.radius;
-			shape->capsule.radius = CD_R(0.0);
-			break;
-		case CD2_SHAPE_POLYGON:
-			radius = shape->polygon.radius;
-			shape->polygon.radius = CD_R(0.0);
-			break;
+#define STRIP_RADIUS(Name, Radius)                                                                           \
+	case CD2_TYPE_##Name:                                                                                    \
+		radius = Radius(shape);                                                                              \
+		Radius(shape) = CD_R(0.0);                                                                           \
+		break;
+#define STRIP_RADIUS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb,           \
+						  ComputeMass, MakeCore, Radius)                                                     \
+	CD_SHAPE_HAS(Radius, STRIP_RADIUS)(Name, Radius)
+		CD2_SHAPE_TABLE(STRIP_RADIUS_CASE)
+#undef STRIP_RADIUS_CASE
+#undef STRIP_RADIUS
 		default:
 			break;
 	}

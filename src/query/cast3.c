@@ -50,14 +50,17 @@ static cdReal StripRadius(cd3Shape* shape)
 	cdReal radius = CD_R(0.0);
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			radius = shape->sphere.radius;
-			shape->sphere.radius = CD_R(0.0);
-			break;
-		case CD3_SHAPE_CAPSULE:
-			radius = shape->capsule.radius;
-			shape->capsule.radius = CD_R(0.0);
-			break;
+#define STRIP_RADIUS(Name, Radius)                                                                           \
+	case CD3_TYPE_##Name:                                                                                    \
+		radius = Radius(shape);                                                                              \
+		Radius(shape) = CD_R(0.0);                                                                           \
+		break;
+#define STRIP_RADIUS_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb,           \
+						  ComputeMass, MakeCore, Radius)                                                     \
+	CD_SHAPE_HAS(Radius, STRIP_RADIUS)(Name, Radius)
+		CD3_SHAPE_TABLE(STRIP_RADIUS_CASE)
+#undef STRIP_RADIUS_CASE
+#undef STRIP_RADIUS
 		default:
 			break;
 	}

@@ -2,6 +2,7 @@
  * with a Voronoi-region sub-algorithm, then the radii are taken off. */
 #include "collide/query2.h"
 
+#include "pairs2.h"
 #include "support2.h"
 
 #include <string.h>
@@ -450,14 +451,11 @@ cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdD
 	return cd2DistanceCached(a, b, NULL, status);
 }
 
-cd2ClosestPoints cd2DistanceCores(const cd2Core* coreA, const cd2Core* coreB, cd2SimplexCache* cache,
-								  cdDistanceStatus* status)
+/* The closest points of the shapes from those of their cores (radiusA, radiusB around them). */
+static cd2ClosestPoints AddRadii(cd2Vec pointA, cd2Vec pointB, bool touching, cdReal radiusA, cdReal radiusB)
 {
-	cd2Vec pointA, pointB;
-	bool touching, hitIterationCap;
-	int iterations = GjkCores(coreA, coreB, cache, &pointA, &pointB, &touching, &hitIterationCap);
 	cd2ClosestPoints result;
-	cdReal radius = coreA->radius + coreB->radius;
+	cdReal radius = radiusA + radiusB;
 	cd2Vec delta = cd2Sub(pointB, pointA);
 	cdReal coreDistance = cd2Length(delta);
 	if (touching)
@@ -467,22 +465,54 @@ cd2ClosestPoints cd2DistanceCores(const cd2Core* coreA, const cd2Core* coreB, cd
 	else if (coreDistance <= radius)
 	{
 		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
-		cdReal t = radius > CD_R(0.0) ? coreA->radius / radius : CD_R(0.0);
+		cdReal t = radius > CD_R(0.0) ? radiusA / radius : CD_R(0.0);
 		result = Touching(cd2MulAdd(pointA, t, delta));
 	}
 	else
 	{
 		cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
-		result.pointA = cd2MulAdd(pointA, coreA->radius, normal);
-		result.pointB = cd2MulSub(pointB, coreB->radius, normal);
+		result.pointA = cd2MulAdd(pointA, radiusA, normal);
+		result.pointB = cd2MulSub(pointB, radiusB, normal);
 		result.distance = coreDistance - radius;
 	}
+	return result;
+}
+
+cd2ClosestPoints cd2DistanceCores(const cd2Core* coreA, const cd2Core* coreB, cd2SimplexCache* cache,
+								  cdDistanceStatus* status)
+{
+	cd2Vec pointA, pointB;
+	bool touching, hitIterationCap;
+	int iterations = GjkCores(coreA, coreB, cache, &pointA, &pointB, &touching, &hitIterationCap);
+	cd2ClosestPoints result = AddRadii(pointA, pointB, touching, coreA->radius, coreB->radius);
 	if (status != NULL)
 	{
 		status->iterations = iterations;
 		status->hitIterationCap = hitIterationCap;
 	}
 	return result;
+}
+
+/* Closed-form distances: the pair table's Distance column (pairs2.h) when it names a function
+ * instead of GJK. Each gives GJK's answer on the pair's cores bit for bit (test_distance2 checks
+ * it) without building the cores: two circles are two points, whose closest points are
+ * themselves. */
+static cd2ClosestPoints DistanceCircleCircle(cd2Circle a, cd2Circle b)
+{
+	/* GJK's one-vertex simplex: its touching test, and its closest points as weighted sums from
+	 * zero (0 + 1 * centre, which turns -0 into +0). */
+	cd2Vec w = cd2MulAdd(CD2_VEC_ZERO, CD_R(1.0), cd2Sub(a.center, b.center));
+	cdReal touch = GJK_TOUCH_TOLERANCE * CD_R(1.4142136) * cd2MaxAbs(w);
+	bool touching = cd2LengthSquared(w) <= touch * touch;
+	cd2Vec pointA = cd2MulAdd(CD2_VEC_ZERO, CD_R(1.0), a.center);
+	cd2Vec pointB = cd2MulAdd(CD2_VEC_ZERO, CD_R(1.0), b.center);
+	return AddRadii(pointA, pointB, touching, a.radius, b.radius);
+}
+
+static cd2ClosestPoints SwapPoints(cd2ClosestPoints result)
+{
+	cd2ClosestPoints swapped = {result.pointB, result.pointA, result.distance};
+	return swapped;
 }
 
 cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2SimplexCache* cache,
@@ -494,6 +524,24 @@ cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2Simp
 		status->hitIterationCap = false;
 	}
 	CD_ASSERT(a != NULL && b != NULL);
+	if (cache == NULL && status == NULL)
+	{
+		/* The pairs with a closed form (the Distance column names it), in either order. */
+#define CD2_DISTANCE_CASE(A, B, Distance)                                                                    \
+	if (a->type == CD2_TYPE_##A && b->type == CD2_TYPE_##B)                                                  \
+	{                                                                                                        \
+		return Distance(CD2_SHAPE_ARG(A, a), CD2_SHAPE_ARG(B, b));                                           \
+	}                                                                                                        \
+	if (CD2_TYPE_##A != CD2_TYPE_##B && a->type == CD2_TYPE_##B && b->type == CD2_TYPE_##A)                  \
+	{                                                                                                        \
+		return SwapPoints(Distance(CD2_SHAPE_ARG(A, b), CD2_SHAPE_ARG(B, a)));                               \
+	}
+#define CD2_DISTANCE_ROW(A, B, Overlap, Distance, Collide)                                                   \
+	CD_PAIR_CLOSED(Distance, CD2_DISTANCE_CASE)(A, B, Distance)
+		CD2_PAIR_TABLE(CD2_DISTANCE_ROW)
+#undef CD2_DISTANCE_ROW
+#undef CD2_DISTANCE_CASE
+	}
 	cd2Core coreA, coreB;
 	if (!cd2MakeCore(a, &coreA) || !cd2MakeCore(b, &coreB))
 	{

@@ -1101,12 +1101,12 @@ cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdD
 	return cd3DistanceCached(a, b, NULL, status);
 }
 
-/* The closest points of the shapes from those of their cores. */
-static cd3ClosestPoints AddRadii(const cd3Core* coreA, const cd3Core* coreB, cd3Vec pointA, cd3Vec pointB,
-								 bool touching)
+/* The closest points of the shapes from those of their cores (radiusA, radiusB around them). */
+static cd3ClosestPoints AddRadiusValues(cd3Vec pointA, cd3Vec pointB, bool touching, cdReal radiusA,
+										cdReal radiusB)
 {
 	cd3ClosestPoints result;
-	cdReal radius = coreA->radius + coreB->radius;
+	cdReal radius = radiusA + radiusB;
 	cd3Vec delta = cd3Sub(pointB, pointA);
 	cdReal coreDistance = cd3Length(delta);
 	if (touching)
@@ -1116,17 +1116,39 @@ static cd3ClosestPoints AddRadii(const cd3Core* coreA, const cd3Core* coreB, cd3
 	else if (coreDistance <= radius)
 	{
 		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
-		cdReal t = radius > CD_R(0.0) ? coreA->radius / radius : CD_R(0.0);
+		cdReal t = radius > CD_R(0.0) ? radiusA / radius : CD_R(0.0);
 		result = Touching(cd3MulAdd(pointA, t, delta));
 	}
 	else
 	{
 		cd3Vec normal = cd3Scale(CD_R(1.0) / coreDistance, delta);
-		result.pointA = cd3MulAdd(pointA, coreA->radius, normal);
-		result.pointB = cd3MulSub(pointB, coreB->radius, normal);
+		result.pointA = cd3MulAdd(pointA, radiusA, normal);
+		result.pointB = cd3MulSub(pointB, radiusB, normal);
 		result.distance = coreDistance - radius;
 	}
 	return result;
+}
+
+static cd3ClosestPoints AddRadii(const cd3Core* coreA, const cd3Core* coreB, cd3Vec pointA, cd3Vec pointB,
+								 bool touching)
+{
+	return AddRadiusValues(pointA, pointB, touching, coreA->radius, coreB->radius);
+}
+
+/* Closed-form distances: the pair table's Distance column (pairs3.h) when it names a function
+ * instead of GJK. Each gives GJK's answer on the pair's cores bit for bit (test_distance3 checks
+ * it) without building the cores: two spheres are two points, whose closest points are
+ * themselves. */
+static cd3ClosestPoints DistanceSphereSphere(cd3Sphere a, cd3Sphere b)
+{
+	/* GJK's one-vertex simplex: its touching test (relative to the larger centre), and its
+	 * closest points as weighted sums from zero (0 + 1 * centre, which turns -0 into +0). */
+	cd3Vec w = cd3Sub(a.center, b.center);
+	cdReal touch = GJK_TOUCH_TOLERANCE * cdMax(MaxAbsComponent(a.center), MaxAbsComponent(b.center));
+	bool touching = cd3LengthSquared(w) <= touch * touch;
+	cd3Vec pointA = cd3MulAdd(CD3_VEC_ZERO, CD_R(1.0), a.center);
+	cd3Vec pointB = cd3MulAdd(CD3_VEC_ZERO, CD_R(1.0), b.center);
+	return AddRadiusValues(pointA, pointB, touching, a.radius, b.radius);
 }
 
 cd3ClosestPoints cd3DistanceCores(const cd3Core* coreA, const cd3Core* coreB, cd3SimplexCache* cache,
@@ -1152,6 +1174,25 @@ cd3ClosestPoints cd3DistanceCached(const cd3Shape* a, const cd3Shape* b, cd3Simp
 		status->hitIterationCap = false;
 	}
 	CD_ASSERT(a != NULL && b != NULL);
+	if (cache == NULL && status == NULL)
+	{
+		/* The pairs with a closed form (the Distance column names it), in either order. */
+#define CD3_DISTANCE_CASE(A, B, Distance)                                                                    \
+	if (a->type == CD3_TYPE_##A && b->type == CD3_TYPE_##B)                                                  \
+	{                                                                                                        \
+		return Distance(CD3_SHAPE_ARG(A, a), CD3_SHAPE_ARG(B, b));                                           \
+	}                                                                                                        \
+	if (CD3_TYPE_##A != CD3_TYPE_##B && a->type == CD3_TYPE_##B && b->type == CD3_TYPE_##A)                  \
+	{                                                                                                        \
+		return Swap(Distance(CD3_SHAPE_ARG(A, b), CD3_SHAPE_ARG(B, a)));                                     \
+	}
+#define CD3_DISTANCE_ROW(A, B, Overlap, Distance, Collide)                                                   \
+	CD_PAIR_CLOSED(Distance, CD3_DISTANCE_CASE)(A, B, Distance)
+		CD3_PAIR_TABLE(CD3_DISTANCE_ROW)
+		CD3_HULL_PAIR_TABLE(CD3_DISTANCE_ROW)
+#undef CD3_DISTANCE_ROW
+#undef CD3_DISTANCE_CASE
+	}
 	cd3Core coreA, coreB;
 	bool finiteA = cd3MakeCore(a, &coreA);
 	bool finiteB = cd3MakeCore(b, &coreB);

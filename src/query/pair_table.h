@@ -27,4 +27,17 @@
 #define CD_PAIR_SELECT_1(macro) CD_PAIR_SKIP
 #define CD_PAIR_TYPED(column, macro) CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_IS_UNTYPED(column))(macro)
 
+/* A Distance column is GJK (cd2Distance / cd3Distance run GJK on the pair's cores), CLOSED_FORM
+ * (GJK too, and the pair also has a public closest-points function or, in 3D, an exact half-space
+ * path) or the name of a closed-form distance function that the dispatcher calls instead of GJK.
+ * CD_PAIR_CLOSED(Distance, MACRO) expands MACRO for such a name only. */
+#define CD_PAIR_DPROBE_GJK ~, 1
+#define CD_PAIR_DPROBE_CLOSED_FORM ~, 1
+#define CD_PAIR_IS_GJK(column) CD_PAIR_SECOND_I(CD_PAIR_CAT(CD_PAIR_DPROBE_, column), 0, ~)
+#define CD_PAIR_CLOSED(column, macro) CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_IS_GJK(column))(macro)
+
+/* The same for a shape table column that may be NONE (MakeCore, Radius): CD_SHAPE_HAS(Radius,
+ * MACRO)(args) expands MACRO(args) when the column names something, nothing for NONE. */
+#define CD_SHAPE_HAS(column, macro) CD_PAIR_TYPED(column, macro)
+
 #endif

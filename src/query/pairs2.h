@@ -9,19 +9,26 @@
  * (how its functions take it from a const cd2Shape* s: the union member by value or by pointer).
  *
  * CD2_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb,
- *                       ComputeMass)
+ *                       ComputeMass, MakeCore, Radius)
  *   Name     the shape's name in function names (Circle);
  *   PointIn  the containment test, called PointIn(p, shape) (a shape with no inside names the
  *            dispatcher's tolerance test); ClosestPointOn(shape, p); Raycast(shape, ray, hit);
  *   TypeName the string of cd2GetShapeTypeName; Validate(shape) its cdResult check (static in
  *            geometry/shapes2.c); ComputeAabb(shape) its bounds (geometry/shapes2.c);
- *            ComputeMass(shape, density) its mass (geometry/mass2.c; zero mass for a segment).
+ *            ComputeMass(shape, density) its mass (geometry/mass2.c; zero mass for a segment);
+ *   MakeCore the shape as GJK sees it (its support points), MakeCore(shape, core) filling the
+ *            core's points and count (support2.h: cd2MakeCore, and through it GJK, the casts and
+ *            cd2Distance);
+ *   Radius   the rounding radius as an lvalue macro, Radius(const cd2Shape* s) (support2.h), or
+ *            NONE for a sharp shape: the core's radius, and what the casts strip (cast2.c).
  *   A column is expanded only in the file that holds its functions, so static helpers are fine.
  *
  * CD2_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
  *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b));
- *   Distance  GJK (cd2Distance) for every pair; CLOSED_FORM names a pair that also has a
- *             closed-form closest-points function (cd2ClosestPoints<A><B>);
+ *   Distance  GJK: cd2Distance runs GJK on the cores; CLOSED_FORM: GJK too, and the pair also has
+ *             a public closed-form closest-points function (cd2ClosestPoints<A><B>); or the name
+ *             of a closed-form distance (distance2.c) that cd2Distance calls instead of GJK,
+ *             Distance(ARG_A(a), ARG_B(b)), with GJK's answer bit for bit (two circles);
  *   Collide   the contact manifold: the typed pair function cd2Collide<A><B> (and its ...Local
  *             form), or CORE when only cd2Collide handles the pair (AABBs and boxes collide as
  *             polygons). */
@@ -32,20 +39,20 @@
 
 #define CD2_SHAPE_TABLE(X)                                                                                   \
 	X(Circle, cd2PointInCircle, cd2ClosestPointOnCircle, cd2RaycastCircle, "circle", ValidateCircle,         \
-	  cd2ComputeCircleAabb, cd2ComputeCircleMass)                                                            \
+	  cd2ComputeCircleAabb, cd2ComputeCircleMass, cd2MakeCircleCore, CD2_CIRCLE_RADIUS)                      \
 	X(Capsule, cd2PointInCapsule, cd2ClosestPointOnCapsule, cd2RaycastCapsule, "capsule", ValidateCapsule,   \
-	  cd2ComputeCapsuleAabb, cd2ComputeCapsuleMass)                                                          \
+	  cd2ComputeCapsuleAabb, cd2ComputeCapsuleMass, cd2MakeCapsuleCore, CD2_CAPSULE_RADIUS)                  \
 	X(Aabb, cd2PointInAabb, cd2ClosestPointOnAabb, cd2RaycastAabb, "aabb", ValidateAabb, AabbOfAabb,         \
-	  cd2ComputeAabbMass)                                                                                    \
+	  cd2ComputeAabbMass, cd2MakeAabbCore, NONE)                                                             \
 	X(Box, cd2PointInBox, cd2ClosestPointOnBox, cd2RaycastBox, "box", ValidateBox, cd2ComputeBoxAabb,        \
-	  cd2ComputeBoxMass)                                                                                     \
+	  cd2ComputeBoxMass, cd2MakeBoxCore, NONE)                                                               \
 	X(Polygon, cd2PointInPolygon, cd2ClosestPointOnPolygon, cd2RaycastPolygon, "polygon", ValidatePolygon,   \
-	  cd2ComputePolygonAabb, cd2ComputePolygonMass)                                                          \
+	  cd2ComputePolygonAabb, cd2ComputePolygonMass, cd2MakePolygonCore, CD2_POLYGON_RADIUS)                  \
 	X(Segment, PointOnSegment2, cd2ClosestPointOnSegment, cd2RaycastSegment, "segment", ValidateSegment,     \
-	  cd2ComputeSegmentAabb, SegmentMass)
+	  cd2ComputeSegmentAabb, SegmentMass, cd2MakeSegmentCore, NONE)
 
 #define CD2_PAIR_TABLE(X)                                                                                    \
-	X(Circle, Circle, cd2OverlapCircleCircle, GJK, cd2CollideCircleCircle)                                   \
+	X(Circle, Circle, cd2OverlapCircleCircle, DistanceCircleCircle, cd2CollideCircleCircle)                  \
 	X(Circle, Capsule, cd2OverlapCircleCapsule, GJK, cd2CollideCircleCapsule)                                \
 	X(Circle, Aabb, cd2OverlapCircleAabb, GJK, CORE)                                                         \
 	X(Circle, Box, cd2OverlapCircleBox, GJK, CORE)                                                           \

@@ -10,19 +10,26 @@
  * (how its functions take it from a const cd3Shape* s: the union member).
  *
  * CD3_SHAPE_TABLE(X): X(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb,
- *                       ComputeMass)
+ *                       ComputeMass, MakeCore, Radius)
  *   PointIn(p, shape) (a shape with no inside names the dispatcher's tolerance test),
  *   ClosestPointOn(shape, p), Raycast(shape, ray, hit); TypeName the string of
  *   cd3GetShapeTypeName; Validate(shape) (static in geometry/shapes3.c), ComputeAabb(shape)
  *   (geometry/shapes3.c), ComputeMass(shape, density) (geometry/mass3.c; zero mass at the
- *   centroid for shapes without volume). A column is expanded only in the file that holds its
- *   functions, so static helpers are fine.
+ *   centroid for shapes without volume); MakeCore(shape, core) fills the shape's GJK core (its
+ *   support points, support3.h: cd3MakeCore, and through it cd3Distance, the casts and time of
+ *   impact), NONE for the half-space (no finite core: its users handle it apart); Radius(const cd3Shape* s)
+ *   the rounding radius as an lvalue macro (support3.h), NONE for a sharp shape: the core's
+ *   radius, and what the casts strip (cast3.c). A column is expanded only in the file that holds
+ *   its functions, so static helpers are fine.
  *
  * CD3_PAIR_TABLE(X) and CD3_HULL_PAIR_TABLE(X): X(NameA, NameB, Overlap, Distance, Collide)
  *   Overlap   the pair's overlap test, Overlap(ARG_A(a), ARG_B(b)); GJK for the hull pairs
  *             (cd3Overlap runs the boolean GJK on the tagged shapes);
- *   Distance  GJK (cd3Distance) for every pair; CLOSED_FORM names a pair with a closed-form
- *             closest-points function (cd3ClosestPoints<A><B>) or an exact half-space path;
+ *   Distance  GJK: cd3Distance runs GJK on the cores; CLOSED_FORM: a pair with a public
+ *             closed-form closest-points function (cd3ClosestPoints<A><B>) or an exact half-space
+ *             path in cd3Distance; or the name of a closed-form distance (distance3.c) that
+ *             cd3Distance calls instead of GJK, Distance(ARG_A(a), ARG_B(b)), with GJK's answer
+ *             bit for bit (two spheres);
  *   Collide   the contact manifold: the typed pair function cd3Collide<A><B> (and its ...Local
  *             form), CORE when only cd3Collide handles the pair (an AABB collides as a box), or
  *             NONE (planes and segments have no manifold). */
@@ -33,24 +40,24 @@
 
 #define CD3_SHAPE_TABLE(X)                                                                                   \
 	X(Sphere, cd3PointInSphere, cd3ClosestPointOnSphere, cd3RaycastSphere, "sphere", ValidateSphere,         \
-	  cd3ComputeSphereAabb, cd3ComputeSphereMass)                                                            \
+	  cd3ComputeSphereAabb, cd3ComputeSphereMass, cd3MakeSphereCore, CD3_SPHERE_RADIUS)                      \
 	X(Capsule, cd3PointInCapsule, cd3ClosestPointOnCapsule, cd3RaycastCapsule, "capsule", ValidateCapsule,   \
-	  cd3ComputeCapsuleAabb, cd3ComputeCapsuleMass)                                                          \
+	  cd3ComputeCapsuleAabb, cd3ComputeCapsuleMass, cd3MakeCapsuleCore, CD3_CAPSULE_RADIUS)                  \
 	X(Aabb, cd3PointInAabb, cd3ClosestPointOnAabb, cd3RaycastAabb, "aabb", ValidateAabb, AabbOfAabb,         \
-	  cd3ComputeAabbMass)                                                                                    \
+	  cd3ComputeAabbMass, cd3MakeAabbCore, NONE)                                                             \
 	X(Box, cd3PointInBox, cd3ClosestPointOnBox, cd3RaycastBox, "box", ValidateBox, cd3ComputeBoxAabb,        \
-	  cd3ComputeBoxMass)                                                                                     \
+	  cd3ComputeBoxMass, cd3MakeBoxCore, NONE)                                                               \
 	X(Triangle, PointOnTriangle3, cd3ClosestPointOnTriangle, cd3RaycastTriangle, "triangle",                 \
-	  ValidateTriangle, cd3ComputeTriangleAabb, TriangleMass)                                                \
+	  ValidateTriangle, cd3ComputeTriangleAabb, TriangleMass, cd3MakeTriangleCore, NONE)                     \
 	X(Plane, cd3PointInPlane, cd3ClosestPointOnPlane, cd3RaycastPlane, "plane", ValidatePlane,               \
-	  cd3ComputePlaneAabb, PlaneMass)                                                                        \
+	  cd3ComputePlaneAabb, PlaneMass, NONE, NONE)                                                            \
 	X(Segment, PointOnSegment3, cd3ClosestPointOnSegment, cd3RaycastSegment, "segment", ValidateSegment,     \
-	  cd3ComputeSegmentAabb, SegmentMass)                                                                    \
+	  cd3ComputeSegmentAabb, SegmentMass, cd3MakeSegmentCore, NONE)                                          \
 	X(Hull, cd3PointInHull, cd3ClosestPointOnHull, cd3RaycastHull, "hull", ValidateHullShape,                \
-	  cd3ComputeHullShapeAabb, cd3ComputeHullMass)
+	  cd3ComputeHullShapeAabb, cd3ComputeHullMass, cd3MakeHullCore, NONE)
 
 #define CD3_PAIR_TABLE(X)                                                                                    \
-	X(Sphere, Sphere, cd3OverlapSphereSphere, GJK, cd3CollideSphereSphere)                                   \
+	X(Sphere, Sphere, cd3OverlapSphereSphere, DistanceSphereSphere, cd3CollideSphereSphere)                  \
 	X(Sphere, Capsule, cd3OverlapSphereCapsule, GJK, cd3CollideSphereCapsule)                                \
 	X(Sphere, Aabb, cd3OverlapSphereAabb, GJK, CORE)                                                         \
 	X(Sphere, Box, cd3OverlapSphereBox, GJK, cd3CollideSphereBox)                                            \

@@ -6,6 +6,7 @@
 
 #include "collide/geometry2.h"
 #include "collide/query2.h"
+#include "pairs2.h"
 
 #define CD2_CORE_MAX_POINTS CD2_MAX_POLYGON_VERTICES
 
@@ -17,62 +18,90 @@ typedef struct cd2Core
 	cdReal radius;
 } cd2Core;
 
-/* Fills *core (pointing into the shape for a polygon: the shape must outlive it); returns false
- * for an unknown type or an empty polygon. */
+/* The shape table's support columns (pairs2.h: MakeCore and Radius, one row per shape). Each
+ * MakeCore(shape, core) fills the core's points and count from the tagged shape (read through the
+ * pointer, as the hand-written switch did: a by-value member made GCC copy it first); the radius
+ * comes from the Radius column. */
+#define CD2_CIRCLE_RADIUS(s) ((s)->circle.radius)
+#define CD2_CAPSULE_RADIUS(s) ((s)->capsule.radius)
+#define CD2_POLYGON_RADIUS(s) ((s)->polygon.radius)
+
+static inline bool cd2MakeCircleCore(const cd2Shape* shape, cd2Core* core)
+{
+	core->storage[0] = shape->circle.center;
+	core->count = 1;
+	return true;
+}
+
+static inline bool cd2MakeCapsuleCore(const cd2Shape* shape, cd2Core* core)
+{
+	core->storage[0] = shape->capsule.p1;
+	core->storage[1] = shape->capsule.p2;
+	core->count = 2;
+	return true;
+}
+
+static inline bool cd2MakeAabbCore(const cd2Shape* shape, cd2Core* core)
+{
+	cd2Vec lo = shape->aabb.min, hi = shape->aabb.max;
+	core->storage[0] = lo;
+	core->storage[1] = cd2MakeVec(hi.x, lo.y);
+	core->storage[2] = hi;
+	core->storage[3] = cd2MakeVec(lo.x, hi.y);
+	core->count = 4;
+	return true;
+}
+
+static inline bool cd2MakeBoxCore(const cd2Shape* shape, cd2Core* core)
+{
+	const cd2Box* box = &shape->box;
+	cd2Vec axisX = cd2RotateVector(box->rotation, cd2MakeVec(box->halfExtents.x, CD_R(0.0)));
+	cd2Vec axisY = cd2RotateVector(box->rotation, cd2MakeVec(CD_R(0.0), box->halfExtents.y));
+	core->storage[0] = cd2Sub(cd2Sub(box->center, axisX), axisY);
+	core->storage[1] = cd2Sub(cd2Add(box->center, axisX), axisY);
+	core->storage[2] = cd2Add(cd2Add(box->center, axisX), axisY);
+	core->storage[3] = cd2Add(cd2Sub(box->center, axisX), axisY);
+	core->count = 4;
+	return true;
+}
+
+/* Points into the polygon: the shape must outlive the core. */
+static inline bool cd2MakePolygonCore(const cd2Shape* shape, cd2Core* core)
+{
+	int count = cdMinInt(shape->polygon.count, CD2_CORE_MAX_POINTS);
+	core->points = shape->polygon.vertices;
+	core->count = count;
+	return count > 0;
+}
+
+static inline bool cd2MakeSegmentCore(const cd2Shape* shape, cd2Core* core)
+{
+	core->storage[0] = shape->segment.p1;
+	core->storage[1] = shape->segment.p2;
+	core->count = 2;
+	return true;
+}
+
+/* Fills *core from the shape table (pointing into the shape for a polygon: the shape must outlive
+ * it); returns false for an unknown type or an empty polygon. */
 static inline bool cd2MakeCore(const cd2Shape* shape, cd2Core* core)
 {
 	core->radius = CD_R(0.0);
 	core->count = 0;
 	core->points = core->storage;
-	cd2Vec* storage = core->storage;
 	switch (shape->type)
 	{
-		case CD2_SHAPE_CIRCLE:
-			storage[0] = shape->circle.center;
-			core->count = 1;
-			core->radius = shape->circle.radius;
-			return true;
-		case CD2_SHAPE_CAPSULE:
-			storage[0] = shape->capsule.p1;
-			storage[1] = shape->capsule.p2;
-			core->count = 2;
-			core->radius = shape->capsule.radius;
-			return true;
-		case CD2_SHAPE_AABB:
-		{
-			cd2Vec lo = shape->aabb.min, hi = shape->aabb.max;
-			storage[0] = lo;
-			storage[1] = cd2MakeVec(hi.x, lo.y);
-			storage[2] = hi;
-			storage[3] = cd2MakeVec(lo.x, hi.y);
-			core->count = 4;
-			return true;
-		}
-		case CD2_SHAPE_BOX:
-		{
-			const cd2Box* box = &shape->box;
-			cd2Vec axisX = cd2RotateVector(box->rotation, cd2MakeVec(box->halfExtents.x, CD_R(0.0)));
-			cd2Vec axisY = cd2RotateVector(box->rotation, cd2MakeVec(CD_R(0.0), box->halfExtents.y));
-			storage[0] = cd2Sub(cd2Sub(box->center, axisX), axisY);
-			storage[1] = cd2Sub(cd2Add(box->center, axisX), axisY);
-			storage[2] = cd2Add(cd2Add(box->center, axisX), axisY);
-			storage[3] = cd2Add(cd2Sub(box->center, axisX), axisY);
-			core->count = 4;
-			return true;
-		}
-		case CD2_SHAPE_POLYGON:
-		{
-			int count = cdMinInt(shape->polygon.count, CD2_CORE_MAX_POINTS);
-			core->points = shape->polygon.vertices;
-			core->count = count;
-			core->radius = shape->polygon.radius;
-			return count > 0;
-		}
-		case CD2_SHAPE_SEGMENT:
-			storage[0] = shape->segment.p1;
-			storage[1] = shape->segment.p2;
-			core->count = 2;
-			return true;
+#define CD2_CORE_RADIUS(Radius) core->radius = Radius(shape);
+#define CD2_CORE_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass,  \
+					  MakeCore, Radius)                                                                      \
+	case CD2_TYPE_##Name:                                                                                    \
+	{                                                                                                        \
+		bool made = MakeCore(shape, core);                                                                   \
+		CD_SHAPE_HAS(Radius, CD2_CORE_RADIUS)(Radius) return made;                                           \
+	}
+		CD2_SHAPE_TABLE(CD2_CORE_CASE)
+#undef CD2_CORE_CASE
+#undef CD2_CORE_RADIUS
 		default:
 			return false;
 	}

@@ -9,6 +9,7 @@
 #include "collide/geometry3.h"
 #include "collide/query3.h"
 
+#include "pairs3.h"
 #include "sat3_support.h"
 
 #define CD3_CORE_MAX_POINTS 8
@@ -29,8 +30,102 @@ typedef struct cd3Core
 	cd3Vec translation;
 } cd3Core;
 
-/* Fills *core for every shape type except the half-space (returns false for it and for an
- * unknown type). */
+/* The shape table's support columns (pairs3.h: MakeCore and Radius, one row per shape). Each
+ * MakeCore(shape, core) fills the core's points (or the hull's local vertices) and count from the
+ * tagged shape; cd3MakeCore has cleared the other fields and takes the radius from the Radius
+ * column. */
+#define CD3_SPHERE_RADIUS(s) ((s)->sphere.radius)
+#define CD3_CAPSULE_RADIUS(s) ((s)->capsule.radius)
+
+static inline bool cd3MakeSphereCore(const cd3Shape* shape, cd3Core* core)
+{
+	core->points[0] = shape->sphere.center;
+	core->count = 1;
+	return true;
+}
+
+static inline bool cd3MakeCapsuleCore(const cd3Shape* shape, cd3Core* core)
+{
+	core->points[0] = shape->capsule.p1;
+	core->points[1] = shape->capsule.p2;
+	core->count = 2;
+	return true;
+}
+
+static inline bool cd3MakeAabbCore(const cd3Shape* shape, cd3Core* core)
+{
+	cd3Vec lo = shape->aabb.min, hi = shape->aabb.max;
+	for (int i = 0; i < 8; ++i)
+	{
+		core->points[i] = cd3MakeVec((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+	}
+	core->count = 8;
+	core->box = true;
+	core->axes[0] = cd3MakeVec(hi.x - lo.x, CD_R(0.0), CD_R(0.0));
+	core->axes[1] = cd3MakeVec(CD_R(0.0), hi.y - lo.y, CD_R(0.0));
+	core->axes[2] = cd3MakeVec(CD_R(0.0), CD_R(0.0), hi.z - lo.z);
+	return true;
+}
+
+static inline bool cd3MakeBoxCore(const cd3Shape* shape, cd3Core* core)
+{
+	const cd3Box* box = &shape->box;
+	/* The rotation's matrix once, its columns scaled: cheaper than three rotations. */
+	cd3Mat33 rotation = cd3MakeMatFromQuat(box->rotation);
+	cd3Vec axisX = cd3Scale(box->halfExtents.x, rotation.cx);
+	cd3Vec axisY = cd3Scale(box->halfExtents.y, rotation.cy);
+	cd3Vec axisZ = cd3Scale(box->halfExtents.z, rotation.cz);
+	/* All eight corners at once, sharing their partial sums (the same bits as cd3BoxCorner):
+	 * cheaper than building the handful GJK reads one by one. */
+	core->count = 8;
+	core->box = true;
+	core->orientedBox = true;
+	core->center = box->center;
+	core->axes[0] = axisX;
+	core->axes[1] = axisY;
+	core->axes[2] = axisZ;
+	cd3Vec alongX[2] = {cd3Sub(box->center, axisX), cd3Add(box->center, axisX)};
+	cd3Vec alongXY[4];
+	for (int i = 0; i < 4; ++i)
+	{
+		alongXY[i] = (i & 2) ? cd3Add(alongX[i & 1], axisY) : cd3Sub(alongX[i & 1], axisY);
+	}
+	for (int i = 0; i < 8; ++i)
+	{
+		core->points[i] = (i & 4) ? cd3Add(alongXY[i & 3], axisZ) : cd3Sub(alongXY[i & 3], axisZ);
+	}
+	return true;
+}
+
+static inline bool cd3MakeTriangleCore(const cd3Shape* shape, cd3Core* core)
+{
+	core->points[0] = shape->triangle.a;
+	core->points[1] = shape->triangle.b;
+	core->points[2] = shape->triangle.c;
+	core->count = 3;
+	return true;
+}
+
+static inline bool cd3MakeSegmentCore(const cd3Shape* shape, cd3Core* core)
+{
+	core->points[0] = shape->segment.p1;
+	core->points[1] = shape->segment.p2;
+	core->count = 2;
+	return true;
+}
+
+static inline bool cd3MakeHullCore(const cd3Shape* shape, cd3Core* core)
+{
+	core->localPoints = shape->hull.hull->vertices;
+	core->localColumns = shape->hull.hull->vertexColumns;
+	core->count = shape->hull.hull->vertexCount;
+	core->rotation = cd3MakeMatFromQuat(shape->hull.transform.q);
+	core->translation = shape->hull.transform.p;
+	return true;
+}
+
+/* Fills *core from the shape table for every shape type except the half-space (returns false for
+ * it and for an unknown type). */
 static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 {
 	core->radius = CD_R(0.0);
@@ -41,79 +136,20 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 	core->orientedBox = false;
 	switch (shape->type)
 	{
-		case CD3_SHAPE_SPHERE:
-			core->points[0] = shape->sphere.center;
-			core->count = 1;
-			core->radius = shape->sphere.radius;
-			return true;
-		case CD3_SHAPE_CAPSULE:
-			core->points[0] = shape->capsule.p1;
-			core->points[1] = shape->capsule.p2;
-			core->count = 2;
-			core->radius = shape->capsule.radius;
-			return true;
-		case CD3_SHAPE_AABB:
-		{
-			cd3Vec lo = shape->aabb.min, hi = shape->aabb.max;
-			for (int i = 0; i < 8; ++i)
-			{
-				core->points[i] =
-					cd3MakeVec((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
-			}
-			core->count = 8;
-			core->box = true;
-			core->axes[0] = cd3MakeVec(hi.x - lo.x, CD_R(0.0), CD_R(0.0));
-			core->axes[1] = cd3MakeVec(CD_R(0.0), hi.y - lo.y, CD_R(0.0));
-			core->axes[2] = cd3MakeVec(CD_R(0.0), CD_R(0.0), hi.z - lo.z);
-			return true;
-		}
-		case CD3_SHAPE_BOX:
-		{
-			const cd3Box* box = &shape->box;
-			/* The rotation's matrix once, its columns scaled: cheaper than three rotations. */
-			cd3Mat33 rotation = cd3MakeMatFromQuat(box->rotation);
-			cd3Vec axisX = cd3Scale(box->halfExtents.x, rotation.cx);
-			cd3Vec axisY = cd3Scale(box->halfExtents.y, rotation.cy);
-			cd3Vec axisZ = cd3Scale(box->halfExtents.z, rotation.cz);
-			/* All eight corners at once, sharing their partial sums (the same bits as cd3BoxCorner):
-			 * cheaper than building the handful GJK reads one by one. */
-			core->count = 8;
-			core->box = true;
-			core->orientedBox = true;
-			core->center = box->center;
-			core->axes[0] = axisX;
-			core->axes[1] = axisY;
-			core->axes[2] = axisZ;
-			cd3Vec alongX[2] = {cd3Sub(box->center, axisX), cd3Add(box->center, axisX)};
-			cd3Vec alongXY[4];
-			for (int i = 0; i < 4; ++i)
-			{
-				alongXY[i] = (i & 2) ? cd3Add(alongX[i & 1], axisY) : cd3Sub(alongX[i & 1], axisY);
-			}
-			for (int i = 0; i < 8; ++i)
-			{
-				core->points[i] = (i & 4) ? cd3Add(alongXY[i & 3], axisZ) : cd3Sub(alongXY[i & 3], axisZ);
-			}
-			return true;
-		}
-		case CD3_SHAPE_TRIANGLE:
-			core->points[0] = shape->triangle.a;
-			core->points[1] = shape->triangle.b;
-			core->points[2] = shape->triangle.c;
-			core->count = 3;
-			return true;
-		case CD3_SHAPE_SEGMENT:
-			core->points[0] = shape->segment.p1;
-			core->points[1] = shape->segment.p2;
-			core->count = 2;
-			return true;
-		case CD3_SHAPE_HULL:
-			core->localPoints = shape->hull.hull->vertices;
-			core->localColumns = shape->hull.hull->vertexColumns;
-			core->count = shape->hull.hull->vertexCount;
-			core->rotation = cd3MakeMatFromQuat(shape->hull.transform.q);
-			core->translation = shape->hull.transform.p;
-			return true;
+#define CD3_CORE_RADIUS(Radius) core->radius = Radius(shape);
+#define CD3_CORE(Name, MakeCore, Radius)                                                                     \
+	case CD3_TYPE_##Name:                                                                                    \
+	{                                                                                                        \
+		bool made = MakeCore(shape, core);                                                                   \
+		CD_SHAPE_HAS(Radius, CD3_CORE_RADIUS)(Radius) return made;                                           \
+	}
+#define CD3_CORE_CASE(Name, PointIn, ClosestPointOn, Raycast, TypeName, Validate, ComputeAabb, ComputeMass,  \
+					  MakeCore, Radius)                                                                      \
+	CD_SHAPE_HAS(MakeCore, CD3_CORE)(Name, MakeCore, Radius)
+		CD3_SHAPE_TABLE(CD3_CORE_CASE)
+#undef CD3_CORE_CASE
+#undef CD3_CORE
+#undef CD3_CORE_RADIUS
 		default:
 			core->count = 0;
 			return false;
