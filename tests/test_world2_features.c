@@ -807,6 +807,47 @@ static void TestContinuous(void)
 	cd2DestroyWorld(world);
 }
 
+/* A body made asleep (isAwake false) stays asleep when its shapes are added and through steps, like
+ * a grid of resting boxes waiting to be hit, and wakes when an awake body touches it. */
+static void TestCreatedAsleep(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.type = CD_DYNAMIC_BODY;
+	bd.isAwake = false;
+	bd.position = cd2MakeVec(CD_R(0.0), CD_R(5.0));
+	cd2BodyId sleeper = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.5), CD_R(0.5)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2CreatePolygonShape(sleeper, &sd, &box);
+	TEST_CHECK(!cd2Body_IsAwake(sleeper));
+	for (int i = 0; i < 10; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(!cd2Body_IsAwake(sleeper));
+	TEST_CHECK_NEAR(cd2Body_GetPosition(sleeper).y, 5.0, 1e-6); /* asleep in the air: it did not fall */
+	TEST_CHECK(cd2World_GetCounters(world).awakeBodyCount == 0);
+	/* A ball dropped onto it wakes it at the touch, and then it falls. */
+	cd2BodyId ball = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(6.0)), CD_R(0.25), false);
+	bool woke = false;
+	for (int i = 0; i < 60 && !woke; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		woke = cd2Body_IsAwake(sleeper);
+	}
+	TEST_CHECK(woke);
+	for (int i = 0; i < 30; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(cd2Body_GetPosition(sleeper).y < CD_R(4.5));
+	TEST_CHECK(cd2Body_IsValid(ball));
+	cd2DestroyWorld(world);
+}
+
 /* Disable/enable, set type, set transform, mass data. */
 static void TestBodyControls(void)
 {
@@ -1190,6 +1231,7 @@ int main(void)
 	TEST_RUN(TestQueries);
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
+	TEST_RUN(TestCreatedAsleep);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);
 	TEST_RUN(TestMover);
