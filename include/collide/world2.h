@@ -172,7 +172,7 @@ typedef struct cd2BodyDef
 	cdReal gravityScale;
 	cdReal sleepThreshold; /* speed below which the body may sleep (0.05 m/s) */
 	bool enableSleep;
-	bool isAwake;
+	bool isAwake; /* false: made asleep, and stays asleep as shapes are added until touched */
 	bool fixedRotation;
 	bool isBullet;
 	bool isEnabled;

@@ -24,8 +24,14 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
 	{
 		int a = bodyA[i], b = bodyB[i];
 		int color = CD_GRAPH_COLOR_COUNT;
-		int first = (a < 0 || b < 0) ? 1 : 0;
-		for (int c = first; c < CD_GRAPH_COLOR_COUNT; ++c)
+		/* A pair of movable bodies takes the first free colour below the reserved ones; a
+		 * constraint with an immovable body the last free colour, searching down to colour 1, so
+		 * that it is solved after the pairs around it and has the last word in each pass. */
+		bool immovable = a < 0 || b < 0;
+		int first = immovable ? CD_GRAPH_COLOR_COUNT - 1 : 0;
+		int last = immovable ? 1 : CD_GRAPH_COLOR_COUNT - 1 - CD_GRAPH_IMMOVABLE_COLORS;
+		int stepColor = immovable ? -1 : 1;
+		for (int c = first; immovable ? c >= last : c <= last; c += stepColor)
 		{
 			uint64_t* set = used + (size_t)c * (size_t)words;
 			bool busyA = a >= 0 && ((set[a >> 6] >> (a & 63)) & 1u) != 0;

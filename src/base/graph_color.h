@@ -10,14 +10,19 @@
 
 /* Colours tried before a constraint goes to the overflow colour (solved last, sequentially). */
 #define CD_GRAPH_COLOR_COUNT 24
+/* The last colours, kept for constraints with an immovable body. */
+#define CD_GRAPH_IMMOVABLE_COLORS 4
 
 /* bodyA[i], bodyB[i]: dense indices of the constraint's movable bodies in [0, bodyCount), or -1
  * for an immovable one (static, or asleep this step), which takes no colour. Writes each
  * constraint's colour (0 .. CD_GRAPH_COLOR_COUNT, the last being the overflow) to colors and
  * reorders order[0..count) to run colour by colour, keeping the index order within a colour.
- * Constraints with one immovable body start at colour 1, leaving colour 0 to the pairs of movable
- * bodies (those are the many). Scratch memory comes from the arena; returns false when it runs
- * out (order is then the index order). */
+ * Constraints with one immovable body (a body on the ground, on a wall) take colours from the last
+ * one down to colour 1, and the pairs of movable bodies colours from 0 up to the last
+ * CD_GRAPH_IMMOVABLE_COLORS, so that within each pass a body's contact with a wall is solved after
+ * its contacts with the bodies pressing it there: a crowd pushed against a wall cannot push one of
+ * its bodies through it. Scratch memory comes from the arena; returns false when it runs out
+ * (order is then the index order). */
 bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
 						cdArena* arena);
 

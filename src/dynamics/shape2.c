@@ -265,7 +265,9 @@ static int cd2AddShape(cd2World* world, int bodyIndex, const cd2ShapeDef* def, c
 	return index;
 }
 
-/* Common end of every shape creation: bounds, proxy, mass, wake. */
+/* Common end of every shape creation: bounds, proxy, mass. A sleeping body stays asleep (a body
+ * made with isAwake false keeps sleeping once its shapes are on; an awake body touching the new
+ * shape wakes it). */
 static cd2ShapeId cd2FinishShape(cd2World* world, int index, bool updateMass)
 {
 	cd2WorldShape* shape = world->shapes.data + index;
@@ -274,7 +276,6 @@ static cd2ShapeId cd2FinishShape(cd2World* world, int index, bool updateMass)
 		cd2UpdateBodyMass(world, shape->body);
 	}
 	cd2UpdateShapeBounds(world, index, false);
-	cd2WakeBody(world, shape->body);
 	return cd2MakeShapeId(world, index);
 }
 
