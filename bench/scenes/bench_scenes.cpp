@@ -434,7 +434,8 @@ int main(int argc, char** argv)
 		{
 			auto distance = [&](int i) {
 				cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.b[(size_t)i].xf);
-				cd2Shape b = cd2MakePolygonShape(&s.b[(size_t)i].local);
+				cd2Shape b;
+				b.type = CD2_SHAPE_POLYGON;
 				b.polygon = PlaceInFrame(s.b[(size_t)i].local, xf);
 				return (int)(cd2Distance(&ta[(size_t)i], &b).distance > (cdReal)0.1);
 			};
@@ -525,6 +526,7 @@ int main(int argc, char** argv)
 		}
 #endif
 	}
+	if (o.filter == nullptr || std::strstr("3D closest-hit ray, height field 100k", o.filter) != nullptr)
 	{
 		sc_mesh m = sc_gen_heightfield(SC_MESH_NX, SC_MESH_NY, SC_SEED_MESH);
 		int rayCount = quick ? 2000 : 200000;
