@@ -577,16 +577,14 @@ static cd2ClosestPoints ClosestCores(const Core* a, const Core* b, cdReal separa
 	return closest;
 }
 
-static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
+/* CollideCores once A's edges have been scanned (separationA, edgeA: MaxSeparation(a, b)) and
+ * found within the limit. */
+static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal speculativeDistance, cdReal separationA,
+									int edgeA)
 {
 	cdReal total = a->radius + b->radius;
-	int edgeA, edgeB;
+	int edgeB;
 	cdReal limit = total + speculativeDistance;
-	cdReal separationA = MaxSeparation(a, b, &edgeA);
-	if (separationA > limit)
-	{
-		return EmptyManifold();
-	}
 	cdReal separationB = MaxSeparation(b, a, &edgeB);
 	if (separationB > limit)
 	{
@@ -710,6 +708,17 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	return manifold;
 }
 
+static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
+{
+	int edgeA;
+	cdReal separationA = MaxSeparation(a, b, &edgeA);
+	if (separationA > a->radius + b->radius + speculativeDistance)
+	{
+		return EmptyManifold();
+	}
+	return CollideCoresFrom(a, b, speculativeDistance, separationA, edgeA);
+}
+
 /* Any two cores, normal from a to b. */
 static cd2Manifold CollideAny(const Core* a, const Core* b, cdReal speculativeDistance)
 {
@@ -804,9 +813,14 @@ static inline void PlaceVectors(cd2Vec* out, const cd2Vec* in, int count, cd2Tra
 	CD_ASSERT(0 <= count && count <= CD2_MAX_POLYGON_VERTICES);
 #if CD2_SEPARATION_SSE
 	/* c * x + (-s) * y is c * x - s * y exactly, and s * x + c * y is c * y + s * x. */
+	/* Built with register shuffles from scalars: a _mm_setr_ps of the fields went through the
+	 * stack. */
 	__m128 c = _mm_set1_ps(xf.q.c);
-	__m128 s = _mm_setr_ps(-xf.q.s, xf.q.s, -xf.q.s, xf.q.s);
-	__m128 p = _mm_setr_ps(xf.p.x, xf.p.y, xf.p.x, xf.p.y);
+	__m128 sine = _mm_set1_ps(xf.q.s);
+	__m128 s = _mm_unpacklo_ps(_mm_xor_ps(sine, _mm_set1_ps(-0.0f)), sine);
+	s = _mm_movelh_ps(s, s);
+	__m128 p = _mm_unpacklo_ps(_mm_set_ss(xf.p.x), _mm_set_ss(xf.p.y));
+	p = _mm_movelh_ps(p, p);
 	int i = 0;
 	for (; i + 2 <= count; i += 2)
 	{
@@ -839,6 +853,14 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	int count = b->count;
 	CD_ASSERT(count >= 3 && count <= CD2_MAX_POLYGON_VERTICES);
 	PlaceVectors(vertices, b->vertices, count, xfB, true);
+	/* A's edges first, on B's placed vertices only: pairs apart along one of them (half of what
+	 * a broadphase reports) end here, before B's normals are placed or the cores are set up. */
+	int edgeA;
+	cdReal separationA = cd2MaxSeparation(a->normals, a->vertices, a->count, vertices, count, &edgeA);
+	if (separationA > a->radius + b->radius + speculativeDistance)
+	{
+		return EmptyManifold();
+	}
 	PlaceVectors(normals, b->normals, count, xfB, false);
 	Core coreA, coreB;
 	InitPolygonCore(&coreA, a);
@@ -846,7 +868,7 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	coreB.normals = normals;
 	coreB.count = count;
 	coreB.radius = b->radius;
-	return CollideCores(&coreA, &coreB, speculativeDistance);
+	return CollideCoresFrom(&coreA, &coreB, speculativeDistance, separationA, edgeA);
 }
 
 /* The circle's centre into the polygon's frame, the manifold built there and mapped back in
