@@ -189,7 +189,17 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
 	 * predictor cannot know (the 8-gon row of collide_bench_manifold2 ran 0.87 -> 0.69 of Box2D). */
 	cdReal s[CD2_MAX_POLYGON_VERTICES];
 	int width = k->count > 4 ? CD2_MAX_POLYGON_VERTICES : 4;
-	for (int i = 0; i < width; ++i)
+	for (int i = 0; i < 4; ++i)
+	{
+		s[i] = i < k->count ? cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i])) : -CD_REAL_MAX;
+	}
+	/* A point beyond the limit along one of the first four edges has no contact whatever the
+	 * others give (the maximum is beyond it too): half of a broadphase's pairs end here. */
+	if ((s[0] > limit) | (s[1] > limit) | (s[2] > limit) | (s[3] > limit))
+	{
+		return contact;
+	}
+	for (int i = 4; i < width; ++i)
 	{
 		s[i] = i < k->count ? cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i])) : -CD_REAL_MAX;
 	}
