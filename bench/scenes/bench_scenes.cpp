@@ -339,7 +339,8 @@ Box3Set MakeBox3()
 				.push_back(new btBoxShape(btVector3((btScalar)x.h[0], (btScalar)x.h[1], (btScalar)x.h[2])));
 			btTransform t;
 			t.setOrigin(btVector3((btScalar)x.c[0], (btScalar)x.c[1], (btScalar)x.c[2]));
-			t.setRotation(btQuaternion((btScalar)x.q[0], (btScalar)x.q[1], (btScalar)x.q[2], (btScalar)x.q[3]));
+			t.setRotation(
+				btQuaternion((btScalar)x.q[0], (btScalar)x.q[1], (btScalar)x.q[2], (btScalar)x.q[3]));
 			(k == 0 ? s.ta : s.tb).push_back(t);
 #endif
 		}
@@ -402,7 +403,8 @@ int main(int argc, char** argv)
 		Set2 s = MakeSet2(kind, kind == 0 ? SC_SEED_BOX2 : SC_SEED_POLY2);
 		auto mine = [&s, speculative](int i) {
 			cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.b[(size_t)i].xf);
-			return cd2CollidePolygonPolygonLocal(&s.a[(size_t)i].local, &s.b[(size_t)i].local, xf, speculative)
+			return cd2CollidePolygonPolygonLocal(&s.a[(size_t)i].local, &s.b[(size_t)i].local, xf,
+												 speculative)
 				.pointCount;
 		};
 		std::vector<Column> peers;
@@ -411,8 +413,8 @@ int main(int argc, char** argv)
 								   b2Manifold m;
 								   b2CollidePolygons(&m, &s.pa[(size_t)i], s.xa[(size_t)i], &s.pb[(size_t)i],
 													 s.xb[(size_t)i]);
-									   return m.pointCount;
-								   }});
+								   return m.pointCount;
+							   }});
 #endif
 		Row(o, kind == 0 ? "2D manifold box-box" : "2D manifold polygon-polygon", SC_NPAIRS, mine, peers);
 
@@ -469,8 +471,8 @@ int main(int argc, char** argv)
 #ifdef COLLIDE_BENCH_HAVE_BOX2D
 		peers.push_back(Column{"box2d-2.4 b2CollidePolygonAndCircle", [&s](int i) {
 								   b2Manifold m;
-								   b2CollidePolygonAndCircle(&m, &s.pa[(size_t)i], s.xa[(size_t)i], &s.pc[(size_t)i],
-															 s.xc[(size_t)i]);
+								   b2CollidePolygonAndCircle(&m, &s.pa[(size_t)i], s.xa[(size_t)i],
+															 &s.pc[(size_t)i], s.xc[(size_t)i]);
 								   return m.pointCount;
 							   }});
 #endif
@@ -479,8 +481,8 @@ int main(int argc, char** argv)
 	{
 		Toi2 s = MakeToi2();
 		auto mine = [&s, slop](int i) {
-			return (int)cd2TimeOfImpact(&s.a[(size_t)i], &s.sa[(size_t)i], &s.b[(size_t)i], &s.sb[(size_t)i], slop,
-										(cdReal)0.25 * slop)
+			return (int)cd2TimeOfImpact(&s.a[(size_t)i], &s.sa[(size_t)i], &s.b[(size_t)i], &s.sb[(size_t)i],
+										slop, (cdReal)0.25 * slop)
 				.state;
 		};
 		std::vector<Column> peers;
@@ -534,7 +536,8 @@ int main(int argc, char** argv)
 		std::vector<cd3Vec> vertices;
 		for (int i = 0; i < m.nv; ++i)
 		{
-			vertices.push_back(cd3MakeVec((cdReal)m.v[3 * i], (cdReal)m.v[3 * i + 1], (cdReal)m.v[3 * i + 2]));
+			vertices.push_back(
+				cd3MakeVec((cdReal)m.v[3 * i], (cdReal)m.v[3 * i + 1], (cdReal)m.v[3 * i + 2]));
 		}
 		cd3Mesh* mesh = nullptr;
 		if (cd3CreateMesh(vertices.data(), m.nv, m.idx, m.nt, &mesh) != CD_OK)
@@ -588,8 +591,8 @@ int main(int argc, char** argv)
 					hitsOde);
 		peers.push_back(Column{"ode dCollide(ray, trimesh)", ode});
 #else
-		std::printf("mesh rays: %d rays, %d triangles; hits collide %d; ODE not built (libode-dev)\n", rayCount,
-					m.nt, hitsMine);
+		std::printf("mesh rays: %d rays, %d triangles; hits collide %d; ODE not built (libode-dev)\n",
+					rayCount, m.nt, hitsMine);
 #endif
 		Row(o, "3D closest-hit ray, height field 100k", rayCount, mine, peers);
 #ifdef COLLIDE_BENCH_HAVE_ODE

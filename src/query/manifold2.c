@@ -589,8 +589,8 @@ static cd2ClosestPoints ClosestCores(const Core* a, const Core* b, cdReal separa
 
 /* CollideCores once A's edges have been scanned (separationA, edgeA: MaxSeparation(a, b)) and
  * found within the limit. */
-static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal speculativeDistance, cdReal separationA,
-									int edgeA)
+static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal speculativeDistance,
+									cdReal separationA, int edgeA)
 {
 	cdReal total = a->radius + b->radius;
 	int edgeB;
