@@ -26,6 +26,8 @@ collide_missing_packages() {
 		done
 		# The 2D world benchmark's Chipmunk column (bench/world2).
 		dpkg -s libchipmunk-dev >/dev/null 2>&1 || missing+=(libchipmunk-dev)
+		# ODE's trimesh: the mesh-ray column of collide_bench_scenes (bench/scenes).
+		dpkg -s libode-dev >/dev/null 2>&1 || missing+=(libode-dev)
 	fi
 	echo "${missing[@]:-}"
 }

@@ -162,10 +162,22 @@ static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativ
 /* The point `center` grown by pointRadius against the segment or polygon core k; the normal
  * points from k to the point. Takes the point's fields rather than a point core so that
  * cd2CollideCirclePolygon, whose whole cost is this function, builds no cores. */
-static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal pointRadius,
-											cdReal speculativeDistance, bool flip)
+/* The one contact of a point against a core, as plain values: built into a manifold by value
+ * only at the end, so that the manifold is not assembled on the stack and copied out (the copy's
+ * wide loads of narrow stores waited on store forwarding). normal points from k to the point. */
+typedef struct CenterContact
 {
-	cd2Manifold manifold = EmptyManifold();
+	cd2Vec normal;
+	cd2Vec point;
+	cdReal separation;
+	uint32_t id;
+	bool hit;
+} CenterContact;
+
+static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
+											  cdReal speculativeDistance)
+{
+	CenterContact contact = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u, false};
 	cdReal total = k->radius + pointRadius;
 	cdReal limit = total + speculativeDistance;
 
@@ -177,7 +189,17 @@ static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal
 	 * predictor cannot know (the 8-gon row of collide_bench_manifold2 ran 0.87 -> 0.69 of Box2D). */
 	cdReal s[CD2_MAX_POLYGON_VERTICES];
 	int width = k->count > 4 ? CD2_MAX_POLYGON_VERTICES : 4;
-	for (int i = 0; i < width; ++i)
+	for (int i = 0; i < 4; ++i)
+	{
+		s[i] = i < k->count ? cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i])) : -CD_REAL_MAX;
+	}
+	/* A point beyond the limit along one of the first four edges has no contact whatever the
+	 * others give (the maximum is beyond it too): half of a broadphase's pairs end here. */
+	if ((s[0] > limit) | (s[1] > limit) | (s[2] > limit) | (s[3] > limit))
+	{
+		return contact;
+	}
+	for (int i = 4; i < width; ++i)
 	{
 		s[i] = i < k->count ? cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i])) : -CD_REAL_MAX;
 	}
@@ -205,7 +227,7 @@ static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal
 	 * maximum is beyond it. */
 	if (edgeSeparation > limit)
 	{
-		return manifold;
+		return contact;
 	}
 	int next = edge + 1 < k->count ? edge + 1 : 0;
 	cd2Vec v1 = k->vertices[edge];
@@ -240,11 +262,29 @@ static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal
 	cdReal separation = coreSeparation - total;
 	if (separation > speculativeDistance)
 	{
-		return manifold;
+		return contact;
 	}
-	manifold.normal = flip ? cd2Neg(normal) : normal;
-	AddPoint(&manifold, cd2MulAdd(center, CD_R(0.5) * (k->radius - pointRadius - coreSeparation), normal),
-			 separation, id);
+	contact.normal = normal;
+	contact.point = cd2MulAdd(center, CD_R(0.5) * (k->radius - pointRadius - coreSeparation), normal);
+	contact.separation = separation;
+	contact.id = id;
+	contact.hit = true;
+	return contact;
+}
+
+static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal pointRadius,
+											cdReal speculativeDistance, bool flip)
+{
+	CenterContact contact = CoreCenterContact(k, center, pointRadius, speculativeDistance);
+	cd2Manifold manifold = EmptyManifold();
+	if (contact.hit)
+	{
+		manifold.normal = flip ? cd2Neg(contact.normal) : contact.normal;
+		manifold.points[0].point = contact.point;
+		manifold.points[0].separation = contact.separation;
+		manifold.points[0].id = contact.id;
+		manifold.pointCount = 1;
+	}
 	return manifold;
 }
 
@@ -547,16 +587,14 @@ static cd2ClosestPoints ClosestCores(const Core* a, const Core* b, cdReal separa
 	return closest;
 }
 
-static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
+/* CollideCores once A's edges have been scanned (separationA, edgeA: MaxSeparation(a, b)) and
+ * found within the limit. */
+static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal speculativeDistance,
+									cdReal separationA, int edgeA)
 {
 	cdReal total = a->radius + b->radius;
-	int edgeA, edgeB;
+	int edgeB;
 	cdReal limit = total + speculativeDistance;
-	cdReal separationA = MaxSeparation(a, b, &edgeA);
-	if (separationA > limit)
-	{
-		return EmptyManifold();
-	}
 	cdReal separationB = MaxSeparation(b, a, &edgeB);
 	if (separationB > limit)
 	{
@@ -680,6 +718,17 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	return manifold;
 }
 
+static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculativeDistance)
+{
+	int edgeA;
+	cdReal separationA = MaxSeparation(a, b, &edgeA);
+	if (separationA > a->radius + b->radius + speculativeDistance)
+	{
+		return EmptyManifold();
+	}
+	return CollideCoresFrom(a, b, speculativeDistance, separationA, edgeA);
+}
+
 /* Any two cores, normal from a to b. */
 static cd2Manifold CollideAny(const Core* a, const Core* b, cdReal speculativeDistance)
 {
@@ -761,6 +810,101 @@ cd2Manifold cd2CollidePolygonPolygon(const cd2Polygon* a, const cd2Polygon* b, c
 	InitPolygonCore(&coreA, a);
 	InitPolygonCore(&coreB, b);
 	return CollideCores(&coreA, &coreB, speculativeDistance);
+}
+
+/* ---- local-frame forms of the commonest contacts (the others: manifold_local2.c) --------------- */
+
+/* in[0..count) placed by xf into out (points: rotated and moved; else only rotated), bit for bit
+ * as cd2TransformPoint / cd2RotateVector. In the float build on SSE2 two vectors per lane group,
+ * with xf kept in registers: spilling a cd2Transform argument and reading it back 16 bytes at a
+ * time waited on store forwarding, a quarter of the cost of the whole local-frame call. */
+static inline void PlaceVectors(cd2Vec* out, const cd2Vec* in, int count, cd2Transform xf, bool points)
+{
+	CD_ASSERT(0 <= count && count <= CD2_MAX_POLYGON_VERTICES);
+#if CD2_SEPARATION_SSE
+	/* c * x + (-s) * y is c * x - s * y exactly, and s * x + c * y is c * y + s * x. */
+	/* Built with register shuffles from scalars: a _mm_setr_ps of the fields went through the
+	 * stack. */
+	__m128 c = _mm_set1_ps(xf.q.c);
+	__m128 sine = _mm_set1_ps(xf.q.s);
+	__m128 s = _mm_unpacklo_ps(_mm_xor_ps(sine, _mm_set1_ps(-0.0f)), sine);
+	s = _mm_movelh_ps(s, s);
+	__m128 p = _mm_unpacklo_ps(_mm_set_ss(xf.p.x), _mm_set_ss(xf.p.y));
+	p = _mm_movelh_ps(p, p);
+	int i = 0;
+	for (; i + 2 <= count; i += 2)
+	{
+		__m128 v = _mm_loadu_ps(&in[i].x);
+		__m128 r = _mm_add_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+		_mm_storeu_ps(&out[i].x, points ? _mm_add_ps(r, p) : r);
+	}
+	if (i < count)
+	{
+		__m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&in[i]);
+		__m128 r = _mm_add_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+		_mm_storel_pi((__m64*)(void*)&out[i], points ? _mm_add_ps(r, p) : r);
+	}
+#else
+	for (int i = 0; i < count; ++i)
+	{
+		out[i] = points ? cd2TransformPoint(xf, in[i]) : cd2RotateVector(xf.q, in[i]);
+	}
+#endif
+}
+
+/* B's vertices and normals placed in A's frame on the stack (no polygon copy: the cores need no
+ * centroid), then the cores as in cd2CollidePolygonPolygon: the same manifold bit for bit as that
+ * function on B placed by cd2TransformPoint. */
+cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon* b, cd2Transform xfB,
+										  cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd2Vec vertices[CD2_MAX_POLYGON_VERTICES], normals[CD2_MAX_POLYGON_VERTICES];
+	int count = b->count;
+	CD_ASSERT(count >= 3 && count <= CD2_MAX_POLYGON_VERTICES);
+	PlaceVectors(vertices, b->vertices, count, xfB, true);
+	/* A's edges first, on B's placed vertices only: pairs apart along one of them (half of what
+	 * a broadphase reports) end here, before B's normals are placed or the cores are set up. */
+	int edgeA;
+	cdReal separationA = cd2MaxSeparation(a->normals, a->vertices, a->count, vertices, count, &edgeA);
+	if (separationA > a->radius + b->radius + speculativeDistance)
+	{
+		return EmptyManifold();
+	}
+	PlaceVectors(normals, b->normals, count, xfB, false);
+	Core coreA, coreB;
+	InitPolygonCore(&coreA, a);
+	coreB.vertices = vertices;
+	coreB.normals = normals;
+	coreB.count = count;
+	coreB.radius = b->radius;
+	return CollideCoresFrom(&coreA, &coreB, speculativeDistance, separationA, edgeA);
+}
+
+/* The circle's centre into the polygon's frame, the manifold built there and mapped back in
+ * place (a manifold returned by one call and copied by the next waited on store forwarding). */
+cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
+										 cdReal speculativeDistance)
+{
+	CD_ASSERT(b != NULL);
+	/* A's frame in B's: the inverse of xfB, then the centre placed by it (as manifold_local2.c). */
+	cd2Rot q = xfB.q;
+	cd2Rot inverseQ = {q.c, -q.s};
+	cd2Vec inverseP = cd2Neg(cd2InvRotateVector(q, xfB.p));
+	cd2Vec center = cd2Add(cd2RotateVector(inverseQ, a.center), inverseP);
+	Core coreB;
+	InitPolygonCore(&coreB, b);
+	CenterContact contact = CoreCenterContact(&coreB, center, a.radius, speculativeDistance);
+	cd2Manifold m = EmptyManifold();
+	if (contact.hit)
+	{
+		m.normal = cd2RotateVector(q, cd2Neg(contact.normal));
+		m.points[0].point = cd2TransformPoint(xfB, contact.point);
+		m.points[0].separation = contact.separation;
+		m.points[0].id = contact.id;
+		m.pointCount = 1;
+	}
+	return m;
 }
 
 cd2Manifold cd2CollidePolygonSegment(const cd2Polygon* a, cd2Segment b, cdReal speculativeDistance)

@@ -1796,12 +1796,19 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 	AddPoint(m, cd3TransformPoint(frame, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5))), sat->edgeSeparation, id);
 }
 
-cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
+/* The box-box manifold on boxes passed by address: the public functions take them by value, and
+ * the local-frame form's placed box passed on by value again was written and read back through
+ * the stack (store-forwarding stalls) on every call. */
+static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal speculativeDistance)
 {
+	const cd3Box* a = boxA;
+	const cd3Box* b = boxB;
 	cd3Mat33 rot;
 	cd3Vec t;
 	cd3SatResult sat;
-	cd3SatBoxesInPlace(&a, &b, &sat, &rot, &t);
+	/* Edge axes only when no face normal already puts the boxes beyond the speculative distance:
+	 * the answer is then empty whatever they give. */
+	cd3SatBoxesInPlace(a, b, &sat, &rot, &t, speculativeDistance);
 	cdReal separation = cd3SatSeparation(&sat);
 	/* Every path returns m, so that it is built in the caller's result. */
 	cd3Manifold m = EmptyManifold();
@@ -1817,7 +1824,7 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 		bool useB = false;
 		if (sat.faceSeparationB > sat.faceSeparationA)
 		{
-			size = CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents));
+			size = CD_R(2.0) * (cd3Length(a->halfExtents) + cd3Length(b->halfExtents));
 			useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size;
 		}
 		cdReal faceSeparation = useB ? sat.faceSeparationB : sat.faceSeparationA;
@@ -1825,12 +1832,12 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 		if (sat.edgeA >= 0 && sat.edgeSeparation > faceSeparation)
 		{
 			size =
-				size < CD_R(0.0) ? CD_R(2.0) * (cd3Length(a.halfExtents) + cd3Length(b.halfExtents)) : size;
+				size < CD_R(0.0) ? CD_R(2.0) * (cd3Length(a->halfExtents) + cd3Length(b->halfExtents)) : size;
 			useEdges = sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
 		}
 		if (useEdges)
 		{
-			BoxEdgeContact(&a, &b, &sat, &rot, t, &m);
+			BoxEdgeContact(a, b, &sat, &rot, t, &m);
 			return m;
 		}
 		if (useB)
@@ -1838,11 +1845,11 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 			/* A's frame in B's: the transposed rotation. */
 			cd3Mat33 inverse = cd3Transpose(rot);
 			cd3Vec back = cd3Neg(cd3MulMV(inverse, t));
-			BoxFaceContact(&b, sat.faceB, &a, &inverse, back, true, speculativeDistance, &m);
+			BoxFaceContact(b, sat.faceB, a, &inverse, back, true, speculativeDistance, &m);
 		}
 		else
 		{
-			BoxFaceContact(&a, sat.faceA, &b, &rot, t, false, speculativeDistance, &m);
+			BoxFaceContact(a, sat.faceA, b, &rot, t, false, speculativeDistance, &m);
 		}
 		if (m.pointCount > 0)
 		{
@@ -1851,7 +1858,7 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 			{
 				deepest = cdMin(deepest, m.points[i].separation);
 			}
-			if (deepest == separation || MatchBoxDepth(&m, separation, &a, &b))
+			if (deepest == separation || MatchBoxDepth(&m, separation, a, b))
 			{
 				return m;
 			}
@@ -1860,11 +1867,27 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 	/* Apart (the GJK distance decides the features), or the incident face clipped away or missed
 	 * the overlap: the polytope path, with every edge pair in the second case. */
 	cd3Polytope pa, pb;
-	cd3InitBoxPolytope(&pa, a);
-	cd3InitBoxPolytope(&pb, b);
+	cd3InitBoxPolytope(&pa, *a);
+	cd3InitBoxPolytope(&pb, *b);
 	m = CollidePolytopesSat(&pa, &pb, separation <= CD_R(0.0) ? cd3SatPolytopes(&pa, &pb) : sat,
 							speculativeDistance);
 	return m;
+}
+
+cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
+{
+	return CollideBoxes(&a, &b, speculativeDistance);
+}
+
+/* B placed in A's frame as manifold_local3.c places it (the same answer as cd3CollideBoxBox on
+ * the placed box, bit for bit), handed on by address. */
+cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance)
+{
+	cd3Box placed;
+	placed.center = cd3TransformPoint(xfB, b.center);
+	placed.halfExtents = b.halfExtents;
+	placed.rotation = cd3MulQuat(xfB.q, b.rotation);
+	return CollideBoxes(&a, &placed, speculativeDistance);
 }
 
 cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance)

@@ -2,7 +2,9 @@
  * A's frame on the stack and the world-space pair function runs on the result, so both forms give
  * the same answer by construction. One exception, for cost: a circle, capsule or chain segment
  * against a polygon moves the small shape into the polygon's frame instead (a few points rather
- * than up to 8 vertices and normals) and maps the manifold back, equal within round-off. */
+ * than up to 8 vertices and normals) and maps the manifold back, equal within round-off.
+ * cd2CollideCirclePolygonLocal and cd2CollidePolygonPolygonLocal, the calls of a 2D step's
+ * commonest contacts, are in manifold2.c, next to the cores they run on. */
 #include "collide/manifold2.h"
 
 static inline cd2Circle CircleIn(cd2Transform xf, cd2Circle c)
@@ -71,14 +73,6 @@ cd2Manifold cd2CollideCircleCapsuleLocal(cd2Circle a, cd2Capsule b, cd2Transform
 	return cd2CollideCircleCapsule(a, CapsuleIn(xfB, b), speculativeDistance);
 }
 
-cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
-										 cdReal speculativeDistance)
-{
-	CD_ASSERT(b != NULL);
-	return cd2TransformManifold(xfB,
-								cd2CollideCirclePolygon(CircleIn(Inverse(xfB), a), b, speculativeDistance));
-}
-
 cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Transform xfB,
 										 cdReal speculativeDistance)
 {
@@ -103,15 +97,6 @@ cd2Manifold cd2CollideCapsuleSegmentLocal(cd2Capsule a, cd2Segment b, cd2Transfo
 										  cdReal speculativeDistance)
 {
 	return cd2CollideCapsuleSegment(a, SegmentIn(xfB, b), speculativeDistance);
-}
-
-cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon* b, cd2Transform xfB,
-										  cdReal speculativeDistance)
-{
-	CD_ASSERT(a != NULL && b != NULL);
-	cd2Polygon pb;
-	PolygonIn(&pb, xfB, b);
-	return cd2CollidePolygonPolygon(a, &pb, speculativeDistance);
 }
 
 cd2Manifold cd2CollidePolygonSegmentLocal(const cd2Polygon* a, cd2Segment b, cd2Transform xfB,
@@ -149,10 +134,38 @@ cd2Manifold cd2CollideChainSegmentPolygonLocal(const cd2ChainSegment* a, const c
 	return cd2TransformManifold(xfB, cd2CollideChainSegmentPolygon(&c, b, speculativeDistance));
 }
 
+/* Out of line: inlined into cd2CollideLocal, its vectorized placements made GCC spill xfB on
+ * entry and read it back 16 bytes at a time (a store-forwarding stall) before the type tests that
+ * send the commonest pairs elsewhere. */
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCAL_NOINLINE __attribute__((noinline))
+#else
+#define LOCAL_NOINLINE
+#endif
+
+static LOCAL_NOINLINE cd2Manifold CollidePlaced(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB,
+												cdReal speculativeDistance);
+
 cd2Manifold cd2CollideLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB,
 							cdReal speculativeDistance)
 {
 	CD_ASSERT(a != NULL && b != NULL);
+	/* A 2D step's commonest contacts straight to their local-frame functions (the same answer as
+	 * the general path, bit for bit, without building a placed shape). */
+	if (b->type == CD2_SHAPE_POLYGON && a->type == CD2_SHAPE_POLYGON)
+	{
+		return cd2CollidePolygonPolygonLocal(&a->polygon, &b->polygon, xfB, speculativeDistance);
+	}
+	if (b->type == CD2_SHAPE_POLYGON && a->type == CD2_SHAPE_CIRCLE)
+	{
+		return cd2CollideCirclePolygonLocal(a->circle, &b->polygon, xfB, speculativeDistance);
+	}
+	return CollidePlaced(a, b, xfB, speculativeDistance);
+}
+
+static cd2Manifold CollidePlaced(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB,
+								 cdReal speculativeDistance)
+{
 	cd2Shape s;
 	if (b->type == CD2_SHAPE_POLYGON &&
 		(a->type == CD2_SHAPE_CIRCLE || a->type == CD2_SHAPE_CAPSULE || a->type == CD2_SHAPE_SEGMENT))

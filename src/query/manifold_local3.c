@@ -90,10 +90,7 @@ cd3Manifold cd3CollideCapsuleTriangleLocal(cd3Capsule a, cd3Triangle b, cd3Trans
 	return cd3CollideCapsuleTriangle(a, TriangleIn(xfB, b), speculativeDistance);
 }
 
-cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance)
-{
-	return cd3CollideBoxBox(a, BoxIn(xfB, b), speculativeDistance);
-}
+/* cd3CollideBoxBoxLocal: in manifold3.c, next to the box-box manifold. */
 
 cd3Manifold cd3CollideBoxHullLocal(cd3Box a, cd3HullShape b, cd3Transform xfB, cdReal speculativeDistance)
 {

@@ -110,9 +110,10 @@ static inline void cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j, cdReal ri1j, 
 /* cd3SatBoxes writing into *result, inline: the box-box manifold reads the result at once, and
  * a result returned through memory stalls on store forwarding. The matrix entries are named
  * scalars, not arrays: arrays filled a float at a time and read back two at a time by the
- * vectorizer stalled on store forwarding too. */
+ * vectorizer stalled on store forwarding too. With the best face separation above faceExit the
+ * edge axes are skipped (edgeSeparation -CD_REAL_MAX, no edges): pass CD_REAL_MAX for every axis. */
 static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd3SatResult* result,
-									  cd3Mat33* rotation, cd3Vec* translation)
+									  cd3Mat33* rotation, cd3Vec* translation, cdReal faceExit)
 {
 	cd3Quat qa = boxA->rotation;
 	cd3Quat q = cd3InvMulQuat(qa, boxB->rotation); /* B's axes in A's frame */
@@ -153,6 +154,17 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	r.faceB = 2 * bestB + (tB[bestB] > CD_R(0.0) ? 0 : 1);
 
 	cdReal faceBest = cdMax(r.faceSeparationA, r.faceSeparationB);
+	if (faceBest > faceExit)
+	{
+		/* Apart by more than the caller's limit along a face normal: the edge axes can only make
+		 * the separation larger, so they are skipped (half of a broadphase's pairs end here). */
+		r.edgeSeparation = -CD_REAL_MAX;
+		r.edgeA = -1;
+		r.edgeB = -1;
+		r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+		*result = r;
+		return;
+	}
 	cd3BoxEdgeBest e;
 	e.separation = -CD_REAL_MAX;
 	e.axis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
