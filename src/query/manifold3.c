@@ -1077,7 +1077,9 @@ static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, 
 	{
 		return CollidePolytopesGjkEpa(a, b, speculativeDistance);
 	}
-	return CollidePolytopesSat(a, b, cd3SatPolytopes(a, b), speculativeDistance);
+	/* Beyond the speculative distance the SAT's answer is empty whatever the exact separation: it
+	 * may stop at the first axis that shows it. */
+	return CollidePolytopesSat(a, b, cd3SatPolytopesWithin(a, b, speculativeDistance), speculativeDistance);
 }
 
 static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b, cd3SatResult sat,
