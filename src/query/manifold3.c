@@ -944,6 +944,10 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 	}
 	else
 	{
+		if (epa.gap > speculativeDistance + ROUND_OFF_TOLERANCE * size)
+		{
+			return EmptyManifold(); /* GJK's separating direction shows them farther apart */
+		}
 		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
 		if (!(cp.distance <= speculativeDistance))
 		{
