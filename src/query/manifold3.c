@@ -1915,8 +1915,9 @@ static cd3Quat QuatFromColumns(cd3Vec cx, cd3Vec cy, cd3Vec cz)
 	return cd3NormalizeQuat(q);
 }
 
-/* A hull that is a box (8 vertices, 6 faces along three orthogonal axes) as that box in the world, for the box-box path: a box handed in as a hull (as
- * cd3MakeBoxHull makes, or the hull of a box's corners) collides as fast as a cd3Box. */
+/* A hull that is a box (8 vertices, 6 faces along three orthogonal axes) as that box in the world, for the
+ * box-box path: a box handed in as a hull (as cd3MakeBoxHull makes, or the hull of a box's corners) collides
+ * as fast as a cd3Box. */
 static bool HullAsBox(cd3HullShape shape, cd3Box* box)
 {
 	const cd3Hull* h = shape.hull;
@@ -1947,8 +1948,9 @@ static bool HullAsBox(cd3HullShape shape, cd3Box* box)
 		{
 			return false;
 		}
-		cd3Vec centre = cd3MakeVec(CD_R(0.5) * (offsets[0] - offsets[1]), CD_R(0.5) * (offsets[2] - offsets[3]),
-								   CD_R(0.5) * (offsets[4] - offsets[5]));
+		cd3Vec centre =
+			cd3MakeVec(CD_R(0.5) * (offsets[0] - offsets[1]), CD_R(0.5) * (offsets[2] - offsets[3]),
+					   CD_R(0.5) * (offsets[4] - offsets[5]));
 		box->center = cd3TransformPoint(shape.transform, centre);
 		box->halfExtents = half;
 		box->rotation = shape.transform.q;
@@ -1977,8 +1979,8 @@ static bool HullAsBox(cd3HullShape shape, cd3Box* box)
 	}
 	cd3Vec ay = planes[iy].normal, az;
 	cd3Quat rotation;
-	if (ax.x == CD_R(1.0) && ax.y == CD_R(0.0) && ax.z == CD_R(0.0) && ay.x == CD_R(0.0) && ay.y == CD_R(1.0) &&
-		ay.z == CD_R(0.0))
+	if (ax.x == CD_R(1.0) && ax.y == CD_R(0.0) && ax.z == CD_R(0.0) && ay.x == CD_R(0.0) &&
+		ay.y == CD_R(1.0) && ay.z == CD_R(0.0))
 	{
 		/* Axis-aligned (cd3MakeBoxHull, or the hull of a box's corners in its frame). */
 		az = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0));
