@@ -1,5 +1,5 @@
 // collide_bench_manifold3: ns per call of 3D convex pair queries (distance, overlap, depth,
-// manifold) on box-box, hull(32)-hull(32) and box-triangle pairs, with the peers that do the same job, on the
+// manifold) on box-box, hull(32)-hull(32), box-triangle, hull(8)-hull(8) and box-box-as-hulls pairs, with the peers that do the same job, on the
 // same pairs in the same run: Bullet (btGjkEpaSolver2 for distance/overlap/depth,
 // btBoxBoxDetector = ODE's box-box SAT and clipping, btGjkPairDetector + btGjkEpaPenetrationDepthSolver
 // for the hull manifold), libccd (ccdGJKIntersect, ccdMPRIntersect, ccdGJKPenetration,
@@ -11,8 +11,10 @@
 // distance runs on the separated ones, depth and manifold on the overlapping ones, overlap on
 // all. Half the box pairs rest face on face (a stack), half are at random; hulls have 32 vertices
 // on random ellipsoids; half the boxes on triangles (terrain pieces about the box's size) rest a
-// face on the triangle, half are at random. Bullet's box-triangle manifold is its GJK-EPA pair
-// detector on a btTriangleShape, as for hulls. collide has no depth-only query: its depth row is the manifold
+// face on the triangle, half are at random; hull(8) have 8 vertices on a jittered sphere (18 edges);
+// "box-box as hulls" are the box-box pairs given to every library as hulls (collide: cd3MakeBoxHull).
+// Bullet's box-triangle manifold is its GJK-EPA pair detector on a btTriangleShape, as for hulls.
+// collide has no depth-only query: its depth row is the manifold
 // call (the depth is the manifold's smallest separation), so depth and manifold rows time the same call.
 //
 // Answers are checked against an exact reference computed here in double: the separating axis
@@ -700,6 +702,96 @@ int main(int argc, char** argv)
 #endif
 	}
 
+	// ---- small hulls: hull(8)-hull(8) and boxes given as hulls ----
+	// A hull pair set from hulls placed by transforms: every library gets the same hull (Bullet a
+	// btConvexHullShape of its vertices, libccd and FCL the hull itself).
+	std::vector<cd3Hull*> smallHulls;
+	std::vector<std::unique_ptr<btConvexHullShape>> btSmallHulls;
+	auto addHullPair = [&](PairSet& set, const cd3Hull* ha, cd3Transform ta, const cd3Hull* hb, cd3Transform tb) {
+		cd3HullShape a = {ha, ta}, b = {hb, tb};
+		set.a.push_back(cd3MakeHullShape(a.hull, a.transform));
+		set.b.push_back(cd3MakeHullShape(b.hull, b.transform));
+		set.reference.push_back(ReferenceSeparation(RefHull(a), RefHull(b)));
+		for (const cd3Hull* h : {ha, hb})
+		{
+			auto shape = std::make_unique<btConvexHullShape>();
+			for (int i = 0; i < h->vertexCount; ++i)
+			{
+				shape->addPoint(
+					btVector3((btScalar)h->vertices[i].x, (btScalar)h->vertices[i].y, (btScalar)h->vertices[i].z),
+					false);
+			}
+			shape->recalcLocalAabb();
+			shape->setMargin(0);
+			btSmallHulls.push_back(std::move(shape));
+		}
+		set.btA.push_back(btSmallHulls[btSmallHulls.size() - 2].get());
+		set.btB.push_back(btSmallHulls.back().get());
+		set.xa.push_back(ToBullet(a.transform));
+		set.xb.push_back(ToBullet(b.transform));
+#ifdef COLLIDE_BENCH_HAVE_CCD
+		set.ccdA.push_back({a.hull, cd3MakeVec(0, 0, 0), a.transform, false, {}});
+		set.ccdB.push_back({b.hull, cd3MakeVec(0, 0, 0), b.transform, false, {}});
+#endif
+#ifdef COLLIDE_BENCH_HAVE_FCL
+		set.fclA.push_back(FclHull(ha));
+		set.fclB.push_back(FclHull(hb));
+		set.fxa.push_back(ToFcl(a.transform));
+		set.fxb.push_back(ToFcl(b.transform));
+#endif
+	};
+	// hull(8): 8 points on a jittered Fibonacci sphere (z and azimuth jittered, radius 0.85 to 1.15
+	// times a scale of 0.5 to 1 per hull), as in the peers' shared scenes; 12 triangles, 18 edges.
+	for (int h = 0; h < kHulls; ++h)
+	{
+		cd3Hull* hull = nullptr;
+		while (hull == nullptr || hull->vertexCount != 8)
+		{
+			cd3DestroyHull(hull);
+			hull = nullptr;
+			cd3Vec points[8];
+			double scale = 0.5 + 0.5 * u(rng);
+			for (int k = 0; k < 8; ++k)
+			{
+				double z = std::clamp(1.0 - (2.0 * k + 1.0) / 8.0 + 0.2 * (u(rng) - 0.5), -0.999, 0.999);
+				double azimuth = k * 2.399963229728653 + 0.3 * (u(rng) - 0.5);
+				double radius = scale * (0.85 + 0.3 * u(rng)), ring = std::sqrt(1.0 - z * z);
+				points[k] = cd3MakeVec((cdReal)(radius * ring * std::cos(azimuth)),
+									   (cdReal)(radius * ring * std::sin(azimuth)), (cdReal)(radius * z));
+			}
+			cd3ComputeHull(points, 8, &hull);
+		}
+		smallHulls.push_back(hull);
+	}
+	PairSet hull8Pairs;
+	hull8Pairs.name = "hull(8)-hull(8)";
+	hull8Pairs.collideManifold = "cd3CollideHullHull";
+	for (int i = 0; i < n; ++i)
+	{
+		cd3HullShape a = {smallHulls[rng() % (size_t)kHulls], {cd3MakeVec(0, 0, 0), RandomRotation(rng)}};
+		cd3HullShape b = {smallHulls[rng() % (size_t)kHulls],
+						  {cd3Scale(CD_R(1.2), RandomUnit(rng)), RandomRotation(rng)}};
+		PlaceAtSeparation([&](cdReal s) { return cd3CollideHullHull(a, b, s); },
+						  [&](cd3Vec d) { b.transform.p = cd3Add(b.transform.p, d); }, signedGap(i));
+		addHullPair(hull8Pairs, a.hull, a.transform, b.hull, b.transform);
+	}
+	// The box-box pairs above with each box given as a hull (cd3MakeBoxHull): against the box-box
+	// rows, what a box costs when a user hands it in as a hull.
+	PairSet boxHullPairs;
+	boxHullPairs.name = "box-box as hulls";
+	boxHullPairs.collideManifold = "cd3CollideHullHull";
+	for (int i = 0; i < n; ++i)
+	{
+		const cd3Box& a = boxes.a[(size_t)i].box;
+		const cd3Box& b = boxes.b[(size_t)i].box;
+		cd3Hull *ha = nullptr, *hb = nullptr;
+		cd3MakeBoxHull(a.halfExtents, &ha);
+		cd3MakeBoxHull(b.halfExtents, &hb);
+		smallHulls.push_back(ha);
+		smallHulls.push_back(hb);
+		addHullPair(boxHullPairs, ha, {a.center, a.rotation}, hb, {b.center, b.rotation});
+	}
+
 #ifdef COLLIDE_BENCH_HAVE_CCD
 	ccd_t ccd;
 	CCD_INIT(&ccd);
@@ -732,7 +824,7 @@ int main(int argc, char** argv)
 	};
 	std::vector<Row> rows;
 
-	for (PairSet* set : {&boxes, &hullPairs, &boxTriangles})
+	for (PairSet* set : {&boxes, &hullPairs, &boxTriangles, &hull8Pairs, &boxHullPairs})
 	{
 		PairSet& s = *set;
 		// Checks first (untimed): overlap counts, distances and depths against the reference.
@@ -1219,6 +1311,24 @@ int main(int argc, char** argv)
 	}
 	std::printf("; box-triangle manifold collide / Bullet GJK-EPA %.2f\n",
 				boxTriangleManifold.cells[COLLIDE].ns / boxTriangleManifold.cells[BULLET].ns);
+	const Row& hull8Depth = rows[17];
+	const Row& hull8Manifold = rows[18];
+	const Row& boxHullManifold = rows[23];
+	std::printf("small hulls: hull(8)-hull(8) manifold collide / Bullet btGjkEpaSolver2 depth %.2f, / Bullet "
+				"GJK-EPA pair detector manifold %.2f (<= 0.5)",
+				hull8Manifold.cells[COLLIDE].ns / hull8Depth.cells[BULLET].ns,
+				hull8Manifold.cells[COLLIDE].ns / hull8Manifold.cells[BULLET].ns);
+	if (hull8Depth.present[CCD_MPR])
+	{
+		std::printf("; collide / ccdMPRPenetration %.2f (<= 1)",
+					hull8Manifold.cells[COLLIDE].ns / hull8Depth.cells[CCD_MPR].ns);
+	}
+	std::printf("; box-box manifold as hulls / as cd3Box %.2f (<= 2)\n",
+				boxHullManifold.cells[COLLIDE].ns / boxManifold.cells[COLLIDE].ns);
+	for (cd3Hull* h : smallHulls)
+	{
+		cd3DestroyHull(h);
+	}
 	for (cd3Hull* h : hulls)
 	{
 		cd3DestroyHull(h);

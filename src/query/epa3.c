@@ -247,6 +247,7 @@ static cd3Penetration Run(const Context* c)
 	out.pointA = out.pointB = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	out.iterations = 0;
 	out.hitIterationCap = false;
+	out.gap = CD_R(0.0);
 
 	Vertex simplex[4];
 	int count = 1;
@@ -263,9 +264,12 @@ static cd3Penetration Run(const Context* c)
 			break; /* the origin is on the simplex: touching, or inside a flat simplex */
 		}
 		Vertex v = Support(c, d);
-		if (cd3Dot(v.w, d) < CD_R(0.0))
+		cdReal reach = cd3Dot(v.w, d);
+		if (reach < CD_R(0.0))
 		{
-			return out; /* separated along d */
+			/* Separated along d: no point of A - B reaches past the plane w.d = reach. */
+			out.gap = -reach / cd3Length(d);
+			return out;
 		}
 		simplex[count++] = v;
 		if (DoSimplex(simplex, &count, &d))

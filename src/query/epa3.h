@@ -20,6 +20,8 @@ typedef struct cd3Penetration
 	int iterations;		  /* GJK and EPA iterations used */
 	bool hitIterationCap; /* GJK or EPA stopped at the cap: the answer is the best so far (after a
 							 GJK cap, overlapping may be wrong: check with cd3Distance) */
+	cdReal gap;			  /* not overlapping: a lower bound of the distance (the separation along
+							 GJK's separating direction); 0 otherwise */
 } cd3Penetration;
 
 #define CD3_EPA_MAX_ITERATIONS 64

@@ -907,6 +907,10 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
  * O(edges of A x edges of B), EPA a few dozen support calls. */
 #define SAT_EDGE_PAIR_LIMIT 1024
 
+/* Two hulls take the GJK/EPA path from fewer edge pairs: between hulls of 8 vertices (18 edges
+ * each) EPA's few dozen support calls on 8 vertices cost a third of the 324 edge pairs' test. */
+#define SAT_HULL_EDGE_PAIR_LIMIT 64
+
 /* The face of p whose world normal is most aligned with `direction`, and that cosine. */
 static int AlignedFace(const cd3Polytope* p, cd3Vec direction, cdReal* cosine)
 {
@@ -940,6 +944,10 @@ static cd3Manifold CollidePolytopesGjkEpa(const cd3Polytope* a, const cd3Polytop
 	}
 	else
 	{
+		if (epa.gap > speculativeDistance + ROUND_OFF_TOLERANCE * size)
+		{
+			return EmptyManifold(); /* GJK's separating direction shows them farther apart */
+		}
 		cd3ClosestPoints cp = cd3Distance(&a->shape, &b->shape);
 		if (!(cp.distance <= speculativeDistance))
 		{
@@ -1073,11 +1081,16 @@ MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, c
 
 static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
 {
-	if (!a->flat && !b->flat && (a->edgeAxisCount / 2) * (b->edgeAxisCount / 2) > SAT_EDGE_PAIR_LIMIT)
+	int edgePairs = (a->edgeAxisCount / 2) * (b->edgeAxisCount / 2);
+	bool hulls = a->shape.type == CD3_SHAPE_HULL && b->shape.type == CD3_SHAPE_HULL;
+	if (!a->flat && !b->flat &&
+		(edgePairs > SAT_EDGE_PAIR_LIMIT || (hulls && edgePairs > SAT_HULL_EDGE_PAIR_LIMIT)))
 	{
 		return CollidePolytopesGjkEpa(a, b, speculativeDistance);
 	}
-	return CollidePolytopesSat(a, b, cd3SatPolytopes(a, b), speculativeDistance);
+	/* Beyond the speculative distance the SAT's answer is empty whatever the exact separation: it
+	 * may stop at the first axis that shows it. */
+	return CollidePolytopesSat(a, b, cd3SatPolytopesWithin(a, b, speculativeDistance), speculativeDistance);
 }
 
 static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b, cd3SatResult sat,
@@ -1890,8 +1903,158 @@ cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal s
 	return CollideBoxes(&a, &placed, speculativeDistance);
 }
 
+/* ---- hulls that are boxes --------------------------------------------------------------------- */
+
+/* Face normals of a box hull are parallel or orthogonal to within this cosine: round-off of
+ * hulls computed from a box's corners, far below the manifold's tolerances. */
+#define BOX_HULL_TOLERANCE (CD_R(64.0) * CD_REAL_EPSILON)
+
+/* The quaternion of a rotation matrix with orthonormal columns (Shepperd's choice of the largest
+ * diagonal term, for precision). */
+static cd3Quat QuatFromColumns(cd3Vec cx, cd3Vec cy, cd3Vec cz)
+{
+	cdReal trace = cx.x + cy.y + cz.z;
+	cd3Quat q;
+	if (trace > CD_R(0.0))
+	{
+		cdReal s = CD_R(2.0) * cdSqrt(trace + CD_R(1.0));
+		q = cd3MakeQuat((cy.z - cz.y) / s, (cz.x - cx.z) / s, (cx.y - cy.x) / s, CD_R(0.25) * s);
+	}
+	else if (cx.x > cy.y && cx.x > cz.z)
+	{
+		cdReal s = CD_R(2.0) * cdSqrt(CD_R(1.0) + cx.x - cy.y - cz.z);
+		q = cd3MakeQuat(CD_R(0.25) * s, (cy.x + cx.y) / s, (cz.x + cx.z) / s, (cy.z - cz.y) / s);
+	}
+	else if (cy.y > cz.z)
+	{
+		cdReal s = CD_R(2.0) * cdSqrt(CD_R(1.0) + cy.y - cx.x - cz.z);
+		q = cd3MakeQuat((cy.x + cx.y) / s, CD_R(0.25) * s, (cz.y + cy.z) / s, (cz.x - cx.z) / s);
+	}
+	else
+	{
+		cdReal s = CD_R(2.0) * cdSqrt(CD_R(1.0) + cz.z - cx.x - cy.y);
+		q = cd3MakeQuat((cz.x + cx.z) / s, (cz.y + cy.z) / s, CD_R(0.25) * s, (cx.y - cy.x) / s);
+	}
+	return cd3NormalizeQuat(q);
+}
+
+/* A hull that is a box (8 vertices, 6 faces along three orthogonal axes) as that box in the world, for the
+ * box-box path: a box handed in as a hull (as cd3MakeBoxHull makes, or the hull of a box's corners) collides
+ * as fast as a cd3Box. */
+static bool HullAsBox(cd3HullShape shape, cd3Box* box)
+{
+	const cd3Hull* h = shape.hull;
+	if (h->vertexCount != 8 || h->faceCount != 6 || h->edgeCount != 24)
+	{
+		return false;
+	}
+	const cd3Plane* planes = h->planes;
+	/* The common case first: the faces exactly along the hull frame's axes (cd3MakeBoxHull, or the
+	 * hull of a box's corners given in its frame). */
+	cdReal offsets[6] = {0};
+	int filled = 0;
+	for (int f = 0; f < 6; ++f)
+	{
+		cd3Vec n = planes[f].normal;
+		int onX = cdAbs(n.x) == CD_R(1.0), onY = cdAbs(n.y) == CD_R(1.0), onZ = cdAbs(n.z) == CD_R(1.0);
+		int axis = onY + 2 * onZ;
+		cdReal along = onX ? n.x : onY ? n.y : n.z;
+		int slot = 2 * axis + (along < CD_R(0.0));
+		filled |= (onX + onY + onZ == 1) << slot;
+		offsets[slot] = planes[f].offset;
+	}
+	if (filled == 63)
+	{
+		cd3Vec half = cd3MakeVec(CD_R(0.5) * (offsets[0] + offsets[1]), CD_R(0.5) * (offsets[2] + offsets[3]),
+								 CD_R(0.5) * (offsets[4] + offsets[5]));
+		if (!(cdMin(half.x, cdMin(half.y, half.z)) > CD_R(0.0)))
+		{
+			return false;
+		}
+		cd3Vec centre =
+			cd3MakeVec(CD_R(0.5) * (offsets[0] - offsets[1]), CD_R(0.5) * (offsets[2] - offsets[3]),
+					   CD_R(0.5) * (offsets[4] - offsets[5]));
+		box->center = cd3TransformPoint(shape.transform, centre);
+		box->halfExtents = half;
+		box->rotation = shape.transform.q;
+		return true;
+	}
+	/* The axes: the normal most along x, then the one orthogonal to it most along y (the identity
+	 * for an axis-aligned box, exactly). Selects, not branches: the faces come in any order. */
+	int ix = 0;
+	for (int f = 1; f < 6; ++f)
+	{
+		ix = planes[f].normal.x > planes[ix].normal.x ? f : ix;
+	}
+	cd3Vec ax = planes[ix].normal;
+	int iy = -1;
+	cdReal bestY = -CD_REAL_MAX;
+	for (int f = 0; f < 6; ++f)
+	{
+		cd3Vec n = planes[f].normal;
+		bool candidate = cdAbs(cd3Dot(n, ax)) <= BOX_HULL_TOLERANCE && n.y > bestY;
+		iy = candidate ? f : iy;
+		bestY = candidate ? n.y : bestY;
+	}
+	if (iy < 0)
+	{
+		return false;
+	}
+	cd3Vec ay = planes[iy].normal, az;
+	cd3Quat rotation;
+	if (ax.x == CD_R(1.0) && ax.y == CD_R(0.0) && ax.z == CD_R(0.0) && ay.x == CD_R(0.0) &&
+		ay.y == CD_R(1.0) && ay.z == CD_R(0.0))
+	{
+		/* Axis-aligned (cd3MakeBoxHull, or the hull of a box's corners in its frame). */
+		az = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(1.0));
+		rotation = shape.transform.q;
+	}
+	else
+	{
+		az = cd3Normalize(cd3Cross(ax, ay));
+		ay = cd3Cross(az, ax);
+		rotation = cd3MulQuat(shape.transform.q, QuatFromColumns(ax, ay, az));
+	}
+	/* Each face along one axis, one face on each side of each: the box between those planes (the
+	 * hull's vertices lie on its planes, so on the box's corners). */
+	cdReal aligned = CD_R(1.0) - BOX_HULL_TOLERANCE;
+	filled = 0;
+	bool valid = true;
+	for (int f = 0; f < 6; ++f)
+	{
+		cd3Vec n = planes[f].normal;
+		cdReal c[3] = {cd3Dot(n, ax), cd3Dot(n, ay), cd3Dot(n, az)};
+		int onX = cdAbs(c[0]) >= aligned, onY = cdAbs(c[1]) >= aligned, onZ = cdAbs(c[2]) >= aligned;
+		valid = valid && onX + onY + onZ == 1;
+		int axis = onY + 2 * onZ;
+		int slot = 2 * axis + (c[axis] < CD_R(0.0));
+		filled |= 1 << slot;
+		offsets[slot] = planes[f].offset;
+	}
+	cd3Vec half = cd3MakeVec(CD_R(0.5) * (offsets[0] + offsets[1]), CD_R(0.5) * (offsets[2] + offsets[3]),
+							 CD_R(0.5) * (offsets[4] + offsets[5]));
+	cd3Vec extent = cd3Sub(h->bounds.max, h->bounds.min);
+	cdReal tolerance = BOX_HULL_TOLERANCE * (extent.x + extent.y + extent.z);
+	if (!valid || filled != 63 || !(cdMin(half.x, cdMin(half.y, half.z)) > tolerance))
+	{
+		return false;
+	}
+	cd3Vec centre = cd3Add(cd3Add(cd3Scale(CD_R(0.5) * (offsets[0] - offsets[1]), ax),
+								  cd3Scale(CD_R(0.5) * (offsets[2] - offsets[3]), ay)),
+						   cd3Scale(CD_R(0.5) * (offsets[4] - offsets[5]), az));
+	box->center = cd3TransformPoint(shape.transform, centre);
+	box->halfExtents = half;
+	box->rotation = rotation;
+	return true;
+}
+
 cd3Manifold cd3CollideBoxHull(cd3Box a, cd3HullShape b, cdReal speculativeDistance)
 {
+	cd3Box boxB;
+	if (HullAsBox(b, &boxB))
+	{
+		return cd3CollideBoxBox(a, boxB, speculativeDistance);
+	}
 	cd3Polytope pa, pb;
 	cd3InitBoxPolytope(&pa, a);
 	cd3InitHullPolytope(&pb, b);
@@ -1908,6 +2071,11 @@ cd3Manifold cd3CollideBoxTriangle(cd3Box a, cd3Triangle b, cdReal speculativeDis
 
 cd3Manifold cd3CollideHullHull(cd3HullShape a, cd3HullShape b, cdReal speculativeDistance)
 {
+	cd3Box boxA, boxB;
+	if (HullAsBox(a, &boxA) && HullAsBox(b, &boxB))
+	{
+		return cd3CollideBoxBox(boxA, boxB, speculativeDistance);
+	}
 	cd3Polytope pa, pb;
 	cd3InitHullPolytope(&pa, a);
 	cd3InitHullPolytope(&pb, b);

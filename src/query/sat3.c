@@ -258,13 +258,91 @@ static EdgeData MakeEdgeData(const cd3Polytope* a, int i)
 	return e;
 }
 
+/* The Gauss-map arcs of A's cached edges as columns (all x, then all y, then all z), so that the
+ * test of one edge of B against all of them runs without branches (and vectorizes): the pairs
+ * that pass are few, the ones that fail are many and fail unpredictably. */
+typedef struct ArcColumns
+{
+	cdReal nax[EDGE_CACHE], nay[EDGE_CACHE], naz[EDGE_CACHE];
+	cdReal nbx[EDGE_CACHE], nby[EDGE_CACHE], nbz[EDGE_CACHE];
+	cdReal bxax[EDGE_CACHE], bxay[EDGE_CACHE], bxaz[EDGE_CACHE];
+} ArcColumns;
+
+/* The indices k of A's cached arcs a-b that cross B's arc c-d (dxc = cross(d, c)), in `out`;
+ * returns their count. The test of Gregorius' talk: c and d on either side of a-b's plane, a and
+ * b on either side of c-d's, and both on one hemisphere. */
+static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, cd3Vec dxc, int* out)
+{
+	/* The test in one loop the compiler vectorizes, the gathering of the few that pass in another. */
+	int pass[EDGE_CACHE];
+	for (int k = 0; k < count; ++k)
+	{
+		cdReal cba = c.x * arcs->bxax[k] + c.y * arcs->bxay[k] + c.z * arcs->bxaz[k];
+		cdReal dba = d.x * arcs->bxax[k] + d.y * arcs->bxay[k] + d.z * arcs->bxaz[k];
+		cdReal adc = arcs->nax[k] * dxc.x + arcs->nay[k] * dxc.y + arcs->naz[k] * dxc.z;
+		cdReal bdc = arcs->nbx[k] * dxc.x + arcs->nby[k] * dxc.y + arcs->nbz[k] * dxc.z;
+		pass[k] = (cba * dba < CD_R(0.0)) & (adc * bdc < CD_R(0.0)) & (cba * bdc > CD_R(0.0));
+	}
+	int n = 0;
+	for (int k = 0; k < count; ++k)
+	{
+		out[n] = k;
+		n += pass[k];
+	}
+	return n;
+}
+
+/* One edge pair that passed the Gauss-map test: its separation along the cross of the edges,
+ * kept when it beats the best so far. */
+static void TestEdgePair(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, const EdgeData* e,
+						 int j, cd3Vec qb0, cd3Vec edgeB, cdReal edgeB2, cd3SatResult* r, cd3Vec* bestAxis)
+{
+	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
+	cd3Vec axis = cd3Cross(e->direction, edgeB);
+	cdReal axis2 = cd3LengthSquared(axis);
+	if (!(axis2 > parallel2 * e->lengthSquared * edgeB2))
+	{
+		return;
+	}
+	axis = cd3Scale(CD_R(1.0) / cdSqrt(axis2), axis);
+	/* The axis lies within A's arc na-nb: on the side of its bisector (robust for flat and
+	 * needle-like boxes, where a centroid test is ambiguous). */
+	if (cd3Dot(axis, cd3Add(e->na, e->nb)) < CD_R(0.0))
+	{
+		axis = cd3Neg(axis);
+	}
+	cdReal separation = cd3Dot(axis, cd3Sub(qb0, e->origin));
+	if (separation > r->edgeSeparation)
+	{
+		/* The separation along the axis from the projections, whatever supports it: the
+		 * edges' own difference is the separation only when the Gauss-map test is right,
+		 * and round-off of a needle's face normals can pass a pair whose edges do not
+		 * support the axis (a box against a hull with a vertex at -1e9 in float: +4.8e8
+		 * for shapes that overlap). Only for a new best, so rarely. */
+		cdReal loA, hiA, loB, hiB;
+		Project(a, CD3_TRANSFORM_IDENTITY, axis, &loA, &hiA);
+		Project(b, relB, axis, &loB, &hiB);
+		separation = cdMin(separation, loB - hiA);
+	}
+	if (separation > r->edgeSeparation)
+	{
+		r->edgeSeparation = separation;
+		r->edgeA = e->index;
+		r->edgeB = j;
+		*bestAxis = axis;
+	}
+}
+
 /* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
  * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
- * difference, whose normal is the cross of the edges oriented within A's arc. */
-static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cd3SatResult* r,
-							cd3Vec* bestAxis)
+ * difference, whose normal is the cross of the edges oriented within A's arc. Stops early once an
+ * edge pair separates by more than `limit` (the answer is then only known to exceed it). */
+static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cdReal limit,
+							cd3SatResult* r, cd3Vec* bestAxis)
 {
 	EdgeData cache[EDGE_CACHE];
+	ArcColumns arcs;
+	int crossing[EDGE_CACHE];
 	int cached = 0;
 	bool useCache = a->edgeAxisCount / 2 <= EDGE_CACHE;
 	if (useCache)
@@ -273,11 +351,21 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			if (a->edges[i].twin > i && cached < EDGE_CACHE)
 			{
-				cache[cached++] = MakeEdgeData(a, i);
+				EdgeData e = MakeEdgeData(a, i);
+				cache[cached] = e;
+				arcs.nax[cached] = e.na.x;
+				arcs.nay[cached] = e.na.y;
+				arcs.naz[cached] = e.na.z;
+				arcs.nbx[cached] = e.nb.x;
+				arcs.nby[cached] = e.nb.y;
+				arcs.nbz[cached] = e.nb.z;
+				arcs.bxax[cached] = e.bxa.x;
+				arcs.bxay[cached] = e.bxa.y;
+				arcs.bxaz[cached] = e.bxa.z;
+				++cached;
 			}
 		}
 	}
-	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
 	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
 		const cd3HullHalfEdge* eb = &b->edges[j];
@@ -292,69 +380,36 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
 		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[b->edges[eb->twin].face].normal));
 		cd3Vec dxc = cd3Cross(d, c);
-		int count = useCache ? cached : a->edgeAxisCount;
-		for (int k = 0; k < count; ++k)
+		if (useCache)
 		{
-			EdgeData onTheFly;
-			const EdgeData* e;
-			if (useCache)
+			int n = CrossingArcs(&arcs, cached, c, d, dxc, crossing);
+			for (int k = 0; k < n; ++k)
 			{
-				e = &cache[k];
+				TestEdgePair(a, b, relB, &cache[crossing[k]], j, qb0, edgeB, edgeB2, r, bestAxis);
 			}
-			else
+		}
+		else
+		{
+			for (int k = 0; k < a->edgeAxisCount; ++k)
 			{
 				if (a->edges[k].twin < k)
 				{
 					continue;
 				}
-				onTheFly = MakeEdgeData(a, k);
-				e = &onTheFly;
+				EdgeData e = MakeEdgeData(a, k);
+				cdReal cba = cd3Dot(c, e.bxa);
+				cdReal dba = cd3Dot(d, e.bxa);
+				cdReal adc = cd3Dot(e.na, dxc);
+				cdReal bdc = cd3Dot(e.nb, dxc);
+				if (cba * dba < CD_R(0.0) && adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0))
+				{
+					TestEdgePair(a, b, relB, &e, j, qb0, edgeB, edgeB2, r, bestAxis);
+				}
 			}
-			cdReal cba = cd3Dot(c, e->bxa);
-			cdReal dba = cd3Dot(d, e->bxa);
-			if (!(cba * dba < CD_R(0.0)))
-			{
-				continue;
-			}
-			cdReal adc = cd3Dot(e->na, dxc);
-			cdReal bdc = cd3Dot(e->nb, dxc);
-			if (!(adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0)))
-			{
-				continue;
-			}
-			cd3Vec axis = cd3Cross(e->direction, edgeB);
-			cdReal axis2 = cd3LengthSquared(axis);
-			if (!(axis2 > parallel2 * e->lengthSquared * edgeB2))
-			{
-				continue;
-			}
-			axis = cd3Scale(CD_R(1.0) / cdSqrt(axis2), axis);
-			/* The axis lies within A's arc na-nb: on the side of its bisector (robust for flat and
-			 * needle-like boxes, where a centroid test is ambiguous). */
-			if (cd3Dot(axis, cd3Add(e->na, e->nb)) < CD_R(0.0))
-			{
-				axis = cd3Neg(axis);
-			}
-			cdReal separation = cd3Dot(axis, cd3Sub(qb0, e->origin));
-			if (separation > r->edgeSeparation)
-			{
-				/* The separation along the axis from the projections, whatever supports it: the
-				 * edges' own difference is the separation only when the Gauss-map test is right,
-				 * and round-off of a needle's face normals can pass a pair whose edges do not
-				 * support the axis (a box against a hull with a vertex at -1e9 in float: +4.8e8
-				 * for shapes that overlap). Only for a new best, so rarely. */
-				cdReal loA, hiA, loB, hiB;
-				Project(a, CD3_TRANSFORM_IDENTITY, axis, &loA, &hiA);
-				Project(b, relB, axis, &loB, &hiB);
-				separation = cdMin(separation, loB - hiA);
-			}
-			if (separation > r->edgeSeparation)
-			{
-				r->edgeSeparation = separation;
-				r->edgeA = e->index;
-				r->edgeB = j;
-				*bestAxis = axis;
-			}
+		}
+		if (r->edgeSeparation > limit)
+		{
+			return;
 		}
 	}
 }
@@ -532,16 +587,27 @@ static void QueryEdgesProjected(const cd3Polytope* a, const cd3Polytope* b, cd3T
 	}
 }
 
-cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
+cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit)
 {
 	cd3SatResult r;
 	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
 	cd3Transform relA = cd3InvMulTransforms(b->transform, a->transform);
 	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA);
-	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
+	r.faceSeparationB = -CD_REAL_MAX;
+	r.faceB = -1;
 	r.edgeSeparation = -CD_REAL_MAX;
 	r.edgeA = -1;
 	r.edgeB = -1;
+	r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	if (r.faceSeparationA > limit)
+	{
+		return r;
+	}
+	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
+	if (r.faceSeparationB > limit)
+	{
+		return r;
+	}
 	cd3Vec bestAxis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	if (a->flat || b->flat)
 	{
@@ -549,10 +615,15 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
 	}
 	else
 	{
-		QueryEdgesGauss(a, b, relB, &r, &bestAxis);
+		QueryEdgesGauss(a, b, relB, limit, &r, &bestAxis);
 	}
 	r.edgeNormal = cd3RotateVector(a->transform.q, bestAxis);
 	return r;
+}
+
+cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)
+{
+	return cd3SatPolytopesWithin(a, b, CD_REAL_MAX);
 }
 
 cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, cd3SatResult* r)

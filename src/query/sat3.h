@@ -51,6 +51,11 @@ typedef struct cd3SatResult
 
 cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
 
+/* The same, but it may stop as soon as one axis separates the polytopes by more than `limit`:
+ * then cd3SatSeparation of the result exceeds `limit` and nothing else in it is exact. Exact when
+ * the separation is at most `limit`. */
+cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit);
+
 /* The same for two boxes, with the fifteen axes in closed form; face and half-edge indices are
  * those of cd3InitBoxPolytope. Edge axes that do not beat the best face axis are not reported
  * (edgeA is then -1): the overall separation is still exact. Also gives B's frame in A's: rotation (B's axes
