@@ -482,15 +482,18 @@ static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const 
 		return false;
 	}
 	cdReal chord = cdSqrt(cdMax(CD_R(2.0) - CD_R(2.0) * cosine, CD_R(0.0)));
-	/* How far the points of B moved in A's frame, and those of A in B's frame. */
-	cdReal reachA = bodyA->maxExtent + cd2Length(bodyA->localCenter);
+	/* How far the points of B moved in A's frame (the origin's move plus the rotation at B's reach
+	 * from its origin); failing that, how far those of A moved in B's frame (a small body on a large
+	 * one passes one of the two). */
 	cdReal reachB = bodyB->maxExtent + cd2Length(bodyB->localCenter);
-	cdReal moveInA = cd2Length(cd2Sub(xfAB.p, c.p)) + chord * reachB;
-	cdReal moveInB =
-		cd2Length(cd2Sub(cd2InvRotateVector(xfAB.q, xfAB.p), cd2InvRotateVector(c.q, c.p))) + chord * reachA;
-	if (!(cdMin(moveInA, moveInB) < tolerance))
+	if (!(cd2Length(cd2Sub(xfAB.p, c.p)) + chord * reachB < tolerance))
 	{
-		return false;
+		cdReal reachA = bodyA->maxExtent + cd2Length(bodyA->localCenter);
+		cd2Vec moveA = cd2Sub(cd2InvRotateVector(xfAB.q, xfAB.p), cd2InvRotateVector(c.q, c.p));
+		if (!(cd2Length(moveA) + chord * reachA < tolerance))
+		{
+			return false;
+		}
 	}
 	cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
 	cd2Vec n = cd2RotateVector(xfA.q, contact->localNormal);
