@@ -56,7 +56,8 @@ static void TestPyramid(void)
 
 static int s_preSolveCalls = 0;
 
-static bool CountPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold, void* context)
+static bool CountPreSolve(cd2ShapeId shapeIdA, cd2ShapeId shapeIdB, const cd2Manifold* manifold,
+						  void* context)
 {
 	(void)shapeIdA;
 	(void)shapeIdB;
@@ -94,7 +95,8 @@ static void TestBounceAndEvents(void)
 		sd.enableContactEvents = true;
 		sd.enablePreSolveEvents = true;
 		cd2Polygon poly;
-		cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.5), CD_R(0.5)}, {CD_R(1.0), CD_R(0.0)}}, &poly);
+		cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.5), CD_R(0.5)}, {CD_R(1.0), CD_R(0.0)}},
+						  &poly);
 		cd2ShapeId boxShape = cd2CreatePolygonShape(box, &sd, &poly);
 		s_preSolveCalls = 0;
 		cd2World_SetPreSolveCallback(world, CountPreSolve, NULL);
@@ -129,8 +131,8 @@ static void TestBounceAndEvents(void)
 					begins, ends);
 		/* The box starts within the speculative margin: a pre-solve call every step. */
 		TEST_CHECKF(s_preSolveCalls == 240 && touchingSteps == 240,
-					"distance %g: %d pre-solve calls, %d steps resting", (double)k_distances[d], s_preSolveCalls,
-					touchingSteps);
+					"distance %g: %d pre-solve calls, %d steps resting", (double)k_distances[d],
+					s_preSolveCalls, touchingSteps);
 		cd2Body_SetLinearVelocity(box, cd2MakeVec(CD_R(0.0), CD_R(10.0)));
 		for (int i = 0; i < 30; ++i)
 		{
@@ -166,8 +168,9 @@ static void TestBulletsNeverRecycled(void)
 		for (int w = 0; w < 4; ++w)
 		{
 			cd2Polygon wall;
-			cd2MakeBoxPolygon((cd2Box){{walls[w][0], walls[w][1]}, {walls[w][2], walls[w][3]}, {CD_R(1.0), CD_R(0.0)}},
-							  &wall);
+			cd2MakeBoxPolygon(
+				(cd2Box){{walls[w][0], walls[w][1]}, {walls[w][2], walls[w][3]}, {CD_R(1.0), CD_R(0.0)}},
+				&wall);
 			cd2CreatePolygonShape(room, &sd, &wall);
 		}
 		cd2BodyId bullets[8];
@@ -177,7 +180,8 @@ static void TestBulletsNeverRecycled(void)
 			bd.type = CD_DYNAMIC_BODY;
 			bd.isBullet = true;
 			bd.position = cd2MakeVec(CD_R(-4.0) + (cdReal)b, (cdReal)(b % 3) - CD_R(1.0));
-			bd.linearVelocity = cd2MakeVec(CD_R(150.0) - CD_R(40.0) * (cdReal)b, CD_R(90.0) - CD_R(25.0) * (cdReal)b);
+			bd.linearVelocity =
+				cd2MakeVec(CD_R(150.0) - CD_R(40.0) * (cdReal)b, CD_R(90.0) - CD_R(25.0) * (cdReal)b);
 			bullets[b] = cd2CreateBody(world, &bd);
 			sd = cd2DefaultShapeDef();
 			sd.restitution = CD_R(0.5);
@@ -192,7 +196,8 @@ static void TestBulletsNeverRecycled(void)
 		{
 			final[d][b] = cd2Body_GetPosition(bullets[b]);
 			TEST_CHECKF(cdAbs(final[d][b].x) < CD_R(5.0) && cdAbs(final[d][b].y) < CD_R(5.0),
-						"bullet %d left the room: (%g, %g)", b, (double)final[d][b].x, (double)final[d][b].y);
+						"bullet %d left the room: (%g, %g)", b, (double) final[d][b].x,
+						(double) final[d][b].y);
 		}
 		cd2DestroyWorld(world);
 	}

@@ -57,7 +57,8 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 					return cd2CollideChainSegmentPolygonLocal(seg, &shapeB->geometry.polygon, xfAB, sd);
 				case CD2_WORLD_SHAPE_SEGMENT:
 				{
-					cd2Capsule capsule = {shapeB->geometry.segment.p1, shapeB->geometry.segment.p2, CD_R(0.0)};
+					cd2Capsule capsule = {shapeB->geometry.segment.p1, shapeB->geometry.segment.p2,
+										  CD_R(0.0)};
 					return cd2CollideChainSegmentCapsuleLocal(seg, capsule, xfAB, sd);
 				}
 				default:
@@ -472,8 +473,8 @@ void cd2UpdateSensors(cd2World* world)
 /* Cosine of the largest relative rotation a recycled manifold may carry (about 11 degrees). */
 #define CD2_RECYCLE_COS_ANGLE CD_R(0.98)
 
-static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const cd2Body* bodyB, cd2Transform xfAB,
-							   cdReal tolerance)
+static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const cd2Body* bodyB,
+							   cd2Transform xfAB, cdReal tolerance)
 {
 	cd2Transform c = contact->cachedPose;
 	cdReal cosine = c.q.c * xfAB.q.c + c.q.s * xfAB.q.s;
@@ -516,7 +517,8 @@ static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const 
 
 /* The narrowphase for one contact, stored with the data recycling needs. */
 static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA, const cd2WorldShape* shapeB,
-							   const cd2Body* bodyA, const cd2Body* bodyB, cd2Transform xfAB, cdReal speculative)
+							   const cd2Body* bodyA, const cd2Body* bodyB, cd2Transform xfAB,
+							   cdReal speculative)
 {
 	cd2Manifold m = cd2ContactCollide(shapeA, shapeB, xfAB, speculative);
 	cd2Transform xfA = bodyA->transform;
@@ -659,8 +661,8 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 			(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents))
 		{
 			cd2Manifold wm = cd2WorldManifold(contact);
-			if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA), cd2MakeShapeId(world, contact->shapeB),
-									&wm, world->preSolveContext))
+			if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA),
+									cd2MakeShapeId(world, contact->shapeB), &wm, world->preSolveContext))
 			{
 				contact->flags |= CD2_CONTACT_DISABLED;
 			}

@@ -90,8 +90,7 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 		!cd2IsNonNegative(def->jointHertz) || !cd2IsNonNegative(def->jointDampingRatio) ||
 		!(cdIsValidReal(def->maximumLinearSpeed) && def->maximumLinearSpeed > CD_R(0.0)) ||
 		!cd2IsNonNegative(def->lengthUnitsPerMeter) || !cd2IsNonNegative(def->contactRecycleDistance) ||
-		def->workerCount < 0 ||
-		(def->enqueueTask == NULL) != (def->finishTask == NULL))
+		def->workerCount < 0 || (def->enqueueTask == NULL) != (def->finishTask == NULL))
 	{
 		CD2_REFUSE("cd2CreateWorld: bad world definition (NaN, negative or missing value)");
 		return CD2_NULL_WORLD_ID;
