@@ -116,6 +116,12 @@ typedef struct cd2WorldDef
 	cdReal jointDampingRatio;	   /* 2 */
 	cdReal maximumLinearSpeed;	   /* 400 m/s (scaled by the length units) */
 	cdReal lengthUnitsPerMeter;	   /* 0: keep cdGetLengthUnitsPerMeter(); else set it */
+	/* Contact recycling (0.02 m, scaled by the length units; 0 turns it off): while two bodies in
+	 * contact have moved less than this relative to each other (rotation counted at the bodies'
+	 * extent) since their manifold was computed, the manifold's points stay attached to the bodies
+	 * and only their separations are updated, instead of running the narrowphase again. Fast
+	 * bodies and bullets are never recycled. Results are deterministic either way. */
+	cdReal contactRecycleDistance;
 	bool enableSleep;
 	bool enableContinuous;
 	int workerCount; /* 1: the step runs on the calling thread (see the task system above) */

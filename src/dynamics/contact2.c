@@ -5,43 +5,152 @@
 #include <stdlib.h>
 
 /* ---- the narrowphase in local frames ------------------------------------------------------------
- * The one place that computes a pair's manifold: A stays in its body frame and B is placed in A's
- * frame, so the result is in A's frame and the solver can hold anchors relative to the bodies.
- * (Swap for the public local-frame manifold functions when they land.) */
+ * The one place that computes a pair's manifold: both shapes stay in their body frames (no copy of
+ * the stored geometry) and only B's transform in A's frame is passed, so the result is in A's frame
+ * and the solver can hold anchors relative to the bodies. The typed local-frame pair functions
+ * (manifold2.h) do the work; a pair stored out of their canonical order runs with the roles swapped
+ * and the normal flipped, the smaller shape moved into the other's frame. */
+static inline cd2Manifold cd2FlipNormal(cd2Manifold m)
+{
+	m.normal = cd2Neg(m.normal);
+	return m;
+}
+
+static inline cd2Circle cd2CircleIn(cd2Transform xf, cd2Circle c)
+{
+	c.center = cd2TransformPoint(xf, c.center);
+	return c;
+}
+
+static inline cd2Capsule cd2CapsuleIn(cd2Transform xf, cd2Capsule c)
+{
+	c.p1 = cd2TransformPoint(xf, c.p1);
+	c.p2 = cd2TransformPoint(xf, c.p2);
+	return c;
+}
+
+static inline cd2Transform cd2InverseTransform(cd2Transform xf)
+{
+	cd2Transform inv;
+	inv.q.c = xf.q.c;
+	inv.q.s = -xf.q.s;
+	inv.p = cd2Neg(cd2InvRotateVector(xf.q, xf.p));
+	return inv;
+}
+
 cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
 							  cdReal speculativeDistance)
 {
-	cd2Shape b = cd2MakeTaggedShape(shapeB, xfAB);
-	if (shapeA->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
+	cdReal sd = speculativeDistance;
+	switch (shapeA->type)
 	{
-		const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
-		switch (b.type)
+		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
 		{
-			case CD2_SHAPE_CIRCLE:
-				return cd2CollideChainSegmentCircle(seg, b.circle, speculativeDistance);
-			case CD2_SHAPE_CAPSULE:
-				return cd2CollideChainSegmentCapsule(seg, b.capsule, speculativeDistance);
-			case CD2_SHAPE_POLYGON:
-				return cd2CollideChainSegmentPolygon(seg, &b.polygon, speculativeDistance);
-			default:
+			const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
+			switch (shapeB->type)
 			{
-				cd2Capsule capsule = {b.segment.p1, b.segment.p2, CD_R(0.0)};
-				return cd2CollideChainSegmentCapsule(seg, capsule, speculativeDistance);
+				case CD2_WORLD_SHAPE_CIRCLE:
+					return cd2CollideChainSegmentCircleLocal(seg, shapeB->geometry.circle, xfAB, sd);
+				case CD2_WORLD_SHAPE_CAPSULE:
+					return cd2CollideChainSegmentCapsuleLocal(seg, shapeB->geometry.capsule, xfAB, sd);
+				case CD2_WORLD_SHAPE_POLYGON:
+					return cd2CollideChainSegmentPolygonLocal(seg, &shapeB->geometry.polygon, xfAB, sd);
+				case CD2_WORLD_SHAPE_SEGMENT:
+				{
+					cd2Capsule capsule = {shapeB->geometry.segment.p1, shapeB->geometry.segment.p2,
+										  CD_R(0.0)};
+					return cd2CollideChainSegmentCapsuleLocal(seg, capsule, xfAB, sd);
+				}
+				default:
+					break;
 			}
+			break;
+		}
+		case CD2_WORLD_SHAPE_CIRCLE:
+		{
+			cd2Circle a = shapeA->geometry.circle;
+			switch (shapeB->type)
+			{
+				case CD2_WORLD_SHAPE_CIRCLE:
+					return cd2CollideCircleCircleLocal(a, shapeB->geometry.circle, xfAB, sd);
+				case CD2_WORLD_SHAPE_CAPSULE:
+					return cd2CollideCircleCapsuleLocal(a, shapeB->geometry.capsule, xfAB, sd);
+				case CD2_WORLD_SHAPE_POLYGON:
+					return cd2CollideCirclePolygonLocal(a, &shapeB->geometry.polygon, xfAB, sd);
+				case CD2_WORLD_SHAPE_SEGMENT:
+					return cd2CollideCircleSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
+				default:
+					break;
+			}
+			break;
+		}
+		case CD2_WORLD_SHAPE_CAPSULE:
+		{
+			cd2Capsule a = shapeA->geometry.capsule;
+			switch (shapeB->type)
+			{
+				case CD2_WORLD_SHAPE_CIRCLE:
+					return cd2FlipNormal(
+						cd2CollideCircleCapsule(cd2CircleIn(xfAB, shapeB->geometry.circle), a, sd));
+				case CD2_WORLD_SHAPE_CAPSULE:
+					return cd2CollideCapsuleCapsuleLocal(a, shapeB->geometry.capsule, xfAB, sd);
+				case CD2_WORLD_SHAPE_POLYGON:
+					return cd2CollideCapsulePolygonLocal(a, &shapeB->geometry.polygon, xfAB, sd);
+				case CD2_WORLD_SHAPE_SEGMENT:
+					return cd2CollideCapsuleSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
+				default:
+					break;
+			}
+			break;
+		}
+		case CD2_WORLD_SHAPE_POLYGON:
+		{
+			const cd2Polygon* a = &shapeA->geometry.polygon;
+			switch (shapeB->type)
+			{
+				case CD2_WORLD_SHAPE_CIRCLE:
+					return cd2FlipNormal(
+						cd2CollideCirclePolygon(cd2CircleIn(xfAB, shapeB->geometry.circle), a, sd));
+				case CD2_WORLD_SHAPE_CAPSULE:
+					return cd2FlipNormal(
+						cd2CollideCapsulePolygon(cd2CapsuleIn(xfAB, shapeB->geometry.capsule), a, sd));
+				case CD2_WORLD_SHAPE_POLYGON:
+					return cd2CollidePolygonPolygonLocal(a, &shapeB->geometry.polygon, xfAB, sd);
+				case CD2_WORLD_SHAPE_SEGMENT:
+					return cd2CollidePolygonSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
+				default:
+					break;
+			}
+			break;
+		}
+		case CD2_WORLD_SHAPE_SEGMENT:
+		{
+			cd2Segment a = shapeA->geometry.segment;
+			switch (shapeB->type)
+			{
+				case CD2_WORLD_SHAPE_CIRCLE:
+					return cd2FlipNormal(
+						cd2CollideCircleSegment(cd2CircleIn(xfAB, shapeB->geometry.circle), a, sd));
+				case CD2_WORLD_SHAPE_CAPSULE:
+					return cd2FlipNormal(
+						cd2CollideCapsuleSegment(cd2CapsuleIn(xfAB, shapeB->geometry.capsule), a, sd));
+				case CD2_WORLD_SHAPE_POLYGON:
+					/* The segment into the polygon's frame, the manifold back into A's. */
+					return cd2FlipNormal(cd2TransformManifold(
+						xfAB, cd2CollidePolygonSegmentLocal(&shapeB->geometry.polygon, a,
+															cd2InverseTransform(xfAB), sd)));
+				case CD2_WORLD_SHAPE_SEGMENT:
+					return cd2CollideSegmentSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
+				default:
+					break;
+			}
+			break;
 		}
 	}
-	cd2Shape a;
-	if (shapeA->type == CD2_WORLD_SHAPE_POLYGON)
-	{
-		/* In its own frame: a copy, no transform. */
-		a.type = CD2_SHAPE_POLYGON;
-		a.polygon = shapeA->geometry.polygon;
-	}
-	else
-	{
-		a = cd2MakeTaggedShape(shapeA, CD2_TRANSFORM_IDENTITY);
-	}
-	return cd2Collide(&a, &b, speculativeDistance);
+	/* Two chain segments never make a contact. */
+	cd2Manifold none;
+	memset(&none, 0, sizeof(none));
+	return none;
 }
 
 /* The key that matches a point with last step's for warm starting: a name of the point that
@@ -347,17 +456,133 @@ void cd2UpdateSensors(cd2World* world)
 	}
 }
 
-void cd2UpdateContacts(cd2World* world, cdReal timeStep)
+/* ---- contact recycling ---------------------------------------------------------------------------
+ * The idea of keeping a manifold while the bodies barely move comes from persistent contact
+ * manifolds (PhysX, Bullet) in the single-distance form Box2D v3 uses ("contact recycling"). When
+ * the narrowphase runs, each point is stored on both bodies (in A's and in B's body frame, where the
+ * two coincide) with its separation, and the normal in A's frame, along with the pose of B's frame
+ * in A's. In later steps, while every point of B has moved by less than the recycle distance in
+ * A's frame since then (or every point of A in B's frame: translation of the other body's origin
+ * plus the chord of the relative rotation times the body's reach), the stored points are carried by
+ * the bodies and only their separations follow the motion along the normal, as the solver does
+ * between sub-steps; the narrowphase is skipped. Points that were not in the manifold can have
+ * come at most that distance closer, so a pair with no points is kept only while the motion is
+ * smaller than the gap that its last speculative distance guaranteed, less what this step can
+ * close. Fast bodies and bullets always run the narrowphase. */
+
+/* Cosine of the largest relative rotation a recycled manifold may carry (about 11 degrees). */
+#define CD2_RECYCLE_COS_ANGLE CD_R(0.98)
+
+static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const cd2Body* bodyB,
+							   cd2Transform xfAB, cdReal tolerance)
 {
-	for (int i = 0; i < world->contacts.count; ++i)
+	cd2Transform c = contact->cachedPose;
+	cdReal cosine = c.q.c * xfAB.q.c + c.q.s * xfAB.q.s;
+	if (!(cosine > CD2_RECYCLE_COS_ANGLE))
+	{
+		return false;
+	}
+	cdReal chord = cdSqrt(cdMax(CD_R(2.0) - CD_R(2.0) * cosine, CD_R(0.0)));
+	/* How far the points of B moved in A's frame (the origin's move plus the rotation at B's reach
+	 * from its origin); failing that, how far those of A moved in B's frame (a small body on a large
+	 * one passes one of the two). */
+	cdReal reachB = bodyB->maxExtent + cd2Length(bodyB->localCenter);
+	if (!(cd2Length(cd2Sub(xfAB.p, c.p)) + chord * reachB < tolerance))
+	{
+		cdReal reachA = bodyA->maxExtent + cd2Length(bodyA->localCenter);
+		cd2Vec moveA = cd2Sub(cd2InvRotateVector(xfAB.q, xfAB.p), cd2InvRotateVector(c.q, c.p));
+		if (!(cd2Length(moveA) + chord * reachA < tolerance))
+		{
+			return false;
+		}
+	}
+	cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
+	cd2Vec n = cd2RotateVector(xfA.q, contact->localNormal);
+	cd2Vec dc = cd2Sub(bodyB->center, bodyA->center);
+	contact->normal = n;
+	for (int k = 0; k < contact->pointCount; ++k)
+	{
+		cd2ContactPoint* cp = contact->points + k;
+		/* The stored point as carried by A and by B, from the centres (no large coordinates). */
+		cd2Vec rA = cd2RotateVector(xfA.q, cd2Sub(cp->localPointA, bodyA->localCenter));
+		cd2Vec rB = cd2RotateVector(xfB.q, cd2Sub(cp->localPointB, bodyB->localCenter));
+		cd2Vec d = cd2Add(dc, cd2Sub(rB, rA));
+		cp->separation = cp->baseSeparation + cd2Dot(d, n);
+		cp->anchorA = cd2MulAdd(rA, CD_R(0.5), d);
+		cp->anchorB = cd2MulSub(rB, CD_R(0.5), d);
+		cp->point = cd2Add(bodyA->center, cp->anchorA);
+	}
+	return true;
+}
+
+/* The narrowphase for one contact, stored with the data recycling needs. */
+static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA, const cd2WorldShape* shapeB,
+							   const cd2Body* bodyA, const cd2Body* bodyB, cd2Transform xfAB,
+							   cdReal speculative)
+{
+	cd2Manifold m = cd2ContactCollide(shapeA, shapeB, xfAB, speculative);
+	cd2Transform xfA = bodyA->transform;
+	cd2ContactPoint old[2];
+	int oldCount = contact->pointCount;
+	memcpy(old, contact->points, sizeof(old));
+	contact->pointCount = m.pointCount;
+	contact->normal = cd2RotateVector(xfA.q, m.normal);
+	contact->localNormal = m.normal;
+	contact->cachedPose = xfAB;
+	contact->cachedSpeculative = speculative;
+	contact->flags |= CD2_CONTACT_CACHE_VALID;
+	for (int k = 0; k < m.pointCount; ++k)
+	{
+		cd2ContactPoint* cp = contact->points + k;
+		memset(cp, 0, sizeof(*cp));
+		cp->point = cd2TransformPoint(xfA, m.points[k].point);
+		cp->anchorA = cd2Sub(cp->point, bodyA->center);
+		cp->anchorB = cd2Sub(cp->point, bodyB->center);
+		cp->separation = m.points[k].separation;
+		cp->id = m.points[k].id;
+		cp->localPointA = m.points[k].point;
+		cp->localPointB = cd2InvTransformPoint(xfAB, m.points[k].point);
+		cp->baseSeparation = m.points[k].separation;
+		/* Warm starting: the same features keep their impulses. */
+		for (int j = 0; j < oldCount; ++j)
+		{
+			if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
+			{
+				cp->normalImpulse = old[j].normalImpulse;
+				cp->tangentImpulse = old[j].tangentImpulse;
+				break;
+			}
+		}
+	}
+	if (m.pointCount == 0)
+	{
+		contact->rollingImpulse = CD_R(0.0);
+	}
+}
+
+typedef struct cd2ContactUpdateContext
+{
+	cd2World* world;
+	cdReal timeStep;
+	cdReal recycleDistance; /* in length units, 0: off */
+} cd2ContactUpdateContext;
+
+/* The parallel pass: each contact writes only itself (its manifold and the SIM flags), reading the
+ * bodies and shapes as they were at the start of the step, so any split gives the same bits. */
+static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	const cd2ContactUpdateContext* ctx = (const cd2ContactUpdateContext*)taskContext;
+	cd2World* world = ctx->world;
+	for (int i = startIndex; i < endIndex; ++i)
 	{
 		cd2Contact* contact = world->contacts.data + i;
 		if (!contact->inUse)
 		{
 			continue;
 		}
-		cd2Body* bodyA = world->bodies.data + contact->bodyA;
-		cd2Body* bodyB = world->bodies.data + contact->bodyB;
+		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
+		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
 		if (!bodyA->awake && !bodyB->awake)
 		{
 			continue; /* sleeping (or static against sleeping): keep as is */
@@ -366,11 +591,9 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
 		if (!cd2OverlapAabbAabb(shapeA->fatAabb, shapeB->fatAabb))
 		{
-			cd2DestroyContact(world, i, false);
+			contact->flags |= CD2_CONTACT_SIM_DISJOINT;
 			continue;
 		}
-		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
-		bool touching;
 		contact->flags &= ~(uint32_t)(CD2_CONTACT_DISABLED | CD2_CONTACT_HIT_EVENTS);
 		/* The shapes' current hit-event flags, for the solver's hit report this step. */
 		if (shapeA->enableHitEvents || shapeB->enableHitEvents)
@@ -381,65 +604,78 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		{
 			continue; /* sensors are updated after the solve (cd2UpdateSensors) */
 		}
+		cd2Transform xfAB = cd2InvMulTransforms(bodyA->transform, bodyB->transform);
+		/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
+		 * fast body is caught at the surface rather than found inside it a step later. */
+		cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
+						 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
+						 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
+		cdReal speculative = CD_SPECULATIVE_DISTANCE + ctx->timeStep * closing;
+		contact->flags |= CD2_CONTACT_SIM_UPDATED;
+		if (ctx->recycleDistance > CD_R(0.0) && (contact->flags & CD2_CONTACT_CACHE_VALID) != 0 &&
+			!bodyA->isFast && !bodyB->isFast && !bodyA->isBullet && !bodyB->isBullet)
 		{
-			cd2Transform xfA = bodyA->transform, xfB = bodyB->transform;
-			/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
-			 * fast body is caught at the surface rather than found inside it a step later. */
-			cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
-							 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
-							 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
-			cdReal speculative = CD_SPECULATIVE_DISTANCE + timeStep * closing;
-			cd2Manifold m = cd2ContactCollide(shapeA, shapeB, cd2InvMulTransforms(xfA, xfB), speculative);
-			cd2ContactPoint old[2];
-			int oldCount = contact->pointCount;
-			memcpy(old, contact->points, sizeof(old));
-			contact->pointCount = m.pointCount;
-			contact->normal = cd2RotateVector(xfA.q, m.normal);
-			for (int k = 0; k < m.pointCount; ++k)
+			cdReal tolerance = ctx->recycleDistance;
+			if (contact->pointCount == 0)
 			{
-				cd2ContactPoint* cp = contact->points + k;
-				memset(cp, 0, sizeof(*cp));
-				cp->point = cd2TransformPoint(xfA, m.points[k].point);
-				cp->anchorA = cd2Sub(cp->point, bodyA->center);
-				cp->anchorB = cd2Sub(cp->point, bodyB->center);
-				cp->separation = m.points[k].separation;
-				cp->id = m.points[k].id;
-				/* Warm starting: the same features keep their impulses. */
-				for (int j = 0; j < oldCount; ++j)
-				{
-					if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
-					{
-						cp->normalImpulse = old[j].normalImpulse;
-						cp->tangentImpulse = old[j].tangentImpulse;
-						break;
-					}
-				}
+				tolerance = cdMin(tolerance, contact->cachedSpeculative - ctx->timeStep * closing);
 			}
-			touching = m.pointCount > 0;
-			if (touching && world->preSolveFcn != NULL &&
-				(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents))
+			if (cd2RecycleManifold(contact, bodyA, bodyB, xfAB, tolerance))
 			{
-				cd2Manifold wm = cd2WorldManifold(contact);
-				if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA),
-										cd2MakeShapeId(world, contact->shapeB), &wm, world->preSolveContext))
-				{
-					contact->flags |= CD2_CONTACT_DISABLED;
-				}
+				continue;
 			}
-			if (touching && !wasTouching && (shapeA->enableContactEvents || shapeB->enableContactEvents))
+		}
+		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative);
+	}
+}
+
+void cd2UpdateContacts(cd2World* world, cdReal timeStep)
+{
+	/* Manifolds on the workers, then the state changes (destruction, pre-solve callbacks, events,
+	 * waking) on this thread in contact index order. */
+	cd2ContactUpdateContext ctx;
+	ctx.world = world;
+	ctx.timeStep = timeStep;
+	ctx.recycleDistance = world->contactRecycleDistance * cdGetLengthUnitsPerMeter();
+	cd2RunTask(world, cd2UpdateContactsTask, world->contacts.count, 64, &ctx);
+
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		cd2Contact* contact = world->contacts.data + i;
+		if (!contact->inUse || (contact->flags & (CD2_CONTACT_SIM_DISJOINT | CD2_CONTACT_SIM_UPDATED)) == 0)
+		{
+			continue;
+		}
+		if ((contact->flags & CD2_CONTACT_SIM_DISJOINT) != 0)
+		{
+			contact->flags &= ~(uint32_t)CD2_CONTACT_SIM_DISJOINT;
+			cd2DestroyContact(world, i, false);
+			continue;
+		}
+		contact->flags &= ~(uint32_t)CD2_CONTACT_SIM_UPDATED;
+		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+		const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
+		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+		bool touching = contact->pointCount > 0;
+		if (touching && world->preSolveFcn != NULL &&
+			(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents))
+		{
+			cd2Manifold wm = cd2WorldManifold(contact);
+			if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA),
+									cd2MakeShapeId(world, contact->shapeB), &wm, world->preSolveContext))
 			{
-				cd2ContactBeginTouchEvent e;
-				e.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
-				e.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
-				e.manifold = cd2WorldManifold(contact);
-				if (!cdArrayPush(world->beginEvents, e))
-				{
-					world->outOfMemory = true;
-				}
+				contact->flags |= CD2_CONTACT_DISABLED;
 			}
-			if (!touching)
+		}
+		if (touching && !wasTouching && (shapeA->enableContactEvents || shapeB->enableContactEvents))
+		{
+			cd2ContactBeginTouchEvent e;
+			e.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
+			e.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
+			e.manifold = cd2WorldManifold(contact);
+			if (!cdArrayPush(world->beginEvents, e))
 			{
-				contact->rollingImpulse = CD_R(0.0);
+				world->outOfMemory = true;
 			}
 		}
 		if (touching)
@@ -454,14 +690,14 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		{
 			cd2EmitEndEvent(world, contact);
 		}
-		if (touching && !wasTouching && (contact->flags & CD2_CONTACT_SENSOR) == 0)
+		if (touching && !wasTouching)
 		{
 			/* A new touch joins islands: wake the sleeping side. */
-			if (!bodyA->awake)
+			if (!world->bodies.data[contact->bodyA].awake)
 			{
 				cd2WakeBody(world, contact->bodyA);
 			}
-			if (!bodyB->awake)
+			if (!world->bodies.data[contact->bodyB].awake)
 			{
 				cd2WakeBody(world, contact->bodyB);
 			}

@@ -118,6 +118,21 @@ cd2Shape cd2MakeTaggedShape(const cd2WorldShape* shape, cd2Transform xf)
 
 cd2Aabb cd2ComputeWorldShapeAabb(const cd2WorldShape* shape, cd2Transform xf)
 {
+	if (shape->type == CD2_WORLD_SHAPE_POLYGON)
+	{
+		/* The vertices only (the same bits as the transformed polygon's box, without moving the
+		 * normals and the centroid): this runs for every awake shape every step. */
+		const cd2Polygon* p = &shape->geometry.polygon;
+		cd2Vec v = cd2TransformPoint(xf, p->vertices[0]);
+		cd2Aabb aabb = {v, v};
+		for (int i = 1; i < p->count; ++i)
+		{
+			v = cd2TransformPoint(xf, p->vertices[i]);
+			aabb.min = cd2Min(aabb.min, v);
+			aabb.max = cd2Max(aabb.max, v);
+		}
+		return cd2AabbInflate(aabb, p->radius);
+	}
 	cd2Shape tagged = cd2MakeTaggedShape(shape, xf);
 	return cd2ComputeShapeAabb(&tagged);
 }

@@ -7,7 +7,7 @@
 #include "world2_internal.h"
 
 #define CD2_STATE_MAGIC 0x53324443u /* "CD2S" */
-#define CD2_STATE_VERSION 1u
+#define CD2_STATE_VERSION 2u
 
 typedef struct cd2StateHeader
 {
@@ -20,7 +20,7 @@ typedef struct cd2StateSettings
 {
 	cd2Vec gravity;
 	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio, contactPushMaxVelocity,
-		jointHertz, jointDampingRatio, maximumLinearSpeed;
+		jointHertz, jointDampingRatio, maximumLinearSpeed, contactRecycleDistance;
 	uint32_t enableSleep, enableContinuous;
 } cd2StateSettings;
 
@@ -79,6 +79,7 @@ static void cd2WriteState(const cd2World* world, cd2Writer* w)
 	settings.jointHertz = world->jointHertz;
 	settings.jointDampingRatio = world->jointDampingRatio;
 	settings.maximumLinearSpeed = world->maximumLinearSpeed;
+	settings.contactRecycleDistance = world->contactRecycleDistance;
 	settings.enableSleep = world->enableSleep;
 	settings.enableContinuous = world->enableContinuous;
 	cd2Write(w, &settings, sizeof(settings));
@@ -360,6 +361,9 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->jointHertz = s.settings.jointHertz;
 	world->jointDampingRatio = s.settings.jointDampingRatio;
 	world->maximumLinearSpeed = s.settings.maximumLinearSpeed;
+	/* NaN or negative from a corrupt buffer: off. */
+	world->contactRecycleDistance =
+		s.settings.contactRecycleDistance >= CD_R(0.0) ? s.settings.contactRecycleDistance : CD_R(0.0);
 	world->enableSleep = s.settings.enableSleep != 0;
 	world->enableContinuous = s.settings.enableContinuous != 0;
 	world->beginEvents.count = 0;

@@ -70,6 +70,7 @@ cd2WorldDef cd2DefaultWorldDef(void)
 	def.jointDampingRatio = CD_R(2.0);
 	def.maximumLinearSpeed = CD_R(400.0);
 	def.lengthUnitsPerMeter = CD_R(0.0);
+	def.contactRecycleDistance = CD_R(0.02);
 	def.enableSleep = true;
 	def.enableContinuous = true;
 	def.workerCount = 1;
@@ -88,8 +89,8 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 		!cd2IsNonNegative(def->contactDampingRatio) || !cd2IsNonNegative(def->contactPushMaxVelocity) ||
 		!cd2IsNonNegative(def->jointHertz) || !cd2IsNonNegative(def->jointDampingRatio) ||
 		!(cdIsValidReal(def->maximumLinearSpeed) && def->maximumLinearSpeed > CD_R(0.0)) ||
-		!cd2IsNonNegative(def->lengthUnitsPerMeter) || def->workerCount < 0 ||
-		(def->enqueueTask == NULL) != (def->finishTask == NULL))
+		!cd2IsNonNegative(def->lengthUnitsPerMeter) || !cd2IsNonNegative(def->contactRecycleDistance) ||
+		def->workerCount < 0 || (def->enqueueTask == NULL) != (def->finishTask == NULL))
 	{
 		CD2_REFUSE("cd2CreateWorld: bad world definition (NaN, negative or missing value)");
 		return CD2_NULL_WORLD_ID;
@@ -144,6 +145,7 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 	world->jointHertz = def->jointHertz;
 	world->jointDampingRatio = def->jointDampingRatio;
 	world->maximumLinearSpeed = def->maximumLinearSpeed;
+	world->contactRecycleDistance = def->contactRecycleDistance;
 	world->enableSleep = def->enableSleep;
 	world->enableContinuous = def->enableContinuous;
 	world->userData = def->userData;

@@ -97,6 +97,10 @@ typedef struct cd2ContactPoint
 	uint32_t id;
 	cdReal normalImpulse, tangentImpulse, maxNormalImpulse;
 	cdReal relativeVelocity; /* normal approach speed at the start of the step (negative: closing) */
+	/* Recycling (see cd2UpdateContacts): the point in A's and in B's body frame and its separation
+	 * when the narrowphase last ran. */
+	cd2Vec localPointA, localPointB;
+	cdReal baseSeparation;
 } cd2ContactPoint;
 
 enum
@@ -106,7 +110,11 @@ enum
 	CD2_CONTACT_DISABLED = 1 << 2, /* by the pre-solve callback, this step */
 	CD2_CONTACT_EVENTS = 1 << 3,
 	CD2_CONTACT_HIT_EVENTS = 1 << 4,
-	CD2_CONTACT_PRESOLVE = 1 << 5
+	CD2_CONTACT_PRESOLVE = 1 << 5,
+	CD2_CONTACT_CACHE_VALID = 1 << 6, /* localNormal, the points' local data and cachedPose are set */
+	/* Set by the parallel pass of cd2UpdateContacts for its serial merge, cleared by the merge. */
+	CD2_CONTACT_SIM_DISJOINT = 1 << 7,
+	CD2_CONTACT_SIM_UPDATED = 1 << 8
 };
 
 typedef struct cd2Contact
@@ -120,6 +128,11 @@ typedef struct cd2Contact
 	cd2ContactPoint points[2];
 	cdReal rollingImpulse;
 	cdReal friction, restitution, rollingResistance, tangentSpeed;
+	/* Recycling: the normal in A's body frame, B's body frame in A's and the speculative distance
+	 * when the narrowphase last ran. */
+	cd2Vec localNormal;
+	cd2Transform cachedPose;
+	cdReal cachedSpeculative;
 } cd2Contact;
 
 /* ---- joints ---------------------------------------------------------------------------------- */
@@ -287,6 +300,7 @@ typedef struct cd2World
 	cd2Vec gravity;
 	cdReal restitutionThreshold, hitEventThreshold, contactHertz, contactDampingRatio, contactPushMaxVelocity,
 		jointHertz, jointDampingRatio, maximumLinearSpeed;
+	cdReal contactRecycleDistance; /* meters (times the length units at use); 0: never recycle */
 	bool enableSleep, enableContinuous;
 	/* objects */
 	CD_ARRAY(cd2Body) bodies;
