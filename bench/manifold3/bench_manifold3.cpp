@@ -1295,10 +1295,14 @@ int main(int argc, char** argv)
 			}
 		}
 	}
-	const Row& boxManifold = rows[3];
-	const Row& hullDepth = rows[6];
-	const Row& hullManifold = rows[7];
-	const Row& boxTriangleManifold = rows[11];
+	/* Each pair set adds five rows, in this order: distance, overlap, depth, manifold, local manifold;
+	 * the sets: box-box, hull-hull, box-triangle, hull(8)-hull(8), box-box as hulls. */
+	const auto rowOf = [&rows](int set, int query) -> const Row& { return rows[(size_t)(5 * set + query)]; };
+	enum { DEPTH_ROW = 2, MANIFOLD_ROW = 3 };
+	const Row& boxManifold = rowOf(0, MANIFOLD_ROW);
+	const Row& hullDepth = rowOf(1, DEPTH_ROW);
+	const Row& hullManifold = rowOf(1, MANIFOLD_ROW);
+	const Row& boxTriangleManifold = rowOf(2, MANIFOLD_ROW);
 	std::printf(
 		"\ntargets: box-box manifold collide / btBoxBoxDetector %.2f (<= 1); hull-hull manifold collide / "
 		"Bullet GJK-EPA %.2f (<= 0.5)",
@@ -1311,9 +1315,9 @@ int main(int argc, char** argv)
 	}
 	std::printf("; box-triangle manifold collide / Bullet GJK-EPA %.2f\n",
 				boxTriangleManifold.cells[COLLIDE].ns / boxTriangleManifold.cells[BULLET].ns);
-	const Row& hull8Depth = rows[17];
-	const Row& hull8Manifold = rows[18];
-	const Row& boxHullManifold = rows[23];
+	const Row& hull8Depth = rowOf(3, DEPTH_ROW);
+	const Row& hull8Manifold = rowOf(3, MANIFOLD_ROW);
+	const Row& boxHullManifold = rowOf(4, MANIFOLD_ROW);
 	std::printf("small hulls: hull(8)-hull(8) manifold collide / Bullet btGjkEpaSolver2 depth %.2f, / Bullet "
 				"GJK-EPA pair detector manifold %.2f (<= 0.5)",
 				hull8Manifold.cells[COLLIDE].ns / hull8Depth.cells[BULLET].ns,
