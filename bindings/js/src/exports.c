@@ -841,10 +841,12 @@ static bool meshTransform(cd3Transform* t)
 
 /* Builds a mesh from `vertexCount` x y z triples and `triangleCount` index triples; the mesh
  * pointer goes to IO[0] (0 on failure). Returns the cdResult. */
-EXPORT("mesh3Create") int cdjs3MeshCreate(const float* vertices, int vertexCount, const int* indices, int triangleCount)
+EXPORT("mesh3Create")
+int cdjs3MeshCreate(const float* vertices, int vertexCount, const int* indices, int triangleCount)
 {
 	cd3Mesh* mesh = NULL;
-	cdResult result = cd3CreateMesh((const cd3Vec*)(const void*)vertices, vertexCount, indices, triangleCount, &mesh);
+	cdResult result =
+		cd3CreateMesh((const cd3Vec*)(const void*)vertices, vertexCount, indices, triangleCount, &mesh);
 	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)mesh : 0);
 	return (int)result;
 }
@@ -889,7 +891,8 @@ EXPORT("mesh3Triangle") int cdjs3MeshTriangle(const cd3Mesh* mesh, int index)
 /* anyHit 0: IO gets fraction, point, normal, triangleIndex (int); 1: only whether it hits.
  * Returns 1 on a hit, 0 on a miss, -64 for a non-finite transform or ray. */
 EXPORT("mesh3Raycast")
-int cdjs3MeshRaycast(const cd3Mesh* mesh, float ox, float oy, float oz, float tx, float ty, float tz, int anyHit)
+int cdjs3MeshRaycast(const cd3Mesh* mesh, float ox, float oy, float oz, float tx, float ty, float tz,
+					 int anyHit)
 {
 	cd3Transform t;
 	const float ray[6] = {ox, oy, oz, tx, ty, tz};
@@ -934,8 +937,8 @@ static bool meshQueryCollect(int triangleIndex, void* context)
 /* Input indices of the triangles whose bounds overlap the box (mesh space) into out (at most
  * capacity); returns how many there are. */
 EXPORT("mesh3QueryAabb")
-int cdjs3MeshQueryAabb(const cd3Mesh* mesh, float minX, float minY, float minZ, float maxX, float maxY, float maxZ,
-					   int32_t* out, int capacity)
+int cdjs3MeshQueryAabb(const cd3Mesh* mesh, float minX, float minY, float minZ, float maxX, float maxY,
+					   float maxZ, int32_t* out, int capacity)
 {
 	JsIndexList list = {out, capacity, 0};
 	cd3Mesh_QueryAabb(mesh, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}}, meshQueryCollect, &list);
@@ -965,8 +968,8 @@ int cdjs3MeshClosestPoint(const cd3Mesh* mesh, float px, float py, float pz, flo
 		return -64;
 	}
 	cd3MeshClosestPoint result;
-	if (!cd3ClosestPointOnMesh(mesh, t, (cd3Vec){px, py, pz}, isfinite(maxDistance) ? maxDistance : CD_REAL_MAX,
-							   &result))
+	if (!cd3ClosestPointOnMesh(mesh, t, (cd3Vec){px, py, pz},
+							   isfinite(maxDistance) ? maxDistance : CD_REAL_MAX, &result))
 	{
 		return 0;
 	}
@@ -980,10 +983,12 @@ int cdjs3MeshClosestPoint(const cd3Mesh* mesh, float px, float py, float pz, flo
  * (int), normal (3), pointCount, then 4 points of point (3), separation, id (uint32). Returns how
  * many were written (cd3CollideMesh keeps the first `capacity` it meets). */
 #define MESH_MANIFOLD_FLOATS 25
-EXPORT("mesh3Collide") int cdjs3MeshCollide(const cd3Mesh* mesh, float speculativeDistance, float* out, int capacity)
+EXPORT("mesh3Collide")
+int cdjs3MeshCollide(const cd3Mesh* mesh, float speculativeDistance, float* out, int capacity)
 {
 	cd3Transform t;
-	if (!meshTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) || capacity < 0)
+	if (!meshTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) ||
+		capacity < 0)
 	{
 		return -64;
 	}
@@ -1098,7 +1103,8 @@ EXPORT("chain2Raycast") int cdjs2ChainRaycast(const cd2Chain* chain, float ox, f
 /* Segments whose bounds overlap the box (world space) into out (at most capacity); returns how
  * many there are, -64 for bad input. */
 EXPORT("chain2QueryAabb")
-int cdjs2ChainQueryAabb(const cd2Chain* chain, float minX, float minY, float maxX, float maxY, int32_t* out, int capacity)
+int cdjs2ChainQueryAabb(const cd2Chain* chain, float minX, float minY, float maxX, float maxY, int32_t* out,
+						int capacity)
 {
 	cd2Transform t;
 	const float box[4] = {minX, minY, maxX, maxY};
@@ -1115,10 +1121,12 @@ int cdjs2ChainQueryAabb(const cd2Chain* chain, float minX, float minY, float max
  * 12 floats each: segmentIndex (int), normal (2), pointCount, then 2 points of point (2),
  * separation, id (uint32). Returns how many were written. */
 #define CHAIN_MANIFOLD_FLOATS 12
-EXPORT("chain2Collide") int cdjs2ChainCollide(const cd2Chain* chain, float speculativeDistance, float* out, int capacity)
+EXPORT("chain2Collide")
+int cdjs2ChainCollide(const cd2Chain* chain, float speculativeDistance, float* out, int capacity)
 {
 	cd2Transform t;
-	if (!chainTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) || capacity < 0)
+	if (!chainTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) ||
+		capacity < 0)
 	{
 		return -64;
 	}

@@ -683,7 +683,8 @@ EXPORT("shape2Create") int cdjsShape2Create(int world0, int index1, int generati
  * maskBits (2 words), groupIndex (int), enableSensorEvents. Returns the chain's index1 with its
  * generation in IO[0] and its segment count in IO[1]; 0 for a stale body, -cdResult for bad points.
  * The chain's segment shapes are the body's new shapes (body2Shapes). */
-EXPORT("chain2Create") int cdjsChain2Create(int world0, int index1, int generation, const float* points, int count)
+EXPORT("chain2Create")
+int cdjsChain2Create(int world0, int index1, int generation, const float* points, int count)
 {
 	BODY_OR(0)
 	const float* in = IO;
