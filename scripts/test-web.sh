@@ -44,7 +44,7 @@ test)
 	;;
 all)
 	setup
-	run_tests api.test.mjs errors.test.mjs exact.test.mjs types.test.mjs pack.test.mjs world2.test.mjs lockstep.test.mjs
+	run_tests api.test.mjs errors.test.mjs exact.test.mjs types.test.mjs pack.test.mjs world2.test.mjs lockstep.test.mjs mesh_chain.test.mjs
 	;;
 *)
 	echo "usage: $0 [setup | test FILE... | all]" >&2

@@ -15,7 +15,8 @@
 // 320), so a rain run cut by the budget covers the cheaper early steps only: read such rows as
 // lower bounds of that engine's cost.
 //
-//   cd bench/js && npm install && node bench_world2.mjs [--runs 3] [--scene NAME] [--engine NAME] [--budget SECONDS]
+//   bench/js/run.sh world2 [--runs 3] [--scene NAME] [--engine NAME] [--budget SECONDS]
+// (run.sh installs the engines from npm and builds the wasm module when they are missing)
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { cpuMs, median } from './timing.mjs';

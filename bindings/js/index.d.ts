@@ -94,6 +94,76 @@ export class Hull {
   destroy(): void;
 }
 
+// ---- meshes and chains ---------------------------------------------------------------------------
+
+/** A mesh's placement in the world (identity when omitted). */
+export interface MeshTransform3 { position?: Vec3; rotation?: Quat }
+export interface MeshRayHit3 extends RayHit3 { triangleIndex: number }
+export interface MeshClosestPoint3 { point: Vec3; distance: number; triangleIndex: number }
+export interface MeshManifold3 extends Manifold3 { triangleIndex: number }
+export interface ManifoldOptions { speculativeDistance?: number; capacity?: number }
+
+/**
+ * A triangle mesh in wasm memory (cd3CreateMesh) with a static BVH. Vertices x, y, z per vertex,
+ * indices three per triangle (counter-clockwise from the front). Zero-area triangles are dropped;
+ * the others keep their input index. Call destroy() when done.
+ */
+export class Mesh3 {
+  constructor(vertices: Float32Array | Float64Array | number[], indices: Uint32Array | Int32Array | Uint16Array | Uint8Array | number[]);
+  readonly triangleCount: number;
+  readonly droppedTriangleCount: number;
+  readonly vertexCount: number;
+  readonly nodeCount: number;
+  readonly leafCount: number;
+  readonly depth: number;
+  readonly activeEdgeCount: number;
+  /** Of the kept triangles, mesh space. */
+  readonly bounds: Aabb3;
+  readonly bytes: number;
+  readonly destroyed: boolean;
+  /** Triangle by input index (mesh space); null for a dropped one. */
+  triangle(index: number): Triangle | null;
+  validate(): boolean;
+  raycast(ray: Ray3, transform?: MeshTransform3): MeshRayHit3 | null;
+  raycastAny(ray: Ray3, transform?: MeshTransform3): boolean;
+  /** Input indices of the triangles whose bounds overlap `bounds` (mesh space). */
+  queryAabb(bounds: Aabb3): Int32Array;
+  overlap(shape: Shape3, transform?: MeshTransform3): boolean;
+  closestPoint(point: Vec3, transform?: MeshTransform3, maxDistance?: number): MeshClosestPoint3 | null;
+  /** Sphere, capsule, aabb, box or hull against the mesh: one manifold per triangle in contact. */
+  manifolds(shape: Sphere | Capsule3 | AabbShape3 | Box3 | HullShape, transform?: MeshTransform3, options?: ManifoldOptions): MeshManifold3[];
+  destroy(): void;
+}
+
+/** A chain's placement in the world (identity when omitted). */
+export interface ChainTransform2 { position?: Vec2; angle?: number }
+export interface ChainRayHit2 extends RayHit2 { segmentIndex: number }
+export interface ChainManifold2 extends Manifold2 { segmentIndex: number }
+export interface ChainSegment2 { ghost1: Vec2; p1: Vec2; p2: Vec2; ghost2: Vec2 }
+
+/**
+ * A chain in wasm memory (cd2CreateChain): a polyline (or loop) of one-sided segments, free side to
+ * the right of each segment's direction. Call destroy() when done.
+ */
+export class Chain2 {
+  constructor(points: Vec2[] | Float32Array | Float64Array, options?: { loop?: boolean });
+  readonly segmentCount: number;
+  readonly pointCount: number;
+  readonly loop: boolean;
+  /** In the chain's frame. */
+  readonly bounds: Aabb2;
+  /** x, y pairs after welding (a copy). */
+  readonly points: Float32Array;
+  readonly destroyed: boolean;
+  segment(index: number): ChainSegment2;
+  raycast(ray: Ray2, transform?: ChainTransform2): ChainRayHit2 | null;
+  /** Segments whose bounds overlap `bounds` (world space), increasing. */
+  queryAabb(bounds: Aabb2, transform?: ChainTransform2): Int32Array;
+  /** The chain (A) against a shape (B, world space): one manifold per segment in contact. */
+  manifolds(shape: Shape2, transform?: ChainTransform2, options?: ManifoldOptions): ChainManifold2[];
+  destroy(): void;
+}
+
 // ---- queries -------------------------------------------------------------------------------------
 
 export interface RayHit2 { fraction: number; point: Vec2; normal: Vec2 }
@@ -369,7 +439,27 @@ export class Body2 {
   applyAngularImpulse(impulse: number, wake?: boolean): void;
   readonly shapes: BodyShape2[];
   createShape(geometry: Shape2, def?: ShapeDef2): BodyShape2;
-  createChain(points: Vec2[], options?: { loop?: boolean; friction?: number; restitution?: number }): BodyShape2[];
+  /** One-sided terrain (cd2CreateChainShape): a floor runs from right to left, a loop around a solid counter-clockwise. */
+  createChain(points: Vec2[] | Float32Array | Float64Array, options?: ChainShapeOptions2): ChainShape2;
+}
+
+export interface ChainShapeOptions2 {
+  loop?: boolean;
+  friction?: number;
+  restitution?: number;
+  filter?: Filter2;
+  enableSensorEvents?: boolean;
+}
+
+/** A chain on a body: its segment shapes; destroy() removes them all. */
+export class ChainShape2 {
+  private constructor();
+  readonly body: Body2;
+  /** The segment shapes (type 'chainSegment'), in chain order. */
+  readonly segments: BodyShape2[];
+  readonly segmentCount: number;
+  readonly destroyed: boolean;
+  destroy(): void;
 }
 
 /** A shape attached to a body (the geometry types are Shape2). */

@@ -25,4 +25,6 @@ export {
   rectsIntersectCircle,
 } from './lib/texts.js';
 export { BroadPhase2, BroadPhase3, BROADPHASE_TYPES } from './lib/broadphase.js';
-export { World2, Body2, BodyShape2, Joint2, BODY2_TYPES, JOINT2_TYPES, solvePlanes2, clipVector2 } from './lib/world2.js';
+export { Mesh3 } from './lib/mesh3.js';
+export { Chain2 } from './lib/chain2.js';
+export { World2, Body2, BodyShape2, ChainShape2, Joint2, BODY2_TYPES, JOINT2_TYPES, solvePlanes2, clipVector2 } from './lib/world2.js';

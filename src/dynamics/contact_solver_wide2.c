@@ -39,6 +39,35 @@ static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const in
 	out.dpy = s0;
 	out.qc = s1;
 	out.qs = s2;
+#elif defined(CD_WIDE_WASM)
+	const float* b0 = (const float*)(bodies + index[0]);
+	const float* b1 = (const float*)(bodies + index[1]);
+	const float* b2 = (const float*)(bodies + index[2]);
+	const float* b3 = (const float*)(bodies + index[3]);
+	for (int half = 0; half < 2; ++half)
+	{
+		/* Rows r0..r3 are reals 4 * half .. 4 * half + 3 of the four bodies; transposed, column k
+		 * holds real 4 * half + k of every lane. */
+		v128_t r0 = wasm_v128_load(b0 + 4 * half), r1 = wasm_v128_load(b1 + 4 * half);
+		v128_t r2 = wasm_v128_load(b2 + 4 * half), r3 = wasm_v128_load(b3 + 4 * half);
+		v128_t t0 = wasm_i32x4_shuffle(r0, r1, 0, 4, 1, 5), t1 = wasm_i32x4_shuffle(r2, r3, 0, 4, 1, 5);
+		v128_t t2 = wasm_i32x4_shuffle(r0, r1, 2, 6, 3, 7), t3 = wasm_i32x4_shuffle(r2, r3, 2, 6, 3, 7);
+		v128_t c0 = wasm_i32x4_shuffle(t0, t1, 0, 1, 4, 5), c1 = wasm_i32x4_shuffle(t0, t1, 2, 3, 6, 7);
+		v128_t c2 = wasm_i32x4_shuffle(t2, t3, 0, 1, 4, 5), c3 = wasm_i32x4_shuffle(t2, t3, 2, 3, 6, 7);
+		if (half == 0)
+		{
+			out.vx = c0;
+			out.vy = c1;
+			out.w = c2;
+			out.dpx = c3;
+		}
+		else
+		{
+			out.dpy = c0;
+			out.qc = c1;
+			out.qs = c2;
+		}
+	}
 #else
 	for (int i = 0; i < CD_W; ++i)
 	{

@@ -72,6 +72,68 @@ static inline cdW cdWLoad(const cdReal* in)
 {
 	return _mm_loadu_ps(in);
 }
+#elif !CD_DOUBLE && defined(__wasm_simd128__) && !defined(COLLIDE_NO_SIMD)
+/* WebAssembly SIMD128 (clang -msimd128): the same four-float operations. pmin/pmax are the
+ * "pseudo" min/max, b < a ? b : a and a < b ? b : a, so cdWMin(a, b) = pmin(b, a) is a < b ? a : b
+ * and cdWMax(a, b) = pmax(b, a) is b < a ? a : b, i.e. a > b ? a : b: cdMin's and cdMax's rules. */
+#include <wasm_simd128.h>
+#define CD_WIDE_SSE 0
+#define CD_WIDE_WASM 1
+typedef v128_t cdW;
+
+static inline cdW cdWZero(void)
+{
+	return wasm_f32x4_splat(0.0f);
+}
+static inline cdW cdWSplat(cdReal a)
+{
+	return wasm_f32x4_splat(a);
+}
+static inline cdW cdWAdd(cdW a, cdW b)
+{
+	return wasm_f32x4_add(a, b);
+}
+static inline cdW cdWSub(cdW a, cdW b)
+{
+	return wasm_f32x4_sub(a, b);
+}
+static inline cdW cdWMul(cdW a, cdW b)
+{
+	return wasm_f32x4_mul(a, b);
+}
+static inline cdW cdWNeg(cdW a)
+{
+	return wasm_f32x4_neg(a);
+}
+static inline cdW cdWMax(cdW a, cdW b)
+{
+	return wasm_f32x4_pmax(b, a);
+}
+static inline cdW cdWMin(cdW a, cdW b)
+{
+	return wasm_f32x4_pmin(b, a);
+}
+/* mask ? a : b, mask lanes all ones or all zeros. */
+static inline cdW cdWSelect(cdW mask, cdW a, cdW b)
+{
+	return wasm_v128_bitselect(a, b, mask);
+}
+static inline cdW cdWGreater(cdW a, cdW b)
+{
+	return wasm_f32x4_gt(a, b);
+}
+static inline cdW cdWLess(cdW a, cdW b)
+{
+	return wasm_f32x4_lt(a, b);
+}
+static inline void cdWStore(cdReal* out, cdW a)
+{
+	wasm_v128_store(out, a);
+}
+static inline cdW cdWLoad(const cdReal* in)
+{
+	return wasm_v128_load(in);
+}
 #else
 #define CD_WIDE_SSE 0
 typedef struct cdW

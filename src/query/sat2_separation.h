@@ -8,10 +8,11 @@
  * 24 mispredictions per 8-gon pair against Box2D's 5), which cost more than the work it saves.
  * So every edge is scanned to the end without branches: the float build on SSE2 holds four of
  * A's edges in the lanes of a vector (edge normals and vertices transposed once) and walks B's
- * vertices; elsewhere (double, other targets) a plain loop with selects. Both compute each dot
- * product in cd2Dot's order and take the minimum as cdMin does, so they return the same edge and
- * the same value bit for bit, which are also those of the early-exit scan (an edge it stops early
- * could not have won: its full minimum is below its partial one). Not installed. */
+ * vertices, and so does the float build for WebAssembly SIMD128; elsewhere (double, other
+ * targets) a plain loop with selects. All compute each dot product in cd2Dot's order and take
+ * the minimum as cdMin does, so they return the same edge and the same value bit for bit, which
+ * are also those of the early-exit scan (an edge it stops early could not have won: its full
+ * minimum is below its partial one). Not installed. */
 #ifndef COLLIDE_SAT2_SEPARATION_H
 #define COLLIDE_SAT2_SEPARATION_H
 
@@ -22,6 +23,14 @@
 #define CD2_SEPARATION_SSE 1
 #else
 #define CD2_SEPARATION_SSE 0
+#endif
+
+/* The same four-lane scan with WebAssembly SIMD128 (clang -msimd128). */
+#if !CD_DOUBLE && !CD2_SEPARATION_SSE && defined(__wasm_simd128__)
+#include <wasm_simd128.h>
+#define CD2_SEPARATION_WASM 1
+#else
+#define CD2_SEPARATION_WASM 0
 #endif
 
 /* The plain scan, for any count, and the reference the tests compare the others with. */
@@ -77,6 +86,33 @@ static inline __m128 cd2SeparationLanes(__m128 nx, __m128 ny, __m128 vx, __m128 
 }
 #endif
 
+#if CD2_SEPARATION_WASM
+/* p[i0..i3] as an x and a y vector (the SSE version's loads). */
+static inline void cd2SeparationLoad4Wasm(const cd2Vec* p, int i0, int i1, int i2, int i3, v128_t* x,
+										  v128_t* y)
+{
+	v128_t lo = wasm_v128_load64_lane(&p[i1], wasm_v128_load64_zero(&p[i0]), 1);
+	v128_t hi = wasm_v128_load64_lane(&p[i3], wasm_v128_load64_zero(&p[i2]), 1);
+	*x = wasm_i32x4_shuffle(lo, hi, 0, 2, 4, 6);
+	*y = wasm_i32x4_shuffle(lo, hi, 1, 3, 5, 7);
+}
+
+static inline v128_t cd2SeparationLanesWasm(v128_t nx, v128_t ny, v128_t vx, v128_t vy, const cd2Vec* others,
+											int otherCount)
+{
+	v128_t lowest = wasm_f32x4_splat(CD_REAL_MAX);
+	for (int j = 0; j < otherCount; ++j)
+	{
+		v128_t dx = wasm_f32x4_sub(wasm_f32x4_splat(others[j].x), vx);
+		v128_t dy = wasm_f32x4_sub(wasm_f32x4_splat(others[j].y), vy);
+		/* pmin(d, lowest) is lowest < d ? lowest : d, cdMin(lowest, d)'s rule. */
+		v128_t d = wasm_f32x4_add(wasm_f32x4_mul(nx, dx), wasm_f32x4_mul(ny, dy));
+		lowest = wasm_f32x4_pmin(d, lowest);
+	}
+	return lowest;
+}
+#endif
+
 /* The largest separation of the points `others` from the convex core of `count` edges (count
  * <= CD2_MAX_POLYGON_VERTICES, normals[i] the outward normal of the edge from vertices[i]), and
  * in *edge the first edge that has it. */
@@ -114,6 +150,42 @@ static inline cdReal cd2MaxSeparation(const cd2Vec* normals, const cd2Vec* verti
 	_mm_storeu_ps(values + 4, high);
 	cdReal best = values[first];
 	/* The scalar scan starts from -CD_REAL_MAX and keeps edge 0 when nothing exceeds it. */
+	if (!(best > -CD_REAL_MAX))
+	{
+		*edge = 0;
+		return -CD_REAL_MAX;
+	}
+	*edge = first;
+	return best;
+#elif CD2_SEPARATION_WASM
+	_Static_assert(sizeof(cd2Vec) == 2 * sizeof(float), "cd2Vec must be two packed floats");
+	_Static_assert(CD2_MAX_POLYGON_VERTICES <= 8, "two groups of four edges");
+	CD_ASSERT(count >= 1 && count <= CD2_MAX_POLYGON_VERTICES && otherCount >= 1);
+	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+	v128_t nx, ny, vx, vy;
+	cd2SeparationLoad4Wasm(normals, 0, i1, i2, i3, &nx, &ny);
+	cd2SeparationLoad4Wasm(vertices, 0, i1, i2, i3, &vx, &vy);
+	v128_t low = cd2SeparationLanesWasm(nx, ny, vx, vy, others, otherCount);
+	v128_t high = low;
+	if (count > 4)
+	{
+		int i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
+		cd2SeparationLoad4Wasm(normals, 4, i5, i6, i7, &nx, &ny);
+		cd2SeparationLoad4Wasm(vertices, 4, i5, i6, i7, &vx, &vy);
+		high = cd2SeparationLanesWasm(nx, ny, vx, vy, others, otherCount);
+	}
+	/* pmax(b, a) is a > b ? a : b, as _mm_max_ps(a, b). */
+	v128_t top = wasm_f32x4_pmax(high, low);
+	top = wasm_f32x4_pmax(wasm_i32x4_shuffle(top, top, 2, 3, 0, 1), top);
+	top = wasm_f32x4_pmax(wasm_i32x4_shuffle(top, top, 1, 0, 3, 2), top);
+	int lanes = (int)(wasm_i32x4_bitmask(wasm_f32x4_eq(low, top)) |
+					  wasm_i32x4_bitmask(wasm_f32x4_eq(high, top)) << 4);
+	static const int8_t FIRST_LANE_WASM[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	int first = (lanes & 15) != 0 ? FIRST_LANE_WASM[lanes & 15] : 4 + FIRST_LANE_WASM[lanes >> 4];
+	float values[8];
+	wasm_v128_store(values, low);
+	wasm_v128_store(values + 4, high);
+	cdReal best = values[first];
 	if (!(best > -CD_REAL_MAX))
 	{
 		*edge = 0;

@@ -5,6 +5,7 @@
 import * as w from './wasm.js';
 import { num, nonNeg, int, obj, vec2, bool, fn, describe, throwResult, track, untrack } from './check.js';
 import { encode2 } from './shapes2.js';
+import { stagePoints2, chainError } from './chain2.js';
 
 const BODY_TYPES = ['static', 'kinematic', 'dynamic'];
 const SHAPE_TYPES = ['circle', 'capsule', 'polygon', 'segment', 'chainSegment'];
@@ -610,24 +611,32 @@ export class Body2 {
   }
 
   /**
-   * One-sided terrain through points [{x, y}] (body frame; see chain2.h for the winding: a floor
-   * runs from right to left). options: loop, friction, restitution. Returns its segment shapes.
+   * One-sided terrain (cd2CreateChainShape; see chain2.h for the winding: a floor runs from right
+   * to left, a loop around a solid counter-clockwise) through points in the body frame: an array
+   * of {x, y} or a Float32Array/Float64Array of x, y pairs. options: loop, friction, restitution,
+   * filter {categoryBits, maskBits, groupIndex}, enableSensorEvents. Returns a ChainShape2 whose
+   * `segments` are the chain's segment shapes (type 'chainSegment').
    */
   createChain(points, options = {}) {
     if (this._i === 0 || this.world._w < 0) throw staleError('Body2', 'createChain');
-    if (!Array.isArray(points)) throw new TypeError(`points must be an array of {x, y}, got ${describe(points)}`);
-    if (points.length < 2 || points.length > 1000) throw new RangeError(`points must hold 2 to 1000 points, got ${points.length}`);
     obj(options, 'options');
+    const [ptr, count] = stagePoints2(points, 'points');
     const p = io();
-    const vals = [points.length, options.loop === undefined ? 0 : (bool(options.loop, 'options.loop') ? 1 : 0),
-      opt(options, 'friction', nonNeg), opt(options, 'restitution', nonNeg)];
-    points.forEach((pt, k) => { const v = vec2(pt, `points[${k}]`); vals.push(v[0], v[1]); });
-    w.F32.set(vals, p);
-    const r = E().chain2Create(this.world._w, this._i, this._g);
+    const f = w.F32;
+    f[p] = options.loop === undefined ? 0 : (bool(options.loop, 'options.loop') ? 1 : 0);
+    f[p + 1] = options.friction === undefined ? NO_VALUE : nonNeg(options.friction, 'options.friction');
+    f[p + 2] = options.restitution === undefined ? NO_VALUE : nonNeg(options.restitution, 'options.restitution');
+    const filter = options.filter === undefined ? {} : obj(options.filter, 'options.filter');
+    writeWords(p + 3, bits64(filter.categoryBits, 'options.filter.categoryBits', [1, 0]));
+    writeWords(p + 5, bits64(filter.maskBits, 'options.filter.maskBits', ALL_BITS));
+    w.I32[p + 7] = filter.groupIndex === undefined ? 0 : int(filter.groupIndex, 'options.filter.groupIndex');
+    f[p + 8] = options.enableSensorEvents === undefined ? 0 : (bool(options.enableSensorEvents, 'options.enableSensorEvents') ? 1 : 0);
+    const r = E().chain2Create(this.world._w, this._i, this._g, ptr, count);
     if (r === 0) throw staleError('Body2', 'createChain');
-    if (r < 0) throw new RangeError('points are not a valid chain (coincident or too few distinct points)');
+    if (r < 0) chainError(-r, 'points');
+    const generation = w.I32[p];
     // The chain's segment shapes are the new shapes the world reports on the body.
-    return this._collectNewShapes();
+    return new ChainShape2(this, r, generation, this._collectNewShapes());
   }
 
   _collectNewShapes() {
@@ -773,6 +782,44 @@ World2.prototype.createJoint = function createJoint(def) {
   this._joints.set(key(r, joint._g), joint);
   return joint;
 };
+
+/**
+ * A chain on a body (World2): one-sided terrain made of segment shapes. `segments` are its
+ * BodyShape2 handles; destroy() removes the chain and its segments.
+ */
+export class ChainShape2 {
+  constructor(body, index1, generation, segments) {
+    this.body = body;
+    this._i = index1;
+    this._g = generation;
+    /** The segment shapes, in chain order. */
+    this.segments = segments;
+  }
+
+  get destroyed() {
+    const world = this.body.world;
+    return this._i === 0 || world._w < 0 || E().chain2SegmentCount(world._w, this._i, this._g) === 0;
+  }
+
+  get segmentCount() {
+    const world = this.body.world;
+    const n = this._i === 0 || world._w < 0 ? 0 : E().chain2SegmentCount(world._w, this._i, this._g);
+    if (n === 0) throw staleError('ChainShape2', 'segmentCount');
+    return n;
+  }
+
+  destroy() {
+    const world = this.body.world;
+    if (this._i === 0 || world._w < 0) return;
+    if (E().chain2Destroy(world._w, this._i, this._g) !== 0) {
+      for (const s of this.segments) {
+        world._shapes.delete(key(s._i, s._g));
+        s._i = 0;
+      }
+    }
+    this._i = 0;
+  }
+}
 
 export class Joint2 {
   constructor(world, index1, generation, type, bodyA, bodyB) {

@@ -822,3 +822,345 @@ int cdjs3OverlapSphereAabb(float cx, float cy, float cz, float r, float minX, fl
 			   ? 1
 			   : 0;
 }
+
+/* ==== 3D triangle meshes (lib/mesh3.js) ======================================================
+ * A mesh crosses as its pointer. Calls that place the mesh take its transform from IO[0..6]
+ * (position x y z, rotation x y z w), read before any result is written. Variable-length results
+ * go to a buffer of the caller's (out, capacity) and the return value is the full count, so the
+ * caller can grow the buffer and ask again. */
+
+static bool meshTransform(cd3Transform* t)
+{
+	if (!finiteAll(IO, 7))
+	{
+		return false;
+	}
+	*t = (cd3Transform){v3(IO), q3(IO + 3)};
+	return true;
+}
+
+/* Builds a mesh from `vertexCount` x y z triples and `triangleCount` index triples; the mesh
+ * pointer goes to IO[0] (0 on failure). Returns the cdResult. */
+EXPORT("mesh3Create")
+int cdjs3MeshCreate(const float* vertices, int vertexCount, const int* indices, int triangleCount)
+{
+	cd3Mesh* mesh = NULL;
+	cdResult result =
+		cd3CreateMesh((const cd3Vec*)(const void*)vertices, vertexCount, indices, triangleCount, &mesh);
+	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)mesh : 0);
+	return (int)result;
+}
+
+EXPORT("mesh3Destroy") void cdjs3MeshDestroy(cd3Mesh* mesh)
+{
+	cd3DestroyMesh(mesh);
+}
+
+/* IO: triangleCount, droppedTriangleCount, vertexCount, nodeCount, leafCount, depth,
+ * activeEdgeCount, bounds min (3), max (3), bytes; returns cd3ValidateMesh's result. */
+EXPORT("mesh3Info") int cdjs3MeshInfo(const cd3Mesh* mesh)
+{
+	cd3MeshStats s = cd3Mesh_GetStats(mesh);
+	IO[0] = (float)s.triangleCount;
+	IO[1] = (float)s.droppedTriangleCount;
+	IO[2] = (float)s.vertexCount;
+	IO[3] = (float)s.nodeCount;
+	IO[4] = (float)s.leafCount;
+	IO[5] = (float)s.depth;
+	IO[6] = (float)s.activeEdgeCount;
+	put3(IO + 7, s.bounds.min);
+	put3(IO + 10, s.bounds.max);
+	IO[13] = (float)s.bytes;
+	return (int)cd3ValidateMesh(mesh);
+}
+
+/* IO: a b c of the triangle with input index `index` (mesh space); 0 for a dropped or unknown index. */
+EXPORT("mesh3Triangle") int cdjs3MeshTriangle(const cd3Mesh* mesh, int index)
+{
+	cd3Triangle t;
+	if (!cd3Mesh_GetTriangle(mesh, index, &t))
+	{
+		return 0;
+	}
+	put3(IO, t.a);
+	put3(IO + 3, t.b);
+	put3(IO + 6, t.c);
+	return 1;
+}
+
+/* anyHit 0: IO gets fraction, point, normal, triangleIndex (int); 1: only whether it hits.
+ * Returns 1 on a hit, 0 on a miss, -64 for a non-finite transform or ray. */
+EXPORT("mesh3Raycast")
+int cdjs3MeshRaycast(const cd3Mesh* mesh, float ox, float oy, float oz, float tx, float ty, float tz,
+					 int anyHit)
+{
+	cd3Transform t;
+	const float ray[6] = {ox, oy, oz, tx, ty, tz};
+	if (!meshTransform(&t) || !finiteAll(ray, 6))
+	{
+		return -64;
+	}
+	cd3Ray r = {{ox, oy, oz}, {tx, ty, tz}};
+	if (anyHit)
+	{
+		return cd3RaycastMeshAny(mesh, t, r) ? 1 : 0;
+	}
+	cd3MeshRayHit hit;
+	if (!cd3RaycastMesh(mesh, t, r, &hit))
+	{
+		return 0;
+	}
+	IO[0] = hit.hit.fraction;
+	put3(IO + 1, hit.hit.point);
+	put3(IO + 4, hit.hit.normal);
+	putInt(IO + 7, hit.triangleIndex);
+	return 1;
+}
+
+typedef struct JsIndexList
+{
+	int32_t* out;
+	int capacity, count;
+} JsIndexList;
+
+static bool meshQueryCollect(int triangleIndex, void* context)
+{
+	JsIndexList* list = (JsIndexList*)context;
+	if (list->count < list->capacity)
+	{
+		list->out[list->count] = triangleIndex;
+	}
+	list->count++;
+	return true;
+}
+
+/* Input indices of the triangles whose bounds overlap the box (mesh space) into out (at most
+ * capacity); returns how many there are. */
+EXPORT("mesh3QueryAabb")
+int cdjs3MeshQueryAabb(const cd3Mesh* mesh, float minX, float minY, float minZ, float maxX, float maxY,
+					   float maxZ, int32_t* out, int capacity)
+{
+	JsIndexList list = {out, capacity, 0};
+	cd3Mesh_QueryAabb(mesh, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}}, meshQueryCollect, &list);
+	return list.count;
+}
+
+/* Shape A against the mesh: 1 when they touch. */
+EXPORT("mesh3Overlap") int cdjs3MeshOverlap(const cd3Mesh* mesh)
+{
+	cd3Transform t;
+	if (!meshTransform(&t))
+	{
+		return -64;
+	}
+	DECODE3_A
+	return cd3OverlapMesh(&a, mesh, t) ? 1 : 0;
+}
+
+/* IO: point, distance, triangleIndex (int). Returns 1, or 0 when nothing is within maxDistance. */
+EXPORT("mesh3ClosestPoint")
+int cdjs3MeshClosestPoint(const cd3Mesh* mesh, float px, float py, float pz, float maxDistance)
+{
+	cd3Transform t;
+	const float p[3] = {px, py, pz};
+	if (!meshTransform(&t) || !finiteAll(p, 3) || !(maxDistance >= 0.0f))
+	{
+		return -64;
+	}
+	cd3MeshClosestPoint result;
+	if (!cd3ClosestPointOnMesh(mesh, t, (cd3Vec){px, py, pz},
+							   isfinite(maxDistance) ? maxDistance : CD_REAL_MAX, &result))
+	{
+		return 0;
+	}
+	put3(IO, result.point);
+	IO[3] = result.distance;
+	putInt(IO + 4, result.triangleIndex);
+	return 1;
+}
+
+/* Shape A against the mesh: at most `capacity` manifolds into out, 25 floats each: triangleIndex
+ * (int), normal (3), pointCount, then 4 points of point (3), separation, id (uint32). Returns how
+ * many were written (cd3CollideMesh keeps the first `capacity` it meets). */
+#define MESH_MANIFOLD_FLOATS 25
+EXPORT("mesh3Collide")
+int cdjs3MeshCollide(const cd3Mesh* mesh, float speculativeDistance, float* out, int capacity)
+{
+	cd3Transform t;
+	if (!meshTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) ||
+		capacity < 0)
+	{
+		return -64;
+	}
+	DECODE3_A
+	if (capacity == 0)
+	{
+		return 0;
+	}
+	cd3MeshManifold* manifolds = (cd3MeshManifold*)malloc((size_t)capacity * sizeof(cd3MeshManifold));
+	if (manifolds == NULL)
+	{
+		return -(int)CD_ERROR_OUT_OF_MEMORY;
+	}
+	int n = cd3CollideMesh(&a, mesh, t, speculativeDistance, manifolds, capacity);
+	for (int k = 0; k < n; ++k)
+	{
+		const cd3Manifold* m = &manifolds[k].manifold;
+		float* o = out + MESH_MANIFOLD_FLOATS * k;
+		memset(o, 0, MESH_MANIFOLD_FLOATS * sizeof(float));
+		putInt(o, manifolds[k].triangleIndex);
+		put3(o + 1, m->normal);
+		o[4] = (float)m->pointCount;
+		for (int i = 0; i < m->pointCount; ++i)
+		{
+			float* q = o + 5 + 5 * i;
+			put3(q, m->points[i].point);
+			q[3] = m->points[i].separation;
+			putU32(q + 4, m->points[i].id);
+		}
+	}
+	free(manifolds);
+	return n;
+}
+
+/* ==== 2D chains (lib/chain2.js) ==============================================================
+ * As meshes: the chain crosses as its pointer, placed by IO[0..2] (position x y, angle). */
+
+static bool chainTransform(cd2Transform* t)
+{
+	if (!finiteAll(IO, 3))
+	{
+		return false;
+	}
+	*t = (cd2Transform){v2(IO), cd2MakeRot(IO[2])};
+	return true;
+}
+
+/* Builds a chain of `count` x y pairs; the pointer goes to IO[0] (0 on failure). Returns the cdResult. */
+EXPORT("chain2Build") int cdjs2ChainBuild(const float* points, int count, int isLoop)
+{
+	cd2Chain* chain = NULL;
+	cdResult result = cd2CreateChain((const cd2Vec*)(const void*)points, count, isLoop != 0, &chain);
+	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)chain : 0);
+	return (int)result;
+}
+
+EXPORT("chain2Free") void cdjs2ChainFree(cd2Chain* chain)
+{
+	cd2DestroyChain(chain);
+}
+
+/* IO: segmentCount, pointCount, isLoop, bounds min (2), max (2); returns the points (x y pairs,
+ * after welding). */
+EXPORT("chain2Info") const float* cdjs2ChainInfo(const cd2Chain* chain)
+{
+	IO[0] = (float)cd2Chain_GetSegmentCount(chain);
+	IO[1] = (float)cd2Chain_GetPointCount(chain);
+	IO[2] = cd2Chain_IsLoop(chain) ? 1.0f : 0.0f;
+	cd2Aabb b = cd2Chain_GetBounds(chain);
+	put2(IO + 3, b.min);
+	put2(IO + 5, b.max);
+	return &cd2Chain_GetPoints(chain)[0].x;
+}
+
+/* IO: ghost1, p1, p2, ghost2 of segment `index`; 0 when index is out of range. */
+EXPORT("chain2Segment") int cdjs2ChainSegment(const cd2Chain* chain, int index)
+{
+	if (index < 0 || index >= cd2Chain_GetSegmentCount(chain))
+	{
+		return 0;
+	}
+	cd2ChainSegment s = cd2Chain_GetSegment(chain, index);
+	put2(IO, s.ghost1);
+	put2(IO + 2, s.p1);
+	put2(IO + 4, s.p2);
+	put2(IO + 6, s.ghost2);
+	return 1;
+}
+
+/* IO: fraction, point, normal, segmentIndex (int). 1 on a hit, 0 on a miss, -64 for bad input. */
+EXPORT("chain2Raycast") int cdjs2ChainRaycast(const cd2Chain* chain, float ox, float oy, float tx, float ty)
+{
+	cd2Transform t;
+	const float ray[4] = {ox, oy, tx, ty};
+	if (!chainTransform(&t) || !finiteAll(ray, 4))
+	{
+		return -64;
+	}
+	cd2RayHit hit;
+	int segment = -1;
+	if (!cd2RaycastChain(chain, t, (cd2Ray){{ox, oy}, {tx, ty}}, &hit, &segment))
+	{
+		return 0;
+	}
+	IO[0] = hit.fraction;
+	put2(IO + 1, hit.point);
+	put2(IO + 3, hit.normal);
+	putInt(IO + 5, segment);
+	return 1;
+}
+
+/* Segments whose bounds overlap the box (world space) into out (at most capacity); returns how
+ * many there are, -64 for bad input. */
+EXPORT("chain2QueryAabb")
+int cdjs2ChainQueryAabb(const cd2Chain* chain, float minX, float minY, float maxX, float maxY, int32_t* out,
+						int capacity)
+{
+	cd2Transform t;
+	const float box[4] = {minX, minY, maxX, maxY};
+	if (!chainTransform(&t) || !finiteAll(box, 4))
+	{
+		return -64;
+	}
+	JsIndexList list = {out, capacity, 0};
+	cd2Chain_QueryAabb(chain, t, (cd2Aabb){{minX, minY}, {maxX, maxY}}, meshQueryCollect, &list);
+	return list.count;
+}
+
+/* The chain (A) against shape A of the scratch block (B): at most `capacity` manifolds into out,
+ * 12 floats each: segmentIndex (int), normal (2), pointCount, then 2 points of point (2),
+ * separation, id (uint32). Returns how many were written. */
+#define CHAIN_MANIFOLD_FLOATS 12
+EXPORT("chain2Collide")
+int cdjs2ChainCollide(const cd2Chain* chain, float speculativeDistance, float* out, int capacity)
+{
+	cd2Transform t;
+	if (!chainTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) ||
+		capacity < 0)
+	{
+		return -64;
+	}
+	DECODE2_A
+	if (capacity == 0)
+	{
+		return 0;
+	}
+	cd2Manifold* manifolds = (cd2Manifold*)malloc((size_t)capacity * sizeof(cd2Manifold));
+	int* segments = (int*)malloc((size_t)capacity * sizeof(int));
+	if (manifolds == NULL || segments == NULL)
+	{
+		free(manifolds);
+		free(segments);
+		return -(int)CD_ERROR_OUT_OF_MEMORY;
+	}
+	int n = cd2CollideChain(chain, t, &a, speculativeDistance, manifolds, capacity, segments);
+	for (int k = 0; k < n; ++k)
+	{
+		const cd2Manifold* m = manifolds + k;
+		float* o = out + CHAIN_MANIFOLD_FLOATS * k;
+		memset(o, 0, CHAIN_MANIFOLD_FLOATS * sizeof(float));
+		putInt(o, segments[k]);
+		put2(o + 1, m->normal);
+		o[3] = (float)m->pointCount;
+		for (int i = 0; i < m->pointCount; ++i)
+		{
+			float* q = o + 4 + 4 * i;
+			put2(q, m->points[i].point);
+			q[2] = m->points[i].separation;
+			putU32(q + 3, m->points[i].id);
+		}
+	}
+	free(manifolds);
+	free(segments);
+	return n;
+}

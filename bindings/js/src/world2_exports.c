@@ -678,40 +678,75 @@ EXPORT("shape2Create") int cdjsShape2Create(int world0, int index1, int generati
 	return shape.index1;
 }
 
-/* A loop or open chain on the body: IO holds count, isLoop, friction, restitution, then the
- * points (x, y)...; returns the number of segment shapes made (their ids follow in IO as index1,
- * generation pairs) or -1. Chains are kept alive with their body. */
-EXPORT("chain2Create") int cdjsChain2Create(int world0, int index1, int generation)
+/* A loop or open chain on the body (cd2CreateChainShape): `count` points (x y pairs, body frame)
+ * at `points`; IO holds isLoop, friction, restitution (NaN: default), categoryBits (2 words),
+ * maskBits (2 words), groupIndex (int), enableSensorEvents. Returns the chain's index1 with its
+ * generation in IO[0] and its segment count in IO[1]; 0 for a stale body, -cdResult for bad points.
+ * The chain's segment shapes are the body's new shapes (body2Shapes). */
+EXPORT("chain2Create")
+int cdjsChain2Create(int world0, int index1, int generation, const float* points, int count)
 {
 	BODY_OR(0)
 	const float* in = IO;
-	int count = (int)in[0];
-	if (count < 2 || count > 1000)
-	{
-		return -1;
-	}
-	cd2Vec* points = (cd2Vec*)malloc((size_t)count * sizeof(cd2Vec));
-	if (points == NULL)
-	{
-		return -1;
-	}
-	for (int i = 0; i < count; ++i)
-	{
-		points[i] = (cd2Vec){in[4 + 2 * i], in[5 + 2 * i]};
-	}
 	cd2ChainDef def = cd2DefaultChainDef();
-	def.points = points;
+	def.points = (const cd2Vec*)(const void*)points;
 	def.count = count;
-	def.isLoop = in[1] != 0.0f;
-	def.friction = orDefault(in[2], def.friction);
-	def.restitution = orDefault(in[3], def.restitution);
+	def.isLoop = in[0] != 0.0f;
+	def.friction = orDefault(in[1], def.friction);
+	def.restitution = orDefault(in[2], def.restitution);
+	def.filter.categoryBits = getU64(in + 3);
+	def.filter.maskBits = getU64(in + 5);
+	def.filter.groupIndex = getInt(in + 7);
+	def.enableSensorEvents = in[8] != 0.0f;
+	if (points == NULL || count < 0)
+	{
+		return -(int)CD_ERROR_INVALID_ARGUMENT;
+	}
+	/* The same checks as cd2CreateChain, for a precise error (the world only says "null id"). */
+	cd2Chain* probe = NULL;
+	cdResult result = cd2CreateChain(def.points, count, def.isLoop, &probe);
+	cd2DestroyChain(probe);
+	if (result != CD_OK)
+	{
+		return -(int)result;
+	}
 	cd2ChainId chain = cd2CreateChainShape(id, &def);
-	free(points);
 	if (chain.index1 == 0)
 	{
-		return -1;
+		return -(int)CD_ERROR_INVALID_ARGUMENT;
 	}
-	return cd2ChainShape_GetSegmentCount(chain);
+	putInt(IO, (int32_t)chain.generation);
+	IO[1] = (float)cd2ChainShape_GetSegmentCount(chain);
+	return chain.index1;
+}
+
+static bool validChain(int world0, int index1, int generation, cd2ChainId* out)
+{
+	if (world0 < 0 || world0 >= CD2_MAX_WORLDS || index1 <= 0 || getWorld(world0) == NULL)
+	{
+		return false;
+	}
+	*out = (cd2ChainId){index1, (uint16_t)world0, (uint32_t)generation};
+	return cd2ChainShape_IsValid(*out);
+}
+
+/* The chain's segment count, 0 for a stale chain. */
+EXPORT("chain2SegmentCount") int cdjsChain2SegmentCount(int world0, int index1, int generation)
+{
+	cd2ChainId chain;
+	return validChain(world0, index1, generation, &chain) ? cd2ChainShape_GetSegmentCount(chain) : 0;
+}
+
+/* Destroys the chain and its segment shapes; 0 for a stale chain. */
+EXPORT("chain2Destroy") int cdjsChain2Destroy(int world0, int index1, int generation)
+{
+	cd2ChainId chain;
+	if (!validChain(world0, index1, generation, &chain))
+	{
+		return 0;
+	}
+	cd2DestroyChainShape(chain);
+	return 1;
 }
 
 /* The body's shape ids into the output list (index1, generation each); count in IO[0]. */

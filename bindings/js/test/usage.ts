@@ -89,7 +89,7 @@ export async function main(): Promise<number> {
   const names: readonly string[] = [...BROADPHASE_TYPES, ...SHAPE2_TYPES, ...SHAPE3_TYPES];
   return Number(hit) + cp.x + frac + d + (sep ?? 0) + Number(cast.hit) + state.length + bounds.max.x + mass + all3.length +
     texts.length + idx.length + canvas.length + view.length + Number(moved) + changed + pairs.length + q2.length + st +
-    names.length + MAX_POLYGON_VERTICES + Number(build) + world2Usage();
+    names.length + MAX_POLYGON_VERTICES + Number(build) + world2Usage() + meshChainUsage();
 }
 
 // Calls that must not type-check (never run).
@@ -100,6 +100,10 @@ export function typeErrors(): void {
   circle({ x: 0, y: 0 }, '1');
   // @ts-expect-error ids must be an Int32Array
   new BroadPhase2().moveProxies([1, 2], new Float32Array(8));
+  // @ts-expect-error mesh indices are integers in a typed array or number[], not points
+  new c.Mesh3(new Float32Array(9), [{ x: 0, y: 0, z: 0 }]);
+  // @ts-expect-error a mesh has no manifold for a plane
+  new c.Mesh3(new Float32Array(9), [0, 1, 2]).manifolds(plane({ x: 0, y: 1, z: 0 }, 0));
 }
 
 // The 2D world (called by main() once the module is loaded).
@@ -123,4 +127,32 @@ export function world2Usage(): number {
   void [t, ev, hit, p, shape.friction];
   world.destroy();
   return world.destroyed ? 1 : 0;
+}
+
+// Meshes and chains (called by main()).
+export function meshChainUsage(): number {
+  const mesh = new c.Mesh3(new Float32Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 1]), new Uint32Array([0, 2, 1, 1, 2, 3]));
+  const tf: c.MeshTransform3 = { position: { x: 0, y: 1, z: 0 } };
+  const hit: c.MeshRayHit3 | null = mesh.raycast({ origin: { x: 0.3, y: 3, z: 0.3 }, translation: { x: 0, y: -4, z: 0 } }, tf);
+  const any: boolean = mesh.raycastAny({ origin: { x: 0.3, y: 3, z: 0.3 }, translation: { x: 0, y: -4, z: 0 } });
+  const tris: Int32Array = mesh.queryAabb({ min: { x: 0, y: -1, z: 0 }, max: { x: 1, y: 1, z: 1 } });
+  const ms: c.MeshManifold3[] = mesh.manifolds(sphere({ x: 0.5, y: 0.2, z: 0.5 }, 0.3), undefined, { speculativeDistance: 0.1 });
+  const cp: c.MeshClosestPoint3 | null = mesh.closestPoint({ x: 2, y: 0, z: 0 });
+  const tri: c.Triangle | null = mesh.triangle(0);
+  const over: boolean = mesh.overlap(sphere({ x: 0, y: 0, z: 0 }, 0.1));
+  mesh.destroy();
+  const chain = new c.Chain2([{ x: 4, y: 0 }, { x: 0, y: 0 }, { x: -4, y: 0 }], { loop: false });
+  const chit: c.ChainRayHit2 | null = chain.raycast({ origin: { x: 1, y: 2 }, translation: { x: 0, y: -4 } }, { angle: 0 });
+  const seg: c.ChainSegment2 = chain.segment(0);
+  const cm: c.ChainManifold2[] = chain.manifolds(circle({ x: 1, y: 0.4 }, 0.5));
+  const segs: Int32Array = chain.queryAabb({ min: { x: -1, y: -1 }, max: { x: 1, y: 1 } });
+  const pts: Float32Array = chain.points;
+  chain.destroy();
+  const world = new c.World2();
+  const terrain: c.ChainShape2 = world.createBody().createChain(new Float32Array([2, 0, 0, 0, -2, 0]), { friction: 0.4, filter: { groupIndex: 1 } });
+  const n = terrain.segmentCount + terrain.segments.length;
+  terrain.destroy();
+  world.destroy();
+  return (hit?.triangleIndex ?? 0) + Number(any) + tris.length + ms.length + (cp?.distance ?? 0) + (tri ? 1 : 0) +
+    Number(over) + (chit?.segmentIndex ?? 0) + seg.p1.x + cm.length + segs.length + pts.length + n;
 }
