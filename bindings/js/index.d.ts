@@ -321,6 +321,8 @@ export interface WorldDef2 {
   gravity?: Vec2; enableSleep?: boolean; enableContinuous?: boolean;
   contactHertz?: number; contactDampingRatio?: number; jointHertz?: number; jointDampingRatio?: number;
   restitutionThreshold?: number; hitEventThreshold?: number; maximumLinearSpeed?: number; contactPushMaxVelocity?: number;
+  /** metres (default 0.02): a contact whose bodies moved less than this relative to each other keeps its manifold; 0 turns it off */
+  contactRecycleDistance?: number;
 }
 
 export interface BodyDef2 {

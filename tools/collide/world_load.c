@@ -1310,6 +1310,7 @@ static const Field s_worldFields[] = {
 	{"contactHertz", FIELD_REAL, offsetof(cd2WorldDef, contactHertz)},
 	{"contactDampingRatio", FIELD_REAL, offsetof(cd2WorldDef, contactDampingRatio)},
 	{"contactPushMaxVelocity", FIELD_REAL, offsetof(cd2WorldDef, contactPushMaxVelocity)},
+	{"contactRecycleDistance", FIELD_REAL, offsetof(cd2WorldDef, contactRecycleDistance)},
 	{"jointHertz", FIELD_REAL, offsetof(cd2WorldDef, jointHertz)},
 	{"jointDampingRatio", FIELD_REAL, offsetof(cd2WorldDef, jointDampingRatio)},
 	{"maximumLinearSpeed", FIELD_REAL, offsetof(cd2WorldDef, maximumLinearSpeed)},

@@ -173,7 +173,7 @@ static bool validJoint(int world0, int index1, int generation, cd2JointId* out)
 /* ---- worlds ----------------------------------------------------------------------------------
  * IO in: gravity x y, enableSleep, enableContinuous, contactHertz, contactDampingRatio,
  * jointHertz, jointDampingRatio, restitutionThreshold, hitEventThreshold, maximumLinearSpeed,
- * contactPushMaxVelocity (NaN: default). Returns world0 + 1, 0 on failure. */
+ * contactPushMaxVelocity, contactRecycleDistance (NaN: default). Returns world0 + 1, 0 on failure. */
 EXPORT("world2Create") int cdjsWorld2Create(void)
 {
 	const float* in = IO;
@@ -190,6 +190,7 @@ EXPORT("world2Create") int cdjsWorld2Create(void)
 	def.hitEventThreshold = orDefault(in[9], def.hitEventThreshold);
 	def.maximumLinearSpeed = orDefault(in[10], def.maximumLinearSpeed);
 	def.contactPushMaxVelocity = orDefault(in[11], def.contactPushMaxVelocity);
+	def.contactRecycleDistance = orDefault(in[12], def.contactRecycleDistance);
 	cd2WorldId id = cd2CreateWorld(&def);
 	if (id.index1 == 0)
 	{

@@ -32,6 +32,24 @@ test('free fall follows the sub-stepped semi-implicit Euler integrator exactly',
   world.destroy();
 });
 
+test('contactRecycleDistance: a resting stack settles with and without recycling; a negative one throws', () => {
+  const tops = [];
+  for (const contactRecycleDistance of [0, 0.02]) {
+    const { world } = groundWorld({ enableSleep: false, contactRecycleDistance });
+    let top;
+    for (let i = 0; i < 5; i++) {
+      top = world.createBody({ type: 'dynamic', position: { x: 0, y: 0.5 + i } });
+      top.createShape(unitBox());
+    }
+    for (let i = 0; i < 180; i++) world.step(DT, 4);
+    tops.push(top.position.y);
+    assert.ok(Math.abs(top.position.y - 4.5) < 0.05, `top at ${top.position.y} with recycling ${contactRecycleDistance}`);
+    world.destroy();
+  }
+  assert.ok(Math.abs(tops[0] - tops[1]) < 0.01, `tops ${tops}`);
+  assert.throws(() => new c.World2({ contactRecycleDistance: -1 }), { name: 'RangeError', message: /contactRecycleDistance/ });
+});
+
 test('mass and inertia from the shapes', () => {
   const world = new c.World2();
   const disc = world.createBody({ type: 'dynamic' });
