@@ -22,13 +22,13 @@ static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index,
 	return context->bodies + index;
 }
 
-void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
+void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
 {
 	/* Runs in contact index order (before the colour sort), reading the dense solver bodies: the
 	 * contacts are read front to back and the bodies from a small array. */
 	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
 										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
 		const cd2Contact* contact = world->contacts.data + c->contact;
@@ -272,9 +272,9 @@ void cd2ApplyRestitution(cd2StepContext* context)
 	}
 }
 
-void cd2StoreImpulses(cd2World* world, cd2StepContext* context)
+void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start, int end)
 {
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		const cd2ContactConstraint* c = context->constraints + i;
 		cd2Contact* contact = world->contacts.data + c->contact;
