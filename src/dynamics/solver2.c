@@ -475,6 +475,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* Touching contacts with an awake body, prepared in index order. */
 	int hitCandidates = 0;
+	int bouncing = 0; /* constraints with restitution */
 	int contactCapacity = world->contacts.count;
 	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
@@ -493,6 +494,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			continue;
 		}
 		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
+		bouncing += contact->restitution != CD_R(0.0) ? 1 : 0;
 		cd2ContactConstraint* c = context.constraints + context.constraintCount++;
 		c->contact = i;
 		c->indexA = indexA;
@@ -590,7 +592,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}
 	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
-	cd2AddStage(&list, CD2_STAGE_RESTITUTION, context.constraintCount > 0 ? 1 : 0, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_RESTITUTION, bouncing > 0 ? 1 : 0, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount, 32, 0, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
