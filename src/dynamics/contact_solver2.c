@@ -24,13 +24,15 @@ static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index,
 
 void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
 {
-	/* Runs in contact index order (before the colour sort), reading the dense solver bodies: the
-	 * contacts are read front to back and the bodies from a small array. */
+	/* Fills each constraint from its pair (context->pairs), its contact and the dense solver bodies. */
 	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
 										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
 	for (int i = start; i < end; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
+		c->contact = context->pairs[i].contact;
+		c->indexA = context->pairs[i].indexA;
+		c->indexB = context->pairs[i].indexB;
 		const cd2Contact* contact = world->contacts.data + c->contact;
 		/* A sleeping or static body is immovable for this step. */
 		const cd2SolverBody* bodyA = c->indexA < 0 ? &zeroBody : context->bodies + c->indexA;

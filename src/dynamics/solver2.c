@@ -473,13 +473,24 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		}
 	}
 
-	/* Touching contacts with an awake body, prepared in index order. */
+	/* Touching contacts with an awake body: their pairs in index order, small records (the constraints
+	 * themselves are filled by the prepare stage, in colour order). */
 	int hitCandidates = 0;
 	int bouncing = 0; /* constraints with restitution */
 	int contactCapacity = world->contacts.count;
+	cd2ConstraintPair* pairs =
+		(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
+	/* The colouring's bodies of each pair. */
+	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
+	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
-	for (int i = 0; i < world->contacts.count && context.constraints != NULL; ++i)
+	if (contactCapacity > 0 && (pairs == NULL || bodyA == NULL || bodyB == NULL || context.constraints == NULL))
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	for (int i = 0; i < world->contacts.count; ++i)
 	{
 		const cd2Contact* contact = world->contacts.data + i;
 		if (!contact->inUse || contact->pointCount == 0 ||
@@ -495,44 +506,33 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		}
 		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
 		bouncing += contact->restitution != CD_R(0.0) ? 1 : 0;
-		cd2ContactConstraint* c = context.constraints + context.constraintCount++;
-		c->contact = i;
-		c->indexA = indexA;
-		c->indexB = indexB;
+		int k = context.constraintCount++;
+		pairs[k].contact = i;
+		pairs[k].indexA = indexA;
+		pairs[k].indexB = indexB;
+		bodyA[k] = colorBodyOf[contact->bodyA];
+		bodyB[k] = colorBodyOf[contact->bodyB];
 	}
-	context.indexOrder = context.constraints;
+	context.indexOrder = pairs;
+	context.pairs = pairs;
 	/* Colour order (see graph_color.h). */
 	if (context.constraintCount > 1)
 	{
 		int n = context.constraintCount;
-		int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		cd2ContactConstraint* sorted = (cd2ContactConstraint*)cdArena_AllocUncleared(
-			&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
-		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && sorted != NULL)
+		cd2ConstraintPair* sorted =
+			(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ConstraintPair));
+		if (colors != NULL && order != NULL && sorted != NULL &&
+			cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
 		{
 			for (int i = 0; i < n; ++i)
 			{
-				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
-				bodyA[i] = colorBodyOf[contact->bodyA];
-				bodyB[i] = colorBodyOf[contact->bodyB];
+				sorted[i] = pairs[order[i]];
+				bodyA[i] = colors[order[i]];
 			}
-			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
-			{
-				/* Only the pair: the constraints are prepared in colour order below. */
-				for (int i = 0; i < n; ++i)
-				{
-					const cd2ContactConstraint* c = context.constraints + order[i];
-					sorted[i].contact = c->contact;
-					sorted[i].indexA = c->indexA;
-					sorted[i].indexB = c->indexB;
-					bodyA[i] = colors[order[i]];
-				}
-				context.constraints = sorted;
-				context.colorOfConstraint = bodyA;
-			}
+			context.pairs = sorted;
+			context.colorOfConstraint = bodyA;
 		}
 	}
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));

@@ -203,6 +203,13 @@ typedef struct cd2ContactConstraintPoint
 	cdReal normalMass, tangentMass;
 } cd2ContactConstraintPoint;
 
+/* A touching contact's pair of solver bodies, what a constraint is prepared from. */
+typedef struct cd2ConstraintPair
+{
+	int contact;
+	int indexA, indexB; /* solver bodies, CD2_NULL_INDEX for static (or sleeping) */
+} cd2ConstraintPair;
+
 typedef struct cd2ContactConstraint
 {
 	int contact;
@@ -253,7 +260,8 @@ typedef struct cd2StepContext
 	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
 	cd2ContactConstraint* constraints;
-	cd2ContactConstraint* indexOrder; /* the same before the colour sort, in contact index order */
+	const cd2ConstraintPair* pairs;		 /* of each constraint (colour order), for cd2PrepareContacts */
+	const cd2ConstraintPair* indexOrder; /* the same in contact index order */
 	int constraintCount;
 	/* The coloured constraints in wide blocks, colour by colour; the constraints from
 	 * overflowStart on (the overflow colour) are solved one by one after them. */
