@@ -25,6 +25,7 @@
 typedef struct TestTaskSystem
 {
 	bool threaded;
+	bool atEnqueue; /* run every piece inside enqueueTask and return NULL (the task already ran) */
 	int workerCount;
 	int enqueued;  /* tasks handed to the system */
 	int badRanges; /* pieces shorter than minRange (not last) or tasks with no items */
@@ -76,6 +77,11 @@ static void* TestEnqueue(cdTaskCallback* task, int itemCount, int minRange, void
 	system->taskContext = taskContext;
 	system->itemCount = itemCount;
 	system->minRange = minRange;
+	if (system->atEnqueue)
+	{
+		RunPieces(system, 0, 1);
+		return NULL;
+	}
 #if HAVE_PTHREADS
 	if (system->threaded)
 	{
@@ -251,8 +257,9 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 							"run %d, %d workers, user tasks (%s): hash %016llx, single thread %016llx", run,
 							workers[k], threaded ? "threads" : "inline", (unsigned long long)h,
 							(unsigned long long)reference);
-				/* One worker: the step runs alone; more: the step hands its stages to the system. */
-				TEST_CHECKF(workers[k] == 1 ? system.enqueued == 0 : system.enqueued > STEPS,
+				/* One worker: the step runs alone; more: every step hands its solver stages to the
+				 * system (one task for the further workers, and any others). */
+				TEST_CHECKF(workers[k] == 1 ? system.enqueued == 0 : system.enqueued >= STEPS,
 							"%d workers: %d tasks enqueued", workers[k], system.enqueued);
 				TEST_CHECK(system.badRanges == 0);
 			}
@@ -267,6 +274,28 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 	TEST_CHECKF(reference == committed, "hash %016llx, committed %016llx", (unsigned long long)reference,
 				(unsigned long long)committed);
 #endif
+}
+
+/* A task system that runs each task to the end inside enqueueTask, before the stepping thread goes
+ * on: the step's further workers' task then does the whole solve on its own, and the step must
+ * neither wait for it forever nor change a bit. */
+static void TestTasksRunInsideEnqueue(void)
+{
+	int count = 0;
+	uint64_t reference = RunPile(1, NULL, &count);
+	int workers[2] = {2, 4};
+	for (int k = 0; k < 2; ++k)
+	{
+		TestTaskSystem system;
+		memset(&system, 0, sizeof(system));
+		system.atEnqueue = true;
+		int n = 0;
+		uint64_t h = RunPile(workers[k], &system, &n);
+		TEST_CHECKF(h == reference, "%d workers, tasks run at enqueue: hash %016llx, single thread %016llx",
+					workers[k], (unsigned long long)h, (unsigned long long)reference);
+		TEST_CHECKF(system.enqueued >= STEPS, "%d workers: %d tasks enqueued", workers[k], system.enqueued);
+		TEST_CHECK(system.badRanges == 0);
+	}
 }
 
 static int s_refusals = 0;
@@ -329,6 +358,7 @@ static void TestPoolCreateDestroy(void)
 int main(void)
 {
 	TEST_RUN(TestSameBitsEveryRunAndWorkerCount);
+	TEST_RUN(TestTasksRunInsideEnqueue);
 	TEST_RUN(TestHalfATaskSystemIsRefused);
 	TEST_RUN(TestPoolCreateDestroy);
 	return TEST_SUMMARY();

@@ -33,10 +33,26 @@ void cdThreadPool_Finish(void* userTask, void* pool)
 	(void)pool;
 }
 
+void* cdThreadPool_EnqueueEach(cdTaskCallback* task, int itemCount, void* taskContext, cdThreadPool* pool)
+{
+	(void)pool;
+	task(0, itemCount, 0, taskContext);
+	return NULL;
+}
+
+void cdThreadPool_Wait(int spin)
+{
+	(void)spin;
+}
+
 #else
 
 #include <pthread.h>
+#include <sched.h>
 #include <stdatomic.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <stdlib.h>
 #include <string.h>
 
@@ -177,6 +193,27 @@ void cdThreadPool_Destroy(cdThreadPool* pool)
 	cdFree(pool);
 }
 
+/* Publishes the task (blocks of blockSize items) and wakes the threads. */
+static void* cdPoolStart(cdThreadPool* pool, cdTaskCallback* task, int itemCount, int blockSize, void* taskContext)
+{
+	pthread_mutex_lock(&pool->mutex);
+	/* A thread that woke late for the last task may still be looking at it. */
+	while (pool->active > 0)
+	{
+		pthread_cond_wait(&pool->done, &pool->mutex);
+	}
+	pool->task = task;
+	pool->taskContext = taskContext;
+	pool->itemCount = itemCount;
+	pool->blockSize = blockSize;
+	pool->blockCount = (itemCount + blockSize - 1) / blockSize;
+	atomic_store(&pool->nextBlock, 0);
+	pool->generation++;
+	pthread_cond_broadcast(&pool->wake);
+	pthread_mutex_unlock(&pool->mutex);
+	return pool;
+}
+
 void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext,
 						   void* userContext)
 {
@@ -198,22 +235,31 @@ void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, vo
 		task(0, itemCount, 0, taskContext);
 		return NULL;
 	}
-	pthread_mutex_lock(&pool->mutex);
-	/* A thread that woke late for the last task may still be looking at it. */
-	while (pool->active > 0)
+	return cdPoolStart(pool, task, itemCount, blockSize, taskContext);
+}
+
+void* cdThreadPool_EnqueueEach(cdTaskCallback* task, int itemCount, void* taskContext, cdThreadPool* pool)
+{
+	if (itemCount <= 0)
 	{
-		pthread_cond_wait(&pool->done, &pool->mutex);
+		return NULL;
 	}
-	pool->task = task;
-	pool->taskContext = taskContext;
-	pool->itemCount = itemCount;
-	pool->blockSize = blockSize;
-	pool->blockCount = (itemCount + blockSize - 1) / blockSize;
-	atomic_store(&pool->nextBlock, 0);
-	pool->generation++;
-	pthread_cond_broadcast(&pool->wake);
-	pthread_mutex_unlock(&pool->mutex);
-	return pool;
+	return cdPoolStart(pool, task, itemCount, 1, taskContext);
+}
+
+void cdThreadPool_Wait(int spin)
+{
+	if (spin < 64)
+	{
+#if defined(__SSE2__)
+		for (int i = 0; i < 8; ++i)
+		{
+			_mm_pause();
+		}
+#endif
+		return;
+	}
+	sched_yield();
 }
 
 void cdThreadPool_Finish(void* userTask, void* userContext)

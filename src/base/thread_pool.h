@@ -17,5 +17,12 @@ cdThreadPool* cdThreadPool_Create(int workerCount);
 void cdThreadPool_Destroy(cdThreadPool* pool);
 void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, void* taskContext, void* pool);
 void cdThreadPool_Finish(void* userTask, void* pool);
+/* Hands each of the itemCount items to the pool's threads as a range of its own, never running
+ * one on the calling thread here (cdThreadPool_Enqueue runs a task of one range inline); finish
+ * it with cdThreadPool_Finish, which runs the items no thread has taken yet. */
+void* cdThreadPool_EnqueueEach(cdTaskCallback* task, int itemCount, void* taskContext, cdThreadPool* pool);
+/* One turn of a wait for another thread's work: spin counts the turns of this wait (0, 1, ...);
+ * the first turns pause the processor briefly, the later ones give it to another thread. */
+void cdThreadPool_Wait(int spin);
 
 #endif

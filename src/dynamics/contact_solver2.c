@@ -22,15 +22,17 @@ static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index,
 	return context->bodies + index;
 }
 
-void cd2PrepareContacts(cd2World* world, cd2StepContext* context)
+void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
 {
-	/* Runs in contact index order (before the colour sort), reading the dense solver bodies: the
-	 * contacts are read front to back and the bodies from a small array. */
+	/* Fills each constraint from its pair (context->pairs), its contact and the dense solver bodies. */
 	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
 										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2ContactConstraint* c = context->constraints + i;
+		c->contact = context->pairs[i].contact;
+		c->indexA = context->pairs[i].indexA;
+		c->indexB = context->pairs[i].indexB;
 		const cd2Contact* contact = world->contacts.data + c->contact;
 		/* A sleeping or static body is immovable for this step. */
 		const cd2SolverBody* bodyA = c->indexA < 0 ? &zeroBody : context->bodies + c->indexA;
@@ -272,9 +274,9 @@ void cd2ApplyRestitution(cd2StepContext* context)
 	}
 }
 
-void cd2StoreImpulses(cd2World* world, cd2StepContext* context)
+void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start, int end)
 {
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		const cd2ContactConstraint* c = context->constraints + i;
 		cd2Contact* contact = world->contacts.data + c->contact;

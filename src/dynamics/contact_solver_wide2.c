@@ -119,6 +119,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	}
 	int overflowStart = n;
 	int blockCount = 0;
+	int colorCount = 0;
 	for (int i = 0; i < n;)
 	{
 		if (color[i] >= CD_GRAPH_COLOR_COUNT)
@@ -131,89 +132,93 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 		{
 			++j;
 		}
+		context->colorBlockStart[colorCount] = blockCount;
+		context->colorConstraintStart[colorCount] = i;
+		++colorCount;
 		blockCount += (j - i + CD_W - 1) / CD_W;
 		i = j;
 	}
+	context->colorBlockStart[colorCount] = blockCount;
+	context->colorConstraintStart[colorCount] = overflowStart;
 	cd2ContactConstraintWide* wide = (cd2ContactConstraintWide*)cdArena_AllocUncleared(
 		&world->arena, (size_t)blockCount * sizeof(cd2ContactConstraintWide));
 	if (blockCount > 0 && wide == NULL)
 	{
 		return false;
 	}
-	memset(wide, 0, (size_t)blockCount * sizeof(cd2ContactConstraintWide));
-	int zeroBody = context->bodyCount;
-	int block = 0;
-	int colorCount = 0;
-	for (int i = 0; i < overflowStart;)
-	{
-		int j = i;
-		while (j < overflowStart && color[j] == color[i])
-		{
-			++j;
-		}
-		context->colorBlockStart[colorCount++] = block;
-		for (int start = i; start < j; start += CD_W, ++block)
-		{
-			cd2ContactConstraintWide* w = wide + block;
-			for (int lane = 0; lane < CD_W; ++lane)
-			{
-				w->indexA[lane] = zeroBody;
-				w->indexB[lane] = zeroBody;
-				w->constraint[lane] = -1;
-				/* An empty lane's rotation is the identity, like the zero body's. */
-				if (start + lane >= j)
-				{
-					continue;
-				}
-				const cd2ContactConstraint* c = context->constraints + start + lane;
-				w->constraint[lane] = start + lane;
-				w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
-				w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
-				/* Immovable: both inverse masses zero (the velocity update would add nothing). */
-				w->movesA[lane] =
-					(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
-				w->movesB[lane] =
-					(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
-				cdWSetLane(&w->invMassA, lane, c->invMassA);
-				cdWSetLane(&w->invIA, lane, c->invIA);
-				cdWSetLane(&w->invMassB, lane, c->invMassB);
-				cdWSetLane(&w->invIB, lane, c->invIB);
-				cdWSetLane(&w->normalX, lane, c->normal.x);
-				cdWSetLane(&w->normalY, lane, c->normal.y);
-				cdWSetLane(&w->friction, lane, c->friction);
-				cdWSetLane(&w->tangentSpeed, lane, c->tangentSpeed);
-				cdWSetLane(&w->rollingResistance, lane, c->rollingResistance);
-				cdWSetLane(&w->rollingMass, lane, c->rollingMass);
-				cdWSetLane(&w->rollingImpulse, lane, c->rollingImpulse);
-				cdWSetLane(&w->biasRate, lane, c->softness.biasRate);
-				cdWSetLane(&w->massScale, lane, c->softness.massScale);
-				cdWSetLane(&w->impulseScale, lane, c->softness.impulseScale);
-				for (int k = 0; k < c->pointCount; ++k)
-				{
-					const cd2ContactConstraintPoint* cp = c->points + k;
-					cd2ContactPointWide* wp = w->points + k;
-					cdWSetLane(&wp->anchorAx, lane, cp->anchorA.x);
-					cdWSetLane(&wp->anchorAy, lane, cp->anchorA.y);
-					cdWSetLane(&wp->anchorBx, lane, cp->anchorB.x);
-					cdWSetLane(&wp->anchorBy, lane, cp->anchorB.y);
-					cdWSetLane(&wp->baseSeparation, lane, cp->baseSeparation);
-					cdWSetLane(&wp->relativeVelocity, lane, cp->relativeVelocity);
-					cdWSetLane(&wp->normalImpulse, lane, cp->normalImpulse);
-					cdWSetLane(&wp->tangentImpulse, lane, cp->tangentImpulse);
-					cdWSetLane(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
-					cdWSetLane(&wp->normalMass, lane, cp->normalMass);
-					cdWSetLane(&wp->tangentMass, lane, cp->tangentMass);
-				}
-			}
-		}
-		i = j;
-	}
-	context->colorBlockStart[colorCount] = block;
 	context->colorCount = colorCount;
 	context->wide = wide;
 	context->wideCount = blockCount;
 	context->overflowStart = overflowStart;
 	return true;
+}
+
+void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock)
+{
+	int zeroBody = context->bodyCount;
+	int color = 0;
+	for (int block = startBlock; block < endBlock; ++block)
+	{
+		while (context->colorBlockStart[color + 1] <= block)
+		{
+			++color;
+		}
+		/* The colour's constraints [first, last), CD_W to a block. */
+		int first = context->colorConstraintStart[color] + CD_W * (block - context->colorBlockStart[color]);
+		int last = context->colorConstraintStart[color + 1];
+		cd2ContactConstraintWide* w = context->wide + block;
+		memset(w, 0, sizeof(*w));
+		for (int lane = 0; lane < CD_W; ++lane)
+		{
+			w->indexA[lane] = zeroBody;
+			w->indexB[lane] = zeroBody;
+			w->constraint[lane] = -1;
+			/* An empty lane's rotation is the identity, like the zero body's. */
+			if (first + lane >= last)
+			{
+				continue;
+			}
+			const cd2ContactConstraint* c = context->constraints + first + lane;
+			w->constraint[lane] = first + lane;
+			w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
+			w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
+			/* Immovable: both inverse masses zero (the velocity update would add nothing). */
+			w->movesA[lane] =
+				(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
+			w->movesB[lane] =
+				(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
+			cdWSetLane(&w->invMassA, lane, c->invMassA);
+			cdWSetLane(&w->invIA, lane, c->invIA);
+			cdWSetLane(&w->invMassB, lane, c->invMassB);
+			cdWSetLane(&w->invIB, lane, c->invIB);
+			cdWSetLane(&w->normalX, lane, c->normal.x);
+			cdWSetLane(&w->normalY, lane, c->normal.y);
+			cdWSetLane(&w->friction, lane, c->friction);
+			cdWSetLane(&w->tangentSpeed, lane, c->tangentSpeed);
+			cdWSetLane(&w->rollingResistance, lane, c->rollingResistance);
+			cdWSetLane(&w->rollingMass, lane, c->rollingMass);
+			cdWSetLane(&w->rollingImpulse, lane, c->rollingImpulse);
+			cdWSetLane(&w->biasRate, lane, c->softness.biasRate);
+			cdWSetLane(&w->massScale, lane, c->softness.massScale);
+			cdWSetLane(&w->impulseScale, lane, c->softness.impulseScale);
+			for (int k = 0; k < c->pointCount; ++k)
+			{
+				const cd2ContactConstraintPoint* cp = c->points + k;
+				cd2ContactPointWide* wp = w->points + k;
+				cdWSetLane(&wp->anchorAx, lane, cp->anchorA.x);
+				cdWSetLane(&wp->anchorAy, lane, cp->anchorA.y);
+				cdWSetLane(&wp->anchorBx, lane, cp->anchorB.x);
+				cdWSetLane(&wp->anchorBy, lane, cp->anchorB.y);
+				cdWSetLane(&wp->baseSeparation, lane, cp->baseSeparation);
+				cdWSetLane(&wp->relativeVelocity, lane, cp->relativeVelocity);
+				cdWSetLane(&wp->normalImpulse, lane, cp->normalImpulse);
+				cdWSetLane(&wp->tangentImpulse, lane, cp->tangentImpulse);
+				cdWSetLane(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
+				cdWSetLane(&wp->normalMass, lane, cp->normalMass);
+				cdWSetLane(&wp->tangentMass, lane, cp->tangentMass);
+			}
+		}
+	}
 }
 
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
@@ -351,9 +356,9 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 	}
 }
 
-void cd2StoreContactsWide(cd2StepContext* context)
+void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock)
 {
-	for (int i = 0; i < context->wideCount; ++i)
+	for (int i = startBlock; i < endBlock; ++i)
 	{
 		const cd2ContactConstraintWide* w = context->wide + i;
 		for (int lane = 0; lane < CD_W; ++lane)

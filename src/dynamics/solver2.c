@@ -1,15 +1,32 @@
 /* collide: the 2D step's solve: the dense arrays of awake bodies and touching contacts, the
  * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
  * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
- * hit and move events, sleep). Integration, the wide solve (colour by colour) and the first part of
- * finalize run as tasks over index ranges on the world's workers (cd2RunTask); each item writes
- * only its own body or block, so the same input gives the same bits for any worker count. The
- * contacts are prepared in index order, then sorted by graph colour; the coloured ones are solved
- * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one. */
+ * hit and move events, sleep). The contacts are sorted by graph colour; the coloured ones are solved
+ * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one.
+ *
+ * Scheduling: everything from preparing the contacts to finalizing the bodies is a fixed list of
+ * stages, each an index range (bodies, constraints, wide blocks of one colour, or a single item for
+ * the serial parts) cut into blocks. Every thread of the step (the stepping thread and one task per
+ * further worker, enqueued once per step) walks the same list: it takes blocks of the current stage
+ * with an atomic counter until none is left, then waits until every block of the stage is finished
+ * before going on to the next. A thread only ever waits for blocks that a running thread has taken,
+ * never for another thread to arrive, so the step finishes whatever the task system does with the
+ * tasks (run them late, inline or one after another). Each block writes only its own items (a
+ * colour's blocks share no movable body), so the results are the same bits for any worker count. */
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
 #include "../base/thread_pool.h"
+
+#if !defined(__STDC_NO_ATOMICS__)
+#include <stdatomic.h>
+#define CD2_STAGE_ATOMICS 1
+typedef atomic_int cd2StageCounter;
+#else
+/* No C11 atomics: the step runs on the stepping thread only. */
+#define CD2_STAGE_ATOMICS 0
+typedef int cd2StageCounter;
+#endif
 
 cd2Softness cd2MakeSoft(cdReal hertz, cdReal zeta, cdReal h)
 {
@@ -37,20 +54,8 @@ cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle)
 	return out;
 }
 
-/* A stage of the step run as a task over an index range (bodies or wide blocks). Every item
- * writes only its own body or block, so the split between workers cannot change the results. */
-typedef struct cd2StageContext
+static void cd2IntegrateVelocities(cd2StepContext* context, int start, int end)
 {
-	cd2World* world;
-	cd2StepContext* step;
-	int blockStart; /* the colour's first wide block */
-	bool useBias;
-} cd2StageContext;
-
-static void cd2IntegrateVelocities(int start, int end, uint32_t workerIndex, void* taskContext)
-{
-	(void)workerIndex;
-	cd2StepContext* context = ((cd2StageContext*)taskContext)->step;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = start; i < end; ++i)
@@ -79,10 +84,8 @@ static void cd2IntegrateVelocities(int start, int end, uint32_t workerIndex, voi
 	}
 }
 
-static void cd2IntegratePositions(int start, int end, uint32_t workerIndex, void* taskContext)
+static void cd2IntegratePositions(cd2StepContext* context, int start, int end)
 {
-	(void)workerIndex;
-	cd2StepContext* context = ((cd2StageContext*)taskContext)->step;
 	cdReal h = context->h;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
@@ -104,11 +107,8 @@ static void cd2IntegratePositions(int start, int end, uint32_t workerIndex, void
 	}
 }
 
-static void cd2FinalizeBodies(int start, int end, uint32_t workerIndex, void* taskContext)
+static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, int start, int end)
 {
-	(void)workerIndex;
-	cd2World* world = ((cd2StageContext*)taskContext)->world;
-	const cd2StepContext* context = ((cd2StageContext*)taskContext)->step;
 	bool sleepAllowed = world->enableSleep;
 	cdReal timeStep = context->dt;
 	for (int k = start; k < end; ++k)
@@ -148,31 +148,175 @@ static void cd2FinalizeBodies(int start, int end, uint32_t workerIndex, void* ta
 	}
 }
 
-static void cd2WarmStartWideTask(int start, int end, uint32_t workerIndex, void* taskContext)
+typedef enum cd2StageKind
 {
-	(void)workerIndex;
-	const cd2StageContext* stage = (const cd2StageContext*)taskContext;
-	cd2WarmStartContactsWide(stage->step, stage->blockStart + start, stage->blockStart + end);
-}
+	CD2_STAGE_PREPARE_CONTACTS,	   /* constraints */
+	CD2_STAGE_PACK_WIDE,		   /* wide blocks */
+	CD2_STAGE_INTEGRATE_VELOCITIES, /* bodies */
+	CD2_STAGE_WARM_START_JOINTS,	   /* single */
+	CD2_STAGE_WARM_START_WIDE,	   /* wide blocks of one colour */
+	CD2_STAGE_WARM_START_OVERFLOW, /* single */
+	CD2_STAGE_SOLVE_JOINTS,		   /* single */
+	CD2_STAGE_SOLVE_WIDE,		   /* wide blocks of one colour */
+	CD2_STAGE_SOLVE_OVERFLOW,	   /* single */
+	CD2_STAGE_INTEGRATE_POSITIONS, /* bodies */
+	CD2_STAGE_STORE_WIDE,		   /* wide blocks */
+	CD2_STAGE_RESTITUTION,		   /* single */
+	CD2_STAGE_STORE_IMPULSES,	   /* constraints */
+	CD2_STAGE_STORE_JOINTS,		   /* single */
+	CD2_STAGE_FINALIZE_BODIES	   /* bodies */
+} cd2StageKind;
 
-static void cd2SolveWideTask(int start, int end, uint32_t workerIndex, void* taskContext)
+typedef struct cd2Stage
 {
-	(void)workerIndex;
-	const cd2StageContext* stage = (const cd2StageContext*)taskContext;
-	cd2SolveContactsWide(stage->step, stage->blockStart + start, stage->blockStart + end, stage->useBias);
-}
+	cd2StageCounter claimed; /* blocks taken */
+	cd2StageCounter done;	 /* blocks finished */
+	cd2StageKind kind;
+	bool useBias;
+	int first; /* the first item (a colour's first wide block) */
+	int itemCount, blockSize, blockCount;
+} cd2Stage;
 
-/* The wide blocks colour by colour: the blocks of one colour share no movable body, so they may run
- * in any order and on any worker; each colour starts when the one before has finished. */
-static void cd2RunWide(cd2World* world, cd2StageContext* stage, cdTaskCallback* task, bool useBias)
+typedef struct cd2StageList
 {
-	const cd2StepContext* context = stage->step;
+	cd2World* world;
+	cd2StepContext* step;
+	cd2Stage* stages;
+	int stageCount, stageCapacity;
+	int workerCount;
+} cd2StageList;
+
+/* Appends a stage of itemCount items in blocks of at least minBlock (a few blocks per worker). */
+static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, int minBlock, int first, bool useBias)
+{
+	if (itemCount <= 0 || list->stageCount >= list->stageCapacity)
+	{
+		return;
+	}
+	cd2Stage* stage = list->stages + list->stageCount++;
+	int blockSize = itemCount;
+	if (list->workerCount > 1)
+	{
+		int even = (itemCount + 4 * list->workerCount - 1) / (4 * list->workerCount);
+		blockSize = even > minBlock ? even : minBlock;
+	}
+#if CD2_STAGE_ATOMICS
+	atomic_init(&stage->claimed, 0);
+	atomic_init(&stage->done, 0);
+#else
+	stage->claimed = 0;
+	stage->done = 0;
+#endif
+	stage->kind = kind;
 	stage->useBias = useBias;
+	stage->first = first;
+	stage->itemCount = itemCount;
+	stage->blockSize = blockSize;
+	stage->blockCount = (itemCount + blockSize - 1) / blockSize;
+}
+
+static void cd2AddWideStages(cd2StageList* list, cd2StageKind kind, bool useBias)
+{
+	const cd2StepContext* context = list->step;
 	for (int c = 0; c < context->colorCount; ++c)
 	{
-		stage->blockStart = context->colorBlockStart[c];
-		cd2RunTask(world, task, context->colorBlockStart[c + 1] - stage->blockStart, 4, stage);
+		int first = context->colorBlockStart[c];
+		cd2AddStage(list, kind, context->colorBlockStart[c + 1] - first, 2, first, useBias);
 	}
+}
+
+static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int start, int end)
+{
+	cd2World* world = list->world;
+	cd2StepContext* context = list->step;
+	switch (stage->kind)
+	{
+	case CD2_STAGE_PREPARE_CONTACTS:
+		cd2PrepareContacts(world, context, start, end);
+		break;
+	case CD2_STAGE_PACK_WIDE:
+		cd2PackContactsWide(context, start, end);
+		break;
+	case CD2_STAGE_INTEGRATE_VELOCITIES:
+		cd2IntegrateVelocities(context, start, end);
+		break;
+	case CD2_STAGE_WARM_START_JOINTS:
+		cd2WarmStartJoints(world, context);
+		break;
+	case CD2_STAGE_WARM_START_WIDE:
+		cd2WarmStartContactsWide(context, stage->first + start, stage->first + end);
+		break;
+	case CD2_STAGE_WARM_START_OVERFLOW:
+		cd2WarmStartContacts(context);
+		break;
+	case CD2_STAGE_SOLVE_JOINTS:
+		cd2SolveJoints(world, context, stage->useBias);
+		break;
+	case CD2_STAGE_SOLVE_WIDE:
+		cd2SolveContactsWide(context, stage->first + start, stage->first + end, stage->useBias);
+		break;
+	case CD2_STAGE_SOLVE_OVERFLOW:
+		cd2SolveContacts(context, stage->useBias);
+		break;
+	case CD2_STAGE_INTEGRATE_POSITIONS:
+		cd2IntegratePositions(context, start, end);
+		break;
+	case CD2_STAGE_STORE_WIDE:
+		cd2StoreContactsWide(context, start, end);
+		break;
+	case CD2_STAGE_RESTITUTION:
+		cd2ApplyRestitution(context);
+		break;
+	case CD2_STAGE_STORE_IMPULSES:
+		cd2StoreImpulses(world, context, start, end);
+		break;
+	case CD2_STAGE_STORE_JOINTS:
+		cd2StoreJointReactions(world, context);
+		break;
+	case CD2_STAGE_FINALIZE_BODIES:
+		cd2FinalizeBodies(world, context, start, end);
+		break;
+	}
+}
+
+/* Walks every stage in order, taking blocks while there are some, then waiting for the blocks that
+ * other threads took (release on finishing a block, acquire on seeing them all finished: the next
+ * stage reads what this one wrote). */
+static void cd2RunStages(const cd2StageList* list)
+{
+	for (int s = 0; s < list->stageCount; ++s)
+	{
+		cd2Stage* stage = list->stages + s;
+#if CD2_STAGE_ATOMICS
+		for (;;)
+		{
+			int block = atomic_fetch_add_explicit(&stage->claimed, 1, memory_order_relaxed);
+			if (block >= stage->blockCount)
+			{
+				break;
+			}
+			int start = block * stage->blockSize;
+			int end = start + stage->blockSize < stage->itemCount ? start + stage->blockSize : stage->itemCount;
+			cd2ExecuteStage(list, stage, start, end);
+			atomic_fetch_add_explicit(&stage->done, 1, memory_order_release);
+		}
+		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount; ++spin)
+		{
+			cdThreadPool_Wait(spin);
+		}
+#else
+		cd2ExecuteStage(list, stage, 0, stage->itemCount);
+#endif
+	}
+}
+
+/* One further worker's share of the step: the same walk. */
+static void cd2StageTask(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)start;
+	(void)end;
+	(void)workerIndex;
+	cd2RunStages((const cd2StageList*)taskContext);
 }
 
 /* Hit events: touching contacts whose approach speed exceeded the threshold and that pushed. */
@@ -329,12 +473,24 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		}
 	}
 
-	/* Touching contacts with an awake body, prepared in index order. */
+	/* Touching contacts with an awake body: their pairs in index order, small records (the constraints
+	 * themselves are filled by the prepare stage, in colour order). */
 	int hitCandidates = 0;
+	int bouncing = 0; /* constraints with restitution */
 	int contactCapacity = world->contacts.count;
+	cd2ConstraintPair* pairs =
+		(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
+	/* The colouring's bodies of each pair. */
+	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
+	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
-	for (int i = 0; i < world->contacts.count && context.constraints != NULL; ++i)
+	if (contactCapacity > 0 && (pairs == NULL || bodyA == NULL || bodyB == NULL || context.constraints == NULL))
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	for (int i = 0; i < world->contacts.count; ++i)
 	{
 		const cd2Contact* contact = world->contacts.data + i;
 		if (!contact->inUse || contact->pointCount == 0 ||
@@ -349,41 +505,34 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			continue;
 		}
 		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
-		cd2ContactConstraint* c = context.constraints + context.constraintCount++;
-		c->contact = i;
-		c->indexA = indexA;
-		c->indexB = indexB;
+		bouncing += contact->restitution != CD_R(0.0) ? 1 : 0;
+		int k = context.constraintCount++;
+		pairs[k].contact = i;
+		pairs[k].indexA = indexA;
+		pairs[k].indexB = indexB;
+		bodyA[k] = colorBodyOf[contact->bodyA];
+		bodyB[k] = colorBodyOf[contact->bodyB];
 	}
-	cd2PrepareContacts(world, &context);
-	context.indexOrder = context.constraints;
+	context.indexOrder = pairs;
+	context.pairs = pairs;
 	/* Colour order (see graph_color.h). */
 	if (context.constraintCount > 1)
 	{
 		int n = context.constraintCount;
-		int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 		int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		cd2ContactConstraint* sorted = (cd2ContactConstraint*)cdArena_AllocUncleared(
-			&world->arena, (size_t)n * sizeof(cd2ContactConstraint));
-		if (bodyA != NULL && bodyB != NULL && colors != NULL && order != NULL && sorted != NULL)
+		cd2ConstraintPair* sorted =
+			(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ConstraintPair));
+		if (colors != NULL && order != NULL && sorted != NULL &&
+			cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
 		{
 			for (int i = 0; i < n; ++i)
 			{
-				const cd2Contact* contact = world->contacts.data + context.constraints[i].contact;
-				bodyA[i] = colorBodyOf[contact->bodyA];
-				bodyB[i] = colorBodyOf[contact->bodyB];
+				sorted[i] = pairs[order[i]];
+				bodyA[i] = colors[order[i]];
 			}
-			if (cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
-			{
-				for (int i = 0; i < n; ++i)
-				{
-					sorted[i] = context.constraints[order[i]];
-					bodyA[i] = colors[order[i]];
-				}
-				context.constraints = sorted;
-				context.colorOfConstraint = bodyA;
-			}
+			context.pairs = sorted;
+			context.colorOfConstraint = bodyA;
 		}
 	}
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
@@ -410,29 +559,67 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.overflowStart = 0;
 	}
 	cd2PrepareJoints(world, &context);
-	cd2StageContext stage = {world, &context, 0, false};
+
+	/* The stages, from preparing the contacts to finalizing the bodies (see the top of the file). */
+	cd2StageList list;
+	memset(&list, 0, sizeof(list));
+	list.world = world;
+	list.step = &context;
+	list.workerCount = world->workerCount;
+	list.stageCapacity = 8 + subStepCount * (8 + 3 * context.colorCount);
+	list.stages = (cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
+	if (list.stages == NULL)
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	int overflowCount = context.constraintCount > context.overflowStart ? 1 : 0;
+	int jointStage = context.jointCount > 0 ? 1 : 0;
+	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount, 32, 0, false);
+	cd2AddStage(&list, CD2_STAGE_PACK_WIDE, context.wideCount, 8, 0, false);
 	for (int step = 0; step < subStepCount; ++step)
 	{
-		cd2RunTask(world, cd2IntegrateVelocities, context.bodyCount, 64, &stage);
-		cd2WarmStartJoints(world, &context);
-		cd2RunWide(world, &stage, cd2WarmStartWideTask, false);
-		cd2WarmStartContacts(&context);
-		cd2SolveJoints(world, &context, true);
-		cd2RunWide(world, &stage, cd2SolveWideTask, true);
-		cd2SolveContacts(&context, true);
-		cd2RunTask(world, cd2IntegratePositions, context.bodyCount, 64, &stage);
-		cd2SolveJoints(world, &context, false);
-		cd2RunWide(world, &stage, cd2SolveWideTask, false);
-		cd2SolveContacts(&context, false);
+		cd2AddStage(&list, CD2_STAGE_INTEGRATE_VELOCITIES, context.bodyCount, 64, 0, false);
+		cd2AddStage(&list, CD2_STAGE_WARM_START_JOINTS, jointStage, 1, 0, false);
+		cd2AddWideStages(&list, CD2_STAGE_WARM_START_WIDE, false);
+		cd2AddStage(&list, CD2_STAGE_WARM_START_OVERFLOW, overflowCount, 1, 0, false);
+		cd2AddStage(&list, CD2_STAGE_SOLVE_JOINTS, jointStage, 1, 0, true);
+		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, true);
+		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, true);
+		cd2AddStage(&list, CD2_STAGE_INTEGRATE_POSITIONS, context.bodyCount, 64, 0, false);
+		cd2AddStage(&list, CD2_STAGE_SOLVE_JOINTS, jointStage, 1, 0, false);
+		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, false);
+		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}
-	cd2StoreContactsWide(&context);
-	cd2ApplyRestitution(&context);
-	cd2StoreImpulses(world, &context);
-	cd2StoreJointReactions(world, &context);
+	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
+	cd2AddStage(&list, CD2_STAGE_RESTITUTION, bouncing > 0 ? 1 : 0, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount, 32, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
+
+	/* One task per further worker, enqueued once; the stepping thread walks the stages too. */
+	void* helpers = NULL;
+#if CD2_STAGE_ATOMICS
+	if (world->workerCount > 1 && world->enqueueTask != NULL)
+	{
+		if (world->threadPool != NULL)
+		{
+			helpers = cdThreadPool_EnqueueEach(cd2StageTask, world->workerCount - 1, &list, world->threadPool);
+		}
+		else
+		{
+			helpers = world->enqueueTask(cd2StageTask, world->workerCount - 1, 1, &list, world->userTaskContext);
+		}
+	}
+#endif
+	cd2RunStages(&list);
+	if (helpers != NULL)
+	{
+		world->finishTask(helpers, world->userTaskContext);
+	}
 
 	/* Finalize: velocities and transforms back into the bodies. */
 	bool sleepAllowed = world->enableSleep;
-	cd2RunTask(world, cd2FinalizeBodies, context.bodyCount, 64, &stage);
 	/* A moving kinematic body keeps what touches it awake. */
 	for (int k = 0; k < context.bodyCount; ++k)
 	{

@@ -216,6 +216,13 @@ typedef struct cd2ContactConstraintPoint
 	cdReal normalMass, tangentMass;
 } cd2ContactConstraintPoint;
 
+/* A touching contact's pair of solver bodies, what a constraint is prepared from. */
+typedef struct cd2ConstraintPair
+{
+	int contact;
+	int indexA, indexB; /* solver bodies, CD2_NULL_INDEX for static (or sleeping) */
+} cd2ConstraintPair;
+
 typedef struct cd2ContactConstraint
 {
 	int contact;
@@ -266,7 +273,8 @@ typedef struct cd2StepContext
 	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
 	cd2ContactConstraint* constraints;
-	cd2ContactConstraint* indexOrder; /* the same before the colour sort, in contact index order */
+	const cd2ConstraintPair* pairs;		 /* of each constraint (colour order), for cd2PrepareContacts */
+	const cd2ConstraintPair* indexOrder; /* the same in contact index order */
 	int constraintCount;
 	/* The coloured constraints in wide blocks, colour by colour; the constraints from
 	 * overflowStart on (the overflow colour) are solved one by one after them. */
@@ -275,6 +283,8 @@ typedef struct cd2StepContext
 	int overflowStart;
 	/* The blocks of colour c are [colorBlockStart[c], colorBlockStart[c + 1]). */
 	int colorBlockStart[CD_GRAPH_COLOR_COUNT + 1];
+	/* The constraints of colour c are [colorConstraintStart[c], colorConstraintStart[c + 1]). */
+	int colorConstraintStart[CD_GRAPH_COLOR_COUNT + 1];
 	int colorCount;
 	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
@@ -379,19 +389,24 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 							  cdReal speculativeDistance);
 
 /* ---- contact_solver2.c ----------------------------------------------------------------------- */
-void cd2PrepareContacts(cd2World* world, cd2StepContext* context);
+/* Constraints [start, end): each reads its contact and bodies and writes only itself. */
+void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end);
 void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
 /* Runs task over [0, itemCount) on the world's workers (in pieces of at least minRange items) and
  * returns when it is done; on the calling thread when there is one worker or few items. */
 void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext);
+/* Lays the coloured constraints out in wide blocks (colorBlockStart, overflowStart) and allocates
+ * them; cd2PackContactsWide then fills blocks [start, end) from the prepared constraints. */
 bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
+void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock);
 /* Blocks [start, end) of the wide constraints (one colour at most, see colorBlockStart). */
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end);
 void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias);
-void cd2StoreContactsWide(cd2StepContext* context);
-void cd2StoreImpulses(cd2World* world, cd2StepContext* context);
+/* Blocks [start, end) back into their constraints; then constraints [start, end) into contacts. */
+void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock);
+void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start, int end);
 
 /* ---- solver2.c ------------------------------------------------------------------------------- */
 void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount);
