@@ -1139,6 +1139,30 @@ static int WeldPoints(const HVec* p, int count, double weld, SortKey* keys, Sort
 }
 
 static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratch);
+
+/* The supported range (geometry3.h): the diagonal of the bounds over the smallest width across a
+ * face (the depth of the hull below that face's plane), in double. */
+static bool WithinAspectRatio(const cd3Hull* hull)
+{
+	cd3Vec d = cd3Sub(hull->bounds.max, hull->bounds.min);
+	double diagonal = sqrt((double)d.x * (double)d.x + (double)d.y * (double)d.y + (double)d.z * (double)d.z);
+	double thinnest = diagonal;
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Plane plane = hull->planes[f];
+		double depth = 0.0;
+		for (int i = 0; i < hull->vertexCount; ++i)
+		{
+			cd3Vec v = hull->vertices[i];
+			double below = (double)plane.offset - ((double)plane.normal.x * (double)v.x +
+												   (double)plane.normal.y * (double)v.y +
+												   (double)plane.normal.z * (double)v.z);
+			depth = below > depth ? below : depth;
+		}
+		thinnest = depth < thinnest ? depth : thinnest;
+	}
+	return diagonal <= (double)CD3_MAX_ASPECT_RATIO * thinnest;
+}
 static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch);
 
 /* The scratch of a build of `count` points, carved from one arena. */
@@ -1301,6 +1325,12 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		result = CD_OK;
 	}
 	cdFree(arena.base);
+	if (result == CD_OK && !WithinAspectRatio(*hull))
+	{
+		cd3DestroyHull(*hull);
+		*hull = NULL;
+		result = CD_ERROR_OUT_OF_RANGE;
+	}
 	return result;
 }
 
@@ -1631,7 +1661,8 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 
 cdResult cd3ValidateHull(const cd3Hull* hull)
 {
-	return ValidateHull(hull, true, NULL);
+	cdResult result = ValidateHull(hull, true, NULL);
+	return result == CD_OK && !WithinAspectRatio(hull) ? CD_ERROR_OUT_OF_RANGE : result;
 }
 
 /* ---- convenience builders ----------------------------------------------------------------------- */
