@@ -593,17 +593,23 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			 * closest point is inside an edge by rounding, an incident edge far from the closest
 			 * vertex), its separation along the face normal misses the gap, and the one point
 			 * along the gap is the contact. */
-			if (vertexA < 0 || vertexB < 0)
+			/* A face whose normal does not face the other core is not what is closest either:
+			 * at coordinates whose round-off exceeds the shapes' sizes, the closest points tie
+			 * between edges, and the one taken may face away. */
+			int faceA = vertexA < 0 ? FacingEdge(a, closestEdgeA, u) : 0;
+			int faceB = vertexA < 0 ? 0 : FacingEdge(b, closestEdgeB, cd2Neg(u));
+			bool facing = vertexA < 0 ? cd2Dot(a->normals[faceA], u) > CD_R(0.0)
+									  : cd2Dot(b->normals[faceB], u) < CD_R(0.0);
+			if ((vertexA < 0 || vertexB < 0) && facing)
 			{
 				cd2Manifold face;
 				if (vertexA < 0)
 				{
-					Clip(&face, a, FacingEdge(a, closestEdgeA, u), b, false, speculativeDistance, false);
+					Clip(&face, a, faceA, b, false, speculativeDistance, false);
 				}
 				else
 				{
-					Clip(&face, b, FacingEdge(b, closestEdgeB, cd2Neg(u)), a, true, speculativeDistance,
-						 false);
+					Clip(&face, b, faceB, a, true, speculativeDistance, false);
 				}
 				if (face.pointCount > 0 &&
 					SmallestSeparation(&face) <= closest.distance - total + separatedTolerance)
