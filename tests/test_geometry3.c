@@ -313,6 +313,55 @@ static void TestRandomBounds(void)
 	}
 }
 
+/* The supported range: a box or hull longer than CD3_MAX_ASPECT_RATIO times its thinnest is
+ * refused with CD_ERROR_OUT_OF_RANGE (only sizes beyond the float range reach it in float). */
+static void TestAspectRatioRange(void)
+{
+	cdReal limit = (cdReal)CD3_MAX_ASPECT_RATIO;
+	cd3Quat q = cd3MakeQuat(CD_R(0.0), CD_R(0.6), CD_R(0.0), CD_R(0.8));
+	cd3Box box = {{CD_R(3.0), CD_R(-2.0), CD_R(1.0)}, {CD_R(1.0), CD_R(1.0), CD_R(1.0)}, q};
+	cd3Shape shape = cd3MakeBoxShape(box);
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_OK);
+	/* Zero extents stay valid whatever the others: a rectangle, a segment, a point. */
+	box.halfExtents = cd3MakeVec(CD_R(1e9), CD_R(0.0), CD_R(0.0));
+	shape = cd3MakeBoxShape(box);
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_OK && cd3IsValidBox(box));
+	box.halfExtents = CD3_VEC_ZERO;
+	TEST_CHECK(cd3IsValidBox(box));
+#if CD_DOUBLE
+	TEST_CHECK(limit == CD_R(1e6));
+	box.halfExtents = cd3MakeVec(CD_R(1.0), CD_R(0.5) * limit, CD_R(2.0));
+	TEST_CHECK(cd3IsValidBox(box));
+	box.halfExtents = cd3MakeVec(CD_R(1.0), CD_R(2.0) * limit, CD_R(2.0));
+	shape = cd3MakeBoxShape(box);
+	TEST_CHECK(!cd3IsValidBox(box));
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_ERROR_OUT_OF_RANGE);
+	TEST_CHECK(!cd3IsValidShape(&shape));
+	/* A sheet: one extent thin against the other two. */
+	box.halfExtents = cd3MakeVec(CD_R(1e3), CD_R(1e3), CD_R(1e3) / (CD_R(2.0) * limit));
+	TEST_CHECK(!cd3IsValidBox(box));
+	/* A hull: a needle from a unit tetrahedron's corner, and one just within the limit. */
+	for (int k = 0; k < 2; ++k)
+	{
+		cdReal length = k == 0 ? CD_R(4.0) * limit : CD_R(0.25) * limit;
+		cd3Vec points[5] = {{CD_R(0.0), CD_R(0.0), CD_R(0.0)},
+							{CD_R(1.0), CD_R(0.0), CD_R(0.0)},
+							{CD_R(0.0), CD_R(1.0), CD_R(0.0)},
+							{CD_R(0.0), CD_R(0.0), CD_R(1.0)},
+							{length, length, length}};
+		cd3Hull* hull = NULL;
+		cdResult result = cd3ComputeHull(points, 5, &hull);
+		TEST_CHECKF(k == 0 ? result == CD_ERROR_OUT_OF_RANGE && hull == NULL : result == CD_OK && hull != NULL,
+					"needle of length %g: %s", (double)length, cdGetResultString(result));
+		cd3DestroyHull(hull);
+	}
+#else
+	TEST_CHECK(limit >= CD_R(1e18)); /* the ratio of the float range's ends */
+	box.halfExtents = cd3MakeVec(CD_R(1e-9), CD_R(1e9), CD_R(1.0));
+	TEST_CHECK(cd3IsValidBox(box));
+#endif
+}
+
 int main(void)
 {
 	TEST_RUN(TestTypeNamesAndMakers);
@@ -320,5 +369,6 @@ int main(void)
 	TEST_RUN(TestValidateShapeReasons);
 	TEST_RUN(TestExactBounds);
 	TEST_RUN(TestRandomBounds);
+	TEST_RUN(TestAspectRatioRange);
 	return TEST_SUMMARY();
 }

@@ -400,6 +400,29 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 	}
 }
 
+/* The one point of the incident core's deepest vertex against the reference edge's normal, its
+ * surface point straight against the normal (as in Clip), whatever the side lines. */
+static void DeepestContact(cd2Manifold* manifold, const Core* reference, int referenceEdge, const Core* incident,
+						   bool flip, cdReal speculativeDistance)
+{
+	*manifold = EmptyManifold();
+	cd2Vec n = reference->normals[referenceEdge];
+	cd2Vec v1 = reference->vertices[referenceEdge];
+	int deepest = 0;
+	for (int i = 1; i < incident->count; ++i)
+	{
+		deepest = cd2Dot(n, incident->vertices[i]) < cd2Dot(n, incident->vertices[deepest]) ? i : deepest;
+	}
+	cd2Vec straight = cd2MulSub(incident->vertices[deepest], incident->radius, n);
+	cdReal separation = cd2Dot(n, cd2Sub(straight, v1)) - reference->radius;
+	if (separation <= speculativeDistance)
+	{
+		uint32_t id = (uint32_t)referenceEdge | (uint32_t)deepest << 8 | (flip ? CD2_FEATURE_FLIP : 0u);
+		AddPoint(manifold, cd2MulSub(straight, CD_R(0.5) * separation, n), separation, id);
+		manifold->normal = flip ? cd2Neg(n) : n;
+	}
+}
+
 /* Index of the endpoint of edge (i, i + 1) that p is exactly, or -1. */
 static int EndpointIndex(const Core* core, int edge, cd2Vec p)
 {
@@ -660,6 +683,31 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 	bool missed =
 		keptOutside || manifold.pointCount == 0 ||
 		SmallestSeparation(&manifold) > cdMax(separationA, separationB) - total + separatedTolerance;
+	if (!apart && missed && manifold.pointCount > 0)
+	{
+		/* Overlapping cores whose clipped points lie far above the separating-axis value beyond
+		 * the round-off of their coordinates (a segment far longer than the shape it crosses, whose
+		 * side distances round to the wrong side): the one point of the reference normal's deepest
+		 * incident vertex, whose separation is that value. */
+		const Core* reference = flip ? b : a;
+		const Core* incident = flip ? a : b;
+		int referenceEdge = flip ? edgeB : edgeA;
+		cdReal magnitude = CD_R(0.0);
+		for (int i = 0; i < incident->count; ++i)
+		{
+			magnitude = cdMax(magnitude, cdAbs(incident->vertices[i].x) + cdAbs(incident->vertices[i].y));
+		}
+		for (int i = 0; i < reference->count; ++i)
+		{
+			magnitude = cdMax(magnitude, cdAbs(reference->vertices[i].x) + cdAbs(reference->vertices[i].y));
+		}
+		cdReal satSeparation = (flip ? separationB : separationA) - total;
+		if (SmallestSeparation(&manifold) >
+			satSeparation + separatedTolerance + CD_R(64.0) * CD_REAL_EPSILON * magnitude)
+		{
+			DeepestContact(&manifold, reference, referenceEdge, incident, flip, speculativeDistance);
+		}
+	}
 	if (apart && missed)
 	{
 		if (!haveClosest)
