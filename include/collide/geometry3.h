@@ -120,7 +120,8 @@ typedef struct cd3Hull
 CD_API cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull);
 CD_API void cd3DestroyHull(cd3Hull* hull);
 
-/* The box |x| <= halfExtents as a hull (6 faces). Zero extents are CD_ERROR_DEGENERATE. */
+/* The box |x| <= halfExtents as a hull (6 faces). Zero extents are CD_ERROR_DEGENERATE. These
+ * builders return what cd3ComputeHull does, CD_ERROR_OUT_OF_RANGE included. */
 CD_API cdResult cd3MakeBoxHull(cd3Vec halfExtents, cd3Hull** hull);
 
 /* A cylinder about the y axis, |y| <= halfHeight, approximated by a prism of `segments`
