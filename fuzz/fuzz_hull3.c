@@ -105,8 +105,10 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 		free(points);
 		return 0;
 	}
-	if (cd3ValidateHull(hull) != CD_OK)
+	cdResult validation = cd3ValidateHull(hull);
+	if (validation != CD_OK)
 	{
+		fprintf(stderr, "fuzz_hull3: cd3ValidateHull: %s\n", cdGetResultString(validation));
 		Fail("the hull does not validate", count);
 	}
 	cdReal tolerance = cd3Hull_GetTolerance(hull);

@@ -1141,27 +1141,31 @@ static int WeldPoints(const HVec* p, int count, double weld, SortKey* keys, Sort
 static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratch);
 
 /* The supported range (geometry3.h): the diagonal of the bounds over the smallest width across a
- * face (the depth of the hull below that face's plane), in double. */
+ * face (the depth of the hull below that face's plane), in double. A face is done as soon as one
+ * vertex lies deep enough below it: a few vertices for nearly every face. */
 static bool WithinAspectRatio(const cd3Hull* hull)
 {
 	cd3Vec d = cd3Sub(hull->bounds.max, hull->bounds.min);
 	double diagonal = sqrt((double)d.x * (double)d.x + (double)d.y * (double)d.y + (double)d.z * (double)d.z);
-	double thinnest = diagonal;
+	double needed = diagonal / (double)CD3_MAX_ASPECT_RATIO;
 	for (int f = 0; f < hull->faceCount; ++f)
 	{
 		cd3Plane plane = hull->planes[f];
-		double depth = 0.0;
-		for (int i = 0; i < hull->vertexCount; ++i)
+		bool deep = false;
+		for (int i = 0; i < hull->vertexCount && !deep; ++i)
 		{
 			cd3Vec v = hull->vertices[i];
 			double below = (double)plane.offset - ((double)plane.normal.x * (double)v.x +
 												   (double)plane.normal.y * (double)v.y +
 												   (double)plane.normal.z * (double)v.z);
-			depth = below > depth ? below : depth;
+			deep = below >= needed;
 		}
-		thinnest = depth < thinnest ? depth : thinnest;
+		if (!deep)
+		{
+			return false;
+		}
 	}
-	return diagonal <= (double)CD3_MAX_ASPECT_RATIO * thinnest;
+	return true;
 }
 static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch);
 
