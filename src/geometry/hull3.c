@@ -1496,7 +1496,7 @@ static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 	 * (fuzz_hull3, double build: slivers 1e-10 high and 100 long in lattices far from the origin,
 	 * a vertex up to twice the tolerance above): thin faces, and every face of a small hull, get
 	 * the global test (every vertex below the plane). */
-	bool small = (long)hull->vertexCount * (long)hull->faceCount <= 2048;
+	bool small = (long)hull->vertexCount * (long)hull->faceCount <= 131072;
 	for (int i = 0; i < hull->faceCount; ++i)
 	{
 		cdResult result = CheckFace(hull, i, tolerance);
