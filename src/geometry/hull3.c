@@ -1494,8 +1494,10 @@ static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 	cdReal tolerance = cd3Hull_GetTolerance(hull);
 	/* A thin face's plane, tilted by round-off, can pass its neighbours and not a far vertex
 	 * (fuzz_hull3, double build: slivers 1e-10 high and 100 long in lattices far from the origin,
-	 * a vertex up to twice the tolerance above): thin faces, and every face of a small hull, get
-	 * the global test (every vertex below the plane). */
+	 * a vertex up to twice the tolerance above; also a face that is not thin, of a lattice hull of
+	 * 36 vertices, 1.2 tolerances below a far vertex): thin faces, and every face of a hull of at
+	 * most 131072 vertex-face pairs (about 250 vertices, a fraction of the build's cost), get the
+	 * global test (every vertex below the plane). */
 	bool small = (long)hull->vertexCount * (long)hull->faceCount <= 131072;
 	for (int i = 0; i < hull->faceCount; ++i)
 	{
