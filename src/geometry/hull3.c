@@ -1140,6 +1140,34 @@ static int WeldPoints(const HVec* p, int count, double weld, SortKey* keys, Sort
 
 static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratch);
 
+/* Every input point below every face plane within the hull's tolerance, checked when there are at
+ * most 131072 point-face pairs (a fraction of the build's cost; as the global plane test of
+ * CheckBuiltHull): a sheet 1e30 wide in the double build (fuzz_hull3) lost its extreme point, 9
+ * tolerances above a face; the build is then retried like any other that fails its checks. */
+static bool ContainsPoints(const cd3Hull* hull, const cd3Vec* points, int count)
+{
+	if ((long)count * (long)hull->faceCount > 131072)
+	{
+		return true;
+	}
+	double tolerance = (double)cd3Hull_GetTolerance(hull);
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Plane plane = hull->planes[f];
+		for (int i = 0; i < count; ++i)
+		{
+			double height = (double)plane.normal.x * (double)points[i].x +
+							(double)plane.normal.y * (double)points[i].y +
+							(double)plane.normal.z * (double)points[i].z - (double)plane.offset;
+			if (height > tolerance)
+			{
+				return false;
+			}
+		}
+	}
+	return true;
+}
+
 /* The supported range (geometry3.h): the diagonal of the bounds over the smallest width across a
  * face (the depth of the hull below that face's plane), in double. A face is done as soon as one
  * vertex lies deep enough below it: a few vertices for nearly every face. */
@@ -1314,6 +1342,10 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		{
 			/* The arena's per-vertex scratch is free by now. */
 			cdResult valid = CheckBuiltHull(*hull, m->vertexMap);
+			if (valid == CD_OK && !ContainsPoints(*hull, points, count))
+			{
+				valid = CD_ERROR_DEGENERATE;
+			}
 			if (valid != CD_OK)
 			{
 				/* Never hand out a broken hull. */
