@@ -97,8 +97,9 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 		{
 			Fail("a failed build returned a hull", count);
 		}
-		if (result != CD_ERROR_DEGENERATE && result != CD_ERROR_NOT_FINITE && result != CD_ERROR_OUT_OF_RANGE &&
-			result != CD_ERROR_TOO_MANY_POINTS && result != CD_ERROR_OUT_OF_MEMORY)
+		if (result != CD_ERROR_DEGENERATE && result != CD_ERROR_NOT_FINITE &&
+			result != CD_ERROR_OUT_OF_RANGE && result != CD_ERROR_TOO_MANY_POINTS &&
+			result != CD_ERROR_OUT_OF_MEMORY)
 		{
 			Fail("unexpected result code", count);
 		}

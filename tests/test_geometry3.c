@@ -351,7 +351,8 @@ static void TestAspectRatioRange(void)
 							{length, length, length}};
 		cd3Hull* hull = NULL;
 		cdResult result = cd3ComputeHull(points, 5, &hull);
-		TEST_CHECKF(k == 0 ? result == CD_ERROR_OUT_OF_RANGE && hull == NULL : result == CD_OK && hull != NULL,
+		TEST_CHECKF(k == 0 ? result == CD_ERROR_OUT_OF_RANGE && hull == NULL
+						   : result == CD_OK && hull != NULL,
 					"needle of length %g: %s", (double)length, cdGetResultString(result));
 		cd3DestroyHull(hull);
 	}

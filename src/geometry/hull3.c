@@ -1183,9 +1183,9 @@ static bool WithinAspectRatio(const cd3Hull* hull)
 		for (int i = 0; i < hull->vertexCount && !deep; ++i)
 		{
 			cd3Vec v = hull->vertices[i];
-			double below = (double)plane.offset - ((double)plane.normal.x * (double)v.x +
-												   (double)plane.normal.y * (double)v.y +
-												   (double)plane.normal.z * (double)v.z);
+			double below = (double)plane.offset -
+						   ((double)plane.normal.x * (double)v.x + (double)plane.normal.y * (double)v.y +
+							(double)plane.normal.z * (double)v.z);
 			deep = below >= needed;
 		}
 		if (!deep)

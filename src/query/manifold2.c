@@ -402,8 +402,8 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 
 /* The one point of the incident core's deepest vertex against the reference edge's normal, its
  * surface point straight against the normal (as in Clip), whatever the side lines. */
-static void DeepestContact(cd2Manifold* manifold, const Core* reference, int referenceEdge, const Core* incident,
-						   bool flip, cdReal speculativeDistance)
+static void DeepestContact(cd2Manifold* manifold, const Core* reference, int referenceEdge,
+						   const Core* incident, bool flip, cdReal speculativeDistance)
 {
 	*manifold = EmptyManifold();
 	cd2Vec n = reference->normals[referenceEdge];
@@ -685,25 +685,31 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 		SmallestSeparation(&manifold) > cdMax(separationA, separationB) - total + separatedTolerance;
 	if (!apart && missed && manifold.pointCount > 0)
 	{
-		/* Overlapping cores whose clipped points lie far above the separating-axis value beyond
-		 * the round-off of their coordinates (a segment far longer than the shape it crosses, whose
-		 * side distances round to the wrong side): the one point of the reference normal's deepest
-		 * incident vertex, whose separation is that value. */
+		/* Overlapping cores whose clipped points lie above the separating-axis value by more than
+		 * the smaller shape's size and the round-off of their coordinates (a segment far longer
+		 * than the shape it crosses, whose side distances round to the wrong side): the one point
+		 * of the reference normal's deepest incident vertex, whose separation is that value. A
+		 * smaller miss is the clip of rounded surfaces, kept. */
 		const Core* reference = flip ? b : a;
 		const Core* incident = flip ? a : b;
 		int referenceEdge = flip ? edgeB : edgeA;
-		cdReal magnitude = CD_R(0.0);
-		for (int i = 0; i < incident->count; ++i)
+		cdReal magnitude = CD_R(0.0), sizeA = CD_R(0.0), sizeB = CD_R(0.0);
+		for (int i = 0; i < a->count; ++i)
 		{
-			magnitude = cdMax(magnitude, cdAbs(incident->vertices[i].x) + cdAbs(incident->vertices[i].y));
+			magnitude = cdMax(magnitude, cdAbs(a->vertices[i].x) + cdAbs(a->vertices[i].y));
+			sizeA = cdMax(sizeA, cdAbs(a->vertices[i].x - a->vertices[0].x) +
+									 cdAbs(a->vertices[i].y - a->vertices[0].y));
 		}
-		for (int i = 0; i < reference->count; ++i)
+		for (int i = 0; i < b->count; ++i)
 		{
-			magnitude = cdMax(magnitude, cdAbs(reference->vertices[i].x) + cdAbs(reference->vertices[i].y));
+			magnitude = cdMax(magnitude, cdAbs(b->vertices[i].x) + cdAbs(b->vertices[i].y));
+			sizeB = cdMax(sizeB, cdAbs(b->vertices[i].x - b->vertices[0].x) +
+									 cdAbs(b->vertices[i].y - b->vertices[0].y));
 		}
 		cdReal satSeparation = (flip ? separationB : separationA) - total;
-		if (SmallestSeparation(&manifold) >
-			satSeparation + separatedTolerance + CD_R(64.0) * CD_REAL_EPSILON * magnitude)
+		cdReal allowed =
+			cdMax(separatedTolerance + CD_R(64.0) * CD_REAL_EPSILON * magnitude, cdMin(sizeA, sizeB) + total);
+		if (SmallestSeparation(&manifold) > satSeparation + allowed)
 		{
 			DeepestContact(&manifold, reference, referenceEdge, incident, flip, speculativeDistance);
 		}
