@@ -621,8 +621,8 @@ static cd2Manifold CollideCores(const Core* a, const Core* b, cdReal speculative
 			 * between edges, and the one taken may face away. */
 			int faceA = vertexA < 0 ? FacingEdge(a, closestEdgeA, u) : 0;
 			int faceB = vertexA < 0 ? 0 : FacingEdge(b, closestEdgeB, cd2Neg(u));
-			bool facing = vertexA < 0 ? cd2Dot(a->normals[faceA], u) > CD_R(0.0)
-									  : cd2Dot(b->normals[faceB], u) < CD_R(0.0);
+			bool facing = vertexA < 0 ? cd2Dot(a->normals[faceA], u) >= CD_R(0.0)
+									  : cd2Dot(b->normals[faceB], u) <= CD_R(0.0);
 			if ((vertexA < 0 || vertexB < 0) && facing)
 			{
 				cd2Manifold face;
