@@ -340,20 +340,22 @@ static void TestAspectRatioRange(void)
 	/* A sheet: one extent thin against the other two. */
 	box.halfExtents = cd3MakeVec(CD_R(1e3), CD_R(1e3), CD_R(1e3) / (CD_R(2.0) * limit));
 	TEST_CHECK(!cd3IsValidBox(box));
-	/* A hull: a needle from a unit tetrahedron's corner, and one just within the limit. */
+	/* A hull: the box of half extents (length, width, width) as points, aspect length / width. */
 	for (int k = 0; k < 2; ++k)
 	{
-		cdReal length = k == 0 ? CD_R(4.0) * limit : CD_R(0.25) * limit;
-		cd3Vec points[5] = {{CD_R(0.0), CD_R(0.0), CD_R(0.0)},
-							{CD_R(1.0), CD_R(0.0), CD_R(0.0)},
-							{CD_R(0.0), CD_R(1.0), CD_R(0.0)},
-							{CD_R(0.0), CD_R(0.0), CD_R(1.0)},
-							{length, length, length}};
+		cdReal width = CD_R(1e4);
+		cdReal length = (k == 0 ? CD_R(4.0) : CD_R(0.25)) * (cdReal)CD3_MAX_HULL_ASPECT_RATIO * width;
+		cd3Vec points[8];
+		for (int i = 0; i < 8; ++i)
+		{
+			points[i] =
+				cd3MakeVec((i & 1) ? length : -length, (i & 2) ? width : -width, (i & 4) ? width : -width);
+		}
 		cd3Hull* hull = NULL;
-		cdResult result = cd3ComputeHull(points, 5, &hull);
+		cdResult result = cd3ComputeHull(points, 8, &hull);
 		TEST_CHECKF(k == 0 ? result == CD_ERROR_OUT_OF_RANGE && hull == NULL
-						   : result == CD_OK && hull != NULL,
-					"needle of length %g: %s", (double)length, cdGetResultString(result));
+						   : result == CD_OK && hull != NULL && cd3ValidateHull(hull) == CD_OK,
+					"needle of aspect %g: %s", (double)(length / width), cdGetResultString(result));
 		cd3DestroyHull(hull);
 	}
 #else

@@ -1175,7 +1175,7 @@ static bool WithinAspectRatio(const cd3Hull* hull)
 {
 	cd3Vec d = cd3Sub(hull->bounds.max, hull->bounds.min);
 	double diagonal = sqrt((double)d.x * (double)d.x + (double)d.y * (double)d.y + (double)d.z * (double)d.z);
-	double needed = diagonal / (double)CD3_MAX_ASPECT_RATIO;
+	double needed = diagonal / (double)CD3_MAX_HULL_ASPECT_RATIO;
 	for (int f = 0; f < hull->faceCount; ++f)
 	{
 		cd3Plane plane = hull->planes[f];
