@@ -44,9 +44,9 @@ static struct
 
 /* Open findings (fuzz/crashes/README.md, FuzzPassOver): checks that inputs within reach of the CI
  * run still fail; FUZZ_STRICT=1 checks them. Float: empty, the CI run (seed 1, 100000 inputs)
- * passes with FUZZ_STRICT=1. Double: cast-free, row cast-double-needle-box-aabb-tunnel (a needle
- * box 8e15 long; the CI run reaches it since the cast's hit refinement changed its coverage; the
- * code that fails is that of main). */
+ * passes with FUZZ_STRICT=1. Double: cast-free, row cast-double-segment-box-box-miss (a box flat to
+ * a segment 6.4e8 long cast against a box of size 25: the needle of the refused rows, made of two
+ * shapes each within CD3_MAX_ASPECT_RATIO). */
 #if CD_DOUBLE
 #define OPEN_FINDINGS "cast-free"
 #else

@@ -98,15 +98,18 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 			Fail("a failed build returned a hull", count);
 		}
 		if (result != CD_ERROR_DEGENERATE && result != CD_ERROR_NOT_FINITE &&
-			result != CD_ERROR_TOO_MANY_POINTS && result != CD_ERROR_OUT_OF_MEMORY)
+			result != CD_ERROR_OUT_OF_RANGE && result != CD_ERROR_TOO_MANY_POINTS &&
+			result != CD_ERROR_OUT_OF_MEMORY)
 		{
 			Fail("unexpected result code", count);
 		}
 		free(points);
 		return 0;
 	}
-	if (cd3ValidateHull(hull) != CD_OK)
+	cdResult validation = cd3ValidateHull(hull);
+	if (validation != CD_OK)
 	{
+		fprintf(stderr, "fuzz_hull3: cd3ValidateHull: %s\n", cdGetResultString(validation));
 		Fail("the hull does not validate", count);
 	}
 	cdReal tolerance = cd3Hull_GetTolerance(hull);

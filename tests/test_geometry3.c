@@ -313,6 +313,58 @@ static void TestRandomBounds(void)
 	}
 }
 
+/* The supported range: a box or hull longer than CD3_MAX_ASPECT_RATIO times its thinnest is
+ * refused with CD_ERROR_OUT_OF_RANGE (only sizes beyond the float range reach it in float). */
+static void TestAspectRatioRange(void)
+{
+	cdReal limit = (cdReal)CD3_MAX_ASPECT_RATIO;
+	cd3Quat q = cd3MakeQuat(CD_R(0.0), CD_R(0.6), CD_R(0.0), CD_R(0.8));
+	cd3Box box = {{CD_R(3.0), CD_R(-2.0), CD_R(1.0)}, {CD_R(1.0), CD_R(1.0), CD_R(1.0)}, q};
+	cd3Shape shape = cd3MakeBoxShape(box);
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_OK);
+	/* Zero extents stay valid whatever the others: a rectangle, a segment, a point. */
+	box.halfExtents = cd3MakeVec(CD_R(1e9), CD_R(0.0), CD_R(0.0));
+	shape = cd3MakeBoxShape(box);
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_OK && cd3IsValidBox(box));
+	box.halfExtents = CD3_VEC_ZERO;
+	TEST_CHECK(cd3IsValidBox(box));
+#if CD_DOUBLE
+	TEST_CHECK(limit == CD_R(1e6));
+	box.halfExtents = cd3MakeVec(CD_R(1.0), CD_R(0.5) * limit, CD_R(2.0));
+	TEST_CHECK(cd3IsValidBox(box));
+	box.halfExtents = cd3MakeVec(CD_R(1.0), CD_R(2.0) * limit, CD_R(2.0));
+	shape = cd3MakeBoxShape(box);
+	TEST_CHECK(!cd3IsValidBox(box));
+	TEST_CHECK(cd3ValidateShape(&shape) == CD_ERROR_OUT_OF_RANGE);
+	TEST_CHECK(!cd3IsValidShape(&shape));
+	/* A sheet: one extent thin against the other two. */
+	box.halfExtents = cd3MakeVec(CD_R(1e3), CD_R(1e3), CD_R(1e3) / (CD_R(2.0) * limit));
+	TEST_CHECK(!cd3IsValidBox(box));
+	/* A hull: the box of half extents (length, width, width) as points, aspect length / width. */
+	for (int k = 0; k < 2; ++k)
+	{
+		cdReal width = CD_R(1e4);
+		cdReal length = (k == 0 ? CD_R(4.0) : CD_R(0.25)) * (cdReal)CD3_MAX_HULL_ASPECT_RATIO * width;
+		cd3Vec points[8];
+		for (int i = 0; i < 8; ++i)
+		{
+			points[i] =
+				cd3MakeVec((i & 1) ? length : -length, (i & 2) ? width : -width, (i & 4) ? width : -width);
+		}
+		cd3Hull* hull = NULL;
+		cdResult result = cd3ComputeHull(points, 8, &hull);
+		TEST_CHECKF(k == 0 ? result == CD_ERROR_OUT_OF_RANGE && hull == NULL
+						   : result == CD_OK && hull != NULL && cd3ValidateHull(hull) == CD_OK,
+					"needle of aspect %g: %s", (double)(length / width), cdGetResultString(result));
+		cd3DestroyHull(hull);
+	}
+#else
+	TEST_CHECK(limit >= CD_R(1e18)); /* the ratio of the float range's ends */
+	box.halfExtents = cd3MakeVec(CD_R(1e-9), CD_R(1e9), CD_R(1.0));
+	TEST_CHECK(cd3IsValidBox(box));
+#endif
+}
+
 int main(void)
 {
 	TEST_RUN(TestTypeNamesAndMakers);
@@ -320,5 +372,6 @@ int main(void)
 	TEST_RUN(TestValidateShapeReasons);
 	TEST_RUN(TestExactBounds);
 	TEST_RUN(TestRandomBounds);
+	TEST_RUN(TestAspectRatioRange);
 	return TEST_SUMMARY();
 }

@@ -1317,8 +1317,55 @@ static void TestSeparationScan(void)
 	}
 }
 
+/* Contacts whose coordinates' round-off exceeds the shapes' sizes (fuzz_manifold2 rows
+ * manifold2-double-far-flat-aabb-triangle and manifold2-segment-through-rotated-box). A flat AABB
+ * at the range's end above a small triangle: every triangle edge ties for the closest, and the one
+ * taken must not be a face looking away (separation -M). A segment 7e8 long crossing a box of size
+ * 24 whose direction rounds to the box's axis in float: its clip kept points 3.5e8 along it with
+ * separation 7.07e8; the contact's separation must be that of cd2Distance within the round-off. */
+static void TestRoundOffBeyondShapeSize(void)
+{
+	cdReal far = CD_DOUBLE ? CD_R(1e30) : CD_R(1e9);
+	cd2Vec points[3] = {{CD_R(-0.125), CD_R(-0.125)}, {CD_R(0.03), CD_R(-0.125)}, {CD_R(0.03), CD_R(0.03)}};
+	cd2Shape triangle;
+	triangle.type = CD2_SHAPE_POLYGON;
+	TEST_CHECK(cd2MakePolygon(points, 3, &triangle.polygon) == CD_OK);
+	cd2Shape aabb;
+	aabb.type = CD2_SHAPE_AABB;
+	aabb.aabb.min = cd2MakeVec(CD_R(0.0775), far);
+	aabb.aabb.max = cd2MakeVec(far, far);
+	cd2Manifold m = cd2Collide(&triangle, &aabb, far);
+	TEST_CHECK(m.pointCount > 0);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECKF(m.points[i].separation >= CD_R(0.5) * far && m.normal.y > CD_R(0.0),
+					"flat AABB at %g: separation %g, normal (%g %g)", (double)far,
+					(double)m.points[i].separation, (double)m.normal.x, (double)m.normal.y);
+	}
+
+	cd2Shape segment, box;
+	segment.type = CD2_SHAPE_CAPSULE;
+	segment.capsule = (cd2Capsule){{CD_R(7.875), CD_R(-9.5)}, {CD_R(5e8), CD_R(5e8)}, CD_R(0.0)};
+	box.type = CD2_SHAPE_BOX;
+	box.box.center = cd2MakeVec(CD_R(0.0), CD_R(-11.625));
+	box.box.halfExtents = cd2MakeVec(CD_R(12.125), CD_R(1.75));
+	box.box.rotation = cd2NormalizeRot((cd2Rot){CD_R(-0.707106829), CD_R(-0.707106829)});
+	cd2ClosestPoints d = cd2Distance(&segment, &box);
+	m = cd2Collide(&segment, &box, CD_R(1e9));
+	/* The contract's tolerance: 8 epsilon of the largest coordinate (5e8), 64 taken. */
+	cdReal band = CD_R(64.0) * CD_REAL_EPSILON * CD_R(1e9);
+	TEST_CHECK(m.pointCount > 0);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		TEST_CHECKF(cdAbs(m.points[i].separation - d.distance) <= band,
+					"long segment: separation %g, distance %g (band %g)", (double)m.points[i].separation,
+					(double)d.distance, (double)band);
+	}
+}
+
 int main(void)
 {
+	TEST_RUN(TestRoundOffBeyondShapeSize);
 	TEST_RUN(TestBoxes);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestRoundedPolygons);

@@ -979,6 +979,33 @@ static void TestTriangleSegmentRejection(void)
 				decided[1]);
 }
 
+/* A segment nearly parallel to a flat box (or AABB) edge, tilted by `angle` towards both other
+ * axes so that it crosses both face planes, and skew to the edge by `gap`: only the cross-product
+ * axis separates them. Its round-off is that of each term's factors, not the largest coordinate
+ * over the sine of the angle (which called a gap of 5.3e-9 at size 1 touching in double: fuzz
+ * query3-double-needle-box-hull-overlap-distance). The exact distance is the gap. */
+static void TestSegmentNearlyParallelToBoxEdge(void)
+{
+	cdReal a = CD_DOUBLE ? CD_R(5e-10) : CD_R(5e-4);
+	cdReal gap = CD_DOUBLE ? CD_R(1e-10) : CD_R(1e-4);
+	for (int k = 0; k < 2; ++k)
+	{
+		cdReal offset = k == 0 ? (cdReal)sqrt(2.0) * gap : CD_R(0.0);
+		cd3Box box = {CD3_VEC_ZERO, {CD_R(1.0), CD_R(0.0), CD_R(0.0)}, CD3_QUAT_IDENTITY};
+		cd3Aabb aabb = {{CD_R(-1.0), CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(0.0), CD_R(0.0)}};
+		cd3Segment segment = {{CD_R(-0.5), -a, offset - a}, {CD_R(0.5), a, offset + a}};
+		bool boxOverlap = cd3OverlapBoxSegment(box, segment);
+		bool aabbOverlap = cd3OverlapAabbSegment(aabb, segment);
+		cd3Shape shapeA = cd3MakeBoxShape(box), shapeB = cd3MakeSegmentShape(segment);
+		cd3ClosestPoints d = cd3Distance(&shapeA, &shapeB);
+		cdReal expected = k == 0 ? gap : CD_R(0.0);
+		TEST_CHECKF(boxOverlap == (k == 1), "box, gap %g: overlap %d, distance %g", (double)expected,
+					(int)boxOverlap, (double)d.distance);
+		TEST_CHECKF(aabbOverlap == (k == 1), "aabb, gap %g: overlap %d", (double)expected, (int)aabbOverlap);
+		TEST_CHECK_NEAR(d.distance, expected, CD_R(0.01) * gap);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestSourceTexts);
@@ -997,5 +1024,6 @@ int main(void)
 	TEST_RUN(TestDegenerateNeverCrash);
 	TEST_RUN(TestNearlyOppositeHalfSpaces);
 	TEST_RUN(TestTriangleSegmentRejection);
+	TEST_RUN(TestSegmentNearlyParallelToBoxEdge);
 	return TEST_SUMMARY();
 }

@@ -115,11 +115,13 @@ typedef struct cd3Hull
  * cd3DestroyHull); on failure *hull is NULL and the result says why: CD_ERROR_INVALID_ARGUMENT
  * (NULL pointer, negative count), CD_ERROR_NOT_FINITE, CD_ERROR_TOO_MANY_POINTS (more than
  * CD3_MAX_HULL_POINTS), CD_ERROR_DEGENERATE (fewer than 4 points that are not coplanar within
- * the tolerance above), CD_ERROR_OUT_OF_MEMORY. A hull it returns always passes cd3ValidateHull. */
+ * the tolerance above), CD_ERROR_OUT_OF_RANGE (a needle or sheet beyond CD3_MAX_HULL_ASPECT_RATIO,
+ * double build), CD_ERROR_OUT_OF_MEMORY. A hull it returns always passes cd3ValidateHull. */
 CD_API cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull);
 CD_API void cd3DestroyHull(cd3Hull* hull);
 
-/* The box |x| <= halfExtents as a hull (6 faces). Zero extents are CD_ERROR_DEGENERATE. */
+/* The box |x| <= halfExtents as a hull (6 faces). Zero extents are CD_ERROR_DEGENERATE. These
+ * builders return what cd3ComputeHull does, CD_ERROR_OUT_OF_RANGE included. */
 CD_API cdResult cd3MakeBoxHull(cd3Vec halfExtents, cd3Hull** hull);
 
 /* A cylinder about the y axis, |y| <= halfHeight, approximated by a prism of `segments`
@@ -137,8 +139,9 @@ CD_API cdReal cd3Hull_GetTolerance(const cd3Hull* hull);
  * vertices, a closed 2-manifold (twins consistent, each
  * face a cycle, V - E + F = 2), unit outward normals, planar convex faces, and every vertex
  * below every face plane, all within cd3Hull_GetTolerance. CD_OK, CD_ERROR_INVALID_ARGUMENT
- * (NULL, broken indices or topology), CD_ERROR_NOT_FINITE, CD_ERROR_NOT_NORMALIZED or
- * CD_ERROR_DEGENERATE (not convex, not planar, inward or empty). */
+ * (NULL, broken indices or topology), CD_ERROR_NOT_FINITE, CD_ERROR_NOT_NORMALIZED,
+ * CD_ERROR_DEGENERATE (not convex, not planar, inward or empty) or CD_ERROR_OUT_OF_RANGE (beyond
+ * CD3_MAX_HULL_ASPECT_RATIO). */
 CD_API cdResult cd3ValidateHull(const cd3Hull* hull);
 
 /* The shape types in canonical order: pair functions name their two shapes in this order. */
@@ -192,9 +195,31 @@ CD_API cd3Shape cd3MakePlaneShape(cd3Plane plane);
 CD_API cd3Shape cd3MakeSegmentShape(cd3Segment segment);
 CD_API cd3Shape cd3MakeHullShape(const cd3Hull* hull, cd3Transform transform);
 
+/* ---- supported range -----------------------------------------------------------------------
+ * A rotated box whose longest extent exceeds CD3_MAX_ASPECT_RATIO times its thinnest
+ * (a needle or a sheet) is beyond the supported range in the double build: there, its rotated
+ * corners are known only to the round-off of its length, which is more than the double build's
+ * tolerances allow across its width, and GJK's simplices along such a needle lose the accuracy
+ * the queries promise. cd3IsValidBox / cd3ValidateShape refuse such a box with
+ * CD_ERROR_OUT_OF_RANGE (largest half extent over smallest non-zero one; zero extents stay valid:
+ * a box flat to exactly zero is the rectangle, segment or point it is), cd3ComputeHull and
+ * cd3ValidateHull a hull beyond CD3_MAX_HULL_ASPECT_RATIO (diagonal of its bounds over its
+ * smallest width across a face; 1e9: the contact manifolds are tested on needle hulls up to 1.2e8,
+ * and GJK failed on hulls from 1.1e9). Queries are specified for shapes that validate. The float
+ * build's round-off is coarse enough that its tolerances cover needles across the whole
+ * coordinate range: no limit there (1e30, beyond the range's 1e18). */
+#if CD_DOUBLE
+#define CD3_MAX_ASPECT_RATIO 1e6
+#define CD3_MAX_HULL_ASPECT_RATIO 1e9
+#else
+#define CD3_MAX_ASPECT_RATIO 1e30
+#define CD3_MAX_HULL_ASPECT_RATIO 1e30
+#endif
+
 /* ---- validators ----------------------------------------------------------------------------
  * Each rejects NaN/Inf anywhere, negative radii and sizes, non-unit quaternions and normals
- * (tolerance as in cd3IsValidQuat). Zero sizes are valid (a point-like sphere, a flat box). */
+ * (tolerance as in cd3IsValidQuat). Zero sizes are valid (a point-like sphere, a flat box).
+ * cd3IsValidBox also rejects a box beyond CD3_MAX_ASPECT_RATIO (see above). */
 CD_API bool cd3IsValidAabb(cd3Aabb aabb); /* also min <= max on every axis */
 CD_API bool cd3IsValidSphere(cd3Sphere sphere);
 CD_API bool cd3IsValidCapsule(cd3Capsule capsule);
@@ -210,7 +235,8 @@ CD_API bool cd3IsValidHullShape(cd3HullShape hull);
 
 /* Like cd3IsValidShape, with the reason: CD_ERROR_NOT_FINITE, CD_ERROR_NEGATIVE_SIZE,
  * CD_ERROR_NOT_NORMALIZED, CD_ERROR_DEGENERATE, CD_ERROR_INVALID_ARGUMENT (bad type, NULL hull,
- * or a hull whose topology is broken). */
+ * or a hull whose topology is broken), CD_ERROR_OUT_OF_RANGE (a box beyond
+ * CD3_MAX_ASPECT_RATIO, a hull beyond CD3_MAX_HULL_ASPECT_RATIO). */
 CD_API cdResult cd3ValidateShape(const cd3Shape* shape);
 
 /* ---- bounds ------------------------------------------------------------------------------- */

@@ -1139,6 +1139,62 @@ static int WeldPoints(const HVec* p, int count, double weld, SortKey* keys, Sort
 }
 
 static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratch);
+
+/* Every input point below every face plane within the hull's tolerance, checked when there are at
+ * most 131072 point-face pairs (a fraction of the build's cost; as the global plane test of
+ * CheckBuiltHull): a sheet 1e30 wide in the double build (fuzz_hull3) lost its extreme point, 9
+ * tolerances above a face; the build is then retried like any other that fails its checks. */
+static bool ContainsPoints(const cd3Hull* hull, const cd3Vec* points, int count)
+{
+	if ((long)count * (long)hull->faceCount > 131072)
+	{
+		return true;
+	}
+	double tolerance = (double)cd3Hull_GetTolerance(hull);
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Plane plane = hull->planes[f];
+		for (int i = 0; i < count; ++i)
+		{
+			double height = (double)plane.normal.x * (double)points[i].x +
+							(double)plane.normal.y * (double)points[i].y +
+							(double)plane.normal.z * (double)points[i].z - (double)plane.offset;
+			if (height > tolerance)
+			{
+				return false;
+			}
+		}
+	}
+	return true;
+}
+
+/* The supported range (geometry3.h): the diagonal of the bounds over the smallest width across a
+ * face (the depth of the hull below that face's plane), in double. A face is done as soon as one
+ * vertex lies deep enough below it: a few vertices for nearly every face. */
+static bool WithinAspectRatio(const cd3Hull* hull)
+{
+	cd3Vec d = cd3Sub(hull->bounds.max, hull->bounds.min);
+	double diagonal = sqrt((double)d.x * (double)d.x + (double)d.y * (double)d.y + (double)d.z * (double)d.z);
+	double needed = diagonal / (double)CD3_MAX_HULL_ASPECT_RATIO;
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		cd3Plane plane = hull->planes[f];
+		bool deep = false;
+		for (int i = 0; i < hull->vertexCount && !deep; ++i)
+		{
+			cd3Vec v = hull->vertices[i];
+			double below = (double)plane.offset -
+						   ((double)plane.normal.x * (double)v.x + (double)plane.normal.y * (double)v.y +
+							(double)plane.normal.z * (double)v.z);
+			deep = below >= needed;
+		}
+		if (!deep)
+		{
+			return false;
+		}
+	}
+	return true;
+}
 static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch);
 
 /* The scratch of a build of `count` points, carved from one arena. */
@@ -1286,6 +1342,10 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		{
 			/* The arena's per-vertex scratch is free by now. */
 			cdResult valid = CheckBuiltHull(*hull, m->vertexMap);
+			if (valid == CD_OK && !ContainsPoints(*hull, points, count))
+			{
+				valid = CD_ERROR_DEGENERATE;
+			}
 			if (valid != CD_OK)
 			{
 				/* Never hand out a broken hull. */
@@ -1301,6 +1361,12 @@ cdResult cd3ComputeHull(const cd3Vec* points, int count, cd3Hull** hull)
 		result = CD_OK;
 	}
 	cdFree(arena.base);
+	if (result == CD_OK && !WithinAspectRatio(*hull))
+	{
+		cd3DestroyHull(*hull);
+		*hull = NULL;
+		result = CD_ERROR_OUT_OF_RANGE;
+	}
 	return result;
 }
 
@@ -1460,9 +1526,11 @@ static cdResult CheckBuiltHull(const cd3Hull* hull, int* vertexScratch)
 	cdReal tolerance = cd3Hull_GetTolerance(hull);
 	/* A thin face's plane, tilted by round-off, can pass its neighbours and not a far vertex
 	 * (fuzz_hull3, double build: slivers 1e-10 high and 100 long in lattices far from the origin,
-	 * a vertex up to twice the tolerance above): thin faces, and every face of a small hull, get
-	 * the global test (every vertex below the plane). */
-	bool small = (long)hull->vertexCount * (long)hull->faceCount <= 2048;
+	 * a vertex up to twice the tolerance above; also a face that is not thin, of a lattice hull of
+	 * 36 vertices, 1.2 tolerances below a far vertex): thin faces, and every face of a hull of at
+	 * most 131072 vertex-face pairs (about 250 vertices, a fraction of the build's cost), get the
+	 * global test (every vertex below the plane). */
+	bool small = (long)hull->vertexCount * (long)hull->faceCount <= 131072;
 	for (int i = 0; i < hull->faceCount; ++i)
 	{
 		cdResult result = CheckFace(hull, i, tolerance);
@@ -1631,7 +1699,8 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 
 cdResult cd3ValidateHull(const cd3Hull* hull)
 {
-	return ValidateHull(hull, true, NULL);
+	cdResult result = ValidateHull(hull, true, NULL);
+	return result == CD_OK && !WithinAspectRatio(hull) ? CD_ERROR_OUT_OF_RANGE : result;
 }
 
 /* ---- convenience builders ----------------------------------------------------------------------- */

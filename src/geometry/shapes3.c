@@ -188,7 +188,22 @@ static cdResult ValidateBox(cd3Box box)
 	{
 		return CD_ERROR_NEGATIVE_SIZE;
 	}
-	return cd3IsValidQuat(box.rotation) ? CD_OK : CD_ERROR_NOT_NORMALIZED;
+	if (!cd3IsValidQuat(box.rotation))
+	{
+		return CD_ERROR_NOT_NORMALIZED;
+	}
+	/* The supported range (geometry3.h): largest half extent over the smallest non-zero one. */
+	cd3Vec h = box.halfExtents;
+	cdReal largest = cdMax(h.x, cdMax(h.y, h.z));
+	cdReal thinnest = largest;
+	thinnest = h.x > CD_R(0.0) ? cdMin(thinnest, h.x) : thinnest;
+	thinnest = h.y > CD_R(0.0) ? cdMin(thinnest, h.y) : thinnest;
+	thinnest = h.z > CD_R(0.0) ? cdMin(thinnest, h.z) : thinnest;
+	if ((double)largest > CD3_MAX_ASPECT_RATIO * (double)thinnest)
+	{
+		return CD_ERROR_OUT_OF_RANGE;
+	}
+	return CD_OK;
 }
 
 bool cd3IsValidAabb(cd3Aabb aabb)

@@ -440,6 +440,29 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 	}
 }
 
+/* The one point of the incident core's deepest vertex against the reference edge's normal, its
+ * surface point straight against the normal (as in Clip), whatever the side lines. */
+static void DeepestContact(cd2Manifold* manifold, const Core* reference, int referenceEdge,
+						   const Core* incident, bool flip, cdReal speculativeDistance)
+{
+	*manifold = EmptyManifold();
+	cd2Vec n = reference->normals[referenceEdge];
+	cd2Vec v1 = reference->vertices[referenceEdge];
+	int deepest = 0;
+	for (int i = 1; i < incident->count; ++i)
+	{
+		deepest = cd2Dot(n, incident->vertices[i]) < cd2Dot(n, incident->vertices[deepest]) ? i : deepest;
+	}
+	cd2Vec straight = cd2MulSub(incident->vertices[deepest], incident->radius, n);
+	cdReal separation = cd2Dot(n, cd2Sub(straight, v1)) - reference->radius;
+	if (separation <= speculativeDistance)
+	{
+		uint32_t id = (uint32_t)referenceEdge | (uint32_t)deepest << 8 | (flip ? CD2_FEATURE_FLIP : 0u);
+		AddPoint(manifold, cd2MulSub(straight, CD_R(0.5) * separation, n), separation, id);
+		manifold->normal = flip ? cd2Neg(n) : n;
+	}
+}
+
 /* Index of the endpoint of edge (i, i + 1) that p is exactly, or -1. */
 static int EndpointIndex(const Core* core, int edge, cd2Vec p)
 {
@@ -631,17 +654,23 @@ static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal specula
 			 * closest point is inside an edge by rounding, an incident edge far from the closest
 			 * vertex), its separation along the face normal misses the gap, and the one point
 			 * along the gap is the contact. */
-			if (vertexA < 0 || vertexB < 0)
+			/* A face whose normal does not face the other core is not what is closest either:
+			 * at coordinates whose round-off exceeds the shapes' sizes, the closest points tie
+			 * between edges, and the one taken may face away. */
+			int faceA = vertexA < 0 ? FacingEdge(a, closestEdgeA, u) : 0;
+			int faceB = vertexA < 0 ? 0 : FacingEdge(b, closestEdgeB, cd2Neg(u));
+			bool facing = vertexA < 0 ? cd2Dot(a->normals[faceA], u) >= CD_R(0.0)
+									  : cd2Dot(b->normals[faceB], u) <= CD_R(0.0);
+			if ((vertexA < 0 || vertexB < 0) && facing)
 			{
 				cd2Manifold face;
 				if (vertexA < 0)
 				{
-					Clip(&face, a, FacingEdge(a, closestEdgeA, u), b, false, speculativeDistance, false);
+					Clip(&face, a, faceA, b, false, speculativeDistance, false);
 				}
 				else
 				{
-					Clip(&face, b, FacingEdge(b, closestEdgeB, cd2Neg(u)), a, true, speculativeDistance,
-						 false);
+					Clip(&face, b, faceB, a, true, speculativeDistance, false);
 				}
 				if (face.pointCount > 0 &&
 					SmallestSeparation(&face) <= closest.distance - total + separatedTolerance)
@@ -692,6 +721,37 @@ static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal specula
 	bool missed =
 		keptOutside || manifold.pointCount == 0 ||
 		SmallestSeparation(&manifold) > cdMax(separationA, separationB) - total + separatedTolerance;
+	if (!apart && missed && manifold.pointCount > 0)
+	{
+		/* Overlapping cores whose clipped points lie above the separating-axis value by more than
+		 * the smaller shape's size and the round-off of their coordinates (a segment far longer
+		 * than the shape it crosses, whose side distances round to the wrong side): the one point
+		 * of the reference normal's deepest incident vertex, whose separation is that value. A
+		 * smaller miss is the clip of rounded surfaces, kept. */
+		const Core* reference = flip ? b : a;
+		const Core* incident = flip ? a : b;
+		int referenceEdge = flip ? edgeB : edgeA;
+		cdReal magnitude = CD_R(0.0), sizeA = CD_R(0.0), sizeB = CD_R(0.0);
+		for (int i = 0; i < a->count; ++i)
+		{
+			magnitude = cdMax(magnitude, cdAbs(a->vertices[i].x) + cdAbs(a->vertices[i].y));
+			sizeA = cdMax(sizeA, cdAbs(a->vertices[i].x - a->vertices[0].x) +
+									 cdAbs(a->vertices[i].y - a->vertices[0].y));
+		}
+		for (int i = 0; i < b->count; ++i)
+		{
+			magnitude = cdMax(magnitude, cdAbs(b->vertices[i].x) + cdAbs(b->vertices[i].y));
+			sizeB = cdMax(sizeB, cdAbs(b->vertices[i].x - b->vertices[0].x) +
+									 cdAbs(b->vertices[i].y - b->vertices[0].y));
+		}
+		cdReal satSeparation = (flip ? separationB : separationA) - total;
+		cdReal allowed =
+			cdMax(separatedTolerance + CD_R(64.0) * CD_REAL_EPSILON * magnitude, cdMin(sizeA, sizeB) + total);
+		if (SmallestSeparation(&manifold) > satSeparation + allowed)
+		{
+			DeepestContact(&manifold, reference, referenceEdge, incident, flip, speculativeDistance);
+		}
+	}
 	if (apart && missed)
 	{
 		if (!haveClosest)

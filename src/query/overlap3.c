@@ -190,16 +190,25 @@ static bool SegmentOverlapsCenteredBox(cd3Vec p1, cd3Vec p2, cd3Vec h, cdReal ma
 	{
 		return false;
 	}
-	cdReal crossTolerance = Tolerance(scale * MaxAbsComponent(half) * CD_R(2.0));
-	if (cdAbs(mid.y * half.z - mid.z * half.y) > h.y * absHalf.z + h.z * absHalf.y + crossTolerance)
+	/* The axes half x e_i: each term is a product of two coordinates, each known to the round-off
+	 * `coordinate` of the largest magnitude, so a term's error is that times the other factor.
+	 * A bound from the largest components instead (scale times |half|) read, for a segment nearly
+	 * parallel to a box edge, as a band of round-off / sine far beyond the true gap. */
+	cdReal coordinate = Tolerance(scale);
+	cd3Vec absMid = cd3Abs(mid);
+	cd3Vec factor = cd3Add(cd3Add(absMid, absHalf), h);
+	if (cdAbs(mid.y * half.z - mid.z * half.y) >
+		h.y * absHalf.z + h.z * absHalf.y + CD_R(2.0) * coordinate * (factor.y + factor.z))
 	{
 		return false;
 	}
-	if (cdAbs(mid.z * half.x - mid.x * half.z) > h.x * absHalf.z + h.z * absHalf.x + crossTolerance)
+	if (cdAbs(mid.z * half.x - mid.x * half.z) >
+		h.x * absHalf.z + h.z * absHalf.x + CD_R(2.0) * coordinate * (factor.x + factor.z))
 	{
 		return false;
 	}
-	if (cdAbs(mid.x * half.y - mid.y * half.x) > h.x * absHalf.y + h.y * absHalf.x + crossTolerance)
+	if (cdAbs(mid.x * half.y - mid.y * half.x) >
+		h.x * absHalf.y + h.y * absHalf.x + CD_R(2.0) * coordinate * (factor.x + factor.y))
 	{
 		return false;
 	}
