@@ -1086,7 +1086,14 @@ static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, 
 	if (!a->flat && !b->flat &&
 		(edgePairs > SAT_EDGE_PAIR_LIMIT || (hulls && edgePairs > SAT_HULL_EDGE_PAIR_LIMIT)))
 	{
-		return CollidePolytopesGjkEpa(a, b, speculativeDistance);
+		cd3Manifold m = CollidePolytopesGjkEpa(a, b, speculativeDistance);
+		if (m.pointCount == 0 || cd3LengthSquared(m.normal) > CD_R(0.0))
+		{
+			return m;
+		}
+		/* EPA gave no direction (hulls of 6 vertices at 1e9 in float: overlapping, depth 0 and a
+		 * zero normal): the separating-axis test, whatever its cost, has an axis. */
+		return CollidePolytopesSat(a, b, cd3SatPolytopes(a, b), speculativeDistance);
 	}
 	/* Beyond the speculative distance the SAT's answer is empty whatever the exact separation: it
 	 * may stop at the first axis that shows it. */
