@@ -153,7 +153,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	return true;
 }
 
-void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock)
+void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
 	int zeroBody = context->bodyCount;
 	int color = 0;
@@ -166,6 +166,7 @@ void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock)
 		/* The colour's constraints [first, last), CD_W to a block. */
 		int first = context->colorConstraintStart[color] + CD_W * (block - context->colorBlockStart[color]);
 		int last = context->colorConstraintStart[color + 1];
+		cd2PrepareContacts(world, context, first, first + CD_W < last ? first + CD_W : last);
 		cd2ContactConstraintWide* w = context->wide + block;
 		memset(w, 0, sizeof(*w));
 		for (int lane = 0; lane < CD_W; ++lane)
@@ -356,7 +357,7 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 	}
 }
 
-void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock)
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock, bool toContacts)
 {
 	for (int i = startBlock; i < endBlock; ++i)
 	{
@@ -368,6 +369,21 @@ void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock)
 				continue;
 			}
 			cd2ContactConstraint* c = context->constraints + w->constraint[lane];
+			if (toContacts)
+			{
+				cd2Contact* contact = world->contacts.data + c->contact;
+				contact->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
+				for (int k = 0; k < c->pointCount; ++k)
+				{
+					const cd2ContactPointWide* wp = w->points + k;
+					cd2ContactPoint* mp = contact->points + k;
+					mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
+					mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
+					mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
+					mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+				}
+				continue;
+			}
 			c->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
 			for (int k = 0; k < c->pointCount; ++k)
 			{
