@@ -185,6 +185,7 @@ static uint32_t cd2WarmStartKey(uint32_t id)
 /* ---- pairs ------------------------------------------------------------------------------------- */
 typedef struct cd2PairCollector
 {
+	const cdPairSet* existing; /* the world's contacts' pairs: overlaps that have one are dropped */
 	CD_ARRAY(uint64_t) pairs;
 } cd2PairCollector;
 
@@ -194,6 +195,11 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	(void)proxyB;
 	cd2PairCollector* collector = (cd2PairCollector*)context;
 	uint64_t key = cdPairKey((int)userDataA, (int)userDataB);
+	/* Most overlaps of moved boxes already have their contact: drop them before the sort. */
+	if (cdPairSet_Find(collector->existing, key) >= 0)
+	{
+		return;
+	}
 	if (!cdArrayPush(collector->pairs, key))
 	{
 		/* dropped: the pair comes back when one of the boxes moves again */
@@ -324,6 +330,7 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 {
 	cd2PairCollector collector;
 	memset(&collector, 0, sizeof(collector));
+	collector.existing = &world->pairs;
 	cd2BroadPhase_UpdatePairs(world->broadPhase, cd2CollectPair, &collector);
 	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
 	 * history, shape indices are part of the saved state. */

@@ -87,8 +87,29 @@ static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const in
 /* Writes the velocities of the movable lanes back (the zero body and kinematic bodies are shared by
  * blocks of one colour, which may run on different threads: they are only read). */
 static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, const unsigned char* moves,
-										cdW vx, cdW vy, cdW w)
+										cdW vx, cdW vy, cdW w, cdW dpx)
 {
+#if CD_WIDE_SSE
+	/* Back to rows (vx, vy, w, dpx) of each body, one store each (dpx as gathered, unchanged). */
+	_MM_TRANSPOSE4_PS(vx, vy, w, dpx);
+	if (moves[0] != 0)
+	{
+		_mm_storeu_ps((float*)(bodies + index[0]), vx);
+	}
+	if (moves[1] != 0)
+	{
+		_mm_storeu_ps((float*)(bodies + index[1]), vy);
+	}
+	if (moves[2] != 0)
+	{
+		_mm_storeu_ps((float*)(bodies + index[2]), w);
+	}
+	if (moves[3] != 0)
+	{
+		_mm_storeu_ps((float*)(bodies + index[3]), dpx);
+	}
+#else
+	(void)dpx;
 	cdReal x[CD_W], y[CD_W], a[CD_W];
 	cdWStore(x, vx);
 	cdWStore(y, vy);
@@ -104,6 +125,7 @@ static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index,
 		b->linearVelocity.y = y[i];
 		b->angularVelocity = a[i];
 	}
+#endif
 }
 
 bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
@@ -153,7 +175,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	return true;
 }
 
-void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock)
+void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
 	int zeroBody = context->bodyCount;
 	int color = 0;
@@ -166,6 +188,7 @@ void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock)
 		/* The colour's constraints [first, last), CD_W to a block. */
 		int first = context->colorConstraintStart[color] + CD_W * (block - context->colorBlockStart[color]);
 		int last = context->colorConstraintStart[color + 1];
+		cd2PrepareContacts(world, context, first, first + CD_W < last ? first + CD_W : last);
 		cd2ContactConstraintWide* w = context->wide + block;
 		memset(w, 0, sizeof(*w));
 		for (int lane = 0; lane < CD_W; ++lane)
@@ -248,12 +271,19 @@ void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
 		}
 		wA = cdWSub(wA, cdWMul(c->invIA, c->rollingImpulse));
 		wB = cdWAdd(wB, cdWMul(c->invIB, c->rollingImpulse));
-		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA);
-		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB);
+		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA, a.dpx);
+		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB, b.dpx);
 	}
 }
 
-void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias)
+/* Inlined twice with a constant useBias (the solve and the relax pass): each loop keeps only its
+ * own work, and fewer values compete for registers. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CD2_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CD2_ALWAYS_INLINE inline
+#endif
+static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, int start, int end, const bool useBias)
 {
 	cd2SolverBody* bodies = context->bodies;
 	cdW inv_h = cdWSplat(context->inv_h);
@@ -343,20 +373,35 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 				wB = cdWAdd(wB, cdWMul(iB, cdWSub(cdWMul(rBx, Py), cdWMul(rBy, Px))));
 			}
 			cdW rolling = cdWGreater(c->rollingResistance, zero);
-			cdW maxLambda = cdWMul(c->rollingResistance, totalNormalImpulse);
-			cdW lambda = cdWMul(cdWNeg(c->rollingMass), cdWSub(wB, wA));
-			cdW newLambda = cdWClamp(cdWAdd(c->rollingImpulse, lambda), cdWNeg(maxLambda), maxLambda);
-			lambda = cdWSub(newLambda, c->rollingImpulse);
-			c->rollingImpulse = cdWSelect(rolling, newLambda, c->rollingImpulse);
-			wA = cdWSelect(rolling, cdWSub(wA, cdWMul(iA, lambda)), wA);
-			wB = cdWSelect(rolling, cdWAdd(wB, cdWMul(iB, lambda)), wB);
+			if (cdWAny(rolling))
+			{
+				cdW maxLambda = cdWMul(c->rollingResistance, totalNormalImpulse);
+				cdW lambda = cdWMul(cdWNeg(c->rollingMass), cdWSub(wB, wA));
+				cdW newLambda = cdWClamp(cdWAdd(c->rollingImpulse, lambda), cdWNeg(maxLambda), maxLambda);
+				lambda = cdWSub(newLambda, c->rollingImpulse);
+				c->rollingImpulse = cdWSelect(rolling, newLambda, c->rollingImpulse);
+				wA = cdWSelect(rolling, cdWSub(wA, cdWMul(iA, lambda)), wA);
+				wB = cdWSelect(rolling, cdWAdd(wB, cdWMul(iB, lambda)), wB);
+			}
 		}
-		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA);
-		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB);
+		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA, a.dpx);
+		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB, b.dpx);
 	}
 }
 
-void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock)
+void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias)
+{
+	if (useBias)
+	{
+		cd2SolveContactsWideImpl(context, start, end, true);
+	}
+	else
+	{
+		cd2SolveContactsWideImpl(context, start, end, false);
+	}
+}
+
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock, bool toContacts)
 {
 	for (int i = startBlock; i < endBlock; ++i)
 	{
@@ -368,6 +413,21 @@ void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock)
 				continue;
 			}
 			cd2ContactConstraint* c = context->constraints + w->constraint[lane];
+			if (toContacts)
+			{
+				cd2Contact* contact = world->contacts.data + c->contact;
+				contact->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
+				for (int k = 0; k < c->pointCount; ++k)
+				{
+					const cd2ContactPointWide* wp = w->points + k;
+					cd2ContactPoint* mp = contact->points + k;
+					mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
+					mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
+					mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
+					mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+				}
+				continue;
+			}
 			c->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
 			for (int k = 0; k < c->pointCount; ++k)
 			{

@@ -232,10 +232,10 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	switch (stage->kind)
 	{
 	case CD2_STAGE_PREPARE_CONTACTS:
-		cd2PrepareContacts(world, context, start, end);
+		cd2PrepareContacts(world, context, stage->first + start, stage->first + end);
 		break;
 	case CD2_STAGE_PACK_WIDE:
-		cd2PackContactsWide(context, start, end);
+		cd2PackContactsWide(world, context, start, end);
 		break;
 	case CD2_STAGE_INTEGRATE_VELOCITIES:
 		cd2IntegrateVelocities(context, start, end);
@@ -262,13 +262,13 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 		cd2IntegratePositions(context, start, end);
 		break;
 	case CD2_STAGE_STORE_WIDE:
-		cd2StoreContactsWide(context, start, end);
+		cd2StoreContactsWide(world, context, start, end, stage->useBias);
 		break;
 	case CD2_STAGE_RESTITUTION:
 		cd2ApplyRestitution(context);
 		break;
 	case CD2_STAGE_STORE_IMPULSES:
-		cd2StoreImpulses(world, context, start, end);
+		cd2StoreImpulses(world, context, stage->first + start, stage->first + end);
 		break;
 	case CD2_STAGE_STORE_JOINTS:
 		cd2StoreJointReactions(world, context);
@@ -575,7 +575,10 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 	int overflowCount = context.constraintCount > context.overflowStart ? 1 : 0;
 	int jointStage = context.jointCount > 0 ? 1 : 0;
-	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount, 32, 0, false);
+	/* The coloured constraints are prepared by the pack stage, block by block (in cache when packed);
+	 * this stage prepares the overflow colour's. */
+	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount - context.overflowStart, 32,
+				context.overflowStart, false);
 	cd2AddStage(&list, CD2_STAGE_PACK_WIDE, context.wideCount, 8, 0, false);
 	for (int step = 0; step < subStepCount; ++step)
 	{
@@ -591,9 +594,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, false);
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}
-	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
+	/* Without restitution (which reads and changes the constraints' impulses) the wide blocks are
+	 * stored straight into their contacts (useBias marks that), and the store stage covers only the
+	 * overflow colour's constraints. */
+	bool storeDirect = bouncing == 0;
+	int storeFirst = storeDirect ? context.overflowStart : 0;
+	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, storeDirect);
 	cd2AddStage(&list, CD2_STAGE_RESTITUTION, bouncing > 0 ? 1 : 0, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount, 32, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - storeFirst, 32, storeFirst, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
 

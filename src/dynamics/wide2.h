@@ -72,6 +72,11 @@ static inline cdW cdWLoad(const cdReal* in)
 {
 	return _mm_loadu_ps(in);
 }
+/* Whether any lane of a mask is true. */
+static inline bool cdWAny(cdW mask)
+{
+	return _mm_movemask_ps(mask) != 0;
+}
 #elif !CD_DOUBLE && defined(__wasm_simd128__) && !defined(COLLIDE_NO_SIMD)
 /* WebAssembly SIMD128 (clang -msimd128): the same four-float operations. pmin/pmax are the
  * "pseudo" min/max, b < a ? b : a and a < b ? b : a, so cdWMin(a, b) = pmin(b, a) is a < b ? a : b
@@ -133,6 +138,10 @@ static inline void cdWStore(cdReal* out, cdW a)
 static inline cdW cdWLoad(const cdReal* in)
 {
 	return wasm_v128_load(in);
+}
+static inline bool cdWAny(cdW mask)
+{
+	return wasm_v128_any_true(mask);
 }
 #else
 #define CD_WIDE_SSE 0
@@ -204,6 +213,10 @@ static inline void cdWStore(cdReal* out, cdW a)
 static inline cdW cdWLoad(const cdReal* in)
 {
 	CD_W_LANES(in[i]);
+}
+static inline bool cdWAny(cdW mask)
+{
+	return mask.v[0] != CD_R(0.0) || mask.v[1] != CD_R(0.0) || mask.v[2] != CD_R(0.0) || mask.v[3] != CD_R(0.0);
 }
 #undef CD_W_LANES
 #endif

@@ -398,14 +398,16 @@ void cd2ApplyRestitution(cd2StepContext* context);
  * returns when it is done; on the calling thread when there is one worker or few items. */
 void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext);
 /* Lays the coloured constraints out in wide blocks (colorBlockStart, overflowStart) and allocates
- * them; cd2PackContactsWide then fills blocks [start, end) from the prepared constraints. */
+ * them; cd2PackContactsWide then prepares the constraints of blocks [start, end) (cd2PrepareContacts,
+ * while they are in cache) and fills the blocks from them. */
 bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
-void cd2PackContactsWide(cd2StepContext* context, int startBlock, int endBlock);
+void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock);
 /* Blocks [start, end) of the wide constraints (one colour at most, see colorBlockStart). */
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end);
 void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias);
-/* Blocks [start, end) back into their constraints; then constraints [start, end) into contacts. */
-void cd2StoreContactsWide(cd2StepContext* context, int startBlock, int endBlock);
+/* Blocks [start, end) back into their constraints, or straight into their contacts when toContacts
+ * (no restitution pass in between); then constraints [start, end) into contacts. */
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock, bool toContacts);
 void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start, int end);
 
 /* ---- solver2.c ------------------------------------------------------------------------------- */
