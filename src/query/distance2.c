@@ -551,3 +551,23 @@ cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2Simp
 	}
 	return cd2DistanceCores(&coreA, &coreB, cache, status);
 }
+
+cd2ClosestPoints cd2DistanceLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd2Core coreA, coreB;
+	if (!cd2MakeCore(a, &coreA) || !cd2MakeCore(b, &coreB))
+	{
+		CD_ASSERT(false);
+		cd2ClosestPoints none = {CD2_VEC_ZERO, CD2_VEC_ZERO, CD_REAL_MAX};
+		return none;
+	}
+	/* Only B's core points move into A's frame (no copy of the shape, its normals or centroid). */
+	cd2Vec placed[CD2_CORE_MAX_POINTS];
+	for (int i = 0; i < coreB.count; ++i)
+	{
+		placed[i] = cd2TransformPoint(xfB, coreB.points[i]);
+	}
+	coreB.points = placed;
+	return cd2DistanceCores(&coreA, &coreB, NULL, NULL);
+}
