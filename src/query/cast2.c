@@ -215,6 +215,11 @@ MotionTransform(const SweepMotion* m, cdReal t)
 	return xf;
 }
 
+/* A sweep that neither moves nor turns: MotionTransform gives the same transform at every t >= 0
+ * (t times a zero is a zero of one sign for all of them). */
+#define CAST_MOTION_STILL(m)                                                                                 \
+	((m)->angularVelocity == CD_R(0.0) && (m)->velocity.x == CD_R(0.0) && (m)->velocity.y == CD_R(0.0))
+
 cd2Transform cd2GetSweepTransform(const cd2Sweep* sweep, cdReal t)
 {
 	SweepMotion m = MakeMotion(sweep);
