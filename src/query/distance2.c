@@ -156,8 +156,17 @@ static bool SolveTriangle(const cd2Vec* w, cdReal* l)
 
 /* Reduces the simplex to the vertices that support its point closest to the origin, sets their
  * weights and returns true when the origin is enclosed by a triangle. */
-static bool SolveSimplex(GjkSimplex* simplex)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool
+SolveSimplex(GjkSimplex* simplex)
 {
+	if (simplex->count == 1)
+	{
+		simplex->lambda[0] = CD_R(1.0); /* a point is its own closest point */
+		return false;
+	}
 	cd2Vec w[3];
 	cdReal l[3] = {CD_R(1.0), CD_R(0.0), CD_R(0.0)};
 	/* The weights do not depend on scale: solve on vertices scaled to unit size, so that the
