@@ -8,9 +8,9 @@
 // - inside the timed loop, B is placed in A's frame from the two body transforms (collide:
 //   cd2InvMulTransforms / cd3InvMulTransforms, then the ...Local function), which is what
 //   b2CollidePolygons, b2Distance and btBoxBoxDetector do inside their calls;
-// - 2D distance: collide has no local-frame distance, so B's polygon is moved into A's frame in
-//   the loop (vertices and normals) and cd2Distance is called; Box2D's b2Distance gets the two
-//   local proxies and the transforms, from a cold simplex cache;
+// - 2D distance: B's polygon is moved into A's frame in the loop (vertices and normals) and
+//   cd2Distance is called, or cd2DistanceLocal gets B's local polygon and the transform; Box2D's
+//   b2Distance gets the two local proxies and the transforms, from a cold simplex cache;
 // - time of impact: both take local shapes and two sweeps (A at rest, B translating and rotating
 //   from separated to overlapping); target separation one linear slop, tolerance a quarter slop;
 // - mesh rays: the closest hit of each ray (segment of length 30) on the height field.
@@ -458,6 +458,12 @@ int main(int argc, char** argv)
 										   }});
 #endif
 			Row(o, "2D distance polygon-polygon", SC_NPAIRS, distance, distancePeers);
+			// The local-frame entry: only B's vertices are moved, inside the call.
+			auto distanceLocal = [&](int i) {
+				cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.b[(size_t)i].xf);
+				return (int)(cd2DistanceLocal(&ta[(size_t)i], &tb[(size_t)i], xf).distance > (cdReal)0.1);
+			};
+			Row(o, "2D distance polygon, cd2DistanceLocal", SC_NPAIRS, distanceLocal, distancePeers);
 		}
 	}
 	{

@@ -120,6 +120,13 @@ typedef struct cd2SimplexCache
 CD_API cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2SimplexCache* cache,
 										  cdDistanceStatus* status);
 
+/* cd2Distance of a and of b placed by xfB (B's frame in A's frame, cd2InvMulTransforms(xfA, xfB)
+ * of the two body transforms), without copying b: only the points of b's core (a polygon's
+ * vertices, a box's corners, a capsule's ends...) are moved, by cd2TransformPoint. The closest
+ * points are in A's frame. For a polygon b the answer is cd2Distance's on b's vertices moved the
+ * same way, bit for bit; for other shapes it agrees up to round-off. */
+CD_API cd2ClosestPoints cd2DistanceLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB);
+
 #ifdef __cplusplus
 }
 #endif

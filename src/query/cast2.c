@@ -183,6 +183,7 @@ typedef struct SweepMotion
 {
 	cd2Vec localCenter, center0, velocity;
 	cdReal angle0, angularVelocity, angularSpeed;
+	cd2Rot restRotation; /* the rotation at every t when the sweep does not turn */
 } SweepMotion;
 
 static SweepMotion MakeMotion(const cd2Sweep* sweep)
@@ -194,16 +195,30 @@ static SweepMotion MakeMotion(const cd2Sweep* sweep)
 	m.angle0 = sweep->angle0;
 	m.angularVelocity = sweep->angle1 - sweep->angle0;
 	m.angularSpeed = cdAbs(m.angularVelocity);
+	/* Without turning, angle0 + t * angularVelocity is angle0 + angularVelocity (a zero of the
+	 * same sign) for every t >= 0: one sine and cosine for the whole sweep instead of one per
+	 * evaluation (they were a fifth of a time of impact against a body at rest). */
+	m.restRotation = cd2MakeRot(m.angularVelocity == CD_R(0.0) ? m.angle0 + m.angularVelocity : CD_R(0.0));
 	return m;
 }
 
-static cd2Transform MotionTransform(const SweepMotion* m, cdReal t)
+/* Always inlined: a call here spilled the time of impact's loop registers. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline cd2Transform
+MotionTransform(const SweepMotion* m, cdReal t)
 {
 	cd2Transform xf;
-	xf.q = cd2MakeRot(m->angle0 + t * m->angularVelocity);
+	xf.q = m->angularVelocity == CD_R(0.0) ? m->restRotation : cd2MakeRot(m->angle0 + t * m->angularVelocity);
 	xf.p = cd2Sub(cd2MulAdd(m->center0, t, m->velocity), cd2RotateVector(xf.q, m->localCenter));
 	return xf;
 }
+
+/* A sweep that neither moves nor turns: MotionTransform gives the same transform at every t >= 0
+ * (t times a zero is a zero of one sign for all of them). */
+#define CAST_MOTION_STILL(m)                                                                                 \
+	((m)->angularVelocity == CD_R(0.0) && (m)->velocity.x == CD_R(0.0) && (m)->velocity.y == CD_R(0.0))
 
 cd2Transform cd2GetSweepTransform(const cd2Sweep* sweep, cdReal t)
 {

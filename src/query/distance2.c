@@ -156,8 +156,17 @@ static bool SolveTriangle(const cd2Vec* w, cdReal* l)
 
 /* Reduces the simplex to the vertices that support its point closest to the origin, sets their
  * weights and returns true when the origin is enclosed by a triangle. */
-static bool SolveSimplex(GjkSimplex* simplex)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool
+SolveSimplex(GjkSimplex* simplex)
 {
+	if (simplex->count == 1)
+	{
+		simplex->lambda[0] = CD_R(1.0); /* a point is its own closest point */
+		return false;
+	}
 	cd2Vec w[3];
 	cdReal l[3] = {CD_R(1.0), CD_R(0.0), CD_R(0.0)};
 	/* The weights do not depend on scale: solve on vertices scaled to unit size, so that the
@@ -550,4 +559,24 @@ cd2ClosestPoints cd2DistanceCached(const cd2Shape* a, const cd2Shape* b, cd2Simp
 		return none;
 	}
 	return cd2DistanceCores(&coreA, &coreB, cache, status);
+}
+
+cd2ClosestPoints cd2DistanceLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform xfB)
+{
+	CD_ASSERT(a != NULL && b != NULL);
+	cd2Core coreA, coreB;
+	if (!cd2MakeCore(a, &coreA) || !cd2MakeCore(b, &coreB))
+	{
+		CD_ASSERT(false);
+		cd2ClosestPoints none = {CD2_VEC_ZERO, CD2_VEC_ZERO, CD_REAL_MAX};
+		return none;
+	}
+	/* Only B's core points move into A's frame (no copy of the shape, its normals or centroid). */
+	cd2Vec placed[CD2_CORE_MAX_POINTS];
+	for (int i = 0; i < coreB.count; ++i)
+	{
+		placed[i] = cd2TransformPoint(xfB, coreB.points[i]);
+	}
+	coreB.points = placed;
+	return cd2DistanceCores(&coreA, &coreB, NULL, NULL);
 }
