@@ -155,24 +155,44 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 
 	cd3SatResult r;
 	/* A's faces: B's radius on A's axis i. */
-	cdReal faceA[3] = {cd3AbsNoBranch(t0) - ha0 - (hb0 * a00 + hb1 * a01 + hb2 * a02),
-					   cd3AbsNoBranch(t1) - ha1 - (hb0 * a10 + hb1 * a11 + hb2 * a12),
-					   cd3AbsNoBranch(t2) - ha2 - (hb0 * a20 + hb1 * a21 + hb2 * a22)};
-	int bestA = faceA[1] > faceA[0] ? 1 : 0;
-	bestA = faceA[2] > faceA[bestA] ? 2 : bestA;
+	/* Named scalars and selects, not arrays indexed by the best axis: the indexed load waited on
+	 * the stores of the array (store forwarding) just before the exit test. */
+	cdReal fa0 = cd3AbsNoBranch(t0) - ha0 - (hb0 * a00 + hb1 * a01 + hb2 * a02);
+	cdReal fa1 = cd3AbsNoBranch(t1) - ha1 - (hb0 * a10 + hb1 * a11 + hb2 * a12);
+	cdReal fa2 = cd3AbsNoBranch(t2) - ha2 - (hb0 * a20 + hb1 * a21 + hb2 * a22);
+	int bestA = fa1 > fa0 ? 1 : 0;
+	cdReal sepA = fa1 > fa0 ? fa1 : fa0;
+	bestA = fa2 > sepA ? 2 : bestA;
+	sepA = fa2 > sepA ? fa2 : sepA;
 	cdReal tBestA = bestA == 0 ? t0 : (bestA == 1 ? t1 : t2);
-	r.faceSeparationA = faceA[bestA];
+	r.faceSeparationA = sepA;
 	r.faceA = 2 * bestA + (tBestA > CD_R(0.0) ? 1 : 0);
+	if (r.faceSeparationA > faceExit)
+	{
+		/* Apart beyond the caller's limit along one of A's face normals: B's faces and the edges
+		 * are skipped (faceSeparationB and edgeSeparation -CD_REAL_MAX). */
+		r.faceSeparationB = -CD_REAL_MAX;
+		r.faceB = 0;
+		r.edgeSeparation = -CD_REAL_MAX;
+		r.edgeA = -1;
+		r.edgeB = -1;
+		r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+		*result = r;
+		return;
+	}
 	/* B's faces: the centre offset on B's axis j, A's radius on it. */
-	cdReal tB[3] = {cd3Dot(t, m.cx), cd3Dot(t, m.cy), cd3Dot(t, m.cz)};
-	cdReal faceB[3] = {cd3AbsNoBranch(tB[0]) - hb0 - (ha0 * a00 + ha1 * a10 + ha2 * a20),
-					   cd3AbsNoBranch(tB[1]) - hb1 - (ha0 * a01 + ha1 * a11 + ha2 * a21),
-					   cd3AbsNoBranch(tB[2]) - hb2 - (ha0 * a02 + ha1 * a12 + ha2 * a22)};
-	int bestB = faceB[1] > faceB[0] ? 1 : 0;
-	bestB = faceB[2] > faceB[bestB] ? 2 : bestB;
-	r.faceSeparationB = faceB[bestB];
+	cdReal tb0 = cd3Dot(t, m.cx), tb1 = cd3Dot(t, m.cy), tb2 = cd3Dot(t, m.cz);
+	cdReal fb0 = cd3AbsNoBranch(tb0) - hb0 - (ha0 * a00 + ha1 * a10 + ha2 * a20);
+	cdReal fb1 = cd3AbsNoBranch(tb1) - hb1 - (ha0 * a01 + ha1 * a11 + ha2 * a21);
+	cdReal fb2 = cd3AbsNoBranch(tb2) - hb2 - (ha0 * a02 + ha1 * a12 + ha2 * a22);
+	int bestB = fb1 > fb0 ? 1 : 0;
+	cdReal sepB = fb1 > fb0 ? fb1 : fb0;
+	bestB = fb2 > sepB ? 2 : bestB;
+	sepB = fb2 > sepB ? fb2 : sepB;
+	cdReal tBestB = bestB == 0 ? tb0 : (bestB == 1 ? tb1 : tb2);
+	r.faceSeparationB = sepB;
 	/* B's face toward A: A lies on B's negative side when tB > 0. */
-	r.faceB = 2 * bestB + (tB[bestB] > CD_R(0.0) ? 0 : 1);
+	r.faceB = 2 * bestB + (tBestB > CD_R(0.0) ? 0 : 1);
 
 	cdReal faceBest = cdMax(r.faceSeparationA, r.faceSeparationB);
 	if (faceBest > faceExit)
