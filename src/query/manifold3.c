@@ -1904,9 +1904,14 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance)
 {
 	cd3Box placed;
-	placed.center = cd3TransformPoint(xfB, b.center);
 	placed.halfExtents = b.halfExtents;
-	placed.rotation = cd3MulQuat(xfB.q, b.rotation);
+	/* A box centred in its body's frame (the common case) is placed by xfB alone: the products with
+	 * the zero centre and the identity rotation give xfB's own components (up to the sign of a zero). */
+	bool centred = b.center.x == CD_R(0.0) && b.center.y == CD_R(0.0) && b.center.z == CD_R(0.0);
+	bool aligned = b.rotation.x == CD_R(0.0) && b.rotation.y == CD_R(0.0) && b.rotation.z == CD_R(0.0) &&
+				   b.rotation.w == CD_R(1.0);
+	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
+	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
 	return CollideBoxes(&a, &placed, speculativeDistance);
 }
 

@@ -95,16 +95,26 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 	cd3RayHit best;
 	int bestIndex = 0;
 	cdReal limit = CD_R(1.0) + FRACTION_MARGIN;
+	/* Each entry keeps the node's entry fraction, so that nodes behind the closest hit found since
+	 * they were pushed are dropped when popped, without testing their triangles or children. */
 	int stack[STACK_SIZE];
+	cdReal enterStack[STACK_SIZE];
 	int top = 0;
-	if (EnterNode(&box, mesh->nodes, limit) < CD_R(0.0))
+	cdReal rootEnter = EnterNode(&box, mesh->nodes, limit);
+	if (rootEnter < CD_R(0.0))
 	{
 		return false;
 	}
-	stack[top++] = 0;
+	stack[top] = 0;
+	enterStack[top++] = rootEnter;
 	while (top > 0)
 	{
-		const cd3MeshNode* node = mesh->nodes + stack[--top];
+		--top;
+		if (enterStack[top] > limit)
+		{
+			continue;
+		}
+		const cd3MeshNode* node = mesh->nodes + stack[top];
 		if (node->count > 0)
 		{
 			for (int s = node->first; s < node->first + node->count; ++s)
@@ -139,22 +149,28 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 		{
 			if (tl <= tr)
 			{
-				stack[top++] = left + 1;
-				stack[top++] = left;
+				stack[top] = left + 1;
+				enterStack[top++] = tr;
+				stack[top] = left;
+				enterStack[top++] = tl;
 			}
 			else
 			{
-				stack[top++] = left;
-				stack[top++] = left + 1;
+				stack[top] = left;
+				enterStack[top++] = tl;
+				stack[top] = left + 1;
+				enterStack[top++] = tr;
 			}
 		}
 		else if (tl >= CD_R(0.0))
 		{
-			stack[top++] = left;
+			stack[top] = left;
+			enterStack[top++] = tl;
 		}
 		else if (tr >= CD_R(0.0))
 		{
-			stack[top++] = left + 1;
+			stack[top] = left + 1;
+			enterStack[top++] = tr;
 		}
 	}
 	if (found && out != NULL)

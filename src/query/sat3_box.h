@@ -51,10 +51,19 @@ typedef struct cd3BoxEdgeBest
  * explicitly (see cd3BoxEdgeAxis). */
 #define CD3_BOX_EXPLICIT_RADIUS_SINE CD_R(0.015625)
 
+/* Always inlined where the compiler allows forcing it: nine calls in a row, each a few multiplies
+ * on the common path, which a call would turn into spills of the SAT's matrix entries. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CD3_BOX_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CD3_BOX_ALWAYS_INLINE inline
+#endif
+
 /* Edge axis A_i x B_j in A's frame: (0, -r[2][j], r[1][j]) for i = 0 and its cyclic shifts (ri1j
  * and ri2j: the matrix entries of B's axis j on A's axes i+1 and i+2), so the projections are sums
  * of the matrix entries: radiusA and radiusB are the boxes' and centre the centres' projections,
- * all times the axis length.
+ * all times the axis length. True when the best edge separation so far exceeds exitSeparation
+ * (the boxes are then apart by more than the caller cares about).
  *
  * radiusB takes B's axes k != j on the axis from the identity B_k . (A_i x B_j) = +-A_i . B_l: an
  * entry whose round-off, epsilon, is divided by the axis length, the sine of the edges' angle.
@@ -63,14 +72,15 @@ typedef struct cd3BoxEdgeBest
  * overlap), so below a sine of 1/64 the radius is projected on the axis itself, B's axes being
  * the columns of m: round-off a few epsilon of the radius, whatever the sine. Rare: a random
  * pair of boxes has such an edge pair 0.2% of the time. */
-static inline void cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j, cdReal ri1j, cdReal ri2j, cdReal radiusA,
-								  cdReal radiusB, cdReal centre, cdReal faceBest, const cd3Mat33* m,
-								  cd3Vec hb)
+static CD3_BOX_ALWAYS_INLINE bool cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j, cdReal ri1j, cdReal ri2j,
+												 cdReal radiusA, cdReal radiusB, cdReal centre,
+												 cdReal faceBest, cdReal exitSeparation, const cd3Mat33* m,
+												 cd3Vec hb)
 {
 	cdReal length2 = ri1j * ri1j + ri2j * ri2j;
 	if (!(length2 > CD3_BOX_PARALLEL_SINE * CD3_BOX_PARALLEL_SINE))
 	{
-		return;
+		return false;
 	}
 	if (length2 < CD3_BOX_EXPLICIT_RADIUS_SINE * CD3_BOX_EXPLICIT_RADIUS_SINE)
 	{
@@ -91,7 +101,7 @@ static inline void cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j, cdReal ri1j, 
 		(ahead & (gap > CD_R(0.0)) & (gap * gap > bar)) | (behind & ((gap >= CD_R(0.0)) | (gap * gap < bar)));
 	if (!beats)
 	{
-		return;
+		return false;
 	}
 	cdReal separation = gap / cdSqrt(length2);
 	if (separation > e->separation)
@@ -105,19 +115,30 @@ static inline void cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j, cdReal ri1j, 
 		e->i = i;
 		e->j = j;
 	}
+	return e->separation > exitSeparation;
 }
 
 /* cd3SatBoxes writing into *result, inline: the box-box manifold reads the result at once, and
  * a result returned through memory stalls on store forwarding. The matrix entries are named
  * scalars, not arrays: arrays filled a float at a time and read back two at a time by the
  * vectorizer stalled on store forwarding too. With the best face separation above faceExit the
- * edge axes are skipped (edgeSeparation -CD_REAL_MAX, no edges): pass CD_REAL_MAX for every axis. */
+ * edge axes are skipped (edgeSeparation -CD_REAL_MAX, no edges), and the edge axes stop at the first
+ * one beyond faceExit (edgeSeparation is then that axis's, above faceExit, not the largest): pass
+ * CD_REAL_MAX for every axis. */
 static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd3SatResult* result,
 									  cd3Mat33* rotation, cd3Vec* translation, cdReal faceExit)
 {
 	cd3Quat qa = boxA->rotation;
-	cd3Quat q = cd3InvMulQuat(qa, boxB->rotation); /* B's axes in A's frame */
-	cd3Vec t = cd3InvRotateVector(qa, cd3Sub(boxB->center, boxA->center));
+	/* A box in its body's frame usually has the identity rotation: conj(qa) q and the rotated
+	 * offset are then q and the offset themselves (up to the sign of a zero), without the products. */
+	bool identityA = qa.x == CD_R(0.0) && qa.y == CD_R(0.0) && qa.z == CD_R(0.0) && qa.w == CD_R(1.0);
+	cd3Quat q = boxB->rotation; /* B's axes in A's frame */
+	cd3Vec t = cd3Sub(boxB->center, boxA->center);
+	if (!identityA)
+	{
+		q = cd3InvMulQuat(qa, q);
+		t = cd3InvRotateVector(qa, t);
+	}
 	cd3Mat33 m = cd3MakeMatFromQuat(q);
 	*rotation = m;
 	*translation = t;
@@ -134,24 +155,44 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 
 	cd3SatResult r;
 	/* A's faces: B's radius on A's axis i. */
-	cdReal faceA[3] = {cd3AbsNoBranch(t0) - ha0 - (hb0 * a00 + hb1 * a01 + hb2 * a02),
-					   cd3AbsNoBranch(t1) - ha1 - (hb0 * a10 + hb1 * a11 + hb2 * a12),
-					   cd3AbsNoBranch(t2) - ha2 - (hb0 * a20 + hb1 * a21 + hb2 * a22)};
-	int bestA = faceA[1] > faceA[0] ? 1 : 0;
-	bestA = faceA[2] > faceA[bestA] ? 2 : bestA;
+	/* Named scalars and selects, not arrays indexed by the best axis: the indexed load waited on
+	 * the stores of the array (store forwarding) just before the exit test. */
+	cdReal fa0 = cd3AbsNoBranch(t0) - ha0 - (hb0 * a00 + hb1 * a01 + hb2 * a02);
+	cdReal fa1 = cd3AbsNoBranch(t1) - ha1 - (hb0 * a10 + hb1 * a11 + hb2 * a12);
+	cdReal fa2 = cd3AbsNoBranch(t2) - ha2 - (hb0 * a20 + hb1 * a21 + hb2 * a22);
+	int bestA = fa1 > fa0 ? 1 : 0;
+	cdReal sepA = fa1 > fa0 ? fa1 : fa0;
+	bestA = fa2 > sepA ? 2 : bestA;
+	sepA = fa2 > sepA ? fa2 : sepA;
 	cdReal tBestA = bestA == 0 ? t0 : (bestA == 1 ? t1 : t2);
-	r.faceSeparationA = faceA[bestA];
+	r.faceSeparationA = sepA;
 	r.faceA = 2 * bestA + (tBestA > CD_R(0.0) ? 1 : 0);
+	if (r.faceSeparationA > faceExit)
+	{
+		/* Apart beyond the caller's limit along one of A's face normals: B's faces and the edges
+		 * are skipped (faceSeparationB and edgeSeparation -CD_REAL_MAX). */
+		r.faceSeparationB = -CD_REAL_MAX;
+		r.faceB = 0;
+		r.edgeSeparation = -CD_REAL_MAX;
+		r.edgeA = -1;
+		r.edgeB = -1;
+		r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+		*result = r;
+		return;
+	}
 	/* B's faces: the centre offset on B's axis j, A's radius on it. */
-	cdReal tB[3] = {cd3Dot(t, m.cx), cd3Dot(t, m.cy), cd3Dot(t, m.cz)};
-	cdReal faceB[3] = {cd3AbsNoBranch(tB[0]) - hb0 - (ha0 * a00 + ha1 * a10 + ha2 * a20),
-					   cd3AbsNoBranch(tB[1]) - hb1 - (ha0 * a01 + ha1 * a11 + ha2 * a21),
-					   cd3AbsNoBranch(tB[2]) - hb2 - (ha0 * a02 + ha1 * a12 + ha2 * a22)};
-	int bestB = faceB[1] > faceB[0] ? 1 : 0;
-	bestB = faceB[2] > faceB[bestB] ? 2 : bestB;
-	r.faceSeparationB = faceB[bestB];
+	cdReal tb0 = cd3Dot(t, m.cx), tb1 = cd3Dot(t, m.cy), tb2 = cd3Dot(t, m.cz);
+	cdReal fb0 = cd3AbsNoBranch(tb0) - hb0 - (ha0 * a00 + ha1 * a10 + ha2 * a20);
+	cdReal fb1 = cd3AbsNoBranch(tb1) - hb1 - (ha0 * a01 + ha1 * a11 + ha2 * a21);
+	cdReal fb2 = cd3AbsNoBranch(tb2) - hb2 - (ha0 * a02 + ha1 * a12 + ha2 * a22);
+	int bestB = fb1 > fb0 ? 1 : 0;
+	cdReal sepB = fb1 > fb0 ? fb1 : fb0;
+	bestB = fb2 > sepB ? 2 : bestB;
+	sepB = fb2 > sepB ? fb2 : sepB;
+	cdReal tBestB = bestB == 0 ? tb0 : (bestB == 1 ? tb1 : tb2);
+	r.faceSeparationB = sepB;
 	/* B's face toward A: A lies on B's negative side when tB > 0. */
-	r.faceB = 2 * bestB + (tB[bestB] > CD_R(0.0) ? 0 : 1);
+	r.faceB = 2 * bestB + (tBestB > CD_R(0.0) ? 0 : 1);
 
 	cdReal faceBest = cdMax(r.faceSeparationA, r.faceSeparationB);
 	if (faceBest > faceExit)
@@ -169,24 +210,28 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	e.separation = -CD_REAL_MAX;
 	e.axis = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	e.i = e.j = 0;
-	cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * a20 + ha2 * a10, hb1 * a02 + hb2 * a01, t2 * r10 - t1 * r20,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * a21 + ha2 * a11, hb2 * a00 + hb0 * a02, t2 * r11 - t1 * r21,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * a22 + ha2 * a12, hb0 * a01 + hb1 * a00, t2 * r12 - t1 * r22,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * a00 + ha0 * a20, hb1 * a12 + hb2 * a11, t0 * r20 - t2 * r00,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * a01 + ha0 * a21, hb2 * a10 + hb0 * a12, t0 * r21 - t2 * r01,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * a02 + ha0 * a22, hb0 * a11 + hb1 * a10, t0 * r22 - t2 * r02,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * a10 + ha1 * a00, hb1 * a22 + hb2 * a21, t1 * r00 - t0 * r10,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * a11 + ha1 * a01, hb2 * a20 + hb0 * a22, t1 * r01 - t0 * r11,
-				   faceBest, &m, boxB->halfExtents);
-	cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * a12 + ha1 * a02, hb0 * a21 + hb1 * a20, t1 * r02 - t0 * r12,
-				   faceBest, &m, boxB->halfExtents);
+	/* The edge axes in turn, stopping at the first one that puts the boxes
+	 * beyond faceExit (the answer is then empty whatever the other axes give). */
+	cd3Vec hb = boxB->halfExtents;
+	bool apart = cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * a20 + ha2 * a10, hb1 * a02 + hb2 * a01,
+								t2 * r10 - t1 * r20, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * a21 + ha2 * a11, hb2 * a00 + hb0 * a02,
+								t2 * r11 - t1 * r21, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * a22 + ha2 * a12, hb0 * a01 + hb1 * a00,
+								t2 * r12 - t1 * r22, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * a00 + ha0 * a20, hb1 * a12 + hb2 * a11,
+								t0 * r20 - t2 * r00, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * a01 + ha0 * a21, hb2 * a10 + hb0 * a12,
+								t0 * r21 - t2 * r01, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * a02 + ha0 * a22, hb0 * a11 + hb1 * a10,
+								t0 * r22 - t2 * r02, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * a10 + ha1 * a00, hb1 * a22 + hb2 * a21,
+								t1 * r00 - t0 * r10, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * a11 + ha1 * a01, hb2 * a20 + hb0 * a22,
+								t1 * r01 - t0 * r11, faceBest, faceExit, &m, hb) ||
+				 cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * a12 + ha1 * a02, hb0 * a21 + hb1 * a20,
+								t1 * r02 - t0 * r12, faceBest, faceExit, &m, hb);
+	(void)apart;
 	r.edgeSeparation = e.separation;
 	r.edgeA = -1;
 	r.edgeB = -1;
@@ -196,7 +241,7 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 		cd3Vec inB = {-cd3Dot(e.axis, m.cx), -cd3Dot(e.axis, m.cy), -cd3Dot(e.axis, m.cz)};
 		r.edgeB = cd3SupportingBoxEdge(e.j, inB);
 	}
-	r.edgeNormal = cd3RotateVector(qa, e.axis);
+	r.edgeNormal = identityA ? e.axis : cd3RotateVector(qa, e.axis);
 	*result = r;
 }
 
