@@ -31,16 +31,19 @@ static struct
  * normal) is never passed over. A new finding gets a crash file, a README row and its check's
  * name here only until it is fixed. manifold-surface-disparate: a surface check failing between
  * shapes whose magnitudes differ by more than DISPARATE_SCALE (manifold3-float-disparate-hulls;
- * the -triangle form for pairs with a triangle). manifold-surface, float build only:
+ * the -triangle form for pairs with a triangle; manifold-beyond-speculative-disparate, the same
+ * pairs' point reported beyond the speculative distance). manifold-surface, float build only:
  * manifold3-float-flat-aabb-huge-hull-surface (a flat AABB and a hull at 1e9);
  * manifold-surface-speculative, float build only: manifold3-float-hulls-1e9-speculative-point (the
  * hulls of manifold3-float-disparate-hulls with both reaching 1e9: the same point 5e8 off A, at a
  * positive separation). */
 #if CD_DOUBLE
-#define OPEN_FINDINGS "manifold-surface-disparate,manifold-surface-disparate-triangle"
+#define OPEN_FINDINGS                                                                                  \
+	"manifold-surface-disparate,manifold-surface-disparate-triangle,manifold-beyond-speculative-disparate"
 #else
 #define OPEN_FINDINGS                                                                                  \
-	"manifold-surface,manifold-surface-speculative,manifold-surface-disparate,manifold-surface-disparate-triangle"
+	"manifold-surface,manifold-surface-speculative,manifold-surface-disparate,manifold-surface-disparate-triangle,"  \
+	"manifold-beyond-speculative-disparate"
 #endif
 #define DISPARATE_SCALE 1000.0
 
@@ -116,7 +119,9 @@ static void CheckManifold(const cd3Manifold* m, const cd3Shape* a, const cd3Shap
 		}
 		if ((double)p->separation > (double)s_case.speculative + band)
 		{
-			Fail("manifold-beyond-speculative",
+			double scaleA = FuzzShapeScale3(a), scaleB = FuzzShapeScale3(b);
+			bool disparate = fmax(scaleA, scaleB) > DISPARATE_SCALE * fmin(scaleA, scaleB);
+			Fail(disparate ? "manifold-beyond-speculative-disparate" : "manifold-beyond-speculative",
 				 "%s: point %d separation %.9g beyond the speculative distance", what, i,
 				 (double)p->separation);
 		}
