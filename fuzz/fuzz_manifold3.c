@@ -33,17 +33,14 @@ static struct
  * shapes whose magnitudes differ by more than DISPARATE_SCALE (manifold3-float-disparate-hulls;
  * the -triangle form for pairs with a triangle; manifold-beyond-speculative-disparate, the same
  * pairs' point reported beyond the speculative distance). manifold-surface, float build only:
- * manifold3-float-flat-aabb-huge-hull-surface (a flat AABB and a hull at 1e9);
- * manifold-surface-huge-hulls and manifold-beyond-speculative-huge-hulls, float build only:
- * manifold3-float-huge-hulls (FloatHugeHullPair). */
+ * manifold3-float-flat-aabb-huge-hull-surface (a flat AABB and a hull at 1e9). */
 #if CD_DOUBLE
 #define OPEN_FINDINGS                                                                                        \
 	"manifold-surface-disparate,manifold-surface-disparate-triangle,manifold-beyond-speculative-disparate"
 #else
 #define OPEN_FINDINGS                                                                                        \
-	"manifold-surface,manifold-surface-disparate,manifold-surface-disparate-triangle,"                       \
-	"manifold-beyond-speculative-disparate,manifold-surface-huge-hulls,manifold-beyond-speculative-huge-"    \
-	"hulls"
+	"manifold-surface,manifold-surface-disparate,manifold-surface-disparate-triangle,manifold-beyond-"       \
+	"speculative-disparate"
 #endif
 #define DISPARATE_SCALE 1000.0
 
@@ -68,21 +65,6 @@ static void Fail(const char* baseCheck, const char* format, ...)
 	FuzzPrintShape3("b", &s_case.b);
 	fprintf(stderr, "  speculative distance %.9g\n", (double)s_case.speculative);
 	FuzzFail("see above");
-}
-
-/* The open family manifold3-float-huge-hulls (fuzz/crashes/README.md): in the float build, a hull
- * pair where a hull reaches 1e8 or beyond. Its planes and clipping carry round-off of tens of
- * units, and contacts of such pairs come out 1e8 off or beyond the speculative distance. */
-static bool FloatHugeHullPair(const cd3Shape* a, const cd3Shape* b)
-{
-#if CD_DOUBLE
-	(void)a;
-	(void)b;
-	return false;
-#else
-	bool hulls = a->type == CD3_SHAPE_HULL && b->type == CD3_SHAPE_HULL;
-	return hulls && fmax(FuzzShapeScale3(a), FuzzShapeScale3(b)) >= 1e8;
-#endif
 }
 
 static int Kind(cd3ShapeType type)
@@ -136,9 +118,7 @@ static void CheckManifold(const cd3Manifold* m, const cd3Shape* a, const cd3Shap
 		{
 			double scaleA = FuzzShapeScale3(a), scaleB = FuzzShapeScale3(b);
 			bool disparate = fmax(scaleA, scaleB) > DISPARATE_SCALE * fmin(scaleA, scaleB);
-			Fail(disparate ? "manifold-beyond-speculative-disparate"
-						   : (FloatHugeHullPair(a, b) ? "manifold-beyond-speculative-huge-hulls"
-													  : "manifold-beyond-speculative"),
+			Fail(disparate ? "manifold-beyond-speculative-disparate" : "manifold-beyond-speculative",
 				 "%s: point %d separation %.9g beyond the speculative distance", what, i,
 				 (double)p->separation);
 		}
@@ -149,10 +129,9 @@ static void CheckManifold(const cd3Manifold* m, const cd3Shape* a, const cd3Shap
 		{
 			double scaleA = FuzzShapeScale3(a), scaleB = FuzzShapeScale3(b);
 			bool disparate = fmax(scaleA, scaleB) > DISPARATE_SCALE * fmin(scaleA, scaleB);
-			Fail(disparate					 ? "manifold-surface-disparate"
-				 : FloatHugeHullPair(a, b)	 ? "manifold-surface-huge-hulls"
-				 : p->separation > CD_R(0.0) ? "manifold-surface-speculative"
-											 : "manifold-surface",
+			Fail(disparate
+					 ? "manifold-surface-disparate"
+					 : (p->separation > CD_R(0.0) ? "manifold-surface-speculative" : "manifold-surface"),
 				 "%s: point %d (%.9g %.9g %.9g) separation %.9g: %.3g off A, %.3g off B (band %.3g)", what, i,
 				 (double)p->point.x, (double)p->point.y, (double)p->point.z, (double)p->separation, offA,
 				 offB, band);
