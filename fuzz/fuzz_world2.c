@@ -32,8 +32,9 @@ static bool HasKinematicJoint(const cd2JointId* joints)
 {
 	for (int j = 0; j < WORLD_FUZZ_JOINTS; ++j)
 	{
-		if (cd2Joint_IsValid(joints[j]) && (cd2Body_GetType(cd2Joint_GetBodyA(joints[j])) == CD_KINEMATIC_BODY ||
-											cd2Body_GetType(cd2Joint_GetBodyB(joints[j])) == CD_KINEMATIC_BODY))
+		if (cd2Joint_IsValid(joints[j]) &&
+			(cd2Body_GetType(cd2Joint_GetBodyA(joints[j])) == CD_KINEMATIC_BODY ||
+			 cd2Body_GetType(cd2Joint_GetBodyB(joints[j])) == CD_KINEMATIC_BODY))
 		{
 			return true;
 		}

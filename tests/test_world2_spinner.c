@@ -54,8 +54,8 @@ static void TestSpinnerKeepsBodiesInside(void)
 	cd2BodyId spinner = cd2CreateBody(world, &def);
 	cd2Polygon bar;
 	TEST_CHECK(cd2MakeRoundedBoxPolygon(
-				   (cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.4), CD_R(20.0)}, {CD_R(1.0), CD_R(0.0)}}, CD_R(0.2),
-				   &bar) == CD_OK);
+				   (cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.4), CD_R(20.0)}, {CD_R(1.0), CD_R(0.0)}},
+				   CD_R(0.2), &bar) == CD_OK);
 	cd2ShapeDef barShape = cd2DefaultShapeDef();
 	barShape.friction = CD_R(0.0);
 	cd2CreatePolygonShape(spinner, &barShape, &bar);
@@ -71,7 +71,8 @@ static void TestSpinnerKeepsBodiesInside(void)
 	cd2Capsule capsule = {{CD_R(-0.25), CD_R(0.0)}, {CD_R(0.25), CD_R(0.0)}, CD_R(0.25)};
 	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.35)};
 	cd2Polygon square;
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.35), CD_R(0.35)}, {CD_R(1.0), CD_R(0.0)}}, &square);
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.35), CD_R(0.35)}, {CD_R(1.0), CD_R(0.0)}},
+					  &square);
 	cd2BodyDef bodyDef = cd2DefaultBodyDef();
 	bodyDef.type = CD_DYNAMIC_BODY;
 	cd2ShapeDef shape = cd2DefaultShapeDef();
@@ -131,8 +132,8 @@ static void TestSpinnerKeepsBodiesInside(void)
 			firstEscapeStep = step;
 		}
 	}
-	TEST_CHECKF(escaped == 0 && firstEscapeStep < 0, "%d bodies outside the ring, the first at step %d", escaped,
-				firstEscapeStep);
+	TEST_CHECKF(escaped == 0 && firstEscapeStep < 0, "%d bodies outside the ring, the first at step %d",
+				escaped, firstEscapeStep);
 	TEST_CHECKF(deepest < 0.0, "a centre got %g m past the ring", deepest);
 
 	/* The bar did stir: the bodies it hit flew at tens of m/s. */

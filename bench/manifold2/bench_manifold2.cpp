@@ -40,8 +40,8 @@ struct Pair
 	b2PolygonShape pa, pb; // local
 	b2CircleShape pc;	   // local (centered)
 	b2Transform xa, xb, xc;
-	cd2Polygon la, lb;			   // local, for the local-frame form (what a solver calls)
-	cd2Circle lc;				   // local (centered)
+	cd2Polygon la, lb;			// local, for the local-frame form (what a solver calls)
+	cd2Circle lc;				// local (centered)
 	cd2Transform xfA, xfB, xfC; // the bodies' transforms, the same as xa, xb, xc
 };
 

@@ -1,10 +1,10 @@
 // collide_bench_manifold3: ns per call of 3D convex pair queries (distance, overlap, depth,
-// manifold) on box-box, hull(32)-hull(32), box-triangle, hull(8)-hull(8) and box-box-as-hulls pairs, with the peers that do the same job, on the
-// same pairs in the same run: Bullet (btGjkEpaSolver2 for distance/overlap/depth,
-// btBoxBoxDetector = ODE's box-box SAT and clipping, btGjkPairDetector + btGjkEpaPenetrationDepthSolver
-// for the hull manifold), libccd (ccdGJKIntersect, ccdMPRIntersect, ccdGJKPenetration,
-// ccdMPRPenetration) and FCL (fcl::distance, fcl::collide with its libccd-based GJK solver; its
-// box-box contact is ODE's), each when pkg-config finds it.
+// manifold) on box-box, hull(32)-hull(32), box-triangle, hull(8)-hull(8) and box-box-as-hulls pairs, with the
+// peers that do the same job, on the same pairs in the same run: Bullet (btGjkEpaSolver2 for
+// distance/overlap/depth, btBoxBoxDetector = ODE's box-box SAT and clipping, btGjkPairDetector +
+// btGjkEpaPenetrationDepthSolver for the hull manifold), libccd (ccdGJKIntersect, ccdMPRIntersect,
+// ccdGJKPenetration, ccdMPRPenetration) and FCL (fcl::distance, fcl::collide with its libccd-based GJK
+// solver; its box-box contact is ODE's), each when pkg-config finds it.
 //
 // Pairs: unit-size shapes near contact, as a physics step sees them. Each set has kPairs
 // overlapping pairs (depth 0.005 to 0.05) and kPairs separated pairs (gap 0.005 to 0.05):
@@ -707,7 +707,8 @@ int main(int argc, char** argv)
 	// btConvexHullShape of its vertices, libccd and FCL the hull itself).
 	std::vector<cd3Hull*> smallHulls;
 	std::vector<std::unique_ptr<btConvexHullShape>> btSmallHulls;
-	auto addHullPair = [&](PairSet& set, const cd3Hull* ha, cd3Transform ta, const cd3Hull* hb, cd3Transform tb) {
+	auto addHullPair = [&](PairSet& set, const cd3Hull* ha, cd3Transform ta, const cd3Hull* hb,
+						   cd3Transform tb) {
 		cd3HullShape a = {ha, ta}, b = {hb, tb};
 		set.a.push_back(cd3MakeHullShape(a.hull, a.transform));
 		set.b.push_back(cd3MakeHullShape(b.hull, b.transform));
@@ -717,9 +718,9 @@ int main(int argc, char** argv)
 			auto shape = std::make_unique<btConvexHullShape>();
 			for (int i = 0; i < h->vertexCount; ++i)
 			{
-				shape->addPoint(
-					btVector3((btScalar)h->vertices[i].x, (btScalar)h->vertices[i].y, (btScalar)h->vertices[i].z),
-					false);
+				shape->addPoint(btVector3((btScalar)h->vertices[i].x, (btScalar)h->vertices[i].y,
+										  (btScalar)h->vertices[i].z),
+								false);
 			}
 			shape->recalcLocalAabb();
 			shape->setMargin(0);
@@ -1043,16 +1044,17 @@ int main(int argc, char** argv)
 					++ls.failed;
 				}
 			}
-			set_(manifoldLocal, COLLIDE,
-				 [bodyA, bodyB]() {
-					 int k = 0;
-					 for (int i = 0; i < n; i += 2)
-					 {
-						 k += CollideBodies(bodyA[(size_t)i], bodyB[(size_t)i], CD_R(0.0)).pointCount;
-					 }
-					 return k;
-				 },
-				 kPairs, s.collideManifold + "Local, shapes in body frames; depth error " + ls.Text());
+			set_(
+				manifoldLocal, COLLIDE,
+				[bodyA, bodyB]() {
+					int k = 0;
+					for (int i = 0; i < n; i += 2)
+					{
+						k += CollideBodies(bodyA[(size_t)i], bodyB[(size_t)i], CD_R(0.0)).pointCount;
+					}
+					return k;
+				},
+				kPairs, s.collideManifold + "Local, shapes in body frames; depth error " + ls.Text());
 
 			Stats bt;
 			for (int i = 0; i < n; i += 2)
@@ -1298,7 +1300,11 @@ int main(int argc, char** argv)
 	/* Each pair set adds five rows, in this order: distance, overlap, depth, manifold, local manifold;
 	 * the sets: box-box, hull-hull, box-triangle, hull(8)-hull(8), box-box as hulls. */
 	const auto rowOf = [&rows](int set, int query) -> const Row& { return rows[(size_t)(5 * set + query)]; };
-	enum { DEPTH_ROW = 2, MANIFOLD_ROW = 3 };
+	enum
+	{
+		DEPTH_ROW = 2,
+		MANIFOLD_ROW = 3
+	};
 	const Row& boxManifold = rowOf(0, MANIFOLD_ROW);
 	const Row& hullDepth = rowOf(1, DEPTH_ROW);
 	const Row& hullManifold = rowOf(1, MANIFOLD_ROW);

@@ -74,8 +74,9 @@ static bool box2d24Snapshot(void* world, World2Snapshot* out)
 		b.vy = body->GetLinearVelocity().y;
 		b.w = body->GetAngularVelocity();
 		b.mass = body->GetMass();
-		b.type = body->GetType() == b2_dynamicBody ? WORLD2_DYNAMIC
-				 : (body->GetType() == b2_kinematicBody ? WORLD2_KINEMATIC : WORLD2_STATIC);
+		b.type = body->GetType() == b2_dynamicBody
+					 ? WORLD2_DYNAMIC
+					 : (body->GetType() == b2_kinematicBody ? WORLD2_KINEMATIC : WORLD2_STATIC);
 		if (!world2SnapshotAdd(out, &b))
 		{
 			return false;

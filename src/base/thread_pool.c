@@ -194,7 +194,8 @@ void cdThreadPool_Destroy(cdThreadPool* pool)
 }
 
 /* Publishes the task (blocks of blockSize items) and wakes the threads. */
-static void* cdPoolStart(cdThreadPool* pool, cdTaskCallback* task, int itemCount, int blockSize, void* taskContext)
+static void* cdPoolStart(cdThreadPool* pool, cdTaskCallback* task, int itemCount, int blockSize,
+						 void* taskContext)
 {
 	pthread_mutex_lock(&pool->mutex);
 	/* A thread that woke late for the last task may still be looking at it. */

@@ -283,7 +283,8 @@ void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
 #else
 #define CD2_ALWAYS_INLINE inline
 #endif
-static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, int start, int end, const bool useBias)
+static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, int start, int end,
+													   const bool useBias)
 {
 	cd2SolverBody* bodies = context->bodies;
 	cdW inv_h = cdWSplat(context->inv_h);
@@ -401,7 +402,8 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 	}
 }
 
-void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock, bool toContacts)
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock,
+						  bool toContacts)
 {
 	for (int i = startBlock; i < endBlock; ++i)
 	{

@@ -150,21 +150,21 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 
 typedef enum cd2StageKind
 {
-	CD2_STAGE_PREPARE_CONTACTS,	   /* constraints */
-	CD2_STAGE_PACK_WIDE,		   /* wide blocks */
+	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
+	CD2_STAGE_PACK_WIDE,			/* wide blocks */
 	CD2_STAGE_INTEGRATE_VELOCITIES, /* bodies */
-	CD2_STAGE_WARM_START_JOINTS,	   /* single */
-	CD2_STAGE_WARM_START_WIDE,	   /* wide blocks of one colour */
-	CD2_STAGE_WARM_START_OVERFLOW, /* single */
-	CD2_STAGE_SOLVE_JOINTS,		   /* single */
-	CD2_STAGE_SOLVE_WIDE,		   /* wide blocks of one colour */
-	CD2_STAGE_SOLVE_OVERFLOW,	   /* single */
-	CD2_STAGE_INTEGRATE_POSITIONS, /* bodies */
-	CD2_STAGE_STORE_WIDE,		   /* wide blocks */
-	CD2_STAGE_RESTITUTION,		   /* single */
-	CD2_STAGE_STORE_IMPULSES,	   /* constraints */
-	CD2_STAGE_STORE_JOINTS,		   /* single */
-	CD2_STAGE_FINALIZE_BODIES	   /* bodies */
+	CD2_STAGE_WARM_START_JOINTS,	/* single */
+	CD2_STAGE_WARM_START_WIDE,		/* wide blocks of one colour */
+	CD2_STAGE_WARM_START_OVERFLOW,	/* single */
+	CD2_STAGE_SOLVE_JOINTS,			/* single */
+	CD2_STAGE_SOLVE_WIDE,			/* wide blocks of one colour */
+	CD2_STAGE_SOLVE_OVERFLOW,		/* single */
+	CD2_STAGE_INTEGRATE_POSITIONS,	/* bodies */
+	CD2_STAGE_STORE_WIDE,			/* wide blocks */
+	CD2_STAGE_RESTITUTION,			/* single */
+	CD2_STAGE_STORE_IMPULSES,		/* constraints */
+	CD2_STAGE_STORE_JOINTS,			/* single */
+	CD2_STAGE_FINALIZE_BODIES		/* bodies */
 } cd2StageKind;
 
 typedef struct cd2Stage
@@ -187,7 +187,8 @@ typedef struct cd2StageList
 } cd2StageList;
 
 /* Appends a stage of itemCount items in blocks of at least minBlock (a few blocks per worker). */
-static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, int minBlock, int first, bool useBias)
+static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, int minBlock, int first,
+						bool useBias)
 {
 	if (itemCount <= 0 || list->stageCount >= list->stageCapacity)
 	{
@@ -231,51 +232,51 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	cd2StepContext* context = list->step;
 	switch (stage->kind)
 	{
-	case CD2_STAGE_PREPARE_CONTACTS:
-		cd2PrepareContacts(world, context, stage->first + start, stage->first + end);
-		break;
-	case CD2_STAGE_PACK_WIDE:
-		cd2PackContactsWide(world, context, start, end);
-		break;
-	case CD2_STAGE_INTEGRATE_VELOCITIES:
-		cd2IntegrateVelocities(context, start, end);
-		break;
-	case CD2_STAGE_WARM_START_JOINTS:
-		cd2WarmStartJoints(world, context);
-		break;
-	case CD2_STAGE_WARM_START_WIDE:
-		cd2WarmStartContactsWide(context, stage->first + start, stage->first + end);
-		break;
-	case CD2_STAGE_WARM_START_OVERFLOW:
-		cd2WarmStartContacts(context);
-		break;
-	case CD2_STAGE_SOLVE_JOINTS:
-		cd2SolveJoints(world, context, stage->useBias);
-		break;
-	case CD2_STAGE_SOLVE_WIDE:
-		cd2SolveContactsWide(context, stage->first + start, stage->first + end, stage->useBias);
-		break;
-	case CD2_STAGE_SOLVE_OVERFLOW:
-		cd2SolveContacts(context, stage->useBias);
-		break;
-	case CD2_STAGE_INTEGRATE_POSITIONS:
-		cd2IntegratePositions(context, start, end);
-		break;
-	case CD2_STAGE_STORE_WIDE:
-		cd2StoreContactsWide(world, context, start, end, stage->useBias);
-		break;
-	case CD2_STAGE_RESTITUTION:
-		cd2ApplyRestitution(context);
-		break;
-	case CD2_STAGE_STORE_IMPULSES:
-		cd2StoreImpulses(world, context, stage->first + start, stage->first + end);
-		break;
-	case CD2_STAGE_STORE_JOINTS:
-		cd2StoreJointReactions(world, context);
-		break;
-	case CD2_STAGE_FINALIZE_BODIES:
-		cd2FinalizeBodies(world, context, start, end);
-		break;
+		case CD2_STAGE_PREPARE_CONTACTS:
+			cd2PrepareContacts(world, context, stage->first + start, stage->first + end);
+			break;
+		case CD2_STAGE_PACK_WIDE:
+			cd2PackContactsWide(world, context, start, end);
+			break;
+		case CD2_STAGE_INTEGRATE_VELOCITIES:
+			cd2IntegrateVelocities(context, start, end);
+			break;
+		case CD2_STAGE_WARM_START_JOINTS:
+			cd2WarmStartJoints(world, context);
+			break;
+		case CD2_STAGE_WARM_START_WIDE:
+			cd2WarmStartContactsWide(context, stage->first + start, stage->first + end);
+			break;
+		case CD2_STAGE_WARM_START_OVERFLOW:
+			cd2WarmStartContacts(context);
+			break;
+		case CD2_STAGE_SOLVE_JOINTS:
+			cd2SolveJoints(world, context, stage->useBias);
+			break;
+		case CD2_STAGE_SOLVE_WIDE:
+			cd2SolveContactsWide(context, stage->first + start, stage->first + end, stage->useBias);
+			break;
+		case CD2_STAGE_SOLVE_OVERFLOW:
+			cd2SolveContacts(context, stage->useBias);
+			break;
+		case CD2_STAGE_INTEGRATE_POSITIONS:
+			cd2IntegratePositions(context, start, end);
+			break;
+		case CD2_STAGE_STORE_WIDE:
+			cd2StoreContactsWide(world, context, start, end, stage->useBias);
+			break;
+		case CD2_STAGE_RESTITUTION:
+			cd2ApplyRestitution(context);
+			break;
+		case CD2_STAGE_STORE_IMPULSES:
+			cd2StoreImpulses(world, context, stage->first + start, stage->first + end);
+			break;
+		case CD2_STAGE_STORE_JOINTS:
+			cd2StoreJointReactions(world, context);
+			break;
+		case CD2_STAGE_FINALIZE_BODIES:
+			cd2FinalizeBodies(world, context, start, end);
+			break;
 	}
 }
 
@@ -296,11 +297,13 @@ static void cd2RunStages(const cd2StageList* list)
 				break;
 			}
 			int start = block * stage->blockSize;
-			int end = start + stage->blockSize < stage->itemCount ? start + stage->blockSize : stage->itemCount;
+			int end =
+				start + stage->blockSize < stage->itemCount ? start + stage->blockSize : stage->itemCount;
 			cd2ExecuteStage(list, stage, start, end);
 			atomic_fetch_add_explicit(&stage->done, 1, memory_order_release);
 		}
-		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount; ++spin)
+		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount;
+			 ++spin)
 		{
 			cdThreadPool_Wait(spin);
 		}
@@ -478,14 +481,15 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	int hitCandidates = 0;
 	int bouncing = 0; /* constraints with restitution */
 	int contactCapacity = world->contacts.count;
-	cd2ConstraintPair* pairs =
-		(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
+	cd2ConstraintPair* pairs = (cd2ConstraintPair*)cdArena_AllocUncleared(
+		&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
 	/* The colouring's bodies of each pair. */
 	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
-	if (contactCapacity > 0 && (pairs == NULL || bodyA == NULL || bodyB == NULL || context.constraints == NULL))
+	if (contactCapacity > 0 &&
+		(pairs == NULL || bodyA == NULL || bodyB == NULL || context.constraints == NULL))
 	{
 		world->outOfMemory = true;
 		return;
@@ -567,7 +571,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.step = &context;
 	list.workerCount = world->workerCount;
 	list.stageCapacity = 8 + subStepCount * (8 + 3 * context.colorCount);
-	list.stages = (cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
+	list.stages =
+		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
 	if (list.stages == NULL)
 	{
 		world->outOfMemory = true;
@@ -612,11 +617,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	{
 		if (world->threadPool != NULL)
 		{
-			helpers = cdThreadPool_EnqueueEach(cd2StageTask, world->workerCount - 1, &list, world->threadPool);
+			helpers =
+				cdThreadPool_EnqueueEach(cd2StageTask, world->workerCount - 1, &list, world->threadPool);
 		}
 		else
 		{
-			helpers = world->enqueueTask(cd2StageTask, world->workerCount - 1, 1, &list, world->userTaskContext);
+			helpers =
+				world->enqueueTask(cd2StageTask, world->workerCount - 1, 1, &list, world->userTaskContext);
 		}
 	}
 #endif

@@ -216,7 +216,8 @@ static inline cdW cdWLoad(const cdReal* in)
 }
 static inline bool cdWAny(cdW mask)
 {
-	return mask.v[0] != CD_R(0.0) || mask.v[1] != CD_R(0.0) || mask.v[2] != CD_R(0.0) || mask.v[3] != CD_R(0.0);
+	return mask.v[0] != CD_R(0.0) || mask.v[1] != CD_R(0.0) || mask.v[2] != CD_R(0.0) ||
+		   mask.v[3] != CD_R(0.0);
 }
 #undef CD_W_LANES
 #endif

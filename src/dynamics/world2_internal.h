@@ -407,7 +407,8 @@ void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end);
 void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias);
 /* Blocks [start, end) back into their constraints, or straight into their contacts when toContacts
  * (no restitution pass in between); then constraints [start, end) into contacts. */
-void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock, bool toContacts);
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock,
+						  bool toContacts);
 void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start, int end);
 
 /* ---- solver2.c ------------------------------------------------------------------------------- */

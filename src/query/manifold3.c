@@ -907,7 +907,6 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
  * O(edges of A x edges of B), EPA a few dozen support calls. */
 #define SAT_EDGE_PAIR_LIMIT 1024
 
-
 /* The face of p whose world normal is most aligned with `direction`, and that cosine. */
 static int AlignedFace(const cd3Polytope* p, cd3Vec direction, cdReal* cosine)
 {

@@ -263,7 +263,8 @@ void TestBoxes()
 		cd3Manifold m = cd3CollideBoxBox(a, b, CD_R(0.0));
 		double collideSep = m.pointCount > 0 ? MinSeparation(m) : INFINITY;
 		// The local-frame form: both boxes in their own frames, B's frame in A's.
-		cd3Box la = {CD3_VEC_ZERO, a.halfExtents, CD3_QUAT_IDENTITY}, lb = {CD3_VEC_ZERO, b.halfExtents, CD3_QUAT_IDENTITY};
+		cd3Box la = {CD3_VEC_ZERO, a.halfExtents, CD3_QUAT_IDENTITY},
+			   lb = {CD3_VEC_ZERO, b.halfExtents, CD3_QUAT_IDENTITY};
 		cd3Manifold ml = cd3CollideBoxBoxLocal(la, lb, cd3InvMulTransforms(ta, tb), CD_R(0.0));
 		double localSep = ml.pointCount > 0 ? MinSeparation(ml) : INFINITY;
 
@@ -286,8 +287,8 @@ void TestBoxes()
 		{
 			TEST_CHECKF((m.pointCount > 0) == (reference <= 0.0), "box-box #%d: %d points, exact %.9g", n,
 						m.pointCount, reference);
-			TEST_CHECKF((ml.pointCount > 0) == (reference <= 0.0), "box-box local #%d: %d points, exact %.9g", n,
-						ml.pointCount, reference);
+			TEST_CHECKF((ml.pointCount > 0) == (reference <= 0.0), "box-box local #%d: %d points, exact %.9g",
+						n, ml.pointCount, reference);
 		}
 	}
 	(void)unit;
@@ -296,7 +297,8 @@ void TestBoxes()
 		"than 1e-4 relative on %d (away from its 5%% face bias), overlap answer differs on %d\n",
 		tally.compared, tally.skippedTies, tally.bulletDisagrees, tally.bulletOverlapDisagrees);
 	TEST_CHECK(tally.compared > 2000);
-	std::printf("box-box, local form (cd3CollideBoxBoxLocal): %d compared against the exact depth\n", localTally.compared);
+	std::printf("box-box, local form (cd3CollideBoxBoxLocal): %d compared against the exact depth\n",
+				localTally.compared);
 	TEST_CHECK(localTally.compared > 2000);
 }
 
@@ -382,14 +384,14 @@ void TestHulls()
 							   cd3Length(cd3Sub(hb->bounds.max, hb->bounds.min)));
 		Compare("hull-hull", n, reference, face, edge, size, collideSep, result.count > 0, result.distance,
 				0.0, &tally);
-		Compare("hull-hull local", n, reference, face, edge, size, localSep, result.count > 0, result.distance,
-				0.0, &localTally);
+		Compare("hull-hull local", n, reference, face, edge, size, localSep, result.count > 0,
+				result.distance, 0.0, &localTally);
 		if (std::fabs(reference) > 1e-3)
 		{
 			TEST_CHECKF((m.pointCount > 0) == (reference <= 0.0), "hull-hull #%d: %d points, exact %.9g", n,
 						m.pointCount, reference);
-			TEST_CHECKF((ml.pointCount > 0) == (reference <= 0.0), "hull-hull local #%d: %d points, exact %.9g",
-						n, ml.pointCount, reference);
+			TEST_CHECKF((ml.pointCount > 0) == (reference <= 0.0),
+						"hull-hull local #%d: %d points, exact %.9g", n, ml.pointCount, reference);
 		}
 		cd3DestroyHull(ha);
 		cd3DestroyHull(hb);
@@ -399,7 +401,8 @@ void TestHulls()
 		"relative on %d, overlap answer differs on %d\n",
 		tally.compared, tally.skippedTies, tally.bulletDisagrees, tally.bulletOverlapDisagrees);
 	TEST_CHECK(tally.compared > 1500);
-	std::printf("hull-hull, local form (cd3CollideHullHullLocal): %d compared against the exact depth\n", localTally.compared);
+	std::printf("hull-hull, local form (cd3CollideHullHullLocal): %d compared against the exact depth\n",
+				localTally.compared);
 	TEST_CHECK(localTally.compared > 1500);
 	// Bullet is a peer, not the reference: it must agree on the large majority.
 	TEST_CHECK(tally.bulletDisagrees * 20 < tally.compared);
