@@ -464,6 +464,41 @@ static void TestPointInHullWedge(void)
 	}
 }
 
+/* A sheet a few dozen float epsilons thick (fuzz_hull3): its centroid lies 1.5e-8 below its two
+ * large faces, within their plane tolerance, so the distance decides; GJK across the sheet reports
+ * about 4e-8 for that interior point, which the decision band must absorb. */
+static void TestPointInHullSheet(void)
+{
+	static const float sheet[6][3] = {{0.0f, 0.0f, 0.0f},
+									  {1.74499774e-39f, 0.0f, 1.47654819e-41f},
+									  {0.000717163086f, 0.000710401335f, 0.000710401335f},
+									  {0.0114889704f, 0.0114889704f, 0.0114889704f},
+									  {0.0114889704f, 0.0114890514f, 0.0114889704f},
+									  {0.0115101896f, 0.0114889704f, 0.0114889704f}};
+	cd3Vec points[6];
+	for (int i = 0; i < 6; ++i)
+	{
+		points[i] = cd3MakeVec((cdReal)sheet[i][0], (cdReal)sheet[i][1], (cdReal)sheet[i][2]);
+	}
+	cd3Hull* hull = NULL;
+	cdResult result = cd3ComputeHull(points, 6, &hull);
+	/* The double build may weld the sheet flat; the float build keeps it. */
+	TEST_CHECK(result == CD_OK || (CD_DOUBLE && result == CD_ERROR_DEGENERATE));
+	if (hull != NULL)
+	{
+		cd3HullShape shape = {hull, CD3_TRANSFORM_IDENTITY};
+		TEST_CHECK(cd3PointInHull(hull->centroid, shape));
+		for (int i = 0; i < hull->vertexCount; ++i)
+		{
+			TEST_CHECK(cd3PointInHull(hull->vertices[i], shape));
+		}
+		/* Outside by far more than the band: off the sheet along its normal. */
+		cd3Vec off = cd3Add(hull->centroid, cd3Scale(CD_R(1e-4), hull->planes[0].normal));
+		TEST_CHECK(!cd3PointInHull(off, shape));
+		cd3DestroyHull(hull);
+	}
+}
+
 /* A segment piercing a sliver (two vertices 0.125 apart, the third 20 away) well inside
  * (barycentrics 0.51, 0.14, 0.35 at the crossing, in double): the crossing point, from a float
  * normal of the sliver, landed 3e-5 off its plane, beyond the touching tolerance (fuzz_query3). */
@@ -626,6 +661,7 @@ int main(void)
 	TEST_RUN(TestThinTriangles);
 	TEST_RUN(TestNeedleTriangles);
 	TEST_RUN(TestPointInHullWedge);
+	TEST_RUN(TestPointInHullSheet);
 	TEST_RUN(TestSegmentPiercingSliver);
 	TEST_RUN(TestRandomClosestPoint);
 	TEST_RUN(TestRandomPairs);

@@ -457,13 +457,16 @@ bool cd3PointInHull(cd3Vec p, cd3HullShape shape)
 	 * round-off). Near an edge where two faces meet at a small angle (a sliver), a height that
 	 * small can still be far from the hull: 198 above both faces of a 1e-4 rad wedge is 1.8e6
 	 * beyond its edge, and 22 above a 5e-6 rad one 4.2e6. The distance decides, with the same
-	 * tolerance. */
+	 * tolerance, widened by the distance's own round-off: GJK's simplex across a hull thinner
+	 * than that band (a sheet a few dozen epsilons thick, whose centroid lies 1.5e-8 below both
+	 * faces in a float case of fuzz_hull3) reports a distance of about 16 epsilons for a point
+	 * inside. */
 	cd3Shape hullShape;
 	hullShape.type = CD3_SHAPE_HULL;
 	hullShape.hull = shape;
 	cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
 	cdReal distance = cd3Distance(&hullShape, &point).distance;
-	return distance <= CD_HULL_PLANE_TOLERANCE * (largestOffset + magnitude);
+	return distance <= CD_R(4.0) * CD_HULL_PLANE_TOLERANCE * (largestOffset + magnitude);
 }
 
 cd3Vec cd3ClosestPointOnHull(cd3HullShape shape, cd3Vec p)
