@@ -11,13 +11,6 @@
  * Leaks and memory errors are the sanitizers' part. */
 #include "fuzz_decode.h"
 
-/* world2-finite-kinematic-joint: a world2-finite failure in a world where a joint holds a
- * kinematic body (open finding world2-kinematic-joints-nan, fuzz/crashes/README.md: a dynamic
- * body held by rigid joints to bodies that move apart at hundreds of m/s; the joints' accumulated
- * impulses grow a hundredfold per sub-step until they overflow). Passed over in the standard run,
- * checked with FUZZ_STRICT=1. */
-#define OPEN_FINDINGS "world2-finite-kinematic-joint"
-
 enum
 {
 	WORLD_FUZZ_BODIES = 16,
@@ -26,21 +19,6 @@ enum
 };
 
 static int s_refusals;
-
-/* Some live joint of the sequence holds a kinematic body. */
-static bool HasKinematicJoint(const cd2JointId* joints)
-{
-	for (int j = 0; j < WORLD_FUZZ_JOINTS; ++j)
-	{
-		if (cd2Joint_IsValid(joints[j]) &&
-			(cd2Body_GetType(cd2Joint_GetBodyA(joints[j])) == CD_KINEMATIC_BODY ||
-			 cd2Body_GetType(cd2Joint_GetBodyB(joints[j])) == CD_KINEMATIC_BODY))
-		{
-			return true;
-		}
-	}
-	return false;
-}
 
 static bool CountRefusal(const char* condition, const char* fileName, int lineNumber)
 {
@@ -356,11 +334,6 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 					!cd2IsValidVec(cd2Body_GetLinearVelocity(bodies[k])) ||
 					!cdIsValidReal(cd2Body_GetAngularVelocity(bodies[k])))
 				{
-					if (HasKinematicJoint(joints) &&
-						FuzzPassOver("fuzz_world2", OPEN_FINDINGS, "world2-finite-kinematic-joint"))
-					{
-						goto done; /* the rest of the sequence would run on a broken world */
-					}
 					FuzzFail("world2-finite: op %d: body %d at (%g, %g)", op, k, (double)xf.p.x,
 							 (double)xf.p.y);
 				}
@@ -376,7 +349,6 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 					 cd2World_GetCounters(world).bodyCount, live);
 		}
 	}
-done:
 	free(saved);
 	cd2DestroyWorld(world);
 	cdSetAssertFcn(NULL);

@@ -941,38 +941,85 @@ void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 	}
 }
 
+static void cd2WarmStartJoint(cd2JointSolverArgs* args)
+{
+	switch (args->joint->type)
+	{
+		case CD2_DISTANCE_JOINT:
+			cd2WarmStartDistanceJoint(args);
+			break;
+		case CD2_REVOLUTE_JOINT:
+			cd2WarmStartRevoluteJoint(args);
+			break;
+		case CD2_WELD_JOINT:
+			cd2WarmStartWeldJoint(args);
+			break;
+		case CD2_MOUSE_JOINT:
+			cd2WarmStartMouseJoint(args);
+			break;
+		case CD2_MOTOR_JOINT:
+			cd2WarmStartMotorJoint(args);
+			break;
+		case CD2_PRISMATIC_JOINT:
+			cd2WarmStartPrismaticJoint(args);
+			break;
+		case CD2_WHEEL_JOINT:
+			cd2WarmStartWheelJoint(args);
+			break;
+		case CD2_FILTER_JOINT:
+			break;
+	}
+}
+
+/* The factor (at most 1) that keeps the velocity change of one body within twice the speed caps. */
+static cdReal cd2WarmStartScale(const cd2SolverBody* before, const cd2SolverBody* after, cdReal maxLinear,
+								cdReal maxAngular, cdReal scale)
+{
+	cdReal dv = cd2Length(cd2Sub(after->linearVelocity, before->linearVelocity));
+	cdReal dw = cdAbs(after->angularVelocity - before->angularVelocity);
+	if (dv > CD_R(2.0) * maxLinear)
+	{
+		scale = cdMin(scale, CD_R(2.0) * maxLinear / dv);
+	}
+	if (dw > CD_R(2.0) * maxAngular)
+	{
+		scale = cdMin(scale, CD_R(2.0) * maxAngular / dw);
+	}
+	return scale;
+}
+
+/* Warm starting is linear in the stored impulses, so a joint whose impulses would change a body's
+ * velocity by more than twice the speed caps (no solve can need more: velocities are capped on
+ * both sides of it) has them scaled down to that and applied again. Rigid joints that cannot all
+ * hold (bodies pulled apart by kinematic ones, a light body on a lever arm of a kilometre, where
+ * float round-off of the effective mass feeds back) otherwise grow their impulses a hundredfold
+ * per sub-step until they overflow. */
 void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
+	cdReal maxLinear = context->maxLinearVelocity;
+	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = 0; i < context->jointCount; ++i)
 	{
 		cd2JointSolverArgs args;
 		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
-		switch (args.joint->type)
+		cd2SolverBody a = *args.a, b = *args.b;
+		cd2WarmStartJoint(&args);
+		cdReal scale = cd2WarmStartScale(&a, args.a, maxLinear, maxAngular, CD_R(1.0));
+		scale = cd2WarmStartScale(&b, args.b, maxLinear, maxAngular, scale);
+		if (scale < CD_R(1.0))
 		{
-			case CD2_DISTANCE_JOINT:
-				cd2WarmStartDistanceJoint(&args);
-				break;
-			case CD2_REVOLUTE_JOINT:
-				cd2WarmStartRevoluteJoint(&args);
-				break;
-			case CD2_WELD_JOINT:
-				cd2WarmStartWeldJoint(&args);
-				break;
-			case CD2_MOUSE_JOINT:
-				cd2WarmStartMouseJoint(&args);
-				break;
-			case CD2_MOTOR_JOINT:
-				cd2WarmStartMotorJoint(&args);
-				break;
-			case CD2_PRISMATIC_JOINT:
-				cd2WarmStartPrismaticJoint(&args);
-				break;
-			case CD2_WHEEL_JOINT:
-				cd2WarmStartWheelJoint(&args);
-				break;
-			case CD2_FILTER_JOINT:
-				break;
+			*args.a = a;
+			*args.b = b;
+			cd2JointData* d = &args.joint->data;
+			d->linearImpulse = cd2Scale(scale, d->linearImpulse);
+			d->impulse *= scale;
+			d->angularImpulse *= scale;
+			d->springImpulse *= scale;
+			d->motorImpulse *= scale;
+			d->lowerImpulse *= scale;
+			d->upperImpulse *= scale;
+			cd2WarmStartJoint(&args);
 		}
 	}
 }

@@ -46,8 +46,7 @@ void cd2SolveMotorJoint(cd2JointSolverArgs* args, bool useBias)
 		cd2Vec C = cd2AnchorSeparation(a, b, rA, rB, d->deltaCenter);
 		cd2Vec bias = cd2Scale(d->correctionFactor * inv_h, C);
 		cd2Vec Cdot = cd2AnchorVelocity(a, b, rA, rB);
-		cd2Mat22 K = cd2PointMassMatrix(a, b, rA, rB);
-		cd2Vec impulse = cd2Neg(cd2Solve22(K, cd2Add(Cdot, bias)));
+		cd2Vec impulse = cd2Neg(cd2SolveMass22(cd2PointMass(a, b, rA, rB), cd2Add(Cdot, bias)));
 		cd2Vec old = d->linearImpulse;
 		d->linearImpulse = cd2Add(d->linearImpulse, impulse);
 		cdReal maxImpulse = d->maxForce * h;

@@ -32,12 +32,12 @@ void cd2SolveMouseJoint(cd2JointSolverArgs* args, bool useBias)
 	cd2Vec bias = cd2Scale(d->springSoftness.biasRate, separation);
 	cdReal massScale = d->springSoftness.massScale, impulseScale = d->springSoftness.impulseScale;
 	cdReal mB = b->invMass, iB = b->invInertia;
-	cd2Mat22 K;
-	K.cx.x = mB + iB * rB.y * rB.y;
-	K.cx.y = -iB * rB.x * rB.y;
-	K.cy.x = K.cx.y;
-	K.cy.y = mB + iB * rB.x * rB.x;
-	cd2Vec x = cd2Solve22(K, cd2Add(Cdot, bias));
+	cd2Mass22 K;
+	K.k11 = mB + iB * rB.y * rB.y;
+	K.k12 = -iB * rB.x * rB.y;
+	K.k22 = mB + iB * rB.x * rB.x;
+	K.det = mB * (mB + iB * cd2Dot(rB, rB));
+	cd2Vec x = cd2SolveMass22(K, cd2Add(Cdot, bias));
 	cd2Vec impulse = cd2Sub(cd2Scale(-massScale, x), cd2Scale(impulseScale, d->linearImpulse));
 	cd2Vec old = d->linearImpulse;
 	d->linearImpulse = cd2Add(d->linearImpulse, impulse);

@@ -135,15 +135,20 @@ void cd2SolvePrismaticJoint(cd2JointSolverArgs* args, bool useBias)
 		impulseScale = d->jointSoftness.impulseScale;
 	}
 	cdReal mA = a->invMass, mB = b->invMass, iA = a->invInertia, iB = b->invInertia;
-	cdReal k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
-	cdReal k12 = iA * s1 + iB * s2;
-	cdReal k22 = iA + iB;
-	if (k22 == CD_R(0.0))
+	/* det K = (mA + mB)(iA + iB) + iA iB (s1 - s2)^2 (see cd2Mass22). With no rotation possible
+	 * the angular row is inert: K = diag(k11, 1). */
+	cd2Mass22 K;
+	K.k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
+	K.k12 = iA * s1 + iB * s2;
+	K.k22 = iA + iB;
+	cdReal ds = s1 - s2;
+	K.det = (mA + mB) * K.k22 + iA * iB * ds * ds;
+	if (K.k22 == CD_R(0.0))
 	{
-		k22 = CD_R(1.0);
+		K.k22 = CD_R(1.0);
+		K.det = K.k11;
 	}
-	cd2Mat22 K = {{k11, k12}, {k12, k22}};
-	cd2Vec x = cd2Solve22(K, cd2Add(Cdot, bias));
+	cd2Vec x = cd2SolveMass22(K, cd2Add(Cdot, bias));
 	cd2Vec impulse = cd2Sub(cd2Scale(-massScale, x), cd2Scale(impulseScale, d->linearImpulse));
 	d->linearImpulse = cd2Add(d->linearImpulse, impulse);
 	cd2Vec P = cd2Scale(impulse.x, perp);

@@ -57,8 +57,7 @@ void cd2SolveWeldJoint(cd2JointSolverArgs* args, bool useBias)
 			impulseScale = d->springSoftness.impulseScale;
 		}
 		cd2Vec Cdot = cd2AnchorVelocity(a, b, rA, rB);
-		cd2Mat22 K = cd2PointMassMatrix(a, b, rA, rB);
-		cd2Vec x = cd2Solve22(K, cd2Add(Cdot, bias));
+		cd2Vec x = cd2SolveMass22(cd2PointMass(a, b, rA, rB), cd2Add(Cdot, bias));
 		cd2Vec impulse = cd2Sub(cd2Scale(-massScale, x), cd2Scale(impulseScale, d->linearImpulse));
 		d->linearImpulse = cd2Add(d->linearImpulse, impulse);
 		cd2ApplyJointImpulse(a, b, rA, rB, impulse, CD_R(0.0));
