@@ -143,8 +143,10 @@ CD_API cd2WorldId cd2CreateWorld(const cd2WorldDef* def);
 CD_API void cd2DestroyWorld(cd2WorldId worldId);
 CD_API bool cd2World_IsValid(cd2WorldId worldId);
 
-/* Advances by timeStep seconds (> 0, finite; 0 only updates contacts) in subStepCount (>= 1)
- * sub-steps. Events of the previous step are cleared at the start. */
+/* Advances by timeStep seconds (> 0, finite; 0 only updates contacts) in subStepCount sub-steps
+ * (1 to CD2_MAX_SUB_STEPS; 4 is the usual choice). Events of the previous step are cleared at the
+ * start. */
+#define CD2_MAX_SUB_STEPS 1000
 CD_API void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount);
 
 CD_API void cd2World_SetGravity(cd2WorldId worldId, cd2Vec gravity);

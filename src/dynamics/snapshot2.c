@@ -7,14 +7,35 @@
 #include "world2_internal.h"
 
 #define CD2_STATE_MAGIC 0x53324443u /* "CD2S" */
-#define CD2_STATE_VERSION 2u
+#define CD2_STATE_VERSION 3u
 
 typedef struct cd2StateHeader
 {
 	uint32_t magic, version, realSize;
 	uint32_t recordSizes[6];
-	uint64_t totalSize;
+	uint64_t totalSize, checksum;
 } cd2StateHeader;
+
+/* A checksum of everything after the header: a buffer damaged in storage or transit (a flipped
+ * bit, a cut) is refused whole instead of restoring records whose links (shape lists, contact
+ * and joint edges, islands) would point anywhere; those links are not checked one by one. */
+static uint64_t cd2Checksum(const unsigned char* data, size_t size)
+{
+	uint64_t h = 0x9e3779b97f4a7c15u ^ (uint64_t)size;
+	size_t i = 0;
+	for (; i + 8 <= size; i += 8)
+	{
+		uint64_t word;
+		memcpy(&word, data + i, sizeof word);
+		h = (h ^ word) * 0xff51afd7ed558ccdu;
+		h ^= h >> 29;
+	}
+	for (; i < size; ++i)
+	{
+		h = (h ^ data[i]) * 0x100000001b3u;
+	}
+	return h ^ (h >> 32);
+}
 
 typedef struct cd2StateSettings
 {
@@ -98,6 +119,8 @@ static void cd2WriteState(const cd2World* world, cd2Writer* w)
 	if (w->out != NULL)
 	{
 		header.totalSize = (uint64_t)(w->size - headerAt);
+		header.checksum =
+			cd2Checksum(w->out + headerAt + sizeof(header), w->size - headerAt - sizeof(header));
 		memcpy(w->out + headerAt, &header, sizeof(header));
 	}
 }
@@ -233,7 +256,10 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		header.realSize != sizeof(cdReal) || header.recordSizes[0] != sizeof(cd2Body) ||
 		header.recordSizes[1] != sizeof(cd2WorldShape) || header.recordSizes[2] != sizeof(cd2ChainRec) ||
 		header.recordSizes[3] != sizeof(cd2Contact) || header.recordSizes[4] != sizeof(cd2Joint) ||
-		header.recordSizes[5] != sizeof(cd2Island) || header.totalSize > size)
+		header.recordSizes[5] != sizeof(cd2Island) || header.totalSize > size ||
+		header.totalSize < sizeof(header) ||
+		cd2Checksum((const unsigned char*)buffer + sizeof(header),
+					(size_t)header.totalSize - sizeof(header)) != header.checksum)
 	{
 		return CD_ERROR_PARSE;
 	}

@@ -223,9 +223,11 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 		CD2_REFUSE("cd2World_Step: the world is locked (called from a callback)");
 		return;
 	}
-	if (!cdIsValidReal(timeStep) || timeStep < CD_R(0.0) || subStepCount < 1)
+	if (!cdIsValidReal(timeStep) || timeStep < CD_R(0.0) || subStepCount < 1 ||
+		subStepCount > CD2_MAX_SUB_STEPS)
 	{
-		CD2_REFUSE("cd2World_Step: the time step must be finite and >= 0, the sub-step count >= 1");
+		CD2_REFUSE("cd2World_Step: the time step must be finite and >= 0, the sub-step count 1 to "
+				   "CD2_MAX_SUB_STEPS");
 		return;
 	}
 	world->locked = true;

@@ -11,7 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Outside wasm (tests/js_exports: the layer under the native sanitizers) plain functions. */
+#if defined(__wasm__)
 #define EXPORT(name) __attribute__((export_name(name)))
+#else
+#define EXPORT(name)
+#endif
 
 typedef struct cdjsBroad
 {

@@ -23,7 +23,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Outside wasm (tests/js_exports: the layer under the native sanitizers) plain functions. */
+#if defined(__wasm__)
 #define EXPORT(name) __attribute__((export_name(name)))
+#else
+#define EXPORT(name)
+#endif
 
 #define SCRATCH_FLOATS 4096
 #define SLOT_FLOATS 64
@@ -34,6 +39,14 @@ static float g_scratch[SCRATCH_FLOATS] __attribute__((aligned(16)));
 #define SLOT_A (g_scratch)
 #define SLOT_B (g_scratch + SLOT_FLOATS)
 #define IO (g_scratch + 2 * SLOT_FLOATS)
+
+/* A type code or count sent as a float: -1 for NaN and for values beyond int (a plain cast is
+ * undefined there and traps in wasm); the callers refuse -1. Shared with world2_exports.c. */
+int cdjsFloatToInt(float value);
+int cdjsFloatToInt(float value)
+{
+	return value >= -2147483648.0f && value < 2147483648.0f ? (int)value : -1;
+}
 
 EXPORT("scratch") float* cdjsScratch(void)
 {
@@ -131,7 +144,7 @@ static int finiteAll(const float* p, int n)
 static cdResult decode2(const float* s, cd2Shape* out)
 {
 	memset(out, 0, sizeof *out);
-	int type = (int)s[0];
+	int type = cdjsFloatToInt(s[0]);
 	switch (type)
 	{
 		case CD2_SHAPE_CIRCLE:
@@ -152,7 +165,7 @@ static cdResult decode2(const float* s, cd2Shape* out)
 			break;
 		case CD2_SHAPE_POLYGON:
 		{
-			int count = (int)s[1];
+			int count = cdjsFloatToInt(s[1]);
 			if (count < 1 || count > CD2_MAX_POLYGON_VERTICES)
 			{
 				return count > CD2_MAX_POLYGON_VERTICES ? CD_ERROR_TOO_MANY_POINTS : CD_ERROR_DEGENERATE;
@@ -352,7 +365,7 @@ EXPORT("timeOfImpact2") int cdjs2TimeOfImpact(float targetSeparation, float tole
 static cdResult decode3(const float* s, cd3Shape* out)
 {
 	memset(out, 0, sizeof *out);
-	int type = (int)s[0];
+	int type = cdjsFloatToInt(s[0]);
 	switch (type)
 	{
 		case CD3_SHAPE_SPHERE:

@@ -20,10 +20,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Outside wasm (tests/js_exports: the layer under the native sanitizers) plain functions. */
+#if defined(__wasm__)
 #define EXPORT(name) __attribute__((export_name(name)))
 #define IMPORT(name) __attribute__((import_module("collide"), import_name(name)))
+#else
+#define EXPORT(name)
+#define IMPORT(name)
+#endif
 
 float* cdjsScratch(void);
+int cdjsFloatToInt(float value);
 
 #define SLOT_A (cdjsScratch())
 #define IO (cdjsScratch() + 128)
@@ -313,7 +320,7 @@ EXPORT("body2Create") int cdjsBody2Create(int world0)
 	}
 	const float* in = IO;
 	cd2BodyDef def = cd2DefaultBodyDef();
-	def.type = isnan(in[0]) ? def.type : (cd2BodyType)(int)in[0];
+	def.type = isnan(in[0]) ? def.type : (cd2BodyType)cdjsFloatToInt(in[0]);
 	def.position.x = orDefault(in[1], def.position.x);
 	def.position.y = orDefault(in[2], def.position.y);
 	if (!isnan(in[3]))
@@ -525,7 +532,7 @@ EXPORT("body2Set") int cdjsBody2Set(int world0, int index1, int generation, int 
 			cd2Body_ApplyAngularImpulse(id, a[0], a[1] != 0.0f);
 			break;
 		case 9:
-			cd2Body_SetType(id, (cd2BodyType)(int)a[0]);
+			cd2Body_SetType(id, (cd2BodyType)cdjsFloatToInt(a[0]));
 			break;
 		case 10:
 			cd2Body_SetAwake(id, a[0] != 0.0f);
@@ -601,7 +608,7 @@ EXPORT("shape2Create") int cdjsShape2Create(int world0, int index1, int generati
 			return -1;
 		}
 	}
-	switch ((int)s[0])
+	switch (cdjsFloatToInt(s[0]))
 	{
 		case 0:
 		{
@@ -619,7 +626,7 @@ EXPORT("shape2Create") int cdjsShape2Create(int world0, int index1, int generati
 		case 3:
 		{
 			cd2Box box;
-			if ((int)s[0] == 2)
+			if (cdjsFloatToInt(s[0]) == 2)
 			{
 				box.center = (cd2Vec){0.5f * (s[1] + s[3]), 0.5f * (s[2] + s[4])};
 				box.halfExtents = (cd2Vec){0.5f * (s[3] - s[1]), 0.5f * (s[4] - s[2])};
@@ -642,7 +649,7 @@ EXPORT("shape2Create") int cdjsShape2Create(int world0, int index1, int generati
 		}
 		case 4:
 		{
-			int count = (int)s[1];
+			int count = cdjsFloatToInt(s[1]);
 			if (count < 3 || count > CD2_MAX_POLYGON_VERTICES)
 			{
 				return -1;
@@ -1392,7 +1399,7 @@ static bool decodeWorldShape(const float* s, cd2Shape* out)
 			return false;
 		}
 	}
-	switch ((int)s[0])
+	switch (cdjsFloatToInt(s[0]))
 	{
 		case 0:
 			*out = cd2MakeCircleShape((cd2Circle){{s[1], s[2]}, s[3]});
@@ -1408,7 +1415,7 @@ static bool decodeWorldShape(const float* s, cd2Shape* out)
 			break;
 		case 4:
 		{
-			int count = (int)s[1];
+			int count = cdjsFloatToInt(s[1]);
 			if (count < 3 || count > CD2_MAX_POLYGON_VERTICES)
 			{
 				return false;
