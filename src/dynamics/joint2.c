@@ -972,14 +972,15 @@ static void cd2WarmStartJoint(cd2JointSolverArgs* args)
 }
 
 /* The factor (at most 1) that keeps the velocity change of one body within twice the speed caps. */
-static cdReal cd2WarmStartScale(const cd2SolverBody* before, const cd2SolverBody* after, cdReal maxLinear,
+static cdReal cd2WarmStartScale(cd2Vec v0, cdReal w0, const cd2SolverBody* after, cdReal maxLinear,
 								cdReal maxAngular, cdReal scale)
 {
-	cdReal dv = cd2Length(cd2Sub(after->linearVelocity, before->linearVelocity));
-	cdReal dw = cdAbs(after->angularVelocity - before->angularVelocity);
-	if (dv > CD_R(2.0) * maxLinear)
+	cd2Vec dv = cd2Sub(after->linearVelocity, v0);
+	cdReal dw = cdAbs(after->angularVelocity - w0);
+	cdReal dv2 = cd2Dot(dv, dv);
+	if (dv2 > CD_R(4.0) * maxLinear * maxLinear)
 	{
-		scale = cdMin(scale, CD_R(2.0) * maxLinear / dv);
+		scale = cdMin(scale, CD_R(2.0) * maxLinear / cdSqrt(dv2));
 	}
 	if (dw > CD_R(2.0) * maxAngular)
 	{
@@ -1003,14 +1004,21 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
 	{
 		cd2JointSolverArgs args;
 		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
-		cd2SolverBody a = *args.a, b = *args.b;
-		cd2WarmStartJoint(&args);
-		cdReal scale = cd2WarmStartScale(&a, args.a, maxLinear, maxAngular, CD_R(1.0));
-		scale = cd2WarmStartScale(&b, args.b, maxLinear, maxAngular, scale);
-		if (scale < CD_R(1.0))
+		cd2Vec vA = args.a->linearVelocity, vB = args.b->linearVelocity;
+		cdReal wA = args.a->angularVelocity, wB = args.b->angularVelocity;
+		for (int pass = 0; pass < 2; ++pass)
 		{
-			*args.a = a;
-			*args.b = b;
+			cd2WarmStartJoint(&args);
+			cdReal scale = cd2WarmStartScale(vA, wA, args.a, maxLinear, maxAngular, CD_R(1.0));
+			scale = cd2WarmStartScale(vB, wB, args.b, maxLinear, maxAngular, scale);
+			if (scale == CD_R(1.0) || pass == 1)
+			{
+				break;
+			}
+			args.a->linearVelocity = vA;
+			args.a->angularVelocity = wA;
+			args.b->linearVelocity = vB;
+			args.b->angularVelocity = wB;
 			cd2JointData* d = &args.joint->data;
 			d->linearImpulse = cd2Scale(scale, d->linearImpulse);
 			d->impulse *= scale;
@@ -1019,7 +1027,6 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
 			d->motorImpulse *= scale;
 			d->lowerImpulse *= scale;
 			d->upperImpulse *= scale;
-			cd2WarmStartJoint(&args);
 		}
 	}
 }

@@ -49,7 +49,8 @@ static inline cd2Vec cd2SolveMass22(cd2Mass22 m, cd2Vec b)
 }
 
 /* The point constraint's effective mass, K = (mA + mB) I + iA rA' rA'^T + iB rB' rB'^T with r' the
- * perpendicular of r; det K = m^2 + m (iA |rA|^2 + iB |rB|^2) + iA iB (rA x rB)^2. */
+ * perpendicular of r; det K = m^2 + m (iA |rA|^2 + iB |rB|^2) + iA iB (rA x rB)^2
+ * = m (k11 + k22 - m) + iA iB (rA x rB)^2. */
 static inline cd2Mass22 cd2PointMass(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
 {
 	cdReal m = a->invMass + b->invMass, iA = a->invInertia, iB = b->invInertia;
@@ -57,8 +58,13 @@ static inline cd2Mass22 cd2PointMass(const cd2SolverBody* a, const cd2SolverBody
 	k.k11 = m + rA.y * rA.y * iA + rB.y * rB.y * iB;
 	k.k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
 	k.k22 = m + rA.x * rA.x * iA + rB.x * rB.x * iB;
-	cdReal cross = cd2Cross(rA, rB);
-	k.det = m * (m + iA * cd2Dot(rA, rA) + iB * cd2Dot(rB, rB)) + iA * iB * cross * cross;
+	/* The plain form while it keeps three digits (short lever arms: nearly every joint). */
+	k.det = k.k11 * k.k22 - k.k12 * k.k12;
+	if (k.det < CD_R(1e-3) * k.k11 * k.k22)
+	{
+		cdReal cross = cd2Cross(rA, rB);
+		k.det = m * (k.k11 + k.k22 - m) + iA * iB * cross * cross;
+	}
 	return k;
 }
 

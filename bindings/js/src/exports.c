@@ -645,7 +645,9 @@ static const int g_batchStride[BATCH_KIND_COUNT] = {3, 3, 6, 6, 4, 4, 2, 2, 4, 4
 static int anyNonFinite(const float* data, size_t count)
 {
 	uint32_t largest = 0;
+#if defined(__clang__)
 #pragma clang loop vectorize_width(4) interleave_count(4)
+#endif
 	for (size_t i = 0; i < count; ++i)
 	{
 		uint32_t bits;
