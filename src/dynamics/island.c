@@ -135,12 +135,13 @@ static void cd2BuildGroups(cd2World* world, int* parent)
 	}
 }
 
-void cd2UpdateSleep(cd2World* world)
+int cd2UpdateSleep(cd2World* world)
 {
 	int n = world->bodies.count;
+	int slept = 0;
 	if (n == 0)
 	{
-		return;
+		return 0;
 	}
 	int* parent = (int*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(int));
 	cdReal* minSleep = (cdReal*)cdArena_Alloc(&world->arena, (size_t)n * sizeof(cdReal));
@@ -148,7 +149,7 @@ void cd2UpdateSleep(cd2World* world)
 	if (parent == NULL || minSleep == NULL || islandOfRoot == NULL)
 	{
 		world->outOfMemory = true;
-		return;
+		return 0;
 	}
 	cd2BuildGroups(world, parent);
 	for (int i = 0; i < n; ++i)
@@ -176,6 +177,7 @@ void cd2UpdateSleep(cd2World* world)
 			if (island != CD2_NULL_INDEX)
 			{
 				cd2PutToSleep(world, island, i);
+				slept += 1;
 			}
 		}
 	}
@@ -202,7 +204,9 @@ void cd2UpdateSleep(cd2World* world)
 			}
 		}
 		cd2PutToSleep(world, islandOfRoot[root], i);
+		slept += 1;
 	}
+	return slept;
 }
 
 void cd2SleepBodyGroup(cd2World* world, int bodyIndex)

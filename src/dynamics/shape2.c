@@ -176,9 +176,8 @@ static cdReal cd2ShapeAabbMargin(const cd2WorldShape* shape)
 	return cdMin(CD2_AABB_MARGIN, CD2_AABB_MARGIN_FRACTION * extent);
 }
 
-void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
+cd2Aabb cd2ComputeShapeBounds(const cd2World* world, const cd2WorldShape* shape)
 {
-	cd2WorldShape* shape = world->shapes.data + shapeIndex;
 	const cd2Body* body = world->bodies.data + shape->body;
 	cd2Aabb aabb = cd2ComputeWorldShapeAabb(shape, body->transform);
 	aabb = cd2AabbInflate(aabb, CD_SPECULATIVE_DISTANCE);
@@ -193,11 +192,19 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 		cd2Aabb ahead = {cd2Add(aabb.min, d), cd2Add(aabb.max, d)};
 		aabb = cd2AabbUnion(aabb, ahead);
 	}
-	shape->aabb = aabb;
-	if (!body->enabled)
-	{
-		return;
-	}
+	return aabb;
+}
+
+bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape)
+{
+	return shape->proxyId == CD_NULL_PROXY || !cd2AabbContains(shape->fatAabb, shape->aabb);
+}
+
+void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
+{
+	cd2WorldShape* shape = world->shapes.data + shapeIndex;
+	const cd2Body* body = world->bodies.data + shape->body;
+	cd2Aabb aabb = shape->aabb;
 	cdReal margin = body->type == CD_STATIC_BODY ? CD_R(0.0) : cd2ShapeAabbMargin(shape);
 	if (shape->proxyId == CD_NULL_PROXY)
 	{
@@ -225,6 +232,16 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 			/* A same-size fat box is not a move for the broadphase; keep its box and ours equal. */
 			shape->fatAabb = cd2BroadPhase_GetFatAabb(world->broadPhase, shape->proxyId);
 		}
+	}
+}
+
+void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
+{
+	cd2WorldShape* shape = world->shapes.data + shapeIndex;
+	shape->aabb = cd2ComputeShapeBounds(world, shape);
+	if (world->bodies.data[shape->body].enabled)
+	{
+		cd2SyncShapeProxy(world, shapeIndex, forceMove);
 	}
 }
 

@@ -145,6 +145,48 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 			cdReal travel = speed * timeStep + cdAbs(body->angularVelocity) * timeStep * body->maxExtent;
 			body->isFast = body->isBullet || CD_R(0.5) * body->minExtent < travel;
 		}
+		unsigned flags = 0u;
+		if (body->type == CD_KINEMATIC_BODY && body->sleepTime == CD_R(0.0))
+		{
+			flags |= CD2_FINAL_KINEMATIC;
+		}
+		if (body->sleepTime >= CD2_TIME_TO_SLEEP)
+		{
+			flags |= CD2_FINAL_RESTED;
+		}
+		if (body->isFast && body->isBullet)
+		{
+			/* A bullet sweeps against the others' final poses: after this stage, on one thread. */
+			context->finalFlags[k] = (uint8_t)(flags | CD2_FINAL_BULLET);
+			continue;
+		}
+		if (body->isFast)
+		{
+			/* A fast non-bullet sweeps against static shapes only: it reads the broadphase (not
+			 * moved until after this stage), the static bodies and itself, and writes only itself,
+			 * so it runs here, with the same result as after every other body. */
+			cd2SolveContinuous(world, context->bodyIndices[k]);
+		}
+		/* The shapes' boxes from the final transform; the broadphase hears of those that left their
+		 * fat box after this stage, in body order (its tree is not thread-safe). */
+		for (int si = body->headShape; si != CD2_NULL_INDEX; si = world->shapes.data[si].nextShape)
+		{
+			cd2WorldShape* shape = world->shapes.data + si;
+			shape->aabb = cd2ComputeShapeBounds(world, shape);
+			if (cd2ShapeProxyNeedsSync(shape))
+			{
+				flags |= CD2_FINAL_SYNC_PROXY;
+			}
+		}
+		context->finalFlags[k] = (uint8_t)flags;
+		if (context->moveEvents != NULL)
+		{
+			cd2BodyMoveEvent* event = context->moveEvents + k;
+			event->transform = body->transform;
+			event->bodyId = cd2MakeBodyId(world, context->bodyIndices[k]);
+			event->userData = body->userData;
+			event->fellAsleep = false;
+		}
 	}
 }
 
@@ -610,6 +652,23 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
 
+	context.finalFlags = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1);
+	if (context.finalFlags == NULL)
+	{
+		world->outOfMemory = true;
+		return;
+	}
+	/* The move events are written by index; the step cleared the array. */
+	context.moveEvents = NULL;
+	if (world->moveEvents.count == 0 && cdArrayReserveFor(world->moveEvents, context.bodyCount))
+	{
+		context.moveEvents = world->moveEvents.data;
+	}
+	else if (context.bodyCount > 0)
+	{
+		world->outOfMemory = true;
+	}
+
 	/* One task per further worker, enqueued once; the stepping thread walks the stages too. */
 	void* helpers = NULL;
 #if CD2_STAGE_ATOMICS
@@ -633,16 +692,20 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->finishTask(helpers, world->userTaskContext);
 	}
 
-	/* Finalize: velocities and transforms back into the bodies. */
+	/* The rest of finalize, on this thread: what reads other bodies' final poses or writes shared
+	 * structures, for the bodies the finalize stage flagged, in body order. */
 	bool sleepAllowed = world->enableSleep;
-	/* A moving kinematic body keeps what touches it awake. */
+	bool rested = false;
 	for (int k = 0; k < context.bodyCount; ++k)
 	{
-		cd2Body* body = world->bodies.data + context.bodyIndices[k];
-		if (body->type != CD_KINEMATIC_BODY || body->sleepTime > CD_R(0.0))
+		unsigned flags = context.finalFlags[k];
+		rested = rested || (flags & CD2_FINAL_RESTED) != 0u;
+		if ((flags & CD2_FINAL_KINEMATIC) == 0u)
 		{
 			continue;
 		}
+		/* A moving kinematic body keeps what touches it awake. */
+		const cd2Body* body = world->bodies.data + context.bodyIndices[k];
 		for (int key = body->headContactKey; key != CD2_NULL_INDEX;)
 		{
 			const cd2Contact* contact = world->contacts.data + cd2EdgeContact(key);
@@ -654,48 +717,62 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			key = contact->nextKey[cd2EdgeSide(key)];
 		}
 	}
-	/* Continuous collision: non-bullets first (against static), then bullets (against static and
-	 * the others' final positions). */
-	for (int pass = 0; pass < 2; ++pass)
-	{
-		for (int k = 0; k < context.bodyCount; ++k)
-		{
-			int index = context.bodyIndices[k];
-			cd2Body* body = world->bodies.data + index;
-			if (body->isFast && body->isBullet == (pass == 1))
-			{
-				cd2SolveContinuous(world, index);
-			}
-		}
-	}
+	/* Bullets: continuous collision against static shapes and the others' final poses (the
+	 * non-bullets' sweeps are done), then their boxes and move events. */
 	for (int k = 0; k < context.bodyCount; ++k)
 	{
-		cd2Body* body = world->bodies.data + context.bodyIndices[k];
+		if ((context.finalFlags[k] & CD2_FINAL_BULLET) == 0u)
+		{
+			continue;
+		}
+		int index = context.bodyIndices[k];
+		cd2SolveContinuous(world, index);
+		const cd2Body* body = world->bodies.data + index;
+		if (context.moveEvents != NULL)
+		{
+			cd2BodyMoveEvent* event = context.moveEvents + k;
+			event->transform = body->transform;
+			event->bodyId = cd2MakeBodyId(world, index);
+			event->userData = body->userData;
+			event->fellAsleep = false;
+		}
+	}
+	/* The broadphase, after every sweep (they query it as it was before the step's moves). */
+	for (int k = 0; k < context.bodyCount; ++k)
+	{
+		unsigned flags = context.finalFlags[k];
+		if ((flags & (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET)) == 0u)
+		{
+			continue;
+		}
+		const cd2Body* body = world->bodies.data + context.bodyIndices[k];
 		for (int s = body->headShape; s != CD2_NULL_INDEX; s = world->shapes.data[s].nextShape)
 		{
-			cd2UpdateShapeBounds(world, s, false);
+			if ((flags & CD2_FINAL_BULLET) != 0u)
+			{
+				cd2UpdateShapeBounds(world, s, false);
+			}
+			else if (cd2ShapeProxyNeedsSync(world->shapes.data + s))
+			{
+				cd2SyncShapeProxy(world, s, false);
+			}
 		}
 	}
 	if (hitCandidates > 0)
 	{
 		cd2ReportHits(world, &context);
 	}
-	if (sleepAllowed)
+	/* Only a body that has rested for CD2_TIME_TO_SLEEP can fall asleep (an island sleeps when its
+	 * least rested body has); without one the islands are not built. */
+	if (sleepAllowed && rested && cd2UpdateSleep(world) > 0)
 	{
-		cd2UpdateSleep(world);
-	}
-	for (int k = 0; k < context.bodyCount; ++k)
-	{
-		int index = context.bodyIndices[k];
-		cd2Body* body = world->bodies.data + index;
-		cd2BodyMoveEvent event;
-		event.transform = body->transform;
-		event.bodyId = cd2MakeBodyId(world, index);
-		event.userData = body->userData;
-		event.fellAsleep = !body->awake;
-		if (!cdArrayPush(world->moveEvents, event))
+		for (int k = 0; k < context.bodyCount && context.moveEvents != NULL; ++k)
 		{
-			world->outOfMemory = true;
+			context.moveEvents[k].fellAsleep = !world->bodies.data[context.bodyIndices[k]].awake;
 		}
+	}
+	if (context.moveEvents != NULL)
+	{
+		world->moveEvents.count = context.bodyCount;
 	}
 }

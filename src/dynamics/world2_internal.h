@@ -290,7 +290,20 @@ typedef struct cd2StepContext
 	int* joints;
 	int jointCount;
 	bool enableWarmStarting;
+	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
+	uint8_t* finalFlags;
+	/* The step's move events, one per solver body, written by index (NULL: out of memory). */
+	cd2BodyMoveEvent* moveEvents;
 } cd2StepContext;
+
+/* The finalize stage's notes per body for the serial pass: a shape's box left its fat box (or
+ * has no proxy), so the broadphase must move it; a fast bullet, whose sweep, boxes and move event
+ * wait for the other bodies' final poses; a moving kinematic body, which wakes what it touches;
+ * a body that has rested long enough to fall asleep (no such body: no island can sleep). */
+#define CD2_FINAL_SYNC_PROXY 1u
+#define CD2_FINAL_BULLET 2u
+#define CD2_FINAL_KINEMATIC 4u
+#define CD2_FINAL_RESTED 8u
 
 /* ---- events ---------------------------------------------------------------------------------- */
 typedef CD_ARRAY(cd2ContactBeginTouchEvent) cd2BeginEventArray;
@@ -376,6 +389,13 @@ bool cd2ShouldShapesCollide(cd2Filter a, cd2Filter b);
 void cd2DestroyShapeInternal(cd2World* world, int shapeIndex, bool wakeBodies);
 /* Brings the broadphase box up to date after a move; teleport: the body jumped. */
 void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
+/* cd2UpdateShapeBounds in two halves, so that the step can compute the boxes on the workers and
+ * move the proxies on one thread: the shape's tight box (speculative margin, a bullet's reach)
+ * from its body's transform, read-only; whether the broadphase must hear of shape->aabb (no proxy
+ * yet, or out of its fat box); and the broadphase half (not thread-safe; enabled bodies only). */
+cd2Aabb cd2ComputeShapeBounds(const cd2World* world, const cd2WorldShape* shape);
+bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape);
+void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove);
 
 /* ---- contact2.c ------------------------------------------------------------------------------ */
 void cd2UpdateBroadPhasePairs(cd2World* world);
@@ -419,8 +439,8 @@ cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle);
 /* ---- island.c -------------------------------------------------------------------------------- */
 void cd2WakeIsland(cd2World* world, int islandId);
 /* Groups the awake bodies by touching contacts and joints and puts to sleep each group whose
- * bodies have all rested for CD2_TIME_TO_SLEEP. */
-void cd2UpdateSleep(cd2World* world);
+ * bodies have all rested for CD2_TIME_TO_SLEEP; returns how many bodies it put to sleep. */
+int cd2UpdateSleep(cd2World* world);
 /* Puts the body's connected group to sleep now. */
 void cd2SleepBodyGroup(cd2World* world, int bodyIndex);
 void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
