@@ -807,6 +807,170 @@ static void TestContinuous(void)
 	cd2DestroyWorld(world);
 }
 
+/* The end of the step with every kind of body it treats apart (fast bodies swept against static
+ * shapes, a bullet swept against a moving plank, a moving kinematic body that wakes what it
+ * touches, boxes that fall asleep): every move event carries its body's pose after the step and
+ * says whether it fell asleep, every shape's box holds the shape, and the events, poses and boxes
+ * are the same bits for 1, 2 and 4 workers. */
+typedef struct FinalizeRun
+{
+	uint64_t hash;
+	int moveEvents, fellAsleep, badEvents, badBoxes;
+	cdReal bulletX, plankX, lowestBall;
+} FinalizeRun;
+
+static void HashBytes(uint64_t* h, const void* data, size_t size)
+{
+	const unsigned char* bytes = (const unsigned char*)data;
+	for (size_t i = 0; i < size; ++i)
+	{
+		*h = (*h ^ bytes[i]) * 1099511628211ull;
+	}
+}
+
+static FinalizeRun RunFinalizeScene(int workerCount)
+{
+	enum
+	{
+		BALLS = 12,
+		RESTING = 10,
+		BODIES = BALLS + RESTING + 3
+	};
+	static int tags[BODIES];
+	FinalizeRun run;
+	memset(&run, 0, sizeof(run));
+	run.hash = 14695981039346656037ull;
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.workerCount = workerCount;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), -CD_R(0.5)), CD_R(60.0), CD_R(0.5));
+	cd2BodyId bodies[BODIES];
+	cd2ShapeId shapes[BODIES];
+	cdReal radii[BODIES];
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	int n = 0;
+	/* Fast non-bullets: small balls thrown down hard onto the ground. */
+	for (int i = 0; i < BALLS; ++i, ++n)
+	{
+		bodies[n] = MakeBall(world, cd2MakeVec(-CD_R(20.0) + CD_R(1.5) * (cdReal)i, CD_R(6.0)), CD_R(0.1), false);
+		cd2Body_SetLinearVelocity(bodies[n], cd2MakeVec(CD_R(0.0), -CD_R(60.0) - CD_R(5.0) * (cdReal)i));
+		radii[n] = CD_R(0.1);
+	}
+	/* Boxes resting on the ground; the kinematic pusher reaches the last ones. */
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.25), CD_R(0.25)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	for (int i = 0; i < RESTING; ++i, ++n)
+	{
+		bd = cd2DefaultBodyDef();
+		bd.type = CD_DYNAMIC_BODY;
+		bd.position = cd2MakeVec(CD_R(2.0) + CD_R(0.6) * (cdReal)i, CD_R(0.25));
+		bodies[n] = cd2CreateBody(world, &bd);
+		shapes[n] = cd2CreatePolygonShape(bodies[n], &sd, &box);
+		radii[n] = CD_R(0.0);
+	}
+	bd = cd2DefaultBodyDef();
+	bd.type = CD_KINEMATIC_BODY;
+	bd.position = cd2MakeVec(CD_R(8.6), CD_R(0.6));
+	bd.linearVelocity = cd2MakeVec(-CD_R(0.5), CD_R(0.0));
+	bodies[n] = cd2CreateBody(world, &bd);
+	shapes[n] = cd2CreatePolygonShape(bodies[n], &sd, &box);
+	radii[n++] = CD_R(0.0);
+	/* A bullet at a thin standing plank. */
+	bd = cd2DefaultBodyDef();
+	bd.type = CD_DYNAMIC_BODY;
+	bd.position = cd2MakeVec(CD_R(30.0), CD_R(2.0));
+	int plank = n;
+	bodies[n] = cd2CreateBody(world, &bd);
+	cd2Polygon thin;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.05), CD_R(2.0)}, {CD_R(1.0), CD_R(0.0)}}, &thin);
+	shapes[n] = cd2CreatePolygonShape(bodies[n], &sd, &thin);
+	radii[n++] = CD_R(0.0);
+	int bullet = n;
+	bodies[n] = MakeBall(world, cd2MakeVec(CD_R(20.0), CD_R(2.5)), CD_R(0.05), true);
+	cd2Body_SetLinearVelocity(bodies[n], cd2MakeVec(CD_R(500.0), CD_R(0.0)));
+	radii[n++] = CD_R(0.05);
+	for (int i = 0; i < n; ++i)
+	{
+		tags[i] = i;
+		cd2Body_SetUserData(bodies[i], tags + i);
+		if (radii[i] > CD_R(0.0))
+		{
+			cd2ShapeId one[1];
+			TEST_CHECK(cd2Body_GetShapes(bodies[i], one, 1) == 1);
+			shapes[i] = one[0];
+		}
+	}
+	for (int step = 0; step < 150; ++step)
+	{
+		cd2World_Step(world, DT, 4);
+		if (step == 2)
+		{
+			run.bulletX = cd2Body_GetPosition(bodies[bullet]).x;
+			run.plankX = cd2Body_GetPosition(bodies[plank]).x;
+		}
+		cd2BodyEvents events = cd2World_GetBodyEvents(world);
+		run.moveEvents += events.moveCount;
+		for (int e = 0; e < events.moveCount; ++e)
+		{
+			const cd2BodyMoveEvent* event = events.moveEvents + e;
+			int tag = event->userData != NULL ? *(const int*)event->userData : -1;
+			cd2Transform xf = cd2Body_GetTransform(event->bodyId);
+			bool ok = tag >= 0 && tag < n && cd2BodyIdEqual(event->bodyId, bodies[tag]) &&
+					  memcmp(&xf.p, &event->transform.p, sizeof(xf.p)) == 0 &&
+					  memcmp(&xf.q, &event->transform.q, sizeof(xf.q)) == 0 &&
+					  event->fellAsleep == !cd2Body_IsAwake(event->bodyId);
+			run.badEvents += ok ? 0 : 1;
+			run.fellAsleep += event->fellAsleep ? 1 : 0;
+			HashBytes(&run.hash, &tag, sizeof(tag));
+			HashBytes(&run.hash, &event->transform.p, sizeof(event->transform.p));
+			HashBytes(&run.hash, &event->transform.q, sizeof(event->transform.q));
+			HashBytes(&run.hash, &event->fellAsleep, sizeof(event->fellAsleep));
+		}
+		for (int i = 0; i < n; ++i)
+		{
+			cd2Aabb a = cd2Shape_GetAabb(shapes[i]);
+			HashBytes(&run.hash, &a, sizeof(a));
+			/* The box holds the shape where its body ended the step (a ball: its disc). */
+			cd2Vec p = cd2Body_GetPosition(bodies[i]);
+			cdReal r = radii[i];
+			if (!(a.min.x <= p.x - r && a.min.y <= p.y - r && p.x + r <= a.max.x && p.y + r <= a.max.y))
+			{
+				run.badBoxes += 1;
+			}
+		}
+	}
+	run.lowestBall = CD_REAL_MAX;
+	for (int i = 0; i < BALLS; ++i)
+	{
+		run.lowestBall = cdMin(run.lowestBall, cd2Body_GetPosition(bodies[i]).y);
+	}
+	cd2DestroyWorld(world);
+	return run;
+}
+
+static void TestFinalizeAcrossWorkers(void)
+{
+	FinalizeRun one = RunFinalizeScene(1);
+	TEST_CHECKF(one.badEvents == 0, "%d move events off their body", one.badEvents);
+	TEST_CHECKF(one.badBoxes == 0, "%d shape boxes miss their shape", one.badBoxes);
+	TEST_CHECK(one.fellAsleep > 0);
+	TEST_CHECK(one.moveEvents > 150);
+	/* Swept, not tunnelled: the balls stay above the ground, the bullet in front of the plank. */
+	TEST_CHECKF(one.lowestBall > CD_R(0.0), "lowest ball at %g", (double)one.lowestBall);
+	TEST_CHECKF(one.bulletX < one.plankX, "bullet at %g, plank at %g", (double)one.bulletX,
+				(double)one.plankX);
+	int counts[2] = {2, 4};
+	for (int k = 0; k < 2; ++k)
+	{
+		FinalizeRun other = RunFinalizeScene(counts[k]);
+		TEST_CHECKF(other.hash == one.hash, "%d workers: hash %llx, 1 worker %llx", counts[k],
+					(unsigned long long)other.hash, (unsigned long long)one.hash);
+		TEST_CHECK(other.badEvents == 0 && other.badBoxes == 0);
+		TEST_CHECK(other.moveEvents == one.moveEvents && other.fellAsleep == one.fellAsleep);
+	}
+}
+
 /* A body made asleep (isAwake false) stays asleep when its shapes are added and through steps, like
  * a grid of resting boxes waiting to be hit, and wakes when an awake body touches it. */
 static void TestCreatedAsleep(void)
@@ -1231,6 +1395,7 @@ int main(void)
 	TEST_RUN(TestQueries);
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
+	TEST_RUN(TestFinalizeAcrossWorkers);
 	TEST_RUN(TestCreatedAsleep);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);
