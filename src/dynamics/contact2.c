@@ -2,6 +2,8 @@
  * (warm-started by feature id) and emits the begin/end and sensor events. */
 #include "world2_internal.h"
 
+#include "../base/radix_sort.h"
+
 #include <stdlib.h>
 
 /* ---- the narrowphase in local frames ------------------------------------------------------------
@@ -334,14 +336,27 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	cd2BroadPhase_UpdatePairs(world->broadPhase, cd2CollectPair, &collector);
 	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
 	 * history, shape indices are part of the saved state. */
+	const uint64_t* sorted = collector.pairs.data;
 	if (collector.pairs.count > 1)
 	{
-		qsort(collector.pairs.data, (size_t)collector.pairs.count, sizeof(uint64_t), cd2ComparePairKeys);
+		/* A radix sort (this runs on the calling thread, and a pile that is moving reports
+		 * thousands of new pairs a step); the comparison sort when scratch memory runs out. The
+		 * keys are plain integers, so both give the same order. */
+		uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena,
+															  (size_t)collector.pairs.count * sizeof(uint64_t));
+		if (scratch != NULL)
+		{
+			sorted = cdRadixSortKeys(collector.pairs.data, scratch, collector.pairs.count);
+		}
+		else
+		{
+			qsort(collector.pairs.data, (size_t)collector.pairs.count, sizeof(uint64_t), cd2ComparePairKeys);
+		}
 	}
 	for (int i = 0; i < collector.pairs.count; ++i)
 	{
-		uint64_t key = collector.pairs.data[i];
-		if (i > 0 && collector.pairs.data[i - 1] == key)
+		uint64_t key = sorted[i];
+		if (i > 0 && sorted[i - 1] == key)
 		{
 			continue;
 		}
