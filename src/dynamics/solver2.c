@@ -450,20 +450,37 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	context.bodyIndices = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	context.params = (cd2SolverBodyParams*)cdArena_AllocUncleared(
 		&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
-	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL))
+	/* Per world body: its solver index, and the same for dynamic bodies only (the colouring's;
+	 * kinematic bodies are immovable for the solver and take no colour). Small arrays, so that
+	 * the contact loops below do not visit the bodies. */
+	int* solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	context.accelerations =
+		(cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
+	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
+							 solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
 	{
 		world->outOfMemory = true;
 		return;
 	}
+	/* One pass over the bodies (on the calling thread: the dense order is the bodies' order). */
 	for (int i = 0; i < world->bodies.count; ++i)
 	{
 		cd2Body* body = world->bodies.data + i;
 		body->solverIndex = CD2_NULL_INDEX;
+		solverOf[i] = CD2_NULL_INDEX;
+		colorBodyOf[i] = CD2_NULL_INDEX;
 		if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
 		{
 			continue;
 		}
 		int k = context.bodyCount++;
+		solverOf[i] = k;
+		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? k : CD2_NULL_INDEX;
+		context.accelerations[k] =
+			body->invMass > CD_R(0.0)
+				? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
+				: CD2_VEC_ZERO;
 		body->solverIndex = k;
 		body->center0 = body->center;
 		body->rotation0 = body->transform.q;
@@ -490,32 +507,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2SolverBody* zero = context.bodies + context.bodyCount;
 		memset(zero, 0, sizeof(*zero));
 		zero->deltaRotation = CD2_ROT_IDENTITY;
-	}
-
-	/* Per world body: its solver index, and the same for dynamic bodies only (the colouring's;
-	 * kinematic bodies are immovable for the solver and take no colour). Small arrays, so that
-	 * the contact loops below do not visit the bodies. */
-	int* solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	context.accelerations =
-		(cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
-	if (bodyCapacity > 0 && (solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
-	{
-		world->outOfMemory = true;
-		return;
-	}
-	for (int i = 0; i < world->bodies.count; ++i)
-	{
-		const cd2Body* body = world->bodies.data + i;
-		solverOf[i] = body->solverIndex;
-		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? body->solverIndex : CD2_NULL_INDEX;
-		if (body->solverIndex >= 0)
-		{
-			context.accelerations[body->solverIndex] =
-				body->invMass > CD_R(0.0)
-					? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
-					: CD2_VEC_ZERO;
-		}
 	}
 
 	/* Touching contacts with an awake body: their pairs in index order, small records (the constraints
