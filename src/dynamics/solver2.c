@@ -12,7 +12,14 @@
  * before going on to the next. A thread only ever waits for blocks that a running thread has taken,
  * never for another thread to arrive, so the step finishes whatever the task system does with the
  * tasks (run them late, inline or one after another). Each block writes only its own items (a
- * colour's blocks share no movable body), so the results are the same bits for any worker count. */
+ * colour's blocks share no movable body), so the results are the same bits for any worker count.
+ *
+ * The last stage, finalize, does per body all that reads only the body itself and static geometry:
+ * transform, sleep time, continuous collision of a fast non-bullet, the shapes' tight boxes, the
+ * move event (written at the body's solver index). What reads other bodies' final poses or writes
+ * a shared structure follows on the stepping thread, over the bodies finalize flagged, in body
+ * order as before: kinematic wakes, bullets, then the broadphase moves (after every sweep: the
+ * sweeps query the broadphase as it was before the step's moves). */
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
