@@ -853,13 +853,15 @@ static FinalizeRun RunFinalizeScene(int workerCount)
 	/* Fast non-bullets: small balls thrown down hard onto the ground. */
 	for (int i = 0; i < BALLS; ++i, ++n)
 	{
-		bodies[n] = MakeBall(world, cd2MakeVec(-CD_R(20.0) + CD_R(1.5) * (cdReal)i, CD_R(6.0)), CD_R(0.1), false);
+		bodies[n] =
+			MakeBall(world, cd2MakeVec(-CD_R(20.0) + CD_R(1.5) * (cdReal)i, CD_R(6.0)), CD_R(0.1), false);
 		cd2Body_SetLinearVelocity(bodies[n], cd2MakeVec(CD_R(0.0), -CD_R(60.0) - CD_R(5.0) * (cdReal)i));
 		radii[n] = CD_R(0.1);
 	}
 	/* Boxes resting on the ground; the kinematic pusher reaches the last ones. */
 	cd2Polygon box;
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.25), CD_R(0.25)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.25), CD_R(0.25)}, {CD_R(1.0), CD_R(0.0)}},
+					  &box);
 	for (int i = 0; i < RESTING; ++i, ++n)
 	{
 		bd = cd2DefaultBodyDef();
@@ -883,7 +885,8 @@ static FinalizeRun RunFinalizeScene(int workerCount)
 	int plank = n;
 	bodies[n] = cd2CreateBody(world, &bd);
 	cd2Polygon thin;
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.05), CD_R(2.0)}, {CD_R(1.0), CD_R(0.0)}}, &thin);
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.05), CD_R(2.0)}, {CD_R(1.0), CD_R(0.0)}},
+					  &thin);
 	shapes[n] = cd2CreatePolygonShape(bodies[n], &sd, &thin);
 	radii[n++] = CD_R(0.0);
 	int bullet = n;

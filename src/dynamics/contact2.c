@@ -342,8 +342,8 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		/* A radix sort (this runs on the calling thread, and a pile that is moving reports
 		 * thousands of new pairs a step); the comparison sort when scratch memory runs out. The
 		 * keys are plain integers, so both give the same order. */
-		uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena,
-															  (size_t)collector.pairs.count * sizeof(uint64_t));
+		uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)collector.pairs.count *
+																				 sizeof(uint64_t));
 		if (scratch != NULL)
 		{
 			sorted = cdRadixSortKeys(collector.pairs.data, scratch, collector.pairs.count);

@@ -153,7 +153,7 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 			body->isFast = body->isBullet || CD_R(0.5) * body->minExtent < travel;
 		}
 		unsigned flags = 0u;
-		if (body->type == CD_KINEMATIC_BODY && body->sleepTime == CD_R(0.0))
+		if (body->type == CD_KINEMATIC_BODY)
 		{
 			flags |= CD2_FINAL_KINEMATIC;
 		}
@@ -464,8 +464,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	context.accelerations =
 		(cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
-	if (bodyCapacity > 0 && (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
-							 solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
+	if (bodyCapacity > 0 &&
+		(context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
+		 solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
 	{
 		world->outOfMemory = true;
 		return;
@@ -484,10 +485,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		int k = context.bodyCount++;
 		solverOf[i] = k;
 		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? k : CD2_NULL_INDEX;
-		context.accelerations[k] =
-			body->invMass > CD_R(0.0)
-				? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
-				: CD2_VEC_ZERO;
+		context.accelerations[k] = body->invMass > CD_R(0.0) ? cd2MulAdd(cd2Scale(body->invMass, body->force),
+																		 body->gravityScale, world->gravity)
+															 : CD2_VEC_ZERO;
 		body->solverIndex = k;
 		body->center0 = body->center;
 		body->rotation0 = body->transform.q;
@@ -702,8 +702,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		{
 			continue;
 		}
-		/* A moving kinematic body keeps what touches it awake. */
+		/* A moving kinematic body keeps what touches it awake. (Its sleep time is read here, not
+		 * in finalize: a wake above may have reset it.) */
 		const cd2Body* body = world->bodies.data + context.bodyIndices[k];
+		if (body->sleepTime > CD_R(0.0))
+		{
+			continue;
+		}
 		for (int key = body->headContactKey; key != CD2_NULL_INDEX;)
 		{
 			const cd2Contact* contact = world->contacts.data + cd2EdgeContact(key);

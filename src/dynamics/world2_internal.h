@@ -298,7 +298,7 @@ typedef struct cd2StepContext
 
 /* The finalize stage's notes per body for the serial pass: a shape's box left its fat box (or
  * has no proxy), so the broadphase must move it; a fast bullet, whose sweep, boxes and move event
- * wait for the other bodies' final poses; a moving kinematic body, which wakes what it touches;
+ * wait for the other bodies' final poses; a kinematic body, which wakes what it touches when moving;
  * a body that has rested long enough to fall asleep (no such body: no island can sleep). */
 #define CD2_FINAL_SYNC_PROXY 1u
 #define CD2_FINAL_BULLET 2u
