@@ -974,6 +974,128 @@ static void TestFinalizeAcrossWorkers(void)
 	}
 }
 
+/* Joints in groups that share no awake body are solved at the same time with more workers: chains
+ * hanging from the ground (a static body joins no group), chains hung from one moving kinematic
+ * body (one group through it), welded and distance-jointed pairs, and chains that fall onto each
+ * other. Poses, velocities and joint forces are the same bits for 1, 2 and 4 workers. */
+static uint64_t RunJointGroups(int workerCount, int* awakeOut)
+{
+	enum
+	{
+		CHAINS = 16,
+		LINKS = 6
+	};
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.workerCount = workerCount;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyId ground = MakeStaticBox(world, cd2MakeVec(CD_R(0.0), -CD_R(0.5)), CD_R(60.0), CD_R(0.5));
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	bd.type = CD_KINEMATIC_BODY;
+	bd.position = cd2MakeVec(CD_R(10.0), CD_R(12.0));
+	bd.linearVelocity = cd2MakeVec(CD_R(1.0), CD_R(0.0));
+	bd.angularVelocity = CD_R(0.5);
+	cd2BodyId mover = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2Capsule link = {{-CD_R(0.4), CD_R(0.0)}, {CD_R(0.4), CD_R(0.0)}, CD_R(0.1)};
+	cd2JointId joints[CHAINS * (LINKS + 1)];
+	int jointCount = 0;
+	cd2BodyId bodies[CHAINS * LINKS];
+	int bodyCount = 0;
+	for (int c = 0; c < CHAINS; ++c)
+	{
+		/* Chains 0-3 hang from the kinematic body, the others from the ground (static), the odd
+		 * ones of those lower so that they fall onto the ground and onto each other. */
+		bool fromMover = c < 4;
+		cdReal x = fromMover ? CD_R(10.0) : -CD_R(30.0) + CD_R(3.0) * (cdReal)c;
+		cdReal y = fromMover ? CD_R(12.0) : (c % 2 == 0 ? CD_R(9.0) : CD_R(4.0));
+		cd2BodyId previous = fromMover ? mover : ground;
+		cd2Vec anchor = fromMover ? CD2_VEC_ZERO : cd2MakeVec(x, y);
+		for (int l = 0; l < LINKS; ++l)
+		{
+			bd = cd2DefaultBodyDef();
+			bd.type = CD_DYNAMIC_BODY;
+			bd.position = cd2MakeVec(x + CD_R(0.8) * (cdReal)l + CD_R(0.4), y);
+			cd2BodyId body = cd2CreateBody(world, &bd);
+			cd2CreateCapsuleShape(body, &sd, &link);
+			bodies[bodyCount++] = body;
+			if (c % 4 == 3 && l > 0)
+			{
+				cd2WeldJointDef wj = cd2DefaultWeldJointDef();
+				wj.bodyIdA = previous;
+				wj.bodyIdB = body;
+				wj.localAnchorA = cd2MakeVec(CD_R(0.4), CD_R(0.0));
+				wj.localAnchorB = cd2MakeVec(-CD_R(0.4), CD_R(0.0));
+				wj.angularHertz = CD_R(5.0);
+				joints[jointCount++] = cd2CreateWeldJoint(world, &wj);
+			}
+			else if (c % 4 == 2 && l > 0)
+			{
+				cd2DistanceJointDef dj = cd2DefaultDistanceJointDef();
+				dj.bodyIdA = previous;
+				dj.bodyIdB = body;
+				dj.localAnchorA = cd2MakeVec(CD_R(0.4), CD_R(0.0));
+				dj.localAnchorB = cd2MakeVec(-CD_R(0.4), CD_R(0.0));
+				dj.length = CD_R(0.05);
+				joints[jointCount++] = cd2CreateDistanceJoint(world, &dj);
+			}
+			else
+			{
+				cd2RevoluteJointDef rj = cd2DefaultRevoluteJointDef();
+				rj.bodyIdA = previous;
+				rj.bodyIdB = body;
+				rj.localAnchorA = l == 0 ? anchor : cd2MakeVec(CD_R(0.4), CD_R(0.0));
+				rj.localAnchorB = cd2MakeVec(-CD_R(0.4), CD_R(0.0));
+				rj.enableLimit = c % 3 == 0;
+				rj.lowerAngle = -CD_R(0.5);
+				rj.upperAngle = CD_R(0.5);
+				joints[jointCount++] = cd2CreateRevoluteJoint(world, &rj);
+			}
+			previous = body;
+		}
+	}
+	uint64_t hash = 14695981039346656037ull;
+	for (int step = 0; step < 90; ++step)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	int awake = 0;
+	for (int i = 0; i < bodyCount; ++i)
+	{
+		cd2Transform xf = cd2Body_GetTransform(bodies[i]);
+		cd2Vec v = cd2Body_GetLinearVelocity(bodies[i]);
+		cdReal w = cd2Body_GetAngularVelocity(bodies[i]);
+		HashBytes(&hash, &xf.p, sizeof(xf.p));
+		HashBytes(&hash, &xf.q, sizeof(xf.q));
+		HashBytes(&hash, &v, sizeof(v));
+		HashBytes(&hash, &w, sizeof(w));
+		awake += cd2Body_IsAwake(bodies[i]) ? 1 : 0;
+	}
+	for (int j = 0; j < jointCount; ++j)
+	{
+		cd2Vec f = cd2Joint_GetConstraintForce(joints[j]);
+		HashBytes(&hash, &f, sizeof(f));
+	}
+	*awakeOut = awake;
+	cd2DestroyWorld(world);
+	return hash;
+}
+
+static void TestJointGroupsAcrossWorkers(void)
+{
+	int awake1 = 0, awake = 0;
+	uint64_t one = RunJointGroups(1, &awake1);
+	/* The chains are still moving (the hash covers a moving scene, not a resting one). */
+	TEST_CHECK(awake1 > 0);
+	int counts[2] = {2, 4};
+	for (int k = 0; k < 2; ++k)
+	{
+		uint64_t other = RunJointGroups(counts[k], &awake);
+		TEST_CHECKF(other == one, "%d workers: hash %llx, 1 worker %llx", counts[k],
+					(unsigned long long)other, (unsigned long long)one);
+		TEST_CHECK(awake == awake1);
+	}
+}
+
 /* A body made asleep (isAwake false) stays asleep when its shapes are added and through steps, like
  * a grid of resting boxes waiting to be hit, and wakes when an awake body touches it. */
 static void TestCreatedAsleep(void)
@@ -1399,6 +1521,7 @@ int main(void)
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
 	TEST_RUN(TestFinalizeAcrossWorkers);
+	TEST_RUN(TestJointGroupsAcrossWorkers);
 	TEST_RUN(TestCreatedAsleep);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);

@@ -995,12 +995,12 @@ static cdReal cd2WarmStartScale(cd2Vec v0, cdReal w0, const cd2SolverBody* after
  * hold (bodies pulled apart by kinematic ones, a light body on a lever arm of a kilometre, where
  * float round-off of the effective mass feeds back) otherwise grow their impulses a hundredfold
  * per sub-step until they overflow. */
-void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
+void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end)
 {
 	cd2SolverBody scratchA, scratchB;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
-	for (int i = 0; i < context->jointCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2JointSolverArgs args;
 		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
@@ -1031,10 +1031,10 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context)
 	}
 }
 
-void cd2SolveJoints(cd2World* world, cd2StepContext* context, bool useBias)
+void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias)
 {
 	cd2SolverBody scratchA, scratchB;
-	for (int i = 0; i < context->jointCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2JointSolverArgs args;
 		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);

@@ -289,6 +289,10 @@ typedef struct cd2StepContext
 	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
+	/* The joints in groups that share no movable body, each group's joints in index order: group
+	 * g is joints [jointGroupStart[g], jointGroupStart[g + 1]). One group with one worker. */
+	int* jointGroupStart;
+	int jointGroupCount;
 	bool enableWarmStarting;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
@@ -449,8 +453,9 @@ void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
 cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id);
 void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies);
 void cd2PrepareJoints(cd2World* world, cd2StepContext* context);
-void cd2WarmStartJoints(cd2World* world, cd2StepContext* context);
-void cd2SolveJoints(cd2World* world, cd2StepContext* context, bool useBias);
+/* Joints [start, end) of context->joints. */
+void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end);
+void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias);
 void cd2StoreJointReactions(cd2World* world, cd2StepContext* context);
 
 /* The per-kind solvers (one file each). */
