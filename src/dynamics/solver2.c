@@ -446,7 +446,8 @@ static int cd2FindJointRoot(int* parent, int i)
  * group's joints keeping their order, the groups in the order of their first joint. A joint's
  * warm start and solve read and write only its own data and its two bodies, so groups run at the
  * same time give the same bits as all joints in index order (the order within each group is what
- * the results depend on). With one worker: one group, the index order. False: out of memory. */
+ * the results depend on). With one worker: one group, the index order. False: out of memory for
+ * the group starts (without scratch memory for the grouping, one group). */
 static bool cd2GroupJoints(cd2World* world, cd2StepContext* context)
 {
 	int n = context->jointCount;
@@ -469,7 +470,7 @@ static bool cd2GroupJoints(cd2World* world, cd2StepContext* context)
 	int* sorted = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 	if (parent == NULL || groupOfRoot == NULL || groupOf == NULL || sorted == NULL)
 	{
-		return false;
+		return true; /* out of scratch memory: the one group, on one thread */
 	}
 	for (int k = 0; k < bodyCount; ++k)
 	{
