@@ -289,6 +289,9 @@ typedef struct cd2StepContext
 	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
+	/* Two per joint of `joints`, set by cd2PrepareJoints: the solver indices of its bodies (negative
+	 * for an immovable one), so that the sub-steps never read the body records. */
+	int* jointSolverBodies;
 	bool enableWarmStarting;
 } cd2StepContext;
 
