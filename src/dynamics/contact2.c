@@ -2,7 +2,7 @@
  * (warm-started by feature id) and emits the begin/end and sensor events. */
 #include "world2_internal.h"
 
-#include <stdlib.h>
+#include "../base/radix_sort.h"
 
 /* ---- the narrowphase in local frames ------------------------------------------------------------
  * The one place that computes a pair's manifold: both shapes stay in their body frames (no copy of
@@ -206,12 +206,6 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	}
 }
 
-static int cd2ComparePairKeys(const void* a, const void* b)
-{
-	uint64_t x = *(const uint64_t*)a, y = *(const uint64_t*)b;
-	return x < y ? -1 : (x > y ? 1 : 0);
-}
-
 static bool cd2ShouldCreateContact(cd2World* world, int indexA, int indexB)
 {
 	const cd2WorldShape* a = world->shapes.data + indexA;
@@ -334,24 +328,40 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	cd2BroadPhase_UpdatePairs(world->broadPhase, cd2CollectPair, &collector);
 	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
 	 * history, shape indices are part of the saved state. */
+	uint64_t* sorted = collector.pairs.data;
+	uint64_t* scratch = NULL;
 	if (collector.pairs.count > 1)
 	{
-		qsort(collector.pairs.data, (size_t)collector.pairs.count, sizeof(uint64_t), cd2ComparePairKeys);
+		scratch = (uint64_t*)cdAlloc((size_t)collector.pairs.count * sizeof(uint64_t));
+		if (scratch == NULL)
+		{
+			/* dropped: the pairs come back when their boxes move again */
+			world->outOfMemory = true;
+			cdArrayFree(collector.pairs);
+			return;
+		}
+		sorted = cdRadixSortKeys(collector.pairs.data, scratch, collector.pairs.count);
 	}
+	/* Each key once (a pair can be reported twice); pairs with a contact were dropped by the
+	 * collector, and the ones created here are new and distinct. */
 	for (int i = 0; i < collector.pairs.count; ++i)
 	{
-		uint64_t key = collector.pairs.data[i];
-		if (i > 0 && collector.pairs.data[i - 1] == key)
+		uint64_t key = sorted[i];
+		if (i > 0 && sorted[i - 1] == key)
 		{
 			continue;
 		}
 		int indexA = (int)(uint32_t)key, indexB = (int)(uint32_t)(key >> 32);
 		if (!world->shapes.data[indexA].inUse || !world->shapes.data[indexB].inUse ||
-			cdPairSet_Find(&world->pairs, key) >= 0 || !cd2ShouldCreateContact(world, indexA, indexB))
+			!cd2ShouldCreateContact(world, indexA, indexB))
 		{
 			continue;
 		}
 		cd2CreateContact(world, indexA, indexB);
+	}
+	if (scratch != NULL)
+	{
+		cdFree(scratch);
 	}
 	cdArrayFree(collector.pairs);
 }
