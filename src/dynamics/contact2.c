@@ -194,7 +194,7 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	(void)proxyA;
 	(void)proxyB;
 	cd2PairCollector* collector = (cd2PairCollector*)context;
-	uint64_t key = cdPairKey((int)userDataA, (int)userDataB);
+	uint64_t key = cdPairKey(cd2ProxyShape(userDataA), cd2ProxyShape(userDataB));
 	/* Most overlaps of moved boxes already have their contact: drop them before the sort. */
 	if (cdPairSet_Find(collector->existing, key) >= 0)
 	{

@@ -378,6 +378,22 @@ cd2Aabb cd2ComputeWorldShapeAabb(const cd2WorldShape* shape, cd2Transform xf);
 bool cd2ShouldShapesCollide(cd2Filter a, cd2Filter b);
 void cd2DestroyShapeInternal(cd2World* world, int shapeIndex, bool wakeBodies);
 /* Brings the broadphase box up to date after a move; teleport: the body jumped. */
+
+/* A broadphase proxy's user data: the shape index, plus CD2_PROXY_STATIC for a shape of a static
+ * body (set when the proxy is made; a body that changes type remakes its proxies), so that
+ * continuous collision passes over moving shapes without reading their records. */
+#define CD2_PROXY_STATIC ((uint64_t)1 << 32)
+
+static inline uint64_t cd2ProxyUserData(int shapeIndex, bool isStatic)
+{
+	return (uint64_t)(uint32_t)shapeIndex | (isStatic ? CD2_PROXY_STATIC : 0u);
+}
+
+static inline int cd2ProxyShape(uint64_t userData)
+{
+	return (int)(uint32_t)userData;
+}
+
 void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 
 /* ---- contact2.c ------------------------------------------------------------------------------ */
