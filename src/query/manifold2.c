@@ -210,10 +210,13 @@ static inline CenterContact CenterContactOnEdge(const Core* k, cd2Vec center, cd
 		int vertex = along <= CD_R(0.0) ? edge : along >= cd2Dot(tangent, cd2Sub(v2, v1)) ? next : -1;
 		if (vertex >= 0)
 		{
-			cdReal distance;
-			cd2Vec direction = cd2GetLengthAndNormalize(&distance, cd2Sub(center, k->vertices[vertex]));
-			if (direction.x != CD_R(0.0) || direction.y != CD_R(0.0))
+			/* cd2GetLengthAndNormalize inline: a length it accepts (at least CD_REAL_EPSILON^2 and
+			 * finite) gives a direction whose larger component is at least 0.7, never zero. */
+			cd2Vec offset = cd2Sub(center, k->vertices[vertex]);
+			cdReal distance = cd2Length(offset);
+			if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
 			{
+				cd2Vec direction = cd2Scale(CD_R(1.0) / distance, offset);
 				normal = direction;
 				coreSeparation = distance;
 				id = VERTEX_FEATURE | (uint32_t)vertex;
