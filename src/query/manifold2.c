@@ -289,8 +289,8 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
 }
 
 /* CoreCenterContact by a scan that stops at the first edge the point is beyond the limit of, the
- * same contact bit for bit (the first edge of the largest separation, ties to the first, a NaN
- * centre to edge 0 at -CD_REAL_MAX). On the 2D world's mix of polygons of 3 to 8 edges, about half
+ * same contact bit for bit on finite input (the first edge of the largest separation, ties to the
+ * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8 edges, about half
  * of them apart, the scan's single exit branch mispredicts less than the tree's branches on the
  * count and on the first four edges (callgrind's branch simulator on collide_bench_scenes'
  * circle-polygon pairs: 1.5 mispredictions per pair against 2.6, 185 instructions against 216),
