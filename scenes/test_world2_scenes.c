@@ -163,6 +163,30 @@ static void TestTumblerSpinnerSmash(void)
 	world2SnapshotFree(&end);
 }
 
+/* The chains criterion: a link that falls from rest at its pivot's height to hanging straight
+ * down lost all of its potential drop if it ends at rest, none if it ends at the speed of the
+ * fall. */
+static void TestChainsCriterion(void)
+{
+	World2Snapshot start = {0}, end = {0};
+	World2Body pivot = {1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, WORLD2_STATIC};
+	World2Body link = {2, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.2, WORLD2_DYNAMIC};
+	TEST_CHECK(world2SnapshotAdd(&start, &pivot) && world2SnapshotAdd(&start, &link));
+	World2Body hanging = {2, 0.0, -0.5, -1.5707963, 0.0, 0.0, 0.0, 0.2, WORLD2_DYNAMIC};
+	TEST_CHECK(world2SnapshotAdd(&end, &pivot) && world2SnapshotAdd(&end, &hanging));
+	World2Quality q = world2CheckQuality(WORLD2_CHAINS, &start, &end, 10.0);
+	TEST_CHECK(q.computed && !q.pass);
+	TEST_CHECK_NEAR(q.value, 1.0, 1e-12);
+	world2SnapshotClear(&end);
+	hanging.vx = sqrt(10.0); /* v^2 / 2 = g h */
+	TEST_CHECK(world2SnapshotAdd(&end, &pivot) && world2SnapshotAdd(&end, &hanging));
+	q = world2CheckQuality(WORLD2_CHAINS, &start, &end, 10.0);
+	TEST_CHECK(q.computed && q.pass);
+	TEST_CHECK_NEAR(q.value, 0.0, 1e-12);
+	world2SnapshotFree(&start);
+	world2SnapshotFree(&end);
+}
+
 static void TestRampCriterion(void)
 {
 	/* The steep block slides g (sin 40 - 0.5 cos 40) t^2 / 2 along the ramp in t = 2 s. */
@@ -249,6 +273,11 @@ static void TestCollideSlingshot(void)
 	runCollideScene(WORLD2_SLINGSHOT);
 }
 
+static void TestCollideChains(void)
+{
+	runCollideScene(WORLD2_CHAINS);
+}
+
 static void TestBadSceneId(void)
 {
 	World2Scene scene;
@@ -263,6 +292,7 @@ int main(void)
 	TEST_RUN(TestJointGridCriterion);
 	TEST_RUN(TestTumblerSpinnerSmash);
 	TEST_RUN(TestRampCriterion);
+	TEST_RUN(TestChainsCriterion);
 #if defined(W2_HAVE_WORLD)
 	TEST_RUN(TestCollidePyramid20);
 	TEST_RUN(TestCollideCardHouse);
@@ -270,6 +300,7 @@ int main(void)
 	TEST_RUN(TestCollideBullets);
 	TEST_RUN(TestCollideSideScroller);
 	TEST_RUN(TestCollideSlingshot);
+	TEST_RUN(TestCollideChains);
 	TEST_RUN(TestBadSceneId);
 #endif
 	return TEST_SUMMARY();

@@ -16,6 +16,7 @@ static const World2SceneInfo world2Scenes[WORLD2_SCENE_COUNT] = {
 	{"tumbler", 750, 4, true, 0},		 {"card_house", 660, 4, false, 60},
 	{"ramp", 120, 4, false, 0},			 {"bullets", 120, 4, false, 0},
 	{"side_scroller", 900, 4, false, 0}, {"slingshot", 600, 4, false, 0},
+	{"chains", 600, 4, false, 0},
 };
 
 const World2SceneInfo* world2SceneInfo(World2SceneId id)
@@ -597,6 +598,71 @@ static World2Quality checkBullets(const World2Snapshot* end)
 	return q;
 }
 
+int world2ChainLinks(int chain)
+{
+	static const int links[WORLD2_CHAIN_COUNT] = {2, 3, 4, 5, 6, 7, 8, 10, 12};
+	return chain >= 0 && chain < WORLD2_CHAIN_COUNT ? links[chain] : 0;
+}
+
+/* A link's moment of inertia about its centre over its mass: the capsule as a rectangle 2r x L
+ * and two half discs, each half disc moved from its own centroid (4r / 3 pi from its flat side)
+ * to its place at L/2 beyond the centre. */
+static double chainLinkInertiaPerMass(void)
+{
+	const double pi = 3.14159265358979323846;
+	double L = WORLD2_CHAIN_LINK_LENGTH, r = WORLD2_CHAIN_LINK_RADIUS;
+	double rect = 2.0 * r * L, disc = pi * r * r;
+	double total = rect + disc;
+	double rectI = rect * (L * L + 4.0 * r * r) / 12.0;
+	double d = 4.0 * r / (3.0 * pi);
+	double halfDisc = 0.5 * disc;
+	double halfI = halfDisc * (0.5 * r * r - d * d + (0.5 * L + d) * (0.5 * L + d));
+	return (rectI + 2.0 * halfI) / total;
+}
+
+static double chainEnergy(const World2Body* b)
+{
+	double inertia = chainLinkInertiaPerMass() * b->mass;
+	return 0.5 * b->mass * (b->vx * b->vx + b->vy * b->vy) + 0.5 * inertia * b->w * b->w +
+		   10.0 * b->mass * b->y;
+}
+
+/* Energy lost between the snapshots over the potential the links give up hanging straight down
+ * (each link's initial distance from its chain's pivot is how far its centre can drop). */
+static World2Quality checkChains(const World2Snapshot* start, const World2Body* sortedEnd, int endCount)
+{
+	World2Quality q;
+	memset(&q, 0, sizeof(q));
+	q.computed = true;
+	q.limit = 0.4;
+	double before = 0.0, after = 0.0, drop = 0.0;
+	int links = 0, missing = 0;
+	for (int i = 0; i < start->count; ++i)
+	{
+		const World2Body* b = &start->bodies[i];
+		if (b->type != WORLD2_DYNAMIC)
+		{
+			continue;
+		}
+		const World2Body* e = findKey(sortedEnd, endCount, b->key);
+		if (e == NULL)
+		{
+			++missing;
+			continue;
+		}
+		double pivot = WORLD2_CHAIN_SPACING * floor(b->x / WORLD2_CHAIN_SPACING);
+		before += chainEnergy(b);
+		after += chainEnergy(e);
+		drop += 10.0 * b->mass * (b->x - pivot);
+		++links;
+	}
+	q.value = drop > 0.0 ? (before - after) / drop : 1.0;
+	q.pass = links > 0 && missing == 0 && fabs(q.value) < q.limit;
+	snprintf(q.text, sizeof(q.text), "%d chains of %d links: %.1f%% of the potential drop lost over the run",
+			 WORLD2_CHAIN_COUNT, links, 100.0 * q.value);
+	return q;
+}
+
 World2Quality world2CheckQuality(World2SceneId id, const World2Snapshot* start, const World2Snapshot* end,
 								 double time)
 {
@@ -649,6 +715,9 @@ World2Quality world2CheckQuality(World2SceneId id, const World2Snapshot* start, 
 			break;
 		case WORLD2_BULLETS:
 			q = checkBullets(end);
+			break;
+		case WORLD2_CHAINS:
+			q = checkChains(start, sortedEnd, end->count);
 			break;
 		default:
 			break; /* side_scroller, slingshot: scenes/world2_scenes.c */

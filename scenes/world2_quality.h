@@ -19,7 +19,9 @@
  *   ramp: the block on the gentle ramp (below atan(friction)) moved less than 1 cm and the block
  *     on the steep ramp slid at g (sin a - friction cos a) within 2%;
  *   bullets: no bullet is beyond the thin wall;
- *   side_scroller and slingshot: judged by scenes/world2_scenes.c (they need the scene's events).
+ *   side_scroller and slingshot: judged by scenes/world2_scenes.c (they need the scene's events);
+ *   chains: the energy lost over 10 s, as a share of the chains' potential drop (the sum over nine
+ *     chains of 2 to 12 links: a single chain's motion is chaotic, so one chain says little).
  *
  * Every criterion also fails on a non-finite position or velocity. Plain C, usable from C++. */
 #ifndef COLLIDE_SCENES_WORLD2_QUALITY_H
@@ -48,6 +50,7 @@ typedef enum World2SceneId
 	WORLD2_BULLETS,
 	WORLD2_SIDE_SCROLLER,
 	WORLD2_SLINGSHOT,
+	WORLD2_CHAINS,
 	WORLD2_SCENE_COUNT
 } World2SceneId;
 
@@ -72,6 +75,18 @@ World2SceneId world2SceneFind(const char* name);
 #define WORLD2_RAMP_FRICTION 0.5
 #define WORLD2_RAMP_GENTLE_DEGREES 20.0
 #define WORLD2_RAMP_STEEP_DEGREES 40.0
+/* The chains scene: WORLD2_CHAIN_COUNT pendulum chains of capsule links (segment
+ * WORLD2_CHAIN_LINK_LENGTH long, radius WORLD2_CHAIN_LINK_RADIUS, density 1), each hanging by a
+ * revolute joint from a static pivot at (WORLD2_CHAIN_SPACING * k, 0) and released at rest lying
+ * along +x; neighbouring links are jointed end to end and never collide with each other, and the
+ * chains are too far apart to touch. Joints at the engine's defaults, sleep off. */
+#define WORLD2_CHAIN_COUNT 9
+#define WORLD2_CHAIN_LINK_LENGTH 1.0
+#define WORLD2_CHAIN_LINK_RADIUS 0.1
+#define WORLD2_CHAIN_SPACING 20.0
+/* The links of chain k. */
+int world2ChainLinks(int chain);
+
 /* The bullets scene: the wall is 0.1 m thick, centred on x = 0; its far face is at this x. */
 #define WORLD2_BULLET_WALL_X 0.05
 

@@ -760,6 +760,37 @@ static void countPickups(World2Scene* scene)
 	}
 }
 
+/* Pendulum chains released from horizontal (world2_quality.h): the energy the solver keeps. */
+static void createChains(World2Scene* scene)
+{
+	cd2World_EnableSleeping(scene->world, false);
+	cdReal length = (cdReal)WORLD2_CHAIN_LINK_LENGTH;
+	cd2Capsule capsule = {
+		{CD_R(-0.5) * length, 0}, {CD_R(0.5) * length, 0}, (cdReal)WORLD2_CHAIN_LINK_RADIUS};
+	cd2ShapeDef shape = cd2DefaultShapeDef();
+	shape.density = CD_R(1.0);
+	shape.filter.groupIndex = -1; /* the links never collide */
+	for (int k = 0; k < WORLD2_CHAIN_COUNT; ++k)
+	{
+		cdReal x0 = (cdReal)(WORLD2_CHAIN_SPACING * (double)k);
+		cd2BodyId previous = addStatic(scene, vec(x0, 0));
+		for (int i = 0; i < world2ChainLinks(k); ++i)
+		{
+			cd2BodyDef def = cd2DefaultBodyDef();
+			def.type = CD_DYNAMIC_BODY;
+			def.position = vec(x0 + length * ((cdReal)i + CD_R(0.5)), 0);
+			cd2BodyId link = addBody(scene, &def);
+			cd2CreateCapsuleShape(link, &shape, &capsule);
+			cd2RevoluteJointDef joint = cd2DefaultRevoluteJointDef();
+			joint.bodyIdA = previous;
+			joint.bodyIdB = link;
+			joint.localAnchorA = i == 0 ? vec(0, 0) : vec(CD_R(0.5) * length, 0);
+			joint.localAnchorB = vec(CD_R(-0.5) * length, 0);
+			cd2CreateRevoluteJoint(scene->world, &joint);
+			previous = link;
+		}
+	}
+}
 /* slingshot: a 0.3 m disc of density 5 shot at (30, 8) m/s from (0, 1) into two towers of pillars
  * and planks (x 20 and 24) and a rope bridge of 8 planks between two posts (x 30 to 34), on a
  * ground 410 m long (the light blocks fly far). */
@@ -904,6 +935,9 @@ bool world2SceneCreate(World2Scene* scene, World2SceneId id, int workerCount)
 			break;
 		case WORLD2_SLINGSHOT:
 			createSlingshot(scene);
+			break;
+		case WORLD2_CHAINS:
+			createChains(scene);
 			break;
 		default:
 			break;

@@ -2,6 +2,7 @@
 #include "collide/base.h"
 #include "test.h"
 
+#include <math.h>
 #include <string.h>
 
 static void TestResultStrings(void)
@@ -71,6 +72,34 @@ static bool CountingAssert(const char* condition, const char* fileName, int line
 	return false;
 }
 
+/* cdAtan2 against the double atan2 on angles all around the circle and radii from 1e-30 to 1e30
+ * (every octant and both folds), within the documented 3e-7 rad; exact quadrant angles and the
+ * signed zeros as atan2 gives them. */
+static void TestAtan2(void)
+{
+	TestRng rng = TestRngMake(7);
+	double worst = 0.0;
+	for (int i = 0; i < 200000; ++i)
+	{
+		double angle = TestRngRange(&rng, -3.14159265358979, 3.14159265358979);
+		double radius = pow(10.0, TestRngRange(&rng, -30.0, 30.0));
+		cdReal y = (cdReal)(radius * sin(angle)), x = (cdReal)(radius * cos(angle));
+		double error = fabs((double)cdAtan2(y, x) - atan2((double)y, (double)x));
+		error = error > 3.14159 ? fabs(error - 6.283185307179586) : error; /* +-pi */
+		worst = error > worst ? error : worst;
+	}
+	TEST_CHECKF(worst < 3e-7, "cdAtan2 off by %g rad", worst);
+	TEST_CHECK(cdAtan2(CD_R(0.0), CD_R(1.0)) == CD_R(0.0) && !signbit(cdAtan2(CD_R(0.0), CD_R(1.0))));
+	TEST_CHECK(signbit(cdAtan2(-CD_R(0.0), CD_R(1.0))));
+	TEST_CHECK_NEAR(cdAtan2(CD_R(1.0), CD_R(0.0)), 1.5707963267948966, 2e-7);
+	TEST_CHECK_NEAR(cdAtan2(CD_R(0.0), -CD_R(1.0)), 3.141592653589793, 3e-7);
+	TEST_CHECK_NEAR(cdAtan2(-CD_R(0.0), -CD_R(1.0)), -3.141592653589793, 3e-7);
+	TEST_CHECK_NEAR(cdAtan2(-CD_R(1.0), -CD_R(1.0)), -2.356194490192345, 3e-7);
+	TEST_CHECK(cdAtan2(CD_R(0.0), CD_R(0.0)) == CD_R(0.0));
+	TEST_CHECK(isnan(cdAtan2(NAN, CD_R(1.0))) && isnan(cdAtan2(CD_R(1.0), NAN)));
+	TEST_CHECK_NEAR(cdAtan2(INFINITY, INFINITY), 0.7853981633974483, 1e-7);
+}
+
 static void TestAssertHookAndUnits(void)
 {
 	cdSetAssertFcn(CountingAssert);
@@ -96,5 +125,6 @@ int main(void)
 	TEST_RUN(TestVersionAndReal);
 	TEST_RUN(TestAllocator);
 	TEST_RUN(TestAssertHookAndUnits);
+	TEST_RUN(TestAtan2);
 	return TEST_SUMMARY();
 }

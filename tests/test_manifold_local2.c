@@ -306,10 +306,96 @@ static void TestFarFromOrigin(void)
 	TEST_CHECK(worstLocal <= worstWorld || worstWorld <= 16.0 * (double)CD_REAL_EPSILON * 3.0);
 }
 
+/* cd2CollideCirclePolygonLocal has its own scan of the polygon's edges (it stops at the first edge
+ * the circle is beyond): its manifold must be, bit for bit, the world form's on the circle's centre
+ * placed in the polygon's frame as the local form places it, mapped back by xfB. Centres aimed at
+ * every feature: near and exactly on vertices, on edges, inside (ties between equal edges
+ * included, with the identity transform so that the centre lands exactly), and far away. */
+static void TestCirclePolygonScan(void)
+{
+	TestRng rng = TestRngMake(0x5ca7c1u);
+	int contacts = 0, vertexContacts = 0, empty = 0, ties = 0;
+	for (int trial = 0; trial < 40000; ++trial)
+	{
+		cd2Polygon polygon;
+		if (trial % 16 == 0)
+		{
+			/* A square around the origin: a centre at the origin is equally far inside all edges. */
+			cdReal h = RandomReal(&rng, 0.1, 2.0);
+			cd2Vec corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+			TEST_CHECK(cd2MakePolygon(corners, 4, &polygon) == CD_OK);
+		}
+		else
+		{
+			polygon = RandomPolygon(&rng, RandomVec(&rng, 0.3));
+			polygon.radius = TestRngInt(&rng, 3) == 0 ? RandomReal(&rng, 0.0, 0.2) : CD_R(0.0);
+		}
+		bool identity = TestRngInt(&rng, 4) == 0;
+		cd2Transform xf = identity ? CD2_TRANSFORM_IDENTITY : RandomTransform(&rng, 10.0);
+		/* The centre's target in the polygon's frame. */
+		int v = TestRngInt(&rng, polygon.count);
+		cd2Vec vertex = polygon.vertices[v], after = polygon.vertices[(v + 1) % polygon.count];
+		cd2Vec target;
+		switch (trial % 8)
+		{
+			case 0:
+				target = vertex;
+				break;
+			case 1:
+				target = cd2Add(vertex, RandomVec(&rng, 0.3));
+				break;
+			case 2:
+				target = cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0));
+				break;
+			case 3:
+				target = cd2MulAdd(cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0)), RandomReal(&rng, -0.3, 0.6),
+								   polygon.normals[v]);
+				break;
+			case 4:
+				target = trial % 16 == 4 ? CD2_VEC_ZERO : polygon.centroid;
+				ties += trial % 16 == 4 && identity;
+				break;
+			case 5:
+				target = RandomVec(&rng, 5.0);
+				break;
+			default:
+				target = RandomVec(&rng, 1.5);
+				break;
+		}
+		cd2Circle circle;
+		circle.center = cd2TransformPoint(xf, target);
+		circle.radius = RandomSize(&rng, 0.8);
+		cdReal speculative = (cdReal)(0.1 * TestRngInt(&rng, 3));
+		cd2Manifold local = cd2CollideCirclePolygonLocal(circle, &polygon, xf, speculative);
+
+		cd2Rot inverseQ = {xf.q.c, -xf.q.s};
+		cd2Circle placed = circle;
+		placed.center = cd2Add(cd2RotateVector(inverseQ, circle.center), cd2Neg(cd2InvRotateVector(xf.q, xf.p)));
+		cd2Manifold world = cd2CollideCirclePolygon(placed, &polygon, speculative);
+		cd2Manifold expected = world;
+		if (world.pointCount == 1)
+		{
+			expected.normal = cd2RotateVector(xf.q, world.normal);
+			expected.points[0].point = cd2TransformPoint(xf, world.points[0].point);
+		}
+		TEST_CHECKF(SameBits(local, expected), "trial %d: count %d/%d id %u/%u sep %.9g/%.9g", trial, local.pointCount,
+					expected.pointCount, local.points[0].id, expected.points[0].id, (double)local.points[0].separation,
+					(double)expected.points[0].separation);
+		contacts += local.pointCount;
+		vertexContacts += local.pointCount == 1 && (local.points[0].id & 0x100u) != 0u;
+		empty += local.pointCount == 0;
+	}
+	printf("circle-polygon scan: %d contacts (%d at vertices), %d empty, %d tie cases\n", contacts, vertexContacts,
+		   empty, ties);
+	/* Every kind of answer was met. */
+	TEST_CHECK(contacts > 5000 && vertexContacts > 1000 && empty > 5000 && ties > 100);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSameAsWorldForm);
 	TEST_RUN(TestMovedBodies);
 	TEST_RUN(TestFarFromOrigin);
+	TEST_RUN(TestCirclePolygonScan);
 	return TEST_SUMMARY();
 }

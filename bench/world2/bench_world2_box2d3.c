@@ -11,7 +11,7 @@
 
 static bool box2d3Supports(World2SceneId scene)
 {
-	return scene <= WORLD2_TUMBLER;
+	return scene <= WORLD2_TUMBLER || scene == WORLD2_CHAINS;
 }
 
 /* large_pyramid's layout with another base: unit boxes touching, on a 200 m x 2 m ground box. */
@@ -40,6 +40,39 @@ static void createPyramid(b2WorldId worldId, int baseCount)
 			bodyDef.position = (b2Pos){x, y};
 			b2BodyId bodyId = b2CreateBody(worldId, &bodyDef);
 			b2CreatePolygonShape(bodyId, &shapeDef, &box);
+		}
+	}
+}
+
+/* The chains scene (scenes/world2_quality.h), joints at Box2D v3's defaults. */
+static void createChains(b2WorldId worldId)
+{
+	b2World_EnableSleeping(worldId, false);
+	float length = (float)WORLD2_CHAIN_LINK_LENGTH;
+	b2Capsule capsule = {{-0.5f * length, 0.0f}, {0.5f * length, 0.0f}, (float)WORLD2_CHAIN_LINK_RADIUS};
+	b2ShapeDef shapeDef = b2DefaultShapeDef();
+	shapeDef.density = 1.0f;
+	shapeDef.filter.groupIndex = -1;
+	for (int k = 0; k < WORLD2_CHAIN_COUNT; ++k)
+	{
+		float x0 = (float)(WORLD2_CHAIN_SPACING * (double)k);
+		b2BodyDef pivotDef = b2DefaultBodyDef();
+		pivotDef.position = (b2Pos){x0, 0.0f};
+		b2BodyId previous = b2CreateBody(worldId, &pivotDef);
+		for (int i = 0; i < world2ChainLinks(k); ++i)
+		{
+			b2BodyDef bodyDef = b2DefaultBodyDef();
+			bodyDef.type = b2_dynamicBody;
+			bodyDef.position = (b2Pos){x0 + length * ((float)i + 0.5f), 0.0f};
+			b2BodyId link = b2CreateBody(worldId, &bodyDef);
+			b2CreateCapsuleShape(link, &shapeDef, &capsule);
+			b2RevoluteJointDef jointDef = b2DefaultRevoluteJointDef();
+			jointDef.base.bodyIdA = previous;
+			jointDef.base.bodyIdB = link;
+			jointDef.base.localFrameA.p = i == 0 ? (b2Vec2){0.0f, 0.0f} : (b2Vec2){0.5f * length, 0.0f};
+			jointDef.base.localFrameB.p = (b2Vec2){-0.5f * length, 0.0f};
+			b2CreateRevoluteJoint(worldId, &jointDef);
+			previous = link;
 		}
 	}
 }
@@ -82,6 +115,9 @@ static void* box2d3Create(World2SceneId scene, int workerCount)
 			break;
 		case WORLD2_TUMBLER:
 			CreateTumbler(id);
+			break;
+		case WORLD2_CHAINS:
+			createChains(id);
 			break;
 		default:
 			b2DestroyWorld(id);

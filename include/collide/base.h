@@ -156,6 +156,47 @@ static inline cdReal cdSqrt(cdReal a)
 #endif
 }
 
+/* atan2(y, x) in (-pi, pi]. The float build computes it itself (an odd polynomial on |t| <= tan(pi/8)
+ * after folding the octants; within 3e-7 of the true angle, as atan2f) so that the 2D world's
+ * joint angles are the same bits on every platform, wasm included, and cost a few multiplies
+ * instead of a libm call. The double build calls atan2. */
+static inline cdReal cdAtan2(cdReal y, cdReal x)
+{
+#if CD_DOUBLE
+	return atan2(y, x);
+#else
+	float ax = fabsf(x), ay = fabsf(y);
+	float big = ax > ay ? ax : ay, small = ax > ay ? ay : ax;
+	if (!(big > 0.0f))
+	{
+		return big == 0.0f ? (signbit(x) ? (signbit(y) ? -3.14159265f : 3.14159265f) : y) : x + y;
+	}
+	/* t = tan(angle - base), |t| <= tan(pi/8). */
+	float base = 0.0f, t;
+	if (small >= 0.414213562f * big)
+	{
+		base = 0.785398163f;
+		t = small == big ? 0.0f : (small - big) / (small + big); /* equal: also both infinite */
+	}
+	else
+	{
+		t = small / big;
+	}
+	float u = t * t;
+	float r = base + t * (0.999999982f +
+						  u * (-0.333327969f + u * (0.199744048f + u * (-0.138514789f + u * 0.0798496421f))));
+	if (ay > ax)
+	{
+		r = 1.57079633f - r;
+	}
+	if (x < 0.0f)
+	{
+		r = 3.14159265f - r;
+	}
+	return signbit(y) ? -r : r;
+#endif
+}
+
 static inline cdReal cdAbs(cdReal a)
 {
 	return a < CD_R(0.0) ? -a : a;

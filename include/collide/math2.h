@@ -204,11 +204,7 @@ static inline cd2Rot cd2MakeRot(cdReal radians)
 
 static inline cdReal cd2RotGetAngle(cd2Rot q)
 {
-#if CD_DOUBLE
-	return atan2(q.s, q.c);
-#else
-	return atan2f(q.s, q.c);
-#endif
+	return cdAtan2(q.s, q.c);
 }
 
 /* Unit length within a relative tolerance of 1e-4 (float) or 1e-9 (double), and finite. */

@@ -4,8 +4,6 @@
 
 #include "../base/radix_sort.h"
 
-#include <stdlib.h>
-
 /* ---- the narrowphase in local frames ------------------------------------------------------------
  * The one place that computes a pair's manifold: both shapes stay in their body frames (no copy of
  * the stored geometry) and only B's transform in A's frame is passed, so the result is in A's frame
@@ -196,7 +194,7 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	(void)proxyA;
 	(void)proxyB;
 	cd2PairCollector* collector = (cd2PairCollector*)context;
-	uint64_t key = cdPairKey((int)userDataA, (int)userDataB);
+	uint64_t key = cdPairKey(cd2ProxyShape(userDataA), cd2ProxyShape(userDataB));
 	/* Most overlaps of moved boxes already have their contact: drop them before the sort. */
 	if (cdPairSet_Find(collector->existing, key) >= 0)
 	{
@@ -206,12 +204,6 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	{
 		/* dropped: the pair comes back when one of the boxes moves again */
 	}
-}
-
-static int cd2ComparePairKeys(const void* a, const void* b)
-{
-	uint64_t x = *(const uint64_t*)a, y = *(const uint64_t*)b;
-	return x < y ? -1 : (x > y ? 1 : 0);
 }
 
 static bool cd2ShouldCreateContact(cd2World* world, int indexA, int indexB)
@@ -336,23 +328,22 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	cd2BroadPhase_UpdatePairs(world->broadPhase, cd2CollectPair, &collector);
 	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
 	 * history, shape indices are part of the saved state. */
-	const uint64_t* sorted = collector.pairs.data;
+	uint64_t* sorted = collector.pairs.data;
+	uint64_t* scratch = NULL;
 	if (collector.pairs.count > 1)
 	{
-		/* A radix sort (this runs on the calling thread, and a pile that is moving reports
-		 * thousands of new pairs a step); the comparison sort when scratch memory runs out. The
-		 * keys are plain integers, so both give the same order. */
-		uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)collector.pairs.count *
-																				 sizeof(uint64_t));
-		if (scratch != NULL)
+		scratch = (uint64_t*)cdAlloc((size_t)collector.pairs.count * sizeof(uint64_t));
+		if (scratch == NULL)
 		{
-			sorted = cdRadixSortKeys(collector.pairs.data, scratch, collector.pairs.count);
+			/* dropped: the pairs come back when their boxes move again */
+			world->outOfMemory = true;
+			cdArrayFree(collector.pairs);
+			return;
 		}
-		else
-		{
-			qsort(collector.pairs.data, (size_t)collector.pairs.count, sizeof(uint64_t), cd2ComparePairKeys);
-		}
+		sorted = cdRadixSortKeys(collector.pairs.data, scratch, collector.pairs.count);
 	}
+	/* Each key once (a pair can be reported twice); pairs with a contact were dropped by the
+	 * collector, and the ones created here are new and distinct. */
 	for (int i = 0; i < collector.pairs.count; ++i)
 	{
 		uint64_t key = sorted[i];
@@ -362,11 +353,15 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		}
 		int indexA = (int)(uint32_t)key, indexB = (int)(uint32_t)(key >> 32);
 		if (!world->shapes.data[indexA].inUse || !world->shapes.data[indexB].inUse ||
-			cdPairSet_Find(&world->pairs, key) >= 0 || !cd2ShouldCreateContact(world, indexA, indexB))
+			!cd2ShouldCreateContact(world, indexA, indexB))
 		{
 			continue;
 		}
 		cd2CreateContact(world, indexA, indexB);
+	}
+	if (scratch != NULL)
+	{
+		cdFree(scratch);
 	}
 	cdArrayFree(collector.pairs);
 }

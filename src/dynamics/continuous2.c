@@ -32,6 +32,7 @@ typedef struct cd2ContinuousContext
 	cd2World* world;
 	int bodyIndex;
 	int shapeIndex;
+	bool isBullet;
 	cd2Sweep sweep;
 	cdReal fraction;
 } cd2ContinuousContext;
@@ -40,8 +41,13 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	cd2ContinuousContext* c = (cd2ContinuousContext*)context;
+	/* Only bullets sweep against moving bodies: the others skip them unread. */
+	if ((userData & CD2_PROXY_STATIC) == 0 && !c->isBullet)
+	{
+		return true;
+	}
 	cd2World* world = c->world;
-	int otherIndex = (int)userData;
+	int otherIndex = cd2ProxyShape(userData);
 	const cd2WorldShape* shape = world->shapes.data + c->shapeIndex;
 	const cd2WorldShape* other = world->shapes.data + otherIndex;
 	const cd2Body* body = world->bodies.data + c->bodyIndex;
@@ -107,6 +113,7 @@ void cd2SolveContinuous(cd2World* world, int bodyIndex)
 	cd2ContinuousContext c;
 	c.world = world;
 	c.bodyIndex = bodyIndex;
+	c.isBullet = body->isBullet;
 	c.fraction = CD_R(1.0);
 	cdReal angle0 = cd2RotGetAngle(body->rotation0);
 	c.sweep.localCenter = body->localCenter;

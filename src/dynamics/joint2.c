@@ -854,17 +854,42 @@ cdReal cd2Joint_GetTranslation(cd2JointId jointId)
 static cd2SolverBody s_jointStaticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
 										  {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
 
-static void cd2MakeArgs(cd2World* world, cd2StepContext* context, int jointIndex, cd2JointSolverArgs* args,
+/* The solver's view of joint `slot` of the step (context->joints[slot]); an immovable body is a
+ * zero-mass copy in the caller's scratch. */
+static void cd2MakeArgs(cd2World* world, cd2StepContext* context, int slot, cd2JointSolverArgs* args,
 						cd2SolverBody* scratchA, cd2SolverBody* scratchB)
 {
-	cd2Joint* joint = world->joints.data + jointIndex;
-	int ia = world->bodies.data[joint->bodyA].solverIndex;
-	int ib = world->bodies.data[joint->bodyB].solverIndex;
-	*scratchA = s_jointStaticBody;
-	*scratchB = s_jointStaticBody;
+	cd2Joint* joint = world->joints.data + context->joints[slot];
+	int ia, ib;
+	if (context->jointSolverBodies != NULL)
+	{
+		ia = context->jointSolverBodies[2 * slot];
+		ib = context->jointSolverBodies[2 * slot + 1];
+	}
+	else
+	{
+		ia = world->bodies.data[joint->bodyA].solverIndex;
+		ib = world->bodies.data[joint->bodyB].solverIndex;
+	}
 	args->joint = joint;
-	args->a = ia >= 0 ? context->bodies + ia : scratchA;
-	args->b = ib >= 0 ? context->bodies + ib : scratchB;
+	if (ia >= 0)
+	{
+		args->a = context->bodies + ia;
+	}
+	else
+	{
+		*scratchA = s_jointStaticBody;
+		args->a = scratchA;
+	}
+	if (ib >= 0)
+	{
+		args->b = context->bodies + ib;
+	}
+	else
+	{
+		*scratchB = s_jointStaticBody;
+		args->b = scratchB;
+	}
 	args->context = context;
 }
 
@@ -884,12 +909,20 @@ static cdReal cd2UnwindAngle(cdReal angle)
 void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
+	/* Out of scratch memory: cd2MakeArgs reads the bodies instead. */
+	context->jointSolverBodies =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)(2 * context->jointCount) * sizeof(int));
 	for (int i = 0; i < context->jointCount; ++i)
 	{
 		int index = context->joints[i];
 		cd2Joint* joint = world->joints.data + index;
 		const cd2Body* a = world->bodies.data + joint->bodyA;
 		const cd2Body* b = world->bodies.data + joint->bodyB;
+		if (context->jointSolverBodies != NULL)
+		{
+			context->jointSolverBodies[2 * i] = a->solverIndex;
+			context->jointSolverBodies[2 * i + 1] = b->solverIndex;
+		}
 		cd2JointData* d = &joint->data;
 		if (joint->type == CD2_MOTOR_JOINT)
 		{
@@ -911,7 +944,7 @@ void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 			d->deltaCenter = cd2Sub(b->center, d->target);
 		}
 		cd2JointSolverArgs args;
-		cd2MakeArgs(world, context, index, &args, &scratchA, &scratchB);
+		cd2MakeArgs(world, context, i, &args, &scratchA, &scratchB);
 		switch (joint->type)
 		{
 			case CD2_DISTANCE_JOINT:
@@ -1003,7 +1036,7 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int
 	for (int i = start; i < end; ++i)
 	{
 		cd2JointSolverArgs args;
-		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
+		cd2MakeArgs(world, context, i, &args, &scratchA, &scratchB);
 		cd2Vec vA = args.a->linearVelocity, vB = args.b->linearVelocity;
 		cdReal wA = args.a->angularVelocity, wB = args.b->angularVelocity;
 		for (int pass = 0; pass < 2; ++pass)
@@ -1037,7 +1070,7 @@ void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end
 	for (int i = start; i < end; ++i)
 	{
 		cd2JointSolverArgs args;
-		cd2MakeArgs(world, context, context->joints[i], &args, &scratchA, &scratchB);
+		cd2MakeArgs(world, context, i, &args, &scratchA, &scratchB);
 		switch (args.joint->type)
 		{
 			case CD2_DISTANCE_JOINT:

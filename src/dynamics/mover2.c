@@ -23,7 +23,7 @@ static bool cd2CollideMoverCallback(int proxyId, uint64_t userData, void* contex
 {
 	(void)proxyId;
 	cd2MoverContext* c = (cd2MoverContext*)context;
-	int index = (int)userData;
+	int index = cd2ProxyShape(userData);
 	const cd2WorldShape* shape = c->world->shapes.data + index;
 	if (!cd2MoverAccepts(shape, c->filter))
 	{
@@ -79,7 +79,7 @@ static bool cd2CastMoverCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	cd2MoverContext* c = (cd2MoverContext*)context;
-	int index = (int)userData;
+	int index = cd2ProxyShape(userData);
 	const cd2WorldShape* shape = c->world->shapes.data + index;
 	if (!cd2MoverAccepts(shape, c->filter))
 	{

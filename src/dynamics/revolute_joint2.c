@@ -28,7 +28,10 @@ void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias)
 	cdReal h = context->h;
 	cdReal iA = a->invInertia, iB = b->invInertia;
 	bool fixedRotation = iA + iB == CD_R(0.0);
-	cdReal jointAngle = d->deltaAngle + cd2RelativeAngle(a->deltaRotation, b->deltaRotation);
+	/* Only the spring and the limits need the angle. */
+	cdReal jointAngle = (d->enableSpring || d->enableLimit) && !fixedRotation
+							? d->deltaAngle + cd2RelativeAngle(a->deltaRotation, b->deltaRotation)
+							: CD_R(0.0);
 
 	if (d->enableSpring && !fixedRotation)
 	{

@@ -209,7 +209,9 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 	if (shape->proxyId == CD_NULL_PROXY)
 	{
 		shape->fatAabb = cd2AabbInflate(aabb, margin);
-		shape->proxyId = cd2BroadPhase_CreateProxy(world->broadPhase, shape->fatAabb, (uint64_t)shapeIndex);
+		shape->proxyId = cd2BroadPhase_CreateProxy(
+			world->broadPhase, shape->fatAabb,
+			cd2ProxyUserData(shapeIndex, world->bodies.data[shape->body].type == CD_STATIC_BODY));
 		if (shape->proxyId == CD_NULL_PROXY)
 		{
 			world->outOfMemory = true;

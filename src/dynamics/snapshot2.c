@@ -324,7 +324,8 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		{
 			continue;
 		}
-		shape->proxyId = cd2BroadPhase_CreateProxy(bp, shape->fatAabb, (uint64_t)i);
+		shape->proxyId = cd2BroadPhase_CreateProxy(
+			bp, shape->fatAabb, cd2ProxyUserData(i, s.bodies.data[shape->body].type == CD_STATIC_BODY));
 		memoryOk = shape->proxyId != CD_NULL_PROXY;
 	}
 	for (int i = 0; i < s.contacts.count && memoryOk; ++i)

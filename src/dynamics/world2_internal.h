@@ -293,6 +293,9 @@ typedef struct cd2StepContext
 	 * g is joints [jointGroupStart[g], jointGroupStart[g + 1]). One group with one worker. */
 	int* jointGroupStart;
 	int jointGroupCount;
+	/* Two per joint of `joints`, set by cd2PrepareJoints: the solver indices of its bodies (negative
+	 * for an immovable one), so that the sub-steps never read the body records. */
+	int* jointSolverBodies;
 	bool enableWarmStarting;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
@@ -391,6 +394,21 @@ cd2Shape cd2MakeTaggedShape(const cd2WorldShape* shape, cd2Transform xf);
 cd2Aabb cd2ComputeWorldShapeAabb(const cd2WorldShape* shape, cd2Transform xf);
 bool cd2ShouldShapesCollide(cd2Filter a, cd2Filter b);
 void cd2DestroyShapeInternal(cd2World* world, int shapeIndex, bool wakeBodies);
+/* A broadphase proxy's user data: the shape index, plus CD2_PROXY_STATIC for a shape of a static
+ * body (set when the proxy is made; a body that changes type remakes its proxies), so that
+ * continuous collision passes over moving shapes without reading their records. */
+#define CD2_PROXY_STATIC ((uint64_t)1 << 32)
+
+static inline uint64_t cd2ProxyUserData(int shapeIndex, bool isStatic)
+{
+	return (uint64_t)(uint32_t)shapeIndex | (isStatic ? CD2_PROXY_STATIC : 0u);
+}
+
+static inline int cd2ProxyShape(uint64_t userData)
+{
+	return (int)(uint32_t)userData;
+}
+
 /* Brings the broadphase box up to date after a move; teleport: the body jumped. */
 void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 /* cd2UpdateShapeBounds in two halves, so that the step can compute the boxes on the workers and

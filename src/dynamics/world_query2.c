@@ -29,7 +29,7 @@ static bool cd2OverlapCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	cd2OverlapContext* c = (cd2OverlapContext*)context;
-	int index = (int)userData;
+	int index = cd2ProxyShape(userData);
 	const cd2WorldShape* shape = c->world->shapes.data + index;
 	if (!cd2QueryAccepts(shape, c->filter))
 	{
@@ -102,7 +102,7 @@ static cdReal cd2RayCallback(cd2Ray ray, cdReal maxFraction, int proxyId, uint64
 {
 	(void)proxyId;
 	cd2RayContext* c = (cd2RayContext*)context;
-	int index = (int)userData;
+	int index = cd2ProxyShape(userData);
 	const cd2WorldShape* shape = c->world->shapes.data + index;
 	if (shape->isSensor || !cd2QueryAccepts(shape, c->filter))
 	{
@@ -182,7 +182,7 @@ static bool cd2ShapeCastCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	cd2ShapeCastContext* c = (cd2ShapeCastContext*)context;
-	int index = (int)userData;
+	int index = cd2ProxyShape(userData);
 	const cd2WorldShape* shape = c->world->shapes.data + index;
 	if (shape->isSensor || !cd2QueryAccepts(shape, c->filter))
 	{

@@ -174,6 +174,68 @@ typedef struct CenterContact
 	bool hit;
 } CenterContact;
 
+/* The contact of the point `center` grown by pointRadius with the core k, given the first edge of
+ * the largest separation of the point from k's edge lines and that separation; polygon: k is
+ * known to be a polygon core (not a segment). */
+static inline CenterContact CenterContactOnEdge(const Core* k, cd2Vec center, cdReal pointRadius,
+											   cdReal speculativeDistance, int edge, cdReal edgeSeparation,
+											   bool polygon)
+{
+	CenterContact contact = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u, false};
+	cdReal total = k->radius + pointRadius;
+	cdReal limit = total + speculativeDistance;
+	/* No contact when the largest separation is beyond the limit (the scans that stop at the
+	 * first edge beyond it return the same). */
+	if (edgeSeparation > limit)
+	{
+		return contact;
+	}
+	int next = edge + 1 < k->count ? edge + 1 : 0;
+	cd2Vec v1 = k->vertices[edge];
+	cd2Vec v2 = k->vertices[next];
+	cd2Vec normal = k->normals[edge];
+	cdReal coreSeparation = edgeSeparation;
+	uint32_t id = (uint32_t)edge;
+	/* Inside a polygon core the face is the answer; a segment core has no inside. Outside, the
+	 * point is in the region of v1 or v2 when it projects beyond that end of the edge. Measured
+	 * along the normal's own tangent, not the edge v2 - v1: the face point is the centre moved
+	 * along the normal, and at large coordinates the rounded vertices of a small polygon can make
+	 * an edge that is not square to its normal (a box of size 2 at x = 1e9 in float is a
+	 * vertical segment whatever its rotation), which put points far off to the side in the face
+	 * region. */
+	if (edgeSeparation > CD_R(0.0) || (!polygon && k->count == 2))
+	{
+		cd2Vec tangent = cd2LeftPerp(normal);
+		cdReal along = cd2Dot(tangent, cd2Sub(center, v1));
+		int vertex = along <= CD_R(0.0) ? edge : along >= cd2Dot(tangent, cd2Sub(v2, v1)) ? next : -1;
+		if (vertex >= 0)
+		{
+			/* cd2GetLengthAndNormalize inline: a length it accepts (at least CD_REAL_EPSILON^2 and
+			 * finite) gives a direction whose larger component is at least 0.7, never zero. */
+			cd2Vec offset = cd2Sub(center, k->vertices[vertex]);
+			cdReal distance = cd2Length(offset);
+			if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
+			{
+				cd2Vec direction = cd2Scale(CD_R(1.0) / distance, offset);
+				normal = direction;
+				coreSeparation = distance;
+				id = VERTEX_FEATURE | (uint32_t)vertex;
+			}
+		}
+	}
+	cdReal separation = coreSeparation - total;
+	if (separation > speculativeDistance)
+	{
+		return contact;
+	}
+	contact.normal = normal;
+	contact.point = cd2MulAdd(center, CD_R(0.5) * (k->radius - pointRadius - coreSeparation), normal);
+	contact.separation = separation;
+	contact.id = id;
+	contact.hit = true;
+	return contact;
+}
+
 static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
 											  cdReal speculativeDistance)
 {
@@ -223,53 +285,36 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
 		edge = 0;
 		edgeSeparation = -CD_REAL_MAX;
 	}
-	/* The scan returned at the first edge beyond the limit: there is one exactly when the
-	 * maximum is beyond it. */
-	if (edgeSeparation > limit)
+	return CenterContactOnEdge(k, center, pointRadius, speculativeDistance, edge, edgeSeparation, false);
+}
+
+/* CoreCenterContact by a scan that stops at the first edge the point is beyond the limit of, the
+ * same contact bit for bit on finite input (the first edge of the largest separation, ties to the
+ * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8 edges, about half
+ * of them apart, the scan's single exit branch mispredicts less than the tree's branches on the
+ * count and on the first four edges (callgrind's branch simulator on collide_bench_scenes'
+ * circle-polygon pairs: 1.5 mispredictions per pair against 2.6, 185 instructions against 216),
+ * and the pair costs about 10% less; cd2CollideCirclePolygonLocal uses it. For polygon cores. */
+static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
+											  cdReal speculativeDistance)
+{
+	CD_ASSERT(k->count >= 3);
+	cdReal limit = k->radius + pointRadius + speculativeDistance;
+	int edge = 0;
+	cdReal edgeSeparation = -CD_REAL_MAX;
+	for (int i = 0; i < k->count; ++i)
 	{
-		return contact;
-	}
-	int next = edge + 1 < k->count ? edge + 1 : 0;
-	cd2Vec v1 = k->vertices[edge];
-	cd2Vec v2 = k->vertices[next];
-	cd2Vec normal = k->normals[edge];
-	cdReal coreSeparation = edgeSeparation;
-	uint32_t id = (uint32_t)edge;
-	/* Inside a polygon core the face is the answer; a segment core has no inside. Outside, the
-	 * point is in the region of v1 or v2 when it projects beyond that end of the edge. Measured
-	 * along the normal's own tangent, not the edge v2 - v1: the face point is the centre moved
-	 * along the normal, and at large coordinates the rounded vertices of a small polygon can make
-	 * an edge that is not square to its normal (a box of size 2 at x = 1e9 in float is a
-	 * vertical segment whatever its rotation), which put points far off to the side in the face
-	 * region. */
-	if (edgeSeparation > CD_R(0.0) || k->count == 2)
-	{
-		cd2Vec tangent = cd2LeftPerp(normal);
-		cdReal along = cd2Dot(tangent, cd2Sub(center, v1));
-		int vertex = along <= CD_R(0.0) ? edge : along >= cd2Dot(tangent, cd2Sub(v2, v1)) ? next : -1;
-		if (vertex >= 0)
+		cdReal s = cd2Dot(k->normals[i], cd2Sub(center, k->vertices[i]));
+		if (s > limit)
 		{
-			cdReal distance;
-			cd2Vec direction = cd2GetLengthAndNormalize(&distance, cd2Sub(center, k->vertices[vertex]));
-			if (direction.x != CD_R(0.0) || direction.y != CD_R(0.0))
-			{
-				normal = direction;
-				coreSeparation = distance;
-				id = VERTEX_FEATURE | (uint32_t)vertex;
-			}
+			CenterContact none = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u, false};
+			return none;
 		}
+		bool higher = s > edgeSeparation;
+		edge = higher ? i : edge;
+		edgeSeparation = higher ? s : edgeSeparation;
 	}
-	cdReal separation = coreSeparation - total;
-	if (separation > speculativeDistance)
-	{
-		return contact;
-	}
-	contact.normal = normal;
-	contact.point = cd2MulAdd(center, CD_R(0.5) * (k->radius - pointRadius - coreSeparation), normal);
-	contact.separation = separation;
-	contact.id = id;
-	contact.hit = true;
-	return contact;
+	return CenterContactOnEdge(k, center, pointRadius, speculativeDistance, edge, edgeSeparation, true);
 }
 
 static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal pointRadius,
@@ -952,10 +997,11 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	cd2Rot inverseQ = {q.c, -q.s};
 	cd2Vec inverseP = cd2Neg(cd2InvRotateVector(q, xfB.p));
 	cd2Vec center = cd2Add(cd2RotateVector(inverseQ, a.center), inverseP);
+	cd2Manifold m;
 	Core coreB;
 	InitPolygonCore(&coreB, b);
-	CenterContact contact = CoreCenterContact(&coreB, center, a.radius, speculativeDistance);
-	cd2Manifold m = EmptyManifold();
+	CenterContact contact = ScanCenterContact(&coreB, center, a.radius, speculativeDistance);
+	m = EmptyManifold();
 	if (contact.hit)
 	{
 		m.normal = cd2RotateVector(q, cd2Neg(contact.normal));
