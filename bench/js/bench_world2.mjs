@@ -15,7 +15,7 @@
 // 320), so a rain run cut by the budget covers the cheaper early steps only: read such rows as
 // lower bounds of that engine's cost.
 //
-//   bench/js/run.sh world2 [--runs 3] [--scene NAME] [--engine NAME] [--budget SECONDS]
+//   bench/js/run.sh world2 [--runs 3] [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--budget SECONDS]
 // (run.sh installs the engines from npm and builds the wasm module when they are missing)
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
@@ -482,8 +482,13 @@ if (args[0] === '--child') {
 } else {
   const runs = Number(opt('--runs', 3));
   const budget = Number(opt('--budget', 20)) * 1000;
-  const scenes = opt('--scene', null) ? [opt('--scene')] : Object.keys(SCENES);
+  const scenes = opt('--scene', null) ? opt('--scene').split(',') : Object.keys(SCENES);
   const engines = opt('--engine', null) ? opt('--engine').split(',') : ENGINES;
+  const unknown = [...scenes.filter((s) => !(s in SCENES)), ...engines.filter((e) => !ENGINES.includes(e))];
+  if (unknown.length > 0) {
+    process.stderr.write(`bench_world2: unknown scene or engine: ${unknown.join(', ')} (scenes: ${Object.keys(SCENES).join(', ')}; engines: ${ENGINES.join(', ')})\n`);
+    process.exit(2);
+  }
   const self = fileURLToPath(import.meta.url);
   const results = {};
   for (const scene of scenes) {
