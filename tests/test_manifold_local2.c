@@ -348,8 +348,8 @@ static void TestCirclePolygonScan(void)
 				target = cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0));
 				break;
 			case 3:
-				target = cd2MulAdd(cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0)), RandomReal(&rng, -0.3, 0.6),
-								   polygon.normals[v]);
+				target = cd2MulAdd(cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0)),
+								   RandomReal(&rng, -0.3, 0.6), polygon.normals[v]);
 				break;
 			case 4:
 				target = trial % 16 == 4 ? CD2_VEC_ZERO : polygon.centroid;
@@ -370,7 +370,8 @@ static void TestCirclePolygonScan(void)
 
 		cd2Rot inverseQ = {xf.q.c, -xf.q.s};
 		cd2Circle placed = circle;
-		placed.center = cd2Add(cd2RotateVector(inverseQ, circle.center), cd2Neg(cd2InvRotateVector(xf.q, xf.p)));
+		placed.center =
+			cd2Add(cd2RotateVector(inverseQ, circle.center), cd2Neg(cd2InvRotateVector(xf.q, xf.p)));
 		cd2Manifold world = cd2CollideCirclePolygon(placed, &polygon, speculative);
 		cd2Manifold expected = world;
 		if (world.pointCount == 1)
@@ -378,15 +379,15 @@ static void TestCirclePolygonScan(void)
 			expected.normal = cd2RotateVector(xf.q, world.normal);
 			expected.points[0].point = cd2TransformPoint(xf, world.points[0].point);
 		}
-		TEST_CHECKF(SameBits(local, expected), "trial %d: count %d/%d id %u/%u sep %.9g/%.9g", trial, local.pointCount,
-					expected.pointCount, local.points[0].id, expected.points[0].id, (double)local.points[0].separation,
-					(double)expected.points[0].separation);
+		TEST_CHECKF(SameBits(local, expected), "trial %d: count %d/%d id %u/%u sep %.9g/%.9g", trial,
+					local.pointCount, expected.pointCount, local.points[0].id, expected.points[0].id,
+					(double)local.points[0].separation, (double)expected.points[0].separation);
 		contacts += local.pointCount;
 		vertexContacts += local.pointCount == 1 && (local.points[0].id & 0x100u) != 0u;
 		empty += local.pointCount == 0;
 	}
-	printf("circle-polygon scan: %d contacts (%d at vertices), %d empty, %d tie cases\n", contacts, vertexContacts,
-		   empty, ties);
+	printf("circle-polygon scan: %d contacts (%d at vertices), %d empty, %d tie cases\n", contacts,
+		   vertexContacts, empty, ties);
 	/* Every kind of answer was met. */
 	TEST_CHECK(contacts > 5000 && vertexContacts > 1000 && empty > 5000 && ties > 100);
 }

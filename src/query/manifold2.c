@@ -178,8 +178,8 @@ typedef struct CenterContact
  * the largest separation of the point from k's edge lines and that separation; polygon: k is
  * known to be a polygon core (not a segment). */
 static inline CenterContact CenterContactOnEdge(const Core* k, cd2Vec center, cdReal pointRadius,
-											   cdReal speculativeDistance, int edge, cdReal edgeSeparation,
-											   bool polygon)
+												cdReal speculativeDistance, int edge, cdReal edgeSeparation,
+												bool polygon)
 {
 	CenterContact contact = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u, false};
 	cdReal total = k->radius + pointRadius;
@@ -290,11 +290,11 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
 
 /* CoreCenterContact by a scan that stops at the first edge the point is beyond the limit of, the
  * same contact bit for bit on finite input (the first edge of the largest separation, ties to the
- * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8 edges, about half
- * of them apart, the scan's single exit branch mispredicts less than the tree's branches on the
- * count and on the first four edges (callgrind's branch simulator on collide_bench_scenes'
- * circle-polygon pairs: 1.5 mispredictions per pair against 2.6, 185 instructions against 216),
- * and the pair costs about 10% less; cd2CollideCirclePolygonLocal uses it. For polygon cores. */
+ * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8
+ * edges, about half of them apart, the scan's single exit branch mispredicts less than the tree's branches on
+ * the count and on the first four edges (callgrind's branch simulator on collide_bench_scenes' circle-polygon
+ * pairs: 1.5 mispredictions per pair against 2.6, 185 instructions against 216), and the pair costs about 10%
+ * less; cd2CollideCirclePolygonLocal uses it. For polygon cores. */
 static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
 											  cdReal speculativeDistance)
 {
