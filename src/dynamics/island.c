@@ -139,16 +139,7 @@ int cd2UpdateSleep(cd2World* world)
 {
 	int n = world->bodies.count;
 	int slept = 0;
-	/* A group sleeps only when every body of it has rested long enough: while no awake body has,
-	 * nothing can fall asleep, and the grouping (a pass over every contact and joint) is skipped. */
-	bool anyRested = false;
-	for (int i = 0; i < n && !anyRested; ++i)
-	{
-		const cd2Body* body = world->bodies.data + i;
-		anyRested = body->inUse && body->enabled && body->awake && body->type != CD_STATIC_BODY &&
-					body->sleepTime >= CD2_TIME_TO_SLEEP;
-	}
-	if (!anyRested)
+	if (n == 0)
 	{
 		return 0;
 	}
