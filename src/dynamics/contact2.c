@@ -329,10 +329,11 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
 	 * history, shape indices are part of the saved state. */
 	uint64_t* sorted = collector.pairs.data;
-	uint64_t* scratch = NULL;
 	if (collector.pairs.count > 1)
 	{
-		scratch = (uint64_t*)cdAlloc((size_t)collector.pairs.count * sizeof(uint64_t));
+		/* Step scratch (the arena keeps its block between steps: no allocation in a steady state). */
+		uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)collector.pairs.count *
+																				 sizeof(uint64_t));
 		if (scratch == NULL)
 		{
 			/* dropped: the pairs come back when their boxes move again */
@@ -358,10 +359,6 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 			continue;
 		}
 		cd2CreateContact(world, indexA, indexB);
-	}
-	if (scratch != NULL)
-	{
-		cdFree(scratch);
 	}
 	cdArrayFree(collector.pairs);
 }
