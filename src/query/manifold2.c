@@ -33,6 +33,14 @@
 /* Sine of the turn at a chain vertex below which it counts as flat. */
 #define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
 
+/* A statement the compiler must keep where it stands: in the body of an if, it keeps the branch
+ * (GCC and clang otherwise turn a small if into selects). */
+#if defined(__GNUC__) || defined(__clang__)
+#define KEEP_BRANCH() __asm__ volatile("")
+#else
+#define KEEP_BRANCH() ((void)0)
+#endif
+
 #define VERTEX_FEATURE 0x100u
 /* Feature codes (bits 16+) of a single point along the gap between separated cores: vertex
  * against vertex, plus these when A's or B's closest point lies inside an edge (the id then holds
@@ -310,9 +318,15 @@ static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdRe
 			CenterContact none = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u, false};
 			return none;
 		}
-		bool higher = s > edgeSeparation;
-		edge = higher ? i : edge;
-		edgeSeparation = higher ? s : edgeSeparation;
+		/* A branch, not a select: a select makes the edge, and so the loads of its vertices and
+		 * normal after the loop, wait for every separation; a predicted branch lets them start at
+		 * once (the pair took about 14% less: 1.46 -> 1.26 of Box2D 2.4 in collide_bench_scenes). */
+		if (s > edgeSeparation)
+		{
+			edge = i;
+			edgeSeparation = s;
+			KEEP_BRANCH();
+		}
 	}
 	return CenterContactOnEdge(k, center, pointRadius, speculativeDistance, edge, edgeSeparation, true);
 }
