@@ -392,6 +392,9 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 	cd2Vec v1 = reference->vertices[referenceEdge];
 	cd2Vec v2 = reference->vertices[referenceEdge + 1 < reference->count ? referenceEdge + 1 : 0];
 
+	/* The incident edge by a kept branch, not a select (KEEP_BRANCH): its vertices' loads then
+	 * start as soon as the branch is predicted, not after every dot product (the polygon pairs of
+	 * collide_bench_scenes took about 10% less). */
 	int incidentEdge = 0;
 	cdReal lowest = CD_REAL_MAX;
 	for (int i = 0; i < incident->count; ++i)
@@ -401,6 +404,7 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 		{
 			lowest = d;
 			incidentEdge = i;
+			KEEP_BRANCH();
 		}
 	}
 	cd2Vec core[2] = {incident->vertices[incidentEdge],
