@@ -139,9 +139,9 @@ static inline int cd2CoreSupport(const cd2Core* core, cd2Vec direction)
 }
 
 /* cd2CoreSupport with the larger value kept by a select instead of a branch per point: which
- * point wins is as random as the direction, and the compare-and-branch mispredicted about once per
- * support (GJK's hill climb from the last support, whose step count is as random, likewise). The
- * same index as cd2CoreSupport, the first one on ties. */
+ * point wins is as random as the direction, and GJK's distance on collide_bench_scenes' polygon
+ * pairs ran 1.2x longer with a compare-and-branch per point (and with a hill climb, whose step
+ * count is as random, about 3% longer). The same index as cd2CoreSupport, the first one on ties. */
 static inline int cd2CoreSupportSelect(const cd2Core* core, cd2Vec direction)
 {
 	int best = 0;
