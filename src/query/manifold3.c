@@ -1795,22 +1795,56 @@ static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const
 }
 
 /* EdgeContact for two boxes: the closest points of the two edges in A's frame (rot, t: B's frame
- * in A's). */
+ * in A's). Edge A runs along A's axis i through cA, edge B along B's axis j (column j of rot)
+ * through cB: with w = cA - cB, b = rot[i][j], d = w[i] and e = column j . w, the lines' closest
+ * parameters solve s = b t - d and t = b s + e, so s (1 - b^2) = b e - d, where 1 - b^2 is the
+ * squared length of A_i x B_j, taken as the sum of the squares of the column's two other
+ * entries (exact for nearly parallel edges, unlike 1 - b^2). Each parameter is then clamped to
+ * its edge as for segments (Ericson 5.1.9): the edges an edge axis selects cross within both
+ * segments but for round-off, so the clamping only guards. */
 static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult* sat, const cd3Mat33* rot,
 						   cd3Vec t, cd3Manifold* m)
 {
-	cd3Segment edgeA, edgeB;
-	cd3BoxEdgeLocal(a->halfExtents, sat->edgeA, &edgeA.p1, &edgeA.p2);
-	cd3Vec q1, q2;
+	cd3Vec p1, p2, q1, q2;
+	cd3BoxEdgeLocal(a->halfExtents, sat->edgeA, &p1, &p2);
 	cd3BoxEdgeLocal(b->halfExtents, sat->edgeB, &q1, &q2);
-	edgeB.p1 = cd3Add(t, cd3MulMV(*rot, q1));
-	edgeB.p2 = cd3Add(t, cd3MulMV(*rot, q2));
-	cd3ClosestPoints cp = cd3ClosestPointsSegmentSegment(edgeA, edgeB);
+	int i = p1.x != p2.x ? 0 : (p1.y != p2.y ? 1 : 2);
+	int j = q1.x != q2.x ? 0 : (q1.y != q2.y ? 1 : 2);
+	cdReal ha = Component(a->halfExtents, i), hb = Component(b->halfExtents, j);
+	/* The edges' midpoints: the endpoints with the coordinate along the edge set to zero. */
+	cdReal ca[3] = {p1.x, p1.y, p1.z};
+	ca[i] = CD_R(0.0);
+	cdReal cbLocal[3] = {q1.x, q1.y, q1.z};
+	cbLocal[j] = CD_R(0.0);
+	cd3Vec cb = cd3Add(t, cd3MulMV(*rot, cd3MakeVec(cbLocal[0], cbLocal[1], cbLocal[2])));
+	cd3Vec v = j == 0 ? rot->cx : (j == 1 ? rot->cy : rot->cz);
+	cdReal vc[3] = {v.x, v.y, v.z};
+	cdReal w[3] = {ca[0] - cb.x, ca[1] - cb.y, ca[2] - cb.z};
+	cdReal along = vc[i];
+	cdReal d = w[i];
+	cdReal e = vc[0] * w[0] + vc[1] * w[1] + vc[2] * w[2];
+	cdReal v1 = vc[(i + 1) % 3], v2 = vc[(i + 2) % 3];
+	cdReal sine2 = v1 * v1 + v2 * v2;
+	cdReal s = CD_R(0.0);
+	if (sine2 > CD3_BOX_PARALLEL_SINE * CD3_BOX_PARALLEL_SINE)
+	{
+		s = cdClamp((along * e - d) / sine2, -ha, ha);
+	}
+	cdReal u = along * s + e;
+	if (u < -hb || u > hb)
+	{
+		u = cdClamp(u, -hb, hb);
+		s = cdClamp(along * u - d, -ha, ha);
+	}
+	/* Midway between the edges' closest points. */
+	cdReal mid[3] = {ca[0] + cb.x + u * vc[0], ca[1] + cb.y + u * vc[1], ca[2] + cb.z + u * vc[2]};
+	mid[i] += s;
+	cd3Vec local = cd3MakeVec(CD_R(0.5) * mid[0], CD_R(0.5) * mid[1], CD_R(0.5) * mid[2]);
 	cd3Transform frame = {a->center, a->rotation};
 	m->normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
 		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
-	AddPoint(m, cd3TransformPoint(frame, cd3Lerp(cp.pointA, cp.pointB, CD_R(0.5))), sat->edgeSeparation, id);
+	AddPoint(m, cd3TransformPoint(frame, local), sat->edgeSeparation, id);
 }
 
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
