@@ -1706,7 +1706,7 @@ static int ClipToSlab(const BoxClipVertex* in, int count, int axis, cdReal sign,
  * the reference's). Writes the points and normal into *m, which the caller has emptied: the
  * manifold is built in place, not returned through copies. */
 static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const cd3Mat33* rot, cd3Vec t,
-						   bool flip, cdReal speculativeDistance, cd3Manifold* m)
+						   const cd3Mat33* refFrame, bool flip, cdReal speculativeDistance, cd3Manifold* m)
 {
 	int k = face / 2;
 	cdReal sign = (face & 1) ? CD_R(1.0) : -CD_R(1.0);
@@ -1775,7 +1775,6 @@ static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const
 	{
 		return;
 	}
-	cd3Mat33 frame = cd3MakeMatFromQuat(ref->rotation);
 	cd3Vec n = AxisVector(k, sign);
 	Candidate reduced[4];
 	const Candidate* chosen = candidates;
@@ -1785,12 +1784,25 @@ static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const
 		chosenCount = ReducePoints(candidates, kept, n, reduced);
 		chosen = reduced;
 	}
-	for (int i = 0; i < chosenCount; ++i)
+	cd3Vec worldNormal = n;
+	if (refFrame == NULL)
 	{
-		AddPoint(m, cd3Add(ref->center, cd3MulMV(frame, chosen[i].point)), chosen[i].separation,
-				 chosen[i].id);
+		/* The reference box's frame is the world's up to its centre (a box in its body's frame
+		 * in the local form): the points and the normal as they are. */
+		for (int i = 0; i < chosenCount; ++i)
+		{
+			AddPoint(m, cd3Add(ref->center, chosen[i].point), chosen[i].separation, chosen[i].id);
+		}
 	}
-	cd3Vec worldNormal = cd3MulMV(frame, n);
+	else
+	{
+		for (int i = 0; i < chosenCount; ++i)
+		{
+			AddPoint(m, cd3Add(ref->center, cd3MulMV(*refFrame, chosen[i].point)), chosen[i].separation,
+					 chosen[i].id);
+		}
+		worldNormal = cd3MulMV(*refFrame, n);
+	}
 	m->normal = flip ? cd3Neg(worldNormal) : worldNormal;
 }
 
@@ -1840,11 +1852,13 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 	cdReal mid[3] = {ca[0] + cb.x + u * vc[0], ca[1] + cb.y + u * vc[1], ca[2] + cb.z + u * vc[2]};
 	mid[i] += s;
 	cd3Vec local = cd3MakeVec(CD_R(0.5) * mid[0], CD_R(0.5) * mid[1], CD_R(0.5) * mid[2]);
-	cd3Transform frame = {a->center, a->rotation};
+	cd3Quat qa = a->rotation;
+	bool identityA = qa.x == CD_R(0.0) && qa.y == CD_R(0.0) && qa.z == CD_R(0.0) && qa.w == CD_R(1.0);
+	cd3Transform frame = {a->center, qa};
 	m->normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
 		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
-	AddPoint(m, cd3TransformPoint(frame, local), sat->edgeSeparation, id);
+	AddPoint(m, identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local), sat->edgeSeparation, id);
 }
 
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
@@ -1891,16 +1905,26 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 			BoxEdgeContact(a, b, &sat, &rot, t, &m);
 			return m;
 		}
+		/* The reference box's frame in the world: with A's rotation the identity (a box in its
+		 * body's frame, the local form), none for A and the rotation already in hand for B. */
+		cd3Quat qa = a->rotation;
+		bool identityA = qa.x == CD_R(0.0) && qa.y == CD_R(0.0) && qa.z == CD_R(0.0) && qa.w == CD_R(1.0);
+		cd3Mat33 frame;
 		if (useB)
 		{
 			/* A's frame in B's: the transposed rotation. */
 			cd3Mat33 inverse = cd3Transpose(rot);
 			cd3Vec back = cd3Neg(cd3MulMV(inverse, t));
-			BoxFaceContact(b, sat.faceB, a, &inverse, back, true, speculativeDistance, &m);
+			frame = identityA ? rot : cd3MakeMatFromQuat(b->rotation);
+			BoxFaceContact(b, sat.faceB, a, &inverse, back, &frame, true, speculativeDistance, &m);
 		}
 		else
 		{
-			BoxFaceContact(a, sat.faceA, b, &rot, t, false, speculativeDistance, &m);
+			if (!identityA)
+			{
+				frame = cd3MakeMatFromQuat(qa);
+			}
+			BoxFaceContact(a, sat.faceA, b, &rot, t, identityA ? NULL : &frame, false, speculativeDistance, &m);
 		}
 		if (m.pointCount > 0)
 		{
