@@ -1728,12 +1728,14 @@ static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const
 	BoxClipVertex* in = bufferA;
 	BoxClipVertex* out = bufferB;
 	int count = 4;
+	/* The incident box's axes scaled by its half extents: each corner is t + (+-ex +- ey) +- ez, the
+	 * products of cd3MulMV(*rot, corner) with their signs (the same sums, bit for bit), made once. */
+	cd3Vec ex = cd3Scale(hi[0], rot->cx), ey = cd3Scale(hi[1], rot->cy), ez = cd3Scale(hi[2], rot->cz);
 	for (int v = 0; v < 4; ++v)
 	{
 		int corner = BOX_FACE_VERTICES[incident][v];
-		cd3Vec c = cd3MakeVec((corner & 1) ? hi[0] : -hi[0], (corner & 2) ? hi[1] : -hi[1],
-							  (corner & 4) ? hi[2] : -hi[2]);
-		cd3Vec p = cd3Add(t, cd3MulMV(*rot, c));
+		cd3Vec p = cd3Add(t, cd3Add(cd3Add((corner & 1) ? ex : cd3Neg(ex), (corner & 2) ? ey : cd3Neg(ey)),
+									(corner & 4) ? ez : cd3Neg(ez)));
 		in[v].x[0] = p.x;
 		in[v].x[1] = p.y;
 		in[v].x[2] = p.z;
@@ -1886,19 +1888,31 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 		/* The choice of SatContact, with the box clipping; the size for the tie bias only when a
 		 * tie is possible. */
 		cdReal size = -CD_R(1.0);
+		/* Above this bound of size (its 1-norm form, which is at least the 2-norms) a lead decides
+		 * without the square roots of size, which sat on the path to the choice's branch. */
+		cdReal sizeBound = CD_R(2.02) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
+										 cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
 		bool useB = false;
 		if (sat.faceSeparationB > sat.faceSeparationA)
 		{
-			size = CD_R(2.0) * (cd3Length(a->halfExtents) + cd3Length(b->halfExtents));
-			useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size;
+			useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * sizeBound;
+			if (!useB)
+			{
+				size = CD_R(2.0) * (cd3Length(a->halfExtents) + cd3Length(b->halfExtents));
+				useB = sat.faceSeparationB > sat.faceSeparationA + FACE_BIAS * size;
+			}
 		}
 		cdReal faceSeparation = useB ? sat.faceSeparationB : sat.faceSeparationA;
 		bool useEdges = false;
 		if (sat.edgeA >= 0 && sat.edgeSeparation > faceSeparation)
 		{
-			size =
-				size < CD_R(0.0) ? CD_R(2.0) * (cd3Length(a->halfExtents) + cd3Length(b->halfExtents)) : size;
-			useEdges = sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
+			useEdges = sat.edgeSeparation > faceSeparation + EDGE_BIAS * sizeBound;
+			if (!useEdges)
+			{
+				size = size < CD_R(0.0) ? CD_R(2.0) * (cd3Length(a->halfExtents) + cd3Length(b->halfExtents))
+										: size;
+				useEdges = sat.edgeSeparation > faceSeparation + EDGE_BIAS * size;
+			}
 		}
 		if (useEdges)
 		{
