@@ -1855,7 +1855,7 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 	mid[i] += s;
 	cd3Vec local = cd3MakeVec(CD_R(0.5) * mid[0], CD_R(0.5) * mid[1], CD_R(0.5) * mid[2]);
 	cd3Quat qa = a->rotation;
-	bool identityA = qa.x == CD_R(0.0) && qa.y == CD_R(0.0) && qa.z == CD_R(0.0) && qa.w == CD_R(1.0);
+	bool identityA = cd3IsIdentityQuatBits(qa);
 	cd3Transform frame = {a->center, qa};
 	m->normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
@@ -1922,7 +1922,7 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 		/* The reference box's frame in the world: with A's rotation the identity (a box in its
 		 * body's frame, the local form), none for A and the rotation already in hand for B. */
 		cd3Quat qa = a->rotation;
-		bool identityA = qa.x == CD_R(0.0) && qa.y == CD_R(0.0) && qa.z == CD_R(0.0) && qa.w == CD_R(1.0);
+		bool identityA = cd3IsIdentityQuatBits(qa);
 		cd3Mat33 frame;
 		if (useB)
 		{
@@ -1976,9 +1976,8 @@ cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal s
 	placed.halfExtents = b.halfExtents;
 	/* A box centred in its body's frame (the common case) is placed by xfB alone: the products with
 	 * the zero centre and the identity rotation give xfB's own components (up to the sign of a zero). */
-	bool centred = b.center.x == CD_R(0.0) && b.center.y == CD_R(0.0) && b.center.z == CD_R(0.0);
-	bool aligned = b.rotation.x == CD_R(0.0) && b.rotation.y == CD_R(0.0) && b.rotation.z == CD_R(0.0) &&
-				   b.rotation.w == CD_R(1.0);
+	bool centred = cd3AreZeroBits(b.center.x, b.center.y, b.center.z);
+	bool aligned = cd3IsIdentityQuatBits(b.rotation);
 	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
 	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
 	return CollideBoxes(&a, &placed, speculativeDistance);

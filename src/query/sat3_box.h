@@ -5,6 +5,8 @@
 
 #include "sat3.h"
 
+#include <string.h>
+
 /* Edge pairs whose cross product is shorter than this fraction of |eA| |eB| are parallel (as in
  * sat3.c). */
 #define CD3_BOX_PARALLEL_SINE CD_R(1.0e-5)
@@ -30,6 +32,33 @@ static inline int cd3SupportingBoxEdge(int axis, cd3Vec direction)
 		}
 	}
 	return CD3_BOX_EDGE_FROM[vertex][axis];
+}
+
+/* The bits of a real (zero only for +0). */
+#if CD_DOUBLE
+typedef uint64_t cd3RealBits;
+#else
+typedef uint32_t cd3RealBits;
+#endif
+static inline cd3RealBits cd3GetRealBits(cdReal x)
+{
+	cd3RealBits bits;
+	memcpy(&bits, &x, sizeof bits);
+	return bits;
+}
+
+/* True when x, y and z are all +0: one integer test instead of a compare-and-branch on each (the
+ * box-box path asks this of every pose, and -0, which fails it, takes the general path, whose
+ * answer is the same up to the sign of a zero). */
+static inline bool cd3AreZeroBits(cdReal x, cdReal y, cdReal z)
+{
+	return (cd3GetRealBits(x) | cd3GetRealBits(y) | cd3GetRealBits(z)) == 0;
+}
+
+/* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1. */
+static inline bool cd3IsIdentityQuatBits(cd3Quat q)
+{
+	return cd3AreZeroBits(q.x, q.y, q.z) & (q.w == CD_R(1.0));
 }
 
 /* |a| as a max, which compiles to one instruction: the signs of the box SAT's matrix entries and
@@ -131,7 +160,7 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	cd3Quat qa = boxA->rotation;
 	/* A box in its body's frame usually has the identity rotation: conj(qa) q and the rotated
 	 * offset are then q and the offset themselves (up to the sign of a zero), without the products. */
-	bool identityA = qa.x == CD_R(0.0) && qa.y == CD_R(0.0) && qa.z == CD_R(0.0) && qa.w == CD_R(1.0);
+	bool identityA = cd3IsIdentityQuatBits(qa);
 	cd3Quat q = boxB->rotation; /* B's axes in A's frame */
 	cd3Vec t = cd3Sub(boxB->center, boxA->center);
 	if (!identityA)
