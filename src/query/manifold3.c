@@ -1860,7 +1860,8 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 	m->normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
 		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
-	AddPoint(m, identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local), sat->edgeSeparation, id);
+	AddPoint(m, identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local), sat->edgeSeparation,
+			 id);
 }
 
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
@@ -1890,8 +1891,9 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 		cdReal size = -CD_R(1.0);
 		/* Above this bound of size (its 1-norm form, which is at least the 2-norms) a lead decides
 		 * without the square roots of size, which sat on the path to the choice's branch. */
-		cdReal sizeBound = CD_R(2.02) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
-										 cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
+		cdReal sizeBound =
+			CD_R(2.02) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
+						  cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
 		bool useB = false;
 		if (sat.faceSeparationB > sat.faceSeparationA)
 		{
@@ -1938,7 +1940,8 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 			{
 				frame = cd3MakeMatFromQuat(qa);
 			}
-			BoxFaceContact(a, sat.faceA, b, &rot, t, identityA ? NULL : &frame, false, speculativeDistance, &m);
+			BoxFaceContact(a, sat.faceA, b, &rot, t, identityA ? NULL : &frame, false, speculativeDistance,
+						   &m);
 		}
 		if (m.pointCount > 0)
 		{

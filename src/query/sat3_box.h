@@ -58,7 +58,7 @@ static inline bool cd3AreZeroBits(cdReal x, cdReal y, cdReal z)
 /* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1. */
 static inline bool cd3IsIdentityQuatBits(cd3Quat q)
 {
-	return cd3AreZeroBits(q.x, q.y, q.z) & (q.w == CD_R(1.0));
+	return ((int)cd3AreZeroBits(q.x, q.y, q.z) & (int)(q.w == CD_R(1.0))) != 0;
 }
 
 /* |a| as a max, which compiles to one instruction: the signs of the box SAT's matrix entries and
