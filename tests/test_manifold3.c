@@ -2682,6 +2682,92 @@ static void TestBoxHulls(void)
 		   exact, turned);
 }
 
+/* Where the box-box path puts an edge-edge contact: midway between the closest points of the two
+ * edges, so the point moved back by half the separation along the normal lies on an edge of A
+ * (two of its coordinates in A's frame at the half extents, the third within them), and moved
+ * forward by half on an edge of B. Random overlapping pairs of rotated boxes, in the world form
+ * and in the local form (A in its body frame); the edges are away from parallel (the crossing's
+ * sine above 0.1) so that the closest points are well conditioned. */
+static int OnBoxEdge(cd3Box box, cd3Vec world, double tolerance)
+{
+	cd3Transform frame = {box.center, box.rotation};
+	cd3Vec p = cd3InvTransformPoint(frame, world);
+	double c[3] = {p.x, p.y, p.z};
+	double h[3] = {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z};
+	int onSide = 0;
+	for (int i = 0; i < 3; ++i)
+	{
+		if (fabs(fabs(c[i]) - h[i]) <= tolerance)
+		{
+			++onSide;
+		}
+		else if (fabs(c[i]) > h[i] + tolerance)
+		{
+			return 0;
+		}
+	}
+	return onSide >= 2;
+}
+
+static void TestBoxEdgeContactPoints(void)
+{
+	TestRng rng = {0xb0eda9e5u};
+	const double tolerance = 1e-6 + 50 * TOL;
+	int checked = 0;
+	for (int n = 0; n < 4000; ++n)
+	{
+		cd3Box a = MakeBox(0, 0, 0, TestRngRange(&rng, 0.2, 0.6), TestRngRange(&rng, 0.2, 0.6),
+						   TestRngRange(&rng, 0.2, 0.6), n % 2 ? RandomQuat(&rng) : CD3_QUAT_IDENTITY);
+		cd3Box b = MakeBox(0, 0, 0, TestRngRange(&rng, 0.2, 0.6), TestRngRange(&rng, 0.2, 0.6),
+						   TestRngRange(&rng, 0.2, 0.6), RandomQuat(&rng));
+		b.center = cd3Scale((cdReal)TestRngRange(&rng, 0.6, 1.2), RandomUnit(&rng));
+		cd3Manifold m = cd3CollideBoxBox(a, b, CD_R(0.0));
+		cd3Box localB = b;
+		localB.center = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+		localB.rotation = CD3_QUAT_IDENTITY;
+		cd3Transform xfA = {a.center, a.rotation}, xfB = {b.center, b.rotation};
+		cd3Box localA = a;
+		localA.center = localB.center;
+		localA.rotation = CD3_QUAT_IDENTITY;
+		cd3Manifold local = cd3CollideBoxBoxLocal(localA, localB, cd3InvMulTransforms(xfA, xfB), CD_R(0.0));
+		if (m.pointCount != 1 || (m.points[0].id & CD3_FEATURE_EDGES) == 0)
+		{
+			continue;
+		}
+		/* The edges' directions: the normal is their cross product, so each edge is the box axis
+		 * orthogonal to it; skip nearly parallel crossings. */
+		cd3Mat33 ra = cd3MakeMatFromQuat(a.rotation), rb = cd3MakeMatFromQuat(b.rotation);
+		cd3Vec axesA[3] = {ra.cx, ra.cy, ra.cz}, axesB[3] = {rb.cx, rb.cy, rb.cz};
+		int ia = 0, ib = 0;
+		for (int k = 1; k < 3; ++k)
+		{
+			ia = fabs(cd3Dot(axesA[k], m.normal)) < fabs(cd3Dot(axesA[ia], m.normal)) ? k : ia;
+			ib = fabs(cd3Dot(axesB[k], m.normal)) < fabs(cd3Dot(axesB[ib], m.normal)) ? k : ib;
+		}
+		if (cd3Length(cd3Cross(axesA[ia], axesB[ib])) < CD_R(0.1))
+		{
+			continue;
+		}
+		++checked;
+		cd3Vec p = m.points[0].point;
+		double half = 0.5 * m.points[0].separation;
+		cd3Vec onA = cd3MulAdd(p, (cdReal)-half, m.normal), onB = cd3MulAdd(p, (cdReal)half, m.normal);
+		TEST_CHECKF(OnBoxEdge(a, onA, tolerance) && OnBoxEdge(b, onB, tolerance),
+					"pair %d: edge contact (%g %g %g) separation %g not between the edges", n, (double)p.x,
+					(double)p.y, (double)p.z, 2 * half);
+		/* The local form: the same contact in A's frame. */
+		TEST_CHECK(local.pointCount == 1 && local.points[0].id == m.points[0].id);
+		if (local.pointCount == 1)
+		{
+			cd3Vec back = cd3TransformPoint(xfA, local.points[0].point);
+			TEST_CHECK(cd3VecDistance(back, p) <= tolerance);
+			TEST_CHECK_NEAR(local.points[0].separation, m.points[0].separation, tolerance);
+		}
+	}
+	printf("box edge contacts checked: %d\n", checked);
+	TEST_CHECK(checked >= 200);
+}
+
 int main(void)
 {
 	TEST_RUN(TestBoxResting);
@@ -2715,5 +2801,6 @@ int main(void)
 	TEST_RUN(TestFlatCapsulesDepthAlongNormal);
 	TEST_RUN(TestScaleInvariance);
 	TEST_RUN(TestBoxHulls);
+	TEST_RUN(TestBoxEdgeContactPoints);
 	return TEST_SUMMARY();
 }
