@@ -175,6 +175,31 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	return true;
 }
 
+/* How many constraints ahead the pack asks for the contact records: they are read in colour order,
+ * scattered over the contact array. */
+#define CD2_PACK_PREFETCH_AHEAD 8
+
+static inline void cd2PrefetchContact(const cd2World* world, const cd2StepContext* context, int i)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	if (i < context->constraintCount)
+	{
+		/* The record from its normal to its tangent speed: what cd2PrepareContactConstraint reads. */
+		const char* first = (const char*)&world->contacts.data[context->pairs[i].contact].normal;
+		const char* last = (const char*)(&world->contacts.data[context->pairs[i].contact].tangentSpeed + 1);
+		for (const char* p = first; p < last; p += 64)
+		{
+			__builtin_prefetch(p);
+		}
+		__builtin_prefetch(last - 1);
+	}
+#else
+	(void)world;
+	(void)context;
+	(void)i;
+#endif
+}
+
 void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
 	int zeroBody = context->bodyCount;
@@ -188,21 +213,33 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 		/* The colour's constraints [first, last), CD_W to a block. */
 		int first = context->colorConstraintStart[color] + CD_W * (block - context->colorBlockStart[color]);
 		int last = context->colorConstraintStart[color + 1];
-		cd2PrepareContacts(world, context, first, first + CD_W < last ? first + CD_W : last);
+		if (block == startBlock)
+		{
+			for (int i = first; i < first + CD2_PACK_PREFETCH_AHEAD; ++i)
+			{
+				cd2PrefetchContact(world, context, i);
+			}
+		}
 		cd2ContactConstraintWide* w = context->wide + block;
 		memset(w, 0, sizeof(*w));
+		bool bounces = false;
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
 			w->indexA[lane] = zeroBody;
 			w->indexB[lane] = zeroBody;
-			w->constraint[lane] = -1;
+			w->contact[lane] = -1;
 			/* An empty lane's rotation is the identity, like the zero body's. */
 			if (first + lane >= last)
 			{
 				continue;
 			}
-			const cd2ContactConstraint* c = context->constraints + first + lane;
-			w->constraint[lane] = first + lane;
+			/* The next blocks' records (of this colour or the next). */
+			cd2PrefetchContact(world, context, first + lane + CD2_PACK_PREFETCH_AHEAD);
+			cd2ContactConstraint prepared;
+			const cd2ContactConstraint* c = &prepared;
+			cd2PrepareContactConstraint(world, context, context->pairs + first + lane, &prepared);
+			w->contact[lane] = c->contact;
+			w->pointCount[lane] = (unsigned char)c->pointCount;
 			w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
 			w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
 			/* Immovable: both inverse masses zero (the velocity update would add nothing). */
@@ -210,6 +247,7 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 				(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
 			w->movesB[lane] =
 				(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
+			bounces = bounces || c->restitution != CD_R(0.0);
 			cdWSetLane(&w->invMassA, lane, c->invMassA);
 			cdWSetLane(&w->invIA, lane, c->invIA);
 			cdWSetLane(&w->invMassB, lane, c->invMassB);
@@ -224,6 +262,8 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			cdWSetLane(&w->biasRate, lane, c->softness.biasRate);
 			cdWSetLane(&w->massScale, lane, c->softness.massScale);
 			cdWSetLane(&w->impulseScale, lane, c->softness.impulseScale);
+			cdWSetLane(&w->restitution, lane, c->restitution);
+			cdWSetLane(&w->normalAcceleration, lane, c->normalAcceleration);
 			for (int k = 0; k < c->pointCount; ++k)
 			{
 				const cd2ContactConstraintPoint* cp = c->points + k;
@@ -241,6 +281,7 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 				cdWSetLane(&wp->tangentMass, lane, cp->tangentMass);
 			}
 		}
+		w->bounces = bounces;
 	}
 }
 
@@ -402,43 +443,83 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 	}
 }
 
-void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock,
-						  bool toContacts)
+/* Restitution of blocks [start, end) (one colour at most): cd2ApplyRestitution's arithmetic lane by
+ * lane; a point that does not bounce (no restitution, too slow an approach, never pushed) leaves the
+ * velocities and impulses exactly as they were. */
+void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
+{
+	cd2SolverBody* bodies = context->bodies;
+	cdW threshold = cdWSplat(-context->restitutionThreshold);
+	cdW h = cdWSplat(context->h);
+	cdW zero = cdWZero();
+	for (int i = start; i < end; ++i)
+	{
+		cd2ContactConstraintWide* c = context->wide + i;
+		if (!c->bounces)
+		{
+			continue;
+		}
+		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
+		cd2BodyLanes b = cd2GatherBodies(bodies, c->indexB);
+		cdW mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
+		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
+		cdW nx = c->normalX, ny = c->normalY;
+		cdW bouncy = cdWNotEqual(c->restitution, zero);
+		for (int k = 0; k < 2; ++k)
+		{
+			cd2ContactPointWide* cp = c->points + k;
+			/* Only points that were approaching fast enough and actually pushed bounce. */
+			cdW skip = cdWOr(cdWGreater(cp->relativeVelocity, threshold), cdWEqual(cp->maxNormalImpulse, zero));
+			cdW apply = cdWAndNot(skip, bouncy);
+			if (!cdWAny(apply))
+			{
+				continue;
+			}
+			cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
+			cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
+			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
+			cdW approach = cdWMin(cdWAdd(cp->relativeVelocity, cdWMul(h, c->normalAcceleration)), zero);
+			cdW impulse =
+				cdWMul(cdWNeg(cp->normalMass), cdWAdd(vn, cdWMul(c->restitution, approach)));
+			cdW newImpulse = cdWMax(cdWAdd(cp->normalImpulse, impulse), zero);
+			impulse = cdWSub(newImpulse, cp->normalImpulse);
+			cp->normalImpulse = cdWSelect(apply, newImpulse, cp->normalImpulse);
+			cp->maxNormalImpulse = cdWSelect(apply, cdWMax(cp->maxNormalImpulse, impulse), cp->maxNormalImpulse);
+			cdW Px = cdWMul(impulse, nx), Py = cdWMul(impulse, ny);
+			vAx = cdWSelect(apply, cdWSub(vAx, cdWMul(mA, Px)), vAx);
+			vAy = cdWSelect(apply, cdWSub(vAy, cdWMul(mA, Py)), vAy);
+			wA = cdWSelect(apply, cdWSub(wA, cdWMul(iA, cdWSub(cdWMul(rAx, Py), cdWMul(rAy, Px)))), wA);
+			vBx = cdWSelect(apply, cdWAdd(vBx, cdWMul(mB, Px)), vBx);
+			vBy = cdWSelect(apply, cdWAdd(vBy, cdWMul(mB, Py)), vBy);
+			wB = cdWSelect(apply, cdWAdd(wB, cdWMul(iB, cdWSub(cdWMul(rBx, Py), cdWMul(rBy, Px)))), wB);
+		}
+		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA, a.dpx);
+		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB, b.dpx);
+	}
+}
+
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
 	for (int i = startBlock; i < endBlock; ++i)
 	{
 		const cd2ContactConstraintWide* w = context->wide + i;
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
-			if (w->constraint[lane] < 0)
+			if (w->contact[lane] < 0)
 			{
 				continue;
 			}
-			cd2ContactConstraint* c = context->constraints + w->constraint[lane];
-			if (toContacts)
-			{
-				cd2Contact* contact = world->contacts.data + c->contact;
-				contact->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
-				for (int k = 0; k < c->pointCount; ++k)
-				{
-					const cd2ContactPointWide* wp = w->points + k;
-					cd2ContactPoint* mp = contact->points + k;
-					mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
-					mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
-					mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
-					mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
-				}
-				continue;
-			}
-			c->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
-			for (int k = 0; k < c->pointCount; ++k)
+			cd2Contact* contact = world->contacts.data + w->contact[lane];
+			contact->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
+			for (int k = 0; k < w->pointCount[lane]; ++k)
 			{
 				const cd2ContactPointWide* wp = w->points + k;
-				cd2ContactConstraintPoint* cp = c->points + k;
-				cp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
-				cp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
-				cp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
-				cp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+				cd2ContactPoint* mp = contact->points + k;
+				mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
+				mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
+				mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
+				mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
 			}
 		}
 	}

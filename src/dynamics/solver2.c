@@ -210,6 +210,7 @@ typedef enum cd2StageKind
 	CD2_STAGE_SOLVE_OVERFLOW,		/* single */
 	CD2_STAGE_INTEGRATE_POSITIONS,	/* bodies */
 	CD2_STAGE_STORE_WIDE,			/* wide blocks */
+	CD2_STAGE_RESTITUTION_WIDE,		/* wide blocks of one colour */
 	CD2_STAGE_RESTITUTION,			/* single */
 	CD2_STAGE_STORE_IMPULSES,		/* constraints */
 	CD2_STAGE_STORE_JOINTS,			/* single */
@@ -314,7 +315,10 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2IntegratePositions(context, start, end);
 			break;
 		case CD2_STAGE_STORE_WIDE:
-			cd2StoreContactsWide(world, context, start, end, stage->useBias);
+			cd2StoreContactsWide(world, context, start, end);
+			break;
+		case CD2_STAGE_RESTITUTION_WIDE:
+			cd2ApplyRestitutionWide(context, stage->first + start, stage->first + end);
 			break;
 		case CD2_STAGE_RESTITUTION:
 			cd2ApplyRestitution(context);
@@ -723,7 +727,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.world = world;
 	list.step = &context;
 	list.workerCount = world->workerCount;
-	list.stageCapacity = 8 + subStepCount * (8 + 3 * context.colorCount);
+	list.stageCapacity = 8 + context.colorCount + subStepCount * (8 + 3 * context.colorCount);
 	list.stages =
 		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
 	if (list.stages == NULL)
@@ -753,14 +757,16 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, false);
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}
-	/* Without restitution (which reads and changes the constraints' impulses) the wide blocks are
-	 * stored straight into their contacts (useBias marks that), and the store stage covers only the
-	 * overflow colour's constraints. */
-	bool storeDirect = bouncing == 0;
-	int storeFirst = storeDirect ? context.overflowStart : 0;
-	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, storeDirect);
-	cd2AddStage(&list, CD2_STAGE_RESTITUTION, bouncing > 0 ? 1 : 0, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - storeFirst, 32, storeFirst, false);
+	/* Restitution colour by colour, then the overflow colour's (the order of the one-by-one pass);
+	 * then the impulses back into the contacts. */
+	if (bouncing > 0)
+	{
+		cd2AddWideStages(&list, CD2_STAGE_RESTITUTION_WIDE, false);
+		cd2AddStage(&list, CD2_STAGE_RESTITUTION, overflowCount, 1, 0, false);
+	}
+	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - context.overflowStart, 32,
+				context.overflowStart, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
 

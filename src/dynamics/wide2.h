@@ -64,6 +64,23 @@ static inline cdW cdWLess(cdW a, cdW b)
 {
 	return _mm_cmplt_ps(a, b);
 }
+static inline cdW cdWEqual(cdW a, cdW b)
+{
+	return _mm_cmpeq_ps(a, b);
+}
+static inline cdW cdWNotEqual(cdW a, cdW b)
+{
+	return _mm_cmpneq_ps(a, b);
+}
+/* Lane by lane a or b, and (not a) and b, of masks. */
+static inline cdW cdWOr(cdW a, cdW b)
+{
+	return _mm_or_ps(a, b);
+}
+static inline cdW cdWAndNot(cdW a, cdW b)
+{
+	return _mm_andnot_ps(a, b);
+}
 static inline void cdWStore(cdReal* out, cdW a)
 {
 	_mm_storeu_ps(out, a);
@@ -130,6 +147,22 @@ static inline cdW cdWGreater(cdW a, cdW b)
 static inline cdW cdWLess(cdW a, cdW b)
 {
 	return wasm_f32x4_lt(a, b);
+}
+static inline cdW cdWEqual(cdW a, cdW b)
+{
+	return wasm_f32x4_eq(a, b);
+}
+static inline cdW cdWNotEqual(cdW a, cdW b)
+{
+	return wasm_f32x4_ne(a, b);
+}
+static inline cdW cdWOr(cdW a, cdW b)
+{
+	return wasm_v128_or(a, b);
+}
+static inline cdW cdWAndNot(cdW a, cdW b)
+{
+	return wasm_v128_andnot(b, a);
 }
 static inline void cdWStore(cdReal* out, cdW a)
 {
@@ -202,6 +235,22 @@ static inline cdW cdWGreater(cdW a, cdW b)
 static inline cdW cdWLess(cdW a, cdW b)
 {
 	CD_W_LANES(a.v[i] < b.v[i] ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWEqual(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] == b.v[i] ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWNotEqual(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] != b.v[i] ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWOr(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] != CD_R(0.0) || b.v[i] != CD_R(0.0) ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWAndNot(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] == CD_R(0.0) && b.v[i] != CD_R(0.0) ? CD_R(1.0) : CD_R(0.0));
 }
 static inline void cdWStore(cdReal* out, cdW a)
 {
