@@ -11,6 +11,14 @@
 
 #include <string.h>
 
+/* Forced inlining: the solve's two passes, and the prefetch helper (gcc counts a function that only
+ * prefetches as pure and drops its calls unless it is inlined first). */
+#if defined(__GNUC__) || defined(__clang__)
+#define CD2_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CD2_ALWAYS_INLINE inline
+#endif
+
 /* The gather below reads a solver body as nine consecutive reals. */
 typedef char cd2SolverBodyIsPacked[sizeof(cd2SolverBody) == 9 * sizeof(cdReal) ? 1 : -1];
 
@@ -179,25 +187,30 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
  * scattered over the contact array. */
 #define CD2_PACK_PREFETCH_AHEAD 8
 
-static inline void cd2PrefetchContact(const cd2World* world, const cd2StepContext* context, int i)
+/* Asks for the lines of contact record `contact` from its normal to its tangent speed: what
+ * cd2PrepareContactConstraint reads and the store writes. */
+static CD2_ALWAYS_INLINE void cd2PrefetchContactRecord(const cd2World* world, int contact)
 {
 #if defined(__GNUC__) || defined(__clang__)
-	if (i < context->constraintCount)
+	const char* first = (const char*)&world->contacts.data[contact].normal;
+	const char* last = (const char*)(&world->contacts.data[contact].tangentSpeed + 1);
+	for (const char* p = first; p < last; p += 64)
 	{
-		/* The record from its normal to its tangent speed: what cd2PrepareContactConstraint reads. */
-		const char* first = (const char*)&world->contacts.data[context->pairs[i].contact].normal;
-		const char* last = (const char*)(&world->contacts.data[context->pairs[i].contact].tangentSpeed + 1);
-		for (const char* p = first; p < last; p += 64)
-		{
-			__builtin_prefetch(p);
-		}
-		__builtin_prefetch(last - 1);
+		__builtin_prefetch(p);
 	}
+	__builtin_prefetch(last - 1);
 #else
 	(void)world;
-	(void)context;
-	(void)i;
+	(void)contact;
 #endif
+}
+
+static CD2_ALWAYS_INLINE void cd2PrefetchContact(const cd2World* world, const cd2StepContext* context, int i)
+{
+	if (i < context->constraintCount)
+	{
+		cd2PrefetchContactRecord(world, context->pairs[i].contact);
+	}
 }
 
 void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
@@ -319,11 +332,6 @@ void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
 
 /* Inlined twice with a constant useBias (the solve and the relax pass): each loop keeps only its
  * own work, and fewer values compete for registers. */
-#if defined(__GNUC__) || defined(__clang__)
-#define CD2_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define CD2_ALWAYS_INLINE inline
-#endif
 static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, int start, int end,
 													   const bool useBias)
 {
@@ -339,6 +347,7 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 		cdW mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
 		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
 		cdW nx = c->normalX, ny = c->normalY;
+		cdW biasRate = useBias ? cdWMul(c->massScale, c->biasRate) : zero;
 		cdW totalNormalImpulse = zero;
 		for (int k = 0; k < 2; ++k)
 		{
@@ -355,7 +364,7 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 			cdW bias, massScale, impulseScale;
 			if (useBias)
 			{
-				cdW softBias = cdWMax(cdWMul(cdWMul(c->massScale, c->biasRate), s), minBias);
+				cdW softBias = cdWMax(cdWMul(biasRate, s), minBias);
 				bias = cdWSelect(apart, cdWMul(s, inv_h), softBias);
 				massScale = cdWSelect(apart, one, c->massScale);
 				impulseScale = cdWSelect(apart, zero, c->impulseScale);
@@ -366,17 +375,18 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 				massScale = one;
 				impulseScale = zero;
 			}
-			cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+			cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
 			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
 			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
 			if (useBias)
 			{
 				cp->relativeVelocity = cdWMin(vn, cp->relativeVelocity);
 			}
-			cdW impulse = cdWSub(cdWMul(cdWNeg(cp->normalMass), cdWAdd(cdWMul(massScale, vn), bias)),
-								 cdWMul(impulseScale, cp->normalImpulse));
-			cdW newImpulse = cdWMax(cdWAdd(cp->normalImpulse, impulse), zero);
-			impulse = cdWSub(newImpulse, cp->normalImpulse);
+			/* -impulse: the same bits as the one-by-one solver's (x + -y is x - y). */
+			cdW negImpulse = cdWAdd(cdWMul(cp->normalMass, cdWAdd(cdWMul(massScale, vn), bias)),
+									cdWMul(impulseScale, cp->normalImpulse));
+			cdW newImpulse = cdWMax(cdWSub(cp->normalImpulse, negImpulse), zero);
+			cdW impulse = cdWSub(newImpulse, cp->normalImpulse);
 			cp->normalImpulse = newImpulse;
 			cp->maxNormalImpulse = cdWMax(cp->maxNormalImpulse, impulse);
 			totalNormalImpulse = cdWAdd(totalNormalImpulse, newImpulse);
@@ -397,14 +407,13 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 			{
 				cd2ContactPointWide* cp = c->points + k;
 				cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
-				cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+				cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
 				cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
 				cdW vt = cdWSub(cdWAdd(cdWMul(dvx, tx), cdWMul(dvy, ty)), c->tangentSpeed);
-				cdW impulse = cdWMul(cdWNeg(cp->tangentMass), vt);
 				cdW maxFriction = cdWMul(c->friction, cp->normalImpulse);
-				cdW newImpulse =
-					cdWClamp(cdWAdd(cp->tangentImpulse, impulse), cdWNeg(maxFriction), maxFriction);
-				impulse = cdWSub(newImpulse, cp->tangentImpulse);
+				cdW newImpulse = cdWClamp(cdWSub(cp->tangentImpulse, cdWMul(cp->tangentMass, vt)),
+										  cdWNeg(maxFriction), maxFriction);
+				cdW impulse = cdWSub(newImpulse, cp->tangentImpulse);
 				cp->tangentImpulse = newImpulse;
 				cdW Px = cdWMul(impulse, tx), Py = cdWMul(impulse, ty);
 				vAx = cdWSub(vAx, cdWMul(mA, Px));
@@ -476,14 +485,13 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 				continue;
 			}
 			cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
-			cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+			cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
 			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
 			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
 			cdW approach = cdWMin(cdWAdd(cp->relativeVelocity, cdWMul(h, c->normalAcceleration)), zero);
-			cdW impulse =
-				cdWMul(cdWNeg(cp->normalMass), cdWAdd(vn, cdWMul(c->restitution, approach)));
-			cdW newImpulse = cdWMax(cdWAdd(cp->normalImpulse, impulse), zero);
-			impulse = cdWSub(newImpulse, cp->normalImpulse);
+			cdW negImpulse = cdWMul(cp->normalMass, cdWAdd(vn, cdWMul(c->restitution, approach)));
+			cdW newImpulse = cdWMax(cdWSub(cp->normalImpulse, negImpulse), zero);
+			cdW impulse = cdWSub(newImpulse, cp->normalImpulse);
 			cp->normalImpulse = cdWSelect(apply, newImpulse, cp->normalImpulse);
 			cp->maxNormalImpulse = cdWSelect(apply, cdWMax(cp->maxNormalImpulse, impulse), cp->maxNormalImpulse);
 			cdW Px = cdWMul(impulse, nx), Py = cdWMul(impulse, ny);
@@ -504,6 +512,17 @@ void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlo
 	for (int i = startBlock; i < endBlock; ++i)
 	{
 		const cd2ContactConstraintWide* w = context->wide + i;
+		/* The records of the block after next (their lines arrive while these are written). */
+		if (i + 2 < context->wideCount)
+		{
+			for (int lane = 0; lane < CD_W; ++lane)
+			{
+				if (context->wide[i + 2].contact[lane] >= 0)
+				{
+					cd2PrefetchContactRecord(world, context->wide[i + 2].contact[lane]);
+				}
+			}
+		}
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
 			if (w->contact[lane] < 0)
