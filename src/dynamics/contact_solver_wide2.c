@@ -213,9 +213,28 @@ static CD2_ALWAYS_INLINE void cd2PrefetchContact(const cd2World* world, const cd
 	}
 }
 
+/* What the pack reads of a block's contacts and bodies, lane by lane (zero in empty lanes and for a
+ * missing second point), before the wide arithmetic. */
+typedef struct cd2PackInput
+{
+	cdReal invMassA[CD_W], invIA[CD_W], invMassB[CD_W], invIB[CD_W];
+	cdReal normalX[CD_W], normalY[CD_W];
+	cdReal vAx[CD_W], vAy[CD_W], wA[CD_W], vBx[CD_W], vBy[CD_W], wB[CD_W];
+	cdReal pointCount[CD_W];
+	cdReal anchorAx[2][CD_W], anchorAy[2][CD_W], anchorBx[2][CD_W], anchorBy[2][CD_W];
+	cdReal separation[2][CD_W];
+} cd2PackInput;
+
+/* cd2PrepareContactConstraint for the CD_W lanes of a block: the contact's own values are copied lane
+ * by lane, and the derived ones (masses, base separations, approach speeds) computed with the same
+ * operations in the same order on whole blocks, so every lane gets the one-by-one bits. */
 void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
-	int zeroBody = context->bodyCount;
+	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+	int zeroIndex = context->bodyCount;
+	bool warm = context->enableWarmStarting;
+	cdW zero = cdWZero(), one = cdWSplat(CD_R(1.0));
 	int color = 0;
 	for (int block = startBlock; block < endBlock; ++block)
 	{
@@ -234,13 +253,21 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			}
 		}
 		cd2ContactConstraintWide* w = context->wide + block;
-		memset(w, 0, sizeof(*w));
+		cd2PackInput in;
+		memset(&in, 0, sizeof(in));
+		cdReal restitution[CD_W] = {0}, friction[CD_W] = {0}, tangentSpeed[CD_W] = {0};
+		cdReal rollingResistance[CD_W] = {0}, rollingImpulse[CD_W] = {0}, normalAcceleration[CD_W] = {0};
+		cdReal biasRate[CD_W] = {0}, massScale[CD_W] = {0}, impulseScale[CD_W] = {0};
+		cdReal normalImpulse[2][CD_W] = {{0}}, tangentImpulse[2][CD_W] = {{0}};
 		bool bounces = false;
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
-			w->indexA[lane] = zeroBody;
-			w->indexB[lane] = zeroBody;
+			w->indexA[lane] = zeroIndex;
+			w->indexB[lane] = zeroIndex;
 			w->contact[lane] = -1;
+			w->pointCount[lane] = 0;
+			w->movesA[lane] = 0;
+			w->movesB[lane] = 0;
 			/* An empty lane's rotation is the identity, like the zero body's. */
 			if (first + lane >= last)
 			{
@@ -248,53 +275,120 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			}
 			/* The next blocks' records (of this colour or the next). */
 			cd2PrefetchContact(world, context, first + lane + CD2_PACK_PREFETCH_AHEAD);
-			cd2ContactConstraint prepared;
-			const cd2ContactConstraint* c = &prepared;
-			cd2PrepareContactConstraint(world, context, context->pairs + first + lane, &prepared);
-			w->contact[lane] = c->contact;
-			w->pointCount[lane] = (unsigned char)c->pointCount;
-			w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
-			w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
+			const cd2ConstraintPair* pair = context->pairs + first + lane;
+			const cd2Contact* contact = world->contacts.data + pair->contact;
+			/* A sleeping or static body is immovable for this step. */
+			const cd2SolverBody* bodyA = pair->indexA < 0 ? &zeroBody : context->bodies + pair->indexA;
+			const cd2SolverBody* bodyB = pair->indexB < 0 ? &zeroBody : context->bodies + pair->indexB;
+			cdReal mA = bodyA->invMass, iA = bodyA->invInertia, mB = bodyB->invMass, iB = bodyB->invInertia;
+			w->contact[lane] = pair->contact;
+			w->pointCount[lane] = (unsigned char)contact->pointCount;
+			w->indexA[lane] = pair->indexA < 0 ? zeroIndex : pair->indexA;
+			w->indexB[lane] = pair->indexB < 0 ? zeroIndex : pair->indexB;
 			/* Immovable: both inverse masses zero (the velocity update would add nothing). */
-			w->movesA[lane] =
-				(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
-			w->movesB[lane] =
-				(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
-			bounces = bounces || c->restitution != CD_R(0.0);
-			cdWSetLane(&w->invMassA, lane, c->invMassA);
-			cdWSetLane(&w->invIA, lane, c->invIA);
-			cdWSetLane(&w->invMassB, lane, c->invMassB);
-			cdWSetLane(&w->invIB, lane, c->invIB);
-			cdWSetLane(&w->normalX, lane, c->normal.x);
-			cdWSetLane(&w->normalY, lane, c->normal.y);
-			cdWSetLane(&w->friction, lane, c->friction);
-			cdWSetLane(&w->tangentSpeed, lane, c->tangentSpeed);
-			cdWSetLane(&w->rollingResistance, lane, c->rollingResistance);
-			cdWSetLane(&w->rollingMass, lane, c->rollingMass);
-			cdWSetLane(&w->rollingImpulse, lane, c->rollingImpulse);
-			cdWSetLane(&w->biasRate, lane, c->softness.biasRate);
-			cdWSetLane(&w->massScale, lane, c->softness.massScale);
-			cdWSetLane(&w->impulseScale, lane, c->softness.impulseScale);
-			cdWSetLane(&w->restitution, lane, c->restitution);
-			cdWSetLane(&w->normalAcceleration, lane, c->normalAcceleration);
-			for (int k = 0; k < c->pointCount; ++k)
+			w->movesA[lane] = (unsigned char)(pair->indexA >= 0 && (mA != CD_R(0.0) || iA != CD_R(0.0)));
+			w->movesB[lane] = (unsigned char)(pair->indexB >= 0 && (mB != CD_R(0.0) || iB != CD_R(0.0)));
+			const cd2Softness* soft =
+				(mA == CD_R(0.0) || mB == CD_R(0.0)) ? &context->staticSoftness : &context->contactSoftness;
+			biasRate[lane] = soft->biasRate;
+			massScale[lane] = soft->massScale;
+			impulseScale[lane] = soft->impulseScale;
+			in.invMassA[lane] = mA;
+			in.invIA[lane] = iA;
+			in.invMassB[lane] = mB;
+			in.invIB[lane] = iB;
+			cd2Vec n = contact->normal;
+			in.normalX[lane] = n.x;
+			in.normalY[lane] = n.y;
+			friction[lane] = contact->friction;
+			restitution[lane] = contact->restitution;
+			bounces = bounces || contact->restitution != CD_R(0.0);
+			rollingResistance[lane] = contact->rollingResistance;
+			tangentSpeed[lane] = contact->tangentSpeed;
+			rollingImpulse[lane] = contact->rollingImpulse;
+			cd2Vec accA = pair->indexA < 0 ? CD2_VEC_ZERO : context->accelerations[pair->indexA];
+			cd2Vec accB = pair->indexB < 0 ? CD2_VEC_ZERO : context->accelerations[pair->indexB];
+			normalAcceleration[lane] = cd2Dot(n, cd2Sub(accB, accA));
+			in.vAx[lane] = bodyA->linearVelocity.x;
+			in.vAy[lane] = bodyA->linearVelocity.y;
+			in.wA[lane] = bodyA->angularVelocity;
+			in.vBx[lane] = bodyB->linearVelocity.x;
+			in.vBy[lane] = bodyB->linearVelocity.y;
+			in.wB[lane] = bodyB->angularVelocity;
+			in.pointCount[lane] = (cdReal)contact->pointCount;
+			for (int k = 0; k < contact->pointCount; ++k)
 			{
-				const cd2ContactConstraintPoint* cp = c->points + k;
-				cd2ContactPointWide* wp = w->points + k;
-				cdWSetLane(&wp->anchorAx, lane, cp->anchorA.x);
-				cdWSetLane(&wp->anchorAy, lane, cp->anchorA.y);
-				cdWSetLane(&wp->anchorBx, lane, cp->anchorB.x);
-				cdWSetLane(&wp->anchorBy, lane, cp->anchorB.y);
-				cdWSetLane(&wp->baseSeparation, lane, cp->baseSeparation);
-				cdWSetLane(&wp->relativeVelocity, lane, cp->relativeVelocity);
-				cdWSetLane(&wp->normalImpulse, lane, cp->normalImpulse);
-				cdWSetLane(&wp->tangentImpulse, lane, cp->tangentImpulse);
-				cdWSetLane(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
-				cdWSetLane(&wp->normalMass, lane, cp->normalMass);
-				cdWSetLane(&wp->tangentMass, lane, cp->tangentMass);
+				const cd2ContactPoint* mp = contact->points + k;
+				in.anchorAx[k][lane] = mp->anchorA.x;
+				in.anchorAy[k][lane] = mp->anchorA.y;
+				in.anchorBx[k][lane] = mp->anchorB.x;
+				in.anchorBy[k][lane] = mp->anchorB.y;
+				in.separation[k][lane] = mp->separation;
+				normalImpulse[k][lane] = warm ? mp->normalImpulse : CD_R(0.0);
+				tangentImpulse[k][lane] = warm ? mp->tangentImpulse : CD_R(0.0);
 			}
 		}
 		w->bounces = bounces;
+		cdW mA = cdWLoad(in.invMassA), iA = cdWLoad(in.invIA), mB = cdWLoad(in.invMassB), iB = cdWLoad(in.invIB);
+		cdW nx = cdWLoad(in.normalX), ny = cdWLoad(in.normalY);
+		cdW tx = ny, ty = cdWNeg(nx);
+		cdW vAx = cdWLoad(in.vAx), vAy = cdWLoad(in.vAy), wA = cdWLoad(in.wA);
+		cdW vBx = cdWLoad(in.vBx), vBy = cdWLoad(in.vBy), wB = cdWLoad(in.wB);
+		w->invMassA = mA;
+		w->invIA = iA;
+		w->invMassB = mB;
+		w->invIB = iB;
+		w->normalX = nx;
+		w->normalY = ny;
+		w->friction = cdWLoad(friction);
+		w->tangentSpeed = cdWLoad(tangentSpeed);
+		w->rollingResistance = cdWLoad(rollingResistance);
+		w->rollingImpulse = cdWLoad(rollingImpulse);
+		w->biasRate = cdWLoad(biasRate);
+		w->massScale = cdWLoad(massScale);
+		w->impulseScale = cdWLoad(impulseScale);
+		w->restitution = cdWLoad(restitution);
+		w->normalAcceleration = cdWLoad(normalAcceleration);
+		cdW iSum = cdWAdd(iA, iB);
+		cdW positive = cdWGreater(iSum, zero);
+		w->rollingMass = cdWSelect(positive, cdWDiv(one, cdWSelect(positive, iSum, one)), zero);
+		cdW mSum = cdWAdd(mA, mB);
+		cdW pointCount = cdWLoad(in.pointCount);
+		for (int k = 0; k < 2; ++k)
+		{
+			cd2ContactPointWide* wp = w->points + k;
+			/* Lanes without this point keep zeros, as one by one. */
+			cdW has = cdWGreater(pointCount, cdWSplat((cdReal)k));
+			cdW aAx = cdWLoad(in.anchorAx[k]), aAy = cdWLoad(in.anchorAy[k]);
+			cdW aBx = cdWLoad(in.anchorBx[k]), aBy = cdWLoad(in.anchorBy[k]);
+			wp->anchorAx = aAx;
+			wp->anchorAy = aAy;
+			wp->anchorBx = aBx;
+			wp->anchorBy = aBy;
+			wp->baseSeparation = cdWSelect(
+				has,
+				cdWSub(cdWLoad(in.separation[k]),
+					   cdWAdd(cdWMul(cdWSub(aBx, aAx), nx), cdWMul(cdWSub(aBy, aAy), ny))),
+				zero);
+			wp->normalImpulse = cdWLoad(normalImpulse[k]);
+			wp->tangentImpulse = cdWLoad(tangentImpulse[k]);
+			wp->maxNormalImpulse = zero;
+			cdW rnA = cdWSub(cdWMul(aAx, ny), cdWMul(aAy, nx));
+			cdW rnB = cdWSub(cdWMul(aBx, ny), cdWMul(aBy, nx));
+			cdW kNormal = cdWAdd(cdWAdd(mSum, cdWMul(cdWMul(iA, rnA), rnA)), cdWMul(cdWMul(iB, rnB), rnB));
+			cdW usable = cdWAnd(has, cdWGreater(kNormal, zero));
+			wp->normalMass = cdWSelect(usable, cdWDiv(one, cdWSelect(usable, kNormal, one)), zero);
+			cdW rtA = cdWSub(cdWMul(aAx, ty), cdWMul(aAy, tx));
+			cdW rtB = cdWSub(cdWMul(aBx, ty), cdWMul(aBy, tx));
+			cdW kTangent = cdWAdd(cdWAdd(mSum, cdWMul(cdWMul(iA, rtA), rtA)), cdWMul(cdWMul(iB, rtB), rtB));
+			usable = cdWAnd(has, cdWGreater(kTangent, zero));
+			wp->tangentMass = cdWSelect(usable, cdWDiv(one, cdWSelect(usable, kTangent, one)), zero);
+			/* The approach speed at the start of the step. */
+			cdW vrAx = cdWAdd(vAx, cdWMul(cdWNeg(wA), aAy)), vrAy = cdWAdd(vAy, cdWMul(wA, aAx));
+			cdW vrBx = cdWAdd(vBx, cdWMul(cdWNeg(wB), aBy)), vrBy = cdWAdd(vBy, cdWMul(wB, aBx));
+			wp->relativeVelocity =
+				cdWSelect(has, cdWAdd(cdWMul(nx, cdWSub(vrBx, vrAx)), cdWMul(ny, cdWSub(vrBy, vrAy))), zero);
+		}
 	}
 }
 
