@@ -185,7 +185,7 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 
 /* How many constraints ahead the pack asks for the contact records: they are read in colour order,
  * scattered over the contact array. */
-#define CD2_PACK_PREFETCH_AHEAD 8
+#define CD2_PACK_PREFETCH_AHEAD 24
 
 /* Asks for the lines of contact record `contact` from its normal to its tangent speed: what
  * cd2PrepareContactConstraint reads and the store writes. */
