@@ -22,12 +22,15 @@ static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index,
 	return context->bodies + index;
 }
 
-void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
+bool cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
 {
+	bool bounces = false;
 	for (int i = start; i < end; ++i)
 	{
 		cd2PrepareContactConstraint(world, context, context->pairs + i, context->constraints + i);
+		bounces = bounces || context->constraints[i].restitution != CD_R(0.0);
 	}
+	return bounces;
 }
 
 void cd2WarmStartContacts(cd2StepContext* context)

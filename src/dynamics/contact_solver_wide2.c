@@ -228,8 +228,9 @@ typedef struct cd2PackInput
 /* cd2PrepareContactConstraint for the CD_W lanes of a block: the contact's own values are copied lane
  * by lane, and the derived ones (masses, base separations, approach speeds) computed with the same
  * operations in the same order on whole blocks, so every lane gets the one-by-one bits. */
-void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
+bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
+	bool anyBounces = false;
 	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
 										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
 	int zeroIndex = context->bodyCount;
@@ -329,6 +330,7 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			}
 		}
 		w->bounces = bounces;
+		anyBounces = anyBounces || bounces;
 		cdW mA = cdWLoad(in.invMassA), iA = cdWLoad(in.invIA), mB = cdWLoad(in.invMassB), iB = cdWLoad(in.invIB);
 		cdW nx = cdWLoad(in.normalX), ny = cdWLoad(in.normalY);
 		cdW tx = ny, ty = cdWNeg(nx);
@@ -390,6 +392,7 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 				cdWSelect(has, cdWAdd(cdWMul(nx, cdWSub(vrBx, vrAx)), cdWMul(ny, cdWSub(vrBy, vrAy))), zero);
 		}
 	}
+	return anyBounces;
 }
 
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)

@@ -234,6 +234,9 @@ typedef struct cd2StageList
 	cd2Stage* stages;
 	int stageCount, stageCapacity;
 	int workerCount;
+	/* Set by the prepare and pack stages when a constraint has restitution; the restitution stages,
+	 * after them, are passed over by every worker while it is 0. */
+	cd2StageCounter* bouncing;
 } cd2StageList;
 
 /* Appends a stage of itemCount items in blocks of at least minBlock (a few blocks per worker). */
@@ -276,6 +279,28 @@ static void cd2AddWideStages(cd2StageList* list, cd2StageKind kind, bool useBias
 	}
 }
 
+static void cd2SetBouncing(const cd2StageList* list)
+{
+#if CD2_STAGE_ATOMICS
+	atomic_store_explicit(list->bouncing, 1, memory_order_relaxed);
+#else
+	*list->bouncing = 1;
+#endif
+}
+
+static bool cd2StageSkipped(const cd2StageList* list, const cd2Stage* stage)
+{
+	if (stage->kind != CD2_STAGE_RESTITUTION_WIDE && stage->kind != CD2_STAGE_RESTITUTION)
+	{
+		return false;
+	}
+#if CD2_STAGE_ATOMICS
+	return atomic_load_explicit(list->bouncing, memory_order_relaxed) == 0;
+#else
+	return *list->bouncing == 0;
+#endif
+}
+
 static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int start, int end)
 {
 	cd2World* world = list->world;
@@ -283,10 +308,16 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	switch (stage->kind)
 	{
 		case CD2_STAGE_PREPARE_CONTACTS:
-			cd2PrepareContacts(world, context, stage->first + start, stage->first + end);
+			if (cd2PrepareContacts(world, context, stage->first + start, stage->first + end))
+			{
+				cd2SetBouncing(list);
+			}
 			break;
 		case CD2_STAGE_PACK_WIDE:
-			cd2PackContactsWide(world, context, start, end);
+			if (cd2PackContactsWide(world, context, start, end))
+			{
+				cd2SetBouncing(list);
+			}
 			break;
 		case CD2_STAGE_INTEGRATE_VELOCITIES:
 			cd2IntegrateVelocities(context, start, end);
@@ -343,6 +374,12 @@ static void cd2RunStages(const cd2StageList* list)
 	for (int s = 0; s < list->stageCount; ++s)
 	{
 		cd2Stage* stage = list->stages + s;
+		/* Every worker reads the same flag here: it was set before the stages that set it were
+		 * seen finished. */
+		if (cd2StageSkipped(list, stage))
+		{
+			continue;
+		}
 #if CD2_STAGE_ATOMICS
 		for (;;)
 		{
@@ -630,7 +667,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	/* Touching contacts with an awake body: their pairs in index order, small records (the constraints
 	 * themselves are filled by the prepare stage, in colour order). */
 	int hitCandidates = 0;
-	int bouncing = 0; /* constraints with restitution */
 	int contactCapacity = world->contacts.count;
 	cd2ConstraintPair* pairs = (cd2ConstraintPair*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
@@ -660,7 +696,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			continue;
 		}
 		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
-		bouncing += contact->restitution != CD_R(0.0) ? 1 : 0;
 		int k = context.constraintCount++;
 		pairs[k].contact = i;
 		pairs[k].indexA = indexA;
@@ -727,6 +762,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.world = world;
 	list.step = &context;
 	list.workerCount = world->workerCount;
+	cd2StageCounter bouncing;
+#if CD2_STAGE_ATOMICS
+	atomic_init(&bouncing, 0);
+#else
+	bouncing = 0;
+#endif
+	list.bouncing = &bouncing;
 	list.stageCapacity = 8 + context.colorCount + subStepCount * (8 + 3 * context.colorCount);
 	list.stages =
 		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
@@ -757,13 +799,10 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, false);
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}
-	/* Restitution colour by colour, then the overflow colour's (the order of the one-by-one pass);
-	 * then the impulses back into the contacts. */
-	if (bouncing > 0)
-	{
-		cd2AddWideStages(&list, CD2_STAGE_RESTITUTION_WIDE, false);
-		cd2AddStage(&list, CD2_STAGE_RESTITUTION, overflowCount, 1, 0, false);
-	}
+	/* Restitution colour by colour, then the overflow colour's (the order of the one-by-one pass),
+	 * passed over when no constraint has restitution; then the impulses back into the contacts. */
+	cd2AddWideStages(&list, CD2_STAGE_RESTITUTION_WIDE, false);
+	cd2AddStage(&list, CD2_STAGE_RESTITUTION, overflowCount, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - context.overflowStart, 32,
 				context.overflowStart, false);

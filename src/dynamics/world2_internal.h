@@ -489,8 +489,9 @@ static inline void cd2PrepareContactConstraint(const cd2World* world, const cd2S
 		cp->relativeVelocity = cd2Dot(n, cd2Sub(vrB, vrA));
 	}
 }
-/* Constraints [start, end): each reads its contact and bodies and writes only itself. */
-void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end);
+/* Constraints [start, end): each reads its contact and bodies and writes only itself. true when
+ * one of them has restitution. */
+bool cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end);
 void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
@@ -499,9 +500,9 @@ void cd2ApplyRestitution(cd2StepContext* context);
 void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext);
 /* Lays the coloured constraints out in wide blocks (colorBlockStart, overflowStart) and allocates
  * them; cd2PackContactsWide then prepares the constraints of blocks [start, end)
- * (cd2PrepareContactConstraint) straight into the blocks. */
+ * (cd2PrepareContactConstraint's values) straight into the blocks, true when one has restitution. */
 bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
-void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock);
+bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock);
 /* Blocks [start, end) of the wide constraints (one colour at most, see colorBlockStart). */
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end);
 void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias);
