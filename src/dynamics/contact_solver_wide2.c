@@ -205,6 +205,23 @@ static CD2_ALWAYS_INLINE void cd2PrefetchContactRecord(const cd2World* world, in
 #endif
 }
 
+/* The same for writing: the lines of the record's points and rolling impulse. */
+static CD2_ALWAYS_INLINE void cd2PrefetchContactForStore(const cd2World* world, int contact)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	const char* first = (const char*)&world->contacts.data[contact].points[0].normalImpulse;
+	const char* last = (const char*)(&world->contacts.data[contact].rollingImpulse + 1);
+	for (const char* p = first; p < last; p += 64)
+	{
+		__builtin_prefetch(p, 1);
+	}
+	__builtin_prefetch(last - 1, 1);
+#else
+	(void)world;
+	(void)contact;
+#endif
+}
+
 static CD2_ALWAYS_INLINE void cd2PrefetchContact(const cd2World* world, const cd2StepContext* context, int i)
 {
 	if (i < context->constraintCount)
@@ -604,19 +621,23 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 	}
 }
 
+/* In blocks: how far ahead the store asks for the contact records it will write. */
+#define CD2_STORE_PREFETCH_AHEAD 4
+
 void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
 	for (int i = startBlock; i < endBlock; ++i)
 	{
 		const cd2ContactConstraintWide* w = context->wide + i;
-		/* The records of the block after next (their lines arrive while these are written). */
-		if (i + 2 < context->wideCount)
+		/* The records of a few blocks ahead (their lines arrive while these are written). */
+		if (i + CD2_STORE_PREFETCH_AHEAD < context->wideCount)
 		{
+			const cd2ContactConstraintWide* ahead = context->wide + i + CD2_STORE_PREFETCH_AHEAD;
 			for (int lane = 0; lane < CD_W; ++lane)
 			{
-				if (context->wide[i + 2].contact[lane] >= 0)
+				if (ahead->contact[lane] >= 0)
 				{
-					cd2PrefetchContactRecord(world, context->wide[i + 2].contact[lane]);
+					cd2PrefetchContactForStore(world, ahead->contact[lane]);
 				}
 			}
 		}
