@@ -27,8 +27,9 @@ bool cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int star
 	bool bounces = false;
 	for (int i = start; i < end; ++i)
 	{
-		cd2PrepareContactConstraint(world, context, context->pairs + i, context->constraints + i);
-		bounces = bounces || context->constraints[i].restitution != CD_R(0.0);
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
+		cd2PrepareContactConstraint(world, context, context->pairs + i, c);
+		bounces = bounces || c->restitution != CD_R(0.0);
 	}
 	return bounces;
 }
@@ -38,7 +39,7 @@ void cd2WarmStartContacts(cd2StepContext* context)
 	cd2SolverBody scratchA, scratchB;
 	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
 		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
 		cd2Vec n = c->normal, t = cd2RightPerp(n);
@@ -75,7 +76,7 @@ void cd2SolveContacts(cd2StepContext* context, bool useBias)
 	cdReal maxPush = context->contactPushMaxVelocity;
 	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
 		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
 		cdReal mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
@@ -176,7 +177,7 @@ void cd2ApplyRestitution(cd2StepContext* context)
 	cdReal threshold = context->restitutionThreshold;
 	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		if (c->restitution == CD_R(0.0))
 		{
 			continue;
@@ -230,7 +231,7 @@ void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start,
 {
 	for (int i = start; i < end; ++i)
 	{
-		const cd2ContactConstraint* c = context->constraints + i;
+		const cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		cd2Contact* contact = world->contacts.data + c->contact;
 		contact->rollingImpulse = c->rollingImpulse;
 		for (int k = 0; k < c->pointCount; ++k)

@@ -673,10 +673,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	/* The colouring's bodies of each pair. */
 	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
-	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
-		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
-	if (contactCapacity > 0 &&
-		(pairs == NULL || bodyA == NULL || bodyB == NULL || context.constraints == NULL))
+	if (contactCapacity > 0 && (pairs == NULL || bodyA == NULL || bodyB == NULL))
 	{
 		world->outOfMemory = true;
 		return;
@@ -753,6 +750,15 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		/* Out of scratch memory: every constraint one by one. */
 		context.wideCount = 0;
 		context.overflowStart = 0;
+	}
+	/* One-by-one constraints for the overflow colour only (constraint i at i - overflowStart). */
+	int overflowConstraints = context.constraintCount - context.overflowStart;
+	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
+		&world->arena, (size_t)overflowConstraints * sizeof(cd2ContactConstraint));
+	if (overflowConstraints > 0 && context.constraints == NULL)
+	{
+		world->outOfMemory = true;
+		return;
 	}
 	cd2PrepareJoints(world, &context);
 

@@ -275,7 +275,7 @@ typedef struct cd2StepContext
 	cd2SolverBodyParams* params;
 	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
-	cd2ContactConstraint* constraints;
+	cd2ContactConstraint* constraints; /* the overflow colour's, from overflowStart on */
 	const cd2ConstraintPair* pairs;		 /* of each constraint (colour order), for cd2PrepareContacts */
 	const cd2ConstraintPair* indexOrder; /* the same in contact index order */
 	int constraintCount;
