@@ -274,7 +274,7 @@ bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 		cd2PackInput in;
 		memset(&in, 0, sizeof(in));
 		cdReal restitution[CD_W] = {0}, friction[CD_W] = {0}, tangentSpeed[CD_W] = {0};
-		cdReal rollingResistance[CD_W] = {0}, rollingImpulse[CD_W] = {0}, normalAcceleration[CD_W] = {0};
+		cdReal rollingResistance[CD_W] = {0}, rollingImpulse[CD_W] = {0};
 		cdReal biasRate[CD_W] = {0}, massScale[CD_W] = {0}, impulseScale[CD_W] = {0};
 		cdReal normalImpulse[2][CD_W] = {{0}}, tangentImpulse[2][CD_W] = {{0}};
 		bool bounces = false;
@@ -324,9 +324,6 @@ bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			rollingResistance[lane] = contact->rollingResistance;
 			tangentSpeed[lane] = contact->tangentSpeed;
 			rollingImpulse[lane] = contact->rollingImpulse;
-			cd2Vec accA = pair->indexA < 0 ? CD2_VEC_ZERO : context->accelerations[pair->indexA];
-			cd2Vec accB = pair->indexB < 0 ? CD2_VEC_ZERO : context->accelerations[pair->indexB];
-			normalAcceleration[lane] = cd2Dot(n, cd2Sub(accB, accA));
 			in.vAx[lane] = bodyA->linearVelocity.x;
 			in.vAy[lane] = bodyA->linearVelocity.y;
 			in.wA[lane] = bodyA->angularVelocity;
@@ -367,7 +364,6 @@ bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 		w->massScale = cdWLoad(massScale);
 		w->impulseScale = cdWLoad(impulseScale);
 		w->restitution = cdWLoad(restitution);
-		w->normalAcceleration = cdWLoad(normalAcceleration);
 		cdW iSum = cdWAdd(iA, iB);
 		cdW positive = cdWGreater(iSum, zero);
 		w->rollingMass = cdWSelect(positive, cdWDiv(one, cdWSelect(positive, iSum, one)), zero);
@@ -575,6 +571,7 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 	cdW threshold = cdWSplat(-context->restitutionThreshold);
 	cdW h = cdWSplat(context->h);
 	cdW zero = cdWZero();
+	int zeroIndex = context->bodyCount;
 	for (int i = start; i < end; ++i)
 	{
 		cd2ContactConstraintWide* c = context->wide + i;
@@ -588,6 +585,17 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
 		cdW nx = c->normalX, ny = c->normalY;
 		cdW bouncy = cdWNotEqual(c->restitution, zero);
+		/* B's acceleration relative to A's along the normal (the zero body's is zero), read only
+		 * here: the pack leaves the accelerations alone. */
+		cdReal accelerationLanes[CD_W];
+		for (int lane = 0; lane < CD_W; ++lane)
+		{
+			cd2Vec n = {cdWGetLane(&nx, lane), cdWGetLane(&ny, lane)};
+			cd2Vec accA = c->indexA[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexA[lane]];
+			cd2Vec accB = c->indexB[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexB[lane]];
+			accelerationLanes[lane] = cd2Dot(n, cd2Sub(accB, accA));
+		}
+		cdW normalAcceleration = cdWLoad(accelerationLanes);
 		for (int k = 0; k < 2; ++k)
 		{
 			cd2ContactPointWide* cp = c->points + k;
@@ -602,7 +610,7 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 			cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
 			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
 			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
-			cdW approach = cdWMin(cdWAdd(cp->relativeVelocity, cdWMul(h, c->normalAcceleration)), zero);
+			cdW approach = cdWMin(cdWAdd(cp->relativeVelocity, cdWMul(h, normalAcceleration)), zero);
 			cdW negImpulse = cdWMul(cp->normalMass, cdWAdd(vn, cdWMul(c->restitution, approach)));
 			cdW newImpulse = cdWMax(cdWSub(cp->normalImpulse, negImpulse), zero);
 			cdW impulse = cdWSub(newImpulse, cp->normalImpulse);

@@ -253,7 +253,7 @@ typedef struct cd2ContactConstraintWide
 	cdW normalX, normalY;
 	cdW friction, tangentSpeed, rollingResistance, rollingMass, rollingImpulse;
 	cdW biasRate, massScale, impulseScale;
-	cdW restitution, normalAcceleration;
+	cdW restitution;
 	cd2ContactPointWide points[2];
 	int indexA[CD_W], indexB[CD_W]; /* solver bodies; the zero body (index bodyCount) when immovable */
 	/* 1 when the lane's body can move (its velocity is written back): immovable bodies (the zero
