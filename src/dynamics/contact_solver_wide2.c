@@ -579,12 +579,25 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 		{
 			continue;
 		}
+		/* Only points that were approaching fast enough and actually pushed bounce (what a point
+		 * bounces on is its own, so both points are known before either is solved). */
+		cdW bouncy = cdWNotEqual(c->restitution, zero);
+		cdW applies[2];
+		for (int k = 0; k < 2; ++k)
+		{
+			const cd2ContactPointWide* cp = c->points + k;
+			cdW skip = cdWOr(cdWGreater(cp->relativeVelocity, threshold), cdWEqual(cp->maxNormalImpulse, zero));
+			applies[k] = cdWAndNot(skip, bouncy);
+		}
+		if (!cdWAny(cdWOr(applies[0], applies[1])))
+		{
+			continue;
+		}
 		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
 		cd2BodyLanes b = cd2GatherBodies(bodies, c->indexB);
 		cdW mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
 		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
 		cdW nx = c->normalX, ny = c->normalY;
-		cdW bouncy = cdWNotEqual(c->restitution, zero);
 		/* B's acceleration relative to A's along the normal (the zero body's is zero), read only
 		 * here: the pack leaves the accelerations alone. */
 		cdReal accelerationLanes[CD_W];
@@ -599,9 +612,7 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 		for (int k = 0; k < 2; ++k)
 		{
 			cd2ContactPointWide* cp = c->points + k;
-			/* Only points that were approaching fast enough and actually pushed bounce. */
-			cdW skip = cdWOr(cdWGreater(cp->relativeVelocity, threshold), cdWEqual(cp->maxNormalImpulse, zero));
-			cdW apply = cdWAndNot(skip, bouncy);
+			cdW apply = applies[k];
 			if (!cdWAny(apply))
 			{
 				continue;
