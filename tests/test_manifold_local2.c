@@ -308,9 +308,10 @@ static void TestFarFromOrigin(void)
 
 /* cd2CollideCirclePolygonLocal has its own scan of the polygon's edges (it stops at the first edge
  * the circle is beyond): its manifold must be, bit for bit, the world form's on the circle's centre
- * placed in the polygon's frame as the local form places it, mapped back by xfB. Centres aimed at
- * every feature: near and exactly on vertices, on edges, inside (ties between equal edges
- * included, with the identity transform so that the centre lands exactly), and far away. */
+ * placed in the polygon's frame as the local form places it (cd2InvTransformPoint), mapped back by
+ * xfB. Centres aimed at every feature: near and exactly on vertices, on edges, inside (ties between
+ * equal edges included, with the identity transform so that the centre lands exactly), and far
+ * away. */
 static void TestCirclePolygonScan(void)
 {
 	TestRng rng = TestRngMake(0x5ca7c1u);
@@ -368,10 +369,8 @@ static void TestCirclePolygonScan(void)
 		cdReal speculative = (cdReal)(0.1 * TestRngInt(&rng, 3));
 		cd2Manifold local = cd2CollideCirclePolygonLocal(circle, &polygon, xf, speculative);
 
-		cd2Rot inverseQ = {xf.q.c, -xf.q.s};
 		cd2Circle placed = circle;
-		placed.center =
-			cd2Add(cd2RotateVector(inverseQ, circle.center), cd2Neg(cd2InvRotateVector(xf.q, xf.p)));
+		placed.center = cd2InvTransformPoint(xf, circle.center);
 		cd2Manifold world = cd2CollideCirclePolygon(placed, &polygon, speculative);
 		cd2Manifold expected = world;
 		if (world.pointCount == 1)

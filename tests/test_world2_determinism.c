@@ -276,6 +276,135 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 #endif
 }
 
+/* A hanging grid of bodies joined by revolute joints (Box2D's joint_grid, smaller) with a
+ * kinematic bar swinging a second grid, and boxes dropped through: the joints are solved colour by
+ * colour on every worker, and a colour's joints share no awake body (the kinematic bar included),
+ * so the bits are the same for any worker count. The ThreadSanitizer job runs this test. */
+static uint64_t RunJointGrid(int workerCount, TestTaskSystem* system)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.workerCount = workerCount;
+	if (system != NULL)
+	{
+		system->workerCount = workerCount;
+		wd.enqueueTask = TestEnqueue;
+		wd.finishTask = TestFinish;
+		wd.userTaskContext = system;
+	}
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	bd.type = CD_KINEMATIC_BODY;
+	bd.position = cd2MakeVec(CD_R(20.0), CD_R(0.0));
+	bd.angularVelocity = CD_R(0.5);
+	cd2BodyId bar = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.filter.groupIndex = -1; /* the grids' links do not collide with each other */
+	cd2Circle link = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.4)};
+	enum
+	{
+		N = 10,
+		GRIDS = 2,
+		DROPS = 12
+	};
+	cd2BodyId bodies[GRIDS * N * N + DROPS];
+	int count = 0;
+	for (int g = 0; g < GRIDS; ++g)
+	{
+		cd2Vec origin = cd2MakeVec(CD_R(20.0) * (cdReal)g, CD_R(0.0));
+		cd2BodyId anchor = g == 0 ? ground : bar;
+		for (int k = 0; k < N; ++k)
+		{
+			for (int i = 0; i < N; ++i)
+			{
+				bd = cd2DefaultBodyDef();
+				bd.type = CD_DYNAMIC_BODY;
+				bd.position = cd2MakeVec(origin.x + (cdReal)k, origin.y - (cdReal)i);
+				cd2BodyId body = cd2CreateBody(world, &bd);
+				cd2CreateCircleShape(body, &sd, &link);
+				cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+				if (i > 0)
+				{
+					jd.bodyIdA = bodies[count - 1];
+					jd.bodyIdB = body;
+					jd.localAnchorA = cd2MakeVec(CD_R(0.0), CD_R(-0.5));
+					jd.localAnchorB = cd2MakeVec(CD_R(0.0), CD_R(0.5));
+					cd2CreateRevoluteJoint(world, &jd);
+				}
+				else if (k == 0 || k == N - 1)
+				{
+					jd.bodyIdA = anchor;
+					jd.bodyIdB = body;
+					jd.localAnchorA = cd2MakeVec((cdReal)k, CD_R(0.5));
+					jd.localAnchorB = cd2MakeVec(CD_R(0.0), CD_R(0.5));
+					cd2CreateRevoluteJoint(world, &jd);
+				}
+				if (k > 0)
+				{
+					jd = cd2DefaultRevoluteJointDef();
+					jd.bodyIdA = bodies[count - N];
+					jd.bodyIdB = body;
+					jd.localAnchorA = cd2MakeVec(CD_R(0.5), CD_R(0.0));
+					jd.localAnchorB = cd2MakeVec(CD_R(-0.5), CD_R(0.0));
+					cd2CreateRevoluteJoint(world, &jd);
+				}
+				bodies[count++] = body;
+			}
+		}
+	}
+	cd2ShapeDef dropDef = cd2DefaultShapeDef();
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.3), CD_R(0.3)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	for (int i = 0; i < DROPS; ++i)
+	{
+		bd = cd2DefaultBodyDef();
+		bd.type = CD_DYNAMIC_BODY;
+		bd.position = cd2MakeVec(CD_R(0.8) * (cdReal)i, CD_R(3.0) + CD_R(0.5) * (cdReal)(i % 3));
+		bodies[count] = cd2CreateBody(world, &bd);
+		cd2CreatePolygonShape(bodies[count], &dropDef, &box);
+		++count;
+	}
+	for (int step = 0; step < STEPS; ++step)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	uint64_t h = UINT64_C(14695981039346656037);
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec p = cd2Body_GetPosition(bodies[i]);
+		cd2Rot q = cd2Body_GetRotation(bodies[i]);
+		cd2Vec v = cd2Body_GetLinearVelocity(bodies[i]);
+		HashReal(&h, p.x);
+		HashReal(&h, p.y);
+		HashReal(&h, q.c);
+		HashReal(&h, q.s);
+		HashReal(&h, v.x);
+		HashReal(&h, v.y);
+		HashReal(&h, cd2Body_GetAngularVelocity(bodies[i]));
+	}
+	cd2DestroyWorld(world);
+	return h;
+}
+
+static void TestJointGridSameBitsEveryWorkerCount(void)
+{
+	uint64_t reference = RunJointGrid(1, NULL);
+	int workers[2] = {2, 4};
+	for (int k = 0; k < 2; ++k)
+	{
+		uint64_t h = RunJointGrid(workers[k], NULL);
+		TEST_CHECKF(h == reference, "%d workers: hash %016llx, single thread %016llx", workers[k],
+					(unsigned long long)h, (unsigned long long)reference);
+		TestTaskSystem system;
+		memset(&system, 0, sizeof(system));
+		system.threaded = true;
+		h = RunJointGrid(workers[k], &system);
+		TEST_CHECKF(h == reference, "%d workers, user threads: hash %016llx, single thread %016llx",
+					workers[k], (unsigned long long)h, (unsigned long long)reference);
+		TEST_CHECK(system.badRanges == 0);
+	}
+}
+
 /* A task system that runs each task to the end inside enqueueTask, before the stepping thread goes
  * on: the step's further workers' task then does the whole solve on its own, and the step must
  * neither wait for it forever nor change a bit. */
@@ -358,6 +487,7 @@ static void TestPoolCreateDestroy(void)
 int main(void)
 {
 	TEST_RUN(TestSameBitsEveryRunAndWorkerCount);
+	TEST_RUN(TestJointGridSameBitsEveryWorkerCount);
 	TEST_RUN(TestTasksRunInsideEnqueue);
 	TEST_RUN(TestHalfATaskSystemIsRefused);
 	TEST_RUN(TestPoolCreateDestroy);

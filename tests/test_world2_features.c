@@ -974,11 +974,11 @@ static void TestFinalizeAcrossWorkers(void)
 	}
 }
 
-/* Joints in groups that share no awake body are solved at the same time with more workers: chains
- * hanging from the ground (a static body joins no group), chains hung from one moving kinematic
- * body (one group through it), welded and distance-jointed pairs, and chains that fall onto each
+/* Joints of one colour share no awake body and are solved at the same time with more workers:
+ * chains hanging from the ground (a static body takes no colour), chains hung from one moving
+ * kinematic body (which does), welded and distance-jointed pairs, and chains that fall onto each
  * other. Poses, velocities and joint forces are the same bits for 1, 2 and 4 workers. */
-static uint64_t RunJointGroups(int workerCount, int* awakeOut)
+static uint64_t RunJointColors(int workerCount, int* awakeOut)
 {
 	enum
 	{
@@ -1080,16 +1080,16 @@ static uint64_t RunJointGroups(int workerCount, int* awakeOut)
 	return hash;
 }
 
-static void TestJointGroupsAcrossWorkers(void)
+static void TestJointColorsAcrossWorkers(void)
 {
 	int awake1 = 0, awake = 0;
-	uint64_t one = RunJointGroups(1, &awake1);
+	uint64_t one = RunJointColors(1, &awake1);
 	/* The chains are still moving (the hash covers a moving scene, not a resting one). */
 	TEST_CHECK(awake1 > 0);
 	int counts[2] = {2, 4};
 	for (int k = 0; k < 2; ++k)
 	{
-		uint64_t other = RunJointGroups(counts[k], &awake);
+		uint64_t other = RunJointColors(counts[k], &awake);
 		TEST_CHECKF(other == one, "%d workers: hash %llx, 1 worker %llx", counts[k],
 					(unsigned long long)other, (unsigned long long)one);
 		TEST_CHECK(awake == awake1);
@@ -1521,7 +1521,7 @@ int main(void)
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
 	TEST_RUN(TestFinalizeAcrossWorkers);
-	TEST_RUN(TestJointGroupsAcrossWorkers);
+	TEST_RUN(TestJointColorsAcrossWorkers);
 	TEST_RUN(TestCreatedAsleep);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);

@@ -202,10 +202,10 @@ typedef enum cd2StageKind
 	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
 	CD2_STAGE_PACK_WIDE,			/* wide blocks */
 	CD2_STAGE_INTEGRATE_VELOCITIES, /* bodies */
-	CD2_STAGE_WARM_START_JOINTS,	/* joint groups */
+	CD2_STAGE_WARM_START_JOINTS,	/* joints of one colour */
 	CD2_STAGE_WARM_START_WIDE,		/* wide blocks of one colour */
 	CD2_STAGE_WARM_START_OVERFLOW,	/* single */
-	CD2_STAGE_SOLVE_JOINTS,			/* joint groups */
+	CD2_STAGE_SOLVE_JOINTS,			/* joints of one colour */
 	CD2_STAGE_SOLVE_WIDE,			/* wide blocks of one colour */
 	CD2_STAGE_SOLVE_OVERFLOW,		/* single */
 	CD2_STAGE_INTEGRATE_POSITIONS,	/* bodies */
@@ -323,8 +323,7 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2IntegrateVelocities(context, start, end);
 			break;
 		case CD2_STAGE_WARM_START_JOINTS:
-			cd2WarmStartJoints(world, context, context->jointGroupStart[start],
-							   context->jointGroupStart[end]);
+			cd2WarmStartJoints(world, context, stage->first + start, stage->first + end);
 			break;
 		case CD2_STAGE_WARM_START_WIDE:
 			cd2WarmStartContactsWide(context, stage->first + start, stage->first + end);
@@ -333,8 +332,7 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2WarmStartContacts(context);
 			break;
 		case CD2_STAGE_SOLVE_JOINTS:
-			cd2SolveJoints(world, context, context->jointGroupStart[start], context->jointGroupStart[end],
-						   stage->useBias);
+			cd2SolveJoints(world, context, stage->first + start, stage->first + end, stage->useBias);
 			break;
 		case CD2_STAGE_SOLVE_WIDE:
 			cd2SolveContactsWide(context, stage->first + start, stage->first + end, stage->useBias);
@@ -471,109 +469,66 @@ void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRan
 	}
 }
 
-/* Union-find over the solver bodies for cd2GroupJoints; the smaller index is the root. */
-static int cd2FindJointRoot(int* parent, int i)
-{
-	while (parent[i] != i)
-	{
-		parent[i] = parent[parent[i]];
-		i = parent[i];
-	}
-	return i;
-}
-
-/* Sorts context->joints into groups that share no movable body (the connected sets of joints
- * through awake bodies; a static or sleeping body is a private copy in each joint's solve), each
- * group's joints keeping their order, the groups in the order of their first joint. A joint's
- * warm start and solve read and write only its own data and its two bodies, so groups run at the
- * same time give the same bits as all joints in index order (the order within each group is what
- * the results depend on). With one worker: one group, the index order. False: out of memory for
- * the group starts (without scratch memory for the grouping, one group). */
-static bool cd2GroupJoints(cd2World* world, cd2StepContext* context)
+/* Sorts context->joints by graph colour (graph_color.h), as the contacts: the joints of one
+ * colour share no awake body, so a colour's joints run on any number of threads with the same
+ * bits, and the results do not depend on the worker count. Kinematic bodies count as movable here
+ * (a joint's solve writes both of its awake bodies); static and sleeping ones do not. Out of
+ * scratch memory: every joint in the overflow colour, in index order, on one thread. */
+static void cd2ColorJoints(cd2World* world, cd2StepContext* context, const int* solverOf)
 {
 	int n = context->jointCount;
-	context->jointGroupCount = n > 0 ? 1 : 0;
-	context->jointGroupStart = (int*)cdArena_AllocUncleared(&world->arena, (size_t)(n + 1) * sizeof(int));
-	if (context->jointGroupStart == NULL || context->joints == NULL)
+	int* start = context->jointColorStart;
+	for (int c = 0; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
 	{
-		return n == 0;
+		start[c] = 0;
 	}
-	context->jointGroupStart[0] = 0;
-	context->jointGroupStart[n > 0 ? 1 : 0] = n;
-	if (world->workerCount <= 1 || n < 2)
+	start[CD_GRAPH_COLOR_COUNT + 1] = n;
+	if (n < 2)
 	{
-		return true;
+		return;
 	}
-	int bodyCount = context->bodyCount;
-	int* parent = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCount * sizeof(int));
-	int* groupOfRoot = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCount * sizeof(int));
-	int* groupOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+	int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
+	int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 	int* sorted = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-	if (parent == NULL || groupOfRoot == NULL || groupOf == NULL || sorted == NULL)
+	if (bodyA == NULL || bodyB == NULL || colors == NULL || order == NULL || sorted == NULL)
 	{
-		return true; /* out of scratch memory: the one group, on one thread */
-	}
-	for (int k = 0; k < bodyCount; ++k)
-	{
-		parent[k] = k;
-		groupOfRoot[k] = CD2_NULL_INDEX;
+		return;
 	}
 	for (int i = 0; i < n; ++i)
 	{
 		const cd2Joint* joint = world->joints.data + context->joints[i];
-		int ia = world->bodies.data[joint->bodyA].solverIndex;
-		int ib = world->bodies.data[joint->bodyB].solverIndex;
-		if (ia >= 0 && ib >= 0)
-		{
-			int ra = cd2FindJointRoot(parent, ia), rb = cd2FindJointRoot(parent, ib);
-			if (ra < rb)
-			{
-				parent[rb] = ra;
-			}
-			else
-			{
-				parent[ra] = rb;
-			}
-		}
+		bodyA[i] = solverOf[joint->bodyA];
+		bodyB[i] = solverOf[joint->bodyB];
 	}
-	/* Group ids in the order of each group's first joint; then a stable counting sort. */
-	int groupCount = 0;
+	if (!cdColorConstraints(bodyA, bodyB, n, context->bodyCount, colors, order, &world->arena))
+	{
+		return;
+	}
+	start[CD_GRAPH_COLOR_COUNT + 1] = 0;
 	for (int i = 0; i < n; ++i)
 	{
-		const cd2Joint* joint = world->joints.data + context->joints[i];
-		int ia = world->bodies.data[joint->bodyA].solverIndex;
-		int root = cd2FindJointRoot(parent, ia >= 0 ? ia : world->bodies.data[joint->bodyB].solverIndex);
-		if (groupOfRoot[root] == CD2_NULL_INDEX)
-		{
-			groupOfRoot[root] = groupCount++;
-		}
-		groupOf[i] = groupOfRoot[root];
+		sorted[i] = context->joints[order[i]];
+		start[colors[i] + 1] += 1;
 	}
-	int* start = context->jointGroupStart;
-	for (int g = 0; g <= groupCount; ++g)
+	for (int c = 1; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
 	{
-		start[g] = 0;
-	}
-	for (int i = 0; i < n; ++i)
-	{
-		start[groupOf[i] + 1] += 1;
-	}
-	for (int g = 0; g < groupCount; ++g)
-	{
-		start[g + 1] += start[g];
-	}
-	/* (groupOfRoot reused as each group's fill position.) */
-	for (int g = 0; g < groupCount; ++g)
-	{
-		groupOfRoot[g] = start[g];
-	}
-	for (int i = 0; i < n; ++i)
-	{
-		sorted[groupOfRoot[groupOf[i]]++] = context->joints[i];
+		start[c] += start[c - 1];
 	}
 	memcpy(context->joints, sorted, (size_t)n * sizeof(int));
-	context->jointGroupCount = groupCount;
-	return true;
+}
+
+/* One stage per non-empty joint colour; the overflow colour's joints in one block. */
+static void cd2AddJointStages(cd2StageList* list, cd2StageKind kind, bool useBias)
+{
+	const int* start = list->step->jointColorStart;
+	for (int c = 0; c <= CD_GRAPH_COLOR_COUNT; ++c)
+	{
+		int count = start[c + 1] - start[c];
+		int minBlock = c == CD_GRAPH_COLOR_COUNT ? count : 16;
+		cd2AddStage(list, kind, count, minBlock, start[c], useBias);
+	}
 }
 
 void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
@@ -739,11 +694,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.joints[context.jointCount++] = i;
 	}
 
-	if (!cd2GroupJoints(world, &context))
+	if (context.joints == NULL && world->joints.count > 0)
 	{
 		world->outOfMemory = true;
 		return;
 	}
+	cd2ColorJoints(world, &context, solverOf);
 
 	if (!cd2PrepareContactsWide(world, &context))
 	{
@@ -775,7 +731,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	bouncing = 0;
 #endif
 	list.bouncing = &bouncing;
-	list.stageCapacity = 8 + context.colorCount + subStepCount * (8 + 3 * context.colorCount);
+	int jointColors = 0;
+	for (int c = 0; c <= CD_GRAPH_COLOR_COUNT; ++c)
+	{
+		jointColors += context.jointColorStart[c + 1] > context.jointColorStart[c] ? 1 : 0;
+	}
+	/* Restitution adds one stage per contact colour after the sub-steps. */
+	list.stageCapacity =
+		8 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
 	list.stages =
 		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
 	if (list.stages == NULL)
@@ -785,7 +748,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 	int overflowCount = context.constraintCount > context.overflowStart ? 1 : 0;
 	int jointStage = context.jointCount > 0 ? 1 : 0;
-	int jointGroups = context.jointGroupCount;
 	/* The coloured constraints are prepared by the pack stage, block by block (in cache when packed);
 	 * this stage prepares the overflow colour's. */
 	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount - context.overflowStart, 32,
@@ -794,14 +756,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	for (int step = 0; step < subStepCount; ++step)
 	{
 		cd2AddStage(&list, CD2_STAGE_INTEGRATE_VELOCITIES, context.bodyCount, 64, 0, false);
-		cd2AddStage(&list, CD2_STAGE_WARM_START_JOINTS, jointGroups, 4, 0, false);
+		cd2AddJointStages(&list, CD2_STAGE_WARM_START_JOINTS, false);
 		cd2AddWideStages(&list, CD2_STAGE_WARM_START_WIDE, false);
 		cd2AddStage(&list, CD2_STAGE_WARM_START_OVERFLOW, overflowCount, 1, 0, false);
-		cd2AddStage(&list, CD2_STAGE_SOLVE_JOINTS, jointGroups, 4, 0, true);
+		cd2AddJointStages(&list, CD2_STAGE_SOLVE_JOINTS, true);
 		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, true);
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, true);
 		cd2AddStage(&list, CD2_STAGE_INTEGRATE_POSITIONS, context.bodyCount, 64, 0, false);
-		cd2AddStage(&list, CD2_STAGE_SOLVE_JOINTS, jointGroups, 4, 0, false);
+		cd2AddJointStages(&list, CD2_STAGE_SOLVE_JOINTS, false);
 		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, false);
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}

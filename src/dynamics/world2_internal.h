@@ -292,10 +292,10 @@ typedef struct cd2StepContext
 	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
-	/* The joints in groups that share no movable body, each group's joints in index order: group
-	 * g is joints [jointGroupStart[g], jointGroupStart[g + 1]). One group with one worker. */
-	int* jointGroupStart;
-	int jointGroupCount;
+	/* The joints sorted by graph colour (see graph_color.h): the joints of colour c are
+	 * [jointColorStart[c], jointColorStart[c + 1]); the last colour is the overflow, solved in
+	 * order on one thread. */
+	int jointColorStart[CD_GRAPH_COLOR_COUNT + 2];
 	/* Two per joint of `joints`, set by cd2PrepareJoints: the solver indices of its bodies (negative
 	 * for an immovable one), so that the sub-steps never read the body records. */
 	int* jointSolverBodies;

@@ -33,6 +33,14 @@
 /* Sine of the turn at a chain vertex below which it counts as flat. */
 #define CHAIN_FLAT_TOLERANCE CD_R(1.0e-4)
 
+/* A statement the compiler must keep where it stands: in the body of an if, it keeps the branch
+ * (GCC and clang otherwise turn a small if into selects). */
+#if defined(__GNUC__) || defined(__clang__)
+#define KEEP_BRANCH() __asm__ volatile("")
+#else
+#define KEEP_BRANCH() ((void)0)
+#endif
+
 #define VERTEX_FEATURE 0x100u
 /* Feature codes (bits 16+) of a single point along the gap between separated cores: vertex
  * against vertex, plus these when A's or B's closest point lies inside an edge (the id then holds
@@ -310,9 +318,15 @@ static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdRe
 			CenterContact none = {{CD_R(0.0), CD_R(0.0)}, {CD_R(0.0), CD_R(0.0)}, CD_R(0.0), 0u, false};
 			return none;
 		}
-		bool higher = s > edgeSeparation;
-		edge = higher ? i : edge;
-		edgeSeparation = higher ? s : edgeSeparation;
+		/* A branch, not a select: a select makes the edge, and so the loads of its vertices and
+		 * normal after the loop, wait for every separation; a predicted branch lets them start at
+		 * once (the pair took about 14% less: 1.46 -> 1.26 of Box2D 2.4 in collide_bench_scenes). */
+		if (s > edgeSeparation)
+		{
+			edge = i;
+			edgeSeparation = s;
+			KEEP_BRANCH();
+		}
 	}
 	return CenterContactOnEdge(k, center, pointRadius, speculativeDistance, edge, edgeSeparation, true);
 }
@@ -378,6 +392,9 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 	cd2Vec v1 = reference->vertices[referenceEdge];
 	cd2Vec v2 = reference->vertices[referenceEdge + 1 < reference->count ? referenceEdge + 1 : 0];
 
+	/* The incident edge by a kept branch, not a select (KEEP_BRANCH): its vertices' loads then
+	 * start as soon as the branch is predicted, not after every dot product (the polygon pairs of
+	 * collide_bench_scenes took about 10% less). */
 	int incidentEdge = 0;
 	cdReal lowest = CD_REAL_MAX;
 	for (int i = 0; i < incident->count; ++i)
@@ -387,6 +404,7 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 		{
 			lowest = d;
 			incidentEdge = i;
+			KEEP_BRANCH();
 		}
 	}
 	cd2Vec core[2] = {incident->vertices[incidentEdge],
@@ -992,11 +1010,11 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 										 cdReal speculativeDistance)
 {
 	CD_ASSERT(b != NULL);
-	/* A's frame in B's: the inverse of xfB, then the centre placed by it (as manifold_local2.c). */
+	/* The centre in B's frame, cd2InvTransformPoint(xfB, centre): one subtraction and one
+	 * rotation on the way to the first edge test, whose branch every pair waits on (building the
+	 * inverse transform first and placing the centre by it took 7% longer a pair). */
 	cd2Rot q = xfB.q;
-	cd2Rot inverseQ = {q.c, -q.s};
-	cd2Vec inverseP = cd2Neg(cd2InvRotateVector(q, xfB.p));
-	cd2Vec center = cd2Add(cd2RotateVector(inverseQ, a.center), inverseP);
+	cd2Vec center = cd2InvRotateVector(q, cd2Sub(a.center, xfB.p));
 	cd2Manifold m;
 	Core coreB;
 	InitPolygonCore(&coreB, b);

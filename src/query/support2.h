@@ -138,6 +138,24 @@ static inline int cd2CoreSupport(const cd2Core* core, cd2Vec direction)
 	return best;
 }
 
+/* cd2CoreSupport with the larger value kept by a select instead of a branch per point: which
+ * point wins is as random as the direction, and GJK's distance on collide_bench_scenes' polygon
+ * pairs ran 1.2x longer with a compare-and-branch per point (and with a hill climb, whose step
+ * count is as random, about 3% longer). The same index as cd2CoreSupport, the first one on ties. */
+static inline int cd2CoreSupportSelect(const cd2Core* core, cd2Vec direction)
+{
+	int best = 0;
+	cdReal bestValue = cd2Dot(core->points[0], direction);
+	for (int i = 1; i < core->count; ++i)
+	{
+		cdReal value = cd2Dot(core->points[i], direction);
+		bool higher = value > bestValue;
+		best = higher ? i : best;
+		bestValue = higher ? value : bestValue;
+	}
+	return best;
+}
+
 /* Support by hill climbing from `start` along the counter-clockwise ring of core points: on a
  * convex ring the projections rise to one maximum (plateaus only at an edge perpendicular to the
  * direction, which is the top or the bottom), so a vertex neither of whose neighbours projects

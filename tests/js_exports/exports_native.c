@@ -7,8 +7,9 @@
  * size claimed, snapshots restored whole, truncated and corrupted. Checks: no sanitizer report;
  * new worlds and bodies valid, destroyed worlds stale, one body at most gone per body2Destroy.
  *
- * The 2D and world exports only: the 3D hull, mesh and chain handles cross as 32-bit integers,
- * which a 64-bit native build cannot hold. */
+ * The collision exports too: 2D and 3D shape records (hull records holding live, destroyed and
+ * made-up hull handles), hulls, triangle meshes and chains built from careless points and indices,
+ * and every query on them through live, destroyed and made-up handles. */
 #include <collide/collide.h>
 #include <collide/world2.h>
 
@@ -31,6 +32,38 @@ int cdjs2Distance(void);
 int cdjs2Collide(float speculativeDistance);
 int cdjs2ShapeCast(float tx, float ty);
 int cdjs2TimeOfImpact(float targetSeparation, float tolerance);
+int cdjs3ShapeAabb(void);
+int cdjs3Mass(float density);
+int cdjs3Overlap(void);
+int cdjs3PointIn(float x, float y, float z);
+int cdjs3ClosestPoint(float x, float y, float z);
+int cdjs3Raycast(float ox, float oy, float oz, float tx, float ty, float tz);
+int cdjs3Distance(void);
+int cdjs3Collide(float speculativeDistance);
+int cdjs3ShapeCast(float tx, float ty, float tz);
+int cdjs3TimeOfImpact(float targetSeparation, float tolerance);
+int cdjs3HullCreate(int kind, const float* points, int count);
+void cdjs3HullDestroy(int32_t handle);
+const float* cdjs3HullInfo(int32_t handle);
+int cdjs3MeshCreate(const float* vertices, int vertexCount, const int* indices, int triangleCount);
+void cdjs3MeshDestroy(int32_t handle);
+int cdjs3MeshInfo(int32_t handle);
+int cdjs3MeshTriangle(int32_t handle, int index);
+int cdjs3MeshRaycast(int32_t handle, float ox, float oy, float oz, float tx, float ty, float tz, int anyHit);
+int cdjs3MeshQueryAabb(int32_t handle, float minX, float minY, float minZ, float maxX, float maxY, float maxZ,
+					   int32_t* out, int capacity);
+int cdjs3MeshOverlap(int32_t handle);
+int cdjs3MeshClosestPoint(int32_t handle, float px, float py, float pz, float maxDistance);
+int cdjs3MeshCollide(int32_t handle, float speculativeDistance, float* out, int capacity);
+int cdjs2ChainBuild(const float* points, int count, int isLoop);
+void cdjs2ChainFree(int32_t handle);
+const float* cdjs2ChainInfo(int32_t handle);
+int cdjs2ChainSegment(int32_t handle, int index);
+int cdjs2ChainRaycast(int32_t handle, float ox, float oy, float tx, float ty);
+int cdjs2ChainQueryAabb(int32_t handle, float minX, float minY, float maxX, float maxY, int32_t* out,
+						int capacity);
+int cdjs2ChainCollide(int32_t handle, float speculativeDistance, float* out, int capacity);
+int cdjsBatch(int kind, const float* data, int count, int32_t* out);
 
 /* world2_exports.c */
 int cdjsWorld2Create(void);
@@ -176,6 +209,20 @@ static int s_bodyCount, s_shapeCount, s_jointCount;
 static int s_failures;
 static int s_made[6]; /* worlds, bodies, shapes, chains, joints, restores */
 
+/* The collision objects' handles: live, then destroyed (kept to be passed again). */
+enum
+{
+	MAX_OBJECTS = 16
+};
+typedef struct ObjectList
+{
+	int32_t handles[MAX_OBJECTS];
+	bool live[MAX_OBJECTS];
+	int count;
+	int made;
+} ObjectList;
+static ObjectList s_hulls, s_meshes, s_chains;
+
 static void Check(bool condition, const char* what, int step)
 {
 	if (!condition)
@@ -292,6 +339,39 @@ static void FillShape(float* slot)
 	if ((slot[0] == 0.0f || slot[0] == 1.0f) && Below(4))
 	{
 		slot[slot[0] == 0.0f ? 3 : 5] = Uniform(0.05f, 1.0f); /* radius */
+	}
+}
+
+static int32_t AnyObject(const ObjectList* list);
+
+/* A 3D shape record (lib/shapes3.js): type, then the shape's floats; a hull record's handle at
+ * float 8 is a held hull (live or destroyed), another kind's handle or any integer. */
+static void FillShape3(float* slot)
+{
+	for (int i = 0; i < 64; ++i)
+	{
+		slot[i] = Below(4) ? Uniform(-2.0f, 2.0f) : AnyFloat();
+	}
+	slot[0] = Below(12) ? (float)Below(8) : AnyFloat();
+	if (slot[0] == 7.0f)
+	{
+		/* hull: position (3), rotation (4, mostly the identity), handle */
+		if (Below(4))
+		{
+			slot[4] = slot[5] = slot[6] = 0.0f;
+			slot[7] = 1.0f;
+		}
+		PutInt(slot + 8, AnyObject(&s_hulls));
+	}
+	else if (slot[0] == 3.0f && Below(4))
+	{
+		/* box: centre, half extents, rotation (mostly the identity) */
+		slot[7] = slot[8] = slot[9] = 0.0f;
+		slot[10] = 1.0f;
+	}
+	else if ((slot[0] == 0.0f || slot[0] == 1.0f) && Below(4))
+	{
+		slot[slot[0] == 0.0f ? 4 : 7] = Uniform(0.05f, 1.0f); /* radius */
 	}
 }
 
@@ -533,6 +613,267 @@ static void ShapeQuery(void)
 	}
 }
 
+/* ---- collision objects: hulls, meshes, chains ------------------------------------------------- */
+
+static void Hold(ObjectList* list, int32_t handle)
+{
+	list->made++;
+	int k = list->count < MAX_OBJECTS ? list->count++ : Below(MAX_OBJECTS);
+	if (list->count == MAX_OBJECTS && list->live[k])
+	{
+		/* The slot's old object is lost to the sequence: destroy it first. */
+		if (list == &s_hulls)
+		{
+			cdjs3HullDestroy(list->handles[k]);
+		}
+		else if (list == &s_meshes)
+		{
+			cdjs3MeshDestroy(list->handles[k]);
+		}
+		else
+		{
+			cdjs2ChainFree(list->handles[k]);
+		}
+	}
+	list->handles[k] = handle;
+	list->live[k] = true;
+}
+
+/* A held handle (live or destroyed), a handle of another kind, or any integer. */
+static int32_t AnyObject(const ObjectList* list)
+{
+	switch (Below(10))
+	{
+		case 0:
+			return AnyInt();
+		case 1:
+			return s_meshes.count > 0 ? s_meshes.handles[Below(s_meshes.count)] : 0;
+		case 2:
+			return s_chains.count > 0 ? s_chains.handles[Below(s_chains.count)] : AnyInt();
+		default:
+			return list->count > 0 ? list->handles[Below(list->count)] : AnyInt();
+	}
+}
+
+/* Points: mostly a cloud in a few units, now and then careless values. */
+static void FillPoints(float* points, int floats)
+{
+	for (int i = 0; i < floats; ++i)
+	{
+		points[i] = Below(16) ? Uniform(-3.0f, 3.0f) : AnyFloat();
+	}
+}
+
+static void DestroyObject(ObjectList* list, int step)
+{
+	if (list->count == 0)
+	{
+		return;
+	}
+	int k = Below(list->count);
+	int32_t handle = list->handles[k];
+	if (list == &s_hulls)
+	{
+		cdjs3HullDestroy(handle);
+		Check(cdjs3HullInfo(handle) == NULL, "a destroyed hull's handle still answers", step);
+	}
+	else if (list == &s_meshes)
+	{
+		cdjs3MeshDestroy(handle);
+		Check(cdjs3MeshInfo(handle) != 0, "a destroyed mesh's handle still answers", step);
+	}
+	else
+	{
+		cdjs2ChainFree(handle);
+		Check(cdjs2ChainInfo(handle) == NULL, "a destroyed chain's handle still answers", step);
+	}
+	list->live[k] = false;
+}
+
+static void CollisionObjects(int step)
+{
+	float points[3 * 64];
+	int indices[3 * 48];
+	float* io = cdjsScratch() + IO_OFFSET;
+	switch (Below(6))
+	{
+		case 0:
+		{
+			int kind = Below(10) ? Below(4) : AnyInt();
+			int count = Below(8) ? 4 + Below(60) : AnyInt();
+			FillPoints(points, 3 * 64);
+			io[0] = Below(4) ? Uniform(0.1f, 2.0f) : AnyFloat();
+			io[1] = Below(4) ? Uniform(0.1f, 2.0f) : AnyFloat();
+			io[2] = Below(4) ? Uniform(0.1f, 2.0f) : AnyFloat();
+			int segments = kind >= 2 && Below(4) ? 3 + Below(30) : count;
+			bool sane = count >= 0 && count <= 64;
+			int result =
+				cdjs3HullCreate(kind, kind == 0 && !sane ? NULL : points, kind == 0 ? count : segments);
+			int32_t handle = GetInt(io);
+			Check((result == 0) == (handle != 0), "hullCreate's result and handle disagree", step);
+			if (result == 0)
+			{
+				const float* vertices = cdjs3HullInfo(handle);
+				Check(vertices != NULL && io[0] >= 4.0f, "a new hull's info", step);
+				Hold(&s_hulls, handle);
+			}
+			break;
+		}
+		case 1:
+		{
+			int vertexCount = Below(8) ? 3 + Below(61) : AnyInt();
+			int triangleCount = Below(8) ? 1 + Below(48) : AnyInt();
+			FillPoints(points, 3 * 64);
+			int safeVertices = vertexCount >= 0 && vertexCount <= 64 ? vertexCount : 0;
+			for (int i = 0; i < 3 * 48; ++i)
+			{
+				indices[i] = Below(16) && safeVertices > 0 ? Below(safeVertices) : AnyInt();
+			}
+			bool sane = vertexCount >= 0 && vertexCount <= 64 && triangleCount >= 0 && triangleCount <= 48;
+			int result = sane ? cdjs3MeshCreate(points, vertexCount, indices, triangleCount)
+							  : cdjs3MeshCreate(NULL, vertexCount, NULL, triangleCount);
+			int32_t handle = GetInt(io);
+			Check((result == 0) == (handle != 0), "mesh3Create's result and handle disagree", step);
+			if (result == 0)
+			{
+				Check(cdjs3MeshInfo(handle) == 0, "a new mesh does not validate", step);
+				Hold(&s_meshes, handle);
+			}
+			break;
+		}
+		case 2:
+		{
+			int count = Below(8) ? 2 + Below(62) : AnyInt();
+			FillPoints(points, 2 * 64);
+			bool sane = count >= 0 && count <= 64;
+			int result = cdjs2ChainBuild(sane ? points : NULL, count, Below(2));
+			int32_t handle = GetInt(io);
+			Check((result == 0) == (handle != 0), "chain2Build's result and handle disagree", step);
+			if (result == 0)
+			{
+				Check(cdjs2ChainInfo(handle) != NULL, "a new chain's info", step);
+				Hold(&s_chains, handle);
+			}
+			break;
+		}
+		case 3:
+		{
+			int pick = Below(3);
+			DestroyObject(pick == 0 ? &s_hulls : pick == 1 ? &s_meshes : &s_chains, step);
+			/* Made-up handles: nothing happens. */
+			cdjs3HullDestroy(AnyInt());
+			cdjs3MeshDestroy(AnyInt());
+			cdjs2ChainFree(AnyInt());
+			break;
+		}
+		case 4:
+		{
+			int32_t mesh = AnyObject(&s_meshes);
+			int32_t out[64];
+			float manifolds[25 * 8];
+			for (int i = 0; i < 7; ++i)
+			{
+				io[i] = Below(8) ? (i == 6 ? 1.0f : 0.0f) : AnyFloat(); /* the mesh's transform */
+			}
+			cdjs3MeshInfo(mesh);
+			cdjs3MeshTriangle(mesh, Below(4) ? Below(48) : AnyInt());
+			cdjs3MeshRaycast(mesh, AnyFloat(), AnyFloat(), Uniform(3.0f, 5.0f), AnyFloat(), AnyFloat(),
+							 Uniform(-9.0f, -1.0f), Below(2));
+			int capacity = Below(8) ? Below(64) : AnyInt();
+			cdjs3MeshQueryAabb(mesh, -AnyFloat(), -AnyFloat(), -AnyFloat(), AnyFloat(), AnyFloat(),
+							   AnyFloat(), capacity >= 0 && capacity <= 64 ? out : NULL, capacity);
+			cdjs3MeshClosestPoint(mesh, AnyFloat(), AnyFloat(), AnyFloat(), Below(2) ? INFINITY : AnyFloat());
+			FillShape3(cdjsScratch());
+			cdjs3MeshOverlap(mesh);
+			capacity = Below(8) ? Below(8) : AnyInt();
+			cdjs3MeshCollide(mesh, Below(4) ? 0.1f : AnyFloat(),
+							 capacity >= 0 && capacity <= 8 ? manifolds : NULL, capacity);
+			break;
+		}
+		default:
+		{
+			int32_t chain = AnyObject(&s_chains);
+			int32_t out[64];
+			float manifolds[12 * 8];
+			for (int i = 0; i < 3; ++i)
+			{
+				io[i] = Below(8) ? 0.0f : AnyFloat(); /* the chain's transform */
+			}
+			cdjs2ChainInfo(chain);
+			cdjs2ChainSegment(chain, Below(4) ? Below(64) : AnyInt());
+			cdjs2ChainRaycast(chain, AnyFloat(), AnyFloat(), AnyFloat(), AnyFloat());
+			int capacity = Below(8) ? Below(64) : AnyInt();
+			cdjs2ChainQueryAabb(chain, -AnyFloat(), -AnyFloat(), AnyFloat(), AnyFloat(),
+								capacity >= 0 && capacity <= 64 ? out : NULL, capacity);
+			FillShape(cdjsScratch());
+			capacity = Below(8) ? Below(8) : AnyInt();
+			cdjs2ChainCollide(chain, Below(4) ? 0.1f : AnyFloat(),
+							  capacity >= 0 && capacity <= 8 ? manifolds : NULL, capacity);
+			break;
+		}
+	}
+}
+
+static void ShapeQuery3(void)
+{
+	float* scratch = cdjsScratch();
+	FillShape3(scratch);
+	FillShape3(scratch + 64);
+	float* io = scratch + IO_OFFSET;
+	for (int i = 0; i < 16; ++i)
+	{
+		io[i] = Below(4) ? Uniform(-2.0f, 2.0f) : AnyFloat(); /* sweeps of the time of impact */
+	}
+	switch (Below(11))
+	{
+		case 0:
+			cdjs3ShapeAabb();
+			break;
+		case 1:
+		{
+			/* Batch queries over careless records. */
+			float data[6 * 32];
+			int32_t out[32];
+			int count = Below(8) ? Below(32) : AnyInt();
+			FillPoints(data, 6 * 32);
+			for (int i = 0; i < 8; ++i)
+			{
+				io[i] = AnyFloat();
+			}
+			bool sane = count >= 0 && count <= 32;
+			cdjsBatch(Below(8) ? Below(12) : AnyInt(), sane ? data : NULL, count, sane ? out : NULL);
+			break;
+		}
+		case 2:
+			cdjs3Mass(AnyFloat());
+			break;
+		case 3:
+			cdjs3Overlap();
+			break;
+		case 4:
+			cdjs3PointIn(AnyFloat(), AnyFloat(), AnyFloat());
+			break;
+		case 5:
+			cdjs3ClosestPoint(AnyFloat(), AnyFloat(), AnyFloat());
+			break;
+		case 6:
+			cdjs3Raycast(AnyFloat(), AnyFloat(), AnyFloat(), AnyFloat(), AnyFloat(), AnyFloat());
+			break;
+		case 7:
+			cdjs3Distance();
+			break;
+		case 8:
+			cdjs3Collide(AnyFloat());
+			break;
+		case 9:
+			cdjs3ShapeCast(AnyFloat(), AnyFloat(), AnyFloat());
+			break;
+		default:
+			cdjs3TimeOfImpact(AnyFloat(), AnyFloat());
+			break;
+	}
+}
+
 static bool s_preSolveAnswer = true;
 
 int cdjsImportPreSolve(int world0, int ia, int ga, int ib, int gb, const float* manifold);
@@ -565,7 +906,7 @@ int main(int argc, char** argv)
 	cdSetAssertFcn(IgnoreAssert);
 	for (int step = 0; step < steps; ++step)
 	{
-		int op = Below(24);
+		int op = Below(28);
 		switch (op)
 		{
 			case 0:
@@ -699,6 +1040,13 @@ int main(int argc, char** argv)
 			case 21:
 				Snapshot();
 				break;
+			case 24:
+			case 25:
+				CollisionObjects(step);
+				break;
+			case 26:
+				ShapeQuery3();
+				break;
 			default:
 				ShapeQuery();
 				break;
@@ -711,12 +1059,30 @@ int main(int argc, char** argv)
 			cdjsWorld2Destroy(s_worlds[k] - 1);
 		}
 	}
+	for (int k = 0; k < MAX_OBJECTS; ++k)
+	{
+		if (k < s_hulls.count && s_hulls.live[k])
+		{
+			cdjs3HullDestroy(s_hulls.handles[k]);
+		}
+		if (k < s_meshes.count && s_meshes.live[k])
+		{
+			cdjs3MeshDestroy(s_meshes.handles[k]);
+		}
+		if (k < s_chains.count && s_chains.live[k])
+		{
+			cdjs2ChainFree(s_chains.handles[k]);
+		}
+	}
 	cdSetAssertFcn(NULL);
 	printf("exports_native: %d steps of calls; made %d worlds, %d bodies, %d shapes, %d chains, %d joints; "
-		   "%d snapshots restored; %d failures\n",
-		   steps, s_made[0], s_made[1], s_made[2], s_made[3], s_made[4], s_made[5], s_failures);
-	/* A sequence that never got a body or a joint into a world tested nothing of the world. */
-	if (s_made[1] == 0 || s_made[2] == 0 || s_made[4] == 0)
+		   "%d snapshots restored; %d hulls, %d meshes, %d chain objects; %d failures\n",
+		   steps, s_made[0], s_made[1], s_made[2], s_made[3], s_made[4], s_made[5], s_hulls.made,
+		   s_meshes.made, s_chains.made, s_failures);
+	/* A sequence that never got a body or a joint into a world, or never built a hull, a mesh and
+	 * a chain, tested nothing of them. */
+	if (s_made[1] == 0 || s_made[2] == 0 || s_made[4] == 0 || s_hulls.made == 0 || s_meshes.made == 0 ||
+		s_chains.made == 0)
 	{
 		return 1;
 	}

@@ -139,6 +139,120 @@ static int finiteAll(const float* p, int n)
 	return 1;
 }
 
+/* ==== handles of the objects JavaScript holds ================================================ *
+ * Hulls, meshes and chains cross to JavaScript as handles, not pointers: a slot index and the
+ * slot's generation in one positive int32 (20 bits of index + 1, 11 of generation). A destroyed
+ * object's handle, a handle of another kind or a made-up number is refused (the call returns its
+ * bad-input code) instead of reaching freed or foreign memory, and the layer keeps working where
+ * pointers are 64 bits wide (tests/js_exports runs it natively under the sanitizers). A slot's
+ * generation wraps after 2,048 reuses; the package's classes never pass a destroyed object's
+ * handle in the first place. */
+
+typedef enum JsKind
+{
+	JS_HULL = 1,
+	JS_MESH,
+	JS_CHAIN
+} JsKind;
+
+typedef struct JsSlot
+{
+	void* object; /* NULL while free */
+	uint32_t generation;
+	int kind;
+	int nextFree;
+} JsSlot;
+
+#define JS_HANDLE_INDEX_BITS 20
+#define JS_HANDLE_INDEX_MASK ((1u << JS_HANDLE_INDEX_BITS) - 1u)
+#define JS_HANDLE_GENERATION_MASK 0x7ffu
+
+static JsSlot* s_slots = NULL;
+static int s_slotCount = 0, s_slotCapacity = 0, s_freeSlot = -1;
+
+/* The handle of a new slot holding `object`; 0 when out of memory or slots. */
+static int32_t jsHandleAdd(void* object, JsKind kind)
+{
+	int index;
+	if (s_freeSlot >= 0)
+	{
+		index = s_freeSlot;
+		s_freeSlot = s_slots[index].nextFree;
+	}
+	else
+	{
+		const int maxSlots = (int)JS_HANDLE_INDEX_MASK; /* index + 1 fits the index bits */
+		if (s_slotCount == s_slotCapacity)
+		{
+			if (s_slotCapacity >= maxSlots)
+			{
+				return 0;
+			}
+			int capacity = s_slotCapacity > 0 ? 2 * s_slotCapacity : 64;
+			capacity = capacity < maxSlots ? capacity : maxSlots;
+			JsSlot* grown = (JsSlot*)realloc(s_slots, (size_t)capacity * sizeof(JsSlot));
+			if (grown == NULL)
+			{
+				return 0;
+			}
+			s_slots = grown;
+			s_slotCapacity = capacity;
+		}
+		index = s_slotCount++;
+		s_slots[index].generation = 0;
+	}
+	JsSlot* slot = s_slots + index;
+	slot->object = object;
+	slot->kind = (int)kind;
+	slot->nextFree = -1;
+	return (int32_t)(((slot->generation & JS_HANDLE_GENERATION_MASK) << JS_HANDLE_INDEX_BITS) |
+					 (uint32_t)(index + 1));
+}
+
+static JsSlot* jsHandleSlot(int32_t handle, JsKind kind)
+{
+	if (handle <= 0)
+	{
+		return NULL;
+	}
+	uint32_t bits = (uint32_t)handle;
+	int index = (int)(bits & JS_HANDLE_INDEX_MASK) - 1;
+	if (index < 0 || index >= s_slotCount)
+	{
+		return NULL;
+	}
+	JsSlot* slot = s_slots + index;
+	if (slot->object == NULL || slot->kind != (int)kind ||
+		(slot->generation & JS_HANDLE_GENERATION_MASK) != bits >> JS_HANDLE_INDEX_BITS)
+	{
+		return NULL;
+	}
+	return slot;
+}
+
+/* The live object of `handle`, or NULL. */
+static void* jsHandleGet(int32_t handle, JsKind kind)
+{
+	JsSlot* slot = jsHandleSlot(handle, kind);
+	return slot != NULL ? slot->object : NULL;
+}
+
+/* Frees the slot of `handle` and returns its object (for the caller to destroy), or NULL. */
+static void* jsHandleRemove(int32_t handle, JsKind kind)
+{
+	JsSlot* slot = jsHandleSlot(handle, kind);
+	if (slot == NULL)
+	{
+		return NULL;
+	}
+	void* object = slot->object;
+	slot->object = NULL;
+	slot->generation++;
+	slot->nextFree = s_freeSlot;
+	s_freeSlot = (int)(slot - s_slots);
+	return object;
+}
+
 /* ==== 2D ==================================================================================== */
 
 static cdResult decode2(const float* s, cd2Shape* out)
@@ -391,12 +505,11 @@ static cdResult decode3(const float* s, cd3Shape* out)
 			break;
 		case CD3_SHAPE_HULL:
 		{
-			int32_t pointer = getInt(s + 8);
-			if (pointer == 0)
+			const cd3Hull* hull = (const cd3Hull*)jsHandleGet(getInt(s + 8), JS_HULL);
+			if (hull == NULL)
 			{
 				return CD_ERROR_INVALID_ARGUMENT;
 			}
-			const cd3Hull* hull = (const cd3Hull*)(uintptr_t)(uint32_t)pointer;
 			*out = cd3MakeHullShape(hull, (cd3Transform){v3(s + 1), q3(s + 4)});
 			if (!cd3IsValidHullShape(out->hull))
 			{
@@ -565,8 +678,8 @@ EXPORT("timeOfImpact3") int cdjs3TimeOfImpact(float targetSeparation, float tole
 /* ---- hulls ---- */
 
 /* kind 0: hull of `count` points at `points`; 1: box hull (IO[0..2] half extents); 2: cylinder,
- * 3: cone (IO[0] half height, IO[1] radius, count = segments). Writes the hull pointer into
- * IO[0] (int32 bits) and returns CD_OK or the cdResult. */
+ * 3: cone (IO[0] half height, IO[1] radius, count = segments). Writes the hull's handle into
+ * IO[0] (int32 bits; 0 on failure) and returns CD_OK or the cdResult. */
 EXPORT("hullCreate") int cdjs3HullCreate(int kind, const float* points, int count)
 {
 	cd3Hull* hull = NULL;
@@ -576,6 +689,7 @@ EXPORT("hullCreate") int cdjs3HullCreate(int kind, const float* points, int coun
 		case 0:
 			if (points == NULL || count < 0)
 			{
+				putInt(IO, 0);
 				return CD_ERROR_INVALID_ARGUMENT;
 			}
 			result = cd3ComputeHull((const cd3Vec*)(const void*)points, count, &hull);
@@ -590,21 +704,42 @@ EXPORT("hullCreate") int cdjs3HullCreate(int kind, const float* points, int coun
 			result = cd3MakeConeHull(IO[0], IO[1], count, &hull);
 			break;
 		default:
+			putInt(IO, 0);
 			return CD_ERROR_INVALID_ARGUMENT;
 	}
-	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)hull : 0);
+	int32_t handle = 0;
+	if (result == CD_OK)
+	{
+		handle = jsHandleAdd(hull, JS_HULL);
+		if (handle == 0)
+		{
+			cd3DestroyHull(hull);
+			result = CD_ERROR_OUT_OF_MEMORY;
+		}
+	}
+	putInt(IO, handle);
 	return (int)result;
 }
 
-EXPORT("hullDestroy") void cdjs3HullDestroy(cd3Hull* hull)
+/* A stale or unknown handle: nothing happens. */
+EXPORT("hullDestroy") void cdjs3HullDestroy(int32_t handle)
 {
-	cd3DestroyHull(hull);
+	cd3Hull* hull = (cd3Hull*)jsHandleRemove(handle, JS_HULL);
+	if (hull != NULL)
+	{
+		cd3DestroyHull(hull);
+	}
 }
 
 /* IO: vertexCount, faceCount, edgeCount, volume, centroid(3), bounds(6); returns the pointer to
- * the vertices (vertexCount cd3Vec). */
-EXPORT("hullInfo") const float* cdjs3HullInfo(const cd3Hull* hull)
+ * the vertices (vertexCount cd3Vec), NULL for a stale or unknown handle. */
+EXPORT("hullInfo") const float* cdjs3HullInfo(int32_t handle)
 {
+	const cd3Hull* hull = (const cd3Hull*)jsHandleGet(handle, JS_HULL);
+	if (hull == NULL)
+	{
+		return NULL;
+	}
 	IO[0] = (float)hull->vertexCount;
 	IO[1] = (float)hull->faceCount;
 	IO[2] = (float)hull->edgeCount;
@@ -839,7 +974,7 @@ int cdjs3OverlapSphereAabb(float cx, float cy, float cz, float r, float minX, fl
 }
 
 /* ==== 3D triangle meshes (lib/mesh3.js) ======================================================
- * A mesh crosses as its pointer. Calls that place the mesh take its transform from IO[0..6]
+ * A mesh crosses as its handle. Calls that place the mesh take its transform from IO[0..6]
  * (position x y z, rotation x y z w), read before any result is written. Variable-length results
  * go to a buffer of the caller's (out, capacity) and the return value is the full count, so the
  * caller can grow the buffer and ask again. */
@@ -854,27 +989,50 @@ static bool meshTransform(cd3Transform* t)
 	return true;
 }
 
-/* Builds a mesh from `vertexCount` x y z triples and `triangleCount` index triples; the mesh
- * pointer goes to IO[0] (0 on failure). Returns the cdResult. */
+/* Builds a mesh from `vertexCount` x y z triples and `triangleCount` index triples; the mesh's
+ * handle goes to IO[0] (0 on failure). Returns the cdResult. */
 EXPORT("mesh3Create")
 int cdjs3MeshCreate(const float* vertices, int vertexCount, const int* indices, int triangleCount)
 {
 	cd3Mesh* mesh = NULL;
 	cdResult result =
 		cd3CreateMesh((const cd3Vec*)(const void*)vertices, vertexCount, indices, triangleCount, &mesh);
-	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)mesh : 0);
+	int32_t handle = 0;
+	if (result == CD_OK)
+	{
+		handle = jsHandleAdd(mesh, JS_MESH);
+		if (handle == 0)
+		{
+			cd3DestroyMesh(mesh);
+			result = CD_ERROR_OUT_OF_MEMORY;
+		}
+	}
+	putInt(IO, handle);
 	return (int)result;
 }
 
-EXPORT("mesh3Destroy") void cdjs3MeshDestroy(cd3Mesh* mesh)
+EXPORT("mesh3Destroy") void cdjs3MeshDestroy(int32_t handle)
 {
-	cd3DestroyMesh(mesh);
+	cd3Mesh* mesh = (cd3Mesh*)jsHandleRemove(handle, JS_MESH);
+	if (mesh != NULL)
+	{
+		cd3DestroyMesh(mesh);
+	}
 }
+
+/* The mesh of `handle` as `mesh`; a stale or unknown handle returns `refused` from the export. */
+#define MESH_OF(handle, refused)                                                                             \
+	const cd3Mesh* mesh = (const cd3Mesh*)jsHandleGet(handle, JS_MESH);                                      \
+	if (mesh == NULL)                                                                                        \
+	{                                                                                                        \
+		return refused;                                                                                      \
+	}
 
 /* IO: triangleCount, droppedTriangleCount, vertexCount, nodeCount, leafCount, depth,
  * activeEdgeCount, bounds min (3), max (3), bytes; returns cd3ValidateMesh's result. */
-EXPORT("mesh3Info") int cdjs3MeshInfo(const cd3Mesh* mesh)
+EXPORT("mesh3Info") int cdjs3MeshInfo(int32_t handle)
 {
+	MESH_OF(handle, (int)CD_ERROR_INVALID_ARGUMENT)
 	cd3MeshStats s = cd3Mesh_GetStats(mesh);
 	IO[0] = (float)s.triangleCount;
 	IO[1] = (float)s.droppedTriangleCount;
@@ -890,8 +1048,9 @@ EXPORT("mesh3Info") int cdjs3MeshInfo(const cd3Mesh* mesh)
 }
 
 /* IO: a b c of the triangle with input index `index` (mesh space); 0 for a dropped or unknown index. */
-EXPORT("mesh3Triangle") int cdjs3MeshTriangle(const cd3Mesh* mesh, int index)
+EXPORT("mesh3Triangle") int cdjs3MeshTriangle(int32_t handle, int index)
 {
+	MESH_OF(handle, 0)
 	cd3Triangle t;
 	if (!cd3Mesh_GetTriangle(mesh, index, &t))
 	{
@@ -906,9 +1065,9 @@ EXPORT("mesh3Triangle") int cdjs3MeshTriangle(const cd3Mesh* mesh, int index)
 /* anyHit 0: IO gets fraction, point, normal, triangleIndex (int); 1: only whether it hits.
  * Returns 1 on a hit, 0 on a miss, -64 for a non-finite transform or ray. */
 EXPORT("mesh3Raycast")
-int cdjs3MeshRaycast(const cd3Mesh* mesh, float ox, float oy, float oz, float tx, float ty, float tz,
-					 int anyHit)
+int cdjs3MeshRaycast(int32_t handle, float ox, float oy, float oz, float tx, float ty, float tz, int anyHit)
 {
+	MESH_OF(handle, -64)
 	cd3Transform t;
 	const float ray[6] = {ox, oy, oz, tx, ty, tz};
 	if (!meshTransform(&t) || !finiteAll(ray, 6))
@@ -952,17 +1111,24 @@ static bool meshQueryCollect(int triangleIndex, void* context)
 /* Input indices of the triangles whose bounds overlap the box (mesh space) into out (at most
  * capacity); returns how many there are. */
 EXPORT("mesh3QueryAabb")
-int cdjs3MeshQueryAabb(const cd3Mesh* mesh, float minX, float minY, float minZ, float maxX, float maxY,
-					   float maxZ, int32_t* out, int capacity)
+int cdjs3MeshQueryAabb(int32_t handle, float minX, float minY, float minZ, float maxX, float maxY, float maxZ,
+					   int32_t* out, int capacity)
 {
+	MESH_OF(handle, -64)
+	const float box[6] = {minX, minY, minZ, maxX, maxY, maxZ};
+	if (capacity < 0 || (capacity > 0 && out == NULL) || !finiteAll(box, 6))
+	{
+		return -64;
+	}
 	JsIndexList list = {out, capacity, 0};
 	cd3Mesh_QueryAabb(mesh, (cd3Aabb){{minX, minY, minZ}, {maxX, maxY, maxZ}}, meshQueryCollect, &list);
 	return list.count;
 }
 
 /* Shape A against the mesh: 1 when they touch. */
-EXPORT("mesh3Overlap") int cdjs3MeshOverlap(const cd3Mesh* mesh)
+EXPORT("mesh3Overlap") int cdjs3MeshOverlap(int32_t handle)
 {
+	MESH_OF(handle, -64)
 	cd3Transform t;
 	if (!meshTransform(&t))
 	{
@@ -974,8 +1140,9 @@ EXPORT("mesh3Overlap") int cdjs3MeshOverlap(const cd3Mesh* mesh)
 
 /* IO: point, distance, triangleIndex (int). Returns 1, or 0 when nothing is within maxDistance. */
 EXPORT("mesh3ClosestPoint")
-int cdjs3MeshClosestPoint(const cd3Mesh* mesh, float px, float py, float pz, float maxDistance)
+int cdjs3MeshClosestPoint(int32_t handle, float px, float py, float pz, float maxDistance)
 {
+	MESH_OF(handle, -64)
 	cd3Transform t;
 	const float p[3] = {px, py, pz};
 	if (!meshTransform(&t) || !finiteAll(p, 3) || !(maxDistance >= 0.0f))
@@ -999,11 +1166,12 @@ int cdjs3MeshClosestPoint(const cd3Mesh* mesh, float px, float py, float pz, flo
  * many were written (cd3CollideMesh keeps the first `capacity` it meets). */
 #define MESH_MANIFOLD_FLOATS 25
 EXPORT("mesh3Collide")
-int cdjs3MeshCollide(const cd3Mesh* mesh, float speculativeDistance, float* out, int capacity)
+int cdjs3MeshCollide(int32_t handle, float speculativeDistance, float* out, int capacity)
 {
+	MESH_OF(handle, -64)
 	cd3Transform t;
 	if (!meshTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) ||
-		capacity < 0)
+		capacity < 0 || (capacity > 0 && out == NULL))
 	{
 		return -64;
 	}
@@ -1039,7 +1207,7 @@ int cdjs3MeshCollide(const cd3Mesh* mesh, float speculativeDistance, float* out,
 }
 
 /* ==== 2D chains (lib/chain2.js) ==============================================================
- * As meshes: the chain crosses as its pointer, placed by IO[0..2] (position x y, angle). */
+ * As meshes: the chain crosses as its handle, placed by IO[0..2] (position x y, angle). */
 
 static bool chainTransform(cd2Transform* t)
 {
@@ -1051,24 +1219,47 @@ static bool chainTransform(cd2Transform* t)
 	return true;
 }
 
-/* Builds a chain of `count` x y pairs; the pointer goes to IO[0] (0 on failure). Returns the cdResult. */
+/* Builds a chain of `count` x y pairs; its handle goes to IO[0] (0 on failure). Returns the cdResult. */
 EXPORT("chain2Build") int cdjs2ChainBuild(const float* points, int count, int isLoop)
 {
 	cd2Chain* chain = NULL;
 	cdResult result = cd2CreateChain((const cd2Vec*)(const void*)points, count, isLoop != 0, &chain);
-	putInt(IO, result == CD_OK ? (int32_t)(uintptr_t)chain : 0);
+	int32_t handle = 0;
+	if (result == CD_OK)
+	{
+		handle = jsHandleAdd(chain, JS_CHAIN);
+		if (handle == 0)
+		{
+			cd2DestroyChain(chain);
+			result = CD_ERROR_OUT_OF_MEMORY;
+		}
+	}
+	putInt(IO, handle);
 	return (int)result;
 }
 
-EXPORT("chain2Free") void cdjs2ChainFree(cd2Chain* chain)
+EXPORT("chain2Free") void cdjs2ChainFree(int32_t handle)
 {
-	cd2DestroyChain(chain);
+	cd2Chain* chain = (cd2Chain*)jsHandleRemove(handle, JS_CHAIN);
+	if (chain != NULL)
+	{
+		cd2DestroyChain(chain);
+	}
 }
 
+/* The chain of `handle` as `chain`; a stale or unknown handle returns `refused` from the export. */
+#define CHAIN_OF(handle, refused)                                                                            \
+	const cd2Chain* chain = (const cd2Chain*)jsHandleGet(handle, JS_CHAIN);                                  \
+	if (chain == NULL)                                                                                       \
+	{                                                                                                        \
+		return refused;                                                                                      \
+	}
+
 /* IO: segmentCount, pointCount, isLoop, bounds min (2), max (2); returns the points (x y pairs,
- * after welding). */
-EXPORT("chain2Info") const float* cdjs2ChainInfo(const cd2Chain* chain)
+ * after welding), NULL for a stale or unknown handle. */
+EXPORT("chain2Info") const float* cdjs2ChainInfo(int32_t handle)
 {
+	CHAIN_OF(handle, NULL)
 	IO[0] = (float)cd2Chain_GetSegmentCount(chain);
 	IO[1] = (float)cd2Chain_GetPointCount(chain);
 	IO[2] = cd2Chain_IsLoop(chain) ? 1.0f : 0.0f;
@@ -1079,8 +1270,9 @@ EXPORT("chain2Info") const float* cdjs2ChainInfo(const cd2Chain* chain)
 }
 
 /* IO: ghost1, p1, p2, ghost2 of segment `index`; 0 when index is out of range. */
-EXPORT("chain2Segment") int cdjs2ChainSegment(const cd2Chain* chain, int index)
+EXPORT("chain2Segment") int cdjs2ChainSegment(int32_t handle, int index)
 {
+	CHAIN_OF(handle, 0)
 	if (index < 0 || index >= cd2Chain_GetSegmentCount(chain))
 	{
 		return 0;
@@ -1094,8 +1286,9 @@ EXPORT("chain2Segment") int cdjs2ChainSegment(const cd2Chain* chain, int index)
 }
 
 /* IO: fraction, point, normal, segmentIndex (int). 1 on a hit, 0 on a miss, -64 for bad input. */
-EXPORT("chain2Raycast") int cdjs2ChainRaycast(const cd2Chain* chain, float ox, float oy, float tx, float ty)
+EXPORT("chain2Raycast") int cdjs2ChainRaycast(int32_t handle, float ox, float oy, float tx, float ty)
 {
+	CHAIN_OF(handle, -64)
 	cd2Transform t;
 	const float ray[4] = {ox, oy, tx, ty};
 	if (!chainTransform(&t) || !finiteAll(ray, 4))
@@ -1118,12 +1311,13 @@ EXPORT("chain2Raycast") int cdjs2ChainRaycast(const cd2Chain* chain, float ox, f
 /* Segments whose bounds overlap the box (world space) into out (at most capacity); returns how
  * many there are, -64 for bad input. */
 EXPORT("chain2QueryAabb")
-int cdjs2ChainQueryAabb(const cd2Chain* chain, float minX, float minY, float maxX, float maxY, int32_t* out,
+int cdjs2ChainQueryAabb(int32_t handle, float minX, float minY, float maxX, float maxY, int32_t* out,
 						int capacity)
 {
+	CHAIN_OF(handle, -64)
 	cd2Transform t;
 	const float box[4] = {minX, minY, maxX, maxY};
-	if (!chainTransform(&t) || !finiteAll(box, 4))
+	if (!chainTransform(&t) || !finiteAll(box, 4) || capacity < 0 || (capacity > 0 && out == NULL))
 	{
 		return -64;
 	}
@@ -1137,11 +1331,12 @@ int cdjs2ChainQueryAabb(const cd2Chain* chain, float minX, float minY, float max
  * separation, id (uint32). Returns how many were written. */
 #define CHAIN_MANIFOLD_FLOATS 12
 EXPORT("chain2Collide")
-int cdjs2ChainCollide(const cd2Chain* chain, float speculativeDistance, float* out, int capacity)
+int cdjs2ChainCollide(int32_t handle, float speculativeDistance, float* out, int capacity)
 {
+	CHAIN_OF(handle, -64)
 	cd2Transform t;
 	if (!chainTransform(&t) || !(speculativeDistance >= 0.0f) || !isfinite(speculativeDistance) ||
-		capacity < 0)
+		capacity < 0 || (capacity > 0 && out == NULL))
 	{
 		return -64;
 	}
