@@ -22,63 +22,16 @@ static inline cd2SolverBody* cd2SolverBodyAt(cd2StepContext* context, int index,
 	return context->bodies + index;
 }
 
-void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
+bool cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end)
 {
-	/* Fills each constraint from its pair (context->pairs), its contact and the dense solver bodies. */
-	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
-										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+	bool bounces = false;
 	for (int i = start; i < end; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
-		c->contact = context->pairs[i].contact;
-		c->indexA = context->pairs[i].indexA;
-		c->indexB = context->pairs[i].indexB;
-		const cd2Contact* contact = world->contacts.data + c->contact;
-		/* A sleeping or static body is immovable for this step. */
-		const cd2SolverBody* bodyA = c->indexA < 0 ? &zeroBody : context->bodies + c->indexA;
-		const cd2SolverBody* bodyB = c->indexB < 0 ? &zeroBody : context->bodies + c->indexB;
-		c->invMassA = bodyA->invMass;
-		c->invIA = bodyA->invInertia;
-		c->invMassB = bodyB->invMass;
-		c->invIB = bodyB->invInertia;
-		c->softness = (c->invMassA == CD_R(0.0) || c->invMassB == CD_R(0.0)) ? context->staticSoftness
-																			 : context->contactSoftness;
-		c->normal = contact->normal;
-		c->friction = contact->friction;
-		c->restitution = contact->restitution;
-		c->rollingResistance = contact->rollingResistance;
-		c->tangentSpeed = contact->tangentSpeed;
-		c->rollingImpulse = contact->rollingImpulse;
-		cdReal iSum = c->invIA + c->invIB;
-		c->rollingMass = iSum > CD_R(0.0) ? CD_R(1.0) / iSum : CD_R(0.0);
-		c->pointCount = contact->pointCount;
-		cd2Vec n = c->normal, t = cd2RightPerp(n);
-		cd2Vec accA = c->indexA < 0 ? CD2_VEC_ZERO : context->accelerations[c->indexA];
-		cd2Vec accB = c->indexB < 0 ? CD2_VEC_ZERO : context->accelerations[c->indexB];
-		c->normalAcceleration = cd2Dot(n, cd2Sub(accB, accA));
-		cd2Vec vA = bodyA->linearVelocity, vB = bodyB->linearVelocity;
-		cdReal wA = bodyA->angularVelocity, wB = bodyB->angularVelocity;
-		for (int k = 0; k < c->pointCount; ++k)
-		{
-			const cd2ContactPoint* mp = contact->points + k;
-			cd2ContactConstraintPoint* cp = c->points + k;
-			cp->anchorA = mp->anchorA;
-			cp->anchorB = mp->anchorB;
-			cp->baseSeparation = mp->separation - cd2Dot(cd2Sub(mp->anchorB, mp->anchorA), n);
-			cp->normalImpulse = context->enableWarmStarting ? mp->normalImpulse : CD_R(0.0);
-			cp->tangentImpulse = context->enableWarmStarting ? mp->tangentImpulse : CD_R(0.0);
-			cp->maxNormalImpulse = CD_R(0.0);
-			cdReal rnA = cd2Cross(cp->anchorA, n), rnB = cd2Cross(cp->anchorB, n);
-			cdReal kNormal = c->invMassA + c->invMassB + c->invIA * rnA * rnA + c->invIB * rnB * rnB;
-			cp->normalMass = kNormal > CD_R(0.0) ? CD_R(1.0) / kNormal : CD_R(0.0);
-			cdReal rtA = cd2Cross(cp->anchorA, t), rtB = cd2Cross(cp->anchorB, t);
-			cdReal kTangent = c->invMassA + c->invMassB + c->invIA * rtA * rtA + c->invIB * rtB * rtB;
-			cp->tangentMass = kTangent > CD_R(0.0) ? CD_R(1.0) / kTangent : CD_R(0.0);
-			cd2Vec vrA = cd2Add(vA, cd2CrossSV(wA, cp->anchorA));
-			cd2Vec vrB = cd2Add(vB, cd2CrossSV(wB, cp->anchorB));
-			cp->relativeVelocity = cd2Dot(n, cd2Sub(vrB, vrA));
-		}
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
+		cd2PrepareContactConstraint(world, context, context->pairs + i, c);
+		bounces = bounces || c->restitution != CD_R(0.0);
 	}
+	return bounces;
 }
 
 void cd2WarmStartContacts(cd2StepContext* context)
@@ -86,7 +39,7 @@ void cd2WarmStartContacts(cd2StepContext* context)
 	cd2SolverBody scratchA, scratchB;
 	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
 		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
 		cd2Vec n = c->normal, t = cd2RightPerp(n);
@@ -123,7 +76,7 @@ void cd2SolveContacts(cd2StepContext* context, bool useBias)
 	cdReal maxPush = context->contactPushMaxVelocity;
 	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		cd2SolverBody* a = cd2SolverBodyAt(context, c->indexA, &scratchA);
 		cd2SolverBody* b = cd2SolverBodyAt(context, c->indexB, &scratchB);
 		cdReal mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
@@ -222,9 +175,9 @@ void cd2ApplyRestitution(cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
 	cdReal threshold = context->restitutionThreshold;
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = context->overflowStart; i < context->constraintCount; ++i)
 	{
-		cd2ContactConstraint* c = context->constraints + i;
+		cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		if (c->restitution == CD_R(0.0))
 		{
 			continue;
@@ -278,7 +231,7 @@ void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start,
 {
 	for (int i = start; i < end; ++i)
 	{
-		const cd2ContactConstraint* c = context->constraints + i;
+		const cd2ContactConstraint* c = context->constraints + (i - context->overflowStart);
 		cd2Contact* contact = world->contacts.data + c->contact;
 		contact->rollingImpulse = c->rollingImpulse;
 		for (int k = 0; k < c->pointCount; ++k)

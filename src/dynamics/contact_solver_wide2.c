@@ -11,6 +11,14 @@
 
 #include <string.h>
 
+/* Forced inlining: the solve's two passes, and the prefetch helper (gcc counts a function that only
+ * prefetches as pure and drops its calls unless it is inlined first). */
+#if defined(__GNUC__) || defined(__clang__)
+#define CD2_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CD2_ALWAYS_INLINE inline
+#endif
+
 /* The gather below reads a solver body as nine consecutive reals. */
 typedef char cd2SolverBodyIsPacked[sizeof(cd2SolverBody) == 9 * sizeof(cdReal) ? 1 : -1];
 
@@ -175,9 +183,76 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
 	return true;
 }
 
-void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
+/* How many constraints ahead the pack asks for the contact records: they are read in colour order,
+ * scattered over the contact array. */
+#define CD2_PACK_PREFETCH_AHEAD 24
+
+/* Asks for the lines of contact record `contact` from its normal to its tangent speed: what
+ * cd2PrepareContactConstraint reads and the store writes. */
+static CD2_ALWAYS_INLINE void cd2PrefetchContactRecord(const cd2World* world, int contact)
 {
-	int zeroBody = context->bodyCount;
+#if defined(__GNUC__) || defined(__clang__)
+	const char* first = (const char*)&world->contacts.data[contact].normal;
+	const char* last = (const char*)(&world->contacts.data[contact].tangentSpeed + 1);
+	for (const char* p = first; p < last; p += 64)
+	{
+		__builtin_prefetch(p);
+	}
+	__builtin_prefetch(last - 1);
+#else
+	(void)world;
+	(void)contact;
+#endif
+}
+
+/* The same for writing: the lines of the record's points and rolling impulse. */
+static CD2_ALWAYS_INLINE void cd2PrefetchContactForStore(const cd2World* world, int contact)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	const char* first = (const char*)&world->contacts.data[contact].points[0].normalImpulse;
+	const char* last = (const char*)(&world->contacts.data[contact].rollingImpulse + 1);
+	for (const char* p = first; p < last; p += 64)
+	{
+		__builtin_prefetch(p, 1);
+	}
+	__builtin_prefetch(last - 1, 1);
+#else
+	(void)world;
+	(void)contact;
+#endif
+}
+
+static CD2_ALWAYS_INLINE void cd2PrefetchContact(const cd2World* world, const cd2StepContext* context, int i)
+{
+	if (i < context->constraintCount)
+	{
+		cd2PrefetchContactRecord(world, context->pairs[i].contact);
+	}
+}
+
+/* What the pack reads of a block's contacts and bodies, lane by lane (zero in empty lanes and for a
+ * missing second point), before the wide arithmetic. */
+typedef struct cd2PackInput
+{
+	cdReal invMassA[CD_W], invIA[CD_W], invMassB[CD_W], invIB[CD_W];
+	cdReal normalX[CD_W], normalY[CD_W];
+	cdReal vAx[CD_W], vAy[CD_W], wA[CD_W], vBx[CD_W], vBy[CD_W], wB[CD_W];
+	cdReal pointCount[CD_W];
+	cdReal anchorAx[2][CD_W], anchorAy[2][CD_W], anchorBx[2][CD_W], anchorBy[2][CD_W];
+	cdReal separation[2][CD_W];
+} cd2PackInput;
+
+/* cd2PrepareContactConstraint for the CD_W lanes of a block: the contact's own values are copied lane
+ * by lane, and the derived ones (masses, base separations, approach speeds) computed with the same
+ * operations in the same order on whole blocks, so every lane gets the one-by-one bits. */
+bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
+{
+	bool anyBounces = false;
+	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+	int zeroIndex = context->bodyCount;
+	bool warm = context->enableWarmStarting;
+	cdW zero = cdWZero(), one = cdWSplat(CD_R(1.0));
 	int color = 0;
 	for (int block = startBlock; block < endBlock; ++block)
 	{
@@ -188,60 +263,149 @@ void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 		/* The colour's constraints [first, last), CD_W to a block. */
 		int first = context->colorConstraintStart[color] + CD_W * (block - context->colorBlockStart[color]);
 		int last = context->colorConstraintStart[color + 1];
-		cd2PrepareContacts(world, context, first, first + CD_W < last ? first + CD_W : last);
+		if (block == startBlock)
+		{
+			for (int i = first; i < first + CD2_PACK_PREFETCH_AHEAD; ++i)
+			{
+				cd2PrefetchContact(world, context, i);
+			}
+		}
 		cd2ContactConstraintWide* w = context->wide + block;
-		memset(w, 0, sizeof(*w));
+		cd2PackInput in;
+		memset(&in, 0, sizeof(in));
+		cdReal restitution[CD_W] = {0}, friction[CD_W] = {0}, tangentSpeed[CD_W] = {0};
+		cdReal rollingResistance[CD_W] = {0}, rollingImpulse[CD_W] = {0};
+		cdReal biasRate[CD_W] = {0}, massScale[CD_W] = {0}, impulseScale[CD_W] = {0};
+		cdReal normalImpulse[2][CD_W] = {{0}}, tangentImpulse[2][CD_W] = {{0}};
+		bool bounces = false;
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
-			w->indexA[lane] = zeroBody;
-			w->indexB[lane] = zeroBody;
-			w->constraint[lane] = -1;
+			w->indexA[lane] = zeroIndex;
+			w->indexB[lane] = zeroIndex;
+			w->contact[lane] = -1;
+			w->pointCount[lane] = 0;
+			w->movesA[lane] = 0;
+			w->movesB[lane] = 0;
 			/* An empty lane's rotation is the identity, like the zero body's. */
 			if (first + lane >= last)
 			{
 				continue;
 			}
-			const cd2ContactConstraint* c = context->constraints + first + lane;
-			w->constraint[lane] = first + lane;
-			w->indexA[lane] = c->indexA < 0 ? zeroBody : c->indexA;
-			w->indexB[lane] = c->indexB < 0 ? zeroBody : c->indexB;
+			/* The next blocks' records (of this colour or the next). */
+			cd2PrefetchContact(world, context, first + lane + CD2_PACK_PREFETCH_AHEAD);
+			const cd2ConstraintPair* pair = context->pairs + first + lane;
+			const cd2Contact* contact = world->contacts.data + pair->contact;
+			/* A sleeping or static body is immovable for this step. */
+			const cd2SolverBody* bodyA = pair->indexA < 0 ? &zeroBody : context->bodies + pair->indexA;
+			const cd2SolverBody* bodyB = pair->indexB < 0 ? &zeroBody : context->bodies + pair->indexB;
+			cdReal mA = bodyA->invMass, iA = bodyA->invInertia, mB = bodyB->invMass, iB = bodyB->invInertia;
+			w->contact[lane] = pair->contact;
+			w->pointCount[lane] = (unsigned char)contact->pointCount;
+			w->indexA[lane] = pair->indexA < 0 ? zeroIndex : pair->indexA;
+			w->indexB[lane] = pair->indexB < 0 ? zeroIndex : pair->indexB;
 			/* Immovable: both inverse masses zero (the velocity update would add nothing). */
-			w->movesA[lane] =
-				(unsigned char)(c->indexA >= 0 && (c->invMassA != CD_R(0.0) || c->invIA != CD_R(0.0)));
-			w->movesB[lane] =
-				(unsigned char)(c->indexB >= 0 && (c->invMassB != CD_R(0.0) || c->invIB != CD_R(0.0)));
-			cdWSetLane(&w->invMassA, lane, c->invMassA);
-			cdWSetLane(&w->invIA, lane, c->invIA);
-			cdWSetLane(&w->invMassB, lane, c->invMassB);
-			cdWSetLane(&w->invIB, lane, c->invIB);
-			cdWSetLane(&w->normalX, lane, c->normal.x);
-			cdWSetLane(&w->normalY, lane, c->normal.y);
-			cdWSetLane(&w->friction, lane, c->friction);
-			cdWSetLane(&w->tangentSpeed, lane, c->tangentSpeed);
-			cdWSetLane(&w->rollingResistance, lane, c->rollingResistance);
-			cdWSetLane(&w->rollingMass, lane, c->rollingMass);
-			cdWSetLane(&w->rollingImpulse, lane, c->rollingImpulse);
-			cdWSetLane(&w->biasRate, lane, c->softness.biasRate);
-			cdWSetLane(&w->massScale, lane, c->softness.massScale);
-			cdWSetLane(&w->impulseScale, lane, c->softness.impulseScale);
-			for (int k = 0; k < c->pointCount; ++k)
+			w->movesA[lane] = (unsigned char)(pair->indexA >= 0 && (mA != CD_R(0.0) || iA != CD_R(0.0)));
+			w->movesB[lane] = (unsigned char)(pair->indexB >= 0 && (mB != CD_R(0.0) || iB != CD_R(0.0)));
+			const cd2Softness* soft =
+				(mA == CD_R(0.0) || mB == CD_R(0.0)) ? &context->staticSoftness : &context->contactSoftness;
+			biasRate[lane] = soft->biasRate;
+			massScale[lane] = soft->massScale;
+			impulseScale[lane] = soft->impulseScale;
+			in.invMassA[lane] = mA;
+			in.invIA[lane] = iA;
+			in.invMassB[lane] = mB;
+			in.invIB[lane] = iB;
+			cd2Vec n = contact->normal;
+			in.normalX[lane] = n.x;
+			in.normalY[lane] = n.y;
+			friction[lane] = contact->friction;
+			restitution[lane] = contact->restitution;
+			bounces = bounces || contact->restitution != CD_R(0.0);
+			rollingResistance[lane] = contact->rollingResistance;
+			tangentSpeed[lane] = contact->tangentSpeed;
+			rollingImpulse[lane] = contact->rollingImpulse;
+			in.vAx[lane] = bodyA->linearVelocity.x;
+			in.vAy[lane] = bodyA->linearVelocity.y;
+			in.wA[lane] = bodyA->angularVelocity;
+			in.vBx[lane] = bodyB->linearVelocity.x;
+			in.vBy[lane] = bodyB->linearVelocity.y;
+			in.wB[lane] = bodyB->angularVelocity;
+			in.pointCount[lane] = (cdReal)contact->pointCount;
+			for (int k = 0; k < contact->pointCount; ++k)
 			{
-				const cd2ContactConstraintPoint* cp = c->points + k;
-				cd2ContactPointWide* wp = w->points + k;
-				cdWSetLane(&wp->anchorAx, lane, cp->anchorA.x);
-				cdWSetLane(&wp->anchorAy, lane, cp->anchorA.y);
-				cdWSetLane(&wp->anchorBx, lane, cp->anchorB.x);
-				cdWSetLane(&wp->anchorBy, lane, cp->anchorB.y);
-				cdWSetLane(&wp->baseSeparation, lane, cp->baseSeparation);
-				cdWSetLane(&wp->relativeVelocity, lane, cp->relativeVelocity);
-				cdWSetLane(&wp->normalImpulse, lane, cp->normalImpulse);
-				cdWSetLane(&wp->tangentImpulse, lane, cp->tangentImpulse);
-				cdWSetLane(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
-				cdWSetLane(&wp->normalMass, lane, cp->normalMass);
-				cdWSetLane(&wp->tangentMass, lane, cp->tangentMass);
+				const cd2ContactPoint* mp = contact->points + k;
+				in.anchorAx[k][lane] = mp->anchorA.x;
+				in.anchorAy[k][lane] = mp->anchorA.y;
+				in.anchorBx[k][lane] = mp->anchorB.x;
+				in.anchorBy[k][lane] = mp->anchorB.y;
+				in.separation[k][lane] = mp->separation;
+				normalImpulse[k][lane] = warm ? mp->normalImpulse : CD_R(0.0);
+				tangentImpulse[k][lane] = warm ? mp->tangentImpulse : CD_R(0.0);
 			}
 		}
+		w->bounces = bounces;
+		anyBounces = anyBounces || bounces;
+		cdW mA = cdWLoad(in.invMassA), iA = cdWLoad(in.invIA), mB = cdWLoad(in.invMassB), iB = cdWLoad(in.invIB);
+		cdW nx = cdWLoad(in.normalX), ny = cdWLoad(in.normalY);
+		cdW tx = ny, ty = cdWNeg(nx);
+		cdW vAx = cdWLoad(in.vAx), vAy = cdWLoad(in.vAy), wA = cdWLoad(in.wA);
+		cdW vBx = cdWLoad(in.vBx), vBy = cdWLoad(in.vBy), wB = cdWLoad(in.wB);
+		w->invMassA = mA;
+		w->invIA = iA;
+		w->invMassB = mB;
+		w->invIB = iB;
+		w->normalX = nx;
+		w->normalY = ny;
+		w->friction = cdWLoad(friction);
+		w->tangentSpeed = cdWLoad(tangentSpeed);
+		w->rollingResistance = cdWLoad(rollingResistance);
+		w->rollingImpulse = cdWLoad(rollingImpulse);
+		w->biasRate = cdWLoad(biasRate);
+		w->massScale = cdWLoad(massScale);
+		w->impulseScale = cdWLoad(impulseScale);
+		w->restitution = cdWLoad(restitution);
+		cdW iSum = cdWAdd(iA, iB);
+		cdW positive = cdWGreater(iSum, zero);
+		w->rollingMass = cdWSelect(positive, cdWDiv(one, cdWSelect(positive, iSum, one)), zero);
+		cdW mSum = cdWAdd(mA, mB);
+		cdW pointCount = cdWLoad(in.pointCount);
+		for (int k = 0; k < 2; ++k)
+		{
+			cd2ContactPointWide* wp = w->points + k;
+			/* Lanes without this point keep zeros, as one by one. */
+			cdW has = cdWGreater(pointCount, cdWSplat((cdReal)k));
+			cdW aAx = cdWLoad(in.anchorAx[k]), aAy = cdWLoad(in.anchorAy[k]);
+			cdW aBx = cdWLoad(in.anchorBx[k]), aBy = cdWLoad(in.anchorBy[k]);
+			wp->anchorAx = aAx;
+			wp->anchorAy = aAy;
+			wp->anchorBx = aBx;
+			wp->anchorBy = aBy;
+			wp->baseSeparation = cdWSelect(
+				has,
+				cdWSub(cdWLoad(in.separation[k]),
+					   cdWAdd(cdWMul(cdWSub(aBx, aAx), nx), cdWMul(cdWSub(aBy, aAy), ny))),
+				zero);
+			wp->normalImpulse = cdWLoad(normalImpulse[k]);
+			wp->tangentImpulse = cdWLoad(tangentImpulse[k]);
+			wp->maxNormalImpulse = zero;
+			cdW rnA = cdWSub(cdWMul(aAx, ny), cdWMul(aAy, nx));
+			cdW rnB = cdWSub(cdWMul(aBx, ny), cdWMul(aBy, nx));
+			cdW kNormal = cdWAdd(cdWAdd(mSum, cdWMul(cdWMul(iA, rnA), rnA)), cdWMul(cdWMul(iB, rnB), rnB));
+			cdW usable = cdWAnd(has, cdWGreater(kNormal, zero));
+			wp->normalMass = cdWSelect(usable, cdWDiv(one, cdWSelect(usable, kNormal, one)), zero);
+			cdW rtA = cdWSub(cdWMul(aAx, ty), cdWMul(aAy, tx));
+			cdW rtB = cdWSub(cdWMul(aBx, ty), cdWMul(aBy, tx));
+			cdW kTangent = cdWAdd(cdWAdd(mSum, cdWMul(cdWMul(iA, rtA), rtA)), cdWMul(cdWMul(iB, rtB), rtB));
+			usable = cdWAnd(has, cdWGreater(kTangent, zero));
+			wp->tangentMass = cdWSelect(usable, cdWDiv(one, cdWSelect(usable, kTangent, one)), zero);
+			/* The approach speed at the start of the step. */
+			cdW vrAx = cdWAdd(vAx, cdWMul(cdWNeg(wA), aAy)), vrAy = cdWAdd(vAy, cdWMul(wA, aAx));
+			cdW vrBx = cdWAdd(vBx, cdWMul(cdWNeg(wB), aBy)), vrBy = cdWAdd(vBy, cdWMul(wB, aBx));
+			wp->relativeVelocity =
+				cdWSelect(has, cdWAdd(cdWMul(nx, cdWSub(vrBx, vrAx)), cdWMul(ny, cdWSub(vrBy, vrAy))), zero);
+		}
 	}
+	return anyBounces;
 }
 
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
@@ -278,11 +442,6 @@ void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end)
 
 /* Inlined twice with a constant useBias (the solve and the relax pass): each loop keeps only its
  * own work, and fewer values compete for registers. */
-#if defined(__GNUC__) || defined(__clang__)
-#define CD2_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define CD2_ALWAYS_INLINE inline
-#endif
 static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, int start, int end,
 													   const bool useBias)
 {
@@ -298,6 +457,7 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 		cdW mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
 		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
 		cdW nx = c->normalX, ny = c->normalY;
+		cdW biasRate = useBias ? cdWMul(c->massScale, c->biasRate) : zero;
 		cdW totalNormalImpulse = zero;
 		for (int k = 0; k < 2; ++k)
 		{
@@ -314,7 +474,7 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 			cdW bias, massScale, impulseScale;
 			if (useBias)
 			{
-				cdW softBias = cdWMax(cdWMul(cdWMul(c->massScale, c->biasRate), s), minBias);
+				cdW softBias = cdWMax(cdWMul(biasRate, s), minBias);
 				bias = cdWSelect(apart, cdWMul(s, inv_h), softBias);
 				massScale = cdWSelect(apart, one, c->massScale);
 				impulseScale = cdWSelect(apart, zero, c->impulseScale);
@@ -325,17 +485,18 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 				massScale = one;
 				impulseScale = zero;
 			}
-			cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+			cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
 			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
 			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
 			if (useBias)
 			{
 				cp->relativeVelocity = cdWMin(vn, cp->relativeVelocity);
 			}
-			cdW impulse = cdWSub(cdWMul(cdWNeg(cp->normalMass), cdWAdd(cdWMul(massScale, vn), bias)),
-								 cdWMul(impulseScale, cp->normalImpulse));
-			cdW newImpulse = cdWMax(cdWAdd(cp->normalImpulse, impulse), zero);
-			impulse = cdWSub(newImpulse, cp->normalImpulse);
+			/* -impulse: the same bits as the one-by-one solver's (x + -y is x - y). */
+			cdW negImpulse = cdWAdd(cdWMul(cp->normalMass, cdWAdd(cdWMul(massScale, vn), bias)),
+									cdWMul(impulseScale, cp->normalImpulse));
+			cdW newImpulse = cdWMax(cdWSub(cp->normalImpulse, negImpulse), zero);
+			cdW impulse = cdWSub(newImpulse, cp->normalImpulse);
 			cp->normalImpulse = newImpulse;
 			cp->maxNormalImpulse = cdWMax(cp->maxNormalImpulse, impulse);
 			totalNormalImpulse = cdWAdd(totalNormalImpulse, newImpulse);
@@ -356,14 +517,13 @@ static CD2_ALWAYS_INLINE void cd2SolveContactsWideImpl(cd2StepContext* context, 
 			{
 				cd2ContactPointWide* cp = c->points + k;
 				cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
-				cdW dvx = cdWSub(cdWAdd(vBx, cdWMul(cdWNeg(wB), rBy)), cdWAdd(vAx, cdWMul(cdWNeg(wA), rAy)));
+				cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
 				cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
 				cdW vt = cdWSub(cdWAdd(cdWMul(dvx, tx), cdWMul(dvy, ty)), c->tangentSpeed);
-				cdW impulse = cdWMul(cdWNeg(cp->tangentMass), vt);
 				cdW maxFriction = cdWMul(c->friction, cp->normalImpulse);
-				cdW newImpulse =
-					cdWClamp(cdWAdd(cp->tangentImpulse, impulse), cdWNeg(maxFriction), maxFriction);
-				impulse = cdWSub(newImpulse, cp->tangentImpulse);
+				cdW newImpulse = cdWClamp(cdWSub(cp->tangentImpulse, cdWMul(cp->tangentMass, vt)),
+										  cdWNeg(maxFriction), maxFriction);
+				cdW impulse = cdWSub(newImpulse, cp->tangentImpulse);
 				cp->tangentImpulse = newImpulse;
 				cdW Px = cdWMul(impulse, tx), Py = cdWMul(impulse, ty);
 				vAx = cdWSub(vAx, cdWMul(mA, Px));
@@ -402,43 +562,120 @@ void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useB
 	}
 }
 
-void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock,
-						  bool toContacts)
+/* Restitution of blocks [start, end) (one colour at most): cd2ApplyRestitution's arithmetic lane by
+ * lane; a point that does not bounce (no restitution, too slow an approach, never pushed) leaves the
+ * velocities and impulses exactly as they were. */
+void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
+{
+	cd2SolverBody* bodies = context->bodies;
+	cdW threshold = cdWSplat(-context->restitutionThreshold);
+	cdW h = cdWSplat(context->h);
+	cdW zero = cdWZero();
+	int zeroIndex = context->bodyCount;
+	for (int i = start; i < end; ++i)
+	{
+		cd2ContactConstraintWide* c = context->wide + i;
+		if (!c->bounces)
+		{
+			continue;
+		}
+		/* Only points that were approaching fast enough and actually pushed bounce (what a point
+		 * bounces on is its own, so both points are known before either is solved). */
+		cdW bouncy = cdWNotEqual(c->restitution, zero);
+		cdW applies[2];
+		for (int k = 0; k < 2; ++k)
+		{
+			const cd2ContactPointWide* cp = c->points + k;
+			cdW skip = cdWOr(cdWGreater(cp->relativeVelocity, threshold), cdWEqual(cp->maxNormalImpulse, zero));
+			applies[k] = cdWAndNot(skip, bouncy);
+		}
+		if (!cdWAny(cdWOr(applies[0], applies[1])))
+		{
+			continue;
+		}
+		cd2BodyLanes a = cd2GatherBodies(bodies, c->indexA);
+		cd2BodyLanes b = cd2GatherBodies(bodies, c->indexB);
+		cdW mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
+		cdW vAx = a.vx, vAy = a.vy, wA = a.w, vBx = b.vx, vBy = b.vy, wB = b.w;
+		cdW nx = c->normalX, ny = c->normalY;
+		/* B's acceleration relative to A's along the normal (the zero body's is zero), read only
+		 * here: the pack leaves the accelerations alone. */
+		cdReal accelerationLanes[CD_W];
+		for (int lane = 0; lane < CD_W; ++lane)
+		{
+			cd2Vec n = {cdWGetLane(&nx, lane), cdWGetLane(&ny, lane)};
+			cd2Vec accA = c->indexA[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexA[lane]];
+			cd2Vec accB = c->indexB[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexB[lane]];
+			accelerationLanes[lane] = cd2Dot(n, cd2Sub(accB, accA));
+		}
+		cdW normalAcceleration = cdWLoad(accelerationLanes);
+		for (int k = 0; k < 2; ++k)
+		{
+			cd2ContactPointWide* cp = c->points + k;
+			cdW apply = applies[k];
+			if (!cdWAny(apply))
+			{
+				continue;
+			}
+			cdW rAx = cp->anchorAx, rAy = cp->anchorAy, rBx = cp->anchorBx, rBy = cp->anchorBy;
+			cdW dvx = cdWSub(cdWSub(vBx, cdWMul(wB, rBy)), cdWSub(vAx, cdWMul(wA, rAy)));
+			cdW dvy = cdWSub(cdWAdd(vBy, cdWMul(wB, rBx)), cdWAdd(vAy, cdWMul(wA, rAx)));
+			cdW vn = cdWAdd(cdWMul(dvx, nx), cdWMul(dvy, ny));
+			cdW approach = cdWMin(cdWAdd(cp->relativeVelocity, cdWMul(h, normalAcceleration)), zero);
+			cdW negImpulse = cdWMul(cp->normalMass, cdWAdd(vn, cdWMul(c->restitution, approach)));
+			cdW newImpulse = cdWMax(cdWSub(cp->normalImpulse, negImpulse), zero);
+			cdW impulse = cdWSub(newImpulse, cp->normalImpulse);
+			cp->normalImpulse = cdWSelect(apply, newImpulse, cp->normalImpulse);
+			cp->maxNormalImpulse = cdWSelect(apply, cdWMax(cp->maxNormalImpulse, impulse), cp->maxNormalImpulse);
+			cdW Px = cdWMul(impulse, nx), Py = cdWMul(impulse, ny);
+			vAx = cdWSelect(apply, cdWSub(vAx, cdWMul(mA, Px)), vAx);
+			vAy = cdWSelect(apply, cdWSub(vAy, cdWMul(mA, Py)), vAy);
+			wA = cdWSelect(apply, cdWSub(wA, cdWMul(iA, cdWSub(cdWMul(rAx, Py), cdWMul(rAy, Px)))), wA);
+			vBx = cdWSelect(apply, cdWAdd(vBx, cdWMul(mB, Px)), vBx);
+			vBy = cdWSelect(apply, cdWAdd(vBy, cdWMul(mB, Py)), vBy);
+			wB = cdWSelect(apply, cdWAdd(wB, cdWMul(iB, cdWSub(cdWMul(rBx, Py), cdWMul(rBy, Px)))), wB);
+		}
+		cd2ScatterVelocities(bodies, c->indexA, c->movesA, vAx, vAy, wA, a.dpx);
+		cd2ScatterVelocities(bodies, c->indexB, c->movesB, vBx, vBy, wB, b.dpx);
+	}
+}
+
+/* In blocks: how far ahead the store asks for the contact records it will write. */
+#define CD2_STORE_PREFETCH_AHEAD 4
+
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock)
 {
 	for (int i = startBlock; i < endBlock; ++i)
 	{
 		const cd2ContactConstraintWide* w = context->wide + i;
+		/* The records of a few blocks ahead (their lines arrive while these are written). */
+		if (i + CD2_STORE_PREFETCH_AHEAD < context->wideCount)
+		{
+			const cd2ContactConstraintWide* ahead = context->wide + i + CD2_STORE_PREFETCH_AHEAD;
+			for (int lane = 0; lane < CD_W; ++lane)
+			{
+				if (ahead->contact[lane] >= 0)
+				{
+					cd2PrefetchContactForStore(world, ahead->contact[lane]);
+				}
+			}
+		}
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
-			if (w->constraint[lane] < 0)
+			if (w->contact[lane] < 0)
 			{
 				continue;
 			}
-			cd2ContactConstraint* c = context->constraints + w->constraint[lane];
-			if (toContacts)
-			{
-				cd2Contact* contact = world->contacts.data + c->contact;
-				contact->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
-				for (int k = 0; k < c->pointCount; ++k)
-				{
-					const cd2ContactPointWide* wp = w->points + k;
-					cd2ContactPoint* mp = contact->points + k;
-					mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
-					mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
-					mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
-					mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
-				}
-				continue;
-			}
-			c->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
-			for (int k = 0; k < c->pointCount; ++k)
+			cd2Contact* contact = world->contacts.data + w->contact[lane];
+			contact->rollingImpulse = cdWGetLane(&w->rollingImpulse, lane);
+			for (int k = 0; k < w->pointCount[lane]; ++k)
 			{
 				const cd2ContactPointWide* wp = w->points + k;
-				cd2ContactConstraintPoint* cp = c->points + k;
-				cp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
-				cp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
-				cp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
-				cp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+				cd2ContactPoint* mp = contact->points + k;
+				mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
+				mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
+				mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
+				mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
 			}
 		}
 	}

@@ -210,6 +210,7 @@ typedef enum cd2StageKind
 	CD2_STAGE_SOLVE_OVERFLOW,		/* single */
 	CD2_STAGE_INTEGRATE_POSITIONS,	/* bodies */
 	CD2_STAGE_STORE_WIDE,			/* wide blocks */
+	CD2_STAGE_RESTITUTION_WIDE,		/* wide blocks of one colour */
 	CD2_STAGE_RESTITUTION,			/* single */
 	CD2_STAGE_STORE_IMPULSES,		/* constraints */
 	CD2_STAGE_STORE_JOINTS,			/* single */
@@ -233,6 +234,9 @@ typedef struct cd2StageList
 	cd2Stage* stages;
 	int stageCount, stageCapacity;
 	int workerCount;
+	/* Set by the prepare and pack stages when a constraint has restitution; the restitution stages,
+	 * after them, are passed over by every worker while it is 0. */
+	cd2StageCounter* bouncing;
 } cd2StageList;
 
 /* Appends a stage of itemCount items in blocks of at least minBlock (a few blocks per worker). */
@@ -275,6 +279,28 @@ static void cd2AddWideStages(cd2StageList* list, cd2StageKind kind, bool useBias
 	}
 }
 
+static void cd2SetBouncing(const cd2StageList* list)
+{
+#if CD2_STAGE_ATOMICS
+	atomic_store_explicit(list->bouncing, 1, memory_order_relaxed);
+#else
+	*list->bouncing = 1;
+#endif
+}
+
+static bool cd2StageSkipped(const cd2StageList* list, const cd2Stage* stage)
+{
+	if (stage->kind != CD2_STAGE_RESTITUTION_WIDE && stage->kind != CD2_STAGE_RESTITUTION)
+	{
+		return false;
+	}
+#if CD2_STAGE_ATOMICS
+	return atomic_load_explicit(list->bouncing, memory_order_relaxed) == 0;
+#else
+	return *list->bouncing == 0;
+#endif
+}
+
 static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int start, int end)
 {
 	cd2World* world = list->world;
@@ -282,10 +308,16 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	switch (stage->kind)
 	{
 		case CD2_STAGE_PREPARE_CONTACTS:
-			cd2PrepareContacts(world, context, stage->first + start, stage->first + end);
+			if (cd2PrepareContacts(world, context, stage->first + start, stage->first + end))
+			{
+				cd2SetBouncing(list);
+			}
 			break;
 		case CD2_STAGE_PACK_WIDE:
-			cd2PackContactsWide(world, context, start, end);
+			if (cd2PackContactsWide(world, context, start, end))
+			{
+				cd2SetBouncing(list);
+			}
 			break;
 		case CD2_STAGE_INTEGRATE_VELOCITIES:
 			cd2IntegrateVelocities(context, start, end);
@@ -312,7 +344,10 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2IntegratePositions(context, start, end);
 			break;
 		case CD2_STAGE_STORE_WIDE:
-			cd2StoreContactsWide(world, context, start, end, stage->useBias);
+			cd2StoreContactsWide(world, context, start, end);
+			break;
+		case CD2_STAGE_RESTITUTION_WIDE:
+			cd2ApplyRestitutionWide(context, stage->first + start, stage->first + end);
 			break;
 		case CD2_STAGE_RESTITUTION:
 			cd2ApplyRestitution(context);
@@ -337,6 +372,12 @@ static void cd2RunStages(const cd2StageList* list)
 	for (int s = 0; s < list->stageCount; ++s)
 	{
 		cd2Stage* stage = list->stages + s;
+		/* Every worker reads the same flag here: it was set before the stages that set it were
+		 * seen finished. */
+		if (cd2StageSkipped(list, stage))
+		{
+			continue;
+		}
 #if CD2_STAGE_ATOMICS
 		for (;;)
 		{
@@ -581,17 +622,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	/* Touching contacts with an awake body: their pairs in index order, small records (the constraints
 	 * themselves are filled by the prepare stage, in colour order). */
 	int hitCandidates = 0;
-	int bouncing = 0; /* constraints with restitution */
 	int contactCapacity = world->contacts.count;
 	cd2ConstraintPair* pairs = (cd2ConstraintPair*)cdArena_AllocUncleared(
 		&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
 	/* The colouring's bodies of each pair. */
 	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
-	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
-		&world->arena, (size_t)contactCapacity * sizeof(cd2ContactConstraint));
-	if (contactCapacity > 0 &&
-		(pairs == NULL || bodyA == NULL || bodyB == NULL || context.constraints == NULL))
+	if (contactCapacity > 0 && (pairs == NULL || bodyA == NULL || bodyB == NULL))
 	{
 		world->outOfMemory = true;
 		return;
@@ -611,7 +648,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			continue;
 		}
 		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
-		bouncing += contact->restitution != CD_R(0.0) ? 1 : 0;
 		int k = context.constraintCount++;
 		pairs[k].contact = i;
 		pairs[k].indexA = indexA;
@@ -671,6 +707,15 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.wideCount = 0;
 		context.overflowStart = 0;
 	}
+	/* One-by-one constraints for the overflow colour only (constraint i at i - overflowStart). */
+	int overflowConstraints = context.constraintCount - context.overflowStart;
+	context.constraints = (cd2ContactConstraint*)cdArena_AllocUncleared(
+		&world->arena, (size_t)overflowConstraints * sizeof(cd2ContactConstraint));
+	if (overflowConstraints > 0 && context.constraints == NULL)
+	{
+		world->outOfMemory = true;
+		return;
+	}
 	cd2PrepareJoints(world, &context);
 
 	/* The stages, from preparing the contacts to finalizing the bodies (see the top of the file). */
@@ -679,12 +724,21 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.world = world;
 	list.step = &context;
 	list.workerCount = world->workerCount;
+	cd2StageCounter bouncing;
+#if CD2_STAGE_ATOMICS
+	atomic_init(&bouncing, 0);
+#else
+	bouncing = 0;
+#endif
+	list.bouncing = &bouncing;
 	int jointColors = 0;
 	for (int c = 0; c <= CD_GRAPH_COLOR_COUNT; ++c)
 	{
 		jointColors += context.jointColorStart[c + 1] > context.jointColorStart[c] ? 1 : 0;
 	}
-	list.stageCapacity = 8 + subStepCount * (8 + 3 * (context.colorCount + jointColors));
+	/* Restitution adds one stage per contact colour after the sub-steps. */
+	list.stageCapacity =
+		8 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
 	list.stages =
 		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
 	if (list.stages == NULL)
@@ -713,14 +767,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2AddWideStages(&list, CD2_STAGE_SOLVE_WIDE, false);
 		cd2AddStage(&list, CD2_STAGE_SOLVE_OVERFLOW, overflowCount, 1, 0, false);
 	}
-	/* Without restitution (which reads and changes the constraints' impulses) the wide blocks are
-	 * stored straight into their contacts (useBias marks that), and the store stage covers only the
-	 * overflow colour's constraints. */
-	bool storeDirect = bouncing == 0;
-	int storeFirst = storeDirect ? context.overflowStart : 0;
-	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, storeDirect);
-	cd2AddStage(&list, CD2_STAGE_RESTITUTION, bouncing > 0 ? 1 : 0, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - storeFirst, 32, storeFirst, false);
+	/* Restitution colour by colour, then the overflow colour's (the order of the one-by-one pass),
+	 * passed over when no constraint has restitution; then the impulses back into the contacts. */
+	cd2AddWideStages(&list, CD2_STAGE_RESTITUTION_WIDE, false);
+	cd2AddStage(&list, CD2_STAGE_RESTITUTION, overflowCount, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - context.overflowStart, 32,
+				context.overflowStart, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
 

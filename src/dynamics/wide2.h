@@ -37,6 +37,10 @@ static inline cdW cdWMul(cdW a, cdW b)
 {
 	return _mm_mul_ps(a, b);
 }
+static inline cdW cdWDiv(cdW a, cdW b)
+{
+	return _mm_div_ps(a, b);
+}
 static inline cdW cdWNeg(cdW a)
 {
 	return _mm_xor_ps(a, _mm_set1_ps(-0.0f));
@@ -63,6 +67,27 @@ static inline cdW cdWGreater(cdW a, cdW b)
 static inline cdW cdWLess(cdW a, cdW b)
 {
 	return _mm_cmplt_ps(a, b);
+}
+static inline cdW cdWEqual(cdW a, cdW b)
+{
+	return _mm_cmpeq_ps(a, b);
+}
+static inline cdW cdWNotEqual(cdW a, cdW b)
+{
+	return _mm_cmpneq_ps(a, b);
+}
+/* Lane by lane a or b, a and b, and (not a) and b, of masks. */
+static inline cdW cdWOr(cdW a, cdW b)
+{
+	return _mm_or_ps(a, b);
+}
+static inline cdW cdWAnd(cdW a, cdW b)
+{
+	return _mm_and_ps(a, b);
+}
+static inline cdW cdWAndNot(cdW a, cdW b)
+{
+	return _mm_andnot_ps(a, b);
 }
 static inline void cdWStore(cdReal* out, cdW a)
 {
@@ -106,6 +131,10 @@ static inline cdW cdWMul(cdW a, cdW b)
 {
 	return wasm_f32x4_mul(a, b);
 }
+static inline cdW cdWDiv(cdW a, cdW b)
+{
+	return wasm_f32x4_div(a, b);
+}
 static inline cdW cdWNeg(cdW a)
 {
 	return wasm_f32x4_neg(a);
@@ -130,6 +159,26 @@ static inline cdW cdWGreater(cdW a, cdW b)
 static inline cdW cdWLess(cdW a, cdW b)
 {
 	return wasm_f32x4_lt(a, b);
+}
+static inline cdW cdWEqual(cdW a, cdW b)
+{
+	return wasm_f32x4_eq(a, b);
+}
+static inline cdW cdWNotEqual(cdW a, cdW b)
+{
+	return wasm_f32x4_ne(a, b);
+}
+static inline cdW cdWOr(cdW a, cdW b)
+{
+	return wasm_v128_or(a, b);
+}
+static inline cdW cdWAnd(cdW a, cdW b)
+{
+	return wasm_v128_and(a, b);
+}
+static inline cdW cdWAndNot(cdW a, cdW b)
+{
+	return wasm_v128_andnot(b, a);
 }
 static inline void cdWStore(cdReal* out, cdW a)
 {
@@ -178,6 +227,10 @@ static inline cdW cdWMul(cdW a, cdW b)
 {
 	CD_W_LANES(a.v[i] * b.v[i]);
 }
+static inline cdW cdWDiv(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] / b.v[i]);
+}
 static inline cdW cdWNeg(cdW a)
 {
 	CD_W_LANES(-a.v[i]);
@@ -202,6 +255,26 @@ static inline cdW cdWGreater(cdW a, cdW b)
 static inline cdW cdWLess(cdW a, cdW b)
 {
 	CD_W_LANES(a.v[i] < b.v[i] ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWEqual(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] == b.v[i] ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWNotEqual(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] != b.v[i] ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWOr(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] != CD_R(0.0) || b.v[i] != CD_R(0.0) ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWAnd(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] != CD_R(0.0) && b.v[i] != CD_R(0.0) ? CD_R(1.0) : CD_R(0.0));
+}
+static inline cdW cdWAndNot(cdW a, cdW b)
+{
+	CD_W_LANES(a.v[i] == CD_R(0.0) && b.v[i] != CD_R(0.0) ? CD_R(1.0) : CD_R(0.0));
 }
 static inline void cdWStore(cdReal* out, cdW a)
 {

@@ -253,12 +253,15 @@ typedef struct cd2ContactConstraintWide
 	cdW normalX, normalY;
 	cdW friction, tangentSpeed, rollingResistance, rollingMass, rollingImpulse;
 	cdW biasRate, massScale, impulseScale;
+	cdW restitution;
 	cd2ContactPointWide points[2];
 	int indexA[CD_W], indexB[CD_W]; /* solver bodies; the zero body (index bodyCount) when immovable */
 	/* 1 when the lane's body can move (its velocity is written back): immovable bodies (the zero
 	 * body, kinematic bodies) are shared between blocks of one colour and only read. */
 	unsigned char movesA[CD_W], movesB[CD_W];
-	int constraint[CD_W]; /* index in the constraint array, -1 for an empty lane */
+	unsigned char pointCount[CD_W];
+	bool bounces; /* some lane has restitution */
+	int contact[CD_W]; /* the lane's contact, -1 for an empty lane */
 } cd2ContactConstraintWide;
 
 typedef struct cd2StepContext
@@ -272,7 +275,7 @@ typedef struct cd2StepContext
 	cd2SolverBodyParams* params;
 	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
-	cd2ContactConstraint* constraints;
+	cd2ContactConstraint* constraints; /* the overflow colour's, from overflowStart on */
 	const cd2ConstraintPair* pairs;		 /* of each constraint (colour order), for cd2PrepareContacts */
 	const cd2ConstraintPair* indexOrder; /* the same in contact index order */
 	int constraintCount;
@@ -431,8 +434,64 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 							  cdReal speculativeDistance);
 
 /* ---- contact_solver2.c ----------------------------------------------------------------------- */
-/* Constraints [start, end): each reads its contact and bodies and writes only itself. */
-void cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end);
+/* Fills a constraint from its pair, its contact and the dense solver bodies (reads nothing else). */
+static inline void cd2PrepareContactConstraint(const cd2World* world, const cd2StepContext* context,
+											   const cd2ConstraintPair* pair, cd2ContactConstraint* c)
+{
+	static const cd2SolverBody zeroBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+										   {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+	c->contact = pair->contact;
+	c->indexA = pair->indexA;
+	c->indexB = pair->indexB;
+	const cd2Contact* contact = world->contacts.data + c->contact;
+	/* A sleeping or static body is immovable for this step. */
+	const cd2SolverBody* bodyA = c->indexA < 0 ? &zeroBody : context->bodies + c->indexA;
+	const cd2SolverBody* bodyB = c->indexB < 0 ? &zeroBody : context->bodies + c->indexB;
+	c->invMassA = bodyA->invMass;
+	c->invIA = bodyA->invInertia;
+	c->invMassB = bodyB->invMass;
+	c->invIB = bodyB->invInertia;
+	c->softness = (c->invMassA == CD_R(0.0) || c->invMassB == CD_R(0.0)) ? context->staticSoftness
+																		 : context->contactSoftness;
+	c->normal = contact->normal;
+	c->friction = contact->friction;
+	c->restitution = contact->restitution;
+	c->rollingResistance = contact->rollingResistance;
+	c->tangentSpeed = contact->tangentSpeed;
+	c->rollingImpulse = contact->rollingImpulse;
+	cdReal iSum = c->invIA + c->invIB;
+	c->rollingMass = iSum > CD_R(0.0) ? CD_R(1.0) / iSum : CD_R(0.0);
+	c->pointCount = contact->pointCount;
+	cd2Vec n = c->normal, t = cd2RightPerp(n);
+	cd2Vec accA = c->indexA < 0 ? CD2_VEC_ZERO : context->accelerations[c->indexA];
+	cd2Vec accB = c->indexB < 0 ? CD2_VEC_ZERO : context->accelerations[c->indexB];
+	c->normalAcceleration = cd2Dot(n, cd2Sub(accB, accA));
+	cd2Vec vA = bodyA->linearVelocity, vB = bodyB->linearVelocity;
+	cdReal wA = bodyA->angularVelocity, wB = bodyB->angularVelocity;
+	for (int k = 0; k < c->pointCount; ++k)
+	{
+		const cd2ContactPoint* mp = contact->points + k;
+		cd2ContactConstraintPoint* cp = c->points + k;
+		cp->anchorA = mp->anchorA;
+		cp->anchorB = mp->anchorB;
+		cp->baseSeparation = mp->separation - cd2Dot(cd2Sub(mp->anchorB, mp->anchorA), n);
+		cp->normalImpulse = context->enableWarmStarting ? mp->normalImpulse : CD_R(0.0);
+		cp->tangentImpulse = context->enableWarmStarting ? mp->tangentImpulse : CD_R(0.0);
+		cp->maxNormalImpulse = CD_R(0.0);
+		cdReal rnA = cd2Cross(cp->anchorA, n), rnB = cd2Cross(cp->anchorB, n);
+		cdReal kNormal = c->invMassA + c->invMassB + c->invIA * rnA * rnA + c->invIB * rnB * rnB;
+		cp->normalMass = kNormal > CD_R(0.0) ? CD_R(1.0) / kNormal : CD_R(0.0);
+		cdReal rtA = cd2Cross(cp->anchorA, t), rtB = cd2Cross(cp->anchorB, t);
+		cdReal kTangent = c->invMassA + c->invMassB + c->invIA * rtA * rtA + c->invIB * rtB * rtB;
+		cp->tangentMass = kTangent > CD_R(0.0) ? CD_R(1.0) / kTangent : CD_R(0.0);
+		cd2Vec vrA = cd2Add(vA, cd2CrossSV(wA, cp->anchorA));
+		cd2Vec vrB = cd2Add(vB, cd2CrossSV(wB, cp->anchorB));
+		cp->relativeVelocity = cd2Dot(n, cd2Sub(vrB, vrA));
+	}
+}
+/* Constraints [start, end): each reads its contact and bodies and writes only itself. true when
+ * one of them has restitution. */
+bool cd2PrepareContacts(const cd2World* world, cd2StepContext* context, int start, int end);
 void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
@@ -440,17 +499,18 @@ void cd2ApplyRestitution(cd2StepContext* context);
  * returns when it is done; on the calling thread when there is one worker or few items. */
 void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext);
 /* Lays the coloured constraints out in wide blocks (colorBlockStart, overflowStart) and allocates
- * them; cd2PackContactsWide then prepares the constraints of blocks [start, end) (cd2PrepareContacts,
- * while they are in cache) and fills the blocks from them. */
+ * them; cd2PackContactsWide then prepares the constraints of blocks [start, end)
+ * (cd2PrepareContactConstraint's values) straight into the blocks, true when one has restitution. */
 bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context);
-void cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock);
+bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int startBlock, int endBlock);
 /* Blocks [start, end) of the wide constraints (one colour at most, see colorBlockStart). */
 void cd2WarmStartContactsWide(cd2StepContext* context, int start, int end);
 void cd2SolveContactsWide(cd2StepContext* context, int start, int end, bool useBias);
-/* Blocks [start, end) back into their constraints, or straight into their contacts when toContacts
- * (no restitution pass in between); then constraints [start, end) into contacts. */
-void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock,
-						  bool toContacts);
+/* Restitution of blocks [start, end) (one colour at most); cd2ApplyRestitution then does the
+ * overflow colour's constraints. */
+void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end);
+/* Blocks [start, end) back into their contacts. */
+void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlock, int endBlock);
 void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start, int end);
 
 /* ---- solver2.c ------------------------------------------------------------------------------- */
