@@ -595,6 +595,43 @@ static void TestNeedleFuzzCases(void)
 	cd3DestroyHull(hullA);
 	cd3DestroyHull(hullB);
 
+	/* A hull 7e9 across whose face through a point runs between a vertex next to the point and
+	 * two far ones (corpus regression-query3-double-huge-hull-point-stall): the point of its
+	 * surface GJK returned for a point 6.16 away was itself 1.29 away from the hull by GJK, whose
+	 * new far vertex brought a gain below round-off and was dropped again at each step. */
+	cd3Vec pointsC[12] = {{-3.625, 0, 0},
+						  {0, 0, 0},
+						  {0, 0, 0},
+						  {0, -1, -6974103552.0},
+						  {-6.5, -6949306368.0, -6973005312.0},
+						  {-4724858368.0, 3.25, -6960029184.0},
+						  {-6950198784.0, -11.625, 1.5},
+						  {-12.5, -12.5, -12.375},
+						  {-2.625, 0.5, 1},
+						  {-12, -1, -1},
+						  {1, 1, 1},
+						  {1, -4.625, 1}};
+	cd3Hull* hullC = NULL;
+	TEST_CHECK(cd3ComputeHull(pointsC, 12, &hullC) == CD_OK);
+	if (hullC != NULL)
+	{
+		cd3Transform place = {{1.60174560546875, -12.5, -12.5},
+							  {-0.49362970296310121, -0.6170371287038765, -0.61086675741683771,
+							   0.049362970296310121}};
+		cd3Shape hull = cd3MakeHullShape(hullC, place);
+		cd3Shape point = cd3MakeSphereShape((cd3Sphere){{-12.5, -12.5, -12.5}, 0.0});
+		cd3ClosestPoints r = cd3Distance(&hull, &point);
+		cd3Shape onHull = cd3MakeSphereShape((cd3Sphere){r.pointA, 0.0});
+		double again = cd3Distance(&hull, &onHull).distance;
+		double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&hull, r.pointA), r.pointA);
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * 7e9;
+		TEST_CHECKF(fabs(r.distance - 6.1606693809636) <= 1e-6, "distance %.17g", r.distance);
+		TEST_CHECKF(again <= tolerance && moved <= tolerance,
+					"the closest point is %.9g from the hull, its own closest point %.9g away (tolerance %.3g)",
+					again, moved, tolerance);
+		cd3DestroyHull(hullC);
+	}
+
 	cd3Box box = {{-0.5, -11.625, 0},
 				  {0, 989911296, 0},
 				  {0, 0.8295613557843402, -0.51847584736521268, 0.20739033894608505}};

@@ -972,6 +972,17 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		if (!solved)
 		{
+			/* A segment and the vertex just appended to it, kept for the direction below. */
+			bool fromSegment = appendedSize > CD_R(0.0) && simplex.count == 3;
+			GjkSimplex triangle;
+			if (fromSegment)
+			{
+				triangle.count = 3;
+				for (int i = 0; i < 3; ++i)
+				{
+					triangle.v[i] = simplex.v[i];
+				}
+			}
 			if (SolveSimplex(&simplex))
 			{
 				*touching = true;
@@ -982,7 +993,15 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 				size[i] = VertexSize(&simplex.v[i]);
 			}
 			v = SimplexPoint(&simplex);
-			direction = SearchDirection(&simplex, v);
+			/* The new vertex dropped again (round-off: in exact arithmetic it belongs to the next
+			 * simplex) leaves the segment, its direction and its support as they were, and GJK
+			 * stalls. That happens when the new vertex is far out compared with the gain it
+			 * brings: a hull 7e9 across whose face through the point ran between a vertex
+			 * next to it and two far ones, the point 1.29 from the near edge (double build).
+			 * The triangle's normal then points at the face the support plane has not seen. */
+			bool dropped = fromSegment && simplex.count == 2 &&
+						   !(simplex.v[1].indexA == triangle.v[2].indexA && simplex.v[1].indexB == triangle.v[2].indexB);
+			direction = SearchDirection(dropped ? &triangle : &simplex, v);
 		}
 		cdReal distanceSquared = cd3LengthSquared(v);
 		/* The largest coordinate of the support points, as the documented tolerance reads (16
