@@ -496,8 +496,8 @@ static void TestToiHugeTarget(void)
 
 static cd3Quat RandomRotation(TestRng* rng)
 {
-	double x = TestRngRange(rng, -1.0, 1.0), y = TestRngRange(rng, -1.0, 1.0), z = TestRngRange(rng, -1.0, 1.0),
-		   w = TestRngRange(rng, -1.0, 1.0);
+	double x = TestRngRange(rng, -1.0, 1.0), y = TestRngRange(rng, -1.0, 1.0),
+		   z = TestRngRange(rng, -1.0, 1.0), w = TestRngRange(rng, -1.0, 1.0);
 	double length = sqrt(x * x + y * y + z * z + w * w);
 	cd3Quat q = {(cdReal)(x / length), (cdReal)(y / length), (cdReal)(z / length), (cdReal)(w / length)};
 	return q;
@@ -526,7 +526,8 @@ static void TestCastNeedleSegmentAtBox(void)
 		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[u], axes[u]);
 		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[v], axes[v]);
 		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
-		cd3Vec direction = cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
+		cd3Vec direction =
+			cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
 		double start = -TestRngRange(&rng, 0.1, 0.9) * CAST_NEEDLE_LENGTH;
 		cd3Segment segment = {cd3MulAdd(over, (cdReal)start, direction),
 							  cd3MulAdd(over, (cdReal)(start + CAST_NEEDLE_LENGTH), direction)};
@@ -542,7 +543,8 @@ static void TestCastNeedleSegmentAtBox(void)
 #if CD_DOUBLE
 	/* The fuzzer's case, to the bit: a box flat to a segment 6.4e8 long, cast at a box of size 25
 	 * that it overlaps deeply at fraction 0.5. */
-	cd3Box needle = {{-11.875, -1.125, 5.125}, {318767104, 0, 0}, {0, 0, -0.90502370174983282, -0.42536113982242141}};
+	cd3Box needle = {
+		{-11.875, -1.125, 5.125}, {318767104, 0, 0}, {0, 0, -0.90502370174983282, -0.42536113982242141}};
 	cd3Box target = {{-12.5, -12.5, -12.5}, {12.5, 12.5, 12.5}, {-0.5, -0.5, -0.5, -0.5}};
 	cd3Shape needleShape = cd3MakeBoxShape(needle), targetShape = cd3MakeBoxShape(target);
 	cd3CastOutput fuzzed = cd3ShapeCast(&needleShape, &targetShape, cd3MakeVec(-12.5, -12.5, -12.5));

@@ -481,20 +481,22 @@ static void TestNeedleDifferences(void)
 		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[u], axes[u]);
 		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[v], axes[v]);
 		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
-		cd3Vec direction = cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
+		cd3Vec direction =
+			cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
 		double start = -TestRngRange(&rng, 0.1, 0.9) * NEEDLE_LENGTH;
 		cd3Segment segment = {cd3MulAdd(over, (cdReal)start, direction),
 							  cd3MulAdd(over, (cdReal)(start + NEEDLE_LENGTH), direction)};
 		cd3Shape a = cd3MakeSegmentShape(segment), b = cd3MakeBoxShape(box);
-		double forward = (double)cd3Distance(&a, &b).distance, backward = (double)cd3Distance(&b, &a).distance;
+		double forward = (double)cd3Distance(&a, &b).distance,
+			   backward = (double)cd3Distance(&b, &a).distance;
 		double error = fmax(fabs(forward - gap), fabs(backward - gap));
 		worst = fmax(worst, error);
 		TEST_CHECKF(error <= NEEDLE_TOLERANCE, "gap %.9g: distances %.9g and %.9g (tolerance %.3g)", gap,
 					forward, backward, NEEDLE_TOLERANCE);
 		if (gap == 0.0)
 		{
-			TEST_CHECKF(cd3Overlap(&a, &b), "a segment on a face of the box does not overlap it (distance %.9g)",
-						forward);
+			TEST_CHECKF(cd3Overlap(&a, &b),
+						"a segment on a face of the box does not overlap it (distance %.9g)", forward);
 		}
 		else
 		{
@@ -533,15 +535,17 @@ static void TestPointsOnNeedleHull(void)
 			/* A point of the face x = 0 or y = 0 (local), away from the ends. */
 			double across = TestRngRange(&rng, 0.0, side), along = TestRngRange(&rng, 0.05, 0.95) * length;
 			bool faceX = TestRngInt(&rng, 2) == 0;
-			cd3Vec local = cd3MakeVec((cdReal)(faceX ? 0.0 : across), (cdReal)(faceX ? across : 0.0), (cdReal)along);
+			cd3Vec local =
+				cd3MakeVec((cdReal)(faceX ? 0.0 : across), (cdReal)(faceX ? across : 0.0), (cdReal)along);
 			cd3Vec p = cd3TransformPoint(transform, local);
 			cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
 			double distance = (double)cd3Distance(&shape, &point).distance;
 			double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&shape, p), p);
 			worst = fmax(worst, fmax(distance, moved));
-			TEST_CHECKF(distance <= NEEDLE_TOLERANCE && moved <= NEEDLE_TOLERANCE,
-						"a point on a needle hull's face is %.9g away, its closest point %.9g (tolerance %.3g)",
-						distance, moved, NEEDLE_TOLERANCE);
+			TEST_CHECKF(
+				distance <= NEEDLE_TOLERANCE && moved <= NEEDLE_TOLERANCE,
+				"a point on a needle hull's face is %.9g away, its closest point %.9g (tolerance %.3g)",
+				distance, moved, NEEDLE_TOLERANCE);
 		}
 		cd3DestroyHull(hull);
 	}
@@ -574,26 +578,65 @@ static void TestNeedleFuzzCases(void)
 	TEST_CHECK(cd3ComputeHull(pointsB, 4, &hullB) == CD_OK);
 	if (hullA != NULL && hullB != NULL)
 	{
-		cd3Transform placeA = {{1.60174560546875, -12.5, -12.5},
-							   {-0.49362970296310121, -0.6170371287038765, -0.61086675741683771,
-								0.049362970296310121}};
-		cd3Transform placeB = {{-1.0000000000000001e-30, -6960029184.0, -6950198784.0},
-							   {-0.54807436572704549, 0.070719272997038118, -0.58932727497531767,
-								-0.58932727497531767}};
+		cd3Transform placeA = {
+			{1.60174560546875, -12.5, -12.5},
+			{-0.49362970296310121, -0.6170371287038765, -0.61086675741683771, 0.049362970296310121}};
+		cd3Transform placeB = {
+			{-1.0000000000000001e-30, -6960029184.0, -6950198784.0},
+			{-0.54807436572704549, 0.070719272997038118, -0.58932727497531767, -0.58932727497531767}};
 		cd3Shape a = cd3MakeHullShape(hullA, placeA), b = cd3MakeHullShape(hullB, placeB);
 		cd3ClosestPoints r = cd3Distance(&a, &b);
 		/* 1e-10 of the scale, as the fuzzer's band. */
 		double tolerance = 1e-10 * 1.2e10;
 		double offA = (double)cd3VecDistance(cd3ClosestPointOnShape(&a, r.pointA), r.pointA);
 		double offB = (double)cd3VecDistance(cd3ClosestPointOnShape(&b, r.pointB), r.pointB);
-		TEST_CHECKF(offA <= tolerance && offB <= tolerance, "witnesses off their hulls by %.3g and %.3g", offA,
-					offB);
+		TEST_CHECKF(offA <= tolerance && offB <= tolerance, "witnesses off their hulls by %.3g and %.3g",
+					offA, offB);
 		cd3Shape point = cd3MakeSphereShape((cd3Sphere){r.pointA, 0.0});
 		double onA = (double)cd3Distance(&a, &point).distance;
 		TEST_CHECKF(onA <= tolerance, "pointA is %.9g from hull A by cd3Distance", onA);
 	}
 	cd3DestroyHull(hullA);
 	cd3DestroyHull(hullB);
+
+	/* The same needle with its far end 2.8e8 long (corpus
+	 * regression-query3-double-needle-hull-sliver-face): the witness on it, a point of its surface,
+	 * was 3.4 from it by GJK, on a face whose three vertices lie nearly in line along the needle
+	 * (its normal from products that cancelled, and the point from weights that erred along it). */
+	cd3Vec pointsD[12] = {{-11.625, 0, 0},
+						  {0, 0, 0},
+						  {0, -1, -1},
+						  {1, 1, 1},
+						  {-12.5, -12.5, -12.5},
+						  {-5, -1, 0},
+						  {-11.25, -12.5, -12.25},
+						  {-12.5, -12.5, -12.5},
+						  {1, 1, 1},
+						  {-6.25, 1, 1},
+						  {-1, -1, -7253892608.0},
+						  {1.5120095175902293e-09, -12.5, -6973005312.0}};
+	cd3Vec pointsE[4] = {{-2.625, 0.5, 1}, {-12, -1, 10}, {-1, 1, 1}, {1, 1, -4.625}};
+	cd3Hull *hullD = NULL, *hullE = NULL;
+	TEST_CHECK(cd3ComputeHull(pointsD, 12, &hullD) == CD_OK);
+	TEST_CHECK(cd3ComputeHull(pointsE, 4, &hullE) == CD_OK);
+	if (hullD != NULL && hullE != NULL)
+	{
+		cd3Transform placeD = {
+			{1.60174560546875, -12.5, -12.5},
+			{-0.49362970296310121, -0.6170371287038765, -0.61086675741683771, 0.049362970296310121}};
+		cd3Transform placeE = {{-1.0000000000000001e-30, -6960029184.0, -6950198784.0},
+							   {-0.67839851982059918, 0.087535292880077317, 0, -0.72946077400064435}};
+		cd3Shape d = cd3MakeHullShape(hullD, placeD), e = cd3MakeHullShape(hullE, placeE);
+		cd3ClosestPoints r = cd3Distance(&d, &e);
+		cd3Shape point = cd3MakeSphereShape((cd3Sphere){r.pointA, 0.0});
+		double onD = (double)cd3Distance(&d, &point).distance;
+		double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&d, r.pointA), r.pointA);
+		double tolerance = 1e-10 * 1.26e10;
+		TEST_CHECKF(onD <= tolerance && moved <= tolerance,
+					"pointA %.9g from the hull, its closest point %.9g away", onD, moved);
+	}
+	cd3DestroyHull(hullD);
+	cd3DestroyHull(hullE);
 
 	/* A hull 7e9 across whose face through a point runs between a vertex next to the point and
 	 * two far ones (corpus regression-query3-double-huge-hull-point-stall): the point of its
@@ -615,9 +658,9 @@ static void TestNeedleFuzzCases(void)
 	TEST_CHECK(cd3ComputeHull(pointsC, 12, &hullC) == CD_OK);
 	if (hullC != NULL)
 	{
-		cd3Transform place = {{1.60174560546875, -12.5, -12.5},
-							  {-0.49362970296310121, -0.6170371287038765, -0.61086675741683771,
-							   0.049362970296310121}};
+		cd3Transform place = {
+			{1.60174560546875, -12.5, -12.5},
+			{-0.49362970296310121, -0.6170371287038765, -0.61086675741683771, 0.049362970296310121}};
 		cd3Shape hull = cd3MakeHullShape(hullC, place);
 		cd3Shape point = cd3MakeSphereShape((cd3Sphere){{-12.5, -12.5, -12.5}, 0.0});
 		cd3ClosestPoints r = cd3Distance(&hull, &point);
@@ -626,9 +669,10 @@ static void TestNeedleFuzzCases(void)
 		double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&hull, r.pointA), r.pointA);
 		double tolerance = 64.0 * (double)CD_REAL_EPSILON * 7e9;
 		TEST_CHECKF(fabs(r.distance - 6.1606693809636) <= 1e-6, "distance %.17g", r.distance);
-		TEST_CHECKF(again <= tolerance && moved <= tolerance,
-					"the closest point is %.9g from the hull, its own closest point %.9g away (tolerance %.3g)",
-					again, moved, tolerance);
+		TEST_CHECKF(
+			again <= tolerance && moved <= tolerance,
+			"the closest point is %.9g from the hull, its own closest point %.9g away (tolerance %.3g)",
+			again, moved, tolerance);
 		cd3DestroyHull(hullC);
 	}
 

@@ -2220,11 +2220,10 @@ static void TestNearlyParallelBoxEdges(void)
  * their normals and weights from their two shorter edges. Both overlap: reference 0. */
 static void TestEpaWitnessRegressions(void)
 {
-	static const double hullPoints[30] = {-750000000, 750000000,   500000000,  250000000,  375000000, 1e9,
-										  -1e9,		  1e9,		   0,		   1e9,		   -500000000, -1e9,
-										  -750000000, -125000000,  -1e9,	   125000000,  -1e9,	   -1e9,
-										  -1e9,		  -1e9,		   -1e9,	   -1e9,	   -1e9,	   -1e9,
-										  -1e9,		  -1e9,		   -1e9,	   -1e9,	   -1e9,	   -1e9};
+	static const double hullPoints[30] = {
+		-750000000, 750000000, 500000000,  250000000,  375000000, 1e9,		 -1e9, 1e9,	 0,	   1e9,
+		-500000000, -1e9,	   -750000000, -125000000, -1e9,	  125000000, -1e9, -1e9, -1e9, -1e9,
+		-1e9,		-1e9,	   -1e9,	   -1e9,	   -1e9,	  -1e9,		 -1e9, -1e9, -1e9, -1e9};
 	static const double hullPlace[7] = {1e9, 1e9, 1e9, -0.5, 0.5, 0.5, -0.5};
 	cd3Hull* hull = NULL;
 	cd3Shape huge = HullShapeOf(hullPoints, 10, hullPlace, &hull);
@@ -2235,15 +2234,15 @@ static void TestEpaWitnessRegressions(void)
 	}
 	cd3DestroyHull(hull);
 
-	static const double needlePoints[27] = {-122500, 12500,	 -1e9,	  -122500, 1e-9,   -1e9,   1e-9,
-											118750,	 1e9,	 -125000, -125000, -120000, 0,		-3750,
-											15000,	 -115000, -120000, 11250,	0,		-16250, 8750,
-											-122500, -11250, 1250,	  2500,	   -1250,	15000};
-	static const double needlePlace[7] = {-1e-9, 46250, -125000, -0.985855877, -0.0887270272, 0.118302703,
-										  -0.0788684711};
-	static const double smallPoints[24] = {-115000, 61250, 61250, 105000,	61250,	 61250,	 61250,	 61250,
-										   61250,	-98750, 61250, 61250,	61250,	 -122500, 61250,	 11250,
-										   20000,	-82500, 61250, 7500,	15000,	 -122500, 1250,	 107500};
+	static const double needlePoints[27] = {-122500, 12500,	  -1e9,	   -122500, 1e-9,	 -1e9,	 1e-9,
+											118750,	 1e9,	  -125000, -125000, -120000, 0,		 -3750,
+											15000,	 -115000, -120000, 11250,	0,		 -16250, 8750,
+											-122500, -11250,  1250,	   2500,	-1250,	 15000};
+	static const double needlePlace[7] = {-1e-9,		 46250,		  -125000,		-0.985855877,
+										  -0.0887270272, 0.118302703, -0.0788684711};
+	static const double smallPoints[24] = {-115000, 61250,	61250, 105000, 61250, 61250,   61250, 61250,
+										   61250,	-98750, 61250, 61250,  61250, -122500, 61250, 11250,
+										   20000,	-82500, 61250, 7500,   15000, -122500, 1250,  107500};
 	static const double smallPlace[7] = {-101250, 1e-9, 75000, -0.707106769, -0.707106769, 0, 9.92430473e-15};
 	cd3Hull *needleHull = NULL, *smallHull = NULL;
 	cd3Shape needle = HullShapeOf(needlePoints, 9, needlePlace, &needleHull);

@@ -1032,17 +1032,18 @@ static void TestNearlyParallelSegmentBoxes(void)
 		double distance = (double)cd3Distance(&shapeA, &shapeB).distance;
 		bool expected = i == 1;
 		TEST_CHECKF(cd3OverlapBoxBox(a, b) == expected && cd3OverlapBoxBox(b, a) == expected,
-					"boxes %.3g apart: overlap %d (distance %.3g)", (double)offset, (int)cd3OverlapBoxBox(a, b),
-					distance);
+					"boxes %.3g apart: overlap %d (distance %.3g)", (double)offset,
+					(int)cd3OverlapBoxBox(a, b), distance);
 		TEST_CHECKF(cd3OverlapAabbBox(aabb, b) == expected, "AABB and box %.3g apart: overlap %d",
 					(double)offset, (int)cd3OverlapAabbBox(aabb, b));
 		TEST_CHECK_NEAR(distance, (double)offset, 0.01 * (double)gap);
 	}
 #if CD_DOUBLE
 	/* The fuzzer's pair, to the bit (corpus regression-query3-double-nearly-parallel-segment-boxes-1). */
-	cd3Box box = {{-1.2500000000000002e-07, -1.1500000000000002e-07, -1.1750000000000003e-07},
-				  {0.99999999999999978, 0, 0},
-				  {0.99999999999997691, -1.237499999999972e-07, -1.2499999999999716e-07, -1.2499999999999716e-07}};
+	cd3Box box = {
+		{-1.2500000000000002e-07, -1.1500000000000002e-07, -1.1750000000000003e-07},
+		{0.99999999999999978, 0, 0},
+		{0.99999999999997691, -1.237499999999972e-07, -1.2499999999999716e-07, -1.2499999999999716e-07}};
 	cd3Aabb flat = {{-1.2500000000000002e-07, -1.2500000000000002e-07, -1.2500000000000002e-07},
 					{0.99999999999999978, -1.2500000000000002e-07, -1.2500000000000002e-07}};
 	TEST_CHECK(!cd3OverlapAabbBox(flat, box));

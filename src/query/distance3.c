@@ -44,6 +44,48 @@ static cd3Vec SupportEdge(const GjkVertex* p, const GjkVertex* q)
 	return cd3Sub(cd3Sub(q->a, p->a), cd3Sub(q->b, p->b));
 }
 
+#if CD_DOUBLE
+/* a * b - c * d to about one rounding of the result (Dekker's exact products: no fused
+ * multiply-add needed), for operands of unit scale (the splits must not overflow). */
+static double SplitHigh(double x)
+{
+	double scaled = 134217729.0 * x; /* 2^27 + 1 */
+	return scaled - (scaled - x);
+}
+
+static double ProductError(double a, double b, double product)
+{
+	double aHigh = SplitHigh(a), aLow = a - aHigh, bHigh = SplitHigh(b), bLow = b - bHigh;
+	return ((aHigh * bHigh - product) + aHigh * bLow + aLow * bHigh) + aLow * bLow;
+}
+
+static double ProductDifference(double a, double b, double c, double d)
+{
+	double ab = a * b, cd = c * d;
+	return (ab - cd) + (ProductError(a, b, ab) - ProductError(c, d, cd));
+}
+#endif
+
+/* a x b of unit-scale vectors. Two nearly parallel edges (a sliver face: a needle's vertices
+ * nearly in line, 2.8e8 and 7e9 long at an angle of 4.5e-8) cancel in each component, whose
+ * round-off (epsilon of the products) then tilts the normal by epsilon over the angle's sine: the
+ * face's plane missed a point it holds by 0.28, 3.4e9 out (double build). There the components
+ * are taken from exact products; in the float build the products of float coordinates are exact
+ * in double already. */
+static WideVec FaceCross(WideVec a, WideVec b)
+{
+	WideVec n = WideCross(a, b);
+#if CD_DOUBLE
+	if (WideDot(n, n) < 1e-6 * WideDot(a, a) * WideDot(b, b))
+	{
+		n.x = ProductDifference(a.y, b.z, a.z, b.y);
+		n.y = ProductDifference(a.z, b.x, a.x, b.z);
+		n.z = ProductDifference(a.x, b.y, a.y, b.x);
+	}
+#endif
+	return n;
+}
+
 /* What the sub-algorithm solves on: the simplex's vertices w = a - b scaled to unit size, and its
  * edges edge[i][j] = w[j] - w[i] taken from the support points as (a[j] - a[i]) - (b[j] - b[i])
  * (same scale). On a long, thin difference (a segment 1e9 long against a box of size 10) the
@@ -163,7 +205,7 @@ static void SolveTriangle(const SolverInput* s, const int* index, cdReal* l)
 	int base = TriangleBase(s, index, &edgeProductSquared);
 	int next = base == 2 ? 0 : base + 1, previous = base == 0 ? 2 : base - 1;
 	WideVec ei = Widen(s->edge[index[base]][index[next]]), ej = Widen(s->edge[index[base]][index[previous]]);
-	WideVec n = WideCross(ei, ej);
+	WideVec n = FaceCross(ei, ej);
 	double normalSquared = WideDot(n, n);
 	bool flat = !(normalSquared >
 				  (double)GJK_DEGENERATE_TOLERANCE * (double)GJK_DEGENERATE_TOLERANCE * edgeProductSquared);
@@ -229,21 +271,11 @@ static bool SolveTetrahedron(const SolverInput* s, cdReal* l)
 	 * compare like products of lengths (in double, where products of three squares of float
 	 * lengths cannot underflow). */
 	static const int trees[16][3][2] = {
-		{{0, 1}, {0, 2}, {0, 3}},
-		{{1, 0}, {1, 2}, {1, 3}},
-		{{2, 0}, {2, 1}, {2, 3}},
-		{{3, 0}, {3, 1}, {3, 2}},
-		{{0, 1}, {1, 2}, {2, 3}},
-		{{0, 1}, {1, 3}, {3, 2}},
-		{{0, 2}, {2, 1}, {1, 3}},
-		{{0, 2}, {2, 3}, {3, 1}},
-		{{0, 3}, {3, 1}, {1, 2}},
-		{{0, 3}, {3, 2}, {2, 1}},
-		{{1, 0}, {0, 2}, {2, 3}},
-		{{1, 0}, {0, 3}, {3, 2}},
-		{{1, 2}, {2, 0}, {0, 3}},
-		{{1, 3}, {3, 0}, {0, 2}},
-		{{2, 0}, {0, 1}, {1, 3}},
+		{{0, 1}, {0, 2}, {0, 3}}, {{1, 0}, {1, 2}, {1, 3}}, {{2, 0}, {2, 1}, {2, 3}},
+		{{3, 0}, {3, 1}, {3, 2}}, {{0, 1}, {1, 2}, {2, 3}}, {{0, 1}, {1, 3}, {3, 2}},
+		{{0, 2}, {2, 1}, {1, 3}}, {{0, 2}, {2, 3}, {3, 1}}, {{0, 3}, {3, 1}, {1, 2}},
+		{{0, 3}, {3, 2}, {2, 1}}, {{1, 0}, {0, 2}, {2, 3}}, {{1, 0}, {0, 3}, {3, 2}},
+		{{1, 2}, {2, 0}, {0, 3}}, {{1, 3}, {3, 0}, {0, 2}}, {{2, 0}, {0, 1}, {1, 3}},
 		{{2, 1}, {1, 0}, {0, 3}}};
 	double edgeSquared[4][4];
 	for (int i = 0; i < 4; ++i)
@@ -258,7 +290,8 @@ static bool SolveTetrahedron(const SolverInput* s, cdReal* l)
 	double smallest = (double)CD_REAL_MAX * (double)CD_REAL_MAX;
 	for (int t = 0; t < 16; ++t)
 	{
-		double product = edgeSquared[trees[t][0][0]][trees[t][0][1]] * edgeSquared[trees[t][1][0]][trees[t][1][1]] *
+		double product = edgeSquared[trees[t][0][0]][trees[t][0][1]] *
+						 edgeSquared[trees[t][1][0]][trees[t][1][1]] *
 						 edgeSquared[trees[t][2][0]][trees[t][2][1]];
 		if (product < smallest)
 		{
@@ -436,6 +469,36 @@ static cd3Vec SimplexPoint(const GjkSimplex* simplex)
 	return v;
 }
 
+/* The point of a triangle's plane closest to the origin (the simplex's point when its weights
+ * hold the face), from the normal of its two shorter edges (SupportEdge, scaled to unit size) and
+ * one vertex: exact to the round-off of the vertices across the face. The weighted sum of the
+ * vertices also carries the weights' error along the face, epsilon times |w| over the face's
+ * width times its length: on a needle face whose vertices lie 3e9 out and 12.5 apart across, 15
+ * along it, and a point touching the hull's surface stayed 3.4 from it (double build). */
+static cd3Vec FacePoint(const GjkSimplex* simplex)
+{
+	const GjkVertex* v = simplex->v;
+	cdReal largest = cdMax(cd3MaxAbs(v[0].w), cdMax(cd3MaxAbs(v[1].w), cd3MaxAbs(v[2].w)));
+	if (!(largest > CD_R(0.0)))
+	{
+		return SimplexPoint(simplex);
+	}
+	double inverse = 1.0 / (double)largest;
+	WideVec e01 = WideScale(inverse, Widen(SupportEdge(&v[0], &v[1])));
+	WideVec e02 = WideScale(inverse, Widen(SupportEdge(&v[0], &v[2])));
+	WideVec e12 = WideScale(inverse, Widen(SupportEdge(&v[1], &v[2])));
+	double l01 = WideDot(e01, e01), l02 = WideDot(e02, e02), l12 = WideDot(e12, e12);
+	WideVec n = l12 >= l01 && l12 >= l02 ? FaceCross(e01, e02)
+										 : (l02 >= l01 ? FaceCross(e01, e12) : FaceCross(e02, e12));
+	double normalSquared = WideDot(n, n);
+	if (!(normalSquared > 0.0))
+	{
+		return SimplexPoint(simplex);
+	}
+	WideVec w0 = Widen(v[0].w);
+	return Narrow(WideScale(WideDot(n, w0) / normalSquared, n));
+}
+
 /* The direction from the simplex towards the origin. For a segment or a triangle it is built
  * from the simplex's own edges (Catto's trick): -v, a sum of large, cancelling terms when the
  * shapes are large compared with their distance, can point off by far more than its length error
@@ -488,17 +551,18 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 	{
 		/* The normal from the two shorter edges (SolveTriangle). */
 		cdReal l01 = cd3LengthSquared(e01), l02 = cd3LengthSquared(e02), l12 = cd3LengthSquared(e12);
+		WideVec a = Widen(e01), b = Widen(e02), c = Widen(e12);
 		if (l12 >= l01 && l12 >= l02)
 		{
-			direction = cd3Cross(e01, e02);
+			direction = Narrow(FaceCross(a, b));
 		}
 		else if (l02 >= l01)
 		{
-			direction = cd3Cross(e01, e12);
+			direction = Narrow(FaceCross(a, c));
 		}
 		else
 		{
-			direction = cd3Cross(e02, e12);
+			direction = Narrow(FaceCross(b, c));
 		}
 		if (cd3Dot(direction, w0) > CD_R(0.0))
 		{
@@ -992,15 +1056,16 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			{
 				size[i] = VertexSize(&simplex.v[i]);
 			}
-			v = SimplexPoint(&simplex);
+			v = simplex.count == 3 ? FacePoint(&simplex) : SimplexPoint(&simplex);
 			/* The new vertex dropped again (round-off: in exact arithmetic it belongs to the next
 			 * simplex) leaves the segment, its direction and its support as they were, and GJK
 			 * stalls. That happens when the new vertex is far out compared with the gain it
 			 * brings: a hull 7e9 across whose face through the point ran between a vertex
 			 * next to it and two far ones, the point 1.29 from the near edge (double build).
 			 * The triangle's normal then points at the face the support plane has not seen. */
-			bool dropped = fromSegment && simplex.count == 2 &&
-						   !(simplex.v[1].indexA == triangle.v[2].indexA && simplex.v[1].indexB == triangle.v[2].indexB);
+			bool dropped =
+				fromSegment && simplex.count == 2 &&
+				!(simplex.v[1].indexA == triangle.v[2].indexA && simplex.v[1].indexB == triangle.v[2].indexB);
 			direction = SearchDirection(dropped ? &triangle : &simplex, v);
 		}
 		cdReal distanceSquared = cd3LengthSquared(v);
