@@ -2253,6 +2253,35 @@ static void TestEpaWitnessRegressions(void)
 	}
 	cd3DestroyHull(needleHull);
 	cd3DestroyHull(smallHull);
+
+	/* An AABB 4.3e8 long crossing a needle hull 1.6e6 long, overlapping by 0.471929 along
+	 * (0.944, 0, 0.330) (exact, from the Minkowski difference's facets): the SAT's contact on an
+	 * axis its bias preferred lay apart, at separation 1.15, within a limit relative to the sizes
+	 * (double build, corpus regression-manifold3-double-long-aabb-needle-hull-apart-contact). An
+	 * overlapping pair's deepest point may not be apart beyond round-off. */
+	static const double longPoints[33] = {
+		0,	   0,	  0,	 0,	   0,	   0, 0, 0, 0, -7.125, -1654758.125, -12.5,		   -11.5,  0,
+		0,	   0,	  0,	 0,	   -7.125, 0, 0, 0, 0, 0,	   -7.125,		 -1620152.625, 12.125, -4.875,
+		-12.5, -12.5, -12.5, -9.5, 12.125};
+	static const double identity[7] = {0, 0, 0, 0, 0, 0, -1};
+	cd3Hull* longHull = NULL;
+	cd3Shape needleHullShape = HullShapeOf(longPoints, 11, identity, &longHull);
+	cd3Shape longAabb = AabbShape(-12.375, -431824128, -12.5, -11, -12.5, 0);
+	if (longHull != NULL)
+	{
+		CheckFuzzCase("long-aabb-needle-hull", &longAabb, &needleHullShape, 11.25, 0.0, 4.32e8);
+#if CD_DOUBLE
+		for (int order = 0; order < 2; ++order)
+		{
+			cd3Manifold m = order == 0 ? cd3Collide(&longAabb, &needleHullShape, 11.25)
+									   : cd3Collide(&needleHullShape, &longAabb, 11.25);
+			TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) + 0.471929178) <= 1e-6,
+						"order %d: %d points, smallest separation %.9g, exact -0.471929178", order,
+						m.pointCount, MinSeparation(&m));
+		}
+#endif
+	}
+	cd3DestroyHull(longHull);
 }
 
 static void TestHugeDoubleRegressions(void)
