@@ -2282,6 +2282,31 @@ static void TestEpaWitnessRegressions(void)
 #endif
 	}
 	cd3DestroyHull(longHull);
+
+	/* The same AABB, thinner, 3 from another needle hull (GJK; cd3Overlap says apart): the SAT
+	 * missed the separating axis (the cross axis of two nearly parallel long edges) and gave 3
+	 * points at separation -12.5 (double build, corpus
+	 * regression-manifold3-double-long-aabb-needle-hull-apart-*). Between polytopes of very
+	 * different sizes GJK's distance now decides whether the SAT's overlap stands. */
+	static const double apartPoints[33] = {
+		0,	   0,	  0,	 0,		0,		0,		0,	   0,	  0,	  -7.125, -1654758.125,
+		-12.5, -11.5, 0,	 0,		0,		0,		1e-30, 1e-30, 0,	  0,	  1e-30,
+		1e-30, 1e-30, 1e-30, 1e-30, -12.25, -0.875, 1e-30, 1e-30, 12.125, -4.875, -12.5};
+	cd3Hull* apartHull = NULL;
+	cd3Shape apartHullShape = HullShapeOf(apartPoints, 11, identity, &apartHull);
+	cd3Shape thinAabb = AabbShape(-12.375, -431824128, -12.5, -11, -12.5, -10.5);
+	if (apartHull != NULL)
+	{
+		CheckFuzzCase("long-aabb-needle-hull-apart", &thinAabb, &apartHullShape, 0.0, -1.0, 4.32e8);
+#if CD_DOUBLE
+		double gap = (double)cd3Distance(&thinAabb, &apartHullShape).distance;
+		cd3Manifold forward = cd3Collide(&thinAabb, &apartHullShape, 0.0);
+		cd3Manifold backward = cd3Collide(&apartHullShape, &thinAabb, 0.0);
+		TEST_CHECKF(gap > 2.9 && forward.pointCount == 0 && backward.pointCount == 0,
+					"apart by %.9g: %d and %d points", gap, forward.pointCount, backward.pointCount);
+#endif
+	}
+	cd3DestroyHull(apartHull);
 }
 
 static void TestHugeDoubleRegressions(void)

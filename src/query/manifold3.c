@@ -1107,8 +1107,22 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	}
 	if (separation <= CD_R(0.0))
 	{
+		/* Between polytopes of very different sizes the SAT's axes can miss the separating one:
+		 * the cross axis of a needle's edge nearly parallel to the other's long edge (a hull 1.6e6
+		 * long beside an AABB 4.3e8 long, 3 apart, double) is too short for its separation to
+		 * be trusted, and the SAT called them overlapping by 12.5. There GJK's distance decides
+		 * whether they are apart (these pairs already pay for DropPointsOffShapes). */
+		bool disparate = cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size);
+		if (disparate)
+		{
+			cd3ClosestPoints apart = cd3Distance(&a->shape, &b->shape);
+			if (apart.distance > ROUND_OFF_TOLERANCE * (a->size + b->size))
+			{
+				return apart.distance <= speculativeDistance ? VertexContact(apart) : EmptyManifold();
+			}
+		}
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
-		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+		if (m.pointCount > 0 && disparate)
 		{
 			DropPointsOffShapes(&m, a, b);
 		}
