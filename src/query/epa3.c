@@ -206,9 +206,30 @@ static WideVec VertexEdge(const Vertex* p, const Vertex* q)
 
 /* The normal is the cross product of the face's two shorter edges (they meet at its largest
  * angle; on a needle's sliver faces the two long ones cancel), in double whatever cdReal is, and
- * the distance is taken at the vertex where they meet. */
+ * the distance is taken at the vertex where they meet. A face whose angle at vertex i is not
+ * small (sine above 1e-3) keeps the cheaper product of the vertices' differences from i. */
 static bool MakeFace(const Vertex* v, int i, int j, int k, cd3Vec inside, Face* f)
 {
+	cd3Vec dj = cd3Sub(v[j].w, v[i].w), dk = cd3Sub(v[k].w, v[i].w);
+	cd3Vec quick = cd3Cross(dj, dk);
+	double quickSquared = (double)cd3LengthSquared(quick);
+	if (quickSquared > 1e-6 * (double)cd3LengthSquared(dj) * (double)cd3LengthSquared(dk) &&
+		quickSquared < INFINITY)
+	{
+		cd3Vec n = cd3Scale(CD_R(1.0) / cd3Length(quick), quick);
+		f->v[0] = i;
+		f->v[1] = j;
+		f->v[2] = k;
+		if (cd3Dot(n, cd3Sub(v[i].w, inside)) < CD_R(0.0))
+		{
+			f->v[1] = k;
+			f->v[2] = j;
+			n = cd3Neg(n);
+		}
+		f->normal = n;
+		f->distance = cd3Dot(n, v[i].w);
+		return true;
+	}
 	WideVec eij = VertexEdge(&v[i], &v[j]), eik = VertexEdge(&v[i], &v[k]), ejk = VertexEdge(&v[j], &v[k]);
 	double lij = WideDot(eij, eij), lik = WideDot(eik, eik), ljk = WideDot(ejk, ejk);
 	/* Each is (w_j - w_i) x (w_k - w_i). */
