@@ -203,13 +203,14 @@ static inline bool FuzzSkipped(const char* check)
 	return false;
 }
 
-/* Prints `count` reals with every digit needed to reproduce them. */
+/* Prints `count` reals with every digit needed to reproduce them (9 for a float, 17 for a
+ * double). */
 static inline void FuzzPrintReals(const char* label, const char* typeName, const cdReal* values, int count)
 {
 	fprintf(stderr, "  %s %s:", label, typeName);
 	for (int i = 0; i < count; ++i)
 	{
-		fprintf(stderr, " %.9g", (double)values[i]);
+		fprintf(stderr, " %.*g", CD_DOUBLE ? 17 : 9, (double)values[i]);
 	}
 	fprintf(stderr, "\n");
 }

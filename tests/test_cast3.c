@@ -482,6 +482,77 @@ static void TestToiHugeTarget(void)
 }
 #endif
 
+/* A segment far longer than the box it is cast at (a needle Minkowski difference): the segment
+ * lies 5 above a face of a box of size 2-20, over the face's inner part, and moves 10 towards it,
+ * so it hits at fraction 0.5. GJK's faces on the needle took their normals from the vertices'
+ * differences, whose round-off (epsilon times the length) tilted them beyond the gap over the
+ * needle's length: the cast missed (double build, fuzz_cast, corpus
+ * regression-cast-double-segment-box-box-miss). */
+#if CD_DOUBLE
+#define CAST_NEEDLE_LENGTH 1.0e9
+#else
+#define CAST_NEEDLE_LENGTH 1.0e4
+#endif
+
+static cd3Quat RandomRotation(TestRng* rng)
+{
+	double x = TestRngRange(rng, -1.0, 1.0), y = TestRngRange(rng, -1.0, 1.0),
+		   z = TestRngRange(rng, -1.0, 1.0), w = TestRngRange(rng, -1.0, 1.0);
+	double length = sqrt(x * x + y * y + z * z + w * w);
+	cd3Quat q = {(cdReal)(x / length), (cdReal)(y / length), (cdReal)(z / length), (cdReal)(w / length)};
+	return q;
+}
+
+static void TestCastNeedleSegmentAtBox(void)
+{
+	TestRng rng = TestRngMake(0xca57e16u);
+	/* The cast's round-off: 64 epsilons of the coordinates (CAST_ROUND_OFF) and GJK's on the
+	 * needle, over the 10 travelled. */
+	double tolerance = 128.0 * (double)CD_REAL_EPSILON * CAST_NEEDLE_LENGTH / 10.0;
+	double worst = 0.0;
+	for (int trial = 0; trial < 500; ++trial)
+	{
+		cd3Box box = {{(cdReal)TestRngRange(&rng, -10.0, 10.0), (cdReal)TestRngRange(&rng, -10.0, 10.0),
+					   (cdReal)TestRngRange(&rng, -10.0, 10.0)},
+					  {(cdReal)TestRngRange(&rng, 1.0, 10.0), (cdReal)TestRngRange(&rng, 1.0, 10.0),
+					   (cdReal)TestRngRange(&rng, 1.0, 10.0)},
+					  RandomRotation(&rng)};
+		cd3Mat33 rotation = cd3MakeMatFromQuat(box.rotation);
+		cd3Vec axes[3] = {rotation.cx, rotation.cy, rotation.cz};
+		cdReal half[3] = {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z};
+		int axis = TestRngInt(&rng, 3), u = (axis + 1) % 3, v = (axis + 2) % 3;
+		cd3Vec normal = TestRngInt(&rng, 2) ? axes[axis] : cd3Neg(axes[axis]);
+		cd3Vec over = cd3Add(box.center, cd3Scale(half[axis] + CD_R(5.0), normal));
+		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[u], axes[u]);
+		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[v], axes[v]);
+		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
+		cd3Vec direction =
+			cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
+		double start = -TestRngRange(&rng, 0.1, 0.9) * CAST_NEEDLE_LENGTH;
+		cd3Segment segment = {cd3MulAdd(over, (cdReal)start, direction),
+							  cd3MulAdd(over, (cdReal)(start + CAST_NEEDLE_LENGTH), direction)};
+		cd3Shape a = cd3MakeSegmentShape(segment), b = cd3MakeBoxShape(box);
+		cd3CastOutput out = cd3ShapeCast(&a, &b, cd3Scale(CD_R(-10.0), normal));
+		double error = out.hit ? fabs((double)out.fraction - 0.5) : 1.0;
+		worst = fmax(worst, error);
+		TEST_CHECKF(out.hit && error <= tolerance, "hit %d at fraction %.9g, expected 0.5 (tolerance %.3g)",
+					(int)out.hit, (double)out.fraction, tolerance);
+	}
+	printf("  needle segment casts: worst fraction error %.3g (length %.0e, tolerance %.3g)\n", worst,
+		   CAST_NEEDLE_LENGTH, tolerance);
+#if CD_DOUBLE
+	/* The fuzzer's case, to the bit: a box flat to a segment 6.4e8 long, cast at a box of size 25
+	 * that it overlaps deeply at fraction 0.5. */
+	cd3Box needle = {
+		{-11.875, -1.125, 5.125}, {318767104, 0, 0}, {0, 0, -0.90502370174983282, -0.42536113982242141}};
+	cd3Box target = {{-12.5, -12.5, -12.5}, {12.5, 12.5, 12.5}, {-0.5, -0.5, -0.5, -0.5}};
+	cd3Shape needleShape = cd3MakeBoxShape(needle), targetShape = cd3MakeBoxShape(target);
+	cd3CastOutput fuzzed = cd3ShapeCast(&needleShape, &targetShape, cd3MakeVec(-12.5, -12.5, -12.5));
+	TEST_CHECKF(fuzzed.hit && fuzzed.fraction <= 0.5, "hit %d at fraction %.17g", (int)fuzzed.hit,
+				(double)fuzzed.fraction);
+#endif
+}
+
 int main(void)
 {
 	TEST_RUN(TestCastSphereAtBoxAndPlane);
@@ -492,6 +563,7 @@ int main(void)
 	TEST_RUN(TestHullActsAsBox);
 	TEST_RUN(TestToiTranslationEqualsCast);
 	TEST_RUN(TestCastGrazingHulls);
+	TEST_RUN(TestCastNeedleSegmentAtBox);
 #if CD_DOUBLE
 	TEST_RUN(TestToiHugeTarget);
 #endif

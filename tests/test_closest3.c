@@ -650,6 +650,29 @@ static void TestFarFromOrigin(void)
 	}
 }
 
+/* A sliver triangle 2L long and 2W wide at one end (W / L = 1e-9): points on its long edge ac
+ * are their own closest points. Ericson's ab.bp taken as ab.ap - ab.ab cancelled to round-off
+ * (2 W^2 against L^2) and a point near b came back as vertex b, W away (fuzz_manifold3, double
+ * build: L = 1e30, W = 1e21, corpus regression-manifold3-double-sphere-sliver-triangle). */
+static void TestSliverTriangleLongEdge(void)
+{
+	double lengths[2] = {1e9, CD_DOUBLE ? 1e30 : 1e20};
+	for (int k = 0; k < 2; ++k)
+	{
+		double L = lengths[k], W = 1e-9 * L;
+		cd3Triangle t = {
+			{(cdReal)L, CD_R(0.0), (cdReal)(-2.0 * W)}, CD3_VEC_ZERO, {(cdReal)-L, CD_R(0.0), CD_R(0.0)}};
+		for (int i = 1; i < 8; ++i)
+		{
+			double f = i / 8.0; /* along ac from a */
+			cd3Vec p = cd3Lerp(t.a, t.c, (cdReal)f);
+			double moved = (double)cd3VecDistance(cd3ClosestPointOnTriangle(t, p), p);
+			TEST_CHECKF(moved <= 64.0 * (double)CD_REAL_EPSILON * L, "L %g, point %g along ac: moved by %.3g",
+						L, f, moved);
+		}
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestSphereCapsuleSegment);
@@ -666,5 +689,6 @@ int main(void)
 	TEST_RUN(TestRandomClosestPoint);
 	TEST_RUN(TestRandomPairs);
 	TEST_RUN(TestFarFromOrigin);
+	TEST_RUN(TestSliverTriangleLongEdge);
 	return TEST_SUMMARY();
 }

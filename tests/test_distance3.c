@@ -445,6 +445,251 @@ static void TestPointNearThinBox(void)
 				"distances %.9g, %.9g, reference %.9g", forward, backward, expected);
 }
 
+/* ---- needles: a Minkowski difference far longer than wide -------------------------------------
+ * A long segment against a small box makes a difference whose faces are slivers: GJK's vertices
+ * lie half the length from the closest point, which is within the sliver's width of them. Their
+ * face weights must come from the short edges (the round-off of the vertices, epsilon times the
+ * length), not from the origin's triangles with two long sides (epsilon times the length squared
+ * over the width: 1.05 at length 1e9 and width 2-20 in double, 0.08 at 1e4 in float). */
+#if CD_DOUBLE
+#define NEEDLE_LENGTH 1.0e9
+#else
+#define NEEDLE_LENGTH 1.0e4
+#endif
+#define NEEDLE_TOLERANCE (16.0 * (double)CD_REAL_EPSILON * NEEDLE_LENGTH)
+
+/* A segment NEEDLE_LENGTH long in the plane `gap` above a face of a box of size 2-20, passing
+ * over a point of the face's inner part in a random direction of that plane: the exact distance
+ * is the gap. */
+static void TestNeedleDifferences(void)
+{
+	TestRng rng = TestRngMake(0x7ee41e16u);
+	double worst = 0.0;
+	for (int trial = 0; trial < 2000; ++trial)
+	{
+		cd3Box box = {RandomVec(&rng, 10.0),
+					  {(cdReal)TestRngRange(&rng, 1.0, 10.0), (cdReal)TestRngRange(&rng, 1.0, 10.0),
+					   (cdReal)TestRngRange(&rng, 1.0, 10.0)},
+					  RandomQuat(&rng)};
+		cd3Mat33 rotation = cd3MakeMatFromQuat(box.rotation);
+		cd3Vec axes[3] = {rotation.cx, rotation.cy, rotation.cz};
+		cdReal half[3] = {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z};
+		int axis = TestRngInt(&rng, 3), u = (axis + 1) % 3, v = (axis + 2) % 3;
+		cd3Vec normal = TestRngInt(&rng, 2) ? axes[axis] : cd3Neg(axes[axis]);
+		double gap = TestRngInt(&rng, 2) ? 0.0 : TestRngRange(&rng, 0.5, 3.0);
+		cd3Vec over = cd3Add(box.center, cd3Scale(half[axis] + (cdReal)gap, normal));
+		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[u], axes[u]);
+		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[v], axes[v]);
+		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
+		cd3Vec direction =
+			cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
+		double start = -TestRngRange(&rng, 0.1, 0.9) * NEEDLE_LENGTH;
+		cd3Segment segment = {cd3MulAdd(over, (cdReal)start, direction),
+							  cd3MulAdd(over, (cdReal)(start + NEEDLE_LENGTH), direction)};
+		cd3Shape a = cd3MakeSegmentShape(segment), b = cd3MakeBoxShape(box);
+		double forward = (double)cd3Distance(&a, &b).distance,
+			   backward = (double)cd3Distance(&b, &a).distance;
+		double error = fmax(fabs(forward - gap), fabs(backward - gap));
+		worst = fmax(worst, error);
+		TEST_CHECKF(error <= NEEDLE_TOLERANCE, "gap %.9g: distances %.9g and %.9g (tolerance %.3g)", gap,
+					forward, backward, NEEDLE_TOLERANCE);
+		if (gap == 0.0)
+		{
+			TEST_CHECKF(cd3Overlap(&a, &b),
+						"a segment on a face of the box does not overlap it (distance %.9g)", forward);
+		}
+		else
+		{
+			TEST_CHECKF(!cd3Overlap(&a, &b), "a segment %.9g above a face overlaps the box", gap);
+		}
+	}
+	printf("  needle segment-box pairs: worst distance error %.3g (length %.0e, tolerance %.3g)\n", worst,
+		   NEEDLE_LENGTH, NEEDLE_TOLERANCE);
+}
+
+/* A prism NEEDLE_LENGTH / 10 long over a square of side 2-20, as a hull, and points on its long
+ * faces: each is on the hull (distance 0, its own closest point). */
+static void TestPointsOnNeedleHull(void)
+{
+	TestRng rng = TestRngMake(0x7ee41e17u);
+	double length = 0.1 * NEEDLE_LENGTH, worst = 0.0;
+	for (int trial = 0; trial < 200; ++trial)
+	{
+		double side = TestRngRange(&rng, 2.0, 20.0);
+		cd3Vec points[8];
+		for (int i = 0; i < 8; ++i)
+		{
+			points[i] = cd3MakeVec((cdReal)((i & 1) ? side : 0.0), (cdReal)((i & 2) ? side : 0.0),
+								   (cdReal)((i & 4) ? length : 0.0));
+		}
+		cd3Hull* hull = NULL;
+		TEST_CHECK(cd3ComputeHull(points, 8, &hull) == CD_OK);
+		if (hull == NULL)
+		{
+			return;
+		}
+		cd3Transform transform = {RandomVec(&rng, 10.0), RandomQuat(&rng)};
+		cd3Shape shape = cd3MakeHullShape(hull, transform);
+		for (int k = 0; k < 10; ++k)
+		{
+			/* A point of the face x = 0 or y = 0 (local), away from the ends. */
+			double across = TestRngRange(&rng, 0.0, side), along = TestRngRange(&rng, 0.05, 0.95) * length;
+			bool faceX = TestRngInt(&rng, 2) == 0;
+			cd3Vec local =
+				cd3MakeVec((cdReal)(faceX ? 0.0 : across), (cdReal)(faceX ? across : 0.0), (cdReal)along);
+			cd3Vec p = cd3TransformPoint(transform, local);
+			cd3Shape point = cd3MakeSphereShape((cd3Sphere){p, CD_R(0.0)});
+			double distance = (double)cd3Distance(&shape, &point).distance;
+			double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&shape, p), p);
+			worst = fmax(worst, fmax(distance, moved));
+			TEST_CHECKF(
+				distance <= NEEDLE_TOLERANCE && moved <= NEEDLE_TOLERANCE,
+				"a point on a needle hull's face is %.9g away, its closest point %.9g (tolerance %.3g)",
+				distance, moved, NEEDLE_TOLERANCE);
+		}
+		cd3DestroyHull(hull);
+	}
+	printf("  points on needle hulls: worst distance %.3g (length %.0e, tolerance %.3g)\n", worst,
+		   0.1 * NEEDLE_LENGTH, NEEDLE_TOLERANCE);
+}
+
+#if CD_DOUBLE
+/* fuzz_query3, double build (corpus regression-query3-double-needle-hull-witness,
+ * regression-query3-double-segment-box-triangle-overlap-distance): the fuzzer's values, to the
+ * bit. A point of a needle hull's surface (7e9 long, 12.5 wide) was 7.7 away from it by GJK, and
+ * a box flat to a segment 2e9 long crossing a triangle of size 13 was 1.26 away from it. */
+static void TestNeedleFuzzCases(void)
+{
+	cd3Vec pointsA[12] = {{-11.625, 0, 0},
+						  {0, 0, 0},
+						  {0, -1, -1},
+						  {1, 1, 1},
+						  {-5, -1, 0},
+						  {-11.25, -12.5, -12.5},
+						  {-12.5, -12.5, -12.5},
+						  {-12.5, -12.5, -1},
+						  {-1.75, 1, 1},
+						  {1, 1, 1},
+						  {-1, -1, -6951902720.0},
+						  {1.5120095175902293e-09, -12.5, -6973005312.0}};
+	cd3Vec pointsB[4] = {{-2.625, 0.5, 1}, {-12, -1, -1}, {1, 1, 1}, {1, -4.625, 1}};
+	cd3Hull *hullA = NULL, *hullB = NULL;
+	TEST_CHECK(cd3ComputeHull(pointsA, 12, &hullA) == CD_OK);
+	TEST_CHECK(cd3ComputeHull(pointsB, 4, &hullB) == CD_OK);
+	if (hullA != NULL && hullB != NULL)
+	{
+		cd3Transform placeA = {
+			{1.60174560546875, -12.5, -12.5},
+			{-0.49362970296310121, -0.6170371287038765, -0.61086675741683771, 0.049362970296310121}};
+		cd3Transform placeB = {
+			{-1.0000000000000001e-30, -6960029184.0, -6950198784.0},
+			{-0.54807436572704549, 0.070719272997038118, -0.58932727497531767, -0.58932727497531767}};
+		cd3Shape a = cd3MakeHullShape(hullA, placeA), b = cd3MakeHullShape(hullB, placeB);
+		cd3ClosestPoints r = cd3Distance(&a, &b);
+		/* 1e-10 of the scale, as the fuzzer's band. */
+		double tolerance = 1e-10 * 1.2e10;
+		double offA = (double)cd3VecDistance(cd3ClosestPointOnShape(&a, r.pointA), r.pointA);
+		double offB = (double)cd3VecDistance(cd3ClosestPointOnShape(&b, r.pointB), r.pointB);
+		TEST_CHECKF(offA <= tolerance && offB <= tolerance, "witnesses off their hulls by %.3g and %.3g",
+					offA, offB);
+		cd3Shape point = cd3MakeSphereShape((cd3Sphere){r.pointA, 0.0});
+		double onA = (double)cd3Distance(&a, &point).distance;
+		TEST_CHECKF(onA <= tolerance, "pointA is %.9g from hull A by cd3Distance", onA);
+	}
+	cd3DestroyHull(hullA);
+	cd3DestroyHull(hullB);
+
+	/* The same needle with its far end 2.8e8 long (corpus
+	 * regression-query3-double-needle-hull-sliver-face): the witness on it, a point of its surface,
+	 * was 3.4 from it by GJK, on a face whose three vertices lie nearly in line along the needle
+	 * (its normal from products that cancelled, and the point from weights that erred along it). */
+	cd3Vec pointsD[12] = {{-11.625, 0, 0},
+						  {0, 0, 0},
+						  {0, -1, -1},
+						  {1, 1, 1},
+						  {-12.5, -12.5, -12.5},
+						  {-5, -1, 0},
+						  {-11.25, -12.5, -12.25},
+						  {-12.5, -12.5, -12.5},
+						  {1, 1, 1},
+						  {-6.25, 1, 1},
+						  {-1, -1, -7253892608.0},
+						  {1.5120095175902293e-09, -12.5, -6973005312.0}};
+	cd3Vec pointsE[4] = {{-2.625, 0.5, 1}, {-12, -1, 10}, {-1, 1, 1}, {1, 1, -4.625}};
+	cd3Hull *hullD = NULL, *hullE = NULL;
+	TEST_CHECK(cd3ComputeHull(pointsD, 12, &hullD) == CD_OK);
+	TEST_CHECK(cd3ComputeHull(pointsE, 4, &hullE) == CD_OK);
+	if (hullD != NULL && hullE != NULL)
+	{
+		cd3Transform placeD = {
+			{1.60174560546875, -12.5, -12.5},
+			{-0.49362970296310121, -0.6170371287038765, -0.61086675741683771, 0.049362970296310121}};
+		cd3Transform placeE = {{-1.0000000000000001e-30, -6960029184.0, -6950198784.0},
+							   {-0.67839851982059918, 0.087535292880077317, 0, -0.72946077400064435}};
+		cd3Shape d = cd3MakeHullShape(hullD, placeD), e = cd3MakeHullShape(hullE, placeE);
+		cd3ClosestPoints r = cd3Distance(&d, &e);
+		cd3Shape point = cd3MakeSphereShape((cd3Sphere){r.pointA, 0.0});
+		double onD = (double)cd3Distance(&d, &point).distance;
+		double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&d, r.pointA), r.pointA);
+		double tolerance = 1e-10 * 1.26e10;
+		TEST_CHECKF(onD <= tolerance && moved <= tolerance,
+					"pointA %.9g from the hull, its closest point %.9g away", onD, moved);
+	}
+	cd3DestroyHull(hullD);
+	cd3DestroyHull(hullE);
+
+	/* A hull 7e9 across whose face through a point runs between a vertex next to the point and
+	 * two far ones (corpus regression-query3-double-huge-hull-point-stall): the point of its
+	 * surface GJK returned for a point 6.16 away was itself 1.29 away from the hull by GJK, whose
+	 * new far vertex brought a gain below round-off and was dropped again at each step. */
+	cd3Vec pointsC[12] = {{-3.625, 0, 0},
+						  {0, 0, 0},
+						  {0, 0, 0},
+						  {0, -1, -6974103552.0},
+						  {-6.5, -6949306368.0, -6973005312.0},
+						  {-4724858368.0, 3.25, -6960029184.0},
+						  {-6950198784.0, -11.625, 1.5},
+						  {-12.5, -12.5, -12.375},
+						  {-2.625, 0.5, 1},
+						  {-12, -1, -1},
+						  {1, 1, 1},
+						  {1, -4.625, 1}};
+	cd3Hull* hullC = NULL;
+	TEST_CHECK(cd3ComputeHull(pointsC, 12, &hullC) == CD_OK);
+	if (hullC != NULL)
+	{
+		cd3Transform place = {
+			{1.60174560546875, -12.5, -12.5},
+			{-0.49362970296310121, -0.6170371287038765, -0.61086675741683771, 0.049362970296310121}};
+		cd3Shape hull = cd3MakeHullShape(hullC, place);
+		cd3Shape point = cd3MakeSphereShape((cd3Sphere){{-12.5, -12.5, -12.5}, 0.0});
+		cd3ClosestPoints r = cd3Distance(&hull, &point);
+		cd3Shape onHull = cd3MakeSphereShape((cd3Sphere){r.pointA, 0.0});
+		double again = cd3Distance(&hull, &onHull).distance;
+		double moved = (double)cd3VecDistance(cd3ClosestPointOnShape(&hull, r.pointA), r.pointA);
+		double tolerance = 64.0 * (double)CD_REAL_EPSILON * 7e9;
+		TEST_CHECKF(fabs(r.distance - 6.1606693809636) <= 1e-6, "distance %.17g", r.distance);
+		TEST_CHECKF(
+			again <= tolerance && moved <= tolerance,
+			"the closest point is %.9g from the hull, its own closest point %.9g away (tolerance %.3g)",
+			again, moved, tolerance);
+		cd3DestroyHull(hullC);
+	}
+
+	cd3Box box = {{-0.5, -11.625, 0},
+				  {0, 989911296, 0},
+				  {0, 0.8295613557843402, -0.51847584736521268, 0.20739033894608505}};
+	cd3Triangle triangle = {{0, 0.5, 1}, {0.5, -12, 3.25}, {0.5, -12.5, -12.5}};
+	cd3Shape boxShape = cd3MakeBoxShape(box), triangleShape = cd3MakeTriangleShape(triangle);
+	double expected = RefDistance(&boxShape, &triangleShape);
+	double forward = cd3Distance(&boxShape, &triangleShape).distance;
+	double backward = cd3Distance(&triangleShape, &boxShape).distance;
+	TEST_CHECKF(cd3Overlap(&boxShape, &triangleShape), "no overlap (reference distance %.9g)", expected);
+	TEST_CHECKF(fabs(forward - expected) <= 1e-6 && fabs(backward - expected) <= 1e-6,
+				"distances %.9g and %.9g, reference %.9g", forward, backward, expected);
+}
+#endif
+
 /* ---- simplex cache --------------------------------------------------------------------------- */
 #if CD_DOUBLE
 #define CACHE_AGREEMENT 1e-9
@@ -624,6 +869,11 @@ int main(void)
 	TEST_RUN(TestDistanceStatus);
 	TEST_RUN(TestPointInsideLongBox);
 	TEST_RUN(TestPointNearThinBox);
+	TEST_RUN(TestNeedleDifferences);
+	TEST_RUN(TestPointsOnNeedleHull);
+#if CD_DOUBLE
+	TEST_RUN(TestNeedleFuzzCases);
+#endif
 	TEST_RUN(TestCacheAgrees);
 	TEST_RUN(TestCacheSavesIterations);
 	TEST_RUN(TestClosedFormMatchesGjk);

@@ -2209,6 +2209,106 @@ static void TestNearlyParallelBoxEdges(void)
  * round-off of 1e22 (double): the edge pair's closest points, 6.8e16 apart, passed within 1e-4 of
  * the sizes (2e18), and the point lay 3.4e16 off the triangle (fuzz_manifold3, double build;
  * regression-double-huge-aabb-segment-triangle; beyond the float range). */
+/* EPA's witnesses (fuzz_manifold3, float build; corpus regression-manifold3-float-*). An AABB
+ * flat to a segment 2e9 long through a hull 2e9 across at the range's corner: the foot of EPA's
+ * depth lay in another triangle of the difference's closest facet than the one taken, whose weights
+ * extrapolated the witness on the segment 2.8e8 beyond its end; now the facet's triangle that holds
+ * the foot gives them. A needle hull 2e9 long and 2.5e5 wide overlapping a hull of size 2e5 by 6e4:
+ * the weights of EPA's sliver face (a Gram determinant that cancelled in float) sent both witnesses
+ * to the needle's far end, 5e8 from the contact, and in the other order EPA (its faces' normals
+ * from the sliver's long edges) ran to its cap and there was no contact at all; the faces now take
+ * their normals and weights from their two shorter edges. Both overlap: reference 0. */
+static void TestEpaWitnessRegressions(void)
+{
+	static const double hullPoints[30] = {
+		-750000000, 750000000, 500000000,  250000000,  375000000, 1e9,		 -1e9, 1e9,	 0,	   1e9,
+		-500000000, -1e9,	   -750000000, -125000000, -1e9,	  125000000, -1e9, -1e9, -1e9, -1e9,
+		-1e9,		-1e9,	   -1e9,	   -1e9,	   -1e9,	  -1e9,		 -1e9, -1e9, -1e9, -1e9};
+	static const double hullPlace[7] = {1e9, 1e9, 1e9, -0.5, 0.5, 0.5, -0.5};
+	cd3Hull* hull = NULL;
+	cd3Shape huge = HullShapeOf(hullPoints, 10, hullPlace, &hull);
+	cd3Shape segment = AabbShape(1e9, -1e9, 1e9, 1e9, 1e9, 1e9);
+	if (hull != NULL)
+	{
+		CheckFuzzCase("flat-aabb-huge-hull", &segment, &huge, 0.0, 0.0, 2e9);
+	}
+	cd3DestroyHull(hull);
+
+	static const double needlePoints[27] = {-122500, 12500,	  -1e9,	   -122500, 1e-9,	 -1e9,	 1e-9,
+											118750,	 1e9,	  -125000, -125000, -120000, 0,		 -3750,
+											15000,	 -115000, -120000, 11250,	0,		 -16250, 8750,
+											-122500, -11250,  1250,	   2500,	-1250,	 15000};
+	static const double needlePlace[7] = {-1e-9,		 46250,		  -125000,		-0.985855877,
+										  -0.0887270272, 0.118302703, -0.0788684711};
+	static const double smallPoints[24] = {-115000, 61250,	61250, 105000, 61250, 61250,   61250, 61250,
+										   61250,	-98750, 61250, 61250,  61250, -122500, 61250, 11250,
+										   20000,	-82500, 61250, 7500,   15000, -122500, 1250,  107500};
+	static const double smallPlace[7] = {-101250, 1e-9, 75000, -0.707106769, -0.707106769, 0, 9.92430473e-15};
+	cd3Hull *needleHull = NULL, *smallHull = NULL;
+	cd3Shape needle = HullShapeOf(needlePoints, 9, needlePlace, &needleHull);
+	cd3Shape small = HullShapeOf(smallPoints, 8, smallPlace, &smallHull);
+	if (needleHull != NULL && smallHull != NULL)
+	{
+		CheckFuzzCase("needle-hull-small-hull", &needle, &small, 0.0, 0.0, 1e9);
+	}
+	cd3DestroyHull(needleHull);
+	cd3DestroyHull(smallHull);
+
+	/* An AABB 4.3e8 long crossing a needle hull 1.6e6 long, overlapping by 0.471929 along
+	 * (0.944, 0, 0.330) (exact, from the Minkowski difference's facets): the SAT's contact on an
+	 * axis its bias preferred lay apart, at separation 1.15, within a limit relative to the sizes
+	 * (double build, corpus regression-manifold3-double-long-aabb-needle-hull-apart-contact). An
+	 * overlapping pair's deepest point may not be apart beyond round-off. */
+	static const double longPoints[33] = {
+		0,	   0,	  0,	 0,	   0,	   0, 0, 0, 0, -7.125, -1654758.125, -12.5,		   -11.5,  0,
+		0,	   0,	  0,	 0,	   -7.125, 0, 0, 0, 0, 0,	   -7.125,		 -1620152.625, 12.125, -4.875,
+		-12.5, -12.5, -12.5, -9.5, 12.125};
+	static const double identity[7] = {0, 0, 0, 0, 0, 0, -1};
+	cd3Hull* longHull = NULL;
+	cd3Shape needleHullShape = HullShapeOf(longPoints, 11, identity, &longHull);
+	cd3Shape longAabb = AabbShape(-12.375, -431824128, -12.5, -11, -12.5, 0);
+	if (longHull != NULL)
+	{
+		CheckFuzzCase("long-aabb-needle-hull", &longAabb, &needleHullShape, 11.25, 0.0, 4.32e8);
+#if CD_DOUBLE
+		for (int order = 0; order < 2; ++order)
+		{
+			cd3Manifold m = order == 0 ? cd3Collide(&longAabb, &needleHullShape, 11.25)
+									   : cd3Collide(&needleHullShape, &longAabb, 11.25);
+			TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) + 0.471929178) <= 1e-6,
+						"order %d: %d points, smallest separation %.9g, exact -0.471929178", order,
+						m.pointCount, MinSeparation(&m));
+		}
+#endif
+	}
+	cd3DestroyHull(longHull);
+
+	/* The same AABB, thinner, 3 from another needle hull (GJK; cd3Overlap says apart): the SAT
+	 * missed the separating axis (the cross axis of two nearly parallel long edges) and gave 3
+	 * points at separation -12.5 (double build, corpus
+	 * regression-manifold3-double-long-aabb-needle-hull-apart-*). Between polytopes of very
+	 * different sizes GJK's distance now decides whether the SAT's overlap stands. */
+	static const double apartPoints[33] = {
+		0,	   0,	  0,	 0,		0,		0,		0,	   0,	  0,	  -7.125, -1654758.125,
+		-12.5, -11.5, 0,	 0,		0,		0,		1e-30, 1e-30, 0,	  0,	  1e-30,
+		1e-30, 1e-30, 1e-30, 1e-30, -12.25, -0.875, 1e-30, 1e-30, 12.125, -4.875, -12.5};
+	cd3Hull* apartHull = NULL;
+	cd3Shape apartHullShape = HullShapeOf(apartPoints, 11, identity, &apartHull);
+	cd3Shape thinAabb = AabbShape(-12.375, -431824128, -12.5, -11, -12.5, -10.5);
+	if (apartHull != NULL)
+	{
+		CheckFuzzCase("long-aabb-needle-hull-apart", &thinAabb, &apartHullShape, 0.0, -1.0, 4.32e8);
+#if CD_DOUBLE
+		double gap = (double)cd3Distance(&thinAabb, &apartHullShape).distance;
+		cd3Manifold forward = cd3Collide(&thinAabb, &apartHullShape, 0.0);
+		cd3Manifold backward = cd3Collide(&apartHullShape, &thinAabb, 0.0);
+		TEST_CHECKF(gap > 2.9 && forward.pointCount == 0 && backward.pointCount == 0,
+					"apart by %.9g: %d and %d points", gap, forward.pointCount, backward.pointCount);
+#endif
+	}
+	cd3DestroyHull(apartHull);
+}
+
 static void TestHugeDoubleRegressions(void)
 {
 #if CD_DOUBLE
@@ -2796,6 +2896,7 @@ int main(void)
 	TEST_RUN(TestMissedOverlapRegression);
 	TEST_RUN(TestNearlyParallelBoxEdges);
 	TEST_RUN(TestHugeDoubleRegressions);
+	TEST_RUN(TestEpaWitnessRegressions);
 	TEST_RUN(TestTiltedCapsules);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestFlatCapsulesDepthAlongNormal);

@@ -1006,6 +1006,50 @@ static void TestSegmentNearlyParallelToBoxEdge(void)
 	}
 }
 
+/* Two boxes flat to segments 2 long, crossing at an angle of theta (1e-7 in double, 1e-3 in
+ * float), one over the other by a gap along the cross product of their directions (a mix of the
+ * first one's y and z axes, so that no face axis separates them): apart by exactly the gap. The
+ * box SAT's cross axis of the two edges has length sin(theta), so its absolute tolerance (16
+ * epsilon of the sizes) was a band of that over the sine, 7e-8 in double: boxes 1e-8 apart
+ * overlapped (fuzz_query3, double build, gaps 1.8e-9 and 5.3e-9 at an angle of 1.2e-7). Within
+ * the band the SAT leaves the answer to GJK. */
+static void TestNearlyParallelSegmentBoxes(void)
+{
+	double theta = CD_DOUBLE ? 1e-7 : 1e-3, phi = 0.7;
+	cdReal gap = CD_DOUBLE ? CD_R(1e-8) : CD_R(2e-4);
+	/* B turned by theta about k = (0, -sin phi, cos phi): its direction leaves x towards
+	 * (0, cos phi, sin phi), and x cross it is along k. */
+	cd3Vec k = {CD_R(0.0), (cdReal)-sin(phi), (cdReal)cos(phi)};
+	cdReal half = (cdReal)sin(0.5 * theta);
+	cd3Quat turn = {CD_R(0.0), half * k.y, half * k.z, (cdReal)cos(0.5 * theta)};
+	for (int i = 0; i < 2; ++i)
+	{
+		cdReal offset = i == 0 ? gap : CD_R(0.0);
+		cd3Box a = {CD3_VEC_ZERO, {CD_R(1.0), CD_R(0.0), CD_R(0.0)}, CD3_QUAT_IDENTITY};
+		cd3Box b = {cd3Scale(offset, k), {CD_R(1.0), CD_R(0.0), CD_R(0.0)}, turn};
+		cd3Aabb aabb = {{CD_R(-1.0), CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(0.0), CD_R(0.0)}};
+		cd3Shape shapeA = cd3MakeBoxShape(a), shapeB = cd3MakeBoxShape(b);
+		double distance = (double)cd3Distance(&shapeA, &shapeB).distance;
+		bool expected = i == 1;
+		TEST_CHECKF(cd3OverlapBoxBox(a, b) == expected && cd3OverlapBoxBox(b, a) == expected,
+					"boxes %.3g apart: overlap %d (distance %.3g)", (double)offset,
+					(int)cd3OverlapBoxBox(a, b), distance);
+		TEST_CHECKF(cd3OverlapAabbBox(aabb, b) == expected, "AABB and box %.3g apart: overlap %d",
+					(double)offset, (int)cd3OverlapAabbBox(aabb, b));
+		TEST_CHECK_NEAR(distance, (double)offset, 0.01 * (double)gap);
+	}
+#if CD_DOUBLE
+	/* The fuzzer's pair, to the bit (corpus regression-query3-double-nearly-parallel-segment-boxes-1). */
+	cd3Box box = {
+		{-1.2500000000000002e-07, -1.1500000000000002e-07, -1.1750000000000003e-07},
+		{0.99999999999999978, 0, 0},
+		{0.99999999999997691, -1.237499999999972e-07, -1.2499999999999716e-07, -1.2499999999999716e-07}};
+	cd3Aabb flat = {{-1.2500000000000002e-07, -1.2500000000000002e-07, -1.2500000000000002e-07},
+					{0.99999999999999978, -1.2500000000000002e-07, -1.2500000000000002e-07}};
+	TEST_CHECK(!cd3OverlapAabbBox(flat, box));
+#endif
+}
+
 int main(void)
 {
 	TEST_RUN(TestSourceTexts);
@@ -1025,5 +1069,6 @@ int main(void)
 	TEST_RUN(TestNearlyOppositeHalfSpaces);
 	TEST_RUN(TestTriangleSegmentRejection);
 	TEST_RUN(TestSegmentNearlyParallelToBoxEdge);
+	TEST_RUN(TestNearlyParallelSegmentBoxes);
 	return TEST_SUMMARY();
 }

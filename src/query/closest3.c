@@ -209,8 +209,13 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 	double fromB = WideDot(sbc, sbp);
 	double towardC = WideDot(sbc, scp);
 
+	/* Ericson's d3 = ab.bp and d6 = ac.cp from bp and cp taken from the inputs, each within
+	 * epsilon of |ab| |bp| (|ac| |cp|). As d1 - ab.ab (d2 - ac.ac), differences of two products of
+	 * the long edge with itself and with ap, their sign was round-off for a point near b on a
+	 * sliver 2e30 long and 2e21 wide (double): a point on the long edge ac came back as vertex b,
+	 * 1.05e21 away. The segment ratios divide by the squared edge lengths, exact to epsilon. */
 	double abab = WideDot(sab, sab), acac = WideDot(sac, sac);
-	double d3 = d1 - abab;
+	double d3 = WideDot(sab, sbp);
 	if (d3 >= 0.0 && fromB <= 0.0)
 	{
 		return t.b;
@@ -222,10 +227,10 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 	double vc = WideDot(normal, WideCross(sab, sap));
 	if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
 	{
-		return Narrow(WideMulAdd(origin, WideClampedRatio(d1, d1 - d3), ab));
+		return Narrow(WideMulAdd(origin, WideClampedRatio(d1, abab), ab));
 	}
 
-	double d6 = d2 - acac;
+	double d6 = WideDot(sac, scp);
 	if (d6 >= 0.0 && towardC >= 0.0)
 	{
 		return t.c;
@@ -234,7 +239,7 @@ cd3Vec cd3ClosestPointOnTriangle(cd3Triangle t, cd3Vec p)
 	double vb = WideDot(normal, WideCross(sap, sac));
 	if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
 	{
-		return Narrow(WideMulAdd(origin, WideClampedRatio(d2, d2 - d6), ac));
+		return Narrow(WideMulAdd(origin, WideClampedRatio(d2, acac), ac));
 	}
 
 	double va = WideDot(normal, WideCross(sbc, sbp));

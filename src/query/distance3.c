@@ -5,6 +5,7 @@
 
 #include "distance3.h"
 #include "support3.h"
+#include "wide3.h"
 
 #include <math.h>
 #include <string.h>
@@ -36,10 +37,74 @@ static cdReal MaxAbsComponent(cd3Vec v)
 typedef cd3GjkVertex GjkVertex;
 typedef cd3GjkSimplex GjkSimplex;
 
-/* Barycentric coordinates of the point of segment w0-w1 closest to the origin. */
-static void SolveSegment(cd3Vec w0, cd3Vec w1, cdReal* l0, cdReal* l1)
+/* The edge from vertex p to vertex q of the difference, (a_q - a_p) - (b_q - b_p): exact to the
+ * round-off of the shapes' own edges, where w_q - w_p keeps only that of |w| (SolverInput). */
+static cd3Vec SupportEdge(const GjkVertex* p, const GjkVertex* q)
 {
-	cd3Vec e = cd3Sub(w1, w0);
+	return cd3Sub(cd3Sub(q->a, p->a), cd3Sub(q->b, p->b));
+}
+
+#if CD_DOUBLE
+/* a * b - c * d to about one rounding of the result (Dekker's exact products: no fused
+ * multiply-add needed), for operands of unit scale (the splits must not overflow). */
+static double SplitHigh(double x)
+{
+	double scaled = 134217729.0 * x; /* 2^27 + 1 */
+	return scaled - (scaled - x);
+}
+
+static double ProductError(double a, double b, double product)
+{
+	double aHigh = SplitHigh(a), aLow = a - aHigh, bHigh = SplitHigh(b), bLow = b - bHigh;
+	return ((aHigh * bHigh - product) + aHigh * bLow + aLow * bHigh) + aLow * bLow;
+}
+
+static double ProductDifference(double a, double b, double c, double d)
+{
+	double ab = a * b, cd = c * d;
+	return (ab - cd) + (ProductError(a, b, ab) - ProductError(c, d, cd));
+}
+#endif
+
+/* a x b of unit-scale vectors. Two nearly parallel edges (a sliver face: a needle's vertices
+ * nearly in line, 2.8e8 and 7e9 long at an angle of 4.5e-8) cancel in each component, whose
+ * round-off (epsilon of the products) then tilts the normal by epsilon over the angle's sine: the
+ * face's plane missed a point it holds by 0.28, 3.4e9 out (double build). There the components
+ * are taken from exact products; in the float build the products of float coordinates are exact
+ * in double already. */
+static WideVec FaceCross(WideVec a, WideVec b)
+{
+	WideVec n = WideCross(a, b);
+#if CD_DOUBLE
+	if (WideDot(n, n) < 1e-6 * WideDot(a, a) * WideDot(b, b))
+	{
+		n.x = ProductDifference(a.y, b.z, a.z, b.y);
+		n.y = ProductDifference(a.z, b.x, a.x, b.z);
+		n.z = ProductDifference(a.x, b.y, a.y, b.x);
+	}
+#endif
+	return n;
+}
+
+/* What the sub-algorithm solves on: the simplex's vertices w = a - b scaled to unit size, and its
+ * edges edge[i][j] = w[j] - w[i] taken from the support points as (a[j] - a[i]) - (b[j] - b[i])
+ * (same scale). On a long, thin difference (a segment 1e9 long against a box of size 10) the
+ * vertices lie far from the origin and from each other along the needle, and w[j] - w[i] of two
+ * vertices at the same end keeps only the round-off of |w| (epsilon times the length) of a short
+ * edge: its direction, and so the faces' normals and the search direction, tilt by that over the
+ * edge's length, which at the needle's length moves a support plane by more than the gap (1e9 x
+ * 2.2e-16 / 13 x 2e9 = 34 in double). From the support points, an edge between two vertices with
+ * the same point of A is B's own edge, exact to its own round-off. */
+typedef struct SolverInput
+{
+	cd3Vec w[4];
+	cd3Vec edge[4][4];
+} SolverInput;
+
+/* Barycentric coordinates of the point of segment w[i]-w[j] closest to the origin. */
+static void SolveSegment(const SolverInput* s, int i, int j, cdReal* l0, cdReal* l1)
+{
+	cd3Vec w0 = s->w[i], w1 = s->w[j], e = s->edge[i][j];
 	cdReal d1 = -cd3Dot(w0, e);
 	cdReal d2 = cd3Dot(w1, e);
 	if (d1 <= CD_R(0.0))
@@ -103,55 +168,66 @@ static bool IsBetterSubSimplex(const SubSimplexChoice* best, cdReal distanceSqua
 					   : distance + GJK_TIE_TOLERANCE < bestDistance;
 }
 
-/* Barycentric coordinates of the point of triangle w[0..2] closest to the origin; w[2] is the
- * newest vertex. */
-static void SolveTriangle(const cd3Vec* w, cdReal* l)
+/* The vertex of triangle index[0..2] of s where its two shorter edges meet (the largest angle),
+ * as a position 0..2 in index; *edgeProductSquared: the product of their squared lengths. */
+static int TriangleBase(const SolverInput* s, const int* index, double* edgeProductSquared)
+{
+	/* Squared lengths: the products compare the same (in double, where the product of two
+	 * squares of float lengths cannot underflow). */
+	double l01 = (double)cd3LengthSquared(s->edge[index[0]][index[1]]),
+		   l02 = (double)cd3LengthSquared(s->edge[index[0]][index[2]]),
+		   l12 = (double)cd3LengthSquared(s->edge[index[1]][index[2]]);
+	if (l12 >= l01 && l12 >= l02)
+	{
+		*edgeProductSquared = l01 * l02;
+		return 0;
+	}
+	if (l02 >= l01)
+	{
+		*edgeProductSquared = l01 * l12;
+		return 1;
+	}
+	*edgeProductSquared = l02 * l12;
+	return 2;
+}
+
+/* Barycentric coordinates l[0..2] of the point of triangle w[index[0..2]] closest to the origin;
+ * index[2] is the newest vertex. */
+static void SolveTriangle(const SolverInput* s, const int* index, cdReal* l)
 {
 	/* The normal from the two shorter edges, which meet at the largest angle: from the two long
 	 * edges of a needle (one vertex far from the others) it would cancel, and the needle would
-	 * pass for flat. (w1 - w0) x (w2 - w0) = (w1 - w0) x (w2 - w1) = (w2 - w0) x (w2 - w1). */
-	cd3Vec e01 = cd3Sub(w[1], w[0]), e02 = cd3Sub(w[2], w[0]), e12 = cd3Sub(w[2], w[1]);
-	/* Squared lengths: the products compare the same, and one square root does (in double, where
-	 * the product of two squares of float lengths cannot underflow). */
-	double l01 = (double)cd3LengthSquared(e01), l02 = (double)cd3LengthSquared(e02),
-		   l12 = (double)cd3LengthSquared(e12);
-	cd3Vec n;
+	 * pass for flat. The vertex where they meet is the base of the face weights below. The edges
+	 * from the base to the next vertices in cyclic order: ei x ej is (w1 - w0) x (w2 - w0) for
+	 * every base. In double whatever cdReal is: the products below of float coordinates are then
+	 * exact or nearly, and their squares cannot underflow. */
 	double edgeProductSquared;
-	if (l12 >= l01 && l12 >= l02)
-	{
-		n = cd3Cross(e01, e02);
-		edgeProductSquared = l01 * l02;
-	}
-	else if (l02 >= l01)
-	{
-		n = cd3Cross(e01, e12);
-		edgeProductSquared = l01 * l12;
-	}
-	else
-	{
-		n = cd3Cross(e02, e12);
-		edgeProductSquared = l02 * l12;
-	}
-#if CD_DOUBLE
-	bool flat = !((double)cd3Length(n) > (double)GJK_DEGENERATE_TOLERANCE * sqrt(edgeProductSquared));
-#else
-	/* Squares in double, without the two square roots: products of float coordinates of these
-	 * unit-scaled vertices neither overflow nor underflow there. */
-	double normalSquared = (double)n.x * (double)n.x + (double)n.y * (double)n.y + (double)n.z * (double)n.z;
+	int base = TriangleBase(s, index, &edgeProductSquared);
+	int next = base == 2 ? 0 : base + 1, previous = base == 0 ? 2 : base - 1;
+	WideVec ei = Widen(s->edge[index[base]][index[next]]), ej = Widen(s->edge[index[base]][index[previous]]);
+	WideVec n = FaceCross(ei, ej);
+	double normalSquared = WideDot(n, n);
 	bool flat = !(normalSquared >
 				  (double)GJK_DEGENERATE_TOLERANCE * (double)GJK_DEGENERATE_TOLERANCE * edgeProductSquared);
-#endif
 	if (!flat)
 	{
-		cdReal l0 = cd3Dot(n, cd3Cross(w[1], w[2]));
-		cdReal l1 = cd3Dot(n, cd3Cross(w[2], w[0]));
-		cdReal l2 = cd3Dot(n, cd3Cross(w[0], w[1]));
-		cdReal sum = l0 + l1 + l2;
-		if (l0 >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0) && sum > CD_R(0.0))
+		/* The origin as o = wb + li ei + lj ej (plus a part along n): li = n.(o' x ej) / |n|^2,
+		 * lj = n.(ei x o') / |n|^2 with o' = -wb. Measured from the vertex at the largest angle,
+		 * along its two shorter edges, the weights err by about epsilon times |wb| over those
+		 * edges. The former sub-areas of the triangles the origin makes with each edge, products
+		 * of two vertices, erred by epsilon |w|^2 over the face's area: on a needle 7e9 long and
+		 * 15 wide (relative width 2e-9) they were all round-off, a vertex the closest point needs
+		 * got the weight 0, and GJK stopped 7.7 from a point it touched (double build). */
+		WideVec o = WideScale(-1.0, Widen(s->w[index[base]]));
+		double li = WideDot(n, WideCross(o, ej));
+		double lj = WideDot(n, WideCross(ei, o));
+		double lb = normalSquared - li - lj;
+		if (li >= 0.0 && lj >= 0.0 && lb >= 0.0)
 		{
-			l[0] = l0 / sum;
-			l[1] = l1 / sum;
-			l[2] = l2 / sum;
+			double inverse = 1.0 / normalSquared;
+			l[base] = (cdReal)(lb * inverse);
+			l[next] = (cdReal)(li * inverse);
+			l[previous] = (cdReal)(lj * inverse);
 			return;
 		}
 	}
@@ -164,8 +240,9 @@ static void SolveTriangle(const cd3Vec* w, cdReal* l)
 	{
 		int i = edges[e][0], j = edges[e][1], k = 3 - i - j;
 		cdReal li, lj;
-		SolveSegment(w[i], w[j], &li, &lj);
-		cdReal distanceSquared = cd3LengthSquared(cd3Add(cd3Scale(li, w[i]), cd3Scale(lj, w[j])));
+		SolveSegment(s, index[i], index[j], &li, &lj);
+		cdReal distanceSquared =
+			cd3LengthSquared(cd3Add(cd3Scale(li, s->w[index[i]]), cd3Scale(lj, s->w[index[j]])));
 		bool keepsNewest = (i == 2 && li > CD_R(0.0)) || (j == 2 && lj > CD_R(0.0));
 		if (IsBetterSubSimplex(&best, distanceSquared, keepsNewest))
 		{
@@ -181,44 +258,52 @@ static void SolveTriangle(const cd3Vec* w, cdReal* l)
 
 /* Barycentric coordinates of the point of tetrahedron w[0..3] closest to the origin; returns
  * true when the origin lies inside it. */
-static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
+static bool SolveTetrahedron(const SolverInput* s, cdReal* l)
 {
-	/* Edges from the vertex whose three edges have the smallest product: from the far apex of a
-	 * needle (one support point far from the others) they would be long and nearly parallel, and
-	 * the needle would pass for flat. */
-	/* Six squared edge lengths, once: products of squares compare like products of lengths (in
-	 * double, where products of three squares of float lengths cannot underflow). */
+	const cd3Vec* w = s->w;
+	/* The weights are solved along three edges that join the four vertices (a spanning tree of
+	 * the tetrahedron: a star from one vertex or a path through all four), the tree whose edges
+	 * have the smallest product: their determinant is six times the volume whichever tree, and
+	 * the solve errs by epsilon times |w| over the volume relative to that product. From a single
+	 * vertex, a needle's tetrahedron (two vertices at each end) has two long, nearly parallel
+	 * edges and the solve kept no digit; its path short edge - long edge - short edge is as well
+	 * conditioned as the needle is thick. Six squared edge lengths, once: products of squares
+	 * compare like products of lengths (in double, where products of three squares of float
+	 * lengths cannot underflow). */
+	static const int trees[16][3][2] = {
+		{{0, 1}, {0, 2}, {0, 3}}, {{1, 0}, {1, 2}, {1, 3}}, {{2, 0}, {2, 1}, {2, 3}},
+		{{3, 0}, {3, 1}, {3, 2}}, {{0, 1}, {1, 2}, {2, 3}}, {{0, 1}, {1, 3}, {3, 2}},
+		{{0, 2}, {2, 1}, {1, 3}}, {{0, 2}, {2, 3}, {3, 1}}, {{0, 3}, {3, 1}, {1, 2}},
+		{{0, 3}, {3, 2}, {2, 1}}, {{1, 0}, {0, 2}, {2, 3}}, {{1, 0}, {0, 3}, {3, 2}},
+		{{1, 2}, {2, 0}, {0, 3}}, {{1, 3}, {3, 0}, {0, 2}}, {{2, 0}, {0, 1}, {1, 3}},
+		{{2, 1}, {1, 0}, {0, 3}}};
 	double edgeSquared[4][4];
 	for (int i = 0; i < 4; ++i)
 	{
 		edgeSquared[i][i] = 1.0;
 		for (int j = i + 1; j < 4; ++j)
 		{
-			edgeSquared[i][j] = edgeSquared[j][i] = (double)cd3LengthSquared(cd3Sub(w[j], w[i]));
+			edgeSquared[i][j] = edgeSquared[j][i] = (double)cd3LengthSquared(s->edge[i][j]);
 		}
 	}
-	int base = 0;
+	int tree = 0;
 	double smallest = (double)CD_REAL_MAX * (double)CD_REAL_MAX;
-	for (int i = 0; i < 4; ++i)
+	for (int t = 0; t < 16; ++t)
 	{
-		double product = edgeSquared[i][0] * edgeSquared[i][1] * edgeSquared[i][2] * edgeSquared[i][3];
+		double product = edgeSquared[trees[t][0][0]][trees[t][0][1]] *
+						 edgeSquared[trees[t][1][0]][trees[t][1][1]] *
+						 edgeSquared[trees[t][2][0]][trees[t][2][1]];
 		if (product < smallest)
 		{
 			smallest = product;
-			base = i;
+			tree = t;
 		}
 	}
-	int other[3];
-	for (int i = 0, k = 0; i < 4; ++i)
-	{
-		if (i != base)
-		{
-			other[k++] = i;
-		}
-	}
-	cd3Vec e1 = cd3Sub(w[other[0]], w[base]);
-	cd3Vec e2 = cd3Sub(w[other[1]], w[base]);
-	cd3Vec e3 = cd3Sub(w[other[2]], w[base]);
+	const int(*treeEdges)[2] = trees[tree];
+	int base = treeEdges[0][0];
+	cd3Vec e1 = s->edge[treeEdges[0][0]][treeEdges[0][1]];
+	cd3Vec e2 = s->edge[treeEdges[1][0]][treeEdges[1][1]];
+	cd3Vec e3 = s->edge[treeEdges[2][0]][treeEdges[2][1]];
 	cdReal volume = cd3Dot(cd3Cross(e1, e2), e3);
 	/* The enclosing weights, when all are non-negative, and how far from the origin they rebuild
 	 * the point (CD_REAL_MAX when there are none). */
@@ -226,18 +311,26 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 	cdReal residual = CD_REAL_MAX;
 	if ((double)cdAbs(volume) > (double)GJK_DEGENERATE_TOLERANCE * sqrt(smallest))
 	{
+		/* The origin from the base, o = -w[base], as m1 e1 + m2 e2 + m3 e3 (Cramer); each tree edge
+		 * moves its coefficient from its first vertex to its second. */
 		cd3Vec o = cd3Neg(w[base]);
-		cdReal lb = cd3Dot(cd3Cross(w[other[0]], w[other[1]]), w[other[2]]) / volume;
-		cdReal l1 = cd3Dot(cd3Cross(o, e2), e3) / volume;
-		cdReal l2 = cd3Dot(cd3Cross(e1, o), e3) / volume;
-		cdReal l3 = cd3Dot(cd3Cross(e1, e2), o) / volume;
-		if (lb >= CD_R(0.0) && l1 >= CD_R(0.0) && l2 >= CD_R(0.0) && l3 >= CD_R(0.0))
+		cdReal m[3] = {cd3Dot(cd3Cross(o, e2), e3) / volume, cd3Dot(cd3Cross(e1, o), e3) / volume,
+					   cd3Dot(cd3Cross(e1, e2), o) / volume};
+		cdReal weights[4] = {CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+		weights[base] = CD_R(1.0);
+		for (int k = 0; k < 3; ++k)
 		{
-			cdReal sum = lb + l1 + l2 + l3;
-			enclosing[base] = lb / sum;
-			enclosing[other[0]] = l1 / sum;
-			enclosing[other[1]] = l2 / sum;
-			enclosing[other[2]] = l3 / sum;
+			weights[treeEdges[k][0]] -= m[k];
+			weights[treeEdges[k][1]] += m[k];
+		}
+		if (weights[0] >= CD_R(0.0) && weights[1] >= CD_R(0.0) && weights[2] >= CD_R(0.0) &&
+			weights[3] >= CD_R(0.0))
+		{
+			cdReal sum = weights[0] + weights[1] + weights[2] + weights[3];
+			for (int i = 0; i < 4; ++i)
+			{
+				enclosing[i] = weights[i] / sum;
+			}
 			/* On a thin tetrahedron (just above the flatness tolerance) the weights carry a
 			 * round-off of epsilon over its flatness: the point they rebuild can be far from the
 			 * origin (1e-3 of the size at the 1e9 scale, which made a common point 1e6 off a
@@ -249,13 +342,13 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 			for (int pass = 0; pass < 2 && residual > GJK_TOUCH_TOLERANCE; ++pass)
 			{
 				cd3Vec r = Combine(w, enclosing, 4);
-				cdReal d1 = cd3Dot(cd3Cross(r, e2), e3) / volume;
-				cdReal d2 = cd3Dot(cd3Cross(e1, r), e3) / volume;
-				cdReal d3 = cd3Dot(cd3Cross(e1, e2), r) / volume;
-				enclosing[base] += d1 + d2 + d3;
-				enclosing[other[0]] -= d1;
-				enclosing[other[1]] -= d2;
-				enclosing[other[2]] -= d3;
+				cdReal d[3] = {cd3Dot(cd3Cross(r, e2), e3) / volume, cd3Dot(cd3Cross(e1, r), e3) / volume,
+							   cd3Dot(cd3Cross(e1, e2), r) / volume};
+				for (int k = 0; k < 3; ++k)
+				{
+					enclosing[treeEdges[k][0]] += d[k];
+					enclosing[treeEdges[k][1]] -= d[k];
+				}
 				inside = enclosing[0] >= CD_R(0.0) && enclosing[1] >= CD_R(0.0) &&
 						 enclosing[2] >= CD_R(0.0) && enclosing[3] >= CD_R(0.0);
 				residual = inside ? cd3Length(Combine(w, enclosing, 4)) : CD_REAL_MAX;
@@ -282,7 +375,7 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
 	{
 		cd3Vec face[3] = {w[faces[f][0]], w[faces[f][1]], w[faces[f][2]]};
 		cdReal faceLambda[3];
-		SolveTriangle(face, faceLambda);
+		SolveTriangle(s, faces[f], faceLambda);
 		cdReal distanceSquared = cd3LengthSquared(Combine(face, faceLambda, 3));
 		bool keepsNewest = faces[f][2] == 3 && faceLambda[2] > CD_R(0.0);
 		if (IsBetterSubSimplex(&best, distanceSquared, keepsNewest))
@@ -315,36 +408,41 @@ static bool SolveTetrahedron(const cd3Vec* w, cdReal* l)
  * weights and returns true when the origin is enclosed by a tetrahedron. */
 static bool SolveSimplex(GjkSimplex* simplex)
 {
-	cd3Vec w[4];
+	SolverInput input;
 	cdReal l[4] = {CD_R(1.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
 	/* The weights do not depend on scale: solve on vertices scaled to unit size, so that the
 	 * products of up to four coordinates neither overflow nor underflow at extreme sizes. */
 	cdReal largest = CD_R(0.0);
-	for (int i = 0; i < simplex->count; ++i)
+	int count = simplex->count;
+	for (int i = 0; i < count; ++i)
 	{
-		w[i] = simplex->v[i].w;
-		largest = cdMax(largest, cd3MaxAbs(w[i]));
+		largest = cdMax(largest, cd3MaxAbs(simplex->v[i].w));
 	}
-	if (largest > CD_R(0.0))
+	cdReal inverse = largest > CD_R(0.0) ? CD_R(1.0) / largest : CD_R(1.0);
+	for (int i = 0; i < count; ++i)
 	{
-		cdReal inverse = CD_R(1.0) / largest;
-		for (int i = 0; i < simplex->count; ++i)
+		input.w[i] = cd3Scale(inverse, simplex->v[i].w);
+		input.edge[i][i] = CD3_VEC_ZERO;
+		for (int j = i + 1; j < count; ++j)
 		{
-			w[i] = cd3Scale(inverse, w[i]);
+			cd3Vec edge = cd3Scale(inverse, SupportEdge(&simplex->v[i], &simplex->v[j]));
+			input.edge[i][j] = edge;
+			input.edge[j][i] = cd3Neg(edge);
 		}
 	}
 	bool enclosed = false;
-	if (simplex->count == 2)
+	if (count == 2)
 	{
-		SolveSegment(w[0], w[1], &l[0], &l[1]);
+		SolveSegment(&input, 0, 1, &l[0], &l[1]);
 	}
-	else if (simplex->count == 3)
+	else if (count == 3)
 	{
-		SolveTriangle(w, l);
+		static const int all[3] = {0, 1, 2};
+		SolveTriangle(&input, all, l);
 	}
-	else if (simplex->count == 4)
+	else if (count == 4)
 	{
-		enclosed = SolveTetrahedron(w, l);
+		enclosed = SolveTetrahedron(&input, l);
 	}
 
 	int kept = 0;
@@ -371,6 +469,36 @@ static cd3Vec SimplexPoint(const GjkSimplex* simplex)
 	return v;
 }
 
+/* The point of a triangle's plane closest to the origin (the simplex's point when its weights
+ * hold the face), from the normal of its two shorter edges (SupportEdge, scaled to unit size) and
+ * one vertex: exact to the round-off of the vertices across the face. The weighted sum of the
+ * vertices also carries the weights' error along the face, epsilon times |w| over the face's
+ * width times its length: on a needle face whose vertices lie 3e9 out and 12.5 apart across, 15
+ * along it, and a point touching the hull's surface stayed 3.4 from it (double build). */
+static cd3Vec FacePoint(const GjkSimplex* simplex)
+{
+	const GjkVertex* v = simplex->v;
+	cdReal largest = cdMax(cd3MaxAbs(v[0].w), cdMax(cd3MaxAbs(v[1].w), cd3MaxAbs(v[2].w)));
+	if (!(largest > CD_R(0.0)))
+	{
+		return SimplexPoint(simplex);
+	}
+	double inverse = 1.0 / (double)largest;
+	WideVec e01 = WideScale(inverse, Widen(SupportEdge(&v[0], &v[1])));
+	WideVec e02 = WideScale(inverse, Widen(SupportEdge(&v[0], &v[2])));
+	WideVec e12 = WideScale(inverse, Widen(SupportEdge(&v[1], &v[2])));
+	double l01 = WideDot(e01, e01), l02 = WideDot(e02, e02), l12 = WideDot(e12, e12);
+	WideVec n = l12 >= l01 && l12 >= l02 ? FaceCross(e01, e02)
+										 : (l02 >= l01 ? FaceCross(e01, e12) : FaceCross(e02, e12));
+	double normalSquared = WideDot(n, n);
+	if (!(normalSquared > 0.0))
+	{
+		return SimplexPoint(simplex);
+	}
+	WideVec w0 = Widen(v[0].w);
+	return Narrow(WideScale(WideDot(n, w0) / normalSquared, n));
+}
+
 /* The direction from the simplex towards the origin. For a segment or a triangle it is built
  * from the simplex's own edges (Catto's trick): -v, a sum of large, cancelling terms when the
  * shapes are large compared with their distance, can point off by far more than its length error
@@ -383,13 +511,19 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 	{
 		return cd3Neg(v);
 	}
-	/* On unit-scaled vertices: the products of three coordinates must not under/overflow. */
-	cd3Vec w[3];
-	cdReal largest = CD_R(0.0);
-	for (int i = 0; i < simplex->count; ++i)
+	/* On unit-scaled vertices: the products of three coordinates must not under/overflow. The
+	 * edges from the support points (SupportEdge): on a needle, w1 - w0 of two vertices at one
+	 * end tilts the direction by epsilon times the length over the edge, and the support along
+	 * it can then pick the wrong end of the needle. */
+	cd3Vec w0 = simplex->v[0].w;
+	cd3Vec e01 = SupportEdge(&simplex->v[0], &simplex->v[1]);
+	cd3Vec e02 = CD3_VEC_ZERO, e12 = CD3_VEC_ZERO;
+	cdReal largest = cdMax(cd3MaxAbs(w0), cd3MaxAbs(simplex->v[1].w));
+	if (simplex->count == 3)
 	{
-		w[i] = simplex->v[i].w;
-		largest = cdMax(largest, cd3MaxAbs(w[i]));
+		e02 = SupportEdge(&simplex->v[0], &simplex->v[2]);
+		e12 = SupportEdge(&simplex->v[1], &simplex->v[2]);
+		largest = cdMax(largest, cd3MaxAbs(simplex->v[2].w));
 	}
 	/* Within these bounds the direction (products of up to three coordinates) and its squared
 	 * length (six) neither overflow nor underflow: no scaling needed (the direction's length does
@@ -403,21 +537,34 @@ static cd3Vec SearchDirection(const GjkSimplex* simplex, cd3Vec v)
 	if (largest < safeLow || largest > safeHigh)
 	{
 		cdReal inverse = CD_R(1.0) / largest;
-		for (int i = 0; i < simplex->count; ++i)
-		{
-			w[i] = cd3Scale(inverse, w[i]);
-		}
+		w0 = cd3Scale(inverse, w0);
+		e01 = cd3Scale(inverse, e01);
+		e02 = cd3Scale(inverse, e02);
+		e12 = cd3Scale(inverse, e12);
 	}
 	cd3Vec direction;
 	if (simplex->count == 2)
 	{
-		cd3Vec e = cd3Sub(w[1], w[0]);
-		direction = cd3Cross(cd3Cross(e, cd3Neg(w[0])), e);
+		direction = cd3Cross(cd3Cross(e01, cd3Neg(w0)), e01);
 	}
 	else
 	{
-		direction = cd3Cross(cd3Sub(w[1], w[0]), cd3Sub(w[2], w[0]));
-		if (cd3Dot(direction, w[0]) > CD_R(0.0))
+		/* The normal from the two shorter edges (SolveTriangle). */
+		cdReal l01 = cd3LengthSquared(e01), l02 = cd3LengthSquared(e02), l12 = cd3LengthSquared(e12);
+		WideVec a = Widen(e01), b = Widen(e02), c = Widen(e12);
+		if (l12 >= l01 && l12 >= l02)
+		{
+			direction = Narrow(FaceCross(a, b));
+		}
+		else if (l02 >= l01)
+		{
+			direction = Narrow(FaceCross(a, c));
+		}
+		else
+		{
+			direction = Narrow(FaceCross(b, c));
+		}
+		if (cd3Dot(direction, w0) > CD_R(0.0))
 		{
 			direction = cd3Neg(direction);
 		}
@@ -889,6 +1036,17 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		if (!solved)
 		{
+			/* A segment and the vertex just appended to it, kept for the direction below. */
+			bool fromSegment = appendedSize > CD_R(0.0) && simplex.count == 3;
+			GjkSimplex triangle;
+			if (fromSegment)
+			{
+				triangle.count = 3;
+				for (int i = 0; i < 3; ++i)
+				{
+					triangle.v[i] = simplex.v[i];
+				}
+			}
 			if (SolveSimplex(&simplex))
 			{
 				*touching = true;
@@ -898,8 +1056,17 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			{
 				size[i] = VertexSize(&simplex.v[i]);
 			}
-			v = SimplexPoint(&simplex);
-			direction = SearchDirection(&simplex, v);
+			v = simplex.count == 3 ? FacePoint(&simplex) : SimplexPoint(&simplex);
+			/* The new vertex dropped again (round-off: in exact arithmetic it belongs to the next
+			 * simplex) leaves the segment, its direction and its support as they were, and GJK
+			 * stalls. That happens when the new vertex is far out compared with the gain it
+			 * brings: a hull 7e9 across whose face through the point ran between a vertex
+			 * next to it and two far ones, the point 1.29 from the near edge (double build).
+			 * The triangle's normal then points at the face the support plane has not seen. */
+			bool dropped =
+				fromSegment && simplex.count == 2 &&
+				!(simplex.v[1].indexA == triangle.v[2].indexA && simplex.v[1].indexB == triangle.v[2].indexB);
+			direction = SearchDirection(dropped ? &triangle : &simplex, v);
 		}
 		cdReal distanceSquared = cd3LengthSquared(v);
 		/* The largest coordinate of the support points, as the documented tolerance reads (16

@@ -4,6 +4,9 @@
 #include "epa3.h"
 
 #include "sat3_support.h"
+#include "wide3.h"
+
+#include <math.h>
 
 #define MAX_VERTICES (CD3_EPA_MAX_ITERATIONS + 8)
 #define MAX_FACES (2 * MAX_VERTICES)
@@ -193,48 +196,112 @@ static bool DoSimplex(Vertex* s, int* count, cd3Vec* d)
  * passed exactly through it, 2e-4 across in float): a face at distance 0 kept an inward normal
  * and EPA cycled to its cap. The distance of the origin may then be 0 or, for a blown-up
  * simplex whose origin lies outside, negative. */
+/* The edge from vertex p to vertex q of the difference from the support points, (a_q - a_p) -
+ * (b_q - b_p): exact to the round-off of the shapes' own edges, where w_q - w_p of two vertices
+ * far out along a needle keeps only that of |w| (distance3.c, SolverInput). */
+static WideVec VertexEdge(const Vertex* p, const Vertex* q)
+{
+	return WideSub(WideSub(Widen(q->a), Widen(p->a)), WideSub(Widen(q->b), Widen(p->b)));
+}
+
+/* The normal is the cross product of the face's two shorter edges (they meet at its largest
+ * angle; on a needle's sliver faces the two long ones cancel), in double whatever cdReal is, and
+ * the distance is taken at the vertex where they meet. A face whose angle at vertex i is not
+ * small (sine above 1e-3) keeps the cheaper product of the vertices' differences from i. */
 static bool MakeFace(const Vertex* v, int i, int j, int k, cd3Vec inside, Face* f)
 {
-	cd3Vec n = cd3Cross(cd3Sub(v[j].w, v[i].w), cd3Sub(v[k].w, v[i].w));
-	cdReal length = cd3Length(n);
-	if (!(length > CD_R(0.0)))
+	cd3Vec dj = cd3Sub(v[j].w, v[i].w), dk = cd3Sub(v[k].w, v[i].w);
+	cd3Vec quick = cd3Cross(dj, dk);
+	double quickSquared = (double)cd3LengthSquared(quick);
+	if (quickSquared > 1e-6 * (double)cd3LengthSquared(dj) * (double)cd3LengthSquared(dk) &&
+		quickSquared < INFINITY)
+	{
+		cd3Vec n = cd3Scale(CD_R(1.0) / cd3Length(quick), quick);
+		f->v[0] = i;
+		f->v[1] = j;
+		f->v[2] = k;
+		if (cd3Dot(n, cd3Sub(v[i].w, inside)) < CD_R(0.0))
+		{
+			f->v[1] = k;
+			f->v[2] = j;
+			n = cd3Neg(n);
+		}
+		f->normal = n;
+		f->distance = cd3Dot(n, v[i].w);
+		return true;
+	}
+	WideVec eij = VertexEdge(&v[i], &v[j]), eik = VertexEdge(&v[i], &v[k]), ejk = VertexEdge(&v[j], &v[k]);
+	double lij = WideDot(eij, eij), lik = WideDot(eik, eik), ljk = WideDot(ejk, ejk);
+	/* Each is (w_j - w_i) x (w_k - w_i). */
+	WideVec wide;
+	int base;
+	if (ljk >= lij && ljk >= lik)
+	{
+		wide = WideCross(eij, eik);
+		base = i;
+	}
+	else if (lik >= lij)
+	{
+		wide = WideCross(eij, ejk);
+		base = j;
+	}
+	else
+	{
+		wide = WideCross(eik, ejk);
+		base = k;
+	}
+	double length = sqrt(WideDot(wide, wide));
+	if (!(length > 0.0) || !(length < INFINITY))
 	{
 		return false;
 	}
-	n = cd3Scale(CD_R(1.0) / length, n);
+	cd3Vec n = Narrow(WideScale(1.0 / length, wide));
 	f->v[0] = i;
 	f->v[1] = j;
 	f->v[2] = k;
-	if (cd3Dot(n, cd3Sub(v[i].w, inside)) < CD_R(0.0))
+	if (cd3Dot(n, cd3Sub(v[base].w, inside)) < CD_R(0.0))
 	{
 		f->v[1] = k;
 		f->v[2] = j;
 		n = cd3Neg(n);
 	}
-	cdReal distance = cd3Dot(n, v[i].w);
+	cdReal distance = cd3Dot(n, v[base].w);
 	f->normal = n;
 	f->distance = distance;
 	return true;
 }
 
-/* Barycentric coordinates of p's projection on triangle a-b-c (clamped to the triangle's plane
- * solve; falls back to the nearest vertex when degenerate). */
+/* Barycentric coordinates of p's projection on the plane of triangle a-b-c (vertex a when the
+ * triangle is degenerate). Measured from the vertex where the two shorter edges meet, along
+ * them (in double whatever cdReal is): EPA's faces on a needle are slivers, and the former
+ * normal equations from one vertex (a Gram determinant of its two edges, a difference of
+ * products of squared lengths) cancelled to nothing in float on a sliver 2e9 long and 1.4e5 wide
+ * and sent both witnesses to the needle's far end, 5e8 from the contact. */
 static void Barycentric(cd3Vec a, cd3Vec b, cd3Vec c, cd3Vec p, cdReal* u, cdReal* v, cdReal* w)
 {
-	cd3Vec v0 = cd3Sub(b, a), v1 = cd3Sub(c, a), v2 = cd3Sub(p, a);
-	cdReal d00 = cd3Dot(v0, v0), d01 = cd3Dot(v0, v1), d11 = cd3Dot(v1, v1);
-	cdReal d20 = cd3Dot(v2, v0), d21 = cd3Dot(v2, v1);
-	cdReal denom = d00 * d11 - d01 * d01;
-	if (!(denom > CD_R(0.0)))
+	WideVec x[3] = {Widen(a), Widen(b), Widen(c)};
+	WideVec e01 = WideSub(x[1], x[0]), e02 = WideSub(x[2], x[0]), e12 = WideSub(x[2], x[1]);
+	double l01 = WideDot(e01, e01), l02 = WideDot(e02, e02), l12 = WideDot(e12, e12);
+	int base = l12 >= l01 && l12 >= l02 ? 0 : (l02 >= l01 ? 1 : 2);
+	int next = base == 2 ? 0 : base + 1, previous = base == 0 ? 2 : base - 1;
+	WideVec ei = WideSub(x[next], x[base]), ej = WideSub(x[previous], x[base]);
+	WideVec n = WideCross(ei, ej);
+	double normalSquared = WideDot(n, n);
+	if (!(normalSquared > 0.0))
 	{
 		*u = CD_R(1.0);
 		*v = CD_R(0.0);
 		*w = CD_R(0.0);
 		return;
 	}
-	*v = (d11 * d20 - d01 * d21) / denom;
-	*w = (d00 * d21 - d01 * d20) / denom;
-	*u = CD_R(1.0) - *v - *w;
+	WideVec o = WideSub(Widen(p), x[base]);
+	double weights[3];
+	weights[next] = WideDot(n, WideCross(o, ej)) / normalSquared;
+	weights[previous] = WideDot(n, WideCross(ei, o)) / normalSquared;
+	weights[base] = 1.0 - weights[next] - weights[previous];
+	*u = (cdReal)weights[0];
+	*v = (cdReal)weights[1];
+	*w = (cdReal)weights[2];
 }
 
 /* GJK and EPA in the context's frame. */
@@ -443,6 +510,37 @@ static cd3Penetration Run(const Context* c)
 	cd3Vec p = cd3Scale(f.distance, f.normal);
 	cdReal u, v, t;
 	Barycentric(vertices[f.v[0]].w, vertices[f.v[1]].w, vertices[f.v[2]].w, p, &u, &v, &t);
+	/* The closest plane can hold several faces (a facet of the difference split into triangles,
+	 * at a tie in their distances), and the foot p of the perpendicular can lie in another one
+	 * than the face taken: this one's weights then extrapolate and the witnesses land off the
+	 * shapes (float: a segment 2e9 long through a hull at 1e9, the witness on the segment 2.8e8
+	 * beyond its end). The face of the polytope whose plane passes within round-off of p and whose
+	 * weights are the least negative gives them. */
+	if (cdMin(u, cdMin(v, t)) < CD_R(0.0))
+	{
+		cdReal least = cdMin(u, cdMin(v, t));
+		for (int i = 0; i < faceCount; ++i)
+		{
+			const Face* g = &faces[i];
+			cd3Vec w0 = vertices[g->v[0]].w, w1 = vertices[g->v[1]].w, w2 = vertices[g->v[2]].w;
+			cdReal scale = cdMax(cd3Length(w0), cdMax(cd3Length(w1), cd3Length(w2)));
+			if (!(cdAbs(cd3Dot(g->normal, p) - g->distance) <= CD_R(64.0) * CD_REAL_EPSILON * scale))
+			{
+				continue;
+			}
+			cdReal gu, gv, gt;
+			Barycentric(w0, w1, w2, p, &gu, &gv, &gt);
+			cdReal smallest = cdMin(gu, cdMin(gv, gt));
+			if (smallest > least)
+			{
+				least = smallest;
+				f = *g;
+				u = gu;
+				v = gv;
+				t = gt;
+			}
+		}
+	}
 	out.pointA = cd3Add(cd3Add(cd3Scale(u, vertices[f.v[0]].a), cd3Scale(v, vertices[f.v[1]].a)),
 						cd3Scale(t, vertices[f.v[2]].a));
 	out.pointB = cd3Add(cd3Add(cd3Scale(u, vertices[f.v[0]].b), cd3Scale(v, vertices[f.v[1]].b)),

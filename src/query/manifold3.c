@@ -1107,8 +1107,22 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 	}
 	if (separation <= CD_R(0.0))
 	{
+		/* Between polytopes of very different sizes the SAT's axes can miss the separating one:
+		 * the cross axis of a needle's edge nearly parallel to the other's long edge (a hull 1.6e6
+		 * long beside an AABB 4.3e8 long, 3 apart, double) is too short for its separation to
+		 * be trusted, and the SAT called them overlapping by 12.5. There GJK's distance decides
+		 * whether they are apart (these pairs already pay for DropPointsOffShapes). */
+		bool disparate = cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size);
+		if (disparate)
+		{
+			cd3ClosestPoints apart = cd3Distance(&a->shape, &b->shape);
+			if (apart.distance > ROUND_OFF_TOLERANCE * (a->size + b->size))
+			{
+				return apart.distance <= speculativeDistance ? VertexContact(apart) : EmptyManifold();
+			}
+		}
 		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
-		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
+		if (m.pointCount > 0 && disparate)
 		{
 			DropPointsOffShapes(&m, a, b);
 		}
@@ -1117,7 +1131,13 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 		 * overlap: a triangle 1e9 long and 1e-4 across clipped, in float, against a box's face
 		 * 1e-4 wide (lerps along its edges need 1e-13 of precision) kept only its far part, at
 		 * separation 2.7e8 for shapes that overlap. */
-		bool missed = m.pointCount > 0 && ManifoldMinSeparation(&m) > separation + limit;
+		/* Nor may the deepest point be apart beyond round-off: overlapping by the SAT, no axis
+		 * separates the shapes. The limit above, relative to the sizes, allowed an AABB 4.3e8 long
+		 * crossing a needle hull 1.6e6 long (double) a contact at separation 1.15 on an axis the
+		 * bias had preferred to the one along which they overlap. */
+		bool missed =
+			m.pointCount > 0 && (ManifoldMinSeparation(&m) > separation + limit ||
+								 ManifoldMinSeparation(&m) > RoundOff(m.points[0].point, a->size + b->size));
 		if (m.pointCount == 0 || missed)
 		{
 			/* No contact on the SAT's axis: a degenerate polytope (a point box against a triangle,

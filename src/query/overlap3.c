@@ -15,6 +15,7 @@
  * evaluated in one fixed order, so (a, b) and (b, a) agree to the bit. */
 #include "collide/query3.h"
 
+#include "distance3.h"
 #include "support3.h"
 
 #include <string.h>
@@ -334,10 +335,24 @@ static bool TriangleOverlapsCenteredBox(cd3Vec v0, cd3Vec v1, cd3Vec v2, cd3Vec 
 		   cdMax(p0, cdMax(p1, p2)) >= -radius - normalTolerance;
 }
 
+/* What the box SAT says: apart, overlapping, or overlapping only within the tolerance on a cross
+ * axis (BOXES_UNDECIDED). */
+typedef enum BoxesOverlapResult
+{
+	BOXES_APART,
+	BOXES_OVERLAP,
+	BOXES_UNDECIDED
+} BoxesOverlapResult;
+
 /* Gottschalk's 15-axis separating-axis test. rotation's columns are box B's axes in A's frame,
  * translation is B's center in A's frame. The tolerance absorbs the round-off of the rotation
- * entries, which matters most on the nearly null cross axes of (nearly) parallel edges. */
-static bool CenteredBoxesOverlap(cd3Vec hA, cd3Vec hB, cd3Mat33 rotation, cd3Vec translation)
+ * entries, which matters most on the nearly null cross axes of (nearly) parallel edges: there
+ * the entries, each within epsilon, give the axis only to epsilon over the sine of the edges'
+ * angle, and a gap that much times the sizes passes (two segment boxes 2 long, 1.2e-7 rad apart
+ * and 1.8e-9 apart, double: the gap is 1e-9 of the size, the band 4e-8). A cross axis that passes
+ * only within the tolerance leaves the answer to the caller (BOXES_UNDECIDED): GJK on the
+ * corners, exact to their own round-off. */
+static BoxesOverlapResult CenteredBoxesOverlap(cd3Vec hA, cd3Vec hB, cd3Mat33 rotation, cd3Vec translation)
 {
 	cdReal a[3] = {hA.x, hA.y, hA.z};
 	cdReal b[3] = {hB.x, hB.y, hB.z};
@@ -359,7 +374,7 @@ static bool CenteredBoxesOverlap(cd3Vec hA, cd3Vec hB, cd3Mat33 rotation, cd3Vec
 		cdReal rb = b[0] * absR[i][0] + b[1] * absR[i][1] + b[2] * absR[i][2];
 		if (cdAbs(t[i]) > a[i] + rb + tolerance)
 		{
-			return false;
+			return BOXES_APART;
 		}
 	}
 	for (int j = 0; j < 3; ++j)
@@ -368,10 +383,11 @@ static bool CenteredBoxesOverlap(cd3Vec hA, cd3Vec hB, cd3Mat33 rotation, cd3Vec
 		cdReal projection = t[0] * r[0][j] + t[1] * r[1][j] + t[2] * r[2][j];
 		if (cdAbs(projection) > ra + b[j] + tolerance)
 		{
-			return false;
+			return BOXES_APART;
 		}
 	}
 	/* Axis A_i x B_j. */
+	BoxesOverlapResult result = BOXES_OVERLAP;
 	for (int i = 0; i < 3; ++i)
 	{
 		int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
@@ -383,11 +399,15 @@ static bool CenteredBoxesOverlap(cd3Vec hA, cd3Vec hB, cd3Mat33 rotation, cd3Vec
 			cdReal projection = t[i2] * r[i1][j] - t[i1] * r[i2][j];
 			if (cdAbs(projection) > ra + rb + tolerance)
 			{
-				return false;
+				return BOXES_APART;
+			}
+			if (cdAbs(projection) > ra + rb)
+			{
+				result = BOXES_UNDECIDED;
 			}
 		}
 	}
-	return true;
+	return result;
 }
 
 /* ---- point containment --------------------------------------------------------------------- */
@@ -529,7 +549,13 @@ bool cd3OverlapAabbBox(cd3Aabb a, cd3Box b)
 	/* Pad A by the round-off of its relative center. */
 	cdReal pad = Tolerance(magnitude);
 	hA = cd3Add(hA, cd3MakeVec(pad, pad, pad));
-	return CenteredBoxesOverlap(hA, b.halfExtents, rotation, cd3Neg(center));
+	BoxesOverlapResult result = CenteredBoxesOverlap(hA, b.halfExtents, rotation, cd3Neg(center));
+	if (result == BOXES_UNDECIDED)
+	{
+		cd3Shape aabbShape = cd3MakeAabbShape(a), boxShape = cd3MakeBoxShape(b);
+		return cd3OverlapGjk(&aabbShape, &boxShape);
+	}
+	return result == BOXES_OVERLAP;
 }
 
 bool cd3OverlapAabbTriangle(cd3Aabb a, cd3Triangle t)
@@ -572,7 +598,13 @@ bool cd3OverlapBoxBox(cd3Box a, cd3Box b)
 	cd3Mat33 mb = cd3MakeMatFromQuat(cd3NormalizeQuat(b.rotation));
 	cd3Mat33 rotation = cd3MulMM(cd3Transpose(ma), mb);
 	cd3Vec translation = cd3MulMTV(ma, cd3Sub(b.center, a.center));
-	return CenteredBoxesOverlap(a.halfExtents, b.halfExtents, rotation, translation);
+	BoxesOverlapResult result = CenteredBoxesOverlap(a.halfExtents, b.halfExtents, rotation, translation);
+	if (result == BOXES_UNDECIDED)
+	{
+		cd3Shape shapeA = cd3MakeBoxShape(a), shapeB = cd3MakeBoxShape(b);
+		return cd3OverlapGjk(&shapeA, &shapeB);
+	}
+	return result == BOXES_OVERLAP;
 }
 
 bool cd3OverlapBoxTriangle(cd3Box b, cd3Triangle t)
