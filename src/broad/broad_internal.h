@@ -326,4 +326,23 @@ static inline bool cd3BroadRayBox(const cd3BroadRayData* r, cd3Aabb box, cdReal 
 	return true;
 }
 
+/* ---- the moved proxies' pair search, split into ranges that may run on several threads --------
+ * (for the 2D/3D worlds; the same pairs as UpdatePairs, in no particular order).
+ *   n = BeginMovedPairs(bp)          flushes deferred work; returns the number of moved proxies
+ *   QueryMovedPairs(bp, start, end)  reports the pairs found by moved proxies [start, end): any
+ *                                    split of [0, n) over any threads reports each pair with a
+ *                                    moved side exactly once, proxyA < proxyB; fcn runs on the
+ *                                    calling thread, in an order that depends on the range only
+ *   EndMovedPairs(bp, forget)        ends the search; forget: forgets the moves (as UpdatePairs
+ *                                    does at its end), else keeps them for the next search
+ * Between Begin and End the broadphase must not change (no create, destroy or move). */
+int cd2BroadPhase_BeginMovedPairs(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_QueryMovedPairs(const cd2BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,
+								   void* context);
+void cd2BroadPhase_EndMovedPairs(cd2BroadPhase* broadPhase, bool forgetMoves);
+int cd3BroadPhase_BeginMovedPairs(cd3BroadPhase* broadPhase);
+void cd3BroadPhase_QueryMovedPairs(const cd3BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,
+								   void* context);
+void cd3BroadPhase_EndMovedPairs(cd3BroadPhase* broadPhase, bool forgetMoves);
+
 #endif
