@@ -309,7 +309,7 @@ typedef struct cd2PairSearch
 {
 	const cd2World* world;
 	cd2PairBuffer* buffers; /* one per worker */
-	uint8_t* failed;		/* per moved proxy: 1 when its range overflowed its worker's buffer */
+	uint8_t* failed;		/* per item: 1 when its range overflowed its worker's buffer */
 } cd2PairSearch;
 
 typedef struct cd2PairSink
@@ -342,7 +342,7 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	buffer->keys[buffer->count++] = key;
 }
 
-/* The pair queries of moved proxies [start, end) into this worker's buffer. A range whose pairs do
+/* The pairs of items [start, end) of the broadphase's search into this worker's buffer. A range whose pairs do
  * not fit leaves nothing there and is marked for the serial retry. */
 static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
@@ -359,19 +359,21 @@ static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex,
 
 void cd2UpdateBroadPhasePairs(cd2World* world)
 {
-	int moveCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
-	if (moveCount == 0)
+	int itemCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
+	if (itemCount == 0)
 	{
+		cd2BroadPhase_EndMovedPairs(world->broadPhase, true);
 		return;
 	}
 	/* Step scratch (the arena keeps its block between steps: no allocation in a steady state).
-	 * Room for two new pairs per moved proxy in each worker's buffer; more goes to the retry. */
+	 * Room for two new pairs per item (a moved proxy's query or a tree node of the sweep) in each
+	 * worker's buffer; more goes to the retry. */
 	int workerCount = cdMaxInt(world->workerCount, 1);
-	int capacity = 2 * moveCount + 256;
+	int capacity = 2 * itemCount + 256;
 	cd2PairSearch search;
 	search.world = world;
 	search.buffers = (cd2PairBuffer*)cdArena_Alloc(&world->arena, (size_t)workerCount * sizeof(cd2PairBuffer));
-	search.failed = (uint8_t*)cdArena_Alloc(&world->arena, (size_t)moveCount);
+	search.failed = (uint8_t*)cdArena_Alloc(&world->arena, (size_t)itemCount);
 	bool ok = search.buffers != NULL && search.failed != NULL;
 	for (int w = 0; ok && w < workerCount; ++w)
 	{
@@ -387,9 +389,9 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		cd2BroadPhase_EndMovedPairs(world->broadPhase, false);
 		return;
 	}
-	cd2RunTask(world, cd2FindPairsTask, moveCount, 64, &search);
+	cd2RunTask(world, cd2FindPairsTask, itemCount, 64, &search);
 	/* The ranges that overflowed, again on this thread, with room doubled until they fit. */
-	bool anyFailed = memchr(search.failed, 1, (size_t)moveCount) != NULL;
+	bool anyFailed = memchr(search.failed, 1, (size_t)itemCount) != NULL;
 	cd2PairBuffer retry = {NULL, 0, 0, {0}};
 	for (int retryCapacity = 2 * capacity; anyFailed; retryCapacity *= 2)
 	{
@@ -403,7 +405,7 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 			return;
 		}
 		cd2PairSink sink = {world, &retry, false};
-		for (int i = 0; i < moveCount && !sink.overflow; ++i)
+		for (int i = 0; i < itemCount && !sink.overflow; ++i)
 		{
 			if (search.failed[i] != 0)
 			{
