@@ -12,6 +12,9 @@ int cd2BroadPhase_BeginMovedPairs(cd2BroadPhase* broadPhase);
 void cd2BroadPhase_QueryMovedPairs(const cd2BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,
 								   void* context);
 void cd2BroadPhase_EndMovedPairs(cd2BroadPhase* broadPhase, bool forgetMoves);
+int cd2BroadPhase_BeginRebuild(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_RebuildJobs(cd2BroadPhase* broadPhase, int start, int end);
+void cd2BroadPhase_EndRebuild(cd2BroadPhase* broadPhase);
 
 #include <limits.h>
 
@@ -1072,7 +1075,7 @@ static void TestEnlargeAndSplitPairs(void)
 		TEST_CHECK(ids[i] == i && other == i);
 	}
 	KeyList a = {NULL, 0, 0, true}, b = {NULL, 0, 0, true};
-	int sweepFrames = 0, queryFrames = 0;
+	int sweepFrames = 0, queryFrames = 0, rebuildJobs = 0;
 	for (int frame = 0; frame < 40; ++frame)
 	{
 		/* Every third frame moves most proxies, the others a few. */
@@ -1115,6 +1118,20 @@ static void TestEnlargeAndSplitPairs(void)
 		a.count = b.count = 0;
 		int expected = cd2BroadPhase_UpdatePairs(reference, CollectKey, &a);
 		TEST_CHECK(expected == a.count);
+		if (frame % 2 == 0)
+		{
+			/* The deferred rebuild in jobs, taken last to first (as threads might), half of the frames;
+			 * the others leave it to the flush. */
+			int jobs = cd2BroadPhase_BeginRebuild(enlarged);
+			TEST_CHECK(jobs >= 0 && jobs <= 64);
+			rebuildJobs = jobs > rebuildJobs ? jobs : rebuildJobs;
+			for (int j = jobs - 1; j >= 0; --j)
+			{
+				cd2BroadPhase_RebuildJobs(enlarged, j, j + 1);
+			}
+			cd2BroadPhase_EndRebuild(enlarged);
+			TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the rebuild", frame);
+		}
 		int items = cd2BroadPhase_BeginMovedPairs(enlarged);
 		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the flush", frame);
 		/* Many moves: the sweep's items (tree nodes); few: one query per moved proxy. */
@@ -1176,6 +1193,7 @@ static void TestEnlargeAndSplitPairs(void)
 		cd2BroadPhase_EndMovedPairs(enlarged, true);
 	}
 	TEST_CHECK(sweepFrames > 0 && queryFrames > 0);
+	TEST_CHECKF(rebuildJobs > 1, "the rebuild never split into jobs (%d)", rebuildJobs);
 	/* Keeping the moves: the same pairs again on the next search. */
 	boxes[0].min = cd2Add(boxes[0].min, cd2MakeVec(5.0f, 0.0f));
 	boxes[0].max = cd2Add(boxes[0].max, cd2MakeVec(5.0f, 0.0f));

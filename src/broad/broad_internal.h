@@ -152,6 +152,11 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		 * split of which over concurrent calls of findPairsRange reports each pair exactly once. */         \
 		int (*pairItemCount)(const void* self);                                                              \
 		void (*findPairsRange)(const void* self, int start, int end, cdBroadPairSinkFcn* fcn, void* context); \
+		/* Optional, all three or none: the flush's deferred restructuring in jobs [0, prepareRebuild())     \
+		 * that may run at the same time on distinct jobs (rebuildJobs), then finishRebuild. */              \
+		int (*prepareRebuild)(void* self);                                                                   \
+		void (*rebuildJobs)(void* self, int start, int end);                                                 \
+		void (*finishRebuild)(void* self);                                                                   \
 	} P##BroadBackend;
 
 CD_BROAD_DECLARE_BACKEND(cd2, cd2Aabb, cd2Ray, cd2BroadPhaseDef)
@@ -352,6 +357,17 @@ static inline bool cd3BroadRayBox(const cd3BroadRayData* r, cd3Aabb box, cdReal 
  * modes; only the cost moves from each move to the pair update. */
 void cd2BroadPhase_SetEnlargeMoves(cd2BroadPhase* broadPhase, bool flag);
 void cd3BroadPhase_SetEnlargeMoves(cd3BroadPhase* broadPhase, bool flag);
+
+/* The deferred restructuring of enlarge mode in jobs that may run on several threads, before
+ * BeginMovedPairs (whose flush otherwise does it on the calling thread):
+ *   n = BeginRebuild(bp); RebuildJobs(bp, start, end) over any split of [0, n), at the same time on
+ *   distinct ranges; EndRebuild(bp). The result is the same for every split. */
+int cd2BroadPhase_BeginRebuild(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_RebuildJobs(cd2BroadPhase* broadPhase, int start, int end);
+void cd2BroadPhase_EndRebuild(cd2BroadPhase* broadPhase);
+int cd3BroadPhase_BeginRebuild(cd3BroadPhase* broadPhase);
+void cd3BroadPhase_RebuildJobs(cd3BroadPhase* broadPhase, int start, int end);
+void cd3BroadPhase_EndRebuild(cd3BroadPhase* broadPhase);
 
 int cd2BroadPhase_BeginMovedPairs(cd2BroadPhase* broadPhase);
 void cd2BroadPhase_QueryMovedPairs(const cd2BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,

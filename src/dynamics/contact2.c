@@ -357,8 +357,22 @@ static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex,
 	}
 }
 
+/* Jobs of the broadphase's deferred rebuild (the part of its tree that moves grew). */
+static void cd2RebuildTreeTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	cd2BroadPhase_RebuildJobs((cd2BroadPhase*)taskContext, startIndex, endIndex);
+}
+
 void cd2UpdateBroadPhasePairs(cd2World* world)
 {
+	/* First the tree where last step's moves grew it, rebuilt in subtrees on the workers. */
+	int jobCount = cd2BroadPhase_BeginRebuild(world->broadPhase);
+	if (jobCount > 0)
+	{
+		cd2RunTask(world, cd2RebuildTreeTask, jobCount, 1, world->broadPhase);
+	}
+	cd2BroadPhase_EndRebuild(world->broadPhase);
 	int itemCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
 	if (itemCount == 0)
 	{
