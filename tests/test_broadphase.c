@@ -1057,7 +1057,8 @@ static void TestEnlargeAndSplitPairs(void)
 	def.displacementMultiplier = CD_R(2.0);
 	cd2BroadPhase* reference = NULL;
 	cd2BroadPhase* enlarged = NULL;
-	TEST_CHECK(cd2CreateBroadPhase(&def, &reference) == CD_OK && cd2CreateBroadPhase(&def, &enlarged) == CD_OK);
+	TEST_CHECK(cd2CreateBroadPhase(&def, &reference) == CD_OK &&
+			   cd2CreateBroadPhase(&def, &enlarged) == CD_OK);
 	if (reference == NULL || enlarged == NULL)
 	{
 		cd2DestroyBroadPhase(reference);
@@ -1111,10 +1112,12 @@ static void TestEnlargeAndSplitPairs(void)
 		}
 		for (int i = 0; i < COUNT; i += 37)
 		{
-			cd2Aabb fa = cd2BroadPhase_GetFatAabb(reference, ids[i]), fb = cd2BroadPhase_GetFatAabb(enlarged, ids[i]);
+			cd2Aabb fa = cd2BroadPhase_GetFatAabb(reference, ids[i]),
+					fb = cd2BroadPhase_GetFatAabb(enlarged, ids[i]);
 			TEST_CHECK(cd2VecEqual(fa.min, fb.min) && cd2VecEqual(fa.max, fb.max));
 		}
-		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the moves", frame);
+		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the moves",
+					frame);
 		a.count = b.count = 0;
 		int expected = cd2BroadPhase_UpdatePairs(reference, CollectKey, &a);
 		TEST_CHECK(expected == a.count);
@@ -1130,10 +1133,12 @@ static void TestEnlargeAndSplitPairs(void)
 				cd2BroadPhase_RebuildJobs(enlarged, j, j + 1);
 			}
 			cd2BroadPhase_EndRebuild(enlarged);
-			TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the rebuild", frame);
+			TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the rebuild",
+						frame);
 		}
 		int items = cd2BroadPhase_BeginMovedPairs(enlarged);
-		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the flush", frame);
+		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the flush",
+					frame);
 		/* Many moves: the sweep's items (tree nodes); few: one query per moved proxy. */
 		if (4 * movedCount >= COUNT)
 		{

@@ -144,14 +144,15 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		 * order. NULL: the frontend calls query once per proxy. */                                          \
 		void (*queryMany)(const void* self, const int* proxyIds, int count, cdBroadPairSinkFcn* fcn,         \
 						  void* context);                                                                    \
-		/* Optional: a move in enlarge mode (SetEnlargeMoves): table->fatBoxes[proxyId] holds the new       \
-		 * box; the structure may only grow what holds it and restructure at the next flush. NULL: moves    \
+		/* Optional: a move in enlarge mode (SetEnlargeMoves): table->fatBoxes[proxyId] holds the new        \
+		 * box; the structure may only grow what holds it and restructure at the next flush. NULL: moves     \
 		 * go to moveProxy in any mode. false = out of memory, as for moveProxy. */                          \
 		bool (*enlargeProxy)(void* self, int proxyId);                                                       \
 		/* Optional, both or neither: findPairs split into items [0, pairItemCount) (tree: nodes), any       \
 		 * split of which over concurrent calls of findPairsRange reports each pair exactly once. */         \
 		int (*pairItemCount)(const void* self);                                                              \
-		void (*findPairsRange)(const void* self, int start, int end, cdBroadPairSinkFcn* fcn, void* context); \
+		void (*findPairsRange)(const void* self, int start, int end, cdBroadPairSinkFcn* fcn,                \
+							   void* context);                                                               \
 		/* Optional, all three or none: the flush's deferred restructuring in jobs [0, prepareRebuild())     \
 		 * that may run at the same time on distinct jobs (rebuildJobs), then finishRebuild. */              \
 		int (*prepareRebuild)(void* self);                                                                   \

@@ -292,8 +292,9 @@ static void cd2CreateContact(cd2World* world, int indexA, int indexB)
 }
 
 /* ---- pairs -------------------------------------------------------------------------------------
- * The moved proxies' pair queries run on the workers (cd2FindPairsTask over ranges of the move
- * buffer); each worker keeps the keys of the pairs that would make a new contact in its own buffer.
+ * The broadphase's pair search runs on the workers (cd2FindPairsTask over ranges of its items: the
+ * moved proxies' queries, or the tree nodes of a sweep when many moved), filtered there; each worker
+ * keeps the keys of the pairs that would make a new contact in its own buffer.
  * This thread then sorts them all by shape key and creates the contacts in that order: the order
  * of the contacts depends only on the set of pairs, never on the split or the thread timing. */
 
@@ -342,8 +343,8 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	buffer->keys[buffer->count++] = key;
 }
 
-/* The pairs of items [start, end) of the broadphase's search into this worker's buffer. A range whose pairs do
- * not fit leaves nothing there and is marked for the serial retry. */
+/* The pairs of items [start, end) of the broadphase's search into this worker's buffer. A range whose pairs
+ * do not fit leaves nothing there and is marked for the serial retry. */
 static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	cd2PairSearch* search = (cd2PairSearch*)taskContext;
@@ -386,7 +387,8 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	int capacity = 2 * itemCount + 256;
 	cd2PairSearch search;
 	search.world = world;
-	search.buffers = (cd2PairBuffer*)cdArena_Alloc(&world->arena, (size_t)workerCount * sizeof(cd2PairBuffer));
+	search.buffers =
+		(cd2PairBuffer*)cdArena_Alloc(&world->arena, (size_t)workerCount * sizeof(cd2PairBuffer));
 	search.failed = (uint8_t*)cdArena_Alloc(&world->arena, (size_t)itemCount);
 	bool ok = search.buffers != NULL && search.failed != NULL;
 	for (int w = 0; ok && w < workerCount; ++w)
@@ -409,7 +411,8 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	cd2PairBuffer retry = {NULL, 0, 0, {0}};
 	for (int retryCapacity = 2 * capacity; anyFailed; retryCapacity *= 2)
 	{
-		retry.keys = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)retryCapacity * sizeof(uint64_t));
+		retry.keys =
+			(uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)retryCapacity * sizeof(uint64_t));
 		retry.count = 0;
 		retry.capacity = retryCapacity;
 		if (retry.keys == NULL || retryCapacity > (INT_MAX >> 2))
