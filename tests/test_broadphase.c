@@ -5,6 +5,17 @@
 
 #include "collide/broad.h"
 
+/* Internal functions of src/broad/broad_internal.h (enlarge mode and the split pair search that the
+ * 2D world uses; that header needs the library's own include path). */
+void cd2BroadPhase_SetEnlargeMoves(cd2BroadPhase* broadPhase, bool flag);
+int cd2BroadPhase_BeginMovedPairs(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_QueryMovedPairs(const cd2BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,
+								   void* context);
+void cd2BroadPhase_EndMovedPairs(cd2BroadPhase* broadPhase, bool forgetMoves);
+int cd2BroadPhase_BeginRebuild(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_RebuildJobs(cd2BroadPhase* broadPhase, int start, int end);
+void cd2BroadPhase_EndRebuild(cd2BroadPhase* broadPhase);
+
 #include <limits.h>
 
 static int s_typesTested[2][CD_BROADPHASE_TYPE_COUNT];
@@ -980,6 +991,235 @@ static void TestOutOfMemory(void)
 	free(o);
 }
 
+/* ---- enlarge mode and the split pair search (what the 2D world uses) ---------------------------- */
+
+typedef struct KeyList
+{
+	uint64_t* keys;
+	int count, capacity;
+	bool ordered; /* every pair came with proxyA < proxyB */
+} KeyList;
+
+static void CollectKey(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context)
+{
+	KeyList* list = (KeyList*)context;
+	list->ordered = list->ordered && proxyA < proxyB && userDataA == (uint64_t)proxyA + 1000u &&
+					userDataB == (uint64_t)proxyB + 1000u;
+	if (list->count == list->capacity)
+	{
+		int capacity = list->capacity > 0 ? 2 * list->capacity : 1024;
+		uint64_t* keys = (uint64_t*)realloc(list->keys, (size_t)capacity * sizeof(uint64_t));
+		if (keys == NULL)
+		{
+			return;
+		}
+		list->keys = keys;
+		list->capacity = capacity;
+	}
+	list->keys[list->count++] = ((uint64_t)(uint32_t)proxyA << 32) | (uint32_t)proxyB;
+}
+
+static int CompareInts(const void* a, const void* b)
+{
+	int x = *(const int*)a, y = *(const int*)b;
+	return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+static int CompareKeys(const void* a, const void* b)
+{
+	uint64_t x = *(const uint64_t*)a, y = *(const uint64_t*)b;
+	return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+static cd2Aabb RandomBox2(TestRng* rng, double extent, double maxSize)
+{
+	cd2Aabb b;
+	b.min = cd2MakeVec(R(rng, -extent, extent), R(rng, -extent, extent));
+	b.max = cd2MakeVec(b.min.x + R(rng, 0.0, maxSize), b.min.y + R(rng, 0.0, maxSize));
+	return b;
+}
+
+/* Two 2D trees get the same operations; one moves proxies the usual way and reports pairs with
+ * UpdatePairs, the other is in enlarge mode and finds its pairs with BeginMovedPairs, ranges of
+ * QueryMovedPairs in a random split and order (as worker threads would take them) and
+ * EndMovedPairs. Frames alternate between many moves (the whole-tree sweep) and few (one query per
+ * moved proxy), with teleports, destructions and creations: the pairs must be the same, each
+ * once, and both trees valid throughout. */
+static void TestEnlargeAndSplitPairs(void)
+{
+	enum
+	{
+		COUNT = 700
+	};
+	TestRng rng = TestRngMake(4242);
+	cd2BroadPhaseDef def = cd2DefaultBroadPhaseDef();
+	def.margin = CD_R(0.05);
+	def.displacementMultiplier = CD_R(2.0);
+	cd2BroadPhase* reference = NULL;
+	cd2BroadPhase* enlarged = NULL;
+	TEST_CHECK(cd2CreateBroadPhase(&def, &reference) == CD_OK &&
+			   cd2CreateBroadPhase(&def, &enlarged) == CD_OK);
+	if (reference == NULL || enlarged == NULL)
+	{
+		cd2DestroyBroadPhase(reference);
+		cd2DestroyBroadPhase(enlarged);
+		return;
+	}
+	cd2BroadPhase_SetEnlargeMoves(enlarged, true);
+	static cd2Aabb boxes[COUNT];
+	static int ids[COUNT];
+	for (int i = 0; i < COUNT; ++i)
+	{
+		boxes[i] = RandomBox2(&rng, 20.0, 1.5);
+		ids[i] = cd2BroadPhase_CreateProxy(reference, boxes[i], (uint64_t)i + 1000u);
+		int other = cd2BroadPhase_CreateProxy(enlarged, boxes[i], (uint64_t)i + 1000u);
+		TEST_CHECK(ids[i] == i && other == i);
+	}
+	KeyList a = {NULL, 0, 0, true}, b = {NULL, 0, 0, true};
+	int sweepFrames = 0, queryFrames = 0, rebuildJobs = 0;
+	for (int frame = 0; frame < 40; ++frame)
+	{
+		/* Every third frame moves most proxies, the others a few. */
+		int percent = frame % 3 == 0 ? 70 : 4;
+		int movedCount = 0;
+		for (int i = 0; i < COUNT; ++i)
+		{
+			if (TestRngInt(&rng, 100) >= percent)
+			{
+				continue;
+			}
+			int action = TestRngInt(&rng, 50);
+			if (action == 0)
+			{
+				/* Destroy and create again (ids are reused lowest first in both). */
+				cd2BroadPhase_DestroyProxy(reference, ids[i]);
+				cd2BroadPhase_DestroyProxy(enlarged, ids[i]);
+				boxes[i] = RandomBox2(&rng, 20.0, 1.5);
+				int x = cd2BroadPhase_CreateProxy(reference, boxes[i], (uint64_t)ids[i] + 1000u);
+				int y = cd2BroadPhase_CreateProxy(enlarged, boxes[i], (uint64_t)ids[i] + 1000u);
+				TEST_CHECK(x == ids[i] && y == ids[i]);
+				++movedCount;
+				continue;
+			}
+			cd2Vec d = action == 1 ? cd2MakeVec(R(&rng, -15.0, 15.0), R(&rng, -15.0, 15.0))
+								   : cd2MakeVec(R(&rng, -0.3, 0.3), R(&rng, -0.3, 0.3));
+			boxes[i].min = cd2Add(boxes[i].min, d);
+			boxes[i].max = cd2Add(boxes[i].max, d);
+			bool x = cd2BroadPhase_MoveProxy(reference, ids[i], boxes[i], d);
+			bool y = cd2BroadPhase_MoveProxy(enlarged, ids[i], boxes[i], d);
+			TEST_CHECK(x == y);
+			movedCount += x ? 1 : 0;
+		}
+		for (int i = 0; i < COUNT; i += 37)
+		{
+			cd2Aabb fa = cd2BroadPhase_GetFatAabb(reference, ids[i]),
+					fb = cd2BroadPhase_GetFatAabb(enlarged, ids[i]);
+			TEST_CHECK(cd2VecEqual(fa.min, fb.min) && cd2VecEqual(fa.max, fb.max));
+		}
+		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the moves",
+					frame);
+		a.count = b.count = 0;
+		int expected = cd2BroadPhase_UpdatePairs(reference, CollectKey, &a);
+		TEST_CHECK(expected == a.count);
+		if (frame % 2 == 0)
+		{
+			/* The deferred rebuild in jobs, taken last to first (as threads might), half of the frames;
+			 * the others leave it to the flush. */
+			int jobs = cd2BroadPhase_BeginRebuild(enlarged);
+			TEST_CHECK(jobs >= 0 && jobs <= 64);
+			rebuildJobs = jobs > rebuildJobs ? jobs : rebuildJobs;
+			for (int j = jobs - 1; j >= 0; --j)
+			{
+				cd2BroadPhase_RebuildJobs(enlarged, j, j + 1);
+			}
+			cd2BroadPhase_EndRebuild(enlarged);
+			TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the rebuild",
+						frame);
+		}
+		int items = cd2BroadPhase_BeginMovedPairs(enlarged);
+		TEST_CHECKF(cd2BroadPhase_Validate(enlarged), "frame %d: enlarged tree invalid after the flush",
+					frame);
+		/* Many moves: the sweep's items (tree nodes); few: one query per moved proxy. */
+		if (4 * movedCount >= COUNT)
+		{
+			++sweepFrames;
+			TEST_CHECK(items == 0 || items != movedCount);
+		}
+		else
+		{
+			++queryFrames;
+			TEST_CHECK(items == movedCount);
+		}
+		/* Random ranges, taken in a random order. */
+		enum
+		{
+			MAX_RANGES = 64
+		};
+		int cuts[MAX_RANGES + 1];
+		int rangeCount = 1 + TestRngInt(&rng, MAX_RANGES);
+		cuts[0] = 0;
+		for (int k = 1; k < rangeCount; ++k)
+		{
+			cuts[k] = TestRngInt(&rng, items + 1);
+		}
+		cuts[rangeCount] = items;
+		qsort(cuts + 1, (size_t)(rangeCount - 1), sizeof(int), CompareInts);
+		int order[MAX_RANGES];
+		for (int k = 0; k < rangeCount; ++k)
+		{
+			order[k] = k;
+		}
+		for (int k = rangeCount - 1; k > 0; --k)
+		{
+			int j = TestRngInt(&rng, k + 1), t = order[k];
+			order[k] = order[j];
+			order[j] = t;
+		}
+		for (int k = 0; k < rangeCount; ++k)
+		{
+			cd2BroadPhase_QueryMovedPairs(enlarged, cuts[order[k]], cuts[order[k] + 1], CollectKey, &b);
+		}
+		cd2BroadPhase_EndMovedPairs(enlarged, true);
+		TEST_CHECK(a.ordered && b.ordered);
+		if (b.count > 1)
+		{
+			qsort(b.keys, (size_t)b.count, sizeof(uint64_t), CompareKeys);
+		}
+		bool same = a.count == b.count;
+		for (int k = 0; same && k < a.count; ++k)
+		{
+			same = a.keys[k] == b.keys[k];
+		}
+		TEST_CHECKF(same, "frame %d: %d pairs from UpdatePairs, %d from the split search (%d items)", frame,
+					a.count, b.count, items);
+		TEST_CHECK(cd2BroadPhase_Validate(enlarged));
+		/* Nothing is left moved: a second search finds nothing. */
+		TEST_CHECK(cd2BroadPhase_BeginMovedPairs(enlarged) == 0);
+		cd2BroadPhase_EndMovedPairs(enlarged, true);
+	}
+	TEST_CHECK(sweepFrames > 0 && queryFrames > 0);
+	TEST_CHECKF(rebuildJobs > 1, "the rebuild never split into jobs (%d)", rebuildJobs);
+	/* Keeping the moves: the same pairs again on the next search. */
+	boxes[0].min = cd2Add(boxes[0].min, cd2MakeVec(5.0f, 0.0f));
+	boxes[0].max = cd2Add(boxes[0].max, cd2MakeVec(5.0f, 0.0f));
+	TEST_CHECK(cd2BroadPhase_MoveProxy(enlarged, 0, boxes[0], CD2_VEC_ZERO));
+	b.count = 0;
+	int items = cd2BroadPhase_BeginMovedPairs(enlarged);
+	TEST_CHECK(items == 1);
+	cd2BroadPhase_QueryMovedPairs(enlarged, 0, items, CollectKey, &b);
+	cd2BroadPhase_EndMovedPairs(enlarged, false);
+	int first = b.count;
+	b.count = 0;
+	TEST_CHECK(cd2BroadPhase_BeginMovedPairs(enlarged) == 1);
+	cd2BroadPhase_QueryMovedPairs(enlarged, 0, 1, CollectKey, &b);
+	cd2BroadPhase_EndMovedPairs(enlarged, true);
+	TEST_CHECK(b.count == first);
+	free(a.keys);
+	free(b.keys);
+	cd2DestroyBroadPhase(reference);
+	cd2DestroyBroadPhase(enlarged);
+}
+
 int main(void)
 {
 	TEST_RUN(TestArguments);
@@ -990,5 +1230,6 @@ int main(void)
 	TEST_RUN(TestTreeAfterManyRemovals);
 	TEST_RUN(TestBatchMoves);
 	TEST_RUN(TestOutOfMemory);
+	TEST_RUN(TestEnlargeAndSplitPairs);
 	return TEST_SUMMARY();
 }

@@ -144,6 +144,20 @@ CD_BROAD_DECLARE_PROXY_TABLE(cd3, cd3Aabb)
 		 * order. NULL: the frontend calls query once per proxy. */                                          \
 		void (*queryMany)(const void* self, const int* proxyIds, int count, cdBroadPairSinkFcn* fcn,         \
 						  void* context);                                                                    \
+		/* Optional: a move in enlarge mode (SetEnlargeMoves): table->fatBoxes[proxyId] holds the new        \
+		 * box; the structure may only grow what holds it and restructure at the next flush. NULL: moves     \
+		 * go to moveProxy in any mode. false = out of memory, as for moveProxy. */                          \
+		bool (*enlargeProxy)(void* self, int proxyId);                                                       \
+		/* Optional, both or neither: findPairs split into items [0, pairItemCount) (tree: nodes), any       \
+		 * split of which over concurrent calls of findPairsRange reports each pair exactly once. */         \
+		int (*pairItemCount)(const void* self);                                                              \
+		void (*findPairsRange)(const void* self, int start, int end, cdBroadPairSinkFcn* fcn,                \
+							   void* context);                                                               \
+		/* Optional, all three or none: the flush's deferred restructuring in jobs [0, prepareRebuild())     \
+		 * that may run at the same time on distinct jobs (rebuildJobs), then finishRebuild. */              \
+		int (*prepareRebuild)(void* self);                                                                   \
+		void (*rebuildJobs)(void* self, int start, int end);                                                 \
+		void (*finishRebuild)(void* self);                                                                   \
 	} P##BroadBackend;
 
 CD_BROAD_DECLARE_BACKEND(cd2, cd2Aabb, cd2Ray, cd2BroadPhaseDef)
@@ -325,5 +339,44 @@ static inline bool cd3BroadRayBox(const cd3BroadRayData* r, cd3Aabb box, cdReal 
 	*entry = cdMax(enter, CD_R(0.0));
 	return true;
 }
+
+/* ---- the moved proxies' pair search, split into ranges that may run on several threads --------
+ * (for the 2D/3D worlds; the same pairs as UpdatePairs, in no particular order).
+ *   n = BeginMovedPairs(bp)          flushes deferred work; returns the number of work items (the
+ *                                    moved proxies' queries, or parts of a sweep over the whole
+ *                                    structure when a good share of the proxies moved), 0: none
+ *   QueryMovedPairs(bp, start, end)  reports the pairs found by items [start, end): any split of
+ *                                    [0, n) over any threads reports each pair with a moved side
+ *                                    exactly once, proxyA < proxyB; fcn runs on the calling
+ *                                    thread, in an order that depends on the range only
+ *   EndMovedPairs(bp, forget)        ends the search; forget: forgets the moves (as UpdatePairs
+ *                                    does at its end), else keeps them for the next search
+ * Between Begin and End the broadphase must not change (no create, destroy or move). */
+/* Enlarge mode (the worlds'): a move of a proxy out of its fat box only grows the boxes that hold
+ * it in the structure, which restructures the moved part in one go before the next pair search
+ * (a tree: a binned SAH rebuild of the grown nodes); off by default. Answers are the same in both
+ * modes; only the cost moves from each move to the pair update. */
+void cd2BroadPhase_SetEnlargeMoves(cd2BroadPhase* broadPhase, bool flag);
+void cd3BroadPhase_SetEnlargeMoves(cd3BroadPhase* broadPhase, bool flag);
+
+/* The deferred restructuring of enlarge mode in jobs that may run on several threads, before
+ * BeginMovedPairs (whose flush otherwise does it on the calling thread):
+ *   n = BeginRebuild(bp); RebuildJobs(bp, start, end) over any split of [0, n), at the same time on
+ *   distinct ranges; EndRebuild(bp). The result is the same for every split. */
+int cd2BroadPhase_BeginRebuild(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_RebuildJobs(cd2BroadPhase* broadPhase, int start, int end);
+void cd2BroadPhase_EndRebuild(cd2BroadPhase* broadPhase);
+int cd3BroadPhase_BeginRebuild(cd3BroadPhase* broadPhase);
+void cd3BroadPhase_RebuildJobs(cd3BroadPhase* broadPhase, int start, int end);
+void cd3BroadPhase_EndRebuild(cd3BroadPhase* broadPhase);
+
+int cd2BroadPhase_BeginMovedPairs(cd2BroadPhase* broadPhase);
+void cd2BroadPhase_QueryMovedPairs(const cd2BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,
+								   void* context);
+void cd2BroadPhase_EndMovedPairs(cd2BroadPhase* broadPhase, bool forgetMoves);
+int cd3BroadPhase_BeginMovedPairs(cd3BroadPhase* broadPhase);
+void cd3BroadPhase_QueryMovedPairs(const cd3BroadPhase* broadPhase, int start, int end, cdBroadPairFcn* fcn,
+								   void* context);
+void cd3BroadPhase_EndMovedPairs(cd3BroadPhase* broadPhase, bool forgetMoves);
 
 #endif

@@ -3,6 +3,9 @@
 #include "world2_internal.h"
 
 #include "../base/radix_sort.h"
+#include "../broad/broad_internal.h"
+
+#include <limits.h>
 
 /* ---- the narrowphase in local frames ------------------------------------------------------------
  * The one place that computes a pair's manifold: both shapes stay in their body frames (no copy of
@@ -182,31 +185,9 @@ static uint32_t cd2WarmStartKey(uint32_t id)
 	return edgeA | edgeB << 8 | slot << 16;
 }
 
-/* ---- pairs ------------------------------------------------------------------------------------- */
-typedef struct cd2PairCollector
-{
-	const cdPairSet* existing; /* the world's contacts' pairs: overlaps that have one are dropped */
-	CD_ARRAY(uint64_t) pairs;
-} cd2PairCollector;
-
-static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context)
-{
-	(void)proxyA;
-	(void)proxyB;
-	cd2PairCollector* collector = (cd2PairCollector*)context;
-	uint64_t key = cdPairKey(cd2ProxyShape(userDataA), cd2ProxyShape(userDataB));
-	/* Most overlaps of moved boxes already have their contact: drop them before the sort. */
-	if (cdPairSet_Find(collector->existing, key) >= 0)
-	{
-		return;
-	}
-	if (!cdArrayPush(collector->pairs, key))
-	{
-		/* dropped: the pair comes back when one of the boxes moves again */
-	}
-}
-
-static bool cd2ShouldCreateContact(cd2World* world, int indexA, int indexB)
+/* Whether two shapes whose boxes overlap get a contact, apart from the user's filter callback:
+ * reads the world only, so the pair search calls it on the workers. */
+static bool cd2ShouldCreateContact(const cd2World* world, int indexA, int indexB)
 {
 	const cd2WorldShape* a = world->shapes.data + indexA;
 	const cd2WorldShape* b = world->shapes.data + indexB;
@@ -231,17 +212,7 @@ static bool cd2ShouldCreateContact(cd2World* world, int indexA, int indexB)
 		return sensor->enableSensorEvents && visitor->enableSensorEvents &&
 			   (bodyA->type != CD_STATIC_BODY || bodyB->type != CD_STATIC_BODY);
 	}
-	if (!cd2ShouldBodiesCollide(world, a->body, b->body))
-	{
-		return false;
-	}
-	if (world->customFilterFcn != NULL &&
-		!world->customFilterFcn(cd2MakeShapeId(world, indexA), cd2MakeShapeId(world, indexB),
-								world->customFilterContext))
-	{
-		return false;
-	}
-	return true;
+	return cd2ShouldBodiesCollide(world, a->body, b->body);
 }
 
 static void cd2LinkContactEdge(cd2World* world, int contactIndex, int side, int bodyIndex)
@@ -320,32 +291,183 @@ static void cd2CreateContact(cd2World* world, int indexA, int indexB)
 	cd2LinkContactEdge(world, index, 1, b->body);
 }
 
+/* ---- pairs -------------------------------------------------------------------------------------
+ * The broadphase's pair search runs on the workers (cd2FindPairsTask over ranges of its items: the
+ * moved proxies' queries, or the tree nodes of a sweep when many moved), filtered there; each worker
+ * keeps the keys of the pairs that would make a new contact in its own buffer.
+ * This thread then sorts them all by shape key and creates the contacts in that order: the order
+ * of the contacts depends only on the set of pairs, never on the split or the thread timing. */
+
+/* One worker's new pairs (padded to a cache line: workers write their own counts). */
+typedef struct cd2PairBuffer
+{
+	uint64_t* keys;
+	int count, capacity;
+	char padding[64 - sizeof(uint64_t*) - 2 * sizeof(int)];
+} cd2PairBuffer;
+
+typedef struct cd2PairSearch
+{
+	const cd2World* world;
+	cd2PairBuffer* buffers; /* one per worker */
+	uint8_t* failed;		/* per item: 1 when its range overflowed its worker's buffer */
+} cd2PairSearch;
+
+typedef struct cd2PairSink
+{
+	const cd2World* world;
+	cd2PairBuffer* buffer;
+	bool overflow;
+} cd2PairSink;
+
+static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context)
+{
+	(void)proxyA;
+	(void)proxyB;
+	cd2PairSink* sink = (cd2PairSink*)context;
+	const cd2World* world = sink->world;
+	int indexA = cd2ProxyShape(userDataA), indexB = cd2ProxyShape(userDataB);
+	uint64_t key = cdPairKey(indexA, indexB);
+	/* Most overlaps of moved boxes already have their contact. */
+	if (cdPairSet_Find(&world->pairs, key) >= 0 || !world->shapes.data[indexA].inUse ||
+		!world->shapes.data[indexB].inUse || !cd2ShouldCreateContact(world, indexA, indexB))
+	{
+		return;
+	}
+	cd2PairBuffer* buffer = sink->buffer;
+	if (buffer->count == buffer->capacity)
+	{
+		sink->overflow = true;
+		return;
+	}
+	buffer->keys[buffer->count++] = key;
+}
+
+/* The pairs of items [start, end) of the broadphase's search into this worker's buffer. A range whose pairs
+ * do not fit leaves nothing there and is marked for the serial retry. */
+static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
+{
+	cd2PairSearch* search = (cd2PairSearch*)taskContext;
+	cd2PairSink sink = {search->world, search->buffers + workerIndex, false};
+	int rangeStart = sink.buffer->count;
+	cd2BroadPhase_QueryMovedPairs(search->world->broadPhase, startIndex, endIndex, cd2CollectPair, &sink);
+	if (sink.overflow)
+	{
+		sink.buffer->count = rangeStart;
+		memset(search->failed + startIndex, 1, (size_t)(endIndex - startIndex));
+	}
+}
+
+/* Jobs of the broadphase's deferred rebuild (the part of its tree that moves grew). */
+static void cd2RebuildTreeTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	cd2BroadPhase_RebuildJobs((cd2BroadPhase*)taskContext, startIndex, endIndex);
+}
+
 void cd2UpdateBroadPhasePairs(cd2World* world)
 {
-	cd2PairCollector collector;
-	memset(&collector, 0, sizeof(collector));
-	collector.existing = &world->pairs;
-	cd2BroadPhase_UpdatePairs(world->broadPhase, cd2CollectPair, &collector);
-	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
-	 * history, shape indices are part of the saved state. */
-	uint64_t* sorted = collector.pairs.data;
-	if (collector.pairs.count > 1)
+	/* First the tree where last step's moves grew it, rebuilt in subtrees on the workers. */
+	int jobCount = cd2BroadPhase_BeginRebuild(world->broadPhase);
+	if (jobCount > 0)
 	{
-		/* Step scratch (the arena keeps its block between steps: no allocation in a steady state). */
-		uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)collector.pairs.count *
-																				 sizeof(uint64_t));
-		if (scratch == NULL)
+		cd2RunTask(world, cd2RebuildTreeTask, jobCount, 1, world->broadPhase);
+	}
+	cd2BroadPhase_EndRebuild(world->broadPhase);
+	int itemCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
+	if (itemCount == 0)
+	{
+		cd2BroadPhase_EndMovedPairs(world->broadPhase, true);
+		return;
+	}
+	/* Step scratch (the arena keeps its block between steps: no allocation in a steady state).
+	 * Room for two new pairs per item (a moved proxy's query or a tree node of the sweep) in each
+	 * worker's buffer; more goes to the retry. */
+	int workerCount = cdMaxInt(world->workerCount, 1);
+	int capacity = 2 * itemCount + 256;
+	cd2PairSearch search;
+	search.world = world;
+	search.buffers =
+		(cd2PairBuffer*)cdArena_Alloc(&world->arena, (size_t)workerCount * sizeof(cd2PairBuffer));
+	search.failed = (uint8_t*)cdArena_Alloc(&world->arena, (size_t)itemCount);
+	bool ok = search.buffers != NULL && search.failed != NULL;
+	for (int w = 0; ok && w < workerCount; ++w)
+	{
+		search.buffers[w].keys =
+			(uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)capacity * sizeof(uint64_t));
+		search.buffers[w].capacity = capacity;
+		ok = search.buffers[w].keys != NULL;
+	}
+	if (!ok)
+	{
+		/* Out of memory: no new contacts this step; the moves are kept so the pairs come back. */
+		world->outOfMemory = true;
+		cd2BroadPhase_EndMovedPairs(world->broadPhase, false);
+		return;
+	}
+	cd2RunTask(world, cd2FindPairsTask, itemCount, 64, &search);
+	/* The ranges that overflowed, again on this thread, with room doubled until they fit. */
+	bool anyFailed = memchr(search.failed, 1, (size_t)itemCount) != NULL;
+	cd2PairBuffer retry = {NULL, 0, 0, {0}};
+	for (int retryCapacity = 2 * capacity; anyFailed; retryCapacity *= 2)
+	{
+		retry.keys =
+			(uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)retryCapacity * sizeof(uint64_t));
+		retry.count = 0;
+		retry.capacity = retryCapacity;
+		if (retry.keys == NULL || retryCapacity > (INT_MAX >> 2))
 		{
-			/* dropped: the pairs come back when their boxes move again */
 			world->outOfMemory = true;
-			cdArrayFree(collector.pairs);
+			cd2BroadPhase_EndMovedPairs(world->broadPhase, false);
 			return;
 		}
-		sorted = cdRadixSortKeys(collector.pairs.data, scratch, collector.pairs.count);
+		cd2PairSink sink = {world, &retry, false};
+		for (int i = 0; i < itemCount && !sink.overflow; ++i)
+		{
+			if (search.failed[i] != 0)
+			{
+				cd2BroadPhase_QueryMovedPairs(world->broadPhase, i, i + 1, cd2CollectPair, &sink);
+			}
+		}
+		anyFailed = sink.overflow;
 	}
-	/* Each key once (a pair can be reported twice); pairs with a contact were dropped by the
-	 * collector, and the ones created here are new and distinct. */
-	for (int i = 0; i < collector.pairs.count; ++i)
+	cd2BroadPhase_EndMovedPairs(world->broadPhase, true);
+
+	int total = retry.count;
+	for (int w = 0; w < workerCount; ++w)
+	{
+		total += search.buffers[w].count;
+	}
+	if (total == 0)
+	{
+		return;
+	}
+	uint64_t* keys = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)total * sizeof(uint64_t));
+	uint64_t* scratch = (uint64_t*)cdArena_AllocUncleared(&world->arena, (size_t)total * sizeof(uint64_t));
+	if (keys == NULL || scratch == NULL)
+	{
+		/* (The moves are gone: these pairs come back when one of their boxes moves again.) */
+		world->outOfMemory = true;
+		return;
+	}
+	int at = 0;
+	for (int w = 0; w < workerCount; ++w)
+	{
+		if (search.buffers[w].count > 0)
+		{
+			memcpy(keys + at, search.buffers[w].keys, (size_t)search.buffers[w].count * sizeof(uint64_t));
+			at += search.buffers[w].count;
+		}
+	}
+	if (retry.count > 0)
+	{
+		memcpy(keys + at, retry.keys, (size_t)retry.count * sizeof(uint64_t));
+	}
+	/* Contacts are created in shape order, not proxy order: proxy ids depend on the broadphase's
+	 * history, shape indices are part of the saved state. Each key once (a pair is found once, but
+	 * stay safe); pairs with a contact were dropped by the workers, the ones created here are new. */
+	const uint64_t* sorted = cdRadixSortKeys(keys, scratch, total);
+	for (int i = 0; i < total; ++i)
 	{
 		uint64_t key = sorted[i];
 		if (i > 0 && sorted[i - 1] == key)
@@ -353,14 +475,15 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 			continue;
 		}
 		int indexA = (int)(uint32_t)key, indexB = (int)(uint32_t)(key >> 32);
-		if (!world->shapes.data[indexA].inUse || !world->shapes.data[indexB].inUse ||
-			!cd2ShouldCreateContact(world, indexA, indexB))
+		/* The user's filter on this thread, in shape order. */
+		if (world->customFilterFcn != NULL &&
+			!world->customFilterFcn(cd2MakeShapeId(world, indexA), cd2MakeShapeId(world, indexB),
+									world->customFilterContext))
 		{
 			continue;
 		}
 		cd2CreateContact(world, indexA, indexB);
 	}
-	cdArrayFree(collector.pairs);
 }
 
 static void cd2EmitEndEvent(cd2World* world, const cd2Contact* contact)

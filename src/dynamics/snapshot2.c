@@ -5,6 +5,7 @@
  * shapes' fat boxes, which is all that its answers depend on (pairs are sorted by shape index
  * before they become contacts, so proxy ids never reach the simulation). */
 #include "world2_internal.h"
+#include "../broad/broad_internal.h"
 
 #define CD2_STATE_MAGIC 0x53324443u /* "CD2S" */
 #define CD2_STATE_VERSION 3u
@@ -314,6 +315,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		cd2FreeLoaded(&s);
 		return CD_ERROR_OUT_OF_MEMORY;
 	}
+	cd2BroadPhase_SetEnlargeMoves(bp, true);
 	cdPairSet pairs;
 	memset(&pairs, 0, sizeof(pairs));
 	bool memoryOk = true;

@@ -1,5 +1,6 @@
 /* collide: 2D worlds: creation, the step's pipeline, settings, events and callbacks. */
 #include "world2_internal.h"
+#include "../broad/broad_internal.h"
 #include "../base/thread_pool.h"
 
 #include <stdio.h>
@@ -125,6 +126,7 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 		cdFree(world);
 		return CD2_NULL_WORLD_ID;
 	}
+	cd2BroadPhase_SetEnlargeMoves(world->broadPhase, true);
 	if (def->lengthUnitsPerMeter > CD_R(0.0))
 	{
 		cdSetLengthUnitsPerMeter(def->lengthUnitsPerMeter);
