@@ -671,7 +671,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		context.wideCount = 0;
 		context.overflowStart = 0;
 	}
-	cd2PrepareJoints(world, &context);
+	if (!cd2PrepareJoints(world, &context))
+	{
+		world->outOfMemory = true;
+		return;
+	}
 
 	/* The stages, from preparing the contacts to finalizing the bodies (see the top of the file). */
 	cd2StageList list;
