@@ -881,6 +881,19 @@ static inline void cd2MakeArgs(const cd2StepContext* context, const cd2JointRef*
 	args->context = context;
 }
 
+/* How many joints ahead the joint loops prefetch the hot part of the data (its first two cache lines). */
+#define CD2_JOINT_PREFETCH_AHEAD 4
+
+static inline void cd2PrefetchJoint(const cd2StepContext* context, int i, int end)
+{
+	if (i + CD2_JOINT_PREFETCH_AHEAD < end)
+	{
+		const char* p = (const char*)context->jointRefs[i + CD2_JOINT_PREFETCH_AHEAD].data;
+		CD2_PREFETCH(p);
+		CD2_PREFETCH(p + 64);
+	}
+}
+
 static cdReal cd2UnwindAngle(cdReal angle)
 {
 	if (angle < -CD_PI)
@@ -897,15 +910,33 @@ static cdReal cd2UnwindAngle(cdReal angle)
 bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
+	if (context->jointCount == 0)
+	{
+		return true;
+	}
 	context->jointRefs =
 		(cd2JointRef*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount * sizeof(cd2JointRef));
-	if (context->jointRefs == NULL && context->jointCount > 0)
+	/* The slot of each joint, so that the joints are read in index order (in memory order). */
+	int* slotOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
+	if (context->jointRefs == NULL || slotOf == NULL)
 	{
 		return false;
 	}
+	for (int index = 0; index < world->joints.count; ++index)
+	{
+		slotOf[index] = CD2_NULL_INDEX;
+	}
 	for (int i = 0; i < context->jointCount; ++i)
 	{
-		int index = context->joints[i];
+		slotOf[context->joints[i]] = i;
+	}
+	for (int index = 0; index < world->joints.count; ++index)
+	{
+		int i = slotOf[index];
+		if (i < 0)
+		{
+			continue;
+		}
 		cd2Joint* joint = world->joints.data + index;
 		const cd2Body* a = world->bodies.data + joint->bodyA;
 		const cd2Body* b = world->bodies.data + joint->bodyB;
@@ -1000,6 +1031,7 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = start; i < end; ++i)
 	{
+		cd2PrefetchJoint(context, i, end);
 		const cd2JointRef* ref = context->jointRefs + i;
 		cd2JointSolverArgs args;
 		cd2MakeArgs(context, ref, &args, &scratchA, &scratchB);
@@ -1062,6 +1094,7 @@ void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end
 	cd2SolverBody scratchA, scratchB;
 	for (int i = start; i < end; ++i)
 	{
+		cd2PrefetchJoint(context, i, end);
 		const cd2JointRef* ref = context->jointRefs + i;
 		cd2JointSolverArgs args;
 		cd2MakeArgs(context, ref, &args, &scratchA, &scratchB);
