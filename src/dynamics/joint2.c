@@ -2,7 +2,7 @@
  * solvers (distance_joint2.c, revolute_joint2.c, ...) and the reaction forces. Joints are soft
  * constraints like contacts: the point and angle constraints use the world's joint softness, and
  * springs their own hertz and damping ratio. */
-#include "world2_internal.h"
+#include "joint_solver2.h"
 
 cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id)
 {

@@ -28,6 +28,16 @@ static inline cd2JointImpulse cd2MakeJointImpulse(cd2Vec rA, cd2Vec rB, cd2Vec P
 	return out;
 }
 
+/* The revolute joint's warm start (inline: the commonest joint, in chains, ragdolls and grids). */
+static inline cd2JointImpulse cd2WarmStartRevoluteJoint(const cd2JointSolverArgs* args)
+{
+	const cd2JointData* d = args->data;
+	cd2Vec rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
+	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
+	cdReal axial = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
+	return cd2MakeJointImpulse(rA, rB, d->linearImpulse, axial);
+}
+
 /* The relative velocity of the anchor points. */
 static inline cd2Vec cd2AnchorVelocity(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
 {

@@ -10,15 +10,6 @@ void cd2PrepareRevoluteJoint(cd2JointSolverArgs* args)
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
 }
 
-cd2JointImpulse cd2WarmStartRevoluteJoint(const cd2JointSolverArgs* args)
-{
-	const cd2JointData* d = args->data;
-	cd2Vec rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
-	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
-	cdReal axial = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
-	return cd2MakeJointImpulse(rA, rB, d->linearImpulse, axial);
-}
-
 /* The bodies' velocities are read once into locals and written back once at the end. */
 void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias)
 {

@@ -518,7 +518,6 @@ void cd2PrepareDistanceJoint(cd2JointSolverArgs* args);
 cd2JointImpulse cd2WarmStartDistanceJoint(const cd2JointSolverArgs* args);
 void cd2SolveDistanceJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareRevoluteJoint(cd2JointSolverArgs* args);
-cd2JointImpulse cd2WarmStartRevoluteJoint(const cd2JointSolverArgs* args);
 void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareWeldJoint(cd2JointSolverArgs* args);
 cd2JointImpulse cd2WarmStartWeldJoint(const cd2JointSolverArgs* args);
