@@ -640,9 +640,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	for (int i = 0; i < world->joints.count && context.joints != NULL; ++i)
 	{
 		const cd2Joint* joint = world->joints.data + i;
-		if (i + 8 < world->joints.count)
+		if (i + 16 < world->joints.count)
 		{
-			CD2_PREFETCH(joint + 8);
+			CD2_PREFETCH(joint + 16);
 		}
 		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
 		{
