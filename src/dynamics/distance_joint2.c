@@ -11,28 +11,28 @@ static cdReal cd2AxialMass(const cd2SolverBody* a, const cd2SolverBody* b, cd2Ve
 
 void cd2PrepareDistanceJoint(cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2Vec delta = cd2Add(d->deltaCenter, cd2Sub(d->anchorB, d->anchorA));
 	d->axisA = cd2Normalize(delta);
 	d->axialMass = cd2AxialMass(args->a, args->b, d->anchorA, d->anchorB, d->axisA);
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
 }
 
-void cd2WarmStartDistanceJoint(cd2JointSolverArgs* args)
+cd2JointImpulse cd2WarmStartDistanceJoint(const cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	cd2Vec rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
 	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
 	cd2Vec axis = cd2Normalize(cd2AnchorSeparation(args->a, args->b, rA, rB, d->deltaCenter));
 	cdReal axial = d->impulse + d->lowerImpulse - d->upperImpulse + d->motorImpulse;
-	cd2ApplyJointImpulse(args->a, args->b, rA, rB, cd2Scale(axial, axis), CD_R(0.0));
+	return cd2MakeJointImpulse(rA, rB, cd2Scale(axial, axis), CD_R(0.0));
 }
 
 /* One-sided soft row along axis: keeps C >= 0 (C = length - min, or max - length with sign -1). */
 static void cd2SolveDistanceLimit(cd2JointSolverArgs* args, cd2Vec rA, cd2Vec rB, cd2Vec axis, cdReal C,
 								  cdReal sign, cdReal* accumulated, bool useBias)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cdReal bias = CD_R(0.0), massScale = CD_R(1.0), impulseScale = CD_R(0.0);
 	if (C > CD_R(0.0))
 	{
@@ -54,7 +54,7 @@ static void cd2SolveDistanceLimit(cd2JointSolverArgs* args, cd2Vec rA, cd2Vec rB
 
 void cd2SolveDistanceJoint(cd2JointSolverArgs* args, bool useBias)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2SolverBody* a = args->a;
 	cd2SolverBody* b = args->b;
 	cd2Vec rA = cd2RotateVector(a->deltaRotation, d->anchorA);

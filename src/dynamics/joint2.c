@@ -2,7 +2,7 @@
  * solvers (distance_joint2.c, revolute_joint2.c, ...) and the reaction forces. Joints are soft
  * constraints like contacts: the point and angle constraints use the world's joint softness, and
  * springs their own hertz and damping ratio. */
-#include "world2_internal.h"
+#include "joint_solver2.h"
 
 cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id)
 {
@@ -851,39 +851,27 @@ cdReal cd2Joint_GetTranslation(cd2JointId jointId)
 }
 
 /* ---- solver dispatch ----------------------------------------------------------------------------- */
-static cd2SolverBody s_jointStaticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
-										  {CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
+static const cd2SolverBody s_jointStaticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0), {CD_R(0.0), CD_R(0.0)},
+												{CD_R(1.0), CD_R(0.0)}, CD_R(0.0), CD_R(0.0)};
 
-/* The solver's view of joint `slot` of the step (context->joints[slot]); an immovable body is a
- * zero-mass copy in the caller's scratch. */
-static void cd2MakeArgs(cd2World* world, cd2StepContext* context, int slot, cd2JointSolverArgs* args,
-						cd2SolverBody* scratchA, cd2SolverBody* scratchB)
+/* The solver's view of a joint; an immovable body is a zero-mass copy in the caller's scratch
+ * (written by the solve, never shared between threads). */
+static inline void cd2MakeArgs(const cd2StepContext* context, const cd2JointRef* ref, cd2JointSolverArgs* args,
+							   cd2SolverBody* scratchA, cd2SolverBody* scratchB)
 {
-	cd2Joint* joint = world->joints.data + context->joints[slot];
-	int ia, ib;
-	if (context->jointSolverBodies != NULL)
+	args->data = ref->data;
+	if (ref->indexA >= 0)
 	{
-		ia = context->jointSolverBodies[2 * slot];
-		ib = context->jointSolverBodies[2 * slot + 1];
-	}
-	else
-	{
-		ia = world->bodies.data[joint->bodyA].solverIndex;
-		ib = world->bodies.data[joint->bodyB].solverIndex;
-	}
-	args->joint = joint;
-	if (ia >= 0)
-	{
-		args->a = context->bodies + ia;
+		args->a = context->bodies + ref->indexA;
 	}
 	else
 	{
 		*scratchA = s_jointStaticBody;
 		args->a = scratchA;
 	}
-	if (ib >= 0)
+	if (ref->indexB >= 0)
 	{
-		args->b = context->bodies + ib;
+		args->b = context->bodies + ref->indexB;
 	}
 	else
 	{
@@ -891,6 +879,19 @@ static void cd2MakeArgs(cd2World* world, cd2StepContext* context, int slot, cd2J
 		args->b = scratchB;
 	}
 	args->context = context;
+}
+
+/* How many joints ahead the joint loops prefetch the hot part of the data (its first two cache lines). */
+#define CD2_JOINT_PREFETCH_AHEAD 4
+
+static inline void cd2PrefetchJoint(const cd2StepContext* context, int i, int end)
+{
+	if (i + CD2_JOINT_PREFETCH_AHEAD < end)
+	{
+		const char* p = (const char*)context->jointRefs[i + CD2_JOINT_PREFETCH_AHEAD].data;
+		CD2_PREFETCH(p);
+		CD2_PREFETCH(p + 64);
+	}
 }
 
 static cdReal cd2UnwindAngle(cdReal angle)
@@ -906,23 +907,44 @@ static cdReal cd2UnwindAngle(cdReal angle)
 	return angle;
 }
 
-void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
+bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 {
 	cd2SolverBody scratchA, scratchB;
-	/* Out of scratch memory: cd2MakeArgs reads the bodies instead. */
-	context->jointSolverBodies =
-		(int*)cdArena_AllocUncleared(&world->arena, (size_t)(2 * context->jointCount) * sizeof(int));
+	if (context->jointCount == 0)
+	{
+		return true;
+	}
+	context->jointRefs =
+		(cd2JointRef*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount * sizeof(cd2JointRef));
+	/* The slot of each joint, so that the joints are read in index order (in memory order). */
+	int* slotOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
+	if (context->jointRefs == NULL || slotOf == NULL)
+	{
+		return false;
+	}
+	for (int index = 0; index < world->joints.count; ++index)
+	{
+		slotOf[index] = CD2_NULL_INDEX;
+	}
 	for (int i = 0; i < context->jointCount; ++i)
 	{
-		int index = context->joints[i];
+		slotOf[context->joints[i]] = i;
+	}
+	for (int index = 0; index < world->joints.count; ++index)
+	{
+		int i = slotOf[index];
+		if (i < 0)
+		{
+			continue;
+		}
 		cd2Joint* joint = world->joints.data + index;
 		const cd2Body* a = world->bodies.data + joint->bodyA;
 		const cd2Body* b = world->bodies.data + joint->bodyB;
-		if (context->jointSolverBodies != NULL)
-		{
-			context->jointSolverBodies[2 * i] = a->solverIndex;
-			context->jointSolverBodies[2 * i + 1] = b->solverIndex;
-		}
+		cd2JointRef* ref = context->jointRefs + i;
+		ref->data = &joint->data;
+		ref->type = joint->type;
+		ref->indexA = a->solverIndex;
+		ref->indexB = b->solverIndex;
 		cd2JointData* d = &joint->data;
 		if (joint->type == CD2_MOTOR_JOINT)
 		{
@@ -944,7 +966,7 @@ void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 			d->deltaCenter = cd2Sub(b->center, d->target);
 		}
 		cd2JointSolverArgs args;
-		cd2MakeArgs(world, context, i, &args, &scratchA, &scratchB);
+		cd2MakeArgs(context, ref, &args, &scratchA, &scratchB);
 		switch (joint->type)
 		{
 			case CD2_DISTANCE_JOINT:
@@ -972,45 +994,16 @@ void cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 				break;
 		}
 	}
+	return true;
 }
 
-static void cd2WarmStartJoint(cd2JointSolverArgs* args)
+/* The factor (at most 1) that keeps the velocity change of one body, by `linear` times invMass and
+ * `angular` times invInertia, within twice the speed caps. */
+static inline cdReal cd2WarmStartScale(cd2Vec linear, cdReal angular, const cd2SolverBody* body,
+									   cdReal maxLinear, cdReal maxAngular, cdReal scale)
 {
-	switch (args->joint->type)
-	{
-		case CD2_DISTANCE_JOINT:
-			cd2WarmStartDistanceJoint(args);
-			break;
-		case CD2_REVOLUTE_JOINT:
-			cd2WarmStartRevoluteJoint(args);
-			break;
-		case CD2_WELD_JOINT:
-			cd2WarmStartWeldJoint(args);
-			break;
-		case CD2_MOUSE_JOINT:
-			cd2WarmStartMouseJoint(args);
-			break;
-		case CD2_MOTOR_JOINT:
-			cd2WarmStartMotorJoint(args);
-			break;
-		case CD2_PRISMATIC_JOINT:
-			cd2WarmStartPrismaticJoint(args);
-			break;
-		case CD2_WHEEL_JOINT:
-			cd2WarmStartWheelJoint(args);
-			break;
-		case CD2_FILTER_JOINT:
-			break;
-	}
-}
-
-/* The factor (at most 1) that keeps the velocity change of one body within twice the speed caps. */
-static cdReal cd2WarmStartScale(cd2Vec v0, cdReal w0, const cd2SolverBody* after, cdReal maxLinear,
-								cdReal maxAngular, cdReal scale)
-{
-	cd2Vec dv = cd2Sub(after->linearVelocity, v0);
-	cdReal dw = cdAbs(after->angularVelocity - w0);
-	cdReal dv2 = cd2Dot(dv, dv);
+	cdReal dv2 = body->invMass * body->invMass * cd2Dot(linear, linear);
+	cdReal dw = body->invInertia * cdAbs(angular);
 	if (dv2 > CD_R(4.0) * maxLinear * maxLinear)
 	{
 		scale = cdMin(scale, CD_R(2.0) * maxLinear / cdSqrt(dv2));
@@ -1024,35 +1017,58 @@ static cdReal cd2WarmStartScale(cd2Vec v0, cdReal w0, const cd2SolverBody* after
 
 /* Warm starting is linear in the stored impulses, so a joint whose impulses would change a body's
  * velocity by more than twice the speed caps (no solve can need more: velocities are capped on
- * both sides of it) has them scaled down to that and applied again. Rigid joints that cannot all
- * hold (bodies pulled apart by kinematic ones, a light body on a lever arm of a kilometre, where
- * float round-off of the effective mass feeds back) otherwise grow their impulses a hundredfold
- * per sub-step until they overflow. */
+ * both sides of it) has them scaled down to that before they are applied. Rigid joints that cannot
+ * all hold (bodies pulled apart by kinematic ones, a light body on a lever arm of a kilometre,
+ * where float round-off of the effective mass feeds back) otherwise grow their impulses a
+ * hundredfold per sub-step until they overflow. The check is on the impulse, not on the resulting
+ * velocities: one pass, nothing to undo. NaN impulses fail every comparison and stay as they are,
+ * as they would without the cap. */
 void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end)
 {
+	(void)world;
 	cd2SolverBody scratchA, scratchB;
 	cdReal maxLinear = context->maxLinearVelocity;
 	cdReal maxAngular = CD2_MAX_ROTATION * context->inv_h;
 	for (int i = start; i < end; ++i)
 	{
+		cd2PrefetchJoint(context, i, end);
+		const cd2JointRef* ref = context->jointRefs + i;
 		cd2JointSolverArgs args;
-		cd2MakeArgs(world, context, i, &args, &scratchA, &scratchB);
-		cd2Vec vA = args.a->linearVelocity, vB = args.b->linearVelocity;
-		cdReal wA = args.a->angularVelocity, wB = args.b->angularVelocity;
-		for (int pass = 0; pass < 2; ++pass)
+		cd2MakeArgs(context, ref, &args, &scratchA, &scratchB);
+		cd2JointImpulse p;
+		switch (ref->type)
 		{
-			cd2WarmStartJoint(&args);
-			cdReal scale = cd2WarmStartScale(vA, wA, args.a, maxLinear, maxAngular, CD_R(1.0));
-			scale = cd2WarmStartScale(vB, wB, args.b, maxLinear, maxAngular, scale);
-			if (scale == CD_R(1.0) || pass == 1)
-			{
+			case CD2_DISTANCE_JOINT:
+				p = cd2WarmStartDistanceJoint(&args);
 				break;
-			}
-			args.a->linearVelocity = vA;
-			args.a->angularVelocity = wA;
-			args.b->linearVelocity = vB;
-			args.b->angularVelocity = wB;
-			cd2JointData* d = &args.joint->data;
+			case CD2_REVOLUTE_JOINT:
+				p = cd2WarmStartRevoluteJoint(&args);
+				break;
+			case CD2_WELD_JOINT:
+				p = cd2WarmStartWeldJoint(&args);
+				break;
+			case CD2_MOUSE_JOINT:
+				p = cd2WarmStartMouseJoint(&args);
+				break;
+			case CD2_MOTOR_JOINT:
+				p = cd2WarmStartMotorJoint(&args);
+				break;
+			case CD2_PRISMATIC_JOINT:
+				p = cd2WarmStartPrismaticJoint(&args);
+				break;
+			case CD2_WHEEL_JOINT:
+				p = cd2WarmStartWheelJoint(&args);
+				break;
+			default:
+				continue;
+		}
+		cd2SolverBody* a = args.a;
+		cd2SolverBody* b = args.b;
+		cdReal scale = cd2WarmStartScale(p.linearA, p.angularA, a, maxLinear, maxAngular, CD_R(1.0));
+		scale = cd2WarmStartScale(p.linearB, p.angularB, b, maxLinear, maxAngular, scale);
+		if (scale < CD_R(1.0))
+		{
+			cd2JointData* d = args.data;
 			d->linearImpulse = cd2Scale(scale, d->linearImpulse);
 			d->impulse *= scale;
 			d->angularImpulse *= scale;
@@ -1060,18 +1076,29 @@ void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int
 			d->motorImpulse *= scale;
 			d->lowerImpulse *= scale;
 			d->upperImpulse *= scale;
+			p.linearA = cd2Scale(scale, p.linearA);
+			p.linearB = cd2Scale(scale, p.linearB);
+			p.angularA *= scale;
+			p.angularB *= scale;
 		}
+		a->linearVelocity = cd2MulSub(a->linearVelocity, a->invMass, p.linearA);
+		a->angularVelocity -= a->invInertia * p.angularA;
+		b->linearVelocity = cd2MulAdd(b->linearVelocity, b->invMass, p.linearB);
+		b->angularVelocity += b->invInertia * p.angularB;
 	}
 }
 
 void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias)
 {
+	(void)world;
 	cd2SolverBody scratchA, scratchB;
 	for (int i = start; i < end; ++i)
 	{
+		cd2PrefetchJoint(context, i, end);
+		const cd2JointRef* ref = context->jointRefs + i;
 		cd2JointSolverArgs args;
-		cd2MakeArgs(world, context, i, &args, &scratchA, &scratchB);
-		switch (args.joint->type)
+		cd2MakeArgs(context, ref, &args, &scratchA, &scratchB);
+		switch (ref->type)
 		{
 			case CD2_DISTANCE_JOINT:
 				cd2SolveDistanceJoint(&args, useBias);

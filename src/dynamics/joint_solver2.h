@@ -20,6 +20,24 @@ static inline void cd2ApplyJointImpulse(cd2SolverBody* a, cd2SolverBody* b, cd2V
 	b->angularVelocity += b->invInertia * (cd2Cross(rB, P) + L);
 }
 
+/* The warm-start impulse of P at rA on A (negative) and at rB on B (positive), plus an angular
+ * impulse L. */
+static inline cd2JointImpulse cd2MakeJointImpulse(cd2Vec rA, cd2Vec rB, cd2Vec P, cdReal L)
+{
+	cd2JointImpulse out = {P, P, cd2Cross(rA, P) + L, cd2Cross(rB, P) + L};
+	return out;
+}
+
+/* The revolute joint's warm start (inline: the commonest joint, in chains, ragdolls and grids). */
+static inline cd2JointImpulse cd2WarmStartRevoluteJoint(const cd2JointSolverArgs* args)
+{
+	const cd2JointData* d = args->data;
+	cd2Vec rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
+	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
+	cdReal axial = d->springImpulse + d->motorImpulse + d->lowerImpulse - d->upperImpulse;
+	return cd2MakeJointImpulse(rA, rB, d->linearImpulse, axial);
+}
+
 /* The relative velocity of the anchor points. */
 static inline cd2Vec cd2AnchorVelocity(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
 {
@@ -51,9 +69,8 @@ static inline cd2Vec cd2SolveMass22(cd2Mass22 m, cd2Vec b)
 /* The point constraint's effective mass, K = (mA + mB) I + iA rA' rA'^T + iB rB' rB'^T with r' the
  * perpendicular of r; det K = m^2 + m (iA |rA|^2 + iB |rB|^2) + iA iB (rA x rB)^2
  * = m (k11 + k22 - m) + iA iB (rA x rB)^2. */
-static inline cd2Mass22 cd2PointMass(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
+static inline cd2Mass22 cd2PointMassOf(cdReal m, cdReal iA, cdReal iB, cd2Vec rA, cd2Vec rB)
 {
-	cdReal m = a->invMass + b->invMass, iA = a->invInertia, iB = b->invInertia;
 	cd2Mass22 k;
 	k.k11 = m + rA.y * rA.y * iA + rB.y * rB.y * iB;
 	k.k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
@@ -66,6 +83,11 @@ static inline cd2Mass22 cd2PointMass(const cd2SolverBody* a, const cd2SolverBody
 		k.det = m * (k.k11 + k.k22 - m) + iA * iB * cross * cross;
 	}
 	return k;
+}
+
+static inline cd2Mass22 cd2PointMass(const cd2SolverBody* a, const cd2SolverBody* b, cd2Vec rA, cd2Vec rB)
+{
+	return cd2PointMassOf(a->invMass + b->invMass, a->invInertia, b->invInertia, rA, rB);
 }
 
 /* The current separation of the anchors (from the step's start plus the position deltas). */

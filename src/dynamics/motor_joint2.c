@@ -5,23 +5,23 @@
 void cd2PrepareMotorJoint(cd2JointSolverArgs* args)
 {
 	/* (cd2PrepareJoints placed the anchors at the offset on A and at B's origin.) */
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cdReal k = args->a->invInertia + args->b->invInertia;
 	d->axialMass = k > CD_R(0.0) ? CD_R(1.0) / k : CD_R(0.0);
 }
 
-void cd2WarmStartMotorJoint(cd2JointSolverArgs* args)
+cd2JointImpulse cd2WarmStartMotorJoint(const cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	cd2Vec rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
 	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
-	cd2ApplyJointImpulse(args->a, args->b, rA, rB, d->linearImpulse, d->angularImpulse);
+	return cd2MakeJointImpulse(rA, rB, d->linearImpulse, d->angularImpulse);
 }
 
 void cd2SolveMotorJoint(cd2JointSolverArgs* args, bool useBias)
 {
 	(void)useBias; /* a motor: the correction is part of the drive */
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2SolverBody* a = args->a;
 	cd2SolverBody* b = args->b;
 	const cd2StepContext* context = args->context;

@@ -4,25 +4,23 @@
 
 void cd2PrepareMouseJoint(cd2JointSolverArgs* args)
 {
-	cd2Joint* joint = args->joint;
-	cd2JointData* d = &joint->data;
+	cd2JointData* d = args->data;
 	/* (cd2PrepareJoints set deltaCenter to centre of B - target.) */
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
 }
 
-void cd2WarmStartMouseJoint(cd2JointSolverArgs* args)
+cd2JointImpulse cd2WarmStartMouseJoint(const cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
-	cd2SolverBody* b = args->b;
-	cd2Vec rB = cd2RotateVector(b->deltaRotation, d->anchorB);
-	b->linearVelocity = cd2MulAdd(b->linearVelocity, b->invMass, d->linearImpulse);
-	b->angularVelocity += b->invInertia * cd2Cross(rB, d->linearImpulse);
+	const cd2JointData* d = args->data;
+	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
+	cd2JointImpulse out = {CD2_VEC_ZERO, d->linearImpulse, CD_R(0.0), cd2Cross(rB, d->linearImpulse)};
+	return out;
 }
 
 void cd2SolveMouseJoint(cd2JointSolverArgs* args, bool useBias)
 {
 	(void)useBias; /* a spring: always soft */
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2SolverBody* b = args->b;
 	cdReal h = args->context->h;
 	cd2Vec rB = cd2RotateVector(b->deltaRotation, d->anchorB);

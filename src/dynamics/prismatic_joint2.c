@@ -11,7 +11,7 @@ typedef struct cd2AxisFrame
 
 static cd2AxisFrame cd2MakeAxisFrame(const cd2JointSolverArgs* args)
 {
-	const cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	cd2AxisFrame f;
 	f.rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
 	f.rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
@@ -44,14 +44,14 @@ static cdReal cd2AxialVelocity(const cd2JointSolverArgs* args, const cd2AxisFram
 
 void cd2PreparePrismaticJoint(cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	/* axisA is stored in world orientation at the step's start. */
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
 }
 
-void cd2WarmStartPrismaticJoint(cd2JointSolverArgs* args)
+cd2JointImpulse cd2WarmStartPrismaticJoint(const cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	cd2AxisFrame f = cd2MakeAxisFrame(args);
 	cd2Vec perp = cd2LeftPerp(f.axis);
 	cdReal s1 = cd2Cross(cd2Add(f.d, f.rA), perp), s2 = cd2Cross(f.rB, perp);
@@ -59,12 +59,8 @@ void cd2WarmStartPrismaticJoint(cd2JointSolverArgs* args)
 	cd2Vec P = cd2Add(cd2Scale(axial, f.axis), cd2Scale(d->linearImpulse.x, perp));
 	cdReal LA = axial * f.a1 + d->linearImpulse.x * s1 + d->linearImpulse.y;
 	cdReal LB = axial * f.a2 + d->linearImpulse.x * s2 + d->linearImpulse.y;
-	cd2SolverBody* a = args->a;
-	cd2SolverBody* b = args->b;
-	a->linearVelocity = cd2MulSub(a->linearVelocity, a->invMass, P);
-	a->angularVelocity -= a->invInertia * LA;
-	b->linearVelocity = cd2MulAdd(b->linearVelocity, b->invMass, P);
-	b->angularVelocity += b->invInertia * LB;
+	cd2JointImpulse out = {P, P, LA, LB};
+	return out;
 }
 
 /* The axial spring, motor and limits shared with the wheel joint (motorIsLinear: prismatic). */
@@ -72,7 +68,7 @@ void cd2SolveAxialRows(cd2JointSolverArgs* args, bool useBias, bool motorIsLinea
 
 void cd2SolveAxialRows(cd2JointSolverArgs* args, bool useBias, bool motorIsLinear)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	const cd2StepContext* context = args->context;
 	cd2AxisFrame f = cd2MakeAxisFrame(args);
 	cdReal k = args->a->invMass + args->b->invMass + args->a->invInertia * f.a1 * f.a1 +
@@ -114,7 +110,7 @@ void cd2SolveAxialRows(cd2JointSolverArgs* args, bool useBias, bool motorIsLinea
 
 void cd2SolvePrismaticJoint(cd2JointSolverArgs* args, bool useBias)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2SolveAxialRows(args, useBias, true);
 	/* Point on the line and no relative rotation, solved together (2x2). */
 	cd2SolverBody* a = args->a;

@@ -8,7 +8,7 @@
 #include "../broad/broad_internal.h"
 
 #define CD2_STATE_MAGIC 0x53324443u /* "CD2S" */
-#define CD2_STATE_VERSION 3u
+#define CD2_STATE_VERSION 4u
 
 typedef struct cd2StateHeader
 {

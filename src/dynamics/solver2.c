@@ -474,7 +474,7 @@ void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRan
  * bits, and the results do not depend on the worker count. Kinematic bodies count as movable here
  * (a joint's solve writes both of its awake bodies); static and sleeping ones do not. Out of
  * scratch memory: every joint in the overflow colour, in index order, on one thread. */
-static void cd2ColorJoints(cd2World* world, cd2StepContext* context, const int* solverOf)
+static void cd2ColorJoints(cd2World* world, cd2StepContext* context, const int* bodyA, const int* bodyB)
 {
 	int n = context->jointCount;
 	int* start = context->jointColorStart;
@@ -487,20 +487,12 @@ static void cd2ColorJoints(cd2World* world, cd2StepContext* context, const int* 
 	{
 		return;
 	}
-	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 	int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 	int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 	int* sorted = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
 	if (bodyA == NULL || bodyB == NULL || colors == NULL || order == NULL || sorted == NULL)
 	{
 		return;
-	}
-	for (int i = 0; i < n; ++i)
-	{
-		const cd2Joint* joint = world->joints.data + context->joints[i];
-		bodyA[i] = solverOf[joint->bodyA];
-		bodyB[i] = solverOf[joint->bodyB];
 	}
 	if (!cdColorConstraints(bodyA, bodyB, n, context->bodyCount, colors, order, &world->arena))
 	{
@@ -678,18 +670,31 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		}
 	}
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
+	/* The solver indices of each joint's bodies (the colouring's, one read of each joint). */
+	int* jointBodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
+	int* jointBodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
 	for (int i = 0; i < world->joints.count && context.joints != NULL; ++i)
 	{
 		const cd2Joint* joint = world->joints.data + i;
+		if (i + 16 < world->joints.count)
+		{
+			CD2_PREFETCH(joint + 16);
+		}
 		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
 		{
 			continue;
 		}
-		const cd2Body* a = world->bodies.data + joint->bodyA;
-		const cd2Body* b = world->bodies.data + joint->bodyB;
-		if (!a->enabled || !b->enabled || (a->solverIndex < 0 && b->solverIndex < 0))
+		/* A body without a solver index is static, asleep or disabled; a disabled one drops the joint. */
+		int indexA = solverOf[joint->bodyA], indexB = solverOf[joint->bodyB];
+		if ((indexA < 0 && indexB < 0) || (indexA < 0 && !world->bodies.data[joint->bodyA].enabled) ||
+			(indexB < 0 && !world->bodies.data[joint->bodyB].enabled))
 		{
 			continue;
+		}
+		if (jointBodyA != NULL && jointBodyB != NULL)
+		{
+			jointBodyA[context.jointCount] = indexA;
+			jointBodyB[context.jointCount] = indexB;
 		}
 		context.joints[context.jointCount++] = i;
 	}
@@ -699,7 +704,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 		return;
 	}
-	cd2ColorJoints(world, &context, solverOf);
+	cd2ColorJoints(world, &context, jointBodyA, jointBodyB);
 
 	if (!cd2PrepareContactsWide(world, &context))
 	{
@@ -716,7 +721,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 		return;
 	}
-	cd2PrepareJoints(world, &context);
+	if (!cd2PrepareJoints(world, &context))
+	{
+		world->outOfMemory = true;
+		return;
+	}
 
 	/* The stages, from preparing the contacts to finalizing the bodies (see the top of the file). */
 	cd2StageList list;

@@ -4,7 +4,7 @@
 
 void cd2PrepareWeldJoint(cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cdReal h = args->context->h;
 	cdReal k = args->a->invInertia + args->b->invInertia;
 	d->axialMass = k > CD_R(0.0) ? CD_R(1.0) / k : CD_R(0.0);
@@ -14,17 +14,17 @@ void cd2PrepareWeldJoint(cd2JointSolverArgs* args)
 							 : cd2MakeSoft(d->angularHertz, d->angularDampingRatio, h);
 }
 
-void cd2WarmStartWeldJoint(cd2JointSolverArgs* args)
+cd2JointImpulse cd2WarmStartWeldJoint(const cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	cd2Vec rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
 	cd2Vec rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
-	cd2ApplyJointImpulse(args->a, args->b, rA, rB, d->linearImpulse, d->angularImpulse);
+	return cd2MakeJointImpulse(rA, rB, d->linearImpulse, d->angularImpulse);
 }
 
 void cd2SolveWeldJoint(cd2JointSolverArgs* args, bool useBias)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2SolverBody* a = args->a;
 	cd2SolverBody* b = args->b;
 	/* angular */

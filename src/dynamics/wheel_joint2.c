@@ -6,7 +6,7 @@ void cd2SolveAxialRows(cd2JointSolverArgs* args, bool useBias, bool motorIsLinea
 
 void cd2PrepareWheelJoint(cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cdReal k = args->a->invInertia + args->b->invInertia;
 	d->axialMass = k > CD_R(0.0) ? CD_R(1.0) / k : CD_R(0.0);
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
@@ -14,16 +14,16 @@ void cd2PrepareWheelJoint(cd2JointSolverArgs* args)
 
 static void cd2WheelFrame(const cd2JointSolverArgs* args, cd2Vec* rA, cd2Vec* rB, cd2Vec* dd, cd2Vec* axis)
 {
-	const cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	*rA = cd2RotateVector(args->a->deltaRotation, d->anchorA);
 	*rB = cd2RotateVector(args->b->deltaRotation, d->anchorB);
 	*dd = cd2AnchorSeparation(args->a, args->b, *rA, *rB, d->deltaCenter);
 	*axis = cd2RotateVector(args->a->deltaRotation, d->axisA);
 }
 
-void cd2WarmStartWheelJoint(cd2JointSolverArgs* args)
+cd2JointImpulse cd2WarmStartWheelJoint(const cd2JointSolverArgs* args)
 {
-	cd2JointData* d = &args->joint->data;
+	const cd2JointData* d = args->data;
 	cd2Vec rA, rB, dd, axis;
 	cd2WheelFrame(args, &rA, &rB, &dd, &axis);
 	cd2Vec perp = cd2LeftPerp(axis);
@@ -33,17 +33,13 @@ void cd2WarmStartWheelJoint(cd2JointSolverArgs* args)
 	cd2Vec P = cd2Add(cd2Scale(axial, axis), cd2Scale(d->impulse, perp));
 	cdReal LA = axial * a1 + d->impulse * s1 + d->motorImpulse;
 	cdReal LB = axial * a2 + d->impulse * s2 + d->motorImpulse;
-	cd2SolverBody* a = args->a;
-	cd2SolverBody* b = args->b;
-	a->linearVelocity = cd2MulSub(a->linearVelocity, a->invMass, P);
-	a->angularVelocity -= a->invInertia * LA;
-	b->linearVelocity = cd2MulAdd(b->linearVelocity, b->invMass, P);
-	b->angularVelocity += b->invInertia * LB;
+	cd2JointImpulse out = {P, P, LA, LB};
+	return out;
 }
 
 void cd2SolveWheelJoint(cd2JointSolverArgs* args, bool useBias)
 {
-	cd2JointData* d = &args->joint->data;
+	cd2JointData* d = args->data;
 	cd2SolverBody* a = args->a;
 	cd2SolverBody* b = args->b;
 	cdReal mA = a->invMass, mB = b->invMass, iA = a->invInertia, iB = b->invInertia;

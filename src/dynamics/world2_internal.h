@@ -143,6 +143,15 @@ typedef struct cd2Softness
 
 typedef struct cd2JointData
 {
+	/* The sub-steps' data first, together (a joint's solve reads the first two cache lines). */
+	bool enableSpring, enableLimit, enableMotor;
+	/* accumulated impulses (warm starting) */
+	cd2Vec linearImpulse;
+	cdReal impulse, angularImpulse, springImpulse, motorImpulse, lowerImpulse, upperImpulse;
+	/* the step's solver data */
+	cd2Vec anchorA, anchorB, deltaCenter, axisA;
+	cdReal deltaAngle, axialMass;
+	cd2Softness jointSoftness, springSoftness, angularSoftness;
 	/* definition */
 	cd2Vec localAnchorA, localAnchorB; /* body frames, from the body origins */
 	cd2Vec localAxisA;
@@ -155,14 +164,6 @@ typedef struct cd2JointData
 	cdReal maxForce, maxTorque, correctionFactor;
 	cd2Vec target, linearOffset;
 	cdReal angularOffset;
-	bool enableSpring, enableLimit, enableMotor;
-	/* accumulated impulses (warm starting) */
-	cd2Vec linearImpulse;
-	cdReal impulse, angularImpulse, springImpulse, motorImpulse, lowerImpulse, upperImpulse;
-	/* the step's solver data */
-	cd2Vec anchorA, anchorB, deltaCenter, axisA;
-	cdReal deltaAngle, axialMass;
-	cd2Softness springSoftness, jointSoftness, angularSoftness;
 } cd2JointData;
 
 typedef struct cd2Joint
@@ -196,6 +197,24 @@ typedef struct cd2SolverBody
 	cd2Rot deltaRotation;
 	cdReal invMass, invInertia;
 } cd2SolverBody;
+
+/* Starts loading the cache line at p without waiting for it (a hint; nothing elsewhere). The joint
+ * loops read records far apart in memory, one after another: the load of the next ones overlaps
+ * the work on this one. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CD2_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define CD2_PREFETCH(p) ((void)0)
+#endif
+
+/* A joint in the solver's order: its data and the solver indices of its bodies (negative for an
+ * immovable one). */
+typedef struct cd2JointRef
+{
+	cd2JointData* data;
+	cd2JointType type;
+	int indexA, indexB;
+} cd2JointRef;
 
 /* What the velocity integration needs of a solver body, per sub-step, dense. */
 typedef struct cd2SolverBodyParams
@@ -296,9 +315,9 @@ typedef struct cd2StepContext
 	 * [jointColorStart[c], jointColorStart[c + 1]); the last colour is the overflow, solved in
 	 * order on one thread. */
 	int jointColorStart[CD_GRAPH_COLOR_COUNT + 2];
-	/* Two per joint of `joints`, set by cd2PrepareJoints: the solver indices of its bodies (negative
-	 * for an immovable one), so that the sub-steps never read the body records. */
-	int* jointSolverBodies;
+	/* One per joint of `joints`, set by cd2PrepareJoints: what the sub-steps read of it, so that
+	 * they never read the joint or body records. */
+	cd2JointRef* jointRefs;
 	bool enableWarmStarting;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
@@ -530,7 +549,8 @@ void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
 /* ---- joint2.c -------------------------------------------------------------------------------- */
 cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id);
 void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies);
-void cd2PrepareJoints(cd2World* world, cd2StepContext* context);
+/* False when out of scratch memory. */
+bool cd2PrepareJoints(cd2World* world, cd2StepContext* context);
 /* Joints [start, end) of context->joints. */
 void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end);
 void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias);
@@ -539,32 +559,40 @@ void cd2StoreJointReactions(cd2World* world, cd2StepContext* context);
 /* The per-kind solvers (one file each). */
 typedef struct cd2JointSolverArgs
 {
-	cd2Joint* joint;
+	cd2JointData* data;
 	cd2SolverBody* a; /* a zero body for static ones */
 	cd2SolverBody* b;
-	cd2StepContext* context;
+	const cd2StepContext* context;
 } cd2JointSolverArgs;
 
+/* What warm starting a joint applies: A's velocities change by -invMass linearA and
+ * -invInertia angularA, B's by +invMass linearB and +invInertia angularB. The per-kind warm start
+ * computes it; cd2WarmStartJoints caps and applies it. */
+typedef struct cd2JointImpulse
+{
+	cd2Vec linearA, linearB;
+	cdReal angularA, angularB;
+} cd2JointImpulse;
+
 void cd2PrepareDistanceJoint(cd2JointSolverArgs* args);
-void cd2WarmStartDistanceJoint(cd2JointSolverArgs* args);
+cd2JointImpulse cd2WarmStartDistanceJoint(const cd2JointSolverArgs* args);
 void cd2SolveDistanceJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareRevoluteJoint(cd2JointSolverArgs* args);
-void cd2WarmStartRevoluteJoint(cd2JointSolverArgs* args);
 void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareWeldJoint(cd2JointSolverArgs* args);
-void cd2WarmStartWeldJoint(cd2JointSolverArgs* args);
+cd2JointImpulse cd2WarmStartWeldJoint(const cd2JointSolverArgs* args);
 void cd2SolveWeldJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareMouseJoint(cd2JointSolverArgs* args);
-void cd2WarmStartMouseJoint(cd2JointSolverArgs* args);
+cd2JointImpulse cd2WarmStartMouseJoint(const cd2JointSolverArgs* args);
 void cd2SolveMouseJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareMotorJoint(cd2JointSolverArgs* args);
-void cd2WarmStartMotorJoint(cd2JointSolverArgs* args);
+cd2JointImpulse cd2WarmStartMotorJoint(const cd2JointSolverArgs* args);
 void cd2SolveMotorJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PreparePrismaticJoint(cd2JointSolverArgs* args);
-void cd2WarmStartPrismaticJoint(cd2JointSolverArgs* args);
+cd2JointImpulse cd2WarmStartPrismaticJoint(const cd2JointSolverArgs* args);
 void cd2SolvePrismaticJoint(cd2JointSolverArgs* args, bool useBias);
 void cd2PrepareWheelJoint(cd2JointSolverArgs* args);
-void cd2WarmStartWheelJoint(cd2JointSolverArgs* args);
+cd2JointImpulse cd2WarmStartWheelJoint(const cd2JointSolverArgs* args);
 void cd2SolveWheelJoint(cd2JointSolverArgs* args, bool useBias);
 
 /* ---- continuous2.c --------------------------------------------------------------------------- */
