@@ -652,7 +652,7 @@ static cd3Manifold SegmentFaceContact(const cd3Polytope* ref, cd3Vec r0, cd3Vec 
 		/* The point's incident side must lie on the incident face: the incident plane of a needle
 		 * (a triangle 2.4e21 long and 1e9 across, in double) is tilted by 6e-4 rad in round-off,
 		 * and an end crossed it 5e19 beyond the triangle. Such an end is dropped (the reference
-		 * side lies on the segment by construction). */
+		 * side lies on the segment by construction, or on the reference shape by the test above). */
 		if (separation <= speculativeDistance &&
 			InsideShape(&inc->shape, onIncident, RoundOff(onIncident, size)))
 		{
