@@ -2307,6 +2307,30 @@ static void TestEpaWitnessRegressions(void)
 #endif
 	}
 	cd3DestroyHull(apartHull);
+
+	/* A hull 1.5e9 long and 1e-3 thick, turned half a turn, overlapping by 5.4e-4 an AABB 1e9
+	 * long and flat in z, whose face (1.15e-3 wide) is clipped as a segment (SegmentFaceContact):
+	 * the segment crosses the side of the hull's sliver face at a tip of angle 1.1e-3, and the
+	 * slack across each side (8 epsilon of 3.8e9) took the end 2.8e6 along beyond the tip (float;
+	 * corpus regression-manifold3-float-thin-hull-needle-aabb). An end that far from the incident
+	 * shape is cut at the sides themselves. */
+	static const double thinPoints[27] = {
+		0,		  5e8,		 -7.125e-4, 0,		  -1.1e-3,	 -1.2e-3,	-1e-9,		 4.625e-4, -1.25e-3,
+		-1.2e-3,  -1.125e-4, -6.5e-4,	-1e-4,	  -5.125e-4, -1.225e-3, 1.25e-4,	 1e-9,	   -1e9,
+		-1.25e-3, -1.25e-3,	 -1.25e-3,	-1.25e-3, -2.5e-5,	 -5e-5,		-1661115.88, -1e9,	   1.2e-3};
+	static const double thinPlace[7] = {-7.5e-4, -7.5e-4, -7.5e-4, -7.5e-13, -7.5e-13, -1, 0};
+	cd3Hull* thinHull = NULL;
+	cd3Shape thin = HullShapeOf(thinPoints, 9, thinPlace, &thinHull);
+	cd3Shape needleAabb = AabbShape(-1.25e-3, -1e9, -1.25e-3, -1e-4, -1.25e-3, -1.25e-3);
+	if (thinHull != NULL)
+	{
+		CheckFuzzCase("thin-hull-needle-aabb", &thin, &needleAabb, 7.5e-4, 0.0, 2e9);
+		/* Narrower, the AABB's segment misses the sliver face but within the slack, and its face
+		 * holds the tip: the tip's point (corpus ...-thin-hull-needle-aabb-2). */
+		cd3Shape narrowAabb = AabbShape(-1.25e-3, -1e9, -1.25e-3, -6.875e-4, -1.25e-3, -1.25e-3);
+		CheckFuzzCase("thin-hull-narrow-needle-aabb", &thin, &narrowAabb, 7.5e-4, 0.0, 2e9);
+	}
+	cd3DestroyHull(thinHull);
 }
 
 static void TestHugeDoubleRegressions(void)

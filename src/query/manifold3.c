@@ -533,8 +533,9 @@ static void ClipInterval(cdReal start, cdReal rate, cdReal limit, cdReal* lo, cd
  * callers then try the other features, or the distance). A point's line may pass within a slack
  * of the shapes' size (REALIZED_TOLERANCE) beside the face; a segment clips exactly: at 1e9 the
  * slack is 1e5, enough to take a point well outside a triangle. flip: ref is B. */
-static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, const cd3Polytope* inc,
-									  int incident, bool flip, cdReal speculativeDistance, cdReal size)
+static cd3Manifold SegmentFaceContact(const cd3Polytope* ref, cd3Vec r0, cd3Vec r1, cd3Vec n, int face,
+									  const cd3Polytope* inc, int incident, bool flip,
+									  cdReal speculativeDistance, cdReal size)
 {
 	cd3Manifold m = EmptyManifold();
 	cd3Plane local = inc->planes[incident];
@@ -578,6 +579,7 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 	cd3Vec dc = cd3MulAdd(d, sRate, n);
 	cdReal lo = CD_R(0.0), hi = CD_R(1.0);
 	cdReal slackLo = CD_R(0.0), slackHi = CD_R(1.0);
+	cdReal exactLo = CD_R(0.0), exactHi = CD_R(1.0);
 	int guard = 0;
 	int e = inc->faceEdges[incident];
 	do
@@ -596,6 +598,7 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 		cdReal slack = CD_R(8.0) * CD_REAL_EPSILON * (size + cdMax(abs.x, cdMax(abs.y, abs.z)));
 		ClipInterval(start, along, slack * cd3Length(edge), &lo, &hi);
 		ClipInterval(start, along, REALIZED_TOLERANCE * size * cd3Length(edge), &slackLo, &slackHi);
+		ClipInterval(start, along, CD_R(0.0), &exactLo, &exactHi);
 		e = inc->edges[e].next;
 	} while (e != inc->faceEdges[incident] && ++guard < inc->edgeCount);
 	if (!(lo <= hi))
@@ -613,11 +616,43 @@ static cd3Manifold SegmentFaceContact(cd3Vec r0, cd3Vec r1, cd3Vec n, int face, 
 	{
 		cdReal separation = s0 + ts[i] * sRate;
 		cd3Vec onReference = cd3MulAdd(r0, ts[i], d);
+		cd3Vec onIncident = cd3MulAdd(onReference, separation, n);
+		/* The slack is a distance across each side, and a segment crossing a side at a shallow
+		 * angle goes that over the angle's sine farther along before it is cut: by a sharp corner
+		 * of the incident face, beyond it (float: a flat AABB's face 1e9 long, a segment, crossing
+		 * a hull's sliver face 1.5e9 long whose tip has an angle of 1.1e-3; the slack of 3.6e3
+		 * took the end 2.8e6 beyond the tip). An end that far from the incident shape is cut at
+		 * the sides themselves; when the segment misses the face without the slack (the face's
+		 * tip over the reference face beside its segment), or the cut is still off, the incident
+		 * shape's nearest point, taken along n onto the reference plane, if that lies on the
+		 * reference shape (off the hot path: thin reference faces only). */
+		cdReal tolerance = RoundOff(onIncident, size);
+		cd3Vec nearest = cd3ClosestPointOnShape(&inc->shape, onIncident);
+		if (cd3VecDistance(nearest, onIncident) > tolerance && exactLo <= exactHi)
+		{
+			cdReal t = cdMin(cdMax(ts[i], exactLo), exactHi);
+			separation = s0 + t * sRate;
+			onReference = cd3MulAdd(r0, t, d);
+			onIncident = cd3MulAdd(onReference, separation, n);
+			tolerance = RoundOff(onIncident, size);
+			nearest = cd3ClosestPointOnShape(&inc->shape, onIncident);
+		}
+		if (cd3VecDistance(nearest, onIncident) > tolerance)
+		{
+			separation = cd3Dot(n, cd3Sub(nearest, r0));
+			onIncident = nearest;
+			onReference = cd3MulSub(nearest, separation, n);
+			if (!InsideShape(&ref->shape, onReference, RoundOff(onReference, size)) ||
+				(m.pointCount == 1 && cd3VecDistance(cd3MulAdd(onReference, CD_R(0.5) * separation, n),
+													 m.points[0].point) <= RoundOff(onReference, size)))
+			{
+				continue; /* off the reference shape, or the point already taken */
+			}
+		}
 		/* The point's incident side must lie on the incident face: the incident plane of a needle
 		 * (a triangle 2.4e21 long and 1e9 across, in double) is tilted by 6e-4 rad in round-off,
 		 * and an end crossed it 5e19 beyond the triangle. Such an end is dropped (the reference
-		 * side lies on the segment by construction). */
-		cd3Vec onIncident = cd3MulAdd(onReference, separation, n);
+		 * side lies on the segment by construction, or on the reference shape by the test above). */
 		if (separation <= speculativeDistance &&
 			InsideShape(&inc->shape, onIncident, RoundOff(onIncident, size)))
 		{
@@ -726,7 +761,7 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 			{
 				cd3Vec r0, r1;
 				FaceEnds(ref, face, &r0, &r1);
-				return SegmentFaceContact(r0, r1, n, face, inc, incident, flip, speculativeDistance,
+				return SegmentFaceContact(ref, r0, r1, n, face, inc, incident, flip, speculativeDistance,
 										  ref->size + inc->size);
 			}
 		}
