@@ -148,7 +148,8 @@ static void HashReal(uint64_t* h, cdReal value)
 	HashBytes(h, &value, sizeof(value));
 }
 
-static uint64_t RunPile(int workerCount, TestTaskSystem* system, int* bodyCountOut)
+/* A world of `workerCount` workers: the built-in pool, or the test's task system when given. */
+static cd2WorldId CreateWorld(int workerCount, TestTaskSystem* system)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	wd.workerCount = workerCount;
@@ -159,7 +160,32 @@ static uint64_t RunPile(int workerCount, TestTaskSystem* system, int* bodyCountO
 		wd.finishTask = TestFinish;
 		wd.userTaskContext = system;
 	}
-	cd2WorldId world = cd2CreateWorld(&wd);
+	return cd2CreateWorld(&wd);
+}
+
+/* The bits of the bodies' poses and velocities. */
+static uint64_t HashBodies(const cd2BodyId* bodies, int count)
+{
+	uint64_t h = UINT64_C(14695981039346656037);
+	for (int i = 0; i < count; ++i)
+	{
+		cd2Vec p = cd2Body_GetPosition(bodies[i]);
+		cd2Rot q = cd2Body_GetRotation(bodies[i]);
+		cd2Vec v = cd2Body_GetLinearVelocity(bodies[i]);
+		HashReal(&h, p.x);
+		HashReal(&h, p.y);
+		HashReal(&h, q.c);
+		HashReal(&h, q.s);
+		HashReal(&h, v.x);
+		HashReal(&h, v.y);
+		HashReal(&h, cd2Body_GetAngularVelocity(bodies[i]));
+	}
+	return h;
+}
+
+static uint64_t RunPile(int workerCount, TestTaskSystem* system, int* bodyCountOut)
+{
+	cd2WorldId world = CreateWorld(workerCount, system);
 	cd2BodyDef bd = cd2DefaultBodyDef();
 	cd2BodyId ground = cd2CreateBody(world, &bd);
 	cd2ShapeDef sd = cd2DefaultShapeDef();
@@ -213,20 +239,7 @@ static uint64_t RunPile(int workerCount, TestTaskSystem* system, int* bodyCountO
 	{
 		cd2World_Step(world, DT, 4);
 	}
-	uint64_t h = UINT64_C(14695981039346656037);
-	for (int i = 0; i < count; ++i)
-	{
-		cd2Vec p = cd2Body_GetPosition(bodies[i]);
-		cd2Rot q = cd2Body_GetRotation(bodies[i]);
-		cd2Vec v = cd2Body_GetLinearVelocity(bodies[i]);
-		HashReal(&h, p.x);
-		HashReal(&h, p.y);
-		HashReal(&h, q.c);
-		HashReal(&h, q.s);
-		HashReal(&h, v.x);
-		HashReal(&h, v.y);
-		HashReal(&h, cd2Body_GetAngularVelocity(bodies[i]));
-	}
+	uint64_t h = HashBodies(bodies, count);
 	cd2DestroyWorld(world);
 	*bodyCountOut = count;
 	return h;
@@ -282,16 +295,7 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
  * so the bits are the same for any worker count. The ThreadSanitizer job runs this test. */
 static uint64_t RunJointGrid(int workerCount, TestTaskSystem* system)
 {
-	cd2WorldDef wd = cd2DefaultWorldDef();
-	wd.workerCount = workerCount;
-	if (system != NULL)
-	{
-		system->workerCount = workerCount;
-		wd.enqueueTask = TestEnqueue;
-		wd.finishTask = TestFinish;
-		wd.userTaskContext = system;
-	}
-	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2WorldId world = CreateWorld(workerCount, system);
 	cd2BodyDef bd = cd2DefaultBodyDef();
 	cd2BodyId ground = cd2CreateBody(world, &bd);
 	bd.type = CD_KINEMATIC_BODY;
@@ -368,20 +372,7 @@ static uint64_t RunJointGrid(int workerCount, TestTaskSystem* system)
 	{
 		cd2World_Step(world, DT, 4);
 	}
-	uint64_t h = UINT64_C(14695981039346656037);
-	for (int i = 0; i < count; ++i)
-	{
-		cd2Vec p = cd2Body_GetPosition(bodies[i]);
-		cd2Rot q = cd2Body_GetRotation(bodies[i]);
-		cd2Vec v = cd2Body_GetLinearVelocity(bodies[i]);
-		HashReal(&h, p.x);
-		HashReal(&h, p.y);
-		HashReal(&h, q.c);
-		HashReal(&h, q.s);
-		HashReal(&h, v.x);
-		HashReal(&h, v.y);
-		HashReal(&h, cd2Body_GetAngularVelocity(bodies[i]));
-	}
+	uint64_t h = HashBodies(bodies, count);
 	cd2DestroyWorld(world);
 	return h;
 }
