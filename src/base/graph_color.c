@@ -48,7 +48,8 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
 	}
 	/* Per body, one bit per colour it already has: a constraint's free colours are the bits clear in
 	 * both of its bodies' masks. */
-	uint32_t* used = (uint32_t*)cdArena_Alloc(arena, (size_t)(bodyCount > 0 ? bodyCount : 1) * sizeof(uint32_t));
+	uint32_t* used =
+		(uint32_t*)cdArena_Alloc(arena, (size_t)(bodyCount > 0 ? bodyCount : 1) * sizeof(uint32_t));
 	int* start = (int*)cdArena_Alloc(arena, (size_t)(CD_GRAPH_COLOR_COUNT + 2) * sizeof(int));
 	if (used == NULL || start == NULL)
 	{

@@ -345,7 +345,8 @@ bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 		}
 		w->bounces = bounces;
 		anyBounces = anyBounces || bounces;
-		cdW mA = cdWLoad(in.invMassA), iA = cdWLoad(in.invIA), mB = cdWLoad(in.invMassB), iB = cdWLoad(in.invIB);
+		cdW mA = cdWLoad(in.invMassA), iA = cdWLoad(in.invIA), mB = cdWLoad(in.invMassB),
+			iB = cdWLoad(in.invIB);
 		cdW nx = cdWLoad(in.normalX), ny = cdWLoad(in.normalY);
 		cdW tx = ny, ty = cdWNeg(nx);
 		cdW vAx = cdWLoad(in.vAx), vAy = cdWLoad(in.vAy), wA = cdWLoad(in.wA);
@@ -380,11 +381,11 @@ bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			wp->anchorAy = aAy;
 			wp->anchorBx = aBx;
 			wp->anchorBy = aBy;
-			wp->baseSeparation = cdWSelect(
-				has,
-				cdWSub(cdWLoad(in.separation[k]),
-					   cdWAdd(cdWMul(cdWSub(aBx, aAx), nx), cdWMul(cdWSub(aBy, aAy), ny))),
-				zero);
+			wp->baseSeparation =
+				cdWSelect(has,
+						  cdWSub(cdWLoad(in.separation[k]),
+								 cdWAdd(cdWMul(cdWSub(aBx, aAx), nx), cdWMul(cdWSub(aBy, aAy), ny))),
+						  zero);
 			wp->normalImpulse = cdWLoad(normalImpulse[k]);
 			wp->tangentImpulse = cdWLoad(tangentImpulse[k]);
 			wp->maxNormalImpulse = zero;
@@ -586,7 +587,8 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 		for (int k = 0; k < 2; ++k)
 		{
 			const cd2ContactPointWide* cp = c->points + k;
-			cdW skip = cdWOr(cdWGreater(cp->relativeVelocity, threshold), cdWEqual(cp->maxNormalImpulse, zero));
+			cdW skip =
+				cdWOr(cdWGreater(cp->relativeVelocity, threshold), cdWEqual(cp->maxNormalImpulse, zero));
 			applies[k] = cdWAndNot(skip, bouncy);
 		}
 		if (!cdWAny(cdWOr(applies[0], applies[1])))
@@ -604,8 +606,10 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 		for (int lane = 0; lane < CD_W; ++lane)
 		{
 			cd2Vec n = {cdWGetLane(&nx, lane), cdWGetLane(&ny, lane)};
-			cd2Vec accA = c->indexA[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexA[lane]];
-			cd2Vec accB = c->indexB[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexB[lane]];
+			cd2Vec accA =
+				c->indexA[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexA[lane]];
+			cd2Vec accB =
+				c->indexB[lane] == zeroIndex ? CD2_VEC_ZERO : context->accelerations[c->indexB[lane]];
 			accelerationLanes[lane] = cd2Dot(n, cd2Sub(accB, accA));
 		}
 		cdW normalAcceleration = cdWLoad(accelerationLanes);
@@ -626,7 +630,8 @@ void cd2ApplyRestitutionWide(cd2StepContext* context, int start, int end)
 			cdW newImpulse = cdWMax(cdWSub(cp->normalImpulse, negImpulse), zero);
 			cdW impulse = cdWSub(newImpulse, cp->normalImpulse);
 			cp->normalImpulse = cdWSelect(apply, newImpulse, cp->normalImpulse);
-			cp->maxNormalImpulse = cdWSelect(apply, cdWMax(cp->maxNormalImpulse, impulse), cp->maxNormalImpulse);
+			cp->maxNormalImpulse =
+				cdWSelect(apply, cdWMax(cp->maxNormalImpulse, impulse), cp->maxNormalImpulse);
 			cdW Px = cdWMul(impulse, nx), Py = cdWMul(impulse, ny);
 			vAx = cdWSelect(apply, cdWSub(vAx, cdWMul(mA, Px)), vAx);
 			vAy = cdWSelect(apply, cdWSub(vAy, cdWMul(mA, Py)), vAy);

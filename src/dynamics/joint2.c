@@ -856,8 +856,8 @@ static const cd2SolverBody s_jointStaticBody = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.0
 
 /* The solver's view of a joint; an immovable body is a zero-mass copy in the caller's scratch
  * (written by the solve, never shared between threads). */
-static inline void cd2MakeArgs(const cd2StepContext* context, const cd2JointRef* ref, cd2JointSolverArgs* args,
-							   cd2SolverBody* scratchA, cd2SolverBody* scratchB)
+static inline void cd2MakeArgs(const cd2StepContext* context, const cd2JointRef* ref,
+							   cd2JointSolverArgs* args, cd2SolverBody* scratchA, cd2SolverBody* scratchB)
 {
 	args->data = ref->data;
 	if (ref->indexA >= 0)
@@ -914,8 +914,8 @@ bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 	{
 		return true;
 	}
-	context->jointRefs =
-		(cd2JointRef*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount * sizeof(cd2JointRef));
+	context->jointRefs = (cd2JointRef*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount *
+																				 sizeof(cd2JointRef));
 	/* The slot of each joint, so that the joints are read in index order (in memory order). */
 	int* slotOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
 	if (context->jointRefs == NULL || slotOf == NULL)

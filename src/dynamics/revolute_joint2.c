@@ -53,8 +53,8 @@ void cd2SolveRevoluteJoint(cd2JointSolverArgs* args, bool useBias)
 		if (d->enableLimit)
 		{
 			/* lower */
-			cdReal impulse = cd2SolveLimitSide(d, context, useBias, d->axialMass, jointAngle - d->lower, wB - wA,
-											   &d->lowerImpulse);
+			cdReal impulse = cd2SolveLimitSide(d, context, useBias, d->axialMass, jointAngle - d->lower,
+											   wB - wA, &d->lowerImpulse);
 			wA -= iA * impulse;
 			wB += iB * impulse;
 			/* upper: the same with the sign flipped */

@@ -746,8 +746,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		jointColors += context.jointColorStart[c + 1] > context.jointColorStart[c] ? 1 : 0;
 	}
 	/* Restitution adds one stage per contact colour after the sub-steps. */
-	list.stageCapacity =
-		8 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
+	list.stageCapacity = 8 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
 	list.stages =
 		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
 	if (list.stages == NULL)

@@ -279,7 +279,7 @@ typedef struct cd2ContactConstraintWide
 	 * body, kinematic bodies) are shared between blocks of one colour and only read. */
 	unsigned char movesA[CD_W], movesB[CD_W];
 	unsigned char pointCount[CD_W];
-	bool bounces; /* some lane has restitution */
+	bool bounces;	   /* some lane has restitution */
 	int contact[CD_W]; /* the lane's contact, -1 for an empty lane */
 } cd2ContactConstraintWide;
 
@@ -294,7 +294,7 @@ typedef struct cd2StepContext
 	cd2SolverBodyParams* params;
 	cd2Vec* accelerations; /* of each solver body from gravity and forces (restitution) */
 	int bodyCount;
-	cd2ContactConstraint* constraints; /* the overflow colour's, from overflowStart on */
+	cd2ContactConstraint* constraints;	 /* the overflow colour's, from overflowStart on */
 	const cd2ConstraintPair* pairs;		 /* of each constraint (colour order), for cd2PrepareContacts */
 	const cd2ConstraintPair* indexOrder; /* the same in contact index order */
 	int constraintCount;
