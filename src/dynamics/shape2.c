@@ -133,8 +133,49 @@ cd2Aabb cd2ComputeWorldShapeAabb(const cd2WorldShape* shape, cd2Transform xf)
 		}
 		return cd2AabbInflate(aabb, p->radius);
 	}
-	cd2Shape tagged = cd2MakeTaggedShape(shape, xf);
-	return cd2ComputeShapeAabb(&tagged);
+	/* The round shapes and segments also skip the tagged copy and the dispatch; each case gives the
+	 * bits of cd2ComputeShapeAabb on the transformed shape. */
+	cd2Vec p1;
+	cd2Vec p2;
+	cdReal radius = CD_R(0.0);
+	switch (shape->type)
+	{
+		case CD2_WORLD_SHAPE_CIRCLE:
+		{
+			cd2Vec c = cd2TransformPoint(xf, shape->geometry.circle.center);
+			cd2Vec r = {shape->geometry.circle.radius, shape->geometry.circle.radius};
+			cd2Aabb aabb = {cd2Sub(c, r), cd2Add(c, r)};
+			return aabb;
+		}
+		case CD2_WORLD_SHAPE_CAPSULE:
+			p1 = shape->geometry.capsule.p1;
+			p2 = shape->geometry.capsule.p2;
+			radius = shape->geometry.capsule.radius;
+			break;
+		case CD2_WORLD_SHAPE_SEGMENT:
+			p1 = shape->geometry.segment.p1;
+			p2 = shape->geometry.segment.p2;
+			break;
+		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
+			p1 = shape->geometry.chainSegment.p1;
+			p2 = shape->geometry.chainSegment.p2;
+			break;
+		default:
+		{
+			cd2Shape tagged = cd2MakeTaggedShape(shape, xf);
+			return cd2ComputeShapeAabb(&tagged);
+		}
+	}
+	p1 = cd2TransformPoint(xf, p1);
+	p2 = cd2TransformPoint(xf, p2);
+	cd2Aabb aabb = {cd2Min(p1, p2), cd2Max(p1, p2)};
+	if (shape->type == CD2_WORLD_SHAPE_CAPSULE)
+	{
+		cd2Vec r = {radius, radius};
+		aabb.min = cd2Sub(aabb.min, r);
+		aabb.max = cd2Add(aabb.max, r);
+	}
+	return aabb;
 }
 
 /* The fat-box margin of a moving shape: a fraction of its size, at most CD2_AABB_MARGIN. The
