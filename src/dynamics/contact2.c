@@ -282,6 +282,7 @@ static void cd2CreateContact(cd2World* world, int indexA, int indexB)
 	contact->bodyA = a->body;
 	contact->bodyB = b->body;
 	contact->flags = (a->isSensor || b->isSensor) ? CD2_CONTACT_SENSOR : 0u;
+	world->sensorContactCount += (a->isSensor || b->isSensor) ? 1 : 0;
 	/* Mixing rules: geometric mean friction, larger restitution, larger rolling resistance. */
 	contact->friction = cdSqrt(a->friction * b->friction);
 	contact->restitution = cdMax(a->restitution, b->restitution);
@@ -527,6 +528,7 @@ void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies)
 	cdPairSet_Remove(&world->pairs, cdPairKey(contact->shapeA, contact->shapeB));
 	cd2UnlinkContactEdge(world, contactIndex, 0, contact->bodyA);
 	cd2UnlinkContactEdge(world, contactIndex, 1, contact->bodyB);
+	world->sensorContactCount -= (contact->flags & CD2_CONTACT_SENSOR) != 0 ? 1 : 0;
 	contact->inUse = false;
 	cdIdPool_Free(&world->contactPool, contactIndex);
 }
@@ -558,6 +560,10 @@ static bool cd2SensorOverlaps(cd2World* world, const cd2Contact* contact)
 
 void cd2UpdateSensors(cd2World* world)
 {
+	if (world->sensorContactCount == 0)
+	{
+		return;
+	}
 	for (int i = 0; i < world->contacts.count; ++i)
 	{
 		cd2Contact* contact = world->contacts.data + i;

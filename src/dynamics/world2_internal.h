@@ -381,6 +381,8 @@ typedef struct cd2World
 	/* End events recorded by the last step; those appended after it (a shape destroyed between
 	 * steps) are kept for the next step's arrays. */
 	int stepEndEventCount, stepSensorEndEventCount;
+	/* Live contacts with a sensor shape: the sensor pass skips its scan of every contact at 0. */
+	int sensorContactCount;
 	cdReal stepTimeStep; /* of the step in progress (0 outside a step) */
 	cdArena arena;
 	/* tasks: the user's callbacks, or the built-in pool's (see cd2RunTask) */
