@@ -9,7 +9,13 @@ For each dimension N (2, 3):
     "## ND matrix" section, and every cdNOverlap<A><B> named there is a row of the pair table;
   * every pair row's typed manifold function (the Collide column, unless CORE or NONE) is named in
     the "## ND contact manifolds" section, and every cdNCollide<A><B> named there is a row's;
-  * a CLOSED_FORM distance whose cdNClosestPoints<A><B> is public is named in the matrix section;
+  * the Distance column: `cdNDistance` is named in the matrix section (it serves every pair); a
+    CLOSED_FORM distance whose cdNClosestPoints<A><B> is public is named there, and every
+    cdNClosestPoints<A><B> named there is a CLOSED_FORM row's; a named closed-form distance
+    (two circles, two spheres) is said there as "two <shape>s in closed form", and every such
+    phrase there is a named distance row's;
+  * the Collide column: every typed manifold has its public ...Local form, and a CORE row (only
+    the generic dispatcher handles the pair) needs `cdNCollide` named in the manifold section;
   * every public PointIn / ClosestPointOn / Raycast function of a shape row is named in API.md, and
     every cdNPointIn<Shape> / cdNClosestPointOn<Shape> / cdNRaycast<Shape> named in the matrix
     section is its shape row's;
@@ -125,6 +131,38 @@ def check_dimension(n, pairs_text, api, public, errors):
         if distance == "CLOSED_FORM" and closest in public and closest not in matrix:
             errors.append("docs/API.md '## %s': `%s` (closed-form distance of %s) is not named"
                           % (matrix_key, closest, pair))
+    # The Distance column.
+    if "%sDistance" % prefix not in matrix:
+        errors.append("docs/API.md '## %s': the dispatcher `%sDistance` (every pair's distance) is not named"
+                      % (matrix_key, prefix))
+    closed_pairs = {"%sClosestPoints%s%s" % (prefix, row[0], row[1]) for row in pair_rows if row[3] == "CLOSED_FORM"}
+    for name in sorted(matrix):
+        if re.fullmatch(r"%sClosestPoints(%s)(%s)" % (prefix, shape_alt, shape_alt), name) and name not in closed_pairs:
+            errors.append("docs/API.md '## %s': `%s` is not a CLOSED_FORM distance of the pair table (pairs%d.h)"
+                          % (matrix_key, name, n))
+    matrix_text = " ".join(sec[matrix_key].split())
+    named_distances = {row[0].lower() for row in pair_rows
+                       if row[3] not in ("GJK", "CLOSED_FORM") and row[0] == row[1]}
+    for row in pair_rows:
+        if row[3] not in ("GJK", "CLOSED_FORM") and row[0] != row[1]:
+            errors.append("src/query/pairs%d.h: the closed-form distance %s of %s-%s: only same-shape pairs "
+                          "have one (extend check_api_table.py for others)" % (n, row[3], row[0], row[1]))
+    for shape in sorted(named_distances):
+        if ("two %ss in closed form" % shape) not in matrix_text:
+            errors.append("docs/API.md '## %s': the closed-form distance of two %ss (pairs%d.h) is not said "
+                          "(\"two %ss in closed form\")" % (matrix_key, shape, n, shape))
+    for shape in re.findall(r"two (\w+)s in closed form", matrix_text):
+        if shape not in named_distances:
+            errors.append("docs/API.md '## %s': \"two %ss in closed form\" but the pair table's %s-%s row "
+                          "has no closed-form distance" % (matrix_key, shape, shape, shape))
+    # The Collide column.
+    for name in sorted(collides):
+        if name + "Local" not in public:
+            errors.append("include/collide: `%sLocal` (the local-frame form of %s) is not public" % (name, name))
+    if any(row[4] == "CORE" for row in pair_rows) and "%sCollide" % prefix not in manifolds:
+        errors.append("docs/API.md '## %s': `%sCollide` (the pairs the table marks CORE) is not named"
+                      % (manifold_key, prefix))
+
     for name in sorted(matrix):
         if re.fullmatch(r"%sOverlap(%s)(%s)" % (prefix, shape_alt, shape_alt), name) and name not in overlaps:
             errors.append("docs/API.md '## %s': `%s` is not a row of the pair table (pairs%d.h)"

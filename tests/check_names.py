@@ -217,10 +217,32 @@ def check(include_dir):
     return functions, errors
 
 
+def check_former_names_doc(api_path, errors):
+    """docs/API.md's "## Former names" table lists exactly FORMER_NAMES (the note users read)."""
+    if not os.path.exists(api_path):
+        return
+    with open(api_path, encoding="utf-8") as f:
+        text = f.read()
+    start = text.find("\n## Former names")
+    if start < 0:
+        errors.append("docs/API.md: no '## Former names' section listing the renamed functions")
+        return
+    end = text.find("\n## ", start + 1)
+    section = text[start:end if end >= 0 else len(text)]
+    listed = dict(re.findall(r"^\|\s*`(\w+)`\s*\|\s*`(\w+)`\s*\|", section, re.M))
+    for old, new in FORMER_NAMES.items():
+        if listed.get(old) != new:
+            errors.append(f"docs/API.md '## Former names': add the row | `{old}` | `{new}` |")
+    for old in listed:
+        if old not in FORMER_NAMES:
+            errors.append(f"docs/API.md '## Former names': `{old}` is not in FORMER_NAMES (no alias macro)")
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     include_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "include", "collide")
     functions, errors = check(include_dir)
+    check_former_names_doc(os.path.join(include_dir, "..", "..", "docs", "API.md"), errors)
     for e in errors:
         print("check_names: " + e)
     print(f"check_names: {len(functions)} functions checked, {len(EXCEPTIONS)} listed exceptions, "

@@ -264,7 +264,7 @@ bool RunCase(const Options& options, int dim, int n, SceneKind kind, std::vector
 			continue;
 		}
 		// bt32BitAxisSweep3 inserts each proxy into sorted endpoint arrays (O(N) per insert):
-		// building 100,000 proxies took 505 s here, so it runs up to 20,000 only.
+		// building 100,000 proxies takes minutes (O(N^2)), so it runs up to 20,000 only.
 		if (name == "bullet-sap" && n > 20000)
 		{
 			std::printf(

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Turns the text output of collide_bench, collide_bench_manifold2 or collide_bench_manifold3
-into CSV rows (stdout), so that runs can be kept in bench/results/<machine>/ and compared.
+"""Turns the text output of collide_bench, collide_bench_manifold2, collide_bench_manifold3 or
+collide_bench_scenes into CSV rows (stdout), so that runs can be kept in bench/results/<machine>/
+and compared.
 
-Usage: to_csv.py collide_bench|manifold2|manifold3 RUN.txt > RUN.csv
+Usage: to_csv.py collide_bench|manifold2|manifold3|scenes RUN.txt > RUN.csv
 (collide_bench also writes CSV itself with --csv; this script reads runs saved as text.)"""
 import re
 import sys
@@ -37,7 +38,15 @@ def manifold3(lines):
             print(",".join([f"\"{cells[0]}\"", f"\"{cells[1]}\""] + values))
 
 
+def scenes(lines):
+    print("query,collide_ns,peer,peer_function,peer_ns,ratio")
+    for line in lines:
+        m = re.match(r"^((?:2D|3D) .*?)\s+([\d.]+) (\S+) (.*?)\s+([\d.]+)\s+([\d.]+)\s*$", line)
+        if m:
+            print(f"\"{m.group(1)}\",{m.group(2)},{m.group(3)},\"{m.group(4)}\",{m.group(5)},{m.group(6)}")
+
+
 if __name__ == "__main__":
     kind, path = sys.argv[1], sys.argv[2]
     lines = open(path, encoding="utf-8").read().split("\n")
-    {"collide_bench": collide_bench, "manifold2": manifold2, "manifold3": manifold3}[kind](lines)
+    {"collide_bench": collide_bench, "manifold2": manifold2, "manifold3": manifold3, "scenes": scenes}[kind](lines)

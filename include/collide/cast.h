@@ -121,10 +121,10 @@ typedef struct cdToiOutput
 
 /* First time in [0, 1] at which the distance between the moving shapes falls to
  * targetSeparation (>= 0, e.g. CD_LINEAR_SLOP), found to within tolerance (> 0, e.g. a quarter
- * of a slop; raised to a few epsilons of the coordinates when smaller). The distance is that of
- * cd2Distance / cd3Distance (radii included). A half-space (3D) may move but not rotate: a
- * rotating half-space gives CD_TOI_FAILED. Symmetric: swapping the shapes with their sweeps
- * gives the same answer up to round-off. */
+ * of a slop; raised to 64 CD_REAL_EPSILON times the largest coordinate when smaller). The
+ * distance is that of cd2Distance / cd3Distance (radii included). A half-space (3D) may move
+ * but not rotate: a rotating half-space gives CD_TOI_FAILED. Symmetric: swapping the shapes
+ * with their sweeps gives the same answer up to round-off. */
 CD_API cdToiOutput cd2TimeOfImpact(const cd2Shape* a, const cd2Sweep* sweepA, const cd2Shape* b,
 								   const cd2Sweep* sweepB, cdReal targetSeparation, cdReal tolerance);
 CD_API cdToiOutput cd3TimeOfImpact(const cd3Shape* a, const cd3Sweep* sweepA, const cd3Shape* b,

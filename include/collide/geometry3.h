@@ -70,11 +70,17 @@ typedef struct cd3Ray
  * Built by cd3ComputeHull (quickhull) in one block from cdAlloc, released by cd3DestroyHull;
  * immutable afterwards, so one hull can be shared by many shapes and threads.
  *
- * Tolerances, all relative to the point cloud: with E the diagonal of the points' bounding box,
- * points closer than 16 eps E (float; 256 eps E in double; eps = CD_REAL_EPSILON) are welded,
- * faces whose vertices lie within 4 eps E (64 eps E in double) of a common plane are merged
- * into one polygon, and a set that is that flat (or collinear, or coincident) is
- * CD_ERROR_DEGENERATE. The hull contains every input point within cd3Hull_GetTolerance. */
+ * Tolerances (the one statement of them; docs/HULLS.md links here), all relative to the point
+ * cloud: with E the diagonal of the points' bounding box and eps = CD_REAL_EPSILON,
+ * - quickhull visibility: 1e-12 E in the float build (double arithmetic on float input),
+ *   1024 eps E in the double build;
+ * - face merging: faces whose vertices lie within 4 eps E (4096 eps E in double) of a common
+ *   plane are merged into one polygon;
+ * - welding: points closer than 16 eps E (16384 eps E in double) are welded, and a set that flat
+ *   (or collinear, or coincident) is CD_ERROR_DEGENERATE;
+ * - cd3Hull_GetTolerance (validation, containment of the input): 64 eps E (65536 eps E in
+ *   double) plus 16 eps times the largest coordinate; the hull contains every input point within
+ *   it. */
 
 /* At most this many input points (and so at most this many hull vertices). */
 #define CD3_MAX_HULL_POINTS 16384
@@ -131,8 +137,8 @@ CD_API cdResult cd3MakeCylinderHull(cdReal halfHeight, cdReal radius, int segmen
 /* A cone about the y axis: base circle (`segments` sides) at y = -halfHeight, apex at +halfHeight. */
 CD_API cdResult cd3MakeConeHull(cdReal halfHeight, cdReal radius, int segments, cd3Hull** hull);
 
-/* Distance within which the hull's vertices count as lying on its face planes: 64 eps E (65536
- * eps E in double) plus 16 eps times the largest coordinate (E: the diagonal of the bounds). */
+/* Distance within which the hull's vertices count as lying on its face planes (the value:
+ * "Tolerances" above). */
 CD_API cdReal cd3Hull_GetTolerance(const cd3Hull* hull);
 
 /* Checks a hull: finite data, indices in range, vertexColumns (when not NULL) equal to the

@@ -9,7 +9,18 @@
  * point + separation/2 * normal on B's. A pair with pointCount 0 has no contact (its normal is
  * zero). Segments are zero-radius capsules: two segments (no area) only touch where they cross
  * or come within the speculative distance. Functions name their shapes in the canonical order
- * Circle, Capsule, Polygon, Segment; cd2Collide takes tagged shapes in either order. */
+ * Circle, Capsule, Polygon, Segment; cd2Collide takes tagged shapes in either order.
+ *
+ * Reference edge bias (the one statement of this rule; docs/API.md links here): between two
+ * polygon-like cores (polygons, boxes, AABBs, capsules and segments as their axes) the reference
+ * edge is A's unless B's separates by more than 0.1 CD_LINEAR_SLOP (5e-4 m at the default length
+ * unit). The separations are measured along the reference edge's normal, so they are the exact
+ * depths along the reported normal: B moved by minus the smallest separation along the normal just
+ * touches A. The bias can take an edge whose depth exceeds the smallest depth by up to 0.1 slop;
+ * it is kept on purpose: the reference edge, the normal and the feature ids then stay the same from
+ * step to step when two edges are nearly tied (a box resting on another at a tiny tilt), which is
+ * what warm starting needs, and a solver pushing along the reported normal by the reported depth
+ * ends the overlap exactly, the extra push well inside the slop it leaves anyway. */
 #ifndef COLLIDE_MANIFOLD2_H
 #define COLLIDE_MANIFOLD2_H
 
@@ -75,7 +86,7 @@ CD_API cd2Manifold cd2CollideChainSegmentPolygon(const cd2ChainSegment* a, const
  * different kinds run the pair function in canonical order and flip the normal when a and b were
  * swapped, so cd2Collide(b, a) reports the same points, separations and ids with the opposite
  * normal. Two polygon-like shapes (polygon, box, AABB) run in the given order: on a near tie
- * between the two reference edges, A's is preferred (by up to 0.1 linear slop). */
+ * between the two reference edges, A's is preferred (the reference edge bias above). */
 CD_API cd2Manifold cd2Collide(const cd2Shape* a, const cd2Shape* b, cdReal speculativeDistance);
 
 /* ---- local-frame forms ---------------------------------------------------------------------

@@ -25,6 +25,13 @@
  * bias (2e-4 of the size); otherwise the smallest separation is the exact depth. For separated
  * pairs the smallest separation is the distance (cd3Distance).
  *
+ * Thresholds (the one statement of them; docs/API.md links here): pairs of solid polytopes with
+ * more than 1024 edge pairs (two hulls of 32 vertices) take GJK and EPA for the depth and normal
+ * instead of the edge query, then clip the face of A (or B) whose normal is within 1e-4 in cosine
+ * of that normal, else report one point at the EPA witnesses. A capsule lies on a face, and gets 2 points,
+ * when the sine of its axis's tilt to the face plane is below 0.01. Faces of more than 64
+ * vertices are clipped with their first 64 vertices.
+ *
  * Triangles are the two-sided surface of cd3Triangle (not solid); triangle against triangle
  * resolves crossing triangles along their axis of least overlap. Functions name their shapes in the
  * canonical order of cd3ShapeType (Sphere, Capsule, Box, Triangle, Hull); cd3Collide takes tagged

@@ -1,10 +1,17 @@
 /* collide: 3D queries on primitive shapes: overlap tests, point containment, closest points,
  * ray casts, and the generic dispatchers on tagged shapes. Queries allocate nothing.
  *
- * Semantics (pinned down by tests/, spelled out in docs/API.md):
+ * Semantics (pinned down by tests/; this is the one statement of these rules, for the 2D
+ * queries of query2.h too, and docs/API.md links here):
  * - Shapes are closed: touching counts as overlapping. Overlap is true exactly when the
- *   distance between the shapes is zero, up to a tolerance that absorbs round-off in rotated
- *   tests (docs/API.md gives it); sphere-like tests compare squared distances exactly.
+ *   distance between the shapes is zero, up to the tolerance below.
+ * - Tolerance: the source texts' tests (cd3PointInAabb, cd3OverlapAabbAabb, cd3PointInSphere,
+ *   cd3OverlapSphereSphere, cd3OverlapSphereAabb; cd2PointInAabb, cd2OverlapAabbAabb,
+ *   cd2OverlapCircleCircle and the 2D circle/AABB tests) compare squared distances exactly (<=,
+ *   no square root). Every other test accepts a gap of up to 16 CD_REAL_EPSILON (3D) or
+ *   8 CD_REAL_EPSILON (2D) times the largest coordinate involved, measured relative to one of
+ *   the two shapes (about 2e-6 relative in float, 4e-15 in double), so that touching within
+ *   round-off counts. Half-space tests measure the offset from the world origin.
  * - Closest point on a solid shape is the query point itself when it lies inside.
  * - Ray casts report the first point where the ray enters the shape: fraction t in [0, 1],
  *   the point origin + t * translation and the outward unit surface normal there. A ray whose
@@ -80,7 +87,8 @@ CD_API bool cd3OverlapTriangleTriangle(cd3Triangle a, cd3Triangle b);
 CD_API bool cd3OverlapTrianglePlane(cd3Triangle t, cd3Plane p);
 CD_API bool cd3OverlapTriangleSegment(cd3Triangle t, cd3Segment g);
 
-/* Two half-spaces overlap unless their normals are opposite and their solid sides apart. */
+/* Two half-spaces overlap unless their normals are opposite (the sine of their angle at most
+ * 16 CD_REAL_EPSILON) and their solid sides are apart by more than the tolerance above. */
 CD_API bool cd3OverlapPlanePlane(cd3Plane a, cd3Plane b);
 CD_API bool cd3OverlapPlaneSegment(cd3Plane p, cd3Segment g);
 
@@ -119,14 +127,17 @@ CD_API bool cd3Overlap(const cd3Shape* a, const cd3Shape* b);
 CD_API bool cd3PointInShape(const cd3Shape* shape, cd3Vec p);
 CD_API cd3Vec cd3ClosestPointOnShape(const cd3Shape* shape, cd3Vec p);
 
-/* Segments are hit only by rays that touch them (within tolerance); see docs/API.md. */
+/* A segment is hit when the ray passes within 64 CD_REAL_EPSILON times the largest coordinate
+ * of it; the normal points from the segment towards the ray. */
 CD_API bool cd3Raycast(const cd3Shape* shape, cd3Ray ray, cd3RayHit* hit);
 
 /* Distance and closest points between any two shapes (GJK on the support functions; a
  * half-space is handled exactly). pointA lies on a, pointB on b. */
 CD_API cd3ClosestPoints cd3Distance(const cd3Shape* a, const cd3Shape* b);
 
-/* cd3Distance, also telling how GJK went (status may be NULL). */
+/* cd3Distance, also telling how GJK went (status may be NULL). GJK (cd3Distance, cd2Distance and
+ * their cached forms) stops after 64 iterations at the latest and returns the best answer found;
+ * status->hitIterationCap then says so. */
 CD_API cd3ClosestPoints cd3DistanceWithStatus(const cd3Shape* a, const cd3Shape* b, cdDistanceStatus* status);
 
 /* A GJK warm start across frames (Catto, "Computing Distance", GDC 2010): the last simplex as

@@ -4,6 +4,7 @@
 
 #include "../base/radix_sort.h"
 #include "../broad/broad_internal.h"
+#include "../query/pairs2.h"
 
 #include <limits.h>
 
@@ -41,113 +42,90 @@ static inline cd2Transform cd2InverseTransform(cd2Transform xf)
 	return inv;
 }
 
+/* The world's shapes in the pair table (src/query/pairs2.h): the table's circle, capsule, polygon
+ * and segment are world shape types (an AABB or a box is made a polygon when it joins a body, so
+ * their rows are skipped: CD2_WORLD_PROBE_ marks them), each with the world type and the way its
+ * functions take it from a const cd2WorldShape* s. */
+#define CD2_WORLD_TYPE_Circle CD2_WORLD_SHAPE_CIRCLE
+#define CD2_WORLD_TYPE_Capsule CD2_WORLD_SHAPE_CAPSULE
+#define CD2_WORLD_TYPE_Polygon CD2_WORLD_SHAPE_POLYGON
+#define CD2_WORLD_TYPE_Segment CD2_WORLD_SHAPE_SEGMENT
+#define CD2_WORLD_ARG_Circle(s) ((s)->geometry.circle)
+#define CD2_WORLD_ARG_Capsule(s) ((s)->geometry.capsule)
+#define CD2_WORLD_ARG_Polygon(s) (&(s)->geometry.polygon)
+#define CD2_WORLD_ARG_Segment(s) ((s)->geometry.segment)
+#define CD2_WORLD_PROBE_Aabb ~, 1
+#define CD2_WORLD_PROBE_Box ~, 1
+/* IN_WORLD(Name, MACRO) expands to MACRO when Name is a world shape type, to nothing otherwise. */
+#define CD2_IN_WORLD(name, macro)                                                                            \
+	CD_PAIR_CAT(CD_PAIR_SELECT_, CD_PAIR_SECOND_I(CD_PAIR_CAT(CD2_WORLD_PROBE_, name), 0, ~))(macro)
+#define CD2_WORLD_PAIR_KEY(typeA, typeB)                                                                     \
+	((int)(typeA) * ((int)CD2_WORLD_SHAPE_CHAIN_SEGMENT + 1) + (int)(typeB))
+
+/* A pair stored out of the table's order (B before A in it): B moves into A's frame and the
+ * table's function runs with the roles swapped, the normal flipped. A circle or a capsule is cheap
+ * to move; a polygon is not, so for a polygon B the other shape moves into the polygon's frame
+ * (the local form with the inverse transform) and the manifold comes back into A's. */
+#define CD2_SWAPPED_Circle(Collide, b, a) cd2FlipNormal(Collide(cd2CircleIn(xfAB, b), a, sd))
+#define CD2_SWAPPED_Capsule(Collide, b, a) cd2FlipNormal(Collide(cd2CapsuleIn(xfAB, b), a, sd))
+#define CD2_SWAPPED_Polygon(Collide, b, a)                                                                   \
+	cd2FlipNormal(cd2TransformManifold(xfAB, Collide##Local(b, a, cd2InverseTransform(xfAB), sd)))
+
+/* A pair in the table's order runs its local-frame form; the same pair stored the other way round
+ * runs CD2_SWAPPED_<A>. */
+#define CD2_CONTACT_FORWARD(NameA, NameB, Collide)                                                           \
+	case CD2_WORLD_PAIR_KEY(CD2_WORLD_TYPE_##NameA, CD2_WORLD_TYPE_##NameB):                                 \
+		return Collide##Local(CD2_WORLD_ARG_##NameA(shapeA), CD2_WORLD_ARG_##NameB(shapeB), xfAB, sd);
+#define CD2_CONTACT_SWAPPED(NameA, NameB, Collide)                                                           \
+	case CD2_WORLD_PAIR_KEY(CD2_WORLD_TYPE_##NameB, CD2_WORLD_TYPE_##NameA):                                 \
+		return CD2_SWAPPED_##NameA(Collide, CD2_WORLD_ARG_##NameA(shapeB), CD2_WORLD_ARG_##NameB(shapeA));
+/* A same-shape pair has one case: CD2_IS_SAME(A, B) is 1 for those, 0 otherwise. */
+#define CD2_SAME_PROBE_Circle_Circle ~, 1
+#define CD2_SAME_PROBE_Capsule_Capsule ~, 1
+#define CD2_SAME_PROBE_Polygon_Polygon ~, 1
+#define CD2_SAME_PROBE_Segment_Segment ~, 1
+#define CD2_IS_SAME(a, b)                                                                                    \
+	CD_PAIR_SECOND_I(CD_PAIR_CAT(CD2_SAME_PROBE_, CD_PAIR_CAT(a, CD_PAIR_CAT(_, b))), 0, ~)
+#define CD2_CONTACT_BOTH(NameA, NameB, Collide)                                                              \
+	CD2_CONTACT_FORWARD(NameA, NameB, Collide)                                                               \
+	CD_PAIR_CAT(CD_PAIR_SELECT_, CD2_IS_SAME(NameA, NameB))(CD2_CONTACT_SWAPPED)(NameA, NameB, Collide)
+#define CD2_CONTACT_TYPED(NameA, NameB, Collide)                                                             \
+	CD_PAIR_TYPED(Collide, CD2_CONTACT_BOTH)(NameA, NameB, Collide)
+#define CD2_CONTACT_ROW(NameA, NameB, Overlap, Distance, Collide)                                            \
+	CD2_IN_WORLD(NameA, CD2_IN_WORLD(NameB, CD2_CONTACT_TYPED))(NameA, NameB, Collide)
+
 cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* shapeB, cd2Transform xfAB,
 							  cdReal speculativeDistance)
 {
 	cdReal sd = speculativeDistance;
-	switch (shapeA->type)
+	if (shapeA->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
 	{
-		case CD2_WORLD_SHAPE_CHAIN_SEGMENT:
+		/* A chain segment is no shape type of the table: it is always A (one-sided, with ghosts). */
+		const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
+		switch (shapeB->type)
 		{
-			const cd2ChainSegment* seg = &shapeA->geometry.chainSegment;
-			switch (shapeB->type)
+			case CD2_WORLD_SHAPE_CIRCLE:
+				return cd2CollideChainSegmentCircleLocal(seg, shapeB->geometry.circle, xfAB, sd);
+			case CD2_WORLD_SHAPE_CAPSULE:
+				return cd2CollideChainSegmentCapsuleLocal(seg, shapeB->geometry.capsule, xfAB, sd);
+			case CD2_WORLD_SHAPE_POLYGON:
+				return cd2CollideChainSegmentPolygonLocal(seg, &shapeB->geometry.polygon, xfAB, sd);
+			case CD2_WORLD_SHAPE_SEGMENT:
 			{
-				case CD2_WORLD_SHAPE_CIRCLE:
-					return cd2CollideChainSegmentCircleLocal(seg, shapeB->geometry.circle, xfAB, sd);
-				case CD2_WORLD_SHAPE_CAPSULE:
-					return cd2CollideChainSegmentCapsuleLocal(seg, shapeB->geometry.capsule, xfAB, sd);
-				case CD2_WORLD_SHAPE_POLYGON:
-					return cd2CollideChainSegmentPolygonLocal(seg, &shapeB->geometry.polygon, xfAB, sd);
-				case CD2_WORLD_SHAPE_SEGMENT:
-				{
-					cd2Capsule capsule = {shapeB->geometry.segment.p1, shapeB->geometry.segment.p2,
-										  CD_R(0.0)};
-					return cd2CollideChainSegmentCapsuleLocal(seg, capsule, xfAB, sd);
-				}
-				default:
-					break;
+				cd2Capsule capsule = {shapeB->geometry.segment.p1, shapeB->geometry.segment.p2, CD_R(0.0)};
+				return cd2CollideChainSegmentCapsuleLocal(seg, capsule, xfAB, sd);
 			}
-			break;
+			default:
+				break;
 		}
-		case CD2_WORLD_SHAPE_CIRCLE:
+	}
+	else
+	{
+		switch (CD2_WORLD_PAIR_KEY(shapeA->type, shapeB->type))
 		{
-			cd2Circle a = shapeA->geometry.circle;
-			switch (shapeB->type)
-			{
-				case CD2_WORLD_SHAPE_CIRCLE:
-					return cd2CollideCircleCircleLocal(a, shapeB->geometry.circle, xfAB, sd);
-				case CD2_WORLD_SHAPE_CAPSULE:
-					return cd2CollideCircleCapsuleLocal(a, shapeB->geometry.capsule, xfAB, sd);
-				case CD2_WORLD_SHAPE_POLYGON:
-					return cd2CollideCirclePolygonLocal(a, &shapeB->geometry.polygon, xfAB, sd);
-				case CD2_WORLD_SHAPE_SEGMENT:
-					return cd2CollideCircleSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
-				default:
-					break;
-			}
-			break;
-		}
-		case CD2_WORLD_SHAPE_CAPSULE:
-		{
-			cd2Capsule a = shapeA->geometry.capsule;
-			switch (shapeB->type)
-			{
-				case CD2_WORLD_SHAPE_CIRCLE:
-					return cd2FlipNormal(
-						cd2CollideCircleCapsule(cd2CircleIn(xfAB, shapeB->geometry.circle), a, sd));
-				case CD2_WORLD_SHAPE_CAPSULE:
-					return cd2CollideCapsuleCapsuleLocal(a, shapeB->geometry.capsule, xfAB, sd);
-				case CD2_WORLD_SHAPE_POLYGON:
-					return cd2CollideCapsulePolygonLocal(a, &shapeB->geometry.polygon, xfAB, sd);
-				case CD2_WORLD_SHAPE_SEGMENT:
-					return cd2CollideCapsuleSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
-				default:
-					break;
-			}
-			break;
-		}
-		case CD2_WORLD_SHAPE_POLYGON:
-		{
-			const cd2Polygon* a = &shapeA->geometry.polygon;
-			switch (shapeB->type)
-			{
-				case CD2_WORLD_SHAPE_CIRCLE:
-					return cd2FlipNormal(
-						cd2CollideCirclePolygon(cd2CircleIn(xfAB, shapeB->geometry.circle), a, sd));
-				case CD2_WORLD_SHAPE_CAPSULE:
-					return cd2FlipNormal(
-						cd2CollideCapsulePolygon(cd2CapsuleIn(xfAB, shapeB->geometry.capsule), a, sd));
-				case CD2_WORLD_SHAPE_POLYGON:
-					return cd2CollidePolygonPolygonLocal(a, &shapeB->geometry.polygon, xfAB, sd);
-				case CD2_WORLD_SHAPE_SEGMENT:
-					return cd2CollidePolygonSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
-				default:
-					break;
-			}
-			break;
-		}
-		case CD2_WORLD_SHAPE_SEGMENT:
-		{
-			cd2Segment a = shapeA->geometry.segment;
-			switch (shapeB->type)
-			{
-				case CD2_WORLD_SHAPE_CIRCLE:
-					return cd2FlipNormal(
-						cd2CollideCircleSegment(cd2CircleIn(xfAB, shapeB->geometry.circle), a, sd));
-				case CD2_WORLD_SHAPE_CAPSULE:
-					return cd2FlipNormal(
-						cd2CollideCapsuleSegment(cd2CapsuleIn(xfAB, shapeB->geometry.capsule), a, sd));
-				case CD2_WORLD_SHAPE_POLYGON:
-					/* The segment into the polygon's frame, the manifold back into A's. */
-					return cd2FlipNormal(cd2TransformManifold(
-						xfAB, cd2CollidePolygonSegmentLocal(&shapeB->geometry.polygon, a,
-															cd2InverseTransform(xfAB), sd)));
-				case CD2_WORLD_SHAPE_SEGMENT:
-					return cd2CollideSegmentSegmentLocal(a, shapeB->geometry.segment, xfAB, sd);
-				default:
-					break;
-			}
-			break;
+			CD2_PAIR_TABLE(CD2_CONTACT_ROW)
+			default:
+				break;
 		}
 	}
 	/* Two chain segments never make a contact. */

@@ -300,9 +300,8 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
  * same contact bit for bit on finite input (the first edge of the largest separation, ties to the
  * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8
  * edges, about half of them apart, the scan's single exit branch mispredicts less than the tree's branches on
- * the count and on the first four edges (callgrind's branch simulator on collide_bench_scenes' circle-polygon
- * pairs: 1.5 mispredictions per pair against 2.6, 185 instructions against 216), and the pair costs about 10%
- * less; cd2CollideCirclePolygonLocal uses it. For polygon cores. */
+ * the count and on the first four edges, and it executes fewer instructions;
+ * cd2CollideCirclePolygonLocal uses it. For polygon cores. */
 static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
 											  cdReal speculativeDistance)
 {
@@ -320,7 +319,7 @@ static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdRe
 		}
 		/* A branch, not a select: a select makes the edge, and so the loads of its vertices and
 		 * normal after the loop, wait for every separation; a predicted branch lets them start at
-		 * once (the pair took about 14% less: 1.46 -> 1.26 of Box2D 2.4 in collide_bench_scenes). */
+		 * once (collide_bench_scenes' circle-polygon row shows the difference). */
 		if (s > edgeSeparation)
 		{
 			edge = i;
@@ -393,8 +392,7 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 	cd2Vec v2 = reference->vertices[referenceEdge + 1 < reference->count ? referenceEdge + 1 : 0];
 
 	/* The incident edge by a kept branch, not a select (KEEP_BRANCH): its vertices' loads then
-	 * start as soon as the branch is predicted, not after every dot product (the polygon pairs of
-	 * collide_bench_scenes took about 10% less). */
+	 * start as soon as the branch is predicted, not after every dot product. */
 	int incidentEdge = 0;
 	cdReal lowest = CD_REAL_MAX;
 	for (int i = 0; i < incident->count; ++i)
@@ -1012,7 +1010,7 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	CD_ASSERT(b != NULL);
 	/* The centre in B's frame, cd2InvTransformPoint(xfB, centre): one subtraction and one
 	 * rotation on the way to the first edge test, whose branch every pair waits on (building the
-	 * inverse transform first and placing the centre by it took 7% longer a pair). */
+	 * inverse transform first and placing the centre by it adds work before that branch). */
 	cd2Rot q = xfB.q;
 	cd2Vec center = cd2InvRotateVector(q, cd2Sub(a.center, xfB.p));
 	cd2Manifold m;

@@ -47,8 +47,8 @@
 
 #define ID_VERTEX_PAIR 0x3fffffffu
 
-/* Out of line: the polytope path is cd3CollideBoxBox's rare fallback, and inlined there it made
- * the common box-box manifold ~10% slower (bench/manifold3: layout of the hot path). */
+/* Out of line: the polytope path is cd3CollideBoxBox's rare fallback, and inlined there it would
+ * crowd the common box-box manifold's hot path (code layout; bench/manifold3 shows it). */
 #if defined(__GNUC__) || defined(__clang__)
 #define MANIFOLD_NOINLINE __attribute__((noinline))
 #else

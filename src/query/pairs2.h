@@ -2,7 +2,8 @@
  * CD2_SHAPE_TABLE and every unordered pair of shape types one row in CD2_PAIR_TABLE, in the
  * canonical order of cd2ShapeType (the order pair functions name their shapes). The generic
  * dispatchers expand them (dispatch2.c, raycast2.c, manifold2.c,
- * geometry/shapes2.c, geometry/mass2.c) and so do the matrix tests, so adding a shape
+ * geometry/shapes2.c, geometry/mass2.c), so do the 2D world's contacts (dynamics/contact2.c)
+ * and the matrix tests, so adding a shape
  * means writing its functions and adding its rows (CONTRIBUTING.md, "Adding a shape").
  *
  * Per shape, besides its table row: CD2_TYPE_<Name> (its cd2ShapeType) and CD2_ARG_OF_<Name>(s)
@@ -16,7 +17,8 @@
  *   TypeName the string of cd2GetShapeTypeName; Validate(shape) its cdResult check (static in
  *            geometry/shapes2.c); ComputeAabb(shape) its bounds (geometry/shapes2.c);
  *            ComputeMass(shape, density) its mass (geometry/mass2.c; zero mass for a segment);
- *   MakeCore the shape as GJK sees it (its support points), MakeCore(shape, core) filling the
+ *   MakeCore the shape as GJK sees it (its support function: the points its support is taken
+ *            over), MakeCore(shape, core) filling the
  *            core's points and count (support2.h: cd2MakeCore, and through it GJK, the casts and
  *            cd2Distance);
  *   Radius   the rounding radius as an lvalue macro, Radius(const cd2Shape* s) (support2.h), or

@@ -16,8 +16,9 @@
  *   cd3GetShapeTypeName; Validate(shape) (static in geometry/shapes3.c), ComputeAabb(shape)
  *   (geometry/shapes3.c), ComputeMass(shape, density) (geometry/mass3.c; zero mass at the
  *   centroid for shapes without volume); MakeCore(shape, core) fills the shape's GJK core (its
- *   support points, support3.h: cd3MakeCore, and through it cd3Distance, the casts and time of
- *   impact), NONE for the half-space (no finite core: its users handle it apart); Radius(const cd3Shape* s)
+ *   support function: the points its support is taken over; support3.h: cd3MakeCore, and
+ *   through it cd3Distance, the casts and time of impact), NONE for the half-space (no finite
+ *   core: its users handle it apart); Radius(const cd3Shape* s)
  *   the rounding radius as an lvalue macro (support3.h), NONE for a sharp shape: the core's
  *   radius, and what the casts strip (cast3.c). A column is expanded only in the file that holds
  *   its functions, so static helpers are fine.

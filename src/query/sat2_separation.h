@@ -4,8 +4,8 @@
  * For each edge i of A the separation is min over B's vertices j of dot(n_i, b_j - v_i); the
  * answer is the first edge of the largest separation. A scalar scan that stops an edge as soon as
  * its running minimum falls to the best so far executes fewest instructions, but its exit branch
- * is data-dependent and mispredicts several times per polygon pair (callgrind's branch simulator:
- * 24 mispredictions per 8-gon pair against Box2D's 5), which cost more than the work it saves.
+ * is data-dependent and mispredicts several times per polygon pair, which costs more than the
+ * work it saves.
  * So every edge is scanned to the end without branches: the float build on SSE2 holds four of
  * A's edges in the lanes of a vector (edge normals and vertices transposed once) and walks B's
  * vertices, and so does the float build for WebAssembly SIMD128; elsewhere (double, other

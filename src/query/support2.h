@@ -115,7 +115,7 @@ static inline cd2Vec cd2CoreCenter(const cd2Core* core)
 }
 
 /* Largest |coordinate| without a branch per coordinate (max(x, -x) is a max instruction; a
- * branchy absolute value cost GJK's hot loops a fifth of their time in mispredictions). */
+ * branchy absolute value mispredicts in GJK's hot loops, whose signs are as good as random). */
 static inline cdReal cd2MaxAbs(cd2Vec v)
 {
 	return cdMax(cdMax(v.x, -v.x), cdMax(v.y, -v.y));
@@ -139,9 +139,9 @@ static inline int cd2CoreSupport(const cd2Core* core, cd2Vec direction)
 }
 
 /* cd2CoreSupport with the larger value kept by a select instead of a branch per point: which
- * point wins is as random as the direction, and GJK's distance on collide_bench_scenes' polygon
- * pairs ran 1.2x longer with a compare-and-branch per point (and with a hill climb, whose step
- * count is as random, about 3% longer). The same index as cd2CoreSupport, the first one on ties. */
+ * point wins is as random as the direction, so a compare-and-branch per point (or a hill climb,
+ * whose step count is as random) mispredicts in GJK's loop. The same index as cd2CoreSupport, the
+ * first one on ties. */
 static inline int cd2CoreSupportSelect(const cd2Core* core, cd2Vec direction)
 {
 	int best = 0;
@@ -160,9 +160,8 @@ static inline int cd2CoreSupportSelect(const cd2Core* core, cd2Vec direction)
  * convex ring the projections rise to one maximum (plateaus only at an edge perpendicular to the
  * direction, which is the top or the bottom), so a vertex neither of whose neighbours projects
  * farther is the support. Faster than the scan for larger rings when the start is close, as in
- * GJK where the previous support is: in one process against the scan, the 2D shape cast of
- * polygons with 3-8 vertices took 0.55-0.75 of the time (a first measurement that favoured the
- * scan was load noise). Segments and points are scanned. */
+ * GJK where the previous support is (the 2D shape cast of polygons with 3-8 vertices uses it).
+ * Segments and points are scanned. */
 static inline int cd2CoreSupportFrom(const cd2Core* core, cd2Vec direction, int start)
 {
 	int count = core->count;

@@ -159,7 +159,7 @@ static inline bool cd3MakeCore(const cd3Shape* shape, cd3Core* core)
 /* Corner i of a box core, centre +- axes in this order (the same bits whenever it is built: a
  * product by +-1 is exact). The signs come from the index bits by integer arithmetic: written as
  * a choice, GCC 12 branched on each bit, and the bits of a support corner are as good as random
- * (mispredicted branches were a third of GJK's time on box pairs). */
+ * (so those branches mispredict half the time). */
 static inline cd3Vec cd3BoxCorner(const cd3Core* core, int i)
 {
 	cdReal signX = (cdReal)(((i & 1) << 1) - 1);
@@ -200,7 +200,7 @@ static inline cd3Vec cd3CoreCenter(const cd3Core* core)
 }
 
 /* Largest |coordinate| without a branch per coordinate (max(x, -x) is a max instruction; a
- * branchy absolute value cost GJK's hot loops a tenth of their time in mispredictions). */
+ * branchy absolute value mispredicts in GJK's hot loops, whose signs are as good as random). */
 static inline cdReal cd3MaxAbs(cd3Vec v)
 {
 	return cdMax(cdMax(cdMax(v.x, -v.x), cdMax(v.y, -v.y)), cdMax(v.z, -v.z));
@@ -208,8 +208,7 @@ static inline cdReal cd3MaxAbs(cd3Vec v)
 
 /* Index of the point farthest along `direction` (the first one on ties): sat3_support.h's scan,
  * four vertices at a time without branches in the float build on SSE2 (the same index, bit for
- * bit, as a plain first-maximum loop, whose mispredicted branches cost hull(32) pairs an eighth
- * of their GJK time). */
+ * bit, as a plain first-maximum loop, whose branch on every new maximum mispredicts). */
 static inline int cd3SupportScan(const cd3Vec* points, int count, cd3Vec direction)
 {
 	return cd3SupportIndex(points, count, direction);
