@@ -12,14 +12,27 @@
  *   8 CD_REAL_EPSILON (2D) times the largest coordinate involved, measured relative to one of
  *   the two shapes (about 2e-6 relative in float, 4e-15 in double), so that touching within
  *   round-off counts. Half-space tests measure the offset from the world origin.
- * - Closest point on a solid shape is the query point itself when it lies inside.
- * - Ray casts report the first point where the ray enters the shape: fraction t in [0, 1],
- *   the point origin + t * translation and the outward unit surface normal there. A ray whose
+ * - Degenerate shapes: zero radii, zero-size boxes and AABBs, zero-length capsules and segments
+ *   are valid and behave as the point, segment or disk they are. Zero-area triangles are
+ *   rejected by the validators but never crash a query or yield NaN (they act as their longest
+ *   edge).
+ * - Closest point (cd?ClosestPointOn<Shape>) on a solid shape is the query point itself when it
+ *   lies inside; on the non-solid triangle and segment it is the nearest surface point.
+ * - Closest points between two shapes (cd?ClosestPoints*, cd?Distance): pointA on A, pointB on
+ *   B, distance = |pointB - pointA|; when the shapes meet, distance is 0 and pointA == pointB
+ *   is a common point.
+ * - Ray casts: a ray is {origin, translation}, the points origin + t * translation for t in
+ *   [0, 1]. A hit reports the first point where the ray enters the shape: its fraction t, the
+ *   point and the outward unit surface normal there; *hit is untouched on a miss. A ray whose
  *   origin lies inside a solid shape (or on its boundary) hits at fraction 0 with point =
- *   origin and normal = -normalize(translation) (the zero vector for a zero translation).
- *   Triangles are two-sided: the normal faces the ray's origin.
- * - Pair functions take the shapes in canonical order (cd3ShapeType); the generic dispatchers
- *   accept either order. */
+ *   origin and normal = -normalize(translation) (the zero vector for a zero translation), in
+ *   2D and 3D alike. The 3D triangle and the 2D segment are two-sided: the normal faces the
+ *   ray's origin; a ray lying in a triangle's plane misses, and zero-length rays never hit
+ *   triangles or segments.
+ * - Pair functions take the shapes in canonical order (3D: Sphere, Capsule, Aabb, Box,
+ *   Triangle, Plane, Segment, Hull; 2D: Circle, Capsule, Aabb, Box, Polygon, Segment); same-type
+ *   pairs give bit-identical answers in either order, and the generic dispatchers (cd?Overlap,
+ *   cd?Distance) accept either order. */
 #ifndef COLLIDE_QUERY3_H
 #define COLLIDE_QUERY3_H
 
