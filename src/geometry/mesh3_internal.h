@@ -5,18 +5,46 @@
 
 #include "collide/mesh3.h"
 
-/* 32 bytes in both builds: bounds (min x y z, max x y z) in float, rounded outward from the
- * triangles' cdReal bounds. An inner node (count 0) has its children at first and first + 1; a
- * leaf holds the triangles first .. first + count - 1 of the reordered arrays. */
+/* A 4-wide node, 128 bytes in both builds: the bounds of its four children side by side (row r of
+ * bounds is min x, min y, min z, max x, max y, max z; column j is child j), in float rounded
+ * outward from the triangles' cdReal bounds, so that one node load serves a 4-lane box test.
+ * child[j] is an inner node's index (>= 1, the root is 0), a leaf (negative, see below) or
+ * CD3_MESH_EMPTY; used children come first, and an empty child's bounds are min FLT_MAX, max
+ * -FLT_MAX. A leaf holds the triangles first .. first + count - 1 of the reordered arrays. */
 typedef struct cd3MeshNode
 {
-	float bounds[6];
-	int32_t first;
-	int32_t count;
+	float bounds[6][4];
+	int32_t child[4];
+	int32_t pad[4];
 } cd3MeshNode;
 
+#define CD3_MESH_EMPTY (-1)
+
+/* A leaf child: ~(first << 4 | count), with 1 <= count <= 15 and first < 2^24. */
+static inline int32_t cd3MeshLeafChild(int32_t first, int32_t count)
+{
+	return ~(int32_t)((uint32_t)first << 4 | (uint32_t)count);
+}
+
+static inline bool cd3MeshIsLeaf(int32_t child)
+{
+	return child < CD3_MESH_EMPTY;
+}
+
+static inline int32_t cd3MeshLeafFirst(int32_t child)
+{
+	return (int32_t)((uint32_t)~child >> 4);
+}
+
+static inline int32_t cd3MeshLeafCount(int32_t child)
+{
+	return (int32_t)((uint32_t)~child & 15u);
+}
+
 /* Deepest tree the builder makes: below depth CD3_MESH_SAH_DEPTH it splits at the median index,
- * which adds at most log2(CD3_MAX_MESH_TRIANGLES) = 24 levels. Query stacks are sized by it. */
+ * which adds at most log2(CD3_MAX_MESH_TRIANGLES) = 24 levels. The 4-wide tree collapses that
+ * binary tree and is no deeper. Query stacks are sized by it: a walk that pushes up to four
+ * children per node holds at most 3 entries per level plus one. */
 #define CD3_MESH_SAH_DEPTH 40
 #define CD3_MESH_MAX_DEPTH 72
 
@@ -31,14 +59,14 @@ struct cd3Mesh
 	int inputTriangleCount;
 	int vertexCount;
 	int droppedTriangleCount;
-	int nodeCount;
+	int nodeCount; /* 4-wide nodes */
 	int leafCount;
 	int depth;
 	int activeEdgeCount;
 	double sahCost;
 	size_t bytes;
 	cd3Aabb bounds;
-	cd3MeshNode* nodes;		/* nodeCount, root at 0 */
+	cd3MeshNode* nodes;		/* nodeCount, root at 0, 64-byte aligned */
 	cd3Triangle* triangles; /* triangleCount, in leaf order */
 	int32_t* inputIndex;	/* triangleCount: the input index of each */
 	uint8_t* edgeFlags;		/* triangleCount */

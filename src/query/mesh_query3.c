@@ -5,17 +5,29 @@
 #include "geometry/mesh3_internal.h"
 #include "query/mesh_query3.h"
 
-/* Stack room for a depth-first walk that pushes both children: depth + 1 entries. */
-#define STACK_SIZE (CD3_MESH_MAX_DEPTH + 4)
+#if !CD_DOUBLE && defined(__SSE2__) && !defined(COLLIDE_NO_SIMD)
+#include <emmintrin.h>
+#define CD_MESH_SSE 1
+#else
+#define CD_MESH_SSE 0
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define CD_MESH_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define CD_MESH_PREFETCH(p) ((void)(p))
+#endif
+
+/* Stack room for a depth-first walk that pushes up to four children per node: 3 per level + 1. */
+#define STACK_SIZE (3 * CD3_MESH_MAX_DEPTH + 8)
 
 /* ---- ray against node bounds -------------------------------------------------------------------- */
 
 typedef struct RayBox
 {
-	/* Per axis: the node bound the ray meets first (min when it runs towards +) and last, as
-	 * indices into cd3MeshNode.bounds, the origin shifted by the pad towards each, and
-	 * 1 / translation (infinite on a zero component). */
-	int nearIndex[3], farIndex[3];
+	/* Per axis: the bounds row the ray meets first (min when it runs towards +) and last, the
+	 * origin shifted by the pad towards each, and 1 / translation (infinite on a zero component). */
+	int nearRow[3], farRow[3];
 	cdReal nearOrigin[3], farOrigin[3];
 	cdReal inverse[3];
 } RayBox;
@@ -36,11 +48,11 @@ static RayBox MakeRayBox(cd3Ray ray)
 	{
 		/* IEEE division: a zero component gives an infinite inverse, whose products below are
 		 * infinite (origin outside the slab: no t) or NaN (origin on a slab plane, inside it for
-		 * every t), and the comparisons in EnterNode skip NaN. */
+		 * every t), and the comparisons in EnterChildren skip NaN. */
 		r.inverse[k] = CD_R(1.0) / d[k];
 		bool positive = !(r.inverse[k] < CD_R(0.0)); /* the inverse's sign: -0 gives -infinity */
-		r.nearIndex[k] = positive ? k : 3 + k;
-		r.farIndex[k] = positive ? 3 + k : k;
+		r.nearRow[k] = positive ? k : 3 + k;
+		r.farRow[k] = positive ? 3 + k : k;
 		/* bound - pad - origin for the min, bound + pad - origin for the max. */
 		r.nearOrigin[k] = positive ? o[k] + pad : o[k] - pad;
 		r.farOrigin[k] = positive ? o[k] - pad : o[k] + pad;
@@ -48,18 +60,52 @@ static RayBox MakeRayBox(cd3Ray ray)
 	return r;
 }
 
-/* Entry fraction of the ray into the node's box within [0, limit], or a negative value on a miss. */
-static cdReal EnterNode(const RayBox* r, const cd3MeshNode* node, cdReal limit)
+/* The ray against the four children's boxes at once (lane j is child j; loops the compiler turns
+ * into 4-lane vector code): each child's entry fraction within [0, limit] and a bit per child
+ * met. Empty children's bounds (min FLT_MAX, max -FLT_MAX) are never met. */
+static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal limit, cdReal enter[4])
 {
-	cdReal enter = CD_R(0.0), exit = limit;
+#if CD_MESH_SSE
+	/* The same operations lane by lane: max(t, lo) keeps lo where t is NaN, like the scalar code's
+	 * t > lo ? t : lo, and min likewise. */
+	__m128 lo = _mm_setzero_ps();
+	__m128 hi = _mm_set1_ps(limit);
 	for (int k = 0; k < 3; ++k)
 	{
-		cdReal tNear = ((cdReal)node->bounds[r->nearIndex[k]] - r->nearOrigin[k]) * r->inverse[k];
-		cdReal tFar = ((cdReal)node->bounds[r->farIndex[k]] - r->farOrigin[k]) * r->inverse[k];
-		enter = tNear > enter ? tNear : enter;
-		exit = tFar < exit ? tFar : exit;
+		__m128 inverse = _mm_set1_ps(r->inverse[k]);
+		__m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]]), _mm_set1_ps(r->nearOrigin[k])),
+								  inverse);
+		__m128 tFar =
+			_mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]]), _mm_set1_ps(r->farOrigin[k])), inverse);
+		lo = _mm_max_ps(tNear, lo);
+		hi = _mm_min_ps(tFar, hi);
 	}
-	return enter <= exit ? enter : -CD_R(1.0);
+	_mm_storeu_ps(enter, lo);
+	return (unsigned)_mm_movemask_ps(_mm_cmple_ps(lo, hi));
+#else
+	cdReal lo[4] = {CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
+	cdReal hi[4] = {limit, limit, limit, limit};
+	for (int k = 0; k < 3; ++k)
+	{
+		const float* nearBound = node->bounds[r->nearRow[k]];
+		const float* farBound = node->bounds[r->farRow[k]];
+		cdReal nearOrigin = r->nearOrigin[k], farOrigin = r->farOrigin[k], inverse = r->inverse[k];
+		for (int j = 0; j < 4; ++j)
+		{
+			cdReal tNear = ((cdReal)nearBound[j] - nearOrigin) * inverse;
+			cdReal tFar = ((cdReal)farBound[j] - farOrigin) * inverse;
+			lo[j] = tNear > lo[j] ? tNear : lo[j];
+			hi[j] = tFar < hi[j] ? tFar : hi[j];
+		}
+	}
+	unsigned mask = 0;
+	for (int j = 0; j < 4; ++j)
+	{
+		enter[j] = lo[j];
+		mask |= (lo[j] <= hi[j] ? 1u : 0u) << j;
+	}
+	return mask;
+#endif
 }
 
 static cd3Ray RayToMesh(cd3Transform xf, cd3Ray ray)
@@ -74,6 +120,56 @@ static cd3Triangle TriangleToWorld(cd3Transform xf, cd3Triangle t)
 {
 	cd3Triangle w = {cd3TransformPoint(xf, t.a), cd3TransformPoint(xf, t.b), cd3TransformPoint(xf, t.c)};
 	return w;
+}
+
+static cdReal SumAbs(cd3Vec v)
+{
+	return cdAbs(v.x) + cdAbs(v.y) + cdAbs(v.z);
+}
+
+static cdReal MaxAbs3(cd3Vec v)
+{
+	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+}
+
+/* False only when cd3RaycastTriangle(t, ray) certainly misses: a cdReal test of the ray line
+ * against the closed triangle (barycentric numerators and the fraction, all times the
+ * determinant), each compared with a margin of 32 epsilons of a bound on its terms. That bound
+ * covers the round-off of these products (a few epsilons: each term is a product of three
+ * rounded differences) and the tolerance of cd3RaycastTriangle, which accepts hit points within
+ * 4 double epsilons of the largest coordinate `magnitude` of the triangle and the ray's ends: a
+ * point that far outside an edge moves a numerator by at most that distance times |d| times the
+ * other edge's length. NaN and infinite products never reject. */
+static bool MayHitTriangle(cd3Triangle t, cd3Ray ray, cdReal rayMagnitude)
+{
+	cd3Vec d = ray.translation;
+	cd3Vec e1 = cd3Sub(t.b, t.a), e2 = cd3Sub(t.c, t.a), s = cd3Sub(ray.origin, t.a);
+	cd3Vec p = cd3Cross(d, e2);
+	cd3Vec q = cd3Cross(s, e1);
+	cdReal det = cd3Dot(e1, p);
+	cdReal u = cd3Dot(s, p);
+	cdReal v = cd3Dot(d, q);
+	cdReal w = cd3Dot(e2, q); /* the fraction times det */
+	cdReal magnitude = cdMax(rayMagnitude, cdMax(MaxAbs3(t.a), cdMax(MaxAbs3(t.b), MaxAbs3(t.c))));
+	cdReal ds = SumAbs(d), e1s = SumAbs(e1), e2s = SumAbs(e2), ss = SumAbs(s) + magnitude;
+	cdReal k = CD_R(32.0) * CD_REAL_EPSILON;
+	cdReal marginDet = k * e1s * ds * e2s;
+	cdReal marginU = k * ss * ds * e2s;
+	cdReal marginV = k * ds * ss * e1s;
+	cdReal marginW = k * e2s * ss * e1s;
+	if (det < CD_R(0.0))
+	{
+		det = -det;
+		u = -u;
+		v = -v;
+		w = -w;
+	}
+	if (!(det > marginDet))
+	{
+		return true; /* nearly parallel: the exact routine decides */
+	}
+	return !(u < -marginU || v < -marginV || u + v > det + marginU + marginV + marginDet || w < -marginW ||
+			 w > det + marginW + marginDet);
 }
 
 /* Node fractions are those of the mesh-space ray; the triangle casts run in world space on the
@@ -91,47 +187,40 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 	bool identity = xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) && xf.p.z == CD_R(0.0) &&
 					xf.q.x == CD_R(0.0) && xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0);
 	RayBox box = MakeRayBox(identity ? ray : RayToMesh(xf, ray));
+	cd3Vec rayEnd = cd3Add(ray.origin, ray.translation);
+	cdReal rayMagnitude = cdMax(MaxAbs3(ray.origin), MaxAbs3(rayEnd));
 	bool found = false;
 	cd3RayHit best;
-	int bestIndex = 0;
+	int bestSlot = 0;
 	cdReal limit = CD_R(1.0) + FRACTION_MARGIN;
-	/* Each entry keeps the node's entry fraction, so that nodes behind the closest hit found since
-	 * they were pushed are dropped when popped, without testing their triangles or children. */
-	int stack[STACK_SIZE];
+	/* Entries are children (nodes or leaves) with their entry fractions, so that those behind the
+	 * closest hit found since they were pushed are dropped when popped, without testing their
+	 * triangles or children. The walk goes on with the nearest child met and pushes the others
+	 * farthest first. */
+	int32_t stack[STACK_SIZE];
 	cdReal enterStack[STACK_SIZE];
 	int top = 0;
-	cdReal rootEnter = EnterNode(&box, mesh->nodes, limit);
-	if (rootEnter < CD_R(0.0))
+	int32_t current = 0;
+	for (;;)
 	{
-		return false;
-	}
-	stack[top] = 0;
-	enterStack[top++] = rootEnter;
-	while (top > 0)
-	{
-		--top;
-		if (enterStack[top] > limit)
+		if (cd3MeshIsLeaf(current))
 		{
-			continue;
-		}
-		const cd3MeshNode* node = mesh->nodes + stack[top];
-		if (node->count > 0)
-		{
-			for (int s = node->first; s < node->first + node->count; ++s)
+			int first = cd3MeshLeafFirst(current), end = first + cd3MeshLeafCount(current);
+			for (int s = first; s < end; ++s)
 			{
 				cd3RayHit hit;
 				cd3Triangle t = identity ? mesh->triangles[s] : TriangleToWorld(xf, mesh->triangles[s]);
-				if (!cd3RaycastTriangle(t, ray, &hit))
+				if (!MayHitTriangle(t, ray, rayMagnitude) || !cd3RaycastTriangle(t, ray, &hit))
 				{
 					continue;
 				}
-				int index = mesh->inputIndex[s];
+				/* The input index (another array) is only read on a tie and for the answer. */
 				if (!found || hit.fraction < best.fraction ||
-					(hit.fraction == best.fraction && index < bestIndex))
+					(hit.fraction == best.fraction && mesh->inputIndex[s] < mesh->inputIndex[bestSlot]))
 				{
 					found = true;
 					best = hit;
-					bestIndex = index;
+					bestSlot = s;
 					limit = cdMin(best.fraction + FRACTION_MARGIN, limit);
 					if (any)
 					{
@@ -139,44 +228,78 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 					}
 				}
 			}
-			continue;
 		}
-		int left = node->first;
-		cdReal tl = EnterNode(&box, mesh->nodes + left, limit);
-		cdReal tr = EnterNode(&box, mesh->nodes + left + 1, limit);
-		/* The nearer child on top of the stack. */
-		if (tl >= CD_R(0.0) && tr >= CD_R(0.0))
+		else
 		{
-			if (tl <= tr)
+			const cd3MeshNode* node = mesh->nodes + current;
+			/* The first child's triangles fetched while the boxes are tested: at the bottom of the
+			 * tree the walk goes there next or to a neighbour (the leaves' triangles follow on). */
+			if (cd3MeshIsLeaf(node->child[0]))
 			{
-				stack[top] = left + 1;
-				enterStack[top++] = tr;
-				stack[top] = left;
-				enterStack[top++] = tl;
+				CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(node->child[0]));
+				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 64);
+				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 128);
+				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 192);
 			}
-			else
+			cdReal enter[4];
+			unsigned mask = EnterChildren(&box, node, limit, enter);
+			/* The children met, nearest first (at most four: an insertion sort). */
+			int32_t child[4];
+			cdReal at[4];
+			int n = 0;
+			for (int j = 0; j < 4; ++j)
 			{
-				stack[top] = left;
-				enterStack[top++] = tl;
-				stack[top] = left + 1;
-				enterStack[top++] = tr;
+				if ((mask >> j & 1u) == 0 || node->child[j] == CD3_MESH_EMPTY)
+				{
+					continue;
+				}
+				int i = n++;
+				while (i > 0 && at[i - 1] > enter[j])
+				{
+					at[i] = at[i - 1];
+					child[i] = child[i - 1];
+					--i;
+				}
+				at[i] = enter[j];
+				child[i] = node->child[j];
+				/* Fetched while the walk goes on: the nearest child is visited next, the others
+				 * maybe later. */
+				if (cd3MeshIsLeaf(node->child[j]))
+				{
+					CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(node->child[j]));
+				}
+				else
+				{
+					CD_MESH_PREFETCH(mesh->nodes + node->child[j]);
+					CD_MESH_PREFETCH((const char*)(mesh->nodes + node->child[j]) + 64);
+				}
+			}
+			if (n > 0)
+			{
+				for (int i = n - 1; i > 0; --i)
+				{
+					stack[top] = child[i];
+					enterStack[top++] = at[i];
+				}
+				current = child[0];
+				continue;
 			}
 		}
-		else if (tl >= CD_R(0.0))
+		/* The next child on the stack not entered beyond the best hit. */
+		while (top > 0 && enterStack[top - 1] > limit)
 		{
-			stack[top] = left;
-			enterStack[top++] = tl;
+			--top;
 		}
-		else if (tr >= CD_R(0.0))
+		if (top == 0)
 		{
-			stack[top] = left + 1;
-			enterStack[top++] = tr;
+			break;
 		}
+		current = stack[--top];
 	}
 	if (found && out != NULL)
 	{
 		out->hit = best;
-		out->triangleIndex = bestIndex;
+		out->triangleIndex = mesh->inputIndex[bestSlot];
 	}
 	return found;
 }
@@ -193,28 +316,27 @@ bool cd3RaycastMeshAny(const cd3Mesh* mesh, cd3Transform meshTransform, cd3Ray r
 
 /* ---- bounds queries ------------------------------------------------------------------------------ */
 
-static bool NodeOverlaps(const cd3MeshNode* node, cd3Aabb b)
+static bool ChildOverlaps(const cd3MeshNode* node, int j, cd3Aabb b)
 {
-	return (cdReal)node->bounds[0] <= b.max.x && b.min.x <= (cdReal)node->bounds[3] &&
-		   (cdReal)node->bounds[1] <= b.max.y && b.min.y <= (cdReal)node->bounds[4] &&
-		   (cdReal)node->bounds[2] <= b.max.z && b.min.z <= (cdReal)node->bounds[5];
+	return (cdReal)node->bounds[0][j] <= b.max.x && b.min.x <= (cdReal)node->bounds[3][j] &&
+		   (cdReal)node->bounds[1][j] <= b.max.y && b.min.y <= (cdReal)node->bounds[4][j] &&
+		   (cdReal)node->bounds[2][j] <= b.max.z && b.min.z <= (cdReal)node->bounds[5][j];
 }
 
 bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visit, void* context)
 {
-	int stack[STACK_SIZE];
+	/* Children that overlap go on the stack last to first, leaves too, so that the triangles come
+	 * in leaf order. */
+	int32_t stack[STACK_SIZE];
 	int top = 0;
 	stack[top++] = 0;
 	while (top > 0)
 	{
-		const cd3MeshNode* node = mesh->nodes + stack[--top];
-		if (!NodeOverlaps(node, bounds))
+		int32_t current = stack[--top];
+		if (cd3MeshIsLeaf(current))
 		{
-			continue;
-		}
-		if (node->count > 0)
-		{
-			for (int s = node->first; s < node->first + node->count; ++s)
+			int first = cd3MeshLeafFirst(current), end = first + cd3MeshLeafCount(current);
+			for (int s = first; s < end; ++s)
 			{
 				/* A leaf holds up to 8 triangles: each one's own bounds first. */
 				cd3Aabb tb = cd3ComputeTriangleAabb(mesh->triangles[s]);
@@ -231,8 +353,14 @@ bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visi
 			}
 			continue;
 		}
-		stack[top++] = node->first + 1;
-		stack[top++] = node->first;
+		const cd3MeshNode* node = mesh->nodes + current;
+		for (int j = 3; j >= 0; --j)
+		{
+			if (node->child[j] != CD3_MESH_EMPTY && ChildOverlaps(node, j, bounds))
+			{
+				stack[top++] = node->child[j];
+			}
+		}
 	}
 	return true;
 }
@@ -322,20 +450,20 @@ bool cd3OverlapMesh(const cd3Shape* shape, const cd3Mesh* mesh, cd3Transform mes
 
 /* ---- closest point -------------------------------------------------------------------------------- */
 
-static cdReal NodeDistanceSquared(const cd3MeshNode* node, cd3Vec p)
+static cdReal ChildDistanceSquared(const cd3MeshNode* node, int j, cd3Vec p)
 {
 	cdReal c[3] = {p.x, p.y, p.z};
 	cdReal sum = CD_R(0.0);
 	for (int k = 0; k < 3; ++k)
 	{
 		cdReal d = CD_R(0.0);
-		if (c[k] < (cdReal)node->bounds[k])
+		if (c[k] < (cdReal)node->bounds[k][j])
 		{
-			d = (cdReal)node->bounds[k] - c[k];
+			d = (cdReal)node->bounds[k][j] - c[k];
 		}
-		else if (c[k] > (cdReal)node->bounds[3 + k])
+		else if (c[k] > (cdReal)node->bounds[3 + k][j])
 		{
-			d = c[k] - (cdReal)node->bounds[3 + k];
+			d = c[k] - (cdReal)node->bounds[3 + k][j];
 		}
 		sum += d * d;
 	}
@@ -362,19 +490,24 @@ bool cd3ClosestPointOnMesh(const cd3Mesh* mesh, cd3Transform meshTransform, cd3V
 	int bestIndex = 0;
 	cd3Vec bestPoint = local;
 	cdReal bestTrue = CD_REAL_MAX;
-	int stack[STACK_SIZE];
+	/* Entries are children with their squared distances, checked again when popped. */
+	int32_t stack[STACK_SIZE];
+	cdReal distanceStack[STACK_SIZE];
 	int top = 0;
-	stack[top++] = 0;
+	stack[top] = 0;
+	distanceStack[top++] = CD_R(0.0);
 	while (top > 0)
 	{
-		const cd3MeshNode* node = mesh->nodes + stack[--top];
-		if (NodeDistanceSquared(node, local) > bestSquared)
+		--top;
+		if (distanceStack[top] > bestSquared)
 		{
 			continue;
 		}
-		if (node->count > 0)
+		int32_t current = stack[top];
+		if (cd3MeshIsLeaf(current))
 		{
-			for (int s = node->first; s < node->first + node->count; ++s)
+			int first = cd3MeshLeafFirst(current), end = first + cd3MeshLeafCount(current);
+			for (int s = first; s < end; ++s)
 			{
 				cd3Vec q = cd3ClosestPointOnTriangle(mesh->triangles[s], local);
 				cdReal d2 = cd3VecDistanceSquared(q, local);
@@ -394,18 +527,36 @@ bool cd3ClosestPointOnMesh(const cd3Mesh* mesh, cd3Transform meshTransform, cd3V
 			}
 			continue;
 		}
-		int left = node->first;
-		cdReal dl = NodeDistanceSquared(mesh->nodes + left, local);
-		cdReal dr = NodeDistanceSquared(mesh->nodes + left + 1, local);
-		if (dl <= dr)
+		/* The children within reach, pushed farthest first so that the nearest comes off next. */
+		const cd3MeshNode* node = mesh->nodes + current;
+		int32_t child[4];
+		cdReal at[4];
+		int n = 0;
+		for (int j = 0; j < 4; ++j)
 		{
-			stack[top++] = left + 1;
-			stack[top++] = left;
+			if (node->child[j] == CD3_MESH_EMPTY)
+			{
+				continue;
+			}
+			cdReal d2 = ChildDistanceSquared(node, j, local);
+			if (d2 > bestSquared)
+			{
+				continue;
+			}
+			int i = n++;
+			while (i > 0 && at[i - 1] < d2)
+			{
+				at[i] = at[i - 1];
+				child[i] = child[i - 1];
+				--i;
+			}
+			at[i] = d2;
+			child[i] = node->child[j];
 		}
-		else
+		for (int i = 0; i < n; ++i)
 		{
-			stack[top++] = left;
-			stack[top++] = left + 1;
+			stack[top] = child[i];
+			distanceStack[top++] = at[i];
 		}
 	}
 	if (!found)
