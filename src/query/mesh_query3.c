@@ -221,6 +221,7 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 					found = true;
 					best = hit;
 					bestSlot = s;
+					CD_MESH_PREFETCH(mesh->inputIndex + s);
 					limit = cdMin(best.fraction + FRACTION_MARGIN, limit);
 					if (any)
 					{
@@ -267,6 +268,7 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 				if (cd3MeshIsLeaf(node->child[j]))
 				{
 					CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(node->child[j]));
+					CD_MESH_PREFETCH(mesh->inputIndex + cd3MeshLeafFirst(node->child[j]));
 				}
 				else
 				{
