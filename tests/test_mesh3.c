@@ -75,7 +75,7 @@ static void TestExact(void)
 	TEST_CHECK(cd3ValidateMesh(mesh) == CD_OK);
 	cd3MeshStats stats = cd3Mesh_GetStats(mesh);
 	TEST_CHECK(stats.triangleCount == 2 && stats.droppedTriangleCount == 1 && stats.vertexCount == 5);
-	/* Two triangles: one 4-wide root over one or two leaves. */
+	/* Two triangles: one 8-wide root over one or two leaves. */
 	TEST_CHECK(stats.nodeCount == 1 && stats.leafCount >= 1 && stats.leafCount <= 2 && stats.depth == 2 &&
 			   stats.bytes > 0);
 	/* The square's outline: 4 boundary edges, active on both sides; its diagonal is flat. */
@@ -474,8 +474,8 @@ static void TestStats(void)
 	{
 		cd3MeshStats s = cd3Mesh_GetStats(mesh);
 		TEST_CHECK(s.triangleCount == 2 * 64 * 64 && s.droppedTriangleCount == 0);
-		/* 4-wide nodes with two to four children each (nodes and leaves). */
-		TEST_CHECKF(3 * s.nodeCount >= s.leafCount - 1 && s.nodeCount <= s.leafCount - 1 &&
+		/* 8-wide nodes with two to eight children each (nodes and leaves). */
+		TEST_CHECKF(7 * s.nodeCount >= s.leafCount - 1 && s.nodeCount <= s.leafCount - 1 &&
 						s.leafCount >= s.triangleCount / 8,
 					"%d nodes, %d leaves", s.nodeCount, s.leafCount);
 		/* A SAH tree of 8192 triangles is shallow and cheap: far below the linear list (cost n). */

@@ -300,7 +300,7 @@ static int BuildTree(BuildTriangle* tris, int n, BuildNode* nodes, int* depthOut
 /* The binary children gathered under one 4-wide node: the two children of a binary node, then,
  * while fewer than four, the inner one of largest area is replaced by its two children in place,
  * which keeps the leaves in order. */
-static int GatherChildren(const BuildNode* nodes, int binary, int kids[4])
+static int GatherChildren(const BuildNode* nodes, int binary, int kids[CD3_MESH_WIDTH])
 {
 	int n = 0;
 	if (nodes[binary].count > 0)
@@ -310,7 +310,7 @@ static int GatherChildren(const BuildNode* nodes, int binary, int kids[4])
 	}
 	kids[n++] = nodes[binary].first;
 	kids[n++] = nodes[binary].first + 1;
-	while (n < 4)
+	while (n < CD3_MESH_WIDTH)
 	{
 		int pick = -1;
 		double best = -1.0;
@@ -361,7 +361,7 @@ typedef struct CollapseTask
  * of the 4-wide tree (node visits cost TRAVERSAL_COST, triangles 1, weighted by area). */
 static int CollapseTree(const BuildNode* nodes, cd3MeshNode* wide, int* depthOut, double* sahOut)
 {
-	CollapseTask stack[3 * CD3_MESH_MAX_DEPTH + 8];
+	CollapseTask stack[(CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8];
 	int top = 0;
 	int count = 0;
 	int maxDepth = 0;
@@ -379,11 +379,15 @@ static int CollapseTree(const BuildNode* nodes, cd3MeshNode* wide, int* depthOut
 			wide[task.parent].child[task.slot] = index;
 		}
 		sah += TRAVERSAL_COST * Area(nodes[task.binary].bounds) / rootArea;
-		int kids[4];
+		int kids[CD3_MESH_WIDTH];
 		int n = GatherChildren(nodes, task.binary, kids);
-		for (int j = 0; j < 4; ++j)
+		node->used = n;
+		for (int j = 0; j < CD3_MESH_WIDTH - 1; ++j)
 		{
 			node->pad[j] = 0;
+		}
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+		{
 			if (j >= n)
 			{
 				node->child[j] = CD3_MESH_EMPTY;
@@ -911,7 +915,7 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 	 * its parent and the parent's slot holding it. */
 	enum
 	{
-		VALIDATE_STACK = 3 * CD3_MESH_MAX_DEPTH + 8
+		VALIDATE_STACK = (CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8
 	};
 	int32_t stack[VALIDATE_STACK];
 	int parentOf[VALIDATE_STACK];
@@ -962,15 +966,15 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 		}
 		const cd3MeshNode* node = mesh->nodes + index;
 		int used = 0;
-		while (used < 4 && node->child[used] != CD3_MESH_EMPTY)
+		while (used < CD3_MESH_WIDTH && node->child[used] != CD3_MESH_EMPTY)
 		{
 			++used;
 		}
-		if (used < (index == 0 ? 1 : 2) || top + used > VALIDATE_STACK)
+		if (used < (index == 0 ? 1 : 2) || used != node->used || top + used > VALIDATE_STACK)
 		{
 			return CD_ERROR_INVALID_ARGUMENT;
 		}
-		for (int j = used; j < 4; ++j)
+		for (int j = used; j < CD3_MESH_WIDTH; ++j)
 		{
 			if (node->child[j] != CD3_MESH_EMPTY)
 			{

@@ -11,11 +11,14 @@
  * child[j] is an inner node's index (>= 1, the root is 0), a leaf (negative, see below) or
  * CD3_MESH_EMPTY; used children come first, and an empty child's bounds are min FLT_MAX, max
  * -FLT_MAX. A leaf holds the triangles first .. first + count - 1 of the reordered arrays. */
+#define CD3_MESH_WIDTH 8
+
 typedef struct cd3MeshNode
 {
-	float bounds[6][4];
-	int32_t child[4];
-	int32_t pad[4];
+	float bounds[6][CD3_MESH_WIDTH];
+	int32_t child[CD3_MESH_WIDTH];
+	int32_t used; /* children in use: child[0 .. used - 1] */
+	int32_t pad[CD3_MESH_WIDTH - 1];
 } cd3MeshNode;
 
 #define CD3_MESH_EMPTY (-1)

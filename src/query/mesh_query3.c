@@ -18,8 +18,24 @@
 #define CD_MESH_PREFETCH(p) ((void)(p))
 #endif
 
+/* The index of the lowest set bit of a non-zero mask. */
+static inline int LowestBit(unsigned mask)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctz(mask);
+#else
+	int i = 0;
+	while ((mask & 1u) == 0)
+	{
+		mask >>= 1;
+		++i;
+	}
+	return i;
+#endif
+}
+
 /* Stack room for a depth-first walk that pushes up to four children per node: 3 per level + 1. */
-#define STACK_SIZE (3 * CD3_MESH_MAX_DEPTH + 8)
+#define STACK_SIZE ((CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8)
 
 /* ---- ray against node bounds -------------------------------------------------------------------- */
 
@@ -63,34 +79,43 @@ static RayBox MakeRayBox(cd3Ray ray)
 /* The ray against the four children's boxes at once (lane j is child j; loops the compiler turns
  * into 4-lane vector code): each child's entry fraction within [0, limit] and a bit per child
  * met. Empty children's bounds (min FLT_MAX, max -FLT_MAX) are never met. */
-static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal limit, cdReal enter[4])
+static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal limit, cdReal enter[CD3_MESH_WIDTH])
 {
 #if CD_MESH_SSE
 	/* The same operations lane by lane: max(t, lo) keeps lo where t is NaN, like the scalar code's
 	 * t > lo ? t : lo, and min likewise. */
-	__m128 lo = _mm_setzero_ps();
-	__m128 hi = _mm_set1_ps(limit);
-	for (int k = 0; k < 3; ++k)
+	unsigned mask = 0;
+	for (int h = 0; h < CD3_MESH_WIDTH; h += 4)
 	{
-		__m128 inverse = _mm_set1_ps(r->inverse[k]);
-		__m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]]), _mm_set1_ps(r->nearOrigin[k])),
-								  inverse);
-		__m128 tFar =
-			_mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]]), _mm_set1_ps(r->farOrigin[k])), inverse);
-		lo = _mm_max_ps(tNear, lo);
-		hi = _mm_min_ps(tFar, hi);
+		__m128 lo = _mm_setzero_ps();
+		__m128 hi = _mm_set1_ps(limit);
+		for (int k = 0; k < 3; ++k)
+		{
+			__m128 inverse = _mm_set1_ps(r->inverse[k]);
+			__m128 tNear = _mm_mul_ps(
+				_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]] + h), _mm_set1_ps(r->nearOrigin[k])), inverse);
+			__m128 tFar = _mm_mul_ps(
+				_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]] + h), _mm_set1_ps(r->farOrigin[k])), inverse);
+			lo = _mm_max_ps(tNear, lo);
+			hi = _mm_min_ps(tFar, hi);
+		}
+		_mm_storeu_ps(enter + h, lo);
+		mask |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(lo, hi)) << h;
 	}
-	_mm_storeu_ps(enter, lo);
-	return (unsigned)_mm_movemask_ps(_mm_cmple_ps(lo, hi));
+	return mask;
 #else
-	cdReal lo[4] = {CD_R(0.0), CD_R(0.0), CD_R(0.0), CD_R(0.0)};
-	cdReal hi[4] = {limit, limit, limit, limit};
+	cdReal lo[CD3_MESH_WIDTH], hi[CD3_MESH_WIDTH];
+	for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+	{
+		lo[j] = CD_R(0.0);
+		hi[j] = limit;
+	}
 	for (int k = 0; k < 3; ++k)
 	{
 		const float* nearBound = node->bounds[r->nearRow[k]];
 		const float* farBound = node->bounds[r->farRow[k]];
 		cdReal nearOrigin = r->nearOrigin[k], farOrigin = r->farOrigin[k], inverse = r->inverse[k];
-		for (int j = 0; j < 4; ++j)
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
 		{
 			cdReal tNear = ((cdReal)nearBound[j] - nearOrigin) * inverse;
 			cdReal tFar = ((cdReal)farBound[j] - farOrigin) * inverse;
@@ -99,7 +124,7 @@ static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal l
 		}
 	}
 	unsigned mask = 0;
-	for (int j = 0; j < 4; ++j)
+	for (int j = 0; j < CD3_MESH_WIDTH; ++j)
 	{
 		enter[j] = lo[j];
 		mask |= (lo[j] <= hi[j] ? 1u : 0u) << j;
@@ -242,18 +267,19 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 128);
 				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 192);
 			}
-			cdReal enter[4];
+			cdReal enter[CD3_MESH_WIDTH];
 			unsigned mask = EnterChildren(&box, node, limit, enter);
-			/* The children met, nearest first (at most four: an insertion sort). */
-			int32_t child[4];
-			cdReal at[4];
+			/* The children met (empty ones never are: the mask keeps the used ones), nearest first
+			 * (an insertion sort of a few). */
+			mask &= (1u << node->used) - 1u;
+			int32_t child[CD3_MESH_WIDTH];
+			cdReal at[CD3_MESH_WIDTH];
 			int n = 0;
-			for (int j = 0; j < 4; ++j)
+			while (mask != 0)
 			{
-				if ((mask >> j & 1u) == 0 || node->child[j] == CD3_MESH_EMPTY)
-				{
-					continue;
-				}
+				int j = LowestBit(mask);
+				mask &= mask - 1u;
+				int32_t c = node->child[j];
 				int i = n++;
 				while (i > 0 && at[i - 1] > enter[j])
 				{
@@ -262,18 +288,20 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 					--i;
 				}
 				at[i] = enter[j];
-				child[i] = node->child[j];
+				child[i] = c;
 				/* Fetched while the walk goes on: the nearest child is visited next, the others
 				 * maybe later. */
-				if (cd3MeshIsLeaf(node->child[j]))
+				if (cd3MeshIsLeaf(c))
 				{
-					CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(node->child[j]));
-					CD_MESH_PREFETCH(mesh->inputIndex + cd3MeshLeafFirst(node->child[j]));
+					CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(c));
+					CD_MESH_PREFETCH(mesh->inputIndex + cd3MeshLeafFirst(c));
 				}
 				else
 				{
-					CD_MESH_PREFETCH(mesh->nodes + node->child[j]);
-					CD_MESH_PREFETCH((const char*)(mesh->nodes + node->child[j]) + 64);
+					for (size_t line = 0; line < sizeof(cd3MeshNode); line += 64)
+					{
+						CD_MESH_PREFETCH((const char*)(mesh->nodes + c) + line);
+					}
 				}
 			}
 			if (n > 0)
@@ -356,7 +384,7 @@ bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visi
 			continue;
 		}
 		const cd3MeshNode* node = mesh->nodes + current;
-		for (int j = 3; j >= 0; --j)
+		for (int j = CD3_MESH_WIDTH - 1; j >= 0; --j)
 		{
 			if (node->child[j] != CD3_MESH_EMPTY && ChildOverlaps(node, j, bounds))
 			{
@@ -531,10 +559,10 @@ bool cd3ClosestPointOnMesh(const cd3Mesh* mesh, cd3Transform meshTransform, cd3V
 		}
 		/* The children within reach, pushed farthest first so that the nearest comes off next. */
 		const cd3MeshNode* node = mesh->nodes + current;
-		int32_t child[4];
-		cdReal at[4];
+		int32_t child[CD3_MESH_WIDTH];
+		cdReal at[CD3_MESH_WIDTH];
 		int n = 0;
-		for (int j = 0; j < 4; ++j)
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
 		{
 			if (node->child[j] == CD3_MESH_EMPTY)
 			{
