@@ -54,6 +54,7 @@ typedef struct BuildNode
 	cd3Aabb bounds;
 	int32_t first;
 	int32_t count;
+	int32_t leaves; /* leaves in the subtree, for the wide collapse */
 } BuildNode;
 
 typedef struct Bin
@@ -297,9 +298,12 @@ static int BuildTree(BuildTriangle* tris, int n, BuildNode* nodes, int* depthOut
 
 /* ---- the 4-wide tree ----------------------------------------------------------------------------- */
 
-/* The binary children gathered under one 4-wide node: the two children of a binary node, then,
- * while fewer than four, the inner one of largest area is replaced by its two children in place,
- * which keeps the leaves in order. */
+/* The binary children gathered under one wide node, in order (a child replaced by its two
+ * children in place keeps the leaves in order). A subtree of at most CD3_MESH_WIDTH leaves is
+ * flattened into one node. Above that, the inner child of largest area among those with more
+ * than CD3_MESH_WIDTH leaves is opened while there is room, so that the subtrees left below
+ * fill their nodes; then the smallest inner children are opened into the room left, which
+ * lifts their leaves into this node instead of making nearly empty nodes of them. */
 static int GatherChildren(const BuildNode* nodes, int binary, int kids[CD3_MESH_WIDTH])
 {
 	int n = 0;
@@ -317,7 +321,7 @@ static int GatherChildren(const BuildNode* nodes, int binary, int kids[CD3_MESH_
 		for (int i = 0; i < n; ++i)
 		{
 			const BuildNode* kid = nodes + kids[i];
-			if (kid->count == 0 && Area(kid->bounds) > best)
+			if (kid->count == 0 && kid->leaves > CD3_MESH_WIDTH && Area(kid->bounds) > best)
 			{
 				best = Area(kid->bounds);
 				pick = i;
@@ -325,7 +329,22 @@ static int GatherChildren(const BuildNode* nodes, int binary, int kids[CD3_MESH_
 		}
 		if (pick < 0)
 		{
-			break;
+			int fewest = 0;
+			for (int i = 0; i < n; ++i)
+			{
+				const BuildNode* kid = nodes + kids[i];
+				if (kid->count == 0 && (pick < 0 || kid->leaves < fewest))
+				{
+					fewest = kid->leaves;
+					pick = i;
+				}
+			}
+			/* Opening it must leave room for its leaves or be worth a node: a subtree that
+			 * does not fit whole stays one node. */
+			if (pick < 0 || n - 1 + fewest > CD3_MESH_WIDTH)
+			{
+				break;
+			}
 		}
 		int left = nodes[kids[pick]].first;
 		for (int i = n; i > pick + 1; --i)
@@ -730,8 +749,14 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 
 	int depth = 0, leafCount = 0;
 	double sah = 0.0;
-	(void)BuildTree(tris, kept, buildNodes, &depth, &leafCount, &sah);
+	int nodeCountBinary = BuildTree(tris, kept, buildNodes, &depth, &leafCount, &sah);
 
+	/* Children come after their parents: leaf counts from the last node back. */
+	for (int i = nodeCountBinary - 1; i >= 0; --i)
+	{
+		BuildNode* b = buildNodes + i;
+		b->leaves = b->count > 0 ? 1 : buildNodes[b->first].leaves + buildNodes[b->first + 1].leaves;
+	}
 	int wideDepth = 0;
 	double wideSah = 0.0;
 	int wideCount = CollapseTree(buildNodes, NULL, &wideDepth, &wideSah);

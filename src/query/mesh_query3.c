@@ -34,7 +34,8 @@ static inline int LowestBit(unsigned mask)
 #endif
 }
 
-/* Stack room for a depth-first walk that pushes up to four children per node: 3 per level + 1. */
+/* Stack room for a depth-first walk that pushes up to CD3_MESH_WIDTH children per node:
+ * CD3_MESH_WIDTH - 1 per level and a few. */
 #define STACK_SIZE ((CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8)
 
 /* ---- ray against node bounds -------------------------------------------------------------------- */
@@ -46,6 +47,9 @@ typedef struct RayBox
 	int nearRow[3], farRow[3];
 	cdReal nearOrigin[3], farOrigin[3];
 	cdReal inverse[3];
+#if CD_MESH_SSE
+	__m128 nearOrigin4[3], farOrigin4[3], inverse4[3]; /* the same in all four lanes */
+#endif
 } RayBox;
 
 static RayBox MakeRayBox(cd3Ray ray)
@@ -72,6 +76,11 @@ static RayBox MakeRayBox(cd3Ray ray)
 		/* bound - pad - origin for the min, bound + pad - origin for the max. */
 		r.nearOrigin[k] = positive ? o[k] + pad : o[k] - pad;
 		r.farOrigin[k] = positive ? o[k] - pad : o[k] + pad;
+#if CD_MESH_SSE
+		r.nearOrigin4[k] = _mm_set1_ps(r.nearOrigin[k]);
+		r.farOrigin4[k] = _mm_set1_ps(r.farOrigin[k]);
+		r.inverse4[k] = _mm_set1_ps(r.inverse[k]);
+#endif
 	}
 	return r;
 }
@@ -84,18 +93,19 @@ static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal l
 #if CD_MESH_SSE
 	/* The same operations lane by lane: max(t, lo) keeps lo where t is NaN, like the scalar code's
 	 * t > lo ? t : lo, and min likewise. */
+	/* Four children at a time, as many as in use (often not more than four). */
 	unsigned mask = 0;
-	for (int h = 0; h < CD3_MESH_WIDTH; h += 4)
+	int used = node->used;
+	for (int h = 0; h < used; h += 4)
 	{
 		__m128 lo = _mm_setzero_ps();
 		__m128 hi = _mm_set1_ps(limit);
 		for (int k = 0; k < 3; ++k)
 		{
-			__m128 inverse = _mm_set1_ps(r->inverse[k]);
-			__m128 tNear = _mm_mul_ps(
-				_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]] + h), _mm_set1_ps(r->nearOrigin[k])), inverse);
-			__m128 tFar = _mm_mul_ps(
-				_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]] + h), _mm_set1_ps(r->farOrigin[k])), inverse);
+			__m128 tNear =
+				_mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]] + h), r->nearOrigin4[k]), r->inverse4[k]);
+			__m128 tFar =
+				_mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]] + h), r->farOrigin4[k]), r->inverse4[k]);
 			lo = _mm_max_ps(tNear, lo);
 			hi = _mm_min_ps(tFar, hi);
 		}
