@@ -296,7 +296,7 @@ static int BuildTree(BuildTriangle* tris, int n, BuildNode* nodes, int* depthOut
 	return nodeCount;
 }
 
-/* ---- the 4-wide tree ----------------------------------------------------------------------------- */
+/* ---- the wide tree ------------------------------------------------------------------------------- */
 
 /* The binary children gathered under one wide node, in order (a child replaced by its two
  * children in place keeps the leaves in order). A subtree of at most CD3_MESH_WIDTH leaves is
@@ -370,14 +370,15 @@ static void SetChildBounds(cd3MeshNode* node, int j, cd3Aabb b)
 
 typedef struct CollapseTask
 {
-	int binary; /* the binary inner node (or leaf root) this 4-wide node stands for */
-	int parent; /* the 4-wide parent, -1 for the root */
+	int binary; /* the binary inner node (or leaf root) this wide node stands for */
+	int parent; /* the wide parent, -1 for the root */
 	int slot;
 	int depth;
 } CollapseTask;
 
-/* Collapses the binary tree into `wide` in depth-first order (or only counts, when `wide` is NULL); returns the node count and the depth (levels of nodes plus the leaf level) and SAH cost
- * of the 4-wide tree (node visits cost TRAVERSAL_COST, triangles 1, weighted by area). */
+/* Collapses the binary tree into `wide` in depth-first order (or only counts, when `wide` is NULL); returns
+ * the node count and the depth (levels of nodes plus the leaf level) and SAH cost of the wide tree (node
+ * visits cost TRAVERSAL_COST, triangles 1, weighted by area). */
 static int CollapseTree(const BuildNode* nodes, cd3MeshNode* wide, int* depthOut, double* sahOut)
 {
 	CollapseTask stack[(CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8];
@@ -880,7 +881,8 @@ static bool ChildContains(const cd3MeshNode* out, int outer, const cd3MeshNode* 
 {
 	for (int k = 0; k < 3; ++k)
 	{
-		if (!(out->bounds[k][outer] <= in->bounds[k][inner] && in->bounds[3 + k][inner] <= out->bounds[3 + k][outer]))
+		if (!(out->bounds[k][outer] <= in->bounds[k][inner] &&
+			  in->bounds[3 + k][inner] <= out->bounds[3 + k][outer]))
 		{
 			return false;
 		}
@@ -897,10 +899,10 @@ static bool ChildContainsBox(const cd3MeshNode* node, int j, cd3Aabb b)
 
 cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 {
-	/* Every 4-wide node but a root over a single leaf has two children or more. */
-	if (mesh == NULL || mesh->triangleCount <= 0 || mesh->leafCount <= 0 || mesh->leafCount > mesh->triangleCount ||
-		mesh->nodeCount <= 0 || mesh->nodeCount > (mesh->leafCount > 1 ? mesh->leafCount - 1 : 1) ||
-		mesh->depth > CD3_MESH_MAX_DEPTH)
+	/* Every wide node but a root over a single leaf has two children or more. */
+	if (mesh == NULL || mesh->triangleCount <= 0 || mesh->leafCount <= 0 ||
+		mesh->leafCount > mesh->triangleCount || mesh->nodeCount <= 0 ||
+		mesh->nodeCount > (mesh->leafCount > 1 ? mesh->leafCount - 1 : 1) || mesh->depth > CD3_MESH_MAX_DEPTH)
 	{
 		return CD_ERROR_INVALID_ARGUMENT;
 	}
@@ -968,7 +970,8 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 		if (cd3MeshIsLeaf(ref))
 		{
 			int first = cd3MeshLeafFirst(ref), count = cd3MeshLeafCount(ref);
-			if (parent == NULL || count <= 0 || first != nextTriangle || count > mesh->triangleCount - nextTriangle)
+			if (parent == NULL || count <= 0 || first != nextTriangle ||
+				count > mesh->triangleCount - nextTriangle)
 			{
 				return CD_ERROR_INVALID_ARGUMENT;
 			}

@@ -5,12 +5,13 @@
 
 #include "collide/mesh3.h"
 
-/* A 4-wide node, 128 bytes in both builds: the bounds of its four children side by side (row r of
- * bounds is min x, min y, min z, max x, max y, max z; column j is child j), in float rounded
- * outward from the triangles' cdReal bounds, so that one node load serves a 4-lane box test.
- * child[j] is an inner node's index (>= 1, the root is 0), a leaf (negative, see below) or
- * CD3_MESH_EMPTY; used children come first, and an empty child's bounds are min FLT_MAX, max
- * -FLT_MAX. A leaf holds the triangles first .. first + count - 1 of the reordered arrays. */
+/* An 8-wide node, 256 bytes (four cache lines) in both builds: the bounds of its children side by
+ * side (row r of bounds is min x, min y, min z, max x, max y, max z; column j is child j), in
+ * float rounded outward from the triangles' cdReal bounds, so that a ray tests four children with
+ * one 4-lane operation per row. child[j] is an inner node's index (>= 1, the root is 0), a leaf
+ * (negative, see below) or CD3_MESH_EMPTY; the `used` children come first, and an empty child's
+ * bounds are min FLT_MAX, max -FLT_MAX. A leaf holds the triangles first .. first + count - 1 of
+ * the reordered arrays. The nodes are in depth-first order (a child after its parent). */
 #define CD3_MESH_WIDTH 8
 
 typedef struct cd3MeshNode
@@ -45,9 +46,9 @@ static inline int32_t cd3MeshLeafCount(int32_t child)
 }
 
 /* Deepest tree the builder makes: below depth CD3_MESH_SAH_DEPTH it splits at the median index,
- * which adds at most log2(CD3_MAX_MESH_TRIANGLES) = 24 levels. The 4-wide tree collapses that
- * binary tree and is no deeper. Query stacks are sized by it: a walk that pushes up to four
- * children per node holds at most 3 entries per level plus one. */
+ * which adds at most log2(CD3_MAX_MESH_TRIANGLES) = 24 levels. The wide tree collapses that
+ * binary tree and is no deeper. Query stacks are sized by it: a walk that pushes up to
+ * CD3_MESH_WIDTH children per node holds at most CD3_MESH_WIDTH - 1 entries per level plus one. */
 #define CD3_MESH_SAH_DEPTH 40
 #define CD3_MESH_MAX_DEPTH 72
 
@@ -62,7 +63,7 @@ struct cd3Mesh
 	int inputTriangleCount;
 	int vertexCount;
 	int droppedTriangleCount;
-	int nodeCount; /* 4-wide nodes */
+	int nodeCount; /* wide nodes */
 	int leafCount;
 	int depth;
 	int activeEdgeCount;

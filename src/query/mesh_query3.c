@@ -85,15 +85,17 @@ static RayBox MakeRayBox(cd3Ray ray)
 	return r;
 }
 
-/* The ray against the four children's boxes at once (lane j is child j; loops the compiler turns
- * into 4-lane vector code): each child's entry fraction within [0, limit] and a bit per child
- * met. Empty children's bounds (min FLT_MAX, max -FLT_MAX) are never met. */
-static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal limit, cdReal enter[CD3_MESH_WIDTH])
+/* The ray against the children's boxes (lane j is child j; SSE2 in the float build, four at a
+ * time): each child's entry fraction within [0, limit] and a bit per child met, among the used
+ * ones (empty children's bounds are never met in the SSE code either, but only the used are
+ * looked at). */
+static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal limit,
+							  cdReal enter[CD3_MESH_WIDTH])
 {
 #if CD_MESH_SSE
 	/* The same operations lane by lane: max(t, lo) keeps lo where t is NaN, like the scalar code's
 	 * t > lo ? t : lo, and min likewise. */
-	/* Four children at a time, as many as in use (often not more than four). */
+	/* Four children at a time, as many as in use (bottom nodes often hold four or fewer). */
 	unsigned mask = 0;
 	int used = node->used;
 	for (int h = 0; h < used; h += 4)
@@ -102,10 +104,10 @@ static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal l
 		__m128 hi = _mm_set1_ps(limit);
 		for (int k = 0; k < 3; ++k)
 		{
-			__m128 tNear =
-				_mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]] + h), r->nearOrigin4[k]), r->inverse4[k]);
-			__m128 tFar =
-				_mm_mul_ps(_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]] + h), r->farOrigin4[k]), r->inverse4[k]);
+			__m128 tNear = _mm_mul_ps(
+				_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]] + h), r->nearOrigin4[k]), r->inverse4[k]);
+			__m128 tFar = _mm_mul_ps(
+				_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]] + h), r->farOrigin4[k]), r->inverse4[k]);
 			lo = _mm_max_ps(tNear, lo);
 			hi = _mm_min_ps(tFar, hi);
 		}
@@ -268,15 +270,6 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 		else
 		{
 			const cd3MeshNode* node = mesh->nodes + current;
-			/* The first child's triangles fetched while the boxes are tested: at the bottom of the
-			 * tree the walk goes there next or to a neighbour (the leaves' triangles follow on). */
-			if (cd3MeshIsLeaf(node->child[0]))
-			{
-				CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(node->child[0]));
-				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 64);
-				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 128);
-				CD_MESH_PREFETCH((const char*)(mesh->triangles + cd3MeshLeafFirst(node->child[0])) + 192);
-			}
 			cdReal enter[CD3_MESH_WIDTH];
 			unsigned mask = EnterChildren(&box, node, limit, enter);
 			/* The children met (empty ones never are: the mask keeps the used ones), nearest first
