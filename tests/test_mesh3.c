@@ -523,6 +523,8 @@ static void TestRaysThroughEdges(void)
 	CheckRaysThroughEdges(&terrain, MeshBounds(&terrain), 3000, &rng, "terrain edges");
 	TestMesh sphere = TestMeshSphere(cd3MakeVec(CD_R(1.0), CD_R(2.0), CD_R(3.0)), 2.0, 10, 12);
 	CheckRaysThroughEdges(&sphere, MeshBounds(&sphere), 3000, &rng, "sphere edges");
+	TestMeshFree(&terrain);
+	TestMeshFree(&sphere);
 }
 
 static void TestStats(void)
