@@ -54,7 +54,8 @@ typedef struct BuildNode
 	cd3Aabb bounds;
 	int32_t first;
 	int32_t count;
-	int32_t leaves; /* leaves in the subtree, for the wide collapse */
+	int32_t leaves;				  /* leaves in the subtree, for the wide collapse */
+	int32_t spanFirst, spanCount; /* the subtree's triangles */
 } BuildNode;
 
 typedef struct Bin
@@ -402,9 +403,18 @@ static int CollapseTree(const BuildNode* nodes, cd3MeshNode* wide, int* depthOut
 		int kids[CD3_MESH_WIDTH];
 		int n = GatherChildren(nodes, task.binary, kids);
 		node->used = n;
-		for (int j = 0; j < CD3_MESH_WIDTH - 1; ++j)
+		node->firstTriangle = nodes[task.binary].spanFirst;
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
 		{
-			node->pad[j] = 0;
+			node->childOffset[j] = 0xffffu;
+			node->childSpan[j] = 255u;
+			if (j < n)
+			{
+				int32_t offset = nodes[kids[j]].spanFirst - node->firstTriangle;
+				int32_t span = nodes[kids[j]].spanCount;
+				node->childOffset[j] = (uint16_t)(offset < 0xffff ? offset : 0xffff);
+				node->childSpan[j] = (uint8_t)(span < 255 ? span : 255);
+			}
 		}
 		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
 		{
@@ -757,6 +767,9 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 	{
 		BuildNode* b = buildNodes + i;
 		b->leaves = b->count > 0 ? 1 : buildNodes[b->first].leaves + buildNodes[b->first + 1].leaves;
+		b->spanFirst = b->count > 0 ? b->first : buildNodes[b->first].spanFirst;
+		b->spanCount =
+			b->count > 0 ? b->count : buildNodes[b->first].spanCount + buildNodes[b->first + 1].spanCount;
 	}
 	int wideDepth = 0;
 	double wideSah = 0.0;
@@ -998,9 +1011,20 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 		{
 			++used;
 		}
-		if (used < (index == 0 ? 1 : 2) || used != node->used || top + used > VALIDATE_STACK)
+		if (used < (index == 0 ? 1 : 2) || used != node->used || top + used > VALIDATE_STACK ||
+			node->firstTriangle != nextTriangle)
 		{
 			return CD_ERROR_INVALID_ARGUMENT;
+		}
+		/* The prefetch hints stay inside the triangles. */
+		for (int j = 0; j < used; ++j)
+		{
+			if (node->childOffset[j] != 0xffffu && node->childSpan[j] != 255u &&
+				(int64_t)node->firstTriangle + node->childOffset[j] + node->childSpan[j] >
+					mesh->triangleCount)
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
 		}
 		for (int j = used; j < CD3_MESH_WIDTH; ++j)
 		{

@@ -18,8 +18,12 @@ typedef struct cd3MeshNode
 {
 	float bounds[6][CD3_MESH_WIDTH];
 	int32_t child[CD3_MESH_WIDTH];
-	int32_t used; /* children in use: child[0 .. used - 1] */
-	int32_t pad[CD3_MESH_WIDTH - 1];
+	int32_t used;		   /* children in use: child[0 .. used - 1] */
+	int32_t firstTriangle; /* the subtree's triangles are firstTriangle .. (leaf order) */
+	/* Child j's triangles start at firstTriangle + childOffset[j] and number childSpan[j]; 0xffff
+	 * and 255 when they do not fit. Only hints for prefetching. */
+	uint16_t childOffset[CD3_MESH_WIDTH];
+	uint8_t childSpan[CD3_MESH_WIDTH];
 } cd3MeshNode;
 
 #define CD3_MESH_EMPTY (-1)

@@ -305,6 +305,18 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 					{
 						CD_MESH_PREFETCH((const char*)(mesh->nodes + c) + line);
 					}
+					/* A small subtree (a bottom node): its triangles too, so that they do not wait
+					 * for the node. */
+					if (node->childSpan[j] <= 16u && node->childOffset[j] != 0xffffu)
+					{
+						const char* from =
+							(const char*)(mesh->triangles + node->firstTriangle + node->childOffset[j]);
+						size_t bytes = (size_t)node->childSpan[j] * sizeof(cd3Triangle);
+						for (size_t line = 0; line < bytes; line += 64)
+						{
+							CD_MESH_PREFETCH(from + line);
+						}
+					}
 				}
 			}
 			if (n > 0)
