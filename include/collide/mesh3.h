@@ -37,11 +37,11 @@ typedef struct cd3MeshStats
 	int triangleCount;		  /* triangles kept */
 	int droppedTriangleCount; /* zero-area input triangles dropped by the builder */
 	int vertexCount;		  /* input vertices */
-	int nodeCount;			  /* BVH nodes (32 bytes each) */
-	int leafCount;			  /* BVH leaves */
-	int depth;				  /* longest root-to-leaf path, the root alone being 1 */
+	int nodeCount;			  /* BVH nodes (8-wide, 256 bytes each) */
+	int leafCount;			  /* BVH leaves (children of nodes holding up to 8 triangles) */
+	int depth;				  /* longest root-to-leaf path in nodes and leaf, root over a leaf being 2 */
 	int activeEdgeCount;	  /* triangle edges that are convex, boundary or non-manifold on a side */
-	double sahCost; /* SAH cost of the tree: sum over nodes of area/root area, leaves times their size */
+	double sahCost; /* SAH cost of the wide tree: sum over nodes of area/root area, leaves times their size */
 	size_t bytes;	/* the whole block */
 	cd3Aabb bounds; /* of the kept triangles, mesh space */
 } cd3MeshStats;

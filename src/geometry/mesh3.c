@@ -54,6 +54,8 @@ typedef struct BuildNode
 	cd3Aabb bounds;
 	int32_t first;
 	int32_t count;
+	int32_t leaves;				  /* leaves in the subtree, for the wide collapse */
+	int32_t spanFirst, spanCount; /* the subtree's triangles */
 } BuildNode;
 
 typedef struct Bin
@@ -293,6 +295,165 @@ static int BuildTree(BuildTriangle* tris, int n, BuildNode* nodes, int* depthOut
 	*leafCountOut = leafCount;
 	*sahOut = sah;
 	return nodeCount;
+}
+
+/* ---- the wide tree ------------------------------------------------------------------------------- */
+
+/* The binary children gathered under one wide node, in order (a child replaced by its two
+ * children in place keeps the leaves in order). A subtree of at most CD3_MESH_WIDTH leaves is
+ * flattened into one node. Above that, the inner child of largest area among those with more
+ * than CD3_MESH_WIDTH leaves is opened while there is room, so that the subtrees left below
+ * fill their nodes; then the smallest inner children are opened into the room left, which
+ * lifts their leaves into this node instead of making nearly empty nodes of them. */
+static int GatherChildren(const BuildNode* nodes, int binary, int kids[CD3_MESH_WIDTH])
+{
+	int n = 0;
+	if (nodes[binary].count > 0)
+	{
+		kids[n++] = binary; /* a root that is a leaf */
+		return n;
+	}
+	kids[n++] = nodes[binary].first;
+	kids[n++] = nodes[binary].first + 1;
+	while (n < CD3_MESH_WIDTH)
+	{
+		int pick = -1;
+		double best = -1.0;
+		for (int i = 0; i < n; ++i)
+		{
+			const BuildNode* kid = nodes + kids[i];
+			if (kid->count == 0 && kid->leaves > CD3_MESH_WIDTH && Area(kid->bounds) > best)
+			{
+				best = Area(kid->bounds);
+				pick = i;
+			}
+		}
+		if (pick < 0)
+		{
+			int fewest = 0;
+			for (int i = 0; i < n; ++i)
+			{
+				const BuildNode* kid = nodes + kids[i];
+				if (kid->count == 0 && (pick < 0 || kid->leaves < fewest))
+				{
+					fewest = kid->leaves;
+					pick = i;
+				}
+			}
+			/* Opening it must leave room for its leaves or be worth a node: a subtree that
+			 * does not fit whole stays one node. */
+			if (pick < 0 || n - 1 + fewest > CD3_MESH_WIDTH)
+			{
+				break;
+			}
+		}
+		int left = nodes[kids[pick]].first;
+		for (int i = n; i > pick + 1; --i)
+		{
+			kids[i] = kids[i - 1];
+		}
+		kids[pick] = left;
+		kids[pick + 1] = left + 1;
+		++n;
+	}
+	return n;
+}
+
+static void SetChildBounds(cd3MeshNode* node, int j, cd3Aabb b)
+{
+	node->bounds[0][j] = FloatDown(b.min.x);
+	node->bounds[1][j] = FloatDown(b.min.y);
+	node->bounds[2][j] = FloatDown(b.min.z);
+	node->bounds[3][j] = FloatUp(b.max.x);
+	node->bounds[4][j] = FloatUp(b.max.y);
+	node->bounds[5][j] = FloatUp(b.max.z);
+}
+
+typedef struct CollapseTask
+{
+	int binary; /* the binary inner node (or leaf root) this wide node stands for */
+	int parent; /* the wide parent, -1 for the root */
+	int slot;
+	int depth;
+} CollapseTask;
+
+/* Collapses the binary tree into `wide` in depth-first order (or only counts, when `wide` is NULL); returns
+ * the node count and the depth (levels of nodes plus the leaf level) and SAH cost of the wide tree (node
+ * visits cost TRAVERSAL_COST, triangles 1, weighted by area). */
+static int CollapseTree(const BuildNode* nodes, cd3MeshNode* wide, int* depthOut, double* sahOut)
+{
+	CollapseTask stack[(CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8];
+	int top = 0;
+	int count = 0;
+	int maxDepth = 0;
+	double rootArea = Area(nodes[0].bounds) > 0.0 ? Area(nodes[0].bounds) : 1.0;
+	double sah = 0.0;
+	stack[top++] = (CollapseTask){0, -1, 0, 1};
+	while (top > 0)
+	{
+		CollapseTask task = stack[--top];
+		int index = count++;
+		cd3MeshNode scratch;
+		cd3MeshNode* node = wide != NULL ? wide + index : &scratch;
+		if (wide != NULL && task.parent >= 0)
+		{
+			wide[task.parent].child[task.slot] = index;
+		}
+		sah += TRAVERSAL_COST * Area(nodes[task.binary].bounds) / rootArea;
+		int kids[CD3_MESH_WIDTH];
+		int n = GatherChildren(nodes, task.binary, kids);
+		node->used = n;
+		node->firstTriangle = nodes[task.binary].spanFirst;
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+		{
+			node->childOffset[j] = 0xffffu;
+			node->childSpan[j] = 255u;
+			if (j < n)
+			{
+				int32_t offset = nodes[kids[j]].spanFirst - node->firstTriangle;
+				int32_t span = nodes[kids[j]].spanCount;
+				node->childOffset[j] = (uint16_t)(offset < 0xffff ? offset : 0xffff);
+				node->childSpan[j] = (uint8_t)(span < 255 ? span : 255);
+			}
+		}
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+		{
+			if (j >= n)
+			{
+				node->child[j] = CD3_MESH_EMPTY;
+				for (int r = 0; r < 3; ++r)
+				{
+					node->bounds[r][j] = FLT_MAX;
+					node->bounds[3 + r][j] = -FLT_MAX;
+				}
+				continue;
+			}
+			const BuildNode* kid = nodes + kids[j];
+			SetChildBounds(node, j, kid->bounds);
+			if (kid->count > 0)
+			{
+				node->child[j] = cd3MeshLeafChild(kid->first, kid->count);
+				sah += Area(kid->bounds) / rootArea * kid->count;
+				maxDepth = task.depth + 1 > maxDepth ? task.depth + 1 : maxDepth;
+			}
+			else
+			{
+				node->child[j] = CD3_MESH_EMPTY; /* set when the child is made */
+			}
+		}
+		/* Pushed last to first: the first child is made next, so that nodes follow in depth-first
+		 * order. */
+		for (int j = n - 1; j >= 0; --j)
+		{
+			if (nodes[kids[j]].count == 0)
+			{
+				stack[top++] = (CollapseTask){kids[j], index, j, task.depth + 1};
+			}
+		}
+	}
+	*depthOut = maxDepth;
+	*sahOut = sah;
+	return count;
 }
 
 /* ---- welding and edge flags --------------------------------------------------------------------- */
@@ -599,10 +760,25 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 
 	int depth = 0, leafCount = 0;
 	double sah = 0.0;
-	int nodeCount = BuildTree(tris, kept, buildNodes, &depth, &leafCount, &sah);
+	int nodeCountBinary = BuildTree(tris, kept, buildNodes, &depth, &leafCount, &sah);
 
+	/* Children come after their parents: leaf counts from the last node back. */
+	for (int i = nodeCountBinary - 1; i >= 0; --i)
+	{
+		BuildNode* b = buildNodes + i;
+		b->leaves = b->count > 0 ? 1 : buildNodes[b->first].leaves + buildNodes[b->first + 1].leaves;
+		b->spanFirst = b->count > 0 ? b->first : buildNodes[b->first].spanFirst;
+		b->spanCount =
+			b->count > 0 ? b->count : buildNodes[b->first].spanCount + buildNodes[b->first + 1].spanCount;
+	}
+	int wideDepth = 0;
+	double wideSah = 0.0;
+	int wideCount = CollapseTree(buildNodes, NULL, &wideDepth, &wideSah);
+
+	/* The nodes start on a 64-byte boundary (two cache lines each): the block gets 64 bytes of
+	 * slack for that. */
 	size_t headerBytes = AlignUp(sizeof(cd3Mesh));
-	size_t nodeBytes = AlignUp((size_t)nodeCount * sizeof(cd3MeshNode));
+	size_t nodeBytes = AlignUp((size_t)wideCount * sizeof(cd3MeshNode)) + 64u;
 	size_t triangleBytes = AlignUp((size_t)kept * sizeof(cd3Triangle));
 	size_t inputBytes = AlignUp((size_t)kept * sizeof(int32_t));
 	size_t flagBytes = AlignUp((size_t)kept * sizeof(uint8_t));
@@ -616,7 +792,8 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 	}
 	cd3Mesh* m = (cd3Mesh*)block;
 	memset(m, 0, sizeof(cd3Mesh));
-	m->nodes = (cd3MeshNode*)(block + headerBytes);
+	uintptr_t nodeAddress = ((uintptr_t)(block + headerBytes) + 63u) & ~(uintptr_t)63u;
+	m->nodes = (cd3MeshNode*)(block + headerBytes + (size_t)(nodeAddress - (uintptr_t)(block + headerBytes)));
 	m->triangles = (cd3Triangle*)(block + headerBytes + nodeBytes);
 	m->inputIndex = (int32_t*)(block + headerBytes + nodeBytes + triangleBytes);
 	m->edgeFlags = (uint8_t*)(block + headerBytes + nodeBytes + triangleBytes + inputBytes);
@@ -625,10 +802,10 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 	m->inputTriangleCount = triangleCount;
 	m->vertexCount = vertexCount;
 	m->droppedTriangleCount = triangleCount - kept;
-	m->nodeCount = nodeCount;
+	m->nodeCount = CollapseTree(buildNodes, m->nodes, &wideDepth, &wideSah);
 	m->leafCount = leafCount;
-	m->depth = depth;
-	m->sahCost = sah;
+	m->depth = wideDepth;
+	m->sahCost = wideSah;
 	m->bytes = total;
 	m->bounds = buildNodes[0].bounds;
 
@@ -648,19 +825,6 @@ cdResult cd3CreateMesh(const cd3Vec* vertices, int vertexCount, const int* indic
 		{
 			canonical[3 * s + k] = weld[indices[3 * t + k]];
 		}
-	}
-	for (int i = 0; i < nodeCount; ++i)
-	{
-		cd3MeshNode* node = m->nodes + i;
-		cd3Aabb b = buildNodes[i].bounds;
-		node->bounds[0] = FloatDown(b.min.x);
-		node->bounds[1] = FloatDown(b.min.y);
-		node->bounds[2] = FloatDown(b.min.z);
-		node->bounds[3] = FloatUp(b.max.x);
-		node->bounds[4] = FloatUp(b.max.y);
-		node->bounds[5] = FloatUp(b.max.z);
-		node->first = buildNodes[i].first;
-		node->count = buildNodes[i].count;
 	}
 	ComputeEdgeFlags(m->triangles, canonical, kept, vertexCount, m->edgeFlags, edges, edgeScratch, buckets);
 	int active = 0;
@@ -725,11 +889,13 @@ cd3MeshStats cd3Mesh_GetStats(const cd3Mesh* mesh)
 	return stats;
 }
 
-static bool NodeContains(const cd3MeshNode* outer, const cd3MeshNode* inner)
+/* Child `inner` of node `in` lies inside child `outer` of node `out`. */
+static bool ChildContains(const cd3MeshNode* out, int outer, const cd3MeshNode* in, int inner)
 {
 	for (int k = 0; k < 3; ++k)
 	{
-		if (!(outer->bounds[k] <= inner->bounds[k] && inner->bounds[3 + k] <= outer->bounds[3 + k]))
+		if (!(out->bounds[k][outer] <= in->bounds[k][inner] &&
+			  in->bounds[3 + k][inner] <= out->bounds[3 + k][outer]))
 		{
 			return false;
 		}
@@ -737,17 +903,19 @@ static bool NodeContains(const cd3MeshNode* outer, const cd3MeshNode* inner)
 	return true;
 }
 
-static bool NodeContainsBox(const cd3MeshNode* node, cd3Aabb b)
+static bool ChildContainsBox(const cd3MeshNode* node, int j, cd3Aabb b)
 {
-	return (cdReal)node->bounds[0] <= b.min.x && (cdReal)node->bounds[1] <= b.min.y &&
-		   (cdReal)node->bounds[2] <= b.min.z && b.max.x <= (cdReal)node->bounds[3] &&
-		   b.max.y <= (cdReal)node->bounds[4] && b.max.z <= (cdReal)node->bounds[5];
+	return (cdReal)node->bounds[0][j] <= b.min.x && (cdReal)node->bounds[1][j] <= b.min.y &&
+		   (cdReal)node->bounds[2][j] <= b.min.z && b.max.x <= (cdReal)node->bounds[3][j] &&
+		   b.max.y <= (cdReal)node->bounds[4][j] && b.max.z <= (cdReal)node->bounds[5][j];
 }
 
 cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 {
-	if (mesh == NULL || mesh->triangleCount <= 0 || mesh->nodeCount != 2 * mesh->leafCount - 1 ||
-		mesh->nodeCount > 2 * mesh->triangleCount - 1 || mesh->depth > CD3_MESH_MAX_DEPTH)
+	/* Every wide node but a root over a single leaf has two children or more. */
+	if (mesh == NULL || mesh->triangleCount <= 0 || mesh->leafCount <= 0 ||
+		mesh->leafCount > mesh->triangleCount || mesh->nodeCount <= 0 ||
+		mesh->nodeCount > (mesh->leafCount > 1 ? mesh->leafCount - 1 : 1) || mesh->depth > CD3_MESH_MAX_DEPTH)
 	{
 		return CD_ERROR_INVALID_ARGUMENT;
 	}
@@ -782,58 +950,115 @@ cdResult cd3ValidateMesh(const cd3Mesh* mesh)
 	{
 		return CD_ERROR_INVALID_ARGUMENT;
 	}
-	/* Walk the tree: each leaf's range must tile 0..n-1 in order, each child inside its parent. */
-	int stack[CD3_MESH_MAX_DEPTH + 2];
-	int depthOf[CD3_MESH_MAX_DEPTH + 2];
+	/* Walk the tree in slot order: each leaf's range must tile 0..n-1 in order, each child inside
+	 * its parent's slot, each triangle inside its leaf's. A stack entry is a child (node or leaf),
+	 * its parent and the parent's slot holding it. */
+	enum
+	{
+		VALIDATE_STACK = (CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8
+	};
+	int32_t stack[VALIDATE_STACK];
+	int parentOf[VALIDATE_STACK];
+	int slotOf[VALIDATE_STACK];
+	int depthOf[VALIDATE_STACK];
 	int top = 0;
 	stack[top] = 0;
+	parentOf[top] = -1;
+	slotOf[top] = 0;
 	depthOf[top++] = 1;
 	int nextTriangle = 0;
 	int visited = 0;
+	int leaves = 0;
 	while (top > 0)
 	{
 		--top;
-		int index = stack[top], depth = depthOf[top];
-		if (index < 0 || index >= mesh->nodeCount || depth > CD3_MESH_MAX_DEPTH ||
+		int32_t ref = stack[top];
+		int depth = depthOf[top];
+		int slot = slotOf[top];
+		const cd3MeshNode* parent = parentOf[top] >= 0 ? mesh->nodes + parentOf[top] : NULL;
+		if (depth > CD3_MESH_MAX_DEPTH)
+		{
+			return CD_ERROR_INVALID_ARGUMENT;
+		}
+		if (cd3MeshIsLeaf(ref))
+		{
+			int first = cd3MeshLeafFirst(ref), count = cd3MeshLeafCount(ref);
+			if (parent == NULL || count <= 0 || first != nextTriangle ||
+				count > mesh->triangleCount - nextTriangle)
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+			for (int s = first; s < first + count; ++s)
+			{
+				if (!ChildContainsBox(parent, slot, cd3ComputeTriangleAabb(mesh->triangles[s])))
+				{
+					return CD_ERROR_INVALID_ARGUMENT;
+				}
+			}
+			nextTriangle += count;
+			++leaves;
+			continue;
+		}
+		int index = ref;
+		if (index < 0 || index >= mesh->nodeCount || (parent != NULL && index <= parentOf[top]) ||
 			++visited > mesh->nodeCount)
 		{
 			return CD_ERROR_INVALID_ARGUMENT;
 		}
 		const cd3MeshNode* node = mesh->nodes + index;
-		for (int k = 0; k < 3; ++k)
+		int used = 0;
+		while (used < CD3_MESH_WIDTH && node->child[used] != CD3_MESH_EMPTY)
 		{
-			if (!isfinite(node->bounds[k]) || !isfinite(node->bounds[3 + k]))
-			{
-				return CD_ERROR_NOT_FINITE;
-			}
+			++used;
 		}
-		if (node->count > 0)
-		{
-			if (node->first != nextTriangle || node->count > mesh->triangleCount - nextTriangle)
-			{
-				return CD_ERROR_INVALID_ARGUMENT;
-			}
-			for (int s = node->first; s < node->first + node->count; ++s)
-			{
-				if (!NodeContainsBox(node, cd3ComputeTriangleAabb(mesh->triangles[s])))
-				{
-					return CD_ERROR_INVALID_ARGUMENT;
-				}
-			}
-			nextTriangle += node->count;
-			continue;
-		}
-		int left = node->first;
-		if (left <= index || left + 1 >= mesh->nodeCount || top + 2 > CD3_MESH_MAX_DEPTH + 2 ||
-			!NodeContains(node, mesh->nodes + left) || !NodeContains(node, mesh->nodes + left + 1))
+		if (used < (index == 0 ? 1 : 2) || used != node->used || top + used > VALIDATE_STACK ||
+			node->firstTriangle != nextTriangle)
 		{
 			return CD_ERROR_INVALID_ARGUMENT;
 		}
-		/* Right first on the stack so that leaves come in order. */
-		stack[top] = left + 1;
-		depthOf[top++] = depth + 1;
-		stack[top] = left;
-		depthOf[top++] = depth + 1;
+		/* The prefetch hints stay inside the triangles. */
+		for (int j = 0; j < used; ++j)
+		{
+			if (node->childOffset[j] != 0xffffu && node->childSpan[j] != 255u &&
+				(int64_t)node->firstTriangle + node->childOffset[j] + node->childSpan[j] >
+					mesh->triangleCount)
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+		}
+		for (int j = used; j < CD3_MESH_WIDTH; ++j)
+		{
+			if (node->child[j] != CD3_MESH_EMPTY)
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+		}
+		for (int j = 0; j < used; ++j)
+		{
+			for (int r = 0; r < 6; ++r)
+			{
+				if (!isfinite(node->bounds[r][j]))
+				{
+					return CD_ERROR_NOT_FINITE;
+				}
+			}
+			if (parent != NULL && !ChildContains(parent, slot, node, j))
+			{
+				return CD_ERROR_INVALID_ARGUMENT;
+			}
+		}
+		/* Last to first, so that the first slot comes off the stack first. */
+		for (int j = used - 1; j >= 0; --j)
+		{
+			stack[top] = node->child[j];
+			parentOf[top] = index;
+			slotOf[top] = j;
+			depthOf[top++] = depth + 1;
+		}
+	}
+	if (leaves != mesh->leafCount)
+	{
+		return CD_ERROR_INVALID_ARGUMENT;
 	}
 	if (nextTriangle != mesh->triangleCount || visited != mesh->nodeCount)
 	{

@@ -5,19 +5,51 @@
 #include "geometry/mesh3_internal.h"
 #include "query/mesh_query3.h"
 
-/* Stack room for a depth-first walk that pushes both children: depth + 1 entries. */
-#define STACK_SIZE (CD3_MESH_MAX_DEPTH + 4)
+#if !CD_DOUBLE && defined(__SSE2__) && !defined(COLLIDE_NO_SIMD)
+#include <emmintrin.h>
+#define CD_MESH_SSE 1
+#else
+#define CD_MESH_SSE 0
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define CD_MESH_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define CD_MESH_PREFETCH(p) ((void)(p))
+#endif
+
+/* The index of the lowest set bit of a non-zero mask. */
+static inline int LowestBit(unsigned mask)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctz(mask);
+#else
+	int i = 0;
+	while ((mask & 1u) == 0)
+	{
+		mask >>= 1;
+		++i;
+	}
+	return i;
+#endif
+}
+
+/* Stack room for a depth-first walk that pushes up to CD3_MESH_WIDTH children per node:
+ * CD3_MESH_WIDTH - 1 per level and a few. */
+#define STACK_SIZE ((CD3_MESH_WIDTH - 1) * CD3_MESH_MAX_DEPTH + 8)
 
 /* ---- ray against node bounds -------------------------------------------------------------------- */
 
 typedef struct RayBox
 {
-	/* Per axis: the node bound the ray meets first (min when it runs towards +) and last, as
-	 * indices into cd3MeshNode.bounds, the origin shifted by the pad towards each, and
-	 * 1 / translation (infinite on a zero component). */
-	int nearIndex[3], farIndex[3];
+	/* Per axis: the bounds row the ray meets first (min when it runs towards +) and last, the
+	 * origin shifted by the pad towards each, and 1 / translation (infinite on a zero component). */
+	int nearRow[3], farRow[3];
 	cdReal nearOrigin[3], farOrigin[3];
 	cdReal inverse[3];
+#if CD_MESH_SSE
+	__m128 nearOrigin4[3], farOrigin4[3], inverse4[3]; /* the same in all four lanes */
+#endif
 } RayBox;
 
 static RayBox MakeRayBox(cd3Ray ray)
@@ -36,30 +68,81 @@ static RayBox MakeRayBox(cd3Ray ray)
 	{
 		/* IEEE division: a zero component gives an infinite inverse, whose products below are
 		 * infinite (origin outside the slab: no t) or NaN (origin on a slab plane, inside it for
-		 * every t), and the comparisons in EnterNode skip NaN. */
+		 * every t), and the comparisons in EnterChildren skip NaN. */
 		r.inverse[k] = CD_R(1.0) / d[k];
 		bool positive = !(r.inverse[k] < CD_R(0.0)); /* the inverse's sign: -0 gives -infinity */
-		r.nearIndex[k] = positive ? k : 3 + k;
-		r.farIndex[k] = positive ? 3 + k : k;
+		r.nearRow[k] = positive ? k : 3 + k;
+		r.farRow[k] = positive ? 3 + k : k;
 		/* bound - pad - origin for the min, bound + pad - origin for the max. */
 		r.nearOrigin[k] = positive ? o[k] + pad : o[k] - pad;
 		r.farOrigin[k] = positive ? o[k] - pad : o[k] + pad;
+#if CD_MESH_SSE
+		r.nearOrigin4[k] = _mm_set1_ps(r.nearOrigin[k]);
+		r.farOrigin4[k] = _mm_set1_ps(r.farOrigin[k]);
+		r.inverse4[k] = _mm_set1_ps(r.inverse[k]);
+#endif
 	}
 	return r;
 }
 
-/* Entry fraction of the ray into the node's box within [0, limit], or a negative value on a miss. */
-static cdReal EnterNode(const RayBox* r, const cd3MeshNode* node, cdReal limit)
+/* The ray against the children's boxes (lane j is child j; SSE2 in the float build, four at a
+ * time): each child's entry fraction within [0, limit] and a bit per child met, among the used
+ * ones (empty children's bounds are never met in the SSE code either, but only the used are
+ * looked at). */
+static unsigned EnterChildren(const RayBox* r, const cd3MeshNode* node, cdReal limit,
+							  cdReal enter[CD3_MESH_WIDTH])
 {
-	cdReal enter = CD_R(0.0), exit = limit;
+#if CD_MESH_SSE
+	/* The same operations lane by lane: max(t, lo) keeps lo where t is NaN, like the scalar code's
+	 * t > lo ? t : lo, and min likewise. */
+	/* Four children at a time, as many as in use (bottom nodes often hold four or fewer). */
+	unsigned mask = 0;
+	int used = node->used;
+	for (int h = 0; h < used; h += 4)
+	{
+		__m128 lo = _mm_setzero_ps();
+		__m128 hi = _mm_set1_ps(limit);
+		for (int k = 0; k < 3; ++k)
+		{
+			__m128 tNear = _mm_mul_ps(
+				_mm_sub_ps(_mm_load_ps(node->bounds[r->nearRow[k]] + h), r->nearOrigin4[k]), r->inverse4[k]);
+			__m128 tFar = _mm_mul_ps(
+				_mm_sub_ps(_mm_load_ps(node->bounds[r->farRow[k]] + h), r->farOrigin4[k]), r->inverse4[k]);
+			lo = _mm_max_ps(tNear, lo);
+			hi = _mm_min_ps(tFar, hi);
+		}
+		_mm_storeu_ps(enter + h, lo);
+		mask |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(lo, hi)) << h;
+	}
+	return mask;
+#else
+	cdReal lo[CD3_MESH_WIDTH], hi[CD3_MESH_WIDTH];
+	for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+	{
+		lo[j] = CD_R(0.0);
+		hi[j] = limit;
+	}
 	for (int k = 0; k < 3; ++k)
 	{
-		cdReal tNear = ((cdReal)node->bounds[r->nearIndex[k]] - r->nearOrigin[k]) * r->inverse[k];
-		cdReal tFar = ((cdReal)node->bounds[r->farIndex[k]] - r->farOrigin[k]) * r->inverse[k];
-		enter = tNear > enter ? tNear : enter;
-		exit = tFar < exit ? tFar : exit;
+		const float* nearBound = node->bounds[r->nearRow[k]];
+		const float* farBound = node->bounds[r->farRow[k]];
+		cdReal nearOrigin = r->nearOrigin[k], farOrigin = r->farOrigin[k], inverse = r->inverse[k];
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+		{
+			cdReal tNear = ((cdReal)nearBound[j] - nearOrigin) * inverse;
+			cdReal tFar = ((cdReal)farBound[j] - farOrigin) * inverse;
+			lo[j] = tNear > lo[j] ? tNear : lo[j];
+			hi[j] = tFar < hi[j] ? tFar : hi[j];
+		}
 	}
-	return enter <= exit ? enter : -CD_R(1.0);
+	unsigned mask = 0;
+	for (int j = 0; j < CD3_MESH_WIDTH; ++j)
+	{
+		enter[j] = lo[j];
+		mask |= (lo[j] <= hi[j] ? 1u : 0u) << j;
+	}
+	return mask;
+#endif
 }
 
 static cd3Ray RayToMesh(cd3Transform xf, cd3Ray ray)
@@ -74,6 +157,56 @@ static cd3Triangle TriangleToWorld(cd3Transform xf, cd3Triangle t)
 {
 	cd3Triangle w = {cd3TransformPoint(xf, t.a), cd3TransformPoint(xf, t.b), cd3TransformPoint(xf, t.c)};
 	return w;
+}
+
+static cdReal SumAbs(cd3Vec v)
+{
+	return cdAbs(v.x) + cdAbs(v.y) + cdAbs(v.z);
+}
+
+static cdReal MaxAbs3(cd3Vec v)
+{
+	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+}
+
+/* False only when cd3RaycastTriangle(t, ray) certainly misses: a cdReal test of the ray line
+ * against the closed triangle (barycentric numerators and the fraction, all times the
+ * determinant), each compared with a margin of 32 epsilons of a bound on its terms. That bound
+ * covers the round-off of these products (a few epsilons: each term is a product of three
+ * rounded differences) and the tolerance of cd3RaycastTriangle, which accepts hit points within
+ * 4 double epsilons of the largest coordinate `magnitude` of the triangle and the ray's ends: a
+ * point that far outside an edge moves a numerator by at most that distance times |d| times the
+ * other edge's length. NaN and infinite products never reject. */
+static bool MayHitTriangle(cd3Triangle t, cd3Ray ray, cdReal rayMagnitude)
+{
+	cd3Vec d = ray.translation;
+	cd3Vec e1 = cd3Sub(t.b, t.a), e2 = cd3Sub(t.c, t.a), s = cd3Sub(ray.origin, t.a);
+	cd3Vec p = cd3Cross(d, e2);
+	cd3Vec q = cd3Cross(s, e1);
+	cdReal det = cd3Dot(e1, p);
+	cdReal u = cd3Dot(s, p);
+	cdReal v = cd3Dot(d, q);
+	cdReal w = cd3Dot(e2, q); /* the fraction times det */
+	cdReal magnitude = cdMax(rayMagnitude, cdMax(MaxAbs3(t.a), cdMax(MaxAbs3(t.b), MaxAbs3(t.c))));
+	cdReal ds = SumAbs(d), e1s = SumAbs(e1), e2s = SumAbs(e2), ss = SumAbs(s) + magnitude;
+	cdReal k = CD_R(32.0) * CD_REAL_EPSILON;
+	cdReal marginDet = k * e1s * ds * e2s;
+	cdReal marginU = k * ss * ds * e2s;
+	cdReal marginV = k * ds * ss * e1s;
+	cdReal marginW = k * e2s * ss * e1s;
+	if (det < CD_R(0.0))
+	{
+		det = -det;
+		u = -u;
+		v = -v;
+		w = -w;
+	}
+	if (!(det > marginDet))
+	{
+		return true; /* nearly parallel: the exact routine decides */
+	}
+	return !(u < -marginU || v < -marginV || u + v > det + marginU + marginV + marginDet || w < -marginW ||
+			 w > det + marginW + marginDet);
 }
 
 /* Node fractions are those of the mesh-space ray; the triangle casts run in world space on the
@@ -91,47 +224,41 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 	bool identity = xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) && xf.p.z == CD_R(0.0) &&
 					xf.q.x == CD_R(0.0) && xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0);
 	RayBox box = MakeRayBox(identity ? ray : RayToMesh(xf, ray));
+	cd3Vec rayEnd = cd3Add(ray.origin, ray.translation);
+	cdReal rayMagnitude = cdMax(MaxAbs3(ray.origin), MaxAbs3(rayEnd));
 	bool found = false;
 	cd3RayHit best;
-	int bestIndex = 0;
+	int bestSlot = 0;
 	cdReal limit = CD_R(1.0) + FRACTION_MARGIN;
-	/* Each entry keeps the node's entry fraction, so that nodes behind the closest hit found since
-	 * they were pushed are dropped when popped, without testing their triangles or children. */
-	int stack[STACK_SIZE];
+	/* Entries are children (nodes or leaves) with their entry fractions, so that those behind the
+	 * closest hit found since they were pushed are dropped when popped, without testing their
+	 * triangles or children. The walk goes on with the nearest child met and pushes the others
+	 * farthest first. */
+	int32_t stack[STACK_SIZE];
 	cdReal enterStack[STACK_SIZE];
 	int top = 0;
-	cdReal rootEnter = EnterNode(&box, mesh->nodes, limit);
-	if (rootEnter < CD_R(0.0))
+	int32_t current = 0;
+	for (;;)
 	{
-		return false;
-	}
-	stack[top] = 0;
-	enterStack[top++] = rootEnter;
-	while (top > 0)
-	{
-		--top;
-		if (enterStack[top] > limit)
+		if (cd3MeshIsLeaf(current))
 		{
-			continue;
-		}
-		const cd3MeshNode* node = mesh->nodes + stack[top];
-		if (node->count > 0)
-		{
-			for (int s = node->first; s < node->first + node->count; ++s)
+			int first = cd3MeshLeafFirst(current), end = first + cd3MeshLeafCount(current);
+			for (int s = first; s < end; ++s)
 			{
 				cd3RayHit hit;
 				cd3Triangle t = identity ? mesh->triangles[s] : TriangleToWorld(xf, mesh->triangles[s]);
-				if (!cd3RaycastTriangle(t, ray, &hit))
+				if (!MayHitTriangle(t, ray, rayMagnitude) || !cd3RaycastTriangle(t, ray, &hit))
 				{
 					continue;
 				}
-				int index = mesh->inputIndex[s];
+				/* The input index (another array) is only read on a tie and for the answer. */
 				if (!found || hit.fraction < best.fraction ||
-					(hit.fraction == best.fraction && index < bestIndex))
+					(hit.fraction == best.fraction && mesh->inputIndex[s] < mesh->inputIndex[bestSlot]))
 				{
 					found = true;
 					best = hit;
-					bestIndex = index;
+					bestSlot = s;
+					CD_MESH_PREFETCH(mesh->inputIndex + s);
 					limit = cdMin(best.fraction + FRACTION_MARGIN, limit);
 					if (any)
 					{
@@ -139,44 +266,85 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 					}
 				}
 			}
-			continue;
 		}
-		int left = node->first;
-		cdReal tl = EnterNode(&box, mesh->nodes + left, limit);
-		cdReal tr = EnterNode(&box, mesh->nodes + left + 1, limit);
-		/* The nearer child on top of the stack. */
-		if (tl >= CD_R(0.0) && tr >= CD_R(0.0))
+		else
 		{
-			if (tl <= tr)
+			const cd3MeshNode* node = mesh->nodes + current;
+			cdReal enter[CD3_MESH_WIDTH];
+			unsigned mask = EnterChildren(&box, node, limit, enter);
+			/* The children met (empty ones never are: the mask keeps the used ones), nearest first
+			 * (an insertion sort of a few). */
+			mask &= (1u << node->used) - 1u;
+			int32_t child[CD3_MESH_WIDTH];
+			cdReal at[CD3_MESH_WIDTH];
+			int n = 0;
+			while (mask != 0)
 			{
-				stack[top] = left + 1;
-				enterStack[top++] = tr;
-				stack[top] = left;
-				enterStack[top++] = tl;
+				int j = LowestBit(mask);
+				mask &= mask - 1u;
+				int32_t c = node->child[j];
+				int i = n++;
+				while (i > 0 && at[i - 1] > enter[j])
+				{
+					at[i] = at[i - 1];
+					child[i] = child[i - 1];
+					--i;
+				}
+				at[i] = enter[j];
+				child[i] = c;
+				/* Fetched while the walk goes on: the nearest child is visited next, the others
+				 * maybe later. */
+				if (cd3MeshIsLeaf(c))
+				{
+					CD_MESH_PREFETCH(mesh->triangles + cd3MeshLeafFirst(c));
+					CD_MESH_PREFETCH(mesh->inputIndex + cd3MeshLeafFirst(c));
+				}
+				else
+				{
+					for (size_t line = 0; line < sizeof(cd3MeshNode); line += 64)
+					{
+						CD_MESH_PREFETCH((const char*)(mesh->nodes + c) + line);
+					}
+					/* A small subtree (a bottom node): its triangles too, so that they do not wait
+					 * for the node. */
+					if (node->childSpan[j] <= 16u && node->childOffset[j] != 0xffffu)
+					{
+						const char* from =
+							(const char*)(mesh->triangles + node->firstTriangle + node->childOffset[j]);
+						size_t bytes = (size_t)node->childSpan[j] * sizeof(cd3Triangle);
+						for (size_t line = 0; line < bytes; line += 64)
+						{
+							CD_MESH_PREFETCH(from + line);
+						}
+					}
+				}
 			}
-			else
+			if (n > 0)
 			{
-				stack[top] = left;
-				enterStack[top++] = tl;
-				stack[top] = left + 1;
-				enterStack[top++] = tr;
+				for (int i = n - 1; i > 0; --i)
+				{
+					stack[top] = child[i];
+					enterStack[top++] = at[i];
+				}
+				current = child[0];
+				continue;
 			}
 		}
-		else if (tl >= CD_R(0.0))
+		/* The next child on the stack not entered beyond the best hit. */
+		while (top > 0 && enterStack[top - 1] > limit)
 		{
-			stack[top] = left;
-			enterStack[top++] = tl;
+			--top;
 		}
-		else if (tr >= CD_R(0.0))
+		if (top == 0)
 		{
-			stack[top] = left + 1;
-			enterStack[top++] = tr;
+			break;
 		}
+		current = stack[--top];
 	}
 	if (found && out != NULL)
 	{
 		out->hit = best;
-		out->triangleIndex = bestIndex;
+		out->triangleIndex = mesh->inputIndex[bestSlot];
 	}
 	return found;
 }
@@ -193,28 +361,27 @@ bool cd3RaycastMeshAny(const cd3Mesh* mesh, cd3Transform meshTransform, cd3Ray r
 
 /* ---- bounds queries ------------------------------------------------------------------------------ */
 
-static bool NodeOverlaps(const cd3MeshNode* node, cd3Aabb b)
+static bool ChildOverlaps(const cd3MeshNode* node, int j, cd3Aabb b)
 {
-	return (cdReal)node->bounds[0] <= b.max.x && b.min.x <= (cdReal)node->bounds[3] &&
-		   (cdReal)node->bounds[1] <= b.max.y && b.min.y <= (cdReal)node->bounds[4] &&
-		   (cdReal)node->bounds[2] <= b.max.z && b.min.z <= (cdReal)node->bounds[5];
+	return (cdReal)node->bounds[0][j] <= b.max.x && b.min.x <= (cdReal)node->bounds[3][j] &&
+		   (cdReal)node->bounds[1][j] <= b.max.y && b.min.y <= (cdReal)node->bounds[4][j] &&
+		   (cdReal)node->bounds[2][j] <= b.max.z && b.min.z <= (cdReal)node->bounds[5][j];
 }
 
 bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visit, void* context)
 {
-	int stack[STACK_SIZE];
+	/* Children that overlap go on the stack last to first, leaves too, so that the triangles come
+	 * in leaf order. */
+	int32_t stack[STACK_SIZE];
 	int top = 0;
 	stack[top++] = 0;
 	while (top > 0)
 	{
-		const cd3MeshNode* node = mesh->nodes + stack[--top];
-		if (!NodeOverlaps(node, bounds))
+		int32_t current = stack[--top];
+		if (cd3MeshIsLeaf(current))
 		{
-			continue;
-		}
-		if (node->count > 0)
-		{
-			for (int s = node->first; s < node->first + node->count; ++s)
+			int first = cd3MeshLeafFirst(current), end = first + cd3MeshLeafCount(current);
+			for (int s = first; s < end; ++s)
 			{
 				/* A leaf holds up to 8 triangles: each one's own bounds first. */
 				cd3Aabb tb = cd3ComputeTriangleAabb(mesh->triangles[s]);
@@ -231,8 +398,14 @@ bool cd3MeshVisitSlots(const cd3Mesh* mesh, cd3Aabb bounds, cd3MeshSlotFcn* visi
 			}
 			continue;
 		}
-		stack[top++] = node->first + 1;
-		stack[top++] = node->first;
+		const cd3MeshNode* node = mesh->nodes + current;
+		for (int j = CD3_MESH_WIDTH - 1; j >= 0; --j)
+		{
+			if (node->child[j] != CD3_MESH_EMPTY && ChildOverlaps(node, j, bounds))
+			{
+				stack[top++] = node->child[j];
+			}
+		}
 	}
 	return true;
 }
@@ -322,20 +495,20 @@ bool cd3OverlapMesh(const cd3Shape* shape, const cd3Mesh* mesh, cd3Transform mes
 
 /* ---- closest point -------------------------------------------------------------------------------- */
 
-static cdReal NodeDistanceSquared(const cd3MeshNode* node, cd3Vec p)
+static cdReal ChildDistanceSquared(const cd3MeshNode* node, int j, cd3Vec p)
 {
 	cdReal c[3] = {p.x, p.y, p.z};
 	cdReal sum = CD_R(0.0);
 	for (int k = 0; k < 3; ++k)
 	{
 		cdReal d = CD_R(0.0);
-		if (c[k] < (cdReal)node->bounds[k])
+		if (c[k] < (cdReal)node->bounds[k][j])
 		{
-			d = (cdReal)node->bounds[k] - c[k];
+			d = (cdReal)node->bounds[k][j] - c[k];
 		}
-		else if (c[k] > (cdReal)node->bounds[3 + k])
+		else if (c[k] > (cdReal)node->bounds[3 + k][j])
 		{
-			d = c[k] - (cdReal)node->bounds[3 + k];
+			d = c[k] - (cdReal)node->bounds[3 + k][j];
 		}
 		sum += d * d;
 	}
@@ -362,19 +535,24 @@ bool cd3ClosestPointOnMesh(const cd3Mesh* mesh, cd3Transform meshTransform, cd3V
 	int bestIndex = 0;
 	cd3Vec bestPoint = local;
 	cdReal bestTrue = CD_REAL_MAX;
-	int stack[STACK_SIZE];
+	/* Entries are children with their squared distances, checked again when popped. */
+	int32_t stack[STACK_SIZE];
+	cdReal distanceStack[STACK_SIZE];
 	int top = 0;
-	stack[top++] = 0;
+	stack[top] = 0;
+	distanceStack[top++] = CD_R(0.0);
 	while (top > 0)
 	{
-		const cd3MeshNode* node = mesh->nodes + stack[--top];
-		if (NodeDistanceSquared(node, local) > bestSquared)
+		--top;
+		if (distanceStack[top] > bestSquared)
 		{
 			continue;
 		}
-		if (node->count > 0)
+		int32_t current = stack[top];
+		if (cd3MeshIsLeaf(current))
 		{
-			for (int s = node->first; s < node->first + node->count; ++s)
+			int first = cd3MeshLeafFirst(current), end = first + cd3MeshLeafCount(current);
+			for (int s = first; s < end; ++s)
 			{
 				cd3Vec q = cd3ClosestPointOnTriangle(mesh->triangles[s], local);
 				cdReal d2 = cd3VecDistanceSquared(q, local);
@@ -394,18 +572,36 @@ bool cd3ClosestPointOnMesh(const cd3Mesh* mesh, cd3Transform meshTransform, cd3V
 			}
 			continue;
 		}
-		int left = node->first;
-		cdReal dl = NodeDistanceSquared(mesh->nodes + left, local);
-		cdReal dr = NodeDistanceSquared(mesh->nodes + left + 1, local);
-		if (dl <= dr)
+		/* The children within reach, pushed farthest first so that the nearest comes off next. */
+		const cd3MeshNode* node = mesh->nodes + current;
+		int32_t child[CD3_MESH_WIDTH];
+		cdReal at[CD3_MESH_WIDTH];
+		int n = 0;
+		for (int j = 0; j < CD3_MESH_WIDTH; ++j)
 		{
-			stack[top++] = left + 1;
-			stack[top++] = left;
+			if (node->child[j] == CD3_MESH_EMPTY)
+			{
+				continue;
+			}
+			cdReal d2 = ChildDistanceSquared(node, j, local);
+			if (d2 > bestSquared)
+			{
+				continue;
+			}
+			int i = n++;
+			while (i > 0 && at[i - 1] < d2)
+			{
+				at[i] = at[i - 1];
+				child[i] = child[i - 1];
+				--i;
+			}
+			at[i] = d2;
+			child[i] = node->child[j];
 		}
-		else
+		for (int i = 0; i < n; ++i)
 		{
-			stack[top++] = left;
-			stack[top++] = left + 1;
+			stack[top] = child[i];
+			distanceStack[top++] = at[i];
 		}
 	}
 	if (!found)

@@ -51,7 +51,9 @@ test('Mesh3: building a floor, its stats, its triangles by input index and a dro
   assert.equal(mesh.droppedTriangleCount, 0);
   assert.ok(mesh.validate());
   near(mesh.bounds.min.x, 0, 1e-3, 'min x'); near(mesh.bounds.max.z, N, 1e-3, 'max z');
-  assert.ok(mesh.depth >= 1 && mesh.leafCount >= 1 && mesh.nodeCount >= mesh.leafCount);
+  // 8-wide nodes, each with 2 to 8 children (nodes and leaves; a root over one leaf has 1).
+  assert.ok(mesh.depth >= 2 && mesh.leafCount >= 1 && mesh.nodeCount >= 1 &&
+    mesh.nodeCount <= Math.max(1, mesh.leafCount - 1) && 7 * mesh.nodeCount >= mesh.leafCount - 1);
   for (const k of [0, 1, 37, 2 * N * N - 1]) {
     const t = mesh.triangle(k);
     const corner = (m) => ({ x: vertices[3 * indices[3 * k + m]], y: vertices[3 * indices[3 * k + m] + 1], z: vertices[3 * indices[3 * k + m] + 2] });
