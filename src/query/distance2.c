@@ -58,6 +58,10 @@ static void SolveSegment(cd2Vec w0, cd2Vec w1, cdReal* l0, cdReal* l1)
  * wide took 8). The loop stops as soon as a step gains nothing. */
 #define GJK_REFINE_STEPS 16
 
+/* The residual (in units of the largest vertex coordinate) below which refinement cannot gain:
+ * the round-off of the residual sum itself. */
+#define GJK_REFINE_FLOOR (CD_R(2.0) * CD_REAL_EPSILON)
+
 static cdReal ResidualLengthSquared(const cd2Vec* w, const cdReal* l, cd2Vec* residual)
 {
 	*residual = cd2Add(cd2Add(cd2Scale(l[0], w[0]), cd2Scale(l[1], w[1])), cd2Scale(l[2], w[2]));
@@ -78,6 +82,15 @@ static bool RefineEnclosedWeights(const cd2Vec* w, cdReal area, cdReal* l)
 	cdReal inverseArea = CD_R(1.0) / area;
 	cd2Vec residual;
 	cdReal residualSquared = ResidualLengthSquared(w, l, &residual);
+	/* A residual within the round-off of computing it (about eps times the largest coordinate)
+	 * is as small as float weights make it: no step can gain, so none is tried (most triangles of
+	 * well-separated vertices end here, and a step was a tenth of a query that overlaps). */
+	cdReal largest = cdMax(cdMax(cd2MaxAbs(w[0]), cd2MaxAbs(w[1])), cd2MaxAbs(w[2]));
+	cdReal floor = GJK_REFINE_FLOOR * largest;
+	if (residualSquared <= floor * floor)
+	{
+		return true; /* the weights are those of the sign test, all >= 0 */
+	}
 	for (int step = 0; step < GJK_REFINE_STEPS && residualSquared > CD_R(0.0); ++step)
 	{
 		/* d1 e1 + d2 e2 = -residual, keeping the sum of the weights. */
