@@ -649,6 +649,16 @@ static cd2ClosestPoints AddRadii(cd2Vec pointA, cd2Vec pointB, bool touching, cd
 		cdReal t = radius > CD_R(0.0) ? radiusA / radius : CD_R(0.0);
 		result = Touching(cd2MulAdd(pointA, t, delta));
 	}
+	else if (radius == CD_R(0.0))
+	{
+		/* Sharp cores (polygons, segments, a time of impact's stripped cores): the closest points
+		 * are the cores' own, without the normal, whose division ended every such query's chain
+		 * of dependent operations (moving them by 0 along it changed at most the sign of a zero
+		 * coordinate). */
+		result.pointA = pointA;
+		result.pointB = pointB;
+		result.distance = coreDistance;
+	}
 	else
 	{
 		cd2Vec normal = cd2Scale(CD_R(1.0) / coreDistance, delta);
