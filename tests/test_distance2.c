@@ -5,6 +5,8 @@
 #include "random_shapes2.h"
 #include "test.h"
 
+#include "../src/query/support2.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -972,6 +974,42 @@ static cd2Shape PlaceShape(const cd2Shape* b, cd2Transform xf)
 	return placed;
 }
 
+/* GJK's supports by vector lanes (support2.h) pick the point of the plain scan, the first of the
+ * largest dot product, for every count from 1 to 8: on ties (points and directions on a coarse
+ * grid, repeated points, a zero direction) and on NaN directions (point 0). */
+static void TestSupportLanesMatchScan(void)
+{
+	TestRng rng = TestRngMake(0x5a9907u);
+	const cdReal levels[4] = {CD_R(-1.0), CD_R(0.0), CD_R(0.5), CD_R(1.0)};
+	for (int round = 0; round < 20000; ++round)
+	{
+		int count = 1 + round % CD2_CORE_MAX_POINTS;
+		bool coarse = (round / CD2_CORE_MAX_POINTS) % 2 == 0;
+		cd2Vec points[CD2_CORE_MAX_POINTS];
+		for (int i = 0; i < CD2_CORE_MAX_POINTS; ++i)
+		{
+			cdReal x = (cdReal)TestRngRange(&rng, -3.0, 3.0), y = (cdReal)TestRngRange(&rng, -3.0, 3.0);
+			points[i] = coarse ? cd2MakeVec(levels[TestRngInt(&rng, 4)], levels[TestRngInt(&rng, 4)])
+							   : cd2MakeVec(x, y);
+		}
+		cdReal dx = (cdReal)TestRngRange(&rng, -1.0, 1.0), dy = (cdReal)TestRngRange(&rng, -1.0, 1.0);
+		cd2Vec direction = coarse ? cd2MakeVec(levels[TestRngInt(&rng, 4)], levels[TestRngInt(&rng, 4)])
+								  : cd2MakeVec(dx, dy);
+		if (round % 97 == 0)
+		{
+			direction.x = (cdReal)NAN;
+		}
+		cd2Core core;
+		core.points = points;
+		core.count = count;
+		core.radius = CD_R(0.0);
+		int scan = cd2CoreSupport(&core, direction);
+		int lanes = cd2CoreSupportLanes(&core, direction);
+		TEST_CHECKF(lanes == scan, "round %d (%d points, direction %g %g): lanes %d, scan %d", round, count,
+					(double)direction.x, (double)direction.y, lanes, scan);
+	}
+}
+
 /* cd2DistanceLocal against cd2Distance on b placed by hand: bit for bit for a polygon (the same
  * vertices), up to round-off for the shapes whose core points are built after the move. */
 static void TestDistanceLocal(void)
@@ -1042,5 +1080,6 @@ int main(void)
 	TEST_RUN(TestCacheSavesIterations);
 	TEST_RUN(TestClosedFormMatchesGjk);
 	TEST_RUN(TestDistanceLocal);
+	TEST_RUN(TestSupportLanesMatchScan);
 	return TEST_SUMMARY();
 }

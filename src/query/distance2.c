@@ -5,8 +5,6 @@
 #include "pairs2.h"
 #include "support2.h"
 
-#include <string.h>
-
 /* GJK converges in a handful of iterations on these small point sets; the cap only guards
  * against cycling caused by round-off. */
 #define GJK_MAX_ITERATIONS 64
@@ -60,6 +58,10 @@ static void SolveSegment(cd2Vec w0, cd2Vec w1, cdReal* l0, cdReal* l1)
  * wide took 8). The loop stops as soon as a step gains nothing. */
 #define GJK_REFINE_STEPS 16
 
+/* The residual (in units of the largest vertex coordinate) below which refinement cannot gain:
+ * the round-off of the residual sum itself. */
+#define GJK_REFINE_FLOOR (CD_R(2.0) * CD_REAL_EPSILON)
+
 static cdReal ResidualLengthSquared(const cd2Vec* w, const cdReal* l, cd2Vec* residual)
 {
 	*residual = cd2Add(cd2Add(cd2Scale(l[0], w[0]), cd2Scale(l[1], w[1])), cd2Scale(l[2], w[2]));
@@ -80,6 +82,15 @@ static bool RefineEnclosedWeights(const cd2Vec* w, cdReal area, cdReal* l)
 	cdReal inverseArea = CD_R(1.0) / area;
 	cd2Vec residual;
 	cdReal residualSquared = ResidualLengthSquared(w, l, &residual);
+	/* A residual within the round-off of computing it (about eps times the largest coordinate)
+	 * is as small as float weights make it: no step can gain, so none is tried (most triangles of
+	 * well-separated vertices end here, and a step was a tenth of a query that overlaps). */
+	cdReal largest = cdMax(cdMax(cd2MaxAbs(w[0]), cd2MaxAbs(w[1])), cd2MaxAbs(w[2]));
+	cdReal floor = GJK_REFINE_FLOOR * largest;
+	if (residualSquared <= floor * floor)
+	{
+		return true; /* the weights are those of the sign test, all >= 0 */
+	}
 	for (int step = 0; step < GJK_REFINE_STEPS && residualSquared > CD_R(0.0); ++step)
 	{
 		/* d1 e1 + d2 e2 = -residual, keeping the sum of the weights. */
@@ -337,47 +348,172 @@ static void WriteCache(cd2SimplexCache* cache, const GjkSimplex* simplex)
 	cache->metric = SimplexMetric(simplex);
 }
 
+/* GJK's simplex as named values rather than an array indexed by its count: the compiler keeps
+ * them in registers, where the array went through the stack at every step (the solve's copies of
+ * the vertices read back 8 bytes that had been stored 4 at a time, and waited on store
+ * forwarding). */
+typedef struct GjkState
+{
+	GjkVertex v0, v1, v2;
+	cdReal l0, l1, l2;
+	int count;
+} GjkState;
+
+/* Reduces the state's simplex to the vertices that support its point closest to the origin and
+ * sets their weights, as SolveSimplex (the same arithmetic in the same order, so the same
+ * weights bit for bit); true when the origin is enclosed by the triangle. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool
+SolveState(GjkState* s)
+{
+	if (s->count == 1)
+	{
+		s->l0 = CD_R(1.0);
+		return false;
+	}
+	cd2Vec w[3];
+	cdReal l[3] = {CD_R(1.0), CD_R(0.0), CD_R(0.0)};
+	w[0] = s->v0.w;
+	w[1] = s->v1.w;
+	w[2] = s->v2.w;
+	cdReal largest = cdMax(CD_R(0.0), cd2MaxAbs(w[0]));
+	largest = cdMax(largest, cd2MaxAbs(w[1]));
+	if (s->count == 3)
+	{
+		largest = cdMax(largest, cd2MaxAbs(w[2]));
+	}
+#if CD_DOUBLE
+	const cdReal safeLow = 0x1p-100, safeHigh = 0x1p100;
+#else
+	const cdReal safeLow = 0x1p-16f, safeHigh = 0x1p16f;
+#endif
+	if (largest > CD_R(0.0) && (largest < safeLow || largest > safeHigh))
+	{
+		cdReal inverse = CD_R(1.0) / largest;
+		for (int i = 0; i < 3; ++i)
+		{
+			w[i] = cd2Scale(inverse, w[i]);
+		}
+	}
+	bool enclosed = false;
+	if (s->count == 2)
+	{
+		SolveSegment(w[0], w[1], &l[0], &l[1]);
+	}
+	else
+	{
+		enclosed = SolveTriangle(w, l);
+	}
+	/* Keep the vertices of positive weight in order; none (round-off) keeps the last one. */
+	GjkState out = *s;
+	int kept = 0;
+	if (l[0] > CD_R(0.0))
+	{
+		out.v0 = s->v0;
+		out.l0 = l[0];
+		kept = 1;
+	}
+	if (l[1] > CD_R(0.0) || (kept == 0 && s->count == 2))
+	{
+		cdReal weight = l[1] > CD_R(0.0) ? l[1] : CD_R(1.0);
+		if (kept == 0)
+		{
+			out.v0 = s->v1;
+			out.l0 = weight;
+		}
+		else
+		{
+			out.v1 = s->v1;
+			out.l1 = weight;
+		}
+		++kept;
+	}
+	if (s->count == 3 && (l[2] > CD_R(0.0) || kept == 0))
+	{
+		cdReal weight = l[2] > CD_R(0.0) ? l[2] : CD_R(1.0);
+		if (kept == 0)
+		{
+			out.v0 = s->v2;
+			out.l0 = weight;
+		}
+		else if (kept == 1)
+		{
+			out.v1 = s->v2;
+			out.l1 = weight;
+		}
+		else
+		{
+			out.v2 = s->v2;
+			out.l2 = weight;
+		}
+		++kept;
+	}
+	out.count = kept;
+	*s = out;
+	return enclosed;
+}
+
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
  * writes the final simplex back to it (cache may be NULL). */
 static int GjkCores(const cd2Core* a, const cd2Core* b, cd2SimplexCache* cache, cd2Vec* pointA,
 					cd2Vec* pointB, bool* touching, bool* hitIterationCap)
 {
-	GjkSimplex simplex;
-	memset(&simplex, 0, sizeof(simplex));
-	if (!ReadCache(cache, a, b, &simplex))
+	GjkState s;
 	{
-		/* A cold start from the supports along the line between the cores' middles is usually a
-		 * step closer than an arbitrary pair of points. */
-		cd2Vec toB = cd2Sub(cd2CoreCenter(b), cd2CoreCenter(a));
-		bool usable = cd2LengthSquared(toB) > CD_R(0.0);
-		simplex.count = 1;
-		simplex.v[0] = MakeVertex(a, b, usable ? cd2CoreSupport(a, toB) : 0,
-								  usable ? cd2CoreSupport(b, cd2Neg(toB)) : 0);
-		simplex.lambda[0] = CD_R(1.0);
+		GjkSimplex cached;
+		cached.count = 0;
+		bool warm = cache != NULL && ReadCache(cache, a, b, &cached);
+		if (warm)
+		{
+			s.v0 = cached.v[0];
+			s.v1 = cached.count > 1 ? cached.v[1] : cached.v[0];
+			s.v2 = cached.count > 2 ? cached.v[2] : cached.v[0];
+			s.count = cached.count;
+		}
+		else
+		{
+			/* A cold start from the supports along the line between the cores' middles is usually
+			 * a step closer than an arbitrary pair of points. */
+			cd2Vec toB = cd2Sub(cd2CoreCenter(b), cd2CoreCenter(a));
+			bool usable = cd2LengthSquared(toB) > CD_R(0.0);
+			s.v0 = MakeVertex(a, b, usable ? cd2CoreSupportLanes(a, toB) : 0,
+							  usable ? cd2CoreSupportLanes(b, cd2Neg(toB)) : 0);
+			s.v1 = s.v0;
+			s.v2 = s.v0;
+			s.count = 1;
+		}
+		/* The weights of a cached simplex are 0 until solved; a cold start's point has weight 1. */
+		s.l0 = warm ? CD_R(0.0) : CD_R(1.0);
+		s.l1 = CD_R(0.0);
+		s.l2 = CD_R(0.0);
 	}
 
 	/* Round-off can make a step gain nothing (or lose a little) while the next ones still gain:
 	 * keep the closest simplex seen, and stop after a few steps without progress. */
-	GjkSimplex best = simplex;
+	GjkState best = s;
 	cdReal bestDistanceSquared = CD_REAL_MAX;
 	int stalls = 0;
 	*touching = false;
 	int iteration = 0;
 	for (; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
-		if (SolveSimplex(&simplex))
+		if (SolveState(&s))
 		{
 			*touching = true;
 			break;
 		}
-		cd2Vec v = CD2_VEC_ZERO;
-		cdReal size = CD_R(0.0); /* sqrt(2) * the largest |coordinate|: at least the largest |w| */
-		for (int i = 0; i < simplex.count; ++i)
+		/* sqrt(2) * the largest |coordinate|: at least the largest |w|. */
+		cd2Vec v = cd2MulAdd(CD2_VEC_ZERO, s.l0, s.v0.w);
+		cdReal size = cdMax(CD_R(0.0), cd2MaxAbs(s.v0.w));
+		if (s.count > 1)
 		{
-			v = cd2MulAdd(v, simplex.lambda[i], simplex.v[i].w);
-			size = cdMax(size, cd2MaxAbs(simplex.v[i].w));
+			v = cd2MulAdd(v, s.l1, s.v1.w);
+			size = cdMax(size, cd2MaxAbs(s.v1.w));
 		}
+		CD_ASSERT(s.count <= 2); /* a triangle either encloses the origin or loses a vertex */
 		cdReal distanceSquared = cd2LengthSquared(v);
 		cdReal touch = GJK_TOUCH_TOLERANCE * CD_R(1.4142136) * size;
 		if (distanceSquared <= touch * touch)
@@ -387,7 +523,7 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2SimplexCache* cache, 
 		}
 		if (distanceSquared < bestDistanceSquared)
 		{
-			best = simplex;
+			best = s;
 			bestDistanceSquared = distanceSquared;
 			stalls = 0;
 		}
@@ -396,18 +532,31 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2SimplexCache* cache, 
 			break;
 		}
 
-		cdReal directionLengthSquared;
-		cd2Vec direction = SearchDirection(&simplex, v, distanceSquared, &directionLengthSquared);
-		/* The supports by a scan with selects (support2.h): a hill climb from the last support
-		 * mispredicts its step count, which is as random as the direction. */
-		int indexA = cd2CoreSupportSelect(a, direction);
-		int indexB = cd2CoreSupportSelect(b, cd2Neg(direction));
-		bool duplicate = false;
-		for (int i = 0; i < simplex.count; ++i)
+		/* The direction from the simplex towards the origin (SearchDirection). */
+		cd2Vec direction = cd2Neg(v);
+		cdReal directionLengthSquared = distanceSquared;
+		if (s.count == 2)
 		{
-			duplicate = duplicate || (simplex.v[i].indexA == indexA && simplex.v[i].indexB == indexB);
+			cd2Vec e = cd2Sub(s.v1.w, s.v0.w);
+			cd2Vec normal = cd2Cross(e, cd2Neg(s.v0.w)) > CD_R(0.0) ? cd2LeftPerp(e) : cd2RightPerp(e);
+			cdReal normalLengthSquared = cd2LengthSquared(normal);
+			if (normalLengthSquared > CD_R(0.0) && cdIsValidReal(normalLengthSquared) &&
+				cd2Dot(normal, v) < CD_R(0.0))
+			{
+				direction = normal;
+				directionLengthSquared = normalLengthSquared;
+			}
 		}
-		if (duplicate)
+		/* The supports by lanes (support2.h): which point wins is as random as the direction, and
+		 * a compare-and-branch per point, a select per point in a loop over the count or a hill
+		 * climb from the last support all spent their time in mispredicted branches. */
+		int indexA = cd2CoreSupportLanes(a, direction);
+		int indexB = cd2CoreSupportLanes(b, cd2Neg(direction));
+		/* A support pair already in the simplex, by bit operations (a loop over the count with
+		 * short-circuit tests mispredicted about three branches a query). */
+		int same = ((s.v0.indexA ^ indexA) | (s.v0.indexB ^ indexB)) == 0;
+		same |= (s.count > 1) & (((s.v1.indexA ^ indexA) | (s.v1.indexB ^ indexB)) == 0);
+		if (same)
 		{
 			break;
 		}
@@ -422,23 +571,45 @@ static int GjkCores(const cd2Core* a, const cd2Core* b, cd2SimplexCache* cache, 
 		{
 			break;
 		}
-		simplex.v[simplex.count] = vertex;
-		simplex.lambda[simplex.count] = CD_R(0.0);
-		++simplex.count;
+		if (s.count == 1)
+		{
+			s.v1 = vertex;
+			s.l1 = CD_R(0.0);
+		}
+		else
+		{
+			s.v2 = vertex;
+			s.l2 = CD_R(0.0);
+		}
+		++s.count;
 	}
 	/* Every convergence test leaves the loop by break: running off its end is the cap. */
 	*hitIterationCap = iteration == GJK_MAX_ITERATIONS;
 	if (!*touching)
 	{
-		simplex = best;
+		s = best;
 	}
-	WriteCache(cache, &simplex);
-
-	cd2Vec pa = CD2_VEC_ZERO, pb = CD2_VEC_ZERO;
-	for (int i = 0; i < simplex.count; ++i)
+	if (cache != NULL)
 	{
-		pa = cd2MulAdd(pa, simplex.lambda[i], simplex.v[i].a);
-		pb = cd2MulAdd(pb, simplex.lambda[i], simplex.v[i].b);
+		GjkSimplex simplex;
+		simplex.v[0] = s.v0;
+		simplex.v[1] = s.v1;
+		simplex.v[2] = s.v2;
+		simplex.count = s.count;
+		WriteCache(cache, &simplex);
+	}
+
+	cd2Vec pa = cd2MulAdd(CD2_VEC_ZERO, s.l0, s.v0.a);
+	cd2Vec pb = cd2MulAdd(CD2_VEC_ZERO, s.l0, s.v0.b);
+	if (s.count > 1)
+	{
+		pa = cd2MulAdd(pa, s.l1, s.v1.a);
+		pb = cd2MulAdd(pb, s.l1, s.v1.b);
+	}
+	if (s.count > 2)
+	{
+		pa = cd2MulAdd(pa, s.l2, s.v2.a);
+		pb = cd2MulAdd(pb, s.l2, s.v2.b);
 	}
 	*pointA = pa;
 	*pointB = pb;
@@ -477,6 +648,16 @@ static cd2ClosestPoints AddRadii(cd2Vec pointA, cd2Vec pointB, bool touching, cd
 		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
 		cdReal t = radius > CD_R(0.0) ? radiusA / radius : CD_R(0.0);
 		result = Touching(cd2MulAdd(pointA, t, delta));
+	}
+	else if (radius == CD_R(0.0))
+	{
+		/* Sharp cores (polygons, segments, a time of impact's stripped cores): the closest points
+		 * are the cores' own, without the normal, whose division ended every such query's chain
+		 * of dependent operations (moving them by 0 along it changed at most the sign of a zero
+		 * coordinate). */
+		result.pointA = pointA;
+		result.pointB = pointB;
+		result.distance = coreDistance;
 	}
 	else
 	{
