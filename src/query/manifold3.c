@@ -1922,7 +1922,8 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
  * the local-frame form's placed box passed on by value again was written and read back through
  * the stack (store-forwarding stalls) on every call. */
-static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal speculativeDistance)
+static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, const cd3BoxFaces* faces,
+								cdReal speculativeDistance)
 {
 	const cd3Box* a = boxA;
 	const cd3Box* b = boxB;
@@ -1931,7 +1932,7 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 	cd3SatResult sat;
 	/* Edge axes only when no face normal already puts the boxes beyond the speculative distance:
 	 * the answer is then empty whatever they give. */
-	cd3SatBoxesInPlace(a, b, &sat, &rot, &t, speculativeDistance);
+	cd3SatBoxesInPlace(a, b, &sat, &rot, &t, speculativeDistance, faces);
 	cdReal separation = cd3SatSeparation(&sat);
 	/* Every path returns m, so that it is built in the caller's result. */
 	cd3Manifold m = EmptyManifold();
@@ -2023,7 +2024,7 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 
 cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 {
-	return CollideBoxes(&a, &b, speculativeDistance);
+	return CollideBoxes(&a, &b, NULL, speculativeDistance);
 }
 
 /* B placed in A's frame as manifold_local3.c places it (the same answer as cd3CollideBoxBox on
@@ -2038,7 +2039,22 @@ cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal s
 	bool aligned = cd3IsIdentityQuatBits(b.rotation);
 	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
 	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
-	return CollideBoxes(&a, &placed, speculativeDistance);
+#if CD3_BOX_FACES_SSE
+	/* Both boxes in their bodies' frames (the common case): B's frame and the face separations
+	 * from xfB at once, and the pairs apart along a face normal (most of those a broadphase
+	 * reports apart) end here. The SAT takes the rest on from them. */
+	if (((int)centred & (int)aligned & (int)cd3IsIdentityQuatBits(a.rotation)) != 0)
+	{
+		cd3BoxFaces faces;
+		if (cd3ComputeBoxFaces(&faces, a.halfExtents, b.halfExtents, xfB.q, cd3Sub(xfB.p, a.center),
+							   speculativeDistance))
+		{
+			return EmptyManifold();
+		}
+		return CollideBoxes(&a, &placed, &faces, speculativeDistance);
+	}
+#endif
+	return CollideBoxes(&a, &placed, NULL, speculativeDistance);
 }
 
 /* ---- hulls that are boxes --------------------------------------------------------------------- */
