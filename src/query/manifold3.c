@@ -1102,7 +1102,14 @@ static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, co
 	if (epa.overlapping && !epa.hitIterationCap)
 	{
 		m.normal = epa.normal;
-		AddPoint(&m, cd3Lerp(epa.pointA, epa.pointB, CD_R(0.5)), -epa.depth, ID_VERTEX_PAIR);
+		/* Every caller has GJK's word that the shapes touch within round-off (cp). When EPA's depth
+		 * is round-off too, GJK's closest points are the contact: EPA's witnesses come from a
+		 * polytope as thin as the round-off and can lie anywhere along it (a point box touching
+		 * a triangle 5.5e26 long and 1e11 wide, double: 2.75e26 from the box). */
+		cd3Vec deepest = epa.depth <= RoundOff(point, a->size + b->size)
+							 ? point
+							 : cd3Lerp(epa.pointA, epa.pointB, CD_R(0.5));
+		AddPoint(&m, deepest, -epa.depth, ID_VERTEX_PAIR);
 	}
 	return m;
 }
