@@ -55,10 +55,12 @@ static inline bool cd3AreZeroBits(cdReal x, cdReal y, cdReal z)
 	return (cd3GetRealBits(x) | cd3GetRealBits(y) | cd3GetRealBits(z)) == 0;
 }
 
-/* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1. */
+/* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1 (on the bits: 1 has no
+ * other representation, and integer tests combine without the flags of a float comparison). */
 static inline bool cd3IsIdentityQuatBits(cd3Quat q)
 {
-	return ((int)cd3AreZeroBits(q.x, q.y, q.z) & (int)(q.w == CD_R(1.0))) != 0;
+	return ((cd3GetRealBits(q.x) | cd3GetRealBits(q.y) | cd3GetRealBits(q.z)) |
+			(cd3GetRealBits(q.w) ^ cd3GetRealBits(CD_R(1.0)))) == 0;
 }
 
 /* |a| as a max, which compiles to one instruction: the signs of the box SAT's matrix entries and
