@@ -2373,6 +2373,42 @@ static void TestPointBoxHugeTriangleRegressions(void)
 #endif
 }
 
+/* Two hulls 2e-4 across with one placement, overlapping by 8.7e-7 along an edge pair (float;
+ * corpus regression-float-tiny-hulls-no-points): the SAT's contact had no points, GJK said
+ * touching, and EPA, asked for the depth, stopped at its iteration cap with the SAT's depth; the
+ * manifold came out empty. A capped EPA answer with the SAT's depth stands. */
+static void TestTinyHullsCappedEpaRegression(void)
+{
+	static const double tetraPoints[12] = {-0.000125000006, -0.000125000006, -0.000125000006, -0.000104999999,
+										   -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006,
+										   7.50000036e-05,	7.50000036e-05,	 7.50000036e-05,  7.50000036e-05};
+	static const double otherPoints[33] = {
+		-0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000123749996, -0.000125000006,
+		-8.49999997e-05, -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000123749996,
+		-0.000125000006, 9.75000003e-05,  -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006,
+		-0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006,
+		-0.000125000006, -0.000125000006, -0.000125000006, -6.24999984e-06, -6.24999984e-06, -6.24999984e-06,
+		-3.74999991e-06, 7.50000036e-05,  7.50000036e-05};
+	static const double place[7] = {7.50000036e-05, 7.50000036e-05, 7.50000036e-05, 0.5, 0.5, 0.5, 0.5};
+	cd3Hull *tetraHull = NULL, *otherHull = NULL;
+	cd3Shape tetra = HullShapeOf(tetraPoints, 4, place, &tetraHull);
+	cd3Shape other = HullShapeOf(otherPoints, 11, place, &otherHull);
+	TEST_CHECK(tetraHull != NULL && otherHull != NULL);
+	if (tetraHull != NULL && otherHull != NULL)
+	{
+		CheckFuzzCase("tiny-hulls", &tetra, &other, 0.0, 0.0, 2e-4);
+		for (int order = 0; order < 2; ++order)
+		{
+			cd3Manifold m = order == 0 ? cd3Collide(&tetra, &other, CD_R(0.0)) : cd3Collide(&other, &tetra, CD_R(0.0));
+			TEST_CHECKF(m.pointCount > 0 && MinSeparation(&m) < -8e-7 && MinSeparation(&m) > -9e-7,
+						"order %d: %d points, smallest separation %.9g (overlap 8.7e-7)", order, m.pointCount,
+						MinSeparation(&m));
+		}
+	}
+	cd3DestroyHull(tetraHull);
+	cd3DestroyHull(otherHull);
+}
+
 static void TestHugeDoubleRegressions(void)
 {
 #if CD_DOUBLE
@@ -2962,6 +2998,7 @@ int main(void)
 	TEST_RUN(TestHugeDoubleRegressions);
 	TEST_RUN(TestEpaWitnessRegressions);
 	TEST_RUN(TestPointBoxHugeTriangleRegressions);
+	TEST_RUN(TestTinyHullsCappedEpaRegression);
 	TEST_RUN(TestTiltedCapsules);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestFlatCapsulesDepthAlongNormal);

@@ -1099,7 +1099,12 @@ static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, co
 		m.normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	}
 	cd3Penetration epa = cd3Epa(a, cd3PolytopeSupport, b, cd3PolytopeSupport);
-	if (epa.overlapping && !epa.hitIterationCap)
+	/* An answer EPA gave at its iteration cap stands when its depth is the SAT's (exact between
+	 * polytopes) within round-off: its face then lies on the Minkowski difference's boundary. Two
+	 * hulls 2e-4 across overlapping by 8.7e-7 (float) took EPA to the cap with that depth, and the
+	 * manifold came out empty. */
+	if (epa.overlapping &&
+		(!epa.hitIterationCap || cdAbs(epa.depth + separation) <= RoundOff(point, a->size + b->size)))
 	{
 		m.normal = epa.normal;
 		/* Every caller has GJK's word that the shapes touch within round-off (cp). When EPA's depth
