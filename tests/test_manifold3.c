@@ -2333,6 +2333,82 @@ static void TestEpaWitnessRegressions(void)
 	cd3DestroyHull(thinHull);
 }
 
+/* A box of zero extents touching, within round-off, a triangle 5.5e26 (then 1e30) long and as thin
+ * as the round-off of its coordinates (a segment for the SAT, which then has no axis between
+ * them): GJK says touching, and EPA's depth was round-off too, but its witnesses lay 2.75e26
+ * (7.7e22) from the box, and so did the contact point (double build; corpus
+ * regression-double-point-box-huge-triangle*). The contact is at the box, at separation zero
+ * within round-off, in both argument orders. Double only: in float the squares of these
+ * coordinates (and so the test's distances) overflow. */
+static void TestPointBoxHugeTriangleRegressions(void)
+{
+#if CD_DOUBLE
+	cd3Shape box = BoxShape(-1654783.875, 0, 0, 0, 0, 0, -0.74001022701200647, 0.066600920431080582,
+							-0.38480531804624335, -0.54760756798888477);
+	cd3Shape triangle = TriangleShape(-12.125, -3.5, 3, 3, -8.3748218094641364e+21, -12.5, -12.5,
+									  5.4946515983665842e+26, -8001680301883392);
+	CheckFuzzCase("point-box-huge-triangle", &box, &triangle, 8.03866131e+21, -1.0, 5.5e26);
+	cd3Shape far = BoxShape(-1237500000, -12500000, 0, 0, 0, 0, 0, -0.55761890733956176, -0.58696727088374923,
+							-0.58696727088374923);
+	cd3Shape longer = TriangleShape(-62500000, 50000000, 1.5396266894907165e+23, -237500000, -150000000,
+									-1250000000, -1250000000, -187500000, -1e+30);
+	CheckFuzzCase("point-box-longer-triangle", &longer, &far, 0.0, -1.0, 1e30);
+	/* The point itself: at the box within the round-off of its coordinates (the checks above allow
+	 * 1e-8 of the triangle's size, 5.5e18 and 1e22). */
+	const cd3Shape* boxes[2] = {&box, &far};
+	const cd3Shape* triangles[2] = {&triangle, &longer};
+	const double speculative[2] = {8.03866131e+21, 0.0};
+	for (int k = 0; k < 2; ++k)
+	{
+		for (int order = 0; order < 2; ++order)
+		{
+			cd3Manifold m = order == 0 ? cd3Collide(boxes[k], triangles[k], (cdReal)speculative[k])
+									   : cd3Collide(triangles[k], boxes[k], (cdReal)speculative[k]);
+			cd3Vec centre = boxes[k]->box.center;
+			double off = m.pointCount > 0 ? (double)cd3Length(cd3Sub(m.points[0].point, centre)) : 0.0;
+			TEST_CHECKF(m.pointCount > 0 && off <= 1e-3 * (double)cd3Length(centre),
+						"case %d, order %d: %d points, the first %.3g from the box", k, order, m.pointCount, off);
+		}
+	}
+#endif
+}
+
+/* Two hulls 2e-4 across with one placement, overlapping by 8.7e-7 along an edge pair (float;
+ * corpus regression-float-tiny-hulls-no-points): the SAT's contact had no points, GJK said
+ * touching, and EPA, asked for the depth, stopped at its iteration cap with the SAT's depth; the
+ * manifold came out empty. A capped EPA answer with the SAT's depth stands. */
+static void TestTinyHullsCappedEpaRegression(void)
+{
+	static const double tetraPoints[12] = {-0.000125000006, -0.000125000006, -0.000125000006, -0.000104999999,
+										   -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006,
+										   7.50000036e-05,	7.50000036e-05,	 7.50000036e-05,  7.50000036e-05};
+	static const double otherPoints[33] = {
+		-0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000123749996, -0.000125000006,
+		-8.49999997e-05, -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000123749996,
+		-0.000125000006, 9.75000003e-05,  -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006,
+		-0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006, -0.000125000006,
+		-0.000125000006, -0.000125000006, -0.000125000006, -6.24999984e-06, -6.24999984e-06, -6.24999984e-06,
+		-3.74999991e-06, 7.50000036e-05,  7.50000036e-05};
+	static const double place[7] = {7.50000036e-05, 7.50000036e-05, 7.50000036e-05, 0.5, 0.5, 0.5, 0.5};
+	cd3Hull *tetraHull = NULL, *otherHull = NULL;
+	cd3Shape tetra = HullShapeOf(tetraPoints, 4, place, &tetraHull);
+	cd3Shape other = HullShapeOf(otherPoints, 11, place, &otherHull);
+	TEST_CHECK(tetraHull != NULL && otherHull != NULL);
+	if (tetraHull != NULL && otherHull != NULL)
+	{
+		CheckFuzzCase("tiny-hulls", &tetra, &other, 0.0, 0.0, 2e-4);
+		for (int order = 0; order < 2; ++order)
+		{
+			cd3Manifold m = order == 0 ? cd3Collide(&tetra, &other, CD_R(0.0)) : cd3Collide(&other, &tetra, CD_R(0.0));
+			TEST_CHECKF(m.pointCount > 0 && MinSeparation(&m) < -8e-7 && MinSeparation(&m) > -9e-7,
+						"order %d: %d points, smallest separation %.9g (overlap 8.7e-7)", order, m.pointCount,
+						MinSeparation(&m));
+		}
+	}
+	cd3DestroyHull(tetraHull);
+	cd3DestroyHull(otherHull);
+}
+
 static void TestHugeDoubleRegressions(void)
 {
 #if CD_DOUBLE
@@ -2921,6 +2997,8 @@ int main(void)
 	TEST_RUN(TestNearlyParallelBoxEdges);
 	TEST_RUN(TestHugeDoubleRegressions);
 	TEST_RUN(TestEpaWitnessRegressions);
+	TEST_RUN(TestPointBoxHugeTriangleRegressions);
+	TEST_RUN(TestTinyHullsCappedEpaRegression);
 	TEST_RUN(TestTiltedCapsules);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestFlatCapsulesDepthAlongNormal);

@@ -1099,10 +1099,22 @@ static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, co
 		m.normal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
 	}
 	cd3Penetration epa = cd3Epa(a, cd3PolytopeSupport, b, cd3PolytopeSupport);
-	if (epa.overlapping && !epa.hitIterationCap)
+	/* An answer EPA gave at its iteration cap stands when its depth is the SAT's (exact between
+	 * polytopes) within round-off: its face then lies on the Minkowski difference's boundary. Two
+	 * hulls 2e-4 across overlapping by 8.7e-7 (float) took EPA to the cap with that depth, and the
+	 * manifold came out empty. */
+	if (epa.overlapping &&
+		(!epa.hitIterationCap || cdAbs(epa.depth + separation) <= RoundOff(point, a->size + b->size)))
 	{
 		m.normal = epa.normal;
-		AddPoint(&m, cd3Lerp(epa.pointA, epa.pointB, CD_R(0.5)), -epa.depth, ID_VERTEX_PAIR);
+		/* Every caller has GJK's word that the shapes touch within round-off (cp). When EPA's depth
+		 * is round-off too, GJK's closest points are the contact: EPA's witnesses come from a
+		 * polytope as thin as the round-off and can lie anywhere along it (a point box touching
+		 * a triangle 5.5e26 long and 1e11 wide, double: 2.75e26 from the box). */
+		cd3Vec deepest = epa.depth <= RoundOff(point, a->size + b->size)
+							 ? point
+							 : cd3Lerp(epa.pointA, epa.pointB, CD_R(0.5));
+		AddPoint(&m, deepest, -epa.depth, ID_VERTEX_PAIR);
 	}
 	return m;
 }
@@ -1922,7 +1934,8 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
  * the local-frame form's placed box passed on by value again was written and read back through
  * the stack (store-forwarding stalls) on every call. */
-static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal speculativeDistance)
+static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, const cd3BoxFaces* faces,
+								cdReal speculativeDistance)
 {
 	const cd3Box* a = boxA;
 	const cd3Box* b = boxB;
@@ -1931,7 +1944,7 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 	cd3SatResult sat;
 	/* Edge axes only when no face normal already puts the boxes beyond the speculative distance:
 	 * the answer is then empty whatever they give. */
-	cd3SatBoxesInPlace(a, b, &sat, &rot, &t, speculativeDistance);
+	cd3SatBoxesInPlace(a, b, &sat, &rot, &t, speculativeDistance, faces);
 	cdReal separation = cd3SatSeparation(&sat);
 	/* Every path returns m, so that it is built in the caller's result. */
 	cd3Manifold m = EmptyManifold();
@@ -2023,7 +2036,7 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, cdReal s
 
 cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
 {
-	return CollideBoxes(&a, &b, speculativeDistance);
+	return CollideBoxes(&a, &b, NULL, speculativeDistance);
 }
 
 /* B placed in A's frame as manifold_local3.c places it (the same answer as cd3CollideBoxBox on
@@ -2038,7 +2051,22 @@ cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal s
 	bool aligned = cd3IsIdentityQuatBits(b.rotation);
 	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
 	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
-	return CollideBoxes(&a, &placed, speculativeDistance);
+#if CD3_BOX_FACES_SSE
+	/* Both boxes in their bodies' frames (the common case): B's frame and the face separations
+	 * from xfB at once, and the pairs apart along a face normal (most of those a broadphase
+	 * reports apart) end here. The SAT takes the rest on from them. */
+	if (((int)centred & (int)aligned & (int)cd3IsIdentityQuatBits(a.rotation)) != 0)
+	{
+		cd3BoxFaces faces;
+		if (cd3ComputeBoxFaces(&faces, a.halfExtents, b.halfExtents, xfB.q, cd3Sub(xfB.p, a.center),
+							   speculativeDistance))
+		{
+			return EmptyManifold();
+		}
+		return CollideBoxes(&a, &placed, &faces, speculativeDistance);
+	}
+#endif
+	return CollideBoxes(&a, &placed, NULL, speculativeDistance);
 }
 
 /* ---- hulls that are boxes --------------------------------------------------------------------- */

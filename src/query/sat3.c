@@ -707,7 +707,7 @@ cd3SatFeature cd3SatSegmentPolytope(cd3Vec p1, cd3Vec p2, const cd3Polytope* b, 
 cd3SatResult cd3SatBoxes(cd3Box a, cd3Box b, cd3Mat33* rotation, cd3Vec* translation)
 {
 	cd3SatResult r;
-	cd3SatBoxesInPlace(&a, &b, &r, rotation, translation, CD_REAL_MAX);
+	cd3SatBoxesInPlace(&a, &b, &r, rotation, translation, CD_REAL_MAX, NULL);
 	return r;
 }
 

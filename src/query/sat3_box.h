@@ -55,10 +55,12 @@ static inline bool cd3AreZeroBits(cdReal x, cdReal y, cdReal z)
 	return (cd3GetRealBits(x) | cd3GetRealBits(y) | cd3GetRealBits(z)) == 0;
 }
 
-/* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1. */
+/* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1 (on the bits: 1 has no
+ * other representation, and integer tests combine without the flags of a float comparison). */
 static inline bool cd3IsIdentityQuatBits(cd3Quat q)
 {
-	return ((int)cd3AreZeroBits(q.x, q.y, q.z) & (int)(q.w == CD_R(1.0))) != 0;
+	return ((cd3GetRealBits(q.x) | cd3GetRealBits(q.y) | cd3GetRealBits(q.z)) |
+			(cd3GetRealBits(q.w) ^ cd3GetRealBits(CD_R(1.0)))) == 0;
 }
 
 /* |a| as a max, which compiles to one instruction: the signs of the box SAT's matrix entries and
@@ -147,6 +149,100 @@ static CD3_BOX_ALWAYS_INLINE bool cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j
 	return e->separation > exitSeparation;
 }
 
+#if !CD_DOUBLE && defined(__SSE2__)
+#include <emmintrin.h>
+#define CD3_BOX_FACES_SSE 1
+#else
+#define CD3_BOX_FACES_SSE 0
+#endif
+
+/* B's frame in A's and the six face separations of two boxes, four lanes at a time (lane 3
+ * unused), in the SSE2 float build (elsewhere only declared: the SAT computes them itself). Every
+ * lane is the scalar code's operations in its order (cd3MakeMatFromQuat, the face separations of
+ * cd3SatBoxesInPlace, |x| as cdMax(x, -x)), so every value is the same bits. */
+typedef struct cd3BoxFaces cd3BoxFaces;
+
+#if CD3_BOX_FACES_SSE
+struct cd3BoxFaces
+{
+	float column[3][4]; /* column[j][i]: B's axis j on A's axis i (the rotation's columns) */
+	float faceA[4];		/* separation along A's axis i */
+	float offsetB[4];	/* the centre offset on B's axis j */
+	float faceB[4];		/* separation along B's axis j */
+};
+
+/* cdMax(x, -x) in each lane (maxps returns its second operand unless the first is greater). */
+static inline __m128 cd3BoxAbs4(__m128 x)
+{
+	return _mm_max_ps(x, _mm_xor_ps(x, _mm_set1_ps(-0.0f)));
+}
+
+/* Fills *f for box A unrotated at the origin with half extents ha and box B with half extents
+ * hb, rotated by q and centred at t (A's frame). True when a face axis puts them apart by more
+ * than `limit` (no separation is then a NaN): the answer cd3SatBoxesInPlace gives with faceExit
+ * = limit is then apart beyond the limit. */
+static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Quat rotation, cd3Vec t,
+									  float limit)
+{
+	/* Lanes x, y, z, w; the comments name the lanes low to high. */
+	__m128 q = _mm_setr_ps(rotation.x, rotation.y, rotation.z, rotation.w);
+	__m128 q2 = _mm_add_ps(q, q); /* x2 y2 z2 w2 */
+	/* The diagonal: 1 - (yy + zz), 1 - (xx + zz), 1 - (xx + yy). */
+	__m128 first = _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 0, 0, 1)),
+							  _mm_shuffle_ps(q2, q2, _MM_SHUFFLE(3, 0, 0, 1))); /* yy xx xx */
+	__m128 second = _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 1, 2, 2)),
+							   _mm_shuffle_ps(q2, q2, _MM_SHUFFLE(3, 1, 2, 2))); /* zz zz yy */
+	__m128 diagonal = _mm_sub_ps(_mm_set1_ps(1.0f), _mm_add_ps(first, second));
+	/* Off the diagonal: xy, xz, yz plus or minus wz, wy, wx. */
+	__m128 products = _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 1, 0, 0)),
+								 _mm_shuffle_ps(q2, q2, _MM_SHUFFLE(3, 2, 2, 1))); /* xy xz yz */
+	__m128 w = _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 3, 3, 3)),
+						  _mm_shuffle_ps(q2, q2, _MM_SHUFFLE(3, 0, 1, 2))); /* wz wy wx */
+	__m128 plus = _mm_add_ps(products, w);	 /* m.cx.y m.cz.x m.cy.z */
+	__m128 minus = _mm_sub_ps(products, w); /* m.cy.x m.cx.z m.cz.y */
+	/* The columns (A's axes in the lanes) ... */
+	__m128 c0 = _mm_shuffle_ps(_mm_shuffle_ps(diagonal, plus, _MM_SHUFFLE(0, 0, 0, 0)), minus,
+							   _MM_SHUFFLE(1, 1, 2, 0)); /* d0 p0 m1 */
+	__m128 c1 = _mm_shuffle_ps(_mm_shuffle_ps(minus, diagonal, _MM_SHUFFLE(1, 1, 0, 0)), plus,
+							   _MM_SHUFFLE(2, 2, 2, 0)); /* m0 d1 p2 */
+	__m128 c2 = _mm_shuffle_ps(_mm_shuffle_ps(plus, minus, _MM_SHUFFLE(2, 2, 1, 1)), diagonal,
+							   _MM_SHUFFLE(2, 2, 2, 0)); /* p1 m2 d2 */
+	/* ... and the rows (B's axes in the lanes). */
+	__m128 r0 = _mm_shuffle_ps(_mm_shuffle_ps(diagonal, minus, _MM_SHUFFLE(0, 0, 0, 0)), plus,
+							   _MM_SHUFFLE(1, 1, 2, 0)); /* d0 m0 p1 */
+	__m128 r1 = _mm_shuffle_ps(_mm_shuffle_ps(plus, diagonal, _MM_SHUFFLE(1, 1, 0, 0)), minus,
+							   _MM_SHUFFLE(2, 2, 2, 0)); /* p0 d1 m2 */
+	__m128 r2 = _mm_shuffle_ps(_mm_shuffle_ps(minus, plus, _MM_SHUFFLE(2, 2, 1, 1)), diagonal,
+							   _MM_SHUFFLE(2, 2, 2, 0)); /* m1 p2 d2 */
+	__m128 va = _mm_setr_ps(ha.x, ha.y, ha.z, 0.0f);
+	__m128 vb = _mm_setr_ps(hb.x, hb.y, hb.z, 0.0f);
+	__m128 vt = _mm_setr_ps(t.x, t.y, t.z, 0.0f);
+	/* A's faces: |t_i| - ha_i - (hb0 |r_i0| + hb1 |r_i1| + hb2 |r_i2|). */
+	__m128 radiusB = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(vb, vb, 0x00), cd3BoxAbs4(c0)),
+										   _mm_mul_ps(_mm_shuffle_ps(vb, vb, 0x55), cd3BoxAbs4(c1))),
+								_mm_mul_ps(_mm_shuffle_ps(vb, vb, 0xaa), cd3BoxAbs4(c2)));
+	__m128 faceA = _mm_sub_ps(_mm_sub_ps(cd3BoxAbs4(vt), va), radiusB);
+	/* B's faces: the offset on B's axis j (cd3Dot(t, column j)), A's radius on it. */
+	__m128 offsetB = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(vt, vt, 0x00), r0),
+										   _mm_mul_ps(_mm_shuffle_ps(vt, vt, 0x55), r1)),
+								_mm_mul_ps(_mm_shuffle_ps(vt, vt, 0xaa), r2));
+	__m128 radiusA = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(va, va, 0x00), cd3BoxAbs4(r0)),
+										   _mm_mul_ps(_mm_shuffle_ps(va, va, 0x55), cd3BoxAbs4(r1))),
+								_mm_mul_ps(_mm_shuffle_ps(va, va, 0xaa), cd3BoxAbs4(r2)));
+	__m128 faceB = _mm_sub_ps(_mm_sub_ps(cd3BoxAbs4(offsetB), vb), radiusA);
+	_mm_storeu_ps(f->column[0], c0);
+	_mm_storeu_ps(f->column[1], c1);
+	_mm_storeu_ps(f->column[2], c2);
+	_mm_storeu_ps(f->faceA, faceA);
+	_mm_storeu_ps(f->offsetB, offsetB);
+	_mm_storeu_ps(f->faceB, faceB);
+	__m128 bound = _mm_set1_ps(limit);
+	int beyond = _mm_movemask_ps(_mm_or_ps(_mm_cmpgt_ps(faceA, bound), _mm_cmpgt_ps(faceB, bound)));
+	int unordered = _mm_movemask_ps(_mm_cmpunord_ps(faceA, faceB));
+	return (beyond & 7) != 0 && (unordered & 7) == 0;
+}
+#endif
+
 /* cd3SatBoxes writing into *result, inline: the box-box manifold reads the result at once, and
  * a result returned through memory stalls on store forwarding. The matrix entries are named
  * scalars, not arrays: arrays filled a float at a time and read back two at a time by the
@@ -155,7 +251,8 @@ static CD3_BOX_ALWAYS_INLINE bool cd3BoxEdgeAxis(cd3BoxEdgeBest* e, int i, int j
  * one beyond faceExit (edgeSeparation is then that axis's, above faceExit, not the largest): pass
  * CD_REAL_MAX for every axis. */
 static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd3SatResult* result,
-									  cd3Mat33* rotation, cd3Vec* translation, cdReal faceExit)
+									  cd3Mat33* rotation, cd3Vec* translation, cdReal faceExit,
+									  const cd3BoxFaces* faces)
 {
 	cd3Quat qa = boxA->rotation;
 	/* A box in its body's frame usually has the identity rotation: conj(qa) q and the rotated
@@ -168,11 +265,27 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 		q = cd3InvMulQuat(qa, q);
 		t = cd3InvRotateVector(qa, t);
 	}
-	cd3Mat33 m = cd3MakeMatFromQuat(q);
-	*rotation = m;
-	*translation = t;
 	cdReal ha0 = boxA->halfExtents.x, ha1 = boxA->halfExtents.y, ha2 = boxA->halfExtents.z;
 	cdReal hb0 = boxB->halfExtents.x, hb1 = boxB->halfExtents.y, hb2 = boxB->halfExtents.z;
+#if CD3_BOX_FACES_SSE
+	/* The matrix and the face separations four lanes at a time (the same bits), or as the caller
+	 * computed them already for these boxes (cd3CollideBoxBoxLocal). */
+	cd3BoxFaces computed;
+	if (faces == NULL)
+	{
+		(void)cd3ComputeBoxFaces(&computed, boxA->halfExtents, boxB->halfExtents, q, t, faceExit);
+		faces = &computed;
+	}
+	cd3Mat33 m;
+	m.cx = cd3MakeVec(faces->column[0][0], faces->column[0][1], faces->column[0][2]);
+	m.cy = cd3MakeVec(faces->column[1][0], faces->column[1][1], faces->column[1][2]);
+	m.cz = cd3MakeVec(faces->column[2][0], faces->column[2][1], faces->column[2][2]);
+#else
+	(void)faces;
+	cd3Mat33 m = cd3MakeMatFromQuat(q);
+#endif
+	*rotation = m;
+	*translation = t;
 	/* rij = A's axis i . B's axis j, aij = |rij| */
 	cdReal r00 = m.cx.x, r10 = m.cx.y, r20 = m.cx.z;
 	cdReal r01 = m.cy.x, r11 = m.cy.y, r21 = m.cy.z;
@@ -186,9 +299,13 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	/* A's faces: B's radius on A's axis i. */
 	/* Named scalars and selects, not arrays indexed by the best axis: the indexed load waited on
 	 * the stores of the array (store forwarding) just before the exit test. */
+#if CD3_BOX_FACES_SSE
+	cdReal fa0 = faces->faceA[0], fa1 = faces->faceA[1], fa2 = faces->faceA[2];
+#else
 	cdReal fa0 = cd3AbsNoBranch(t0) - ha0 - (hb0 * a00 + hb1 * a01 + hb2 * a02);
 	cdReal fa1 = cd3AbsNoBranch(t1) - ha1 - (hb0 * a10 + hb1 * a11 + hb2 * a12);
 	cdReal fa2 = cd3AbsNoBranch(t2) - ha2 - (hb0 * a20 + hb1 * a21 + hb2 * a22);
+#endif
 	int bestA = fa1 > fa0 ? 1 : 0;
 	cdReal sepA = fa1 > fa0 ? fa1 : fa0;
 	bestA = fa2 > sepA ? 2 : bestA;
@@ -210,10 +327,15 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 		return;
 	}
 	/* B's faces: the centre offset on B's axis j, A's radius on it. */
+#if CD3_BOX_FACES_SSE
+	cdReal tb0 = faces->offsetB[0], tb1 = faces->offsetB[1], tb2 = faces->offsetB[2];
+	cdReal fb0 = faces->faceB[0], fb1 = faces->faceB[1], fb2 = faces->faceB[2];
+#else
 	cdReal tb0 = cd3Dot(t, m.cx), tb1 = cd3Dot(t, m.cy), tb2 = cd3Dot(t, m.cz);
 	cdReal fb0 = cd3AbsNoBranch(tb0) - hb0 - (ha0 * a00 + ha1 * a10 + ha2 * a20);
 	cdReal fb1 = cd3AbsNoBranch(tb1) - hb1 - (ha0 * a01 + ha1 * a11 + ha2 * a21);
 	cdReal fb2 = cd3AbsNoBranch(tb2) - hb2 - (ha0 * a02 + ha1 * a12 + ha2 * a22);
+#endif
 	int bestB = fb1 > fb0 ? 1 : 0;
 	cdReal sepB = fb1 > fb0 ? fb1 : fb0;
 	bestB = fb2 > sepB ? 2 : bestB;
