@@ -188,6 +188,11 @@ static bool IsZero(cd3Vec v)
 	return v.x == CD_R(0.0) && v.y == CD_R(0.0) && v.z == CD_R(0.0);
 }
 
+/* Polytopes of at most this many vertices and faces take the column loops below: q's vertices
+ * carried into p's frame once, then every face plane against every vertex, the faces four or
+ * eight at a time (the loops vectorize). Larger ones search q's support vertex per face. */
+#define SMALL_POLYTOPE 64
+
 /* Largest separation over p's face normals against q, whose local points map into p's frame by
  * `rel`. */
 static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace)
@@ -196,6 +201,41 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 	*bestFace = -1;
 	/* The rotation as a matrix once: two quaternion rotations per face cost more than this. */
 	cd3Mat33 rotation = cd3MakeMatFromQuat(rel.q);
+	if (p->faceCount <= SMALL_POLYTOPE && q->vertexCount <= SMALL_POLYTOPE)
+	{
+		/* Each face's separation is the smallest of its plane's distances to q's vertices (q's
+		 * support along the reversed normal), each computed as cd3Dot(normal, vertex in p's frame)
+		 * - offset. */
+		cdReal nx[SMALL_POLYTOPE], ny[SMALL_POLYTOPE], nz[SMALL_POLYTOPE], low[SMALL_POLYTOPE];
+		int faceCount = p->faceCount;
+		for (int f = 0; f < faceCount; ++f)
+		{
+			nx[f] = p->planes[f].normal.x;
+			ny[f] = p->planes[f].normal.y;
+			nz[f] = p->planes[f].normal.z;
+			low[f] = CD_REAL_MAX;
+		}
+		for (int i = 0; i < q->vertexCount; ++i)
+		{
+			cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
+			for (int f = 0; f < faceCount; ++f)
+			{
+				cdReal d = nx[f] * v.x + ny[f] * v.y + nz[f] * v.z;
+				low[f] = d < low[f] ? d : low[f];
+			}
+		}
+		for (int f = 0; f < faceCount; ++f)
+		{
+			cd3Plane plane = p->planes[f];
+			cdReal separation = low[f] - plane.offset;
+			if (separation > best && !IsZero(plane.normal))
+			{
+				best = separation;
+				*bestFace = f;
+			}
+		}
+		return best;
+	}
 	for (int f = 0; f < p->faceCount; ++f)
 	{
 		cd3Plane plane = p->planes[f];
@@ -263,6 +303,9 @@ static EdgeData MakeEdgeData(const cd3Polytope* a, int i)
  * that pass are few, the ones that fail are many and fail unpredictably. */
 typedef struct ArcColumns
 {
+#if CD3_SUPPORT_SSE
+	__m128 align; /* the columns 16-byte aligned for the SSE loads (EDGE_CACHE is a multiple of 4) */
+#endif
 	cdReal nax[EDGE_CACHE], nay[EDGE_CACHE], naz[EDGE_CACHE];
 	cdReal nbx[EDGE_CACHE], nby[EDGE_CACHE], nbz[EDGE_CACHE];
 	cdReal bxax[EDGE_CACHE], bxay[EDGE_CACHE], bxaz[EDGE_CACHE];
@@ -273,6 +316,41 @@ typedef struct ArcColumns
  * b on either side of c-d's, and both on one hemisphere. */
 static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, cd3Vec dxc, int* out)
 {
+#if CD3_SUPPORT_SSE
+	/* Four arcs at a time over the columns padded with zero arcs (which never pass), and the few
+	 * that pass gathered from the lane masks. */
+	__m128 cx = _mm_set1_ps(c.x), cy = _mm_set1_ps(c.y), cz = _mm_set1_ps(c.z);
+	__m128 dx = _mm_set1_ps(d.x), dy = _mm_set1_ps(d.y), dz = _mm_set1_ps(d.z);
+	__m128 ex = _mm_set1_ps(dxc.x), ey = _mm_set1_ps(dxc.y), ez = _mm_set1_ps(dxc.z);
+	__m128 zero = _mm_setzero_ps();
+	int n = 0;
+	for (int k = 0; k < count; k += 4)
+	{
+		__m128 bx = _mm_load_ps(arcs->bxax + k), by = _mm_load_ps(arcs->bxay + k), bz = _mm_load_ps(arcs->bxaz + k);
+		__m128 cba = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, bx), _mm_mul_ps(cy, by)), _mm_mul_ps(cz, bz));
+		__m128 dba = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, bx), _mm_mul_ps(dy, by)), _mm_mul_ps(dz, bz));
+		__m128 adc = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(arcs->nax + k), ex),
+											_mm_mul_ps(_mm_load_ps(arcs->nay + k), ey)),
+								 _mm_mul_ps(_mm_load_ps(arcs->naz + k), ez));
+		__m128 bdc = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(arcs->nbx + k), ex),
+											_mm_mul_ps(_mm_load_ps(arcs->nby + k), ey)),
+								 _mm_mul_ps(_mm_load_ps(arcs->nbz + k), ez));
+		__m128 pass = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(_mm_mul_ps(cba, dba), zero),
+											_mm_cmplt_ps(_mm_mul_ps(adc, bdc), zero)),
+								 _mm_cmpgt_ps(_mm_mul_ps(cba, bdc), zero));
+		int mask = _mm_movemask_ps(pass);
+		/* Without branches: the lanes that pass are few and unpredictable. */
+		out[n] = k;
+		n += mask & 1;
+		out[n] = k + 1;
+		n += (mask >> 1) & 1;
+		out[n] = k + 2;
+		n += (mask >> 2) & 1;
+		out[n] = k + 3;
+		n += (mask >> 3) & 1;
+	}
+	return n;
+#else
 	/* The test in one loop the compiler vectorizes, the gathering of the few that pass in another. */
 	int pass[EDGE_CACHE];
 	for (int k = 0; k < count; ++k)
@@ -290,6 +368,7 @@ static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, c
 		n += pass[k];
 	}
 	return n;
+#endif
 }
 
 /* One edge pair that passed the Gauss-map test: its separation along the cross of the edges,
@@ -333,6 +412,86 @@ static void TestEdgePair(const cd3Polytope* a, const cd3Polytope* b, cd3Transfor
 	}
 }
 
+/* Edge pairs that passed the Gauss-map test, waiting for their separations: A's cached edge, B's
+ * half-edge and B's edge in A's frame. */
+#define PENDING_PAIRS 256
+
+typedef struct PendingPairs
+{
+	int count;
+	int order; /* pairs flushed before: the position of the first pending pair in test order */
+	int bestOrder;
+	int edge[PENDING_PAIRS];
+	int edgeB[PENDING_PAIRS];
+	cd3Vec originB[PENDING_PAIRS], directionB[PENDING_PAIRS];
+	cdReal lengthSquaredB[PENDING_PAIRS];
+	cdReal separation[PENDING_PAIRS];
+	cd3Vec axis[PENDING_PAIRS];
+} PendingPairs;
+
+/* The pending pairs' separations, as TestEdgePair takes them one by one in test order, but with
+ * the unpredictable branches out of the arithmetic: first every pair's separation along its axis
+ * (independent chains the processor overlaps), then the pairs from the largest separation down,
+ * each checked by projection as TestEdgePair checks a new best, until one is below the best. The
+ * best (largest separation, ties to the first pair in test order) is TestEdgePair's, bit for bit. */
+static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, const EdgeData* cache,
+					   PendingPairs* pending, cd3SatResult* r, cd3Vec* bestAxis)
+{
+	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
+	int count = pending->count;
+	for (int i = 0; i < count; ++i)
+	{
+		const EdgeData* e = &cache[pending->edge[i]];
+		cd3Vec axis = cd3Cross(e->direction, pending->directionB[i]);
+		cdReal axis2 = cd3LengthSquared(axis);
+		bool valid = axis2 > parallel2 * e->lengthSquared * pending->lengthSquaredB[i];
+		axis = cd3Scale(CD_R(1.0) / cdSqrt(valid ? axis2 : CD_R(1.0)), axis);
+		axis = cd3Dot(axis, cd3Add(e->na, e->nb)) < CD_R(0.0) ? cd3Neg(axis) : axis;
+		cdReal separation = cd3Dot(axis, cd3Sub(pending->originB[i], e->origin));
+		pending->axis[i] = axis;
+		pending->separation[i] = valid ? separation : -CD_REAL_MAX;
+	}
+	for (;;)
+	{
+		int top = -1;
+		cdReal highest = -CD_REAL_MAX;
+		for (int i = 0; i < count; ++i)
+		{
+			bool higher = pending->separation[i] > highest;
+			top = higher ? i : top;
+			highest = higher ? pending->separation[i] : highest;
+		}
+		if (top < 0 || highest < r->edgeSeparation)
+		{
+			break;
+		}
+		pending->separation[top] = -CD_REAL_MAX;
+		int order = pending->order + top;
+		/* At a tie with the best the pair can only matter as an earlier one of equal separation. */
+		bool tie = !(highest > r->edgeSeparation);
+		if (tie && !(pending->bestOrder >= 0 && order < pending->bestOrder))
+		{
+			continue;
+		}
+		cd3Vec axis = pending->axis[top];
+		cdReal loA, hiA, loB, hiB;
+		Project(a, CD3_TRANSFORM_IDENTITY, axis, &loA, &hiA);
+		Project(b, relB, axis, &loB, &hiB);
+		cdReal separation = cdMin(highest, loB - hiA);
+		if (separation > r->edgeSeparation ||
+			(separation == r->edgeSeparation && pending->bestOrder >= 0 && order < pending->bestOrder))
+		{
+			r->edgeSeparation = separation;
+			r->edgeA = cache[pending->edge[top]].index;
+			r->edgeB = pending->edgeB[top];
+			*bestAxis = axis;
+			pending->bestOrder = order;
+		}
+	}
+	pending->order += count;
+	pending->count = 0;
+}
+
 /* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
  * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
  * difference, whose normal is the cross of the edges oriented within A's arc. Stops early once an
@@ -343,6 +502,10 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	EdgeData cache[EDGE_CACHE];
 	ArcColumns arcs;
 	int crossing[EDGE_CACHE];
+	PendingPairs pending;
+	pending.count = 0;
+	pending.order = 0;
+	pending.bestOrder = -1;
 	int cached = 0;
 	bool useCache = a->edgeAxisCount / 2 <= EDGE_CACHE;
 	if (useCache)
@@ -365,6 +528,25 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 				++cached;
 			}
 		}
+		/* Zero arcs up to a multiple of 4: their products are zero, so they never pass. */
+		for (int k = cached; (k & 3) != 0; ++k)
+		{
+			arcs.nax[k] = arcs.nay[k] = arcs.naz[k] = CD_R(0.0);
+			arcs.nbx[k] = arcs.nby[k] = arcs.nbz[k] = CD_R(0.0);
+			arcs.bxax[k] = arcs.bxay[k] = arcs.bxaz[k] = CD_R(0.0);
+		}
+	}
+	/* B's vertices and reversed face normals in A's frame, once each rather than once per edge end
+	 * and edge side (the same values). */
+	cd3Vec carriedVertices[SMALL_POLYTOPE], carriedNormals[SMALL_POLYTOPE];
+	bool carry = b->vertexCount <= SMALL_POLYTOPE && b->faceCount <= SMALL_POLYTOPE;
+	for (int i = 0; carry && i < b->vertexCount; ++i)
+	{
+		carriedVertices[i] = cd3TransformPoint(relB, b->vertices[i]);
+	}
+	for (int f = 0; carry && f < b->faceCount; ++f)
+	{
+		carriedNormals[f] = cd3Neg(cd3RotateVector(relB.q, b->planes[f].normal));
 	}
 	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
@@ -373,20 +555,47 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			continue;
 		}
-		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
-		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]);
+		const cd3HullHalfEdge* twin = &b->edges[eb->twin];
+		cd3Vec qb0, qb1, c, d;
+		if (carry)
+		{
+			qb0 = carriedVertices[eb->origin];
+			qb1 = carriedVertices[twin->origin];
+			c = carriedNormals[eb->face];
+			d = carriedNormals[twin->face];
+		}
+		else
+		{
+			qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
+			qb1 = cd3TransformPoint(relB, b->vertices[twin->origin]);
+			c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
+			d = cd3Neg(cd3RotateVector(relB.q, b->planes[twin->face].normal));
+		}
 		cd3Vec edgeB = cd3Sub(qb1, qb0);
 		cdReal edgeB2 = cd3LengthSquared(edgeB);
-		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
-		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[b->edges[eb->twin].face].normal));
 		cd3Vec dxc = cd3Cross(d, c);
 		if (useCache)
 		{
+			if (pending.count + cached > PENDING_PAIRS)
+			{
+				FlushPairs(a, b, relB, cache, &pending, r, bestAxis);
+				if (r->edgeSeparation > limit)
+				{
+					return;
+				}
+			}
 			int n = CrossingArcs(&arcs, cached, c, d, dxc, crossing);
 			for (int k = 0; k < n; ++k)
 			{
-				TestEdgePair(a, b, relB, &cache[crossing[k]], j, qb0, edgeB, edgeB2, r, bestAxis);
+				int slot = pending.count + k;
+				pending.edge[slot] = crossing[k];
+				pending.edgeB[slot] = j;
+				pending.originB[slot] = qb0;
+				pending.directionB[slot] = edgeB;
+				pending.lengthSquaredB[slot] = edgeB2;
 			}
+			pending.count += n;
+			continue;
 		}
 		else
 		{
@@ -411,6 +620,10 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			return;
 		}
+	}
+	if (useCache)
+	{
+		FlushPairs(a, b, relB, cache, &pending, r, bestAxis);
 	}
 }
 
