@@ -206,23 +206,43 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 		/* Each face's separation is the smallest of its plane's distances to q's vertices (q's
 		 * support along the reversed normal), each computed as cd3Dot(normal, vertex in p's frame)
 		 * - offset. */
-		cdReal nx[SMALL_POLYTOPE], ny[SMALL_POLYTOPE], nz[SMALL_POLYTOPE], low[SMALL_POLYTOPE];
 		int faceCount = p->faceCount;
-		for (int f = 0; f < faceCount; ++f)
+		int padded = (faceCount + 3) & ~3; /* zero normals beyond the faces */
+#if CD3_SUPPORT_SSE
+		__m128 columns[4 * SMALL_POLYTOPE / 4];
+		float* nx = (float*)(void*)columns;
+		float* ny = nx + SMALL_POLYTOPE;
+		float* nz = ny + SMALL_POLYTOPE;
+		float* low = nz + SMALL_POLYTOPE;
+#else
+		cdReal nx[SMALL_POLYTOPE], ny[SMALL_POLYTOPE], nz[SMALL_POLYTOPE], low[SMALL_POLYTOPE];
+#endif
+		for (int f = 0; f < padded; ++f)
 		{
-			nx[f] = p->planes[f].normal.x;
-			ny[f] = p->planes[f].normal.y;
-			nz[f] = p->planes[f].normal.z;
+			cd3Vec n = f < faceCount ? p->planes[f].normal : CD3_VEC_ZERO;
+			nx[f] = n.x;
+			ny[f] = n.y;
+			nz[f] = n.z;
 			low[f] = CD_REAL_MAX;
 		}
 		for (int i = 0; i < q->vertexCount; ++i)
 		{
 			cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
-			for (int f = 0; f < faceCount; ++f)
+#if CD3_SUPPORT_SSE
+			__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
+			for (int f = 0; f < padded; f += 4)
+			{
+				__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(nx + f), vx), _mm_mul_ps(_mm_load_ps(ny + f), vy)),
+									  _mm_mul_ps(_mm_load_ps(nz + f), vz));
+				_mm_store_ps(low + f, _mm_min_ps(d, _mm_load_ps(low + f)));
+			}
+#else
+			for (int f = 0; f < padded; ++f)
 			{
 				cdReal d = nx[f] * v.x + ny[f] * v.y + nz[f] * v.z;
 				low[f] = d < low[f] ? d : low[f];
 			}
+#endif
 		}
 		for (int f = 0; f < faceCount; ++f)
 		{
@@ -284,7 +304,7 @@ typedef struct EdgeData
 /* Edges of A cached on the stack for the inner loop; larger polytopes recompute them. */
 #define EDGE_CACHE 192
 
-static EdgeData MakeEdgeData(const cd3Polytope* a, int i)
+static inline EdgeData MakeEdgeData(const cd3Polytope* a, int i)
 {
 	const cd3HullHalfEdge* ea = &a->edges[i];
 	EdgeData e;
