@@ -391,6 +391,139 @@ static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, c
 #endif
 }
 
+/* A with at most this many edges and faces takes the Gauss-map test as bit masks: the four sides
+ * of a pair (c and d against A's arc plane, A's normals a and b against B's) are signs of dot
+ * products that depend on one edge and one face, so they are computed once per face (B's faces
+ * against A's arc planes, A's faces against each B arc plane) instead of once per edge pair, and
+ * the test of one B edge against all of A's is a few mask operations. A pair passes when the
+ * products of CrossingArcs have the signs it asks for, that is when the factors have (a product
+ * of two nonzero factors that underflows to zero is the one difference: such a pair passes here,
+ * which costs a separation, never a wrong one). */
+#define MASK_ARCS 32
+#define MASK_FACES 16
+
+/* Bits k (k < padded, a multiple of 4) where v . (x[k], y[k], z[k]) is positive, and negative; the
+ * sums in the order of CrossingArcs'. */
+static void SideMasks(const cdReal* x, const cdReal* y, const cdReal* z, int padded, cd3Vec v,
+					  uint32_t* positive, uint32_t* negative)
+{
+	uint32_t p = 0u, n = 0u;
+#if CD3_SUPPORT_SSE
+	__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
+	__m128 zero = _mm_setzero_ps();
+	for (int k = 0; k < padded; k += 4)
+	{
+		__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x + k)), _mm_mul_ps(vy, _mm_load_ps(y + k))),
+							  _mm_mul_ps(vz, _mm_load_ps(z + k)));
+		p |= (uint32_t)_mm_movemask_ps(_mm_cmpgt_ps(d, zero)) << k;
+		n |= (uint32_t)_mm_movemask_ps(_mm_cmplt_ps(d, zero)) << k;
+	}
+#else
+	for (int k = 0; k < padded; ++k)
+	{
+		cdReal d = v.x * x[k] + v.y * y[k] + v.z * z[k];
+		p |= (uint32_t)(d > CD_R(0.0)) << k;
+		n |= (uint32_t)(d < CD_R(0.0)) << k;
+	}
+#endif
+	*positive = p;
+	*negative = n;
+}
+
+/* The edges of A (bits of its cached arcs) whose first face is among `faces` (bits of A's faces)
+ * in the low 32 bits, those whose second face is in the high 32, from tables of 16 entries per 4
+ * faces (unused tables map every index to no edge). */
+static inline uint64_t EdgesOfFaces(const uint64_t (*table)[16], uint32_t faces)
+{
+	return table[0][faces & 15u] | table[1][(faces >> 4) & 15u] | table[2][(faces >> 8) & 15u] |
+		   table[3][(faces >> 12) & 15u];
+}
+
+static inline int LowestBit32(uint32_t bits)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctz(bits);
+#else
+	int i = 0;
+	while (!(bits & 1u))
+	{
+		bits >>= 1;
+		++i;
+	}
+	return i;
+#endif
+}
+
+/* A's side of the masked test, built once per query. */
+typedef struct ArcMasks
+{
+#if CD3_SUPPORT_SSE
+	__m128 align;
+#endif
+	cdReal fx[MASK_FACES], fy[MASK_FACES], fz[MASK_FACES]; /* A's face normals, zero padded */
+	uint64_t faceEdges[MASK_FACES / 4][16]; /* EdgesOfFaces' tables */
+	int facePadded;
+	uint32_t positive[SMALL_POLYTOPE], negative[SMALL_POLYTOPE]; /* B's faces against A's arc planes */
+} ArcMasks;
+
+static void InitArcMasks(ArcMasks* m, const cd3Polytope* a, const cd3Polytope* b, const EdgeData* cache,
+						 int cached, const ArcColumns* arcs, const cd3Vec* carriedNormals)
+{
+	int faces = a->faceCount;
+	m->facePadded = (faces + 3) & ~3;
+	uint64_t of[MASK_FACES];
+	for (int g = 0; g < MASK_FACES; ++g)
+	{
+		cd3Vec n = g < faces ? a->planes[g].normal : CD3_VEC_ZERO;
+		if (g < m->facePadded)
+		{
+			m->fx[g] = n.x;
+			m->fy[g] = n.y;
+			m->fz[g] = n.z;
+		}
+		of[g] = 0u;
+	}
+	for (int k = 0; k < cached; ++k)
+	{
+		const cd3HullHalfEdge* e = &a->edges[cache[k].index];
+		of[e->face] |= (uint64_t)1u << k;
+		of[a->edges[e->twin].face] |= (uint64_t)1u << (k + 32);
+	}
+	for (int i = 0; i < MASK_FACES / 4; ++i)
+	{
+		m->faceEdges[i][0] = 0u;
+		for (unsigned v = 1u; v < 16u; ++v)
+		{
+			m->faceEdges[i][v] = m->faceEdges[i][v & (v - 1u)] | of[4 * i + LowestBit32(v)];
+		}
+	}
+	int padded = (cached + 3) & ~3;
+	for (int f = 0; f < b->faceCount; ++f)
+	{
+		SideMasks(arcs->bxax, arcs->bxay, arcs->bxaz, padded, carriedNormals[f], &m->positive[f], &m->negative[f]);
+	}
+}
+
+/* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c). */
+static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int* out)
+{
+	uint32_t up, down;
+	SideMasks(m->fx, m->fy, m->fz, m->facePadded, dxc, &up, &down);
+	uint64_t edgesUp = EdgesOfFaces(m->faceEdges, up), edgesDown = EdgesOfFaces(m->faceEdges, down);
+	uint32_t aUp = (uint32_t)edgesUp, aDown = (uint32_t)edgesDown;
+	uint32_t bUp = (uint32_t)(edgesUp >> 32), bDown = (uint32_t)(edgesDown >> 32);
+	uint32_t cUp = m->positive[fc], cDown = m->negative[fc];
+	uint32_t dUp = m->positive[fd], dDown = m->negative[fd];
+	uint32_t pass = ((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown));
+	int n = 0;
+	while (pass != 0u)
+	{
+		out[n++] = LowestBit32(pass);
+		pass &= pass - 1u;
+	}
+	return n;
+}
+
 /* One edge pair that passed the Gauss-map test: its separation along the cross of the edges,
  * kept when it beats the best so far. */
 static void TestEdgePair(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, const EdgeData* e,
@@ -568,6 +701,12 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	{
 		carriedNormals[f] = cd3Neg(cd3RotateVector(relB.q, b->planes[f].normal));
 	}
+	ArcMasks masks;
+	bool masked = useCache && carry && cached <= MASK_ARCS && a->faceCount <= MASK_FACES;
+	if (masked)
+	{
+		InitArcMasks(&masks, a, b, cache, cached, &arcs, carriedNormals);
+	}
 	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
 		const cd3HullHalfEdge* eb = &b->edges[j];
@@ -604,7 +743,8 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 					return;
 				}
 			}
-			int n = CrossingArcs(&arcs, cached, c, d, dxc, crossing);
+			int n = masked ? CrossingArcsMasked(&masks, eb->face, twin->face, dxc, crossing)
+						   : CrossingArcs(&arcs, cached, c, d, dxc, crossing);
 			for (int k = 0; k < n; ++k)
 			{
 				int slot = pending.count + k;
