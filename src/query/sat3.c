@@ -571,16 +571,121 @@ static void TestEdgePair(const cd3Polytope* a, const cd3Polytope* b, cd3Transfor
 
 typedef struct PendingPairs
 {
+#if CD3_SUPPORT_SSE
+	__m128 align; /* the columns 16-byte aligned (PENDING_PAIRS is a multiple of 4) */
+#endif
+	/* Per pair, as columns: A's edge direction and its squared length, the sum of its face
+	 * normals and its origin; B's edge origin, direction and squared length; then the pair's unit
+	 * axis and separation along it. */
+	cdReal ax[PENDING_PAIRS], ay[PENDING_PAIRS], az[PENDING_PAIRS], aLength2[PENDING_PAIRS];
+	cdReal nx[PENDING_PAIRS], ny[PENDING_PAIRS], nz[PENDING_PAIRS];
+	cdReal ox[PENDING_PAIRS], oy[PENDING_PAIRS], oz[PENDING_PAIRS];
+	cdReal px[PENDING_PAIRS], py[PENDING_PAIRS], pz[PENDING_PAIRS];
+	cdReal bx[PENDING_PAIRS], by[PENDING_PAIRS], bz[PENDING_PAIRS], bLength2[PENDING_PAIRS];
+	cdReal axisX[PENDING_PAIRS], axisY[PENDING_PAIRS], axisZ[PENDING_PAIRS];
+	cdReal separation[PENDING_PAIRS];
+	int edge[PENDING_PAIRS];
+	int edgeB[PENDING_PAIRS];
 	int count;
 	int order; /* pairs flushed before: the position of the first pending pair in test order */
 	int bestOrder;
-	int edge[PENDING_PAIRS];
-	int edgeB[PENDING_PAIRS];
-	cd3Vec originB[PENDING_PAIRS], directionB[PENDING_PAIRS];
-	cdReal lengthSquaredB[PENDING_PAIRS];
-	cdReal separation[PENDING_PAIRS];
-	cd3Vec axis[PENDING_PAIRS];
 } PendingPairs;
+
+/* Appends A's cached edge e against B's edge j (origin qb0, direction edgeB). */
+static inline void AddPendingPair(PendingPairs* p, const EdgeData* e, int k, int j, cd3Vec qb0, cd3Vec edgeB,
+								  cdReal edgeB2)
+{
+	int i = p->count++;
+	cd3Vec sum = cd3Add(e->na, e->nb);
+	p->ax[i] = e->direction.x;
+	p->ay[i] = e->direction.y;
+	p->az[i] = e->direction.z;
+	p->aLength2[i] = e->lengthSquared;
+	p->nx[i] = sum.x;
+	p->ny[i] = sum.y;
+	p->nz[i] = sum.z;
+	p->ox[i] = e->origin.x;
+	p->oy[i] = e->origin.y;
+	p->oz[i] = e->origin.z;
+	p->px[i] = qb0.x;
+	p->py[i] = qb0.y;
+	p->pz[i] = qb0.z;
+	p->bx[i] = edgeB.x;
+	p->by[i] = edgeB.y;
+	p->bz[i] = edgeB.z;
+	p->bLength2[i] = edgeB2;
+	p->edge[i] = k;
+	p->edgeB[i] = j;
+}
+
+/* Every pending pair's unit axis and separation along it (-CD_REAL_MAX for parallel edges): the
+ * arithmetic of TestEdgePair, operation for operation (so bit for bit), four pairs at a time in
+ * the float build on SSE2. */
+static void PendingSeparations(PendingPairs* p)
+{
+	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
+#if CD3_SUPPORT_SSE
+	__m128 limit = _mm_set1_ps(parallel2), one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+	__m128 signBit = _mm_set1_ps(-0.0f), lowest = _mm_set1_ps(-CD_REAL_MAX);
+	/* The last group's lanes past the count: zero edges (their results are never read). */
+	for (int i = p->count; (i & 3) != 0; ++i)
+	{
+		p->ax[i] = p->ay[i] = p->az[i] = p->aLength2[i] = 0.0f;
+		p->nx[i] = p->ny[i] = p->nz[i] = 0.0f;
+		p->ox[i] = p->oy[i] = p->oz[i] = 0.0f;
+		p->px[i] = p->py[i] = p->pz[i] = 0.0f;
+		p->bx[i] = p->by[i] = p->bz[i] = p->bLength2[i] = 0.0f;
+	}
+	for (int i = 0; i < p->count; i += 4)
+	{
+		__m128 ax = _mm_load_ps(p->ax + i), ay = _mm_load_ps(p->ay + i), az = _mm_load_ps(p->az + i);
+		__m128 bx = _mm_load_ps(p->bx + i), by = _mm_load_ps(p->by + i), bz = _mm_load_ps(p->bz + i);
+		__m128 cx = _mm_sub_ps(_mm_mul_ps(ay, bz), _mm_mul_ps(az, by));
+		__m128 cy = _mm_sub_ps(_mm_mul_ps(az, bx), _mm_mul_ps(ax, bz));
+		__m128 cz = _mm_sub_ps(_mm_mul_ps(ax, by), _mm_mul_ps(ay, bx));
+		__m128 axis2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, cx), _mm_mul_ps(cy, cy)), _mm_mul_ps(cz, cz));
+		__m128 bound = _mm_mul_ps(_mm_mul_ps(limit, _mm_load_ps(p->aLength2 + i)), _mm_load_ps(p->bLength2 + i));
+		__m128 valid = _mm_cmpgt_ps(axis2, bound);
+		__m128 length2 = _mm_or_ps(_mm_and_ps(valid, axis2), _mm_andnot_ps(valid, one));
+		__m128 inverse = _mm_div_ps(one, _mm_sqrt_ps(length2));
+		cx = _mm_mul_ps(inverse, cx);
+		cy = _mm_mul_ps(inverse, cy);
+		cz = _mm_mul_ps(inverse, cz);
+		__m128 side = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, _mm_load_ps(p->nx + i)), _mm_mul_ps(cy, _mm_load_ps(p->ny + i))),
+								 _mm_mul_ps(cz, _mm_load_ps(p->nz + i)));
+		__m128 flip = _mm_and_ps(_mm_cmplt_ps(side, zero), signBit);
+		cx = _mm_xor_ps(cx, flip);
+		cy = _mm_xor_ps(cy, flip);
+		cz = _mm_xor_ps(cz, flip);
+		__m128 dx = _mm_sub_ps(_mm_load_ps(p->px + i), _mm_load_ps(p->ox + i));
+		__m128 dy = _mm_sub_ps(_mm_load_ps(p->py + i), _mm_load_ps(p->oy + i));
+		__m128 dz = _mm_sub_ps(_mm_load_ps(p->pz + i), _mm_load_ps(p->oz + i));
+		__m128 separation = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, dx), _mm_mul_ps(cy, dy)), _mm_mul_ps(cz, dz));
+		_mm_store_ps(p->axisX + i, cx);
+		_mm_store_ps(p->axisY + i, cy);
+		_mm_store_ps(p->axisZ + i, cz);
+		_mm_store_ps(p->separation + i, _mm_or_ps(_mm_and_ps(valid, separation), _mm_andnot_ps(valid, lowest)));
+	}
+#else
+	for (int i = 0; i < p->count; ++i)
+	{
+		cd3Vec axis = cd3Cross(cd3MakeVec(p->ax[i], p->ay[i], p->az[i]), cd3MakeVec(p->bx[i], p->by[i], p->bz[i]));
+		cdReal axis2 = cd3LengthSquared(axis);
+		bool valid = axis2 > parallel2 * p->aLength2[i] * p->bLength2[i];
+		axis = cd3Scale(CD_R(1.0) / cdSqrt(valid ? axis2 : CD_R(1.0)), axis);
+		if (cd3Dot(axis, cd3MakeVec(p->nx[i], p->ny[i], p->nz[i])) < CD_R(0.0))
+		{
+			axis = cd3Neg(axis);
+		}
+		cdReal separation =
+			cd3Dot(axis, cd3Sub(cd3MakeVec(p->px[i], p->py[i], p->pz[i]), cd3MakeVec(p->ox[i], p->oy[i], p->oz[i])));
+		p->axisX[i] = axis.x;
+		p->axisY[i] = axis.y;
+		p->axisZ[i] = axis.z;
+		p->separation[i] = valid ? separation : -CD_REAL_MAX;
+	}
+#endif
+}
 
 /* The pending pairs' separations, as TestEdgePair takes them one by one in test order, but with
  * the unpredictable branches out of the arithmetic: first every pair's separation along its axis
@@ -590,20 +695,8 @@ typedef struct PendingPairs
 static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, const EdgeData* cache,
 					   PendingPairs* pending, cd3SatResult* r, cd3Vec* bestAxis)
 {
-	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
 	int count = pending->count;
-	for (int i = 0; i < count; ++i)
-	{
-		const EdgeData* e = &cache[pending->edge[i]];
-		cd3Vec axis = cd3Cross(e->direction, pending->directionB[i]);
-		cdReal axis2 = cd3LengthSquared(axis);
-		bool valid = axis2 > parallel2 * e->lengthSquared * pending->lengthSquaredB[i];
-		axis = cd3Scale(CD_R(1.0) / cdSqrt(valid ? axis2 : CD_R(1.0)), axis);
-		axis = cd3Dot(axis, cd3Add(e->na, e->nb)) < CD_R(0.0) ? cd3Neg(axis) : axis;
-		cdReal separation = cd3Dot(axis, cd3Sub(pending->originB[i], e->origin));
-		pending->axis[i] = axis;
-		pending->separation[i] = valid ? separation : -CD_REAL_MAX;
-	}
+	PendingSeparations(pending);
 	for (;;)
 	{
 		int top = -1;
@@ -626,7 +719,7 @@ static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform 
 		{
 			continue;
 		}
-		cd3Vec axis = pending->axis[top];
+		cd3Vec axis = cd3MakeVec(pending->axisX[top], pending->axisY[top], pending->axisZ[top]);
 		cdReal loA, hiA, loB, hiB;
 		Project(a, CD3_TRANSFORM_IDENTITY, axis, &loA, &hiA);
 		Project(b, relB, axis, &loB, &hiB);
@@ -747,14 +840,8 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 						   : CrossingArcs(&arcs, cached, c, d, dxc, crossing);
 			for (int k = 0; k < n; ++k)
 			{
-				int slot = pending.count + k;
-				pending.edge[slot] = crossing[k];
-				pending.edgeB[slot] = j;
-				pending.originB[slot] = qb0;
-				pending.directionB[slot] = edgeB;
-				pending.lengthSquaredB[slot] = edgeB2;
+				AddPendingPair(&pending, &cache[crossing[k]], crossing[k], j, qb0, edgeB, edgeB2);
 			}
-			pending.count += n;
 			continue;
 		}
 		else
