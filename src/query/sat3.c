@@ -232,8 +232,9 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 			__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
 			for (int f = 0; f < padded; f += 4)
 			{
-				__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(nx + f), vx), _mm_mul_ps(_mm_load_ps(ny + f), vy)),
-									  _mm_mul_ps(_mm_load_ps(nz + f), vz));
+				__m128 d = _mm_add_ps(
+					_mm_add_ps(_mm_mul_ps(_mm_load_ps(nx + f), vx), _mm_mul_ps(_mm_load_ps(ny + f), vy)),
+					_mm_mul_ps(_mm_load_ps(nz + f), vz));
 				_mm_store_ps(low + f, _mm_min_ps(d, _mm_load_ps(low + f)));
 			}
 #else
@@ -346,18 +347,19 @@ static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, c
 	int n = 0;
 	for (int k = 0; k < count; k += 4)
 	{
-		__m128 bx = _mm_load_ps(arcs->bxax + k), by = _mm_load_ps(arcs->bxay + k), bz = _mm_load_ps(arcs->bxaz + k);
+		__m128 bx = _mm_load_ps(arcs->bxax + k), by = _mm_load_ps(arcs->bxay + k),
+			   bz = _mm_load_ps(arcs->bxaz + k);
 		__m128 cba = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, bx), _mm_mul_ps(cy, by)), _mm_mul_ps(cz, bz));
 		__m128 dba = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, bx), _mm_mul_ps(dy, by)), _mm_mul_ps(dz, bz));
 		__m128 adc = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(arcs->nax + k), ex),
-											_mm_mul_ps(_mm_load_ps(arcs->nay + k), ey)),
-								 _mm_mul_ps(_mm_load_ps(arcs->naz + k), ez));
+										   _mm_mul_ps(_mm_load_ps(arcs->nay + k), ey)),
+								_mm_mul_ps(_mm_load_ps(arcs->naz + k), ez));
 		__m128 bdc = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(arcs->nbx + k), ex),
-											_mm_mul_ps(_mm_load_ps(arcs->nby + k), ey)),
-								 _mm_mul_ps(_mm_load_ps(arcs->nbz + k), ez));
-		__m128 pass = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(_mm_mul_ps(cba, dba), zero),
-											_mm_cmplt_ps(_mm_mul_ps(adc, bdc), zero)),
-								 _mm_cmpgt_ps(_mm_mul_ps(cba, bdc), zero));
+										   _mm_mul_ps(_mm_load_ps(arcs->nby + k), ey)),
+								_mm_mul_ps(_mm_load_ps(arcs->nbz + k), ez));
+		__m128 pass = _mm_and_ps(
+			_mm_and_ps(_mm_cmplt_ps(_mm_mul_ps(cba, dba), zero), _mm_cmplt_ps(_mm_mul_ps(adc, bdc), zero)),
+			_mm_cmpgt_ps(_mm_mul_ps(cba, bdc), zero));
 		int mask = _mm_movemask_ps(pass);
 		/* Without branches: the lanes that pass are few and unpredictable. */
 		out[n] = k;
@@ -413,8 +415,9 @@ static void SideMasks(const cdReal* x, const cdReal* y, const cdReal* z, int pad
 	__m128 zero = _mm_setzero_ps();
 	for (int k = 0; k < padded; k += 4)
 	{
-		__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x + k)), _mm_mul_ps(vy, _mm_load_ps(y + k))),
-							  _mm_mul_ps(vz, _mm_load_ps(z + k)));
+		__m128 d =
+			_mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x + k)), _mm_mul_ps(vy, _mm_load_ps(y + k))),
+					   _mm_mul_ps(vz, _mm_load_ps(z + k)));
 		p |= (uint32_t)_mm_movemask_ps(_mm_cmpgt_ps(d, zero)) << k;
 		n |= (uint32_t)_mm_movemask_ps(_mm_cmplt_ps(d, zero)) << k;
 	}
@@ -461,7 +464,7 @@ typedef struct ArcMasks
 	__m128 align;
 #endif
 	cdReal fx[MASK_FACES], fy[MASK_FACES], fz[MASK_FACES]; /* A's face normals, zero padded */
-	uint64_t faceEdges[MASK_FACES / 4][16]; /* EdgesOfFaces' tables */
+	uint64_t faceEdges[MASK_FACES / 4][16];				   /* EdgesOfFaces' tables */
 	int facePadded;
 	uint32_t positive[SMALL_POLYTOPE], negative[SMALL_POLYTOPE]; /* B's faces against A's arc planes */
 } ArcMasks;
@@ -500,7 +503,8 @@ static void InitArcMasks(ArcMasks* m, const cd3Polytope* a, const cd3Polytope* b
 	int padded = (cached + 3) & ~3;
 	for (int f = 0; f < b->faceCount; ++f)
 	{
-		SideMasks(arcs->bxax, arcs->bxay, arcs->bxaz, padded, carriedNormals[f], &m->positive[f], &m->negative[f]);
+		SideMasks(arcs->bxax, arcs->bxay, arcs->bxaz, padded, carriedNormals[f], &m->positive[f],
+				  &m->negative[f]);
 	}
 }
 
@@ -514,7 +518,8 @@ static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int
 	uint32_t bUp = (uint32_t)(edgesUp >> 32), bDown = (uint32_t)(edgesDown >> 32);
 	uint32_t cUp = m->positive[fc], cDown = m->negative[fc];
 	uint32_t dUp = m->positive[fd], dDown = m->negative[fd];
-	uint32_t pass = ((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown));
+	uint32_t pass =
+		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown));
 	int n = 0;
 	while (pass != 0u)
 	{
@@ -644,15 +649,17 @@ static void PendingSeparations(PendingPairs* p)
 		__m128 cy = _mm_sub_ps(_mm_mul_ps(az, bx), _mm_mul_ps(ax, bz));
 		__m128 cz = _mm_sub_ps(_mm_mul_ps(ax, by), _mm_mul_ps(ay, bx));
 		__m128 axis2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, cx), _mm_mul_ps(cy, cy)), _mm_mul_ps(cz, cz));
-		__m128 bound = _mm_mul_ps(_mm_mul_ps(limit, _mm_load_ps(p->aLength2 + i)), _mm_load_ps(p->bLength2 + i));
+		__m128 bound =
+			_mm_mul_ps(_mm_mul_ps(limit, _mm_load_ps(p->aLength2 + i)), _mm_load_ps(p->bLength2 + i));
 		__m128 valid = _mm_cmpgt_ps(axis2, bound);
 		__m128 length2 = _mm_or_ps(_mm_and_ps(valid, axis2), _mm_andnot_ps(valid, one));
 		__m128 inverse = _mm_div_ps(one, _mm_sqrt_ps(length2));
 		cx = _mm_mul_ps(inverse, cx);
 		cy = _mm_mul_ps(inverse, cy);
 		cz = _mm_mul_ps(inverse, cz);
-		__m128 side = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, _mm_load_ps(p->nx + i)), _mm_mul_ps(cy, _mm_load_ps(p->ny + i))),
-								 _mm_mul_ps(cz, _mm_load_ps(p->nz + i)));
+		__m128 side = _mm_add_ps(
+			_mm_add_ps(_mm_mul_ps(cx, _mm_load_ps(p->nx + i)), _mm_mul_ps(cy, _mm_load_ps(p->ny + i))),
+			_mm_mul_ps(cz, _mm_load_ps(p->nz + i)));
 		__m128 flip = _mm_and_ps(_mm_cmplt_ps(side, zero), signBit);
 		cx = _mm_xor_ps(cx, flip);
 		cy = _mm_xor_ps(cy, flip);
@@ -660,16 +667,19 @@ static void PendingSeparations(PendingPairs* p)
 		__m128 dx = _mm_sub_ps(_mm_load_ps(p->px + i), _mm_load_ps(p->ox + i));
 		__m128 dy = _mm_sub_ps(_mm_load_ps(p->py + i), _mm_load_ps(p->oy + i));
 		__m128 dz = _mm_sub_ps(_mm_load_ps(p->pz + i), _mm_load_ps(p->oz + i));
-		__m128 separation = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, dx), _mm_mul_ps(cy, dy)), _mm_mul_ps(cz, dz));
+		__m128 separation =
+			_mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, dx), _mm_mul_ps(cy, dy)), _mm_mul_ps(cz, dz));
 		_mm_store_ps(p->axisX + i, cx);
 		_mm_store_ps(p->axisY + i, cy);
 		_mm_store_ps(p->axisZ + i, cz);
-		_mm_store_ps(p->separation + i, _mm_or_ps(_mm_and_ps(valid, separation), _mm_andnot_ps(valid, lowest)));
+		_mm_store_ps(p->separation + i,
+					 _mm_or_ps(_mm_and_ps(valid, separation), _mm_andnot_ps(valid, lowest)));
 	}
 #else
 	for (int i = 0; i < p->count; ++i)
 	{
-		cd3Vec axis = cd3Cross(cd3MakeVec(p->ax[i], p->ay[i], p->az[i]), cd3MakeVec(p->bx[i], p->by[i], p->bz[i]));
+		cd3Vec axis =
+			cd3Cross(cd3MakeVec(p->ax[i], p->ay[i], p->az[i]), cd3MakeVec(p->bx[i], p->by[i], p->bz[i]));
 		cdReal axis2 = cd3LengthSquared(axis);
 		bool valid = axis2 > parallel2 * p->aLength2[i] * p->bLength2[i];
 		axis = cd3Scale(CD_R(1.0) / cdSqrt(valid ? axis2 : CD_R(1.0)), axis);
@@ -677,8 +687,8 @@ static void PendingSeparations(PendingPairs* p)
 		{
 			axis = cd3Neg(axis);
 		}
-		cdReal separation =
-			cd3Dot(axis, cd3Sub(cd3MakeVec(p->px[i], p->py[i], p->pz[i]), cd3MakeVec(p->ox[i], p->oy[i], p->oz[i])));
+		cdReal separation = cd3Dot(
+			axis, cd3Sub(cd3MakeVec(p->px[i], p->py[i], p->pz[i]), cd3MakeVec(p->ox[i], p->oy[i], p->oz[i])));
 		p->axisX[i] = axis.x;
 		p->axisY[i] = axis.y;
 		p->axisZ[i] = axis.z;
