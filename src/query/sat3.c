@@ -189,8 +189,8 @@ static bool IsZero(cd3Vec v)
 }
 
 /* Polytopes of at most this many vertices and faces take the column loops below: q's vertices
- * carried into p's frame once, then every face plane against every vertex, four faces at a time
- * (SSE in the float build). Larger ones search q's support vertex per face. */
+ * carried into p's frame once, then every face plane against every vertex, the faces four or
+ * eight at a time (the loops vectorize). Larger ones search q's support vertex per face. */
 #define SMALL_POLYTOPE 64
 
 /* Largest separation over p's face normals against q, whose local points map into p's frame by
@@ -201,8 +201,7 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 	*bestFace = -1;
 	/* The rotation as a matrix once: two quaternion rotations per face cost more than this. */
 	cd3Mat33 rotation = cd3MakeMatFromQuat(rel.q);
-	/* Not for a triangle's two faces: carrying q's vertices costs more than two support searches. */
-	if (!p->flat && p->faceCount <= SMALL_POLYTOPE && q->vertexCount <= SMALL_POLYTOPE)
+	if (p->faceCount <= SMALL_POLYTOPE && q->vertexCount <= SMALL_POLYTOPE)
 	{
 		/* Each face's separation is the smallest of its plane's distances to q's vertices (q's
 		 * support along the reversed normal), each computed as cd3Dot(normal, vertex in p's frame)
