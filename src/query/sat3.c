@@ -188,6 +188,11 @@ static bool IsZero(cd3Vec v)
 	return v.x == CD_R(0.0) && v.y == CD_R(0.0) && v.z == CD_R(0.0);
 }
 
+/* Polytopes of at most this many vertices and faces take the column loops below: q's vertices
+ * carried into p's frame once, then every face plane against every vertex, the faces four or
+ * eight at a time (the loops vectorize). Larger ones search q's support vertex per face. */
+#define SMALL_POLYTOPE 64
+
 /* Largest separation over p's face normals against q, whose local points map into p's frame by
  * `rel`. */
 static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace)
@@ -196,6 +201,62 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 	*bestFace = -1;
 	/* The rotation as a matrix once: two quaternion rotations per face cost more than this. */
 	cd3Mat33 rotation = cd3MakeMatFromQuat(rel.q);
+	if (p->faceCount <= SMALL_POLYTOPE && q->vertexCount <= SMALL_POLYTOPE)
+	{
+		/* Each face's separation is the smallest of its plane's distances to q's vertices (q's
+		 * support along the reversed normal), each computed as cd3Dot(normal, vertex in p's frame)
+		 * - offset. */
+		int faceCount = p->faceCount;
+		int padded = (faceCount + 3) & ~3; /* zero normals beyond the faces */
+#if CD3_SUPPORT_SSE
+		__m128 columns[4 * SMALL_POLYTOPE / 4];
+		float* nx = (float*)(void*)columns;
+		float* ny = nx + SMALL_POLYTOPE;
+		float* nz = ny + SMALL_POLYTOPE;
+		float* low = nz + SMALL_POLYTOPE;
+#else
+		cdReal nx[SMALL_POLYTOPE], ny[SMALL_POLYTOPE], nz[SMALL_POLYTOPE], low[SMALL_POLYTOPE];
+#endif
+		for (int f = 0; f < padded; ++f)
+		{
+			cd3Vec n = f < faceCount ? p->planes[f].normal : CD3_VEC_ZERO;
+			nx[f] = n.x;
+			ny[f] = n.y;
+			nz[f] = n.z;
+			low[f] = CD_REAL_MAX;
+		}
+		for (int i = 0; i < q->vertexCount; ++i)
+		{
+			cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
+#if CD3_SUPPORT_SSE
+			__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
+			for (int f = 0; f < padded; f += 4)
+			{
+				__m128 d = _mm_add_ps(
+					_mm_add_ps(_mm_mul_ps(_mm_load_ps(nx + f), vx), _mm_mul_ps(_mm_load_ps(ny + f), vy)),
+					_mm_mul_ps(_mm_load_ps(nz + f), vz));
+				_mm_store_ps(low + f, _mm_min_ps(d, _mm_load_ps(low + f)));
+			}
+#else
+			for (int f = 0; f < padded; ++f)
+			{
+				cdReal d = nx[f] * v.x + ny[f] * v.y + nz[f] * v.z;
+				low[f] = d < low[f] ? d : low[f];
+			}
+#endif
+		}
+		for (int f = 0; f < faceCount; ++f)
+		{
+			cd3Plane plane = p->planes[f];
+			cdReal separation = low[f] - plane.offset;
+			if (separation > best && !IsZero(plane.normal))
+			{
+				best = separation;
+				*bestFace = f;
+			}
+		}
+		return best;
+	}
 	for (int f = 0; f < p->faceCount; ++f)
 	{
 		cd3Plane plane = p->planes[f];
@@ -244,7 +305,7 @@ typedef struct EdgeData
 /* Edges of A cached on the stack for the inner loop; larger polytopes recompute them. */
 #define EDGE_CACHE 192
 
-static EdgeData MakeEdgeData(const cd3Polytope* a, int i)
+static inline EdgeData MakeEdgeData(const cd3Polytope* a, int i)
 {
 	const cd3HullHalfEdge* ea = &a->edges[i];
 	EdgeData e;
@@ -263,6 +324,9 @@ static EdgeData MakeEdgeData(const cd3Polytope* a, int i)
  * that pass are few, the ones that fail are many and fail unpredictably. */
 typedef struct ArcColumns
 {
+#if CD3_SUPPORT_SSE
+	__m128 align; /* the columns 16-byte aligned for the SSE loads (EDGE_CACHE is a multiple of 4) */
+#endif
 	cdReal nax[EDGE_CACHE], nay[EDGE_CACHE], naz[EDGE_CACHE];
 	cdReal nbx[EDGE_CACHE], nby[EDGE_CACHE], nbz[EDGE_CACHE];
 	cdReal bxax[EDGE_CACHE], bxay[EDGE_CACHE], bxaz[EDGE_CACHE];
@@ -273,6 +337,42 @@ typedef struct ArcColumns
  * b on either side of c-d's, and both on one hemisphere. */
 static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, cd3Vec dxc, int* out)
 {
+#if CD3_SUPPORT_SSE
+	/* Four arcs at a time over the columns padded with zero arcs (which never pass), and the few
+	 * that pass gathered from the lane masks. */
+	__m128 cx = _mm_set1_ps(c.x), cy = _mm_set1_ps(c.y), cz = _mm_set1_ps(c.z);
+	__m128 dx = _mm_set1_ps(d.x), dy = _mm_set1_ps(d.y), dz = _mm_set1_ps(d.z);
+	__m128 ex = _mm_set1_ps(dxc.x), ey = _mm_set1_ps(dxc.y), ez = _mm_set1_ps(dxc.z);
+	__m128 zero = _mm_setzero_ps();
+	int n = 0;
+	for (int k = 0; k < count; k += 4)
+	{
+		__m128 bx = _mm_load_ps(arcs->bxax + k), by = _mm_load_ps(arcs->bxay + k),
+			   bz = _mm_load_ps(arcs->bxaz + k);
+		__m128 cba = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, bx), _mm_mul_ps(cy, by)), _mm_mul_ps(cz, bz));
+		__m128 dba = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, bx), _mm_mul_ps(dy, by)), _mm_mul_ps(dz, bz));
+		__m128 adc = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(arcs->nax + k), ex),
+										   _mm_mul_ps(_mm_load_ps(arcs->nay + k), ey)),
+								_mm_mul_ps(_mm_load_ps(arcs->naz + k), ez));
+		__m128 bdc = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_load_ps(arcs->nbx + k), ex),
+										   _mm_mul_ps(_mm_load_ps(arcs->nby + k), ey)),
+								_mm_mul_ps(_mm_load_ps(arcs->nbz + k), ez));
+		__m128 pass = _mm_and_ps(
+			_mm_and_ps(_mm_cmplt_ps(_mm_mul_ps(cba, dba), zero), _mm_cmplt_ps(_mm_mul_ps(adc, bdc), zero)),
+			_mm_cmpgt_ps(_mm_mul_ps(cba, bdc), zero));
+		int mask = _mm_movemask_ps(pass);
+		/* Without branches: the lanes that pass are few and unpredictable. */
+		out[n] = k;
+		n += mask & 1;
+		out[n] = k + 1;
+		n += (mask >> 1) & 1;
+		out[n] = k + 2;
+		n += (mask >> 2) & 1;
+		out[n] = k + 3;
+		n += (mask >> 3) & 1;
+	}
+	return n;
+#else
 	/* The test in one loop the compiler vectorizes, the gathering of the few that pass in another. */
 	int pass[EDGE_CACHE];
 	for (int k = 0; k < count; ++k)
@@ -288,6 +388,143 @@ static int CrossingArcs(const ArcColumns* arcs, int count, cd3Vec c, cd3Vec d, c
 	{
 		out[n] = k;
 		n += pass[k];
+	}
+	return n;
+#endif
+}
+
+/* A with at most this many edges and faces takes the Gauss-map test as bit masks: the four sides
+ * of a pair (c and d against A's arc plane, A's normals a and b against B's) are signs of dot
+ * products that depend on one edge and one face, so they are computed once per face (B's faces
+ * against A's arc planes, A's faces against each B arc plane) instead of once per edge pair, and
+ * the test of one B edge against all of A's is a few mask operations. A pair passes when the
+ * products of CrossingArcs have the signs it asks for, that is when the factors have (a product
+ * of two nonzero factors that underflows to zero is the one difference: such a pair passes here,
+ * which costs a separation, never a wrong one). */
+#define MASK_ARCS 32
+#define MASK_FACES 16
+
+/* Bits k (k < padded, a multiple of 4) where v . (x[k], y[k], z[k]) is positive, and negative; the
+ * sums in the order of CrossingArcs'. */
+static void SideMasks(const cdReal* x, const cdReal* y, const cdReal* z, int padded, cd3Vec v,
+					  uint32_t* positive, uint32_t* negative)
+{
+	uint32_t p = 0u, n = 0u;
+#if CD3_SUPPORT_SSE
+	__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
+	__m128 zero = _mm_setzero_ps();
+	for (int k = 0; k < padded; k += 4)
+	{
+		__m128 d =
+			_mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x + k)), _mm_mul_ps(vy, _mm_load_ps(y + k))),
+					   _mm_mul_ps(vz, _mm_load_ps(z + k)));
+		p |= (uint32_t)_mm_movemask_ps(_mm_cmpgt_ps(d, zero)) << k;
+		n |= (uint32_t)_mm_movemask_ps(_mm_cmplt_ps(d, zero)) << k;
+	}
+#else
+	for (int k = 0; k < padded; ++k)
+	{
+		cdReal d = v.x * x[k] + v.y * y[k] + v.z * z[k];
+		p |= (uint32_t)(d > CD_R(0.0)) << k;
+		n |= (uint32_t)(d < CD_R(0.0)) << k;
+	}
+#endif
+	*positive = p;
+	*negative = n;
+}
+
+/* The edges of A (bits of its cached arcs) whose first face is among `faces` (bits of A's faces)
+ * in the low 32 bits, those whose second face is in the high 32, from tables of 16 entries per 4
+ * faces (unused tables map every index to no edge). */
+static inline uint64_t EdgesOfFaces(const uint64_t (*table)[16], uint32_t faces)
+{
+	return table[0][faces & 15u] | table[1][(faces >> 4) & 15u] | table[2][(faces >> 8) & 15u] |
+		   table[3][(faces >> 12) & 15u];
+}
+
+static inline int LowestBit32(uint32_t bits)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctz(bits);
+#else
+	int i = 0;
+	while (!(bits & 1u))
+	{
+		bits >>= 1;
+		++i;
+	}
+	return i;
+#endif
+}
+
+/* A's side of the masked test, built once per query. */
+typedef struct ArcMasks
+{
+#if CD3_SUPPORT_SSE
+	__m128 align;
+#endif
+	cdReal fx[MASK_FACES], fy[MASK_FACES], fz[MASK_FACES]; /* A's face normals, zero padded */
+	uint64_t faceEdges[MASK_FACES / 4][16];				   /* EdgesOfFaces' tables */
+	int facePadded;
+	uint32_t positive[SMALL_POLYTOPE], negative[SMALL_POLYTOPE]; /* B's faces against A's arc planes */
+} ArcMasks;
+
+static void InitArcMasks(ArcMasks* m, const cd3Polytope* a, const cd3Polytope* b, const EdgeData* cache,
+						 int cached, const ArcColumns* arcs, const cd3Vec* carriedNormals)
+{
+	int faces = a->faceCount;
+	m->facePadded = (faces + 3) & ~3;
+	uint64_t of[MASK_FACES];
+	for (int g = 0; g < MASK_FACES; ++g)
+	{
+		cd3Vec n = g < faces ? a->planes[g].normal : CD3_VEC_ZERO;
+		if (g < m->facePadded)
+		{
+			m->fx[g] = n.x;
+			m->fy[g] = n.y;
+			m->fz[g] = n.z;
+		}
+		of[g] = 0u;
+	}
+	for (int k = 0; k < cached; ++k)
+	{
+		const cd3HullHalfEdge* e = &a->edges[cache[k].index];
+		of[e->face] |= (uint64_t)1u << k;
+		of[a->edges[e->twin].face] |= (uint64_t)1u << (k + 32);
+	}
+	for (int i = 0; i < MASK_FACES / 4; ++i)
+	{
+		m->faceEdges[i][0] = 0u;
+		for (unsigned v = 1u; v < 16u; ++v)
+		{
+			m->faceEdges[i][v] = m->faceEdges[i][v & (v - 1u)] | of[4 * i + LowestBit32(v)];
+		}
+	}
+	int padded = (cached + 3) & ~3;
+	for (int f = 0; f < b->faceCount; ++f)
+	{
+		SideMasks(arcs->bxax, arcs->bxay, arcs->bxaz, padded, carriedNormals[f], &m->positive[f],
+				  &m->negative[f]);
+	}
+}
+
+/* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c). */
+static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int* out)
+{
+	uint32_t up, down;
+	SideMasks(m->fx, m->fy, m->fz, m->facePadded, dxc, &up, &down);
+	uint64_t edgesUp = EdgesOfFaces(m->faceEdges, up), edgesDown = EdgesOfFaces(m->faceEdges, down);
+	uint32_t aUp = (uint32_t)edgesUp, aDown = (uint32_t)edgesDown;
+	uint32_t bUp = (uint32_t)(edgesUp >> 32), bDown = (uint32_t)(edgesDown >> 32);
+	uint32_t cUp = m->positive[fc], cDown = m->negative[fc];
+	uint32_t dUp = m->positive[fd], dDown = m->negative[fd];
+	uint32_t pass =
+		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown));
+	int n = 0;
+	while (pass != 0u)
+	{
+		out[n++] = LowestBit32(pass);
+		pass &= pass - 1u;
 	}
 	return n;
 }
@@ -333,6 +570,184 @@ static void TestEdgePair(const cd3Polytope* a, const cd3Polytope* b, cd3Transfor
 	}
 }
 
+/* Edge pairs that passed the Gauss-map test, waiting for their separations: A's cached edge, B's
+ * half-edge and B's edge in A's frame. */
+#define PENDING_PAIRS 256
+
+typedef struct PendingPairs
+{
+#if CD3_SUPPORT_SSE
+	__m128 align; /* the columns 16-byte aligned (PENDING_PAIRS is a multiple of 4) */
+#endif
+	/* Per pair, as columns: A's edge direction and its squared length, the sum of its face
+	 * normals and its origin; B's edge origin, direction and squared length; then the pair's unit
+	 * axis and separation along it. */
+	cdReal ax[PENDING_PAIRS], ay[PENDING_PAIRS], az[PENDING_PAIRS], aLength2[PENDING_PAIRS];
+	cdReal nx[PENDING_PAIRS], ny[PENDING_PAIRS], nz[PENDING_PAIRS];
+	cdReal ox[PENDING_PAIRS], oy[PENDING_PAIRS], oz[PENDING_PAIRS];
+	cdReal px[PENDING_PAIRS], py[PENDING_PAIRS], pz[PENDING_PAIRS];
+	cdReal bx[PENDING_PAIRS], by[PENDING_PAIRS], bz[PENDING_PAIRS], bLength2[PENDING_PAIRS];
+	cdReal axisX[PENDING_PAIRS], axisY[PENDING_PAIRS], axisZ[PENDING_PAIRS];
+	cdReal separation[PENDING_PAIRS];
+	int edge[PENDING_PAIRS];
+	int edgeB[PENDING_PAIRS];
+	int count;
+	int order; /* pairs flushed before: the position of the first pending pair in test order */
+	int bestOrder;
+} PendingPairs;
+
+/* Appends A's cached edge e against B's edge j (origin qb0, direction edgeB). */
+static inline void AddPendingPair(PendingPairs* p, const EdgeData* e, int k, int j, cd3Vec qb0, cd3Vec edgeB,
+								  cdReal edgeB2)
+{
+	int i = p->count++;
+	cd3Vec sum = cd3Add(e->na, e->nb);
+	p->ax[i] = e->direction.x;
+	p->ay[i] = e->direction.y;
+	p->az[i] = e->direction.z;
+	p->aLength2[i] = e->lengthSquared;
+	p->nx[i] = sum.x;
+	p->ny[i] = sum.y;
+	p->nz[i] = sum.z;
+	p->ox[i] = e->origin.x;
+	p->oy[i] = e->origin.y;
+	p->oz[i] = e->origin.z;
+	p->px[i] = qb0.x;
+	p->py[i] = qb0.y;
+	p->pz[i] = qb0.z;
+	p->bx[i] = edgeB.x;
+	p->by[i] = edgeB.y;
+	p->bz[i] = edgeB.z;
+	p->bLength2[i] = edgeB2;
+	p->edge[i] = k;
+	p->edgeB[i] = j;
+}
+
+/* Every pending pair's unit axis and separation along it (-CD_REAL_MAX for parallel edges): the
+ * arithmetic of TestEdgePair, operation for operation (so bit for bit), four pairs at a time in
+ * the float build on SSE2. */
+static void PendingSeparations(PendingPairs* p)
+{
+	cdReal parallel2 = PARALLEL_SINE * PARALLEL_SINE;
+#if CD3_SUPPORT_SSE
+	__m128 limit = _mm_set1_ps(parallel2), one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+	__m128 signBit = _mm_set1_ps(-0.0f), lowest = _mm_set1_ps(-CD_REAL_MAX);
+	/* The last group's lanes past the count: zero edges (their results are never read). */
+	for (int i = p->count; (i & 3) != 0; ++i)
+	{
+		p->ax[i] = p->ay[i] = p->az[i] = p->aLength2[i] = 0.0f;
+		p->nx[i] = p->ny[i] = p->nz[i] = 0.0f;
+		p->ox[i] = p->oy[i] = p->oz[i] = 0.0f;
+		p->px[i] = p->py[i] = p->pz[i] = 0.0f;
+		p->bx[i] = p->by[i] = p->bz[i] = p->bLength2[i] = 0.0f;
+	}
+	for (int i = 0; i < p->count; i += 4)
+	{
+		__m128 ax = _mm_load_ps(p->ax + i), ay = _mm_load_ps(p->ay + i), az = _mm_load_ps(p->az + i);
+		__m128 bx = _mm_load_ps(p->bx + i), by = _mm_load_ps(p->by + i), bz = _mm_load_ps(p->bz + i);
+		__m128 cx = _mm_sub_ps(_mm_mul_ps(ay, bz), _mm_mul_ps(az, by));
+		__m128 cy = _mm_sub_ps(_mm_mul_ps(az, bx), _mm_mul_ps(ax, bz));
+		__m128 cz = _mm_sub_ps(_mm_mul_ps(ax, by), _mm_mul_ps(ay, bx));
+		__m128 axis2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, cx), _mm_mul_ps(cy, cy)), _mm_mul_ps(cz, cz));
+		__m128 bound =
+			_mm_mul_ps(_mm_mul_ps(limit, _mm_load_ps(p->aLength2 + i)), _mm_load_ps(p->bLength2 + i));
+		__m128 valid = _mm_cmpgt_ps(axis2, bound);
+		__m128 length2 = _mm_or_ps(_mm_and_ps(valid, axis2), _mm_andnot_ps(valid, one));
+		__m128 inverse = _mm_div_ps(one, _mm_sqrt_ps(length2));
+		cx = _mm_mul_ps(inverse, cx);
+		cy = _mm_mul_ps(inverse, cy);
+		cz = _mm_mul_ps(inverse, cz);
+		__m128 side = _mm_add_ps(
+			_mm_add_ps(_mm_mul_ps(cx, _mm_load_ps(p->nx + i)), _mm_mul_ps(cy, _mm_load_ps(p->ny + i))),
+			_mm_mul_ps(cz, _mm_load_ps(p->nz + i)));
+		__m128 flip = _mm_and_ps(_mm_cmplt_ps(side, zero), signBit);
+		cx = _mm_xor_ps(cx, flip);
+		cy = _mm_xor_ps(cy, flip);
+		cz = _mm_xor_ps(cz, flip);
+		__m128 dx = _mm_sub_ps(_mm_load_ps(p->px + i), _mm_load_ps(p->ox + i));
+		__m128 dy = _mm_sub_ps(_mm_load_ps(p->py + i), _mm_load_ps(p->oy + i));
+		__m128 dz = _mm_sub_ps(_mm_load_ps(p->pz + i), _mm_load_ps(p->oz + i));
+		__m128 separation =
+			_mm_add_ps(_mm_add_ps(_mm_mul_ps(cx, dx), _mm_mul_ps(cy, dy)), _mm_mul_ps(cz, dz));
+		_mm_store_ps(p->axisX + i, cx);
+		_mm_store_ps(p->axisY + i, cy);
+		_mm_store_ps(p->axisZ + i, cz);
+		_mm_store_ps(p->separation + i,
+					 _mm_or_ps(_mm_and_ps(valid, separation), _mm_andnot_ps(valid, lowest)));
+	}
+#else
+	for (int i = 0; i < p->count; ++i)
+	{
+		cd3Vec axis =
+			cd3Cross(cd3MakeVec(p->ax[i], p->ay[i], p->az[i]), cd3MakeVec(p->bx[i], p->by[i], p->bz[i]));
+		cdReal axis2 = cd3LengthSquared(axis);
+		bool valid = axis2 > parallel2 * p->aLength2[i] * p->bLength2[i];
+		axis = cd3Scale(CD_R(1.0) / cdSqrt(valid ? axis2 : CD_R(1.0)), axis);
+		if (cd3Dot(axis, cd3MakeVec(p->nx[i], p->ny[i], p->nz[i])) < CD_R(0.0))
+		{
+			axis = cd3Neg(axis);
+		}
+		cdReal separation = cd3Dot(
+			axis, cd3Sub(cd3MakeVec(p->px[i], p->py[i], p->pz[i]), cd3MakeVec(p->ox[i], p->oy[i], p->oz[i])));
+		p->axisX[i] = axis.x;
+		p->axisY[i] = axis.y;
+		p->axisZ[i] = axis.z;
+		p->separation[i] = valid ? separation : -CD_REAL_MAX;
+	}
+#endif
+}
+
+/* The pending pairs' separations, as TestEdgePair takes them one by one in test order, but with
+ * the unpredictable branches out of the arithmetic: first every pair's separation along its axis
+ * (independent chains the processor overlaps), then the pairs from the largest separation down,
+ * each checked by projection as TestEdgePair checks a new best, until one is below the best. The
+ * best (largest separation, ties to the first pair in test order) is TestEdgePair's, bit for bit. */
+static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, const EdgeData* cache,
+					   PendingPairs* pending, cd3SatResult* r, cd3Vec* bestAxis)
+{
+	int count = pending->count;
+	PendingSeparations(pending);
+	for (;;)
+	{
+		int top = -1;
+		cdReal highest = -CD_REAL_MAX;
+		for (int i = 0; i < count; ++i)
+		{
+			bool higher = pending->separation[i] > highest;
+			top = higher ? i : top;
+			highest = higher ? pending->separation[i] : highest;
+		}
+		if (top < 0 || highest < r->edgeSeparation)
+		{
+			break;
+		}
+		pending->separation[top] = -CD_REAL_MAX;
+		int order = pending->order + top;
+		/* At a tie with the best the pair can only matter as an earlier one of equal separation. */
+		bool tie = !(highest > r->edgeSeparation);
+		if (tie && !(pending->bestOrder >= 0 && order < pending->bestOrder))
+		{
+			continue;
+		}
+		cd3Vec axis = cd3MakeVec(pending->axisX[top], pending->axisY[top], pending->axisZ[top]);
+		cdReal loA, hiA, loB, hiB;
+		Project(a, CD3_TRANSFORM_IDENTITY, axis, &loA, &hiA);
+		Project(b, relB, axis, &loB, &hiB);
+		cdReal separation = cdMin(highest, loB - hiA);
+		if (separation > r->edgeSeparation ||
+			(separation == r->edgeSeparation && pending->bestOrder >= 0 && order < pending->bestOrder))
+		{
+			r->edgeSeparation = separation;
+			r->edgeA = cache[pending->edge[top]].index;
+			r->edgeB = pending->edgeB[top];
+			*bestAxis = axis;
+			pending->bestOrder = order;
+		}
+	}
+	pending->order += count;
+	pending->count = 0;
+}
+
 /* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
  * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
  * difference, whose normal is the cross of the edges oriented within A's arc. Stops early once an
@@ -343,6 +758,10 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	EdgeData cache[EDGE_CACHE];
 	ArcColumns arcs;
 	int crossing[EDGE_CACHE];
+	PendingPairs pending;
+	pending.count = 0;
+	pending.order = 0;
+	pending.bestOrder = -1;
 	int cached = 0;
 	bool useCache = a->edgeAxisCount / 2 <= EDGE_CACHE;
 	if (useCache)
@@ -365,6 +784,31 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 				++cached;
 			}
 		}
+		/* Zero arcs up to a multiple of 4: their products are zero, so they never pass. */
+		for (int k = cached; (k & 3) != 0; ++k)
+		{
+			arcs.nax[k] = arcs.nay[k] = arcs.naz[k] = CD_R(0.0);
+			arcs.nbx[k] = arcs.nby[k] = arcs.nbz[k] = CD_R(0.0);
+			arcs.bxax[k] = arcs.bxay[k] = arcs.bxaz[k] = CD_R(0.0);
+		}
+	}
+	/* B's vertices and reversed face normals in A's frame, once each rather than once per edge end
+	 * and edge side (the same values). */
+	cd3Vec carriedVertices[SMALL_POLYTOPE], carriedNormals[SMALL_POLYTOPE];
+	bool carry = b->vertexCount <= SMALL_POLYTOPE && b->faceCount <= SMALL_POLYTOPE;
+	for (int i = 0; carry && i < b->vertexCount; ++i)
+	{
+		carriedVertices[i] = cd3TransformPoint(relB, b->vertices[i]);
+	}
+	for (int f = 0; carry && f < b->faceCount; ++f)
+	{
+		carriedNormals[f] = cd3Neg(cd3RotateVector(relB.q, b->planes[f].normal));
+	}
+	ArcMasks masks;
+	bool masked = useCache && carry && cached <= MASK_ARCS && a->faceCount <= MASK_FACES;
+	if (masked)
+	{
+		InitArcMasks(&masks, a, b, cache, cached, &arcs, carriedNormals);
 	}
 	for (int j = 0; j < b->edgeAxisCount; ++j)
 	{
@@ -373,20 +817,42 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			continue;
 		}
-		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
-		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[b->edges[eb->twin].origin]);
+		const cd3HullHalfEdge* twin = &b->edges[eb->twin];
+		cd3Vec qb0, qb1, c, d;
+		if (carry)
+		{
+			qb0 = carriedVertices[eb->origin];
+			qb1 = carriedVertices[twin->origin];
+			c = carriedNormals[eb->face];
+			d = carriedNormals[twin->face];
+		}
+		else
+		{
+			qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
+			qb1 = cd3TransformPoint(relB, b->vertices[twin->origin]);
+			c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
+			d = cd3Neg(cd3RotateVector(relB.q, b->planes[twin->face].normal));
+		}
 		cd3Vec edgeB = cd3Sub(qb1, qb0);
 		cdReal edgeB2 = cd3LengthSquared(edgeB);
-		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
-		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[b->edges[eb->twin].face].normal));
 		cd3Vec dxc = cd3Cross(d, c);
 		if (useCache)
 		{
-			int n = CrossingArcs(&arcs, cached, c, d, dxc, crossing);
+			if (pending.count + cached > PENDING_PAIRS)
+			{
+				FlushPairs(a, b, relB, cache, &pending, r, bestAxis);
+				if (r->edgeSeparation > limit)
+				{
+					return;
+				}
+			}
+			int n = masked ? CrossingArcsMasked(&masks, eb->face, twin->face, dxc, crossing)
+						   : CrossingArcs(&arcs, cached, c, d, dxc, crossing);
 			for (int k = 0; k < n; ++k)
 			{
-				TestEdgePair(a, b, relB, &cache[crossing[k]], j, qb0, edgeB, edgeB2, r, bestAxis);
+				AddPendingPair(&pending, &cache[crossing[k]], crossing[k], j, qb0, edgeB, edgeB2);
 			}
+			continue;
 		}
 		else
 		{
@@ -411,6 +877,10 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			return;
 		}
+	}
+	if (useCache)
+	{
+		FlushPairs(a, b, relB, cache, &pending, r, bestAxis);
 	}
 }
 
