@@ -842,8 +842,11 @@ static bool readBody(WLoader* loader, const cJSON* object, int index)
 		int k = 0;
 		for (const cJSON* item = arrays[list]->child; item != NULL; item = item->next, ++k)
 		{
-			snprintf(loader->context, sizeof loader->context, "%s, %s #%d", bodyContext,
-					 list == 0 ? "shape" : "chain", k + 1);
+			if (snprintf(loader->context, sizeof loader->context, "%s, %s #%d", bodyContext,
+						 list == 0 ? "shape" : "chain", k + 1) >= (int)sizeof loader->context)
+			{
+				/* A cut context still names the body; the message stays readable. */
+			}
 			jsonReaderPushIndex(&loader->json, k);
 			bool ok = list == 0 ? readShape(loader, item, id) : readChain(loader, item, id);
 			jsonReaderPop(&loader->json);
