@@ -368,6 +368,12 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->contacts.data = s.contacts.data;
 	world->contacts.count = s.contacts.count;
 	world->contacts.capacity = s.contacts.capacity;
+	world->sensorContactCount = 0;
+	for (int i = 0; i < world->contacts.count; ++i)
+	{
+		const cd2Contact* contact = world->contacts.data + i;
+		world->sensorContactCount += contact->inUse && (contact->flags & CD2_CONTACT_SENSOR) != 0 ? 1 : 0;
+	}
 	world->joints.data = s.joints.data;
 	world->joints.count = s.joints.count;
 	world->joints.capacity = s.joints.capacity;

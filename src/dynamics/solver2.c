@@ -450,13 +450,17 @@ static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 	}
 }
 
-void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext)
+void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, int minParallel,
+				void* taskContext)
 {
 	if (itemCount <= 0)
 	{
 		return;
 	}
-	if (world->workerCount <= 1 || world->enqueueTask == NULL || itemCount <= minRange)
+	/* Too little work to be worth a second thread (handing a task out and waiting for it costs
+	 * microseconds): on this thread. */
+	if (world->workerCount <= 1 || world->enqueueTask == NULL || itemCount <= minRange ||
+		(itemCount < minParallel && !world->alwaysParallel))
 	{
 		task(0, itemCount, 0, taskContext);
 		return;
@@ -605,6 +609,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
 	}
 
+	CD2_TIMER_MARK(5, "setup bodies");
 	{
 		cd2SolverBody* zero = context.bodies + context.bodyCount;
 		memset(zero, 0, sizeof(*zero));
@@ -625,28 +630,36 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 		return;
 	}
+	/* From the entries the contact update left (a small array read in order), else from the
+	 * contacts themselves. */
+	const cd2ContactSolveEntry* entries = world->stepSolveEntries;
 	for (int i = 0; i < world->contacts.count; ++i)
 	{
-		const cd2Contact* contact = world->contacts.data + i;
-		if (!contact->inUse || contact->pointCount == 0 ||
-			(contact->flags & (CD2_CONTACT_SENSOR | CD2_CONTACT_DISABLED)) != 0 ||
-			(contact->flags & CD2_CONTACT_TOUCHING) == 0)
+		cd2ContactSolveEntry read;
+		const cd2ContactSolveEntry* entry = entries + i;
+		if (entries == NULL)
+		{
+			cd2SetContactSolveEntry(&read, world->contacts.data + i);
+			entry = &read;
+		}
+		if (entry->bodyA == CD2_NULL_INDEX)
 		{
 			continue;
 		}
-		int indexA = solverOf[contact->bodyA], indexB = solverOf[contact->bodyB];
+		int indexA = solverOf[entry->bodyA], indexB = solverOf[entry->bodyB];
 		if (indexA < 0 && indexB < 0)
 		{
 			continue;
 		}
-		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
+		hitCandidates += (entry->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
 		int k = context.constraintCount++;
 		pairs[k].contact = i;
 		pairs[k].indexA = indexA;
 		pairs[k].indexB = indexB;
-		bodyA[k] = colorBodyOf[contact->bodyA];
-		bodyB[k] = colorBodyOf[contact->bodyB];
+		bodyA[k] = colorBodyOf[entry->bodyA];
+		bodyB[k] = colorBodyOf[entry->bodyB];
 	}
+	CD2_TIMER_MARK(13, "setup contact scan");
 	context.indexOrder = pairs;
 	context.pairs = pairs;
 	/* Colour order (see graph_color.h). */
@@ -669,6 +682,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			context.colorOfConstraint = bodyA;
 		}
 	}
+	CD2_TIMER_MARK(6, "setup color");
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
 	/* The solver indices of each joint's bodies (the colouring's, one read of each joint). */
 	int* jointBodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
@@ -706,6 +720,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 	cd2ColorJoints(world, &context, jointBodyA, jointBodyB);
 
+	CD2_TIMER_MARK(7, "setup joints");
 	if (!cd2PrepareContactsWide(world, &context))
 	{
 		/* Out of scratch memory: every constraint one by one. */
@@ -732,7 +747,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	memset(&list, 0, sizeof(list));
 	list.world = world;
 	list.step = &context;
-	list.workerCount = world->workerCount;
+	/* A small solve runs on this thread only: its stages take a few microseconds each, about what
+	 * handing them out and waiting at each stage's end would cost. */
+	int solveWork = context.constraintCount + 2 * context.jointCount + context.bodyCount / 4;
+	bool parallel = world->workerCount > 1 && world->enqueueTask != NULL &&
+					(solveWork >= CD2_PARALLEL_MIN_SOLVE || world->alwaysParallel);
+	list.workerCount = parallel ? world->workerCount : 1;
 	cd2StageCounter bouncing;
 #if CD2_STAGE_ATOMICS
 	atomic_init(&bouncing, 0);
@@ -802,10 +822,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 	}
 
+	CD2_TIMER_MARK(8, "setup wide+stages");
 	/* One task per further worker, enqueued once; the stepping thread walks the stages too. */
 	void* helpers = NULL;
 #if CD2_STAGE_ATOMICS
-	if (world->workerCount > 1 && world->enqueueTask != NULL)
+	if (parallel)
 	{
 		if (world->threadPool != NULL)
 		{
@@ -825,6 +846,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->finishTask(helpers, world->userTaskContext);
 	}
 
+	CD2_TIMER_MARK(9, "stages");
 	/* The rest of finalize, on this thread: what reads other bodies' final poses or writes shared
 	 * structures, for the bodies the finalize stage flagged, in body order. */
 	bool sleepAllowed = world->enableSleep;
@@ -896,12 +918,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			}
 		}
 	}
+	CD2_TIMER_MARK(10, "post finalize");
 	if (hitCandidates > 0)
 	{
 		cd2ReportHits(world, &context);
 	}
 	/* Only a body that has rested for CD2_TIME_TO_SLEEP can fall asleep (an island sleeps when its
 	 * least rested body has); without one the islands are not built. */
+	CD2_TIMER_MARK(11, "hits");
 	if (sleepAllowed && rested && cd2UpdateSleep(world) > 0)
 	{
 		for (int k = 0; k < context.bodyCount && context.moveEvents != NULL; ++k)
