@@ -114,6 +114,36 @@ static void cd2IntegratePositions(cd2StepContext* context, int start, int end)
 	}
 }
 
+/* The solver bodies [start, end) from their world bodies. */
+static void cd2SetupBodies(cd2World* world, cd2StepContext* context, int start, int end)
+{
+	cdReal h = context->h;
+	for (int k = start; k < end; ++k)
+	{
+		cd2Body* body = world->bodies.data + context->bodyIndices[k];
+		context->accelerations[k] = body->invMass > CD_R(0.0) ? cd2MulAdd(cd2Scale(body->invMass, body->force),
+																		  body->gravityScale, world->gravity)
+															  : CD2_VEC_ZERO;
+		body->center0 = body->center;
+		body->rotation0 = body->transform.q;
+		body->isFast = false;
+		cd2SolverBody* s = context->bodies + k;
+		s->linearVelocity = body->linearVelocity;
+		s->angularVelocity = body->angularVelocity;
+		s->deltaPosition = CD2_VEC_ZERO;
+		s->deltaRotation = CD2_ROT_IDENTITY;
+		s->invMass = body->invMass;
+		s->invInertia = body->invInertia;
+		cd2SolverBodyParams* p = context->params + k;
+		p->dynamic = body->type == CD_DYNAMIC_BODY;
+		p->deltaV = cd2Scale(h * body->invMass,
+							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
+		p->deltaW = h * body->invInertia * body->torque;
+		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
+		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
+	}
+}
+
 static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, int start, int end)
 {
 	bool sleepAllowed = world->enableSleep;
@@ -199,6 +229,8 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 
 typedef enum cd2StageKind
 {
+	CD2_STAGE_SETUP_BODIES,			/* bodies */
+	CD2_STAGE_PREPARE_JOINTS,		/* joints, in index order */
 	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
 	CD2_STAGE_PACK_WIDE,			/* wide blocks */
 	CD2_STAGE_INTEGRATE_VELOCITIES, /* bodies */
@@ -307,6 +339,12 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	cd2StepContext* context = list->step;
 	switch (stage->kind)
 	{
+		case CD2_STAGE_SETUP_BODIES:
+			cd2SetupBodies(world, context, start, end);
+			break;
+		case CD2_STAGE_PREPARE_JOINTS:
+			cd2PrepareJointRange(world, context, start, end);
+			break;
 		case CD2_STAGE_PREPARE_CONTACTS:
 			if (cd2PrepareContacts(world, context, stage->first + start, stage->first + end))
 			{
@@ -570,43 +608,23 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 		return;
 	}
-	/* One pass over the bodies (on the calling thread: the dense order is the bodies' order). */
+	/* One pass over the bodies for their dense indices (on the calling thread: the dense order is
+	 * the bodies' order); the first stage fills the solver bodies (cd2SetupBodies). */
 	for (int i = 0; i < world->bodies.count; ++i)
 	{
 		cd2Body* body = world->bodies.data + i;
-		body->solverIndex = CD2_NULL_INDEX;
 		solverOf[i] = CD2_NULL_INDEX;
 		colorBodyOf[i] = CD2_NULL_INDEX;
 		if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
 		{
+			body->solverIndex = CD2_NULL_INDEX;
 			continue;
 		}
 		int k = context.bodyCount++;
 		solverOf[i] = k;
 		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? k : CD2_NULL_INDEX;
-		context.accelerations[k] = body->invMass > CD_R(0.0) ? cd2MulAdd(cd2Scale(body->invMass, body->force),
-																		 body->gravityScale, world->gravity)
-															 : CD2_VEC_ZERO;
 		body->solverIndex = k;
-		body->center0 = body->center;
-		body->rotation0 = body->transform.q;
-		body->isFast = false;
 		context.bodyIndices[k] = i;
-		cd2SolverBody* s = context.bodies + k;
-		s->linearVelocity = body->linearVelocity;
-		s->angularVelocity = body->angularVelocity;
-		s->deltaPosition = CD2_VEC_ZERO;
-		s->deltaRotation = CD2_ROT_IDENTITY;
-		s->invMass = body->invMass;
-		s->invInertia = body->invInertia;
-		cd2SolverBodyParams* p = context.params + k;
-		cdReal h = context.h;
-		p->dynamic = body->type == CD_DYNAMIC_BODY;
-		p->deltaV = cd2Scale(h * body->invMass,
-							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
-		p->deltaW = h * body->invInertia * body->torque;
-		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
-		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
 	}
 
 	CD2_TIMER_MARK(5, "setup bodies");
@@ -766,7 +784,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		jointColors += context.jointColorStart[c + 1] > context.jointColorStart[c] ? 1 : 0;
 	}
 	/* Restitution adds one stage per contact colour after the sub-steps. */
-	list.stageCapacity = 8 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
+	list.stageCapacity = 10 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
 	list.stages =
 		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
 	if (list.stages == NULL)
@@ -778,6 +796,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	int jointStage = context.jointCount > 0 ? 1 : 0;
 	/* The coloured constraints are prepared by the pack stage, block by block (in cache when packed);
 	 * this stage prepares the overflow colour's. */
+	cd2AddStage(&list, CD2_STAGE_SETUP_BODIES, context.bodyCount, 64, 0, false);
+	cd2AddStage(&list, CD2_STAGE_PREPARE_JOINTS, context.jointCount, 32, 0, false);
 	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount - context.overflowStart, 32,
 				context.overflowStart, false);
 	cd2AddStage(&list, CD2_STAGE_PACK_WIDE, context.wideCount, 8, 0, false);

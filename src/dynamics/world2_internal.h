@@ -343,6 +343,8 @@ typedef struct cd2StepContext
 	/* One per joint of `joints`, set by cd2PrepareJoints: what the sub-steps read of it, so that
 	 * they never read the joint or body records. */
 	cd2JointRef* jointRefs;
+	/* The slots of `joints` in joint index order (memory order), for the prepare stage. */
+	int* jointIndexOrder;
 	bool enableWarmStarting;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
@@ -606,7 +608,10 @@ void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
 cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id);
 void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies);
 /* False when out of scratch memory. */
+/* The joints' references and their order; false when out of scratch memory. The joints themselves
+ * are prepared by cd2PrepareJointRange over [0, jointCount) (in index order, any split). */
 bool cd2PrepareJoints(cd2World* world, cd2StepContext* context);
+void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, int end);
 /* Joints [start, end) of context->joints. */
 void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end);
 void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias);
