@@ -1138,10 +1138,10 @@ void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end
 	}
 }
 
-void cd2StoreJointReactions(cd2World* world, cd2StepContext* context)
+void cd2StoreJointReactions(cd2World* world, cd2StepContext* context, int start, int end)
 {
 	cdReal inv_h = context->inv_h;
-	for (int i = 0; i < context->jointCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2Joint* joint = world->joints.data + context->joints[i];
 		const cd2JointData* d = &joint->data;

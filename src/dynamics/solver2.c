@@ -245,18 +245,23 @@ typedef enum cd2StageKind
 	CD2_STAGE_RESTITUTION_WIDE,		/* wide blocks of one colour */
 	CD2_STAGE_RESTITUTION,			/* single */
 	CD2_STAGE_STORE_IMPULSES,		/* constraints */
-	CD2_STAGE_STORE_JOINTS,			/* single */
+	CD2_STAGE_STORE_JOINTS,			/* joints */
 	CD2_STAGE_FINALIZE_BODIES		/* bodies */
 } cd2StageKind;
 
 typedef struct cd2Stage
 {
 	cd2StageCounter claimed; /* blocks taken */
-	cd2StageCounter done;	 /* blocks finished */
+	cd2StageCounter done;	 /* blocks finished (each thread adds its count once it has no more) */
 	cd2StageKind kind;
 	bool useBias;
 	int first; /* the first item (a colour's first wide block) */
 	int itemCount, blockSize, blockCount;
+	/* A cache line per stage: the threads' writes to one stage's counters do not evict the next
+	 * stage's fields from the other threads' caches. */
+	char padding[64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int) > 0
+					 ? 64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int)
+					 : 1];
 } cd2Stage;
 
 typedef struct cd2StageList
@@ -394,7 +399,7 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2StoreImpulses(world, context, stage->first + start, stage->first + end);
 			break;
 		case CD2_STAGE_STORE_JOINTS:
-			cd2StoreJointReactions(world, context);
+			cd2StoreJointReactions(world, context, start, end);
 			break;
 		case CD2_STAGE_FINALIZE_BODIES:
 			cd2FinalizeBodies(world, context, start, end);
@@ -417,6 +422,7 @@ static void cd2RunStages(const cd2StageList* list)
 			continue;
 		}
 #if CD2_STAGE_ATOMICS
+		int finished = 0;
 		for (;;)
 		{
 			int block = atomic_fetch_add_explicit(&stage->claimed, 1, memory_order_relaxed);
@@ -428,7 +434,16 @@ static void cd2RunStages(const cd2StageList* list)
 			int end =
 				start + stage->blockSize < stage->itemCount ? start + stage->blockSize : stage->itemCount;
 			cd2ExecuteStage(list, stage, start, end);
-			atomic_fetch_add_explicit(&stage->done, 1, memory_order_release);
+			++finished;
+		}
+		/* One addition per thread and stage (a thread that took nothing need not write). */
+		if (finished > 0)
+		{
+			atomic_fetch_add_explicit(&stage->done, finished, memory_order_release);
+		}
+		if (finished == stage->blockCount)
+		{
+			continue; /* all of it on this thread: nothing to wait for */
 		}
 		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount;
 			 ++spin)
@@ -785,15 +800,16 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 	/* Restitution adds one stage per contact colour after the sub-steps. */
 	list.stageCapacity = 10 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
-	list.stages =
-		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
-	if (list.stages == NULL)
+	/* (One more, to start the stages on a cache line.) */
+	char* stageMemory =
+		(char*)cdArena_AllocUncleared(&world->arena, (size_t)(list.stageCapacity + 1) * sizeof(cd2Stage));
+	if (stageMemory == NULL)
 	{
 		world->outOfMemory = true;
 		return;
 	}
+	list.stages = (cd2Stage*)(stageMemory + (64u - (uintptr_t)stageMemory % 64u) % 64u);
 	int overflowCount = context.constraintCount > context.overflowStart ? 1 : 0;
-	int jointStage = context.jointCount > 0 ? 1 : 0;
 	/* The coloured constraints are prepared by the pack stage, block by block (in cache when packed);
 	 * this stage prepares the overflow colour's. */
 	cd2AddStage(&list, CD2_STAGE_SETUP_BODIES, context.bodyCount, 64, 0, false);
@@ -822,7 +838,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - context.overflowStart, 32,
 				context.overflowStart, false);
-	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, context.jointCount, 64, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
 
 	context.finalFlags = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1);

@@ -615,7 +615,8 @@ void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, i
 /* Joints [start, end) of context->joints. */
 void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end);
 void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias);
-void cd2StoreJointReactions(cd2World* world, cd2StepContext* context);
+/* Joints [start, end) of context->joints: each writes only its own reaction. */
+void cd2StoreJointReactions(cd2World* world, cd2StepContext* context, int start, int end);
 
 /* The per-kind solvers (one file each). */
 typedef struct cd2JointSolverArgs
