@@ -794,8 +794,8 @@ static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
 	/* The merge's work: a change of touching, or a pre-solve call. */
 	bool touching = contact->pointCount > 0;
 	bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
-	if (touching != wasTouching ||
-		(touching && world->preSolveFcn != NULL && (shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents)))
+	if (touching != wasTouching || (touching && world->preSolveFcn != NULL &&
+									(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents)))
 	{
 		contact->flags |= CD2_CONTACT_SIM_UPDATED;
 		if (changed != NULL)
@@ -940,12 +940,13 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 	/* Out of scratch memory (NULL): the merge reads every contact. */
 	ctx.changed = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)count);
 	ctx.entries = (cd2ContactSolveEntry*)cdArena_AllocUncleared(&world->arena,
-																 (size_t)count * sizeof(cd2ContactSolveEntry));
+																(size_t)count * sizeof(cd2ContactSolveEntry));
 	cd2RunTask(world, cd2UpdateContactsTask, count, 64, CD2_PARALLEL_MIN_CONTACTS, &ctx);
 	CD2_TIMER_MARK(1, "narrow");
 
 	/* (Contacts destroyed below only free their slot: count and the indices stay valid.) */
-	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count; i = cd2NextChanged(ctx.changed, i + 1, count))
+	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count;
+		 i = cd2NextChanged(ctx.changed, i + 1, count))
 	{
 		cd2MergeContact(world, i);
 		if (ctx.entries != NULL)

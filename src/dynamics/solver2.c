@@ -4,13 +4,15 @@
  * hit and move events, sleep). The contacts are sorted by graph colour; the coloured ones are solved
  * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one.
  *
- * Scheduling: everything from preparing the contacts to finalizing the bodies is a fixed list of
- * stages, each an index range (bodies, constraints, wide blocks of one colour, or a single item for
- * the serial parts) cut into blocks. Every thread of the step (the stepping thread and one task per
- * further worker, enqueued once per step) walks the same list: it takes blocks of the current stage
- * with an atomic counter until none is left, then waits until every block of the stage is finished
- * before going on to the next. A thread only ever waits for blocks that a running thread has taken,
- * never for another thread to arrive, so the step finishes whatever the task system does with the
+ * Scheduling: everything from filling the solver bodies and preparing the joints and contacts to
+ * finalizing the bodies is a fixed list of stages, each an index range (bodies, joints, constraints,
+ * wide blocks of one colour, or a single item for the serial parts) cut into blocks. Every thread of
+ * the step (the stepping thread and one task per further worker, enqueued once per step) walks the
+ * same list: it takes blocks of the current stage with an atomic counter until none is left, adds
+ * the number it finished to the stage's count, then waits until every block of the stage is
+ * finished before going on to the next. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
+ * stepping thread alone. A thread only ever waits for blocks that a running thread has taken, never
+ * for another thread to arrive, so the step finishes whatever the task system does with the
  * tasks (run them late, inline or one after another). Each block writes only its own items (a
  * colour's blocks share no movable body), so the results are the same bits for any worker count.
  *
@@ -121,9 +123,10 @@ static void cd2SetupBodies(cd2World* world, cd2StepContext* context, int start, 
 	for (int k = start; k < end; ++k)
 	{
 		cd2Body* body = world->bodies.data + context->bodyIndices[k];
-		context->accelerations[k] = body->invMass > CD_R(0.0) ? cd2MulAdd(cd2Scale(body->invMass, body->force),
-																		  body->gravityScale, world->gravity)
-															  : CD2_VEC_ZERO;
+		context->accelerations[k] =
+			body->invMass > CD_R(0.0)
+				? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
+				: CD2_VEC_ZERO;
 		body->center0 = body->center;
 		body->rotation0 = body->transform.q;
 		body->isFast = false;
@@ -259,9 +262,10 @@ typedef struct cd2Stage
 	int itemCount, blockSize, blockCount;
 	/* A cache line per stage: the threads' writes to one stage's counters do not evict the next
 	 * stage's fields from the other threads' caches. */
-	char padding[64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int) > 0
-					 ? 64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int)
-					 : 1];
+	char
+		padding[64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int) > 0
+					? 64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int)
+					: 1];
 } cd2Stage;
 
 typedef struct cd2StageList
@@ -799,7 +803,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		jointColors += context.jointColorStart[c + 1] > context.jointColorStart[c] ? 1 : 0;
 	}
 	/* Restitution adds one stage per contact colour after the sub-steps. */
-	list.stageCapacity = 10 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
+	list.stageCapacity =
+		10 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
 	/* (One more, to start the stages on a cache line.) */
 	char* stageMemory =
 		(char*)cdArena_AllocUncleared(&world->arena, (size_t)(list.stageCapacity + 1) * sizeof(cd2Stage));

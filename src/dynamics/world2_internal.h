@@ -21,13 +21,13 @@ static inline double cd2TimerNow(void)
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 #define CD2_TIMER_BEGIN (cd2TimerLast_ = cd2TimerNow())
-#define CD2_TIMER_MARK(i, name)                                                                        \
-	do                                                                                                 \
-	{                                                                                                  \
-		double cd2TimerT_ = cd2TimerNow();                                                             \
-		cd2StepTimers[i] += cd2TimerT_ - cd2TimerLast_;                                                \
-		cd2StepTimerNames[i] = name;                                                                   \
-		cd2TimerLast_ = cd2TimerT_;                                                                    \
+#define CD2_TIMER_MARK(i, name)                                                                              \
+	do                                                                                                       \
+	{                                                                                                        \
+		double cd2TimerT_ = cd2TimerNow();                                                                   \
+		cd2StepTimers[i] += cd2TimerT_ - cd2TimerLast_;                                                      \
+		cd2StepTimerNames[i] = name;                                                                         \
+		cd2TimerLast_ = cd2TimerT_;                                                                          \
 	} while (0)
 #else
 #define CD2_TIMER_BEGIN ((void)0)
@@ -369,7 +369,6 @@ typedef CD_ARRAY(cd2SensorBeginTouchEvent) cd2SensorBeginArray;
 typedef CD_ARRAY(cd2SensorEndTouchEvent) cd2SensorEndArray;
 typedef CD_ARRAY(cd2BodyMoveEvent) cd2MoveEventArray;
 
-
 /* What the solver needs of a contact, written by cd2UpdateContacts for each contact index (so that
  * the solver's setup reads a small array, not every contact record): its two bodies when it is
  * touching, enabled and not a sensor (else bodyA is CD2_NULL_INDEX), and its flags. */
@@ -399,7 +398,7 @@ typedef struct cd2World
 	CD_ARRAY(cd2Joint) joints;
 	CD_ARRAY(cd2Island) islands;
 	cdIdPool bodyPool, shapePool, chainPool, contactPool, jointPool, islandPool;
-	cdPairSet pairs; /* shape pair -> contact index */
+	cdPairSet pairs;		/* shape pair -> contact index */
 	int sensorContactCount; /* live contacts flagged CD2_CONTACT_SENSOR (derived, not saved) */
 	cd2BroadPhase* broadPhase;
 	uint32_t generationCounter; /* never restored, so ids from a discarded future stay stale */
