@@ -149,6 +149,9 @@ static void cdPoolAwait(cdThreadPool* pool, uint64_t seen)
 		{
 			break;
 		}
+		/* Now and then let another thread of this core run (a machine with more threads than
+		 * cores, the stepping thread among them). */
+		sched_yield();
 	}
 	pthread_mutex_lock(&pool->mutex);
 	pool->sleepers++;

@@ -316,7 +316,7 @@ static void cd2AddWideStages(cd2StageList* list, cd2StageKind kind, bool useBias
 	for (int c = 0; c < context->colorCount; ++c)
 	{
 		int first = context->colorBlockStart[c];
-		cd2AddStage(list, kind, context->colorBlockStart[c + 1] - first, 2, first, useBias);
+		cd2AddStage(list, kind, context->colorBlockStart[c + 1] - first, 4, first, useBias);
 	}
 }
 
