@@ -9,6 +9,10 @@
 #include "../base/graph_color.h"
 #include "wide2.h"
 
+/* Profiling, off unless the library is built with -DCD2_STEP_TIMERS: the stepping thread's wall time
+ * per part of the step, summed over the steps into cd2StepTimers[i] (seconds, named by
+ * cd2StepTimerNames[i]; a program declares both extern and reads them). The parts "narrow",
+ * "pair search", "tree rebuild" and "stages" run on the workers; the others are serial. */
 #ifdef CD2_STEP_TIMERS
 #include <time.h>
 extern double cd2StepTimers[16];
@@ -17,7 +21,7 @@ extern double cd2TimerLast_;
 static inline double cd2TimerNow(void)
 {
 	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
+	timespec_get(&t, TIME_UTC);
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 #define CD2_TIMER_BEGIN (cd2TimerLast_ = cd2TimerNow())
