@@ -254,18 +254,14 @@ typedef enum cd2StageKind
 
 typedef struct cd2Stage
 {
-	cd2StageCounter claimed; /* blocks taken */
-	cd2StageCounter done;	 /* blocks finished (each thread adds its count once it has no more) */
+	/* A cache line per stage (the list is placed on a line boundary): the threads' writes to one
+	 * stage's counters do not evict the next stage's fields from the other threads' caches. */
+	_Alignas(64) cd2StageCounter claimed; /* blocks taken */
+	cd2StageCounter done; /* blocks finished (each thread adds its count once it has no more) */
 	cd2StageKind kind;
 	bool useBias;
 	int first; /* the first item (a colour's first wide block) */
 	int itemCount, blockSize, blockCount;
-	/* A cache line per stage: the threads' writes to one stage's counters do not evict the next
-	 * stage's fields from the other threads' caches. */
-	char
-		padding[64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int) > 0
-					? 64 - 2 * sizeof(cd2StageCounter) - sizeof(cd2StageKind) - sizeof(bool) - 4 * sizeof(int)
-					: 1];
 } cd2Stage;
 
 typedef struct cd2StageList
