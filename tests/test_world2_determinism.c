@@ -9,6 +9,8 @@
 
 #include <collide/collide.h>
 
+#include "../src/dynamics/world2_internal.h" /* cd2SetAlwaysParallel */
+
 #include <stdint.h>
 #include <string.h>
 
@@ -149,6 +151,11 @@ static void HashReal(uint64_t* h, cdReal value)
 }
 
 /* A world of `workerCount` workers: the built-in pool, or the test's task system when given. */
+/* The worlds of these tests are small: a step would run every stage on the stepping thread (too
+ * little work to hand out). The tests hand it out anyway, to run the task paths, except where
+ * they check that decision. */
+static bool s_alwaysParallel = true;
+
 static cd2WorldId CreateWorld(int workerCount, TestTaskSystem* system)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
@@ -160,7 +167,9 @@ static cd2WorldId CreateWorld(int workerCount, TestTaskSystem* system)
 		wd.finishTask = TestFinish;
 		wd.userTaskContext = system;
 	}
-	return cd2CreateWorld(&wd);
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2SetAlwaysParallel(world, s_alwaysParallel);
+	return world;
 }
 
 /* The bits of the bodies' poses and velocities. */
@@ -418,6 +427,58 @@ static void TestTasksRunInsideEnqueue(void)
 	}
 }
 
+/* By default a small world's step hands nothing to the workers (a second worker would only add
+ * the cost of handing work out), and a large one hands its solve out every step; the bits are the
+ * same either way. */
+static void TestSmallWorldStaysOnOneThread(void)
+{
+	int count = 0;
+	uint64_t reference = RunPile(1, NULL, &count);
+	s_alwaysParallel = false;
+	TestTaskSystem system;
+	memset(&system, 0, sizeof(system));
+	int n = 0;
+	uint64_t h = RunPile(2, &system, &n);
+	TEST_CHECKF(h == reference, "hash %016llx, single thread %016llx", (unsigned long long)h,
+				(unsigned long long)reference);
+	TEST_CHECKF(system.enqueued == 0, "%d tasks enqueued for a pile of %d bodies", system.enqueued, n);
+	h = RunPile(2, NULL, &n);
+	TEST_CHECKF(h == reference, "built-in pool: hash %016llx, single thread %016llx", (unsigned long long)h,
+				(unsigned long long)reference);
+
+	/* 1,600 boxes resting in a block on the ground: about 3,000 contacts, solved on the workers. */
+	memset(&system, 0, sizeof(system));
+	cd2WorldId world = CreateWorld(2, &system);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2Segment floor = {{CD_R(-40.0), CD_R(0.0)}, {CD_R(40.0), CD_R(0.0)}};
+	cd2CreateSegmentShape(ground, &sd, &floor);
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(0.5), CD_R(0.5)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	for (int row = 0; row < 40; ++row)
+	{
+		for (int i = 0; i < 40; ++i)
+		{
+			bd = cd2DefaultBodyDef();
+			bd.type = CD_DYNAMIC_BODY;
+			bd.position = cd2MakeVec((cdReal)i - CD_R(20.0), CD_R(0.5) + (cdReal)row);
+			cd2CreatePolygonShape(cd2CreateBody(world, &bd), &sd, &box);
+		}
+	}
+	for (int step = 0; step < 10; ++step)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	cd2Counters counters = cd2World_GetCounters(world);
+	TEST_CHECKF(counters.contactCount > 2500, "%d contacts", counters.contactCount);
+	TEST_CHECKF(system.enqueued >= 10, "%d tasks enqueued in 10 steps of %d contacts", system.enqueued,
+				counters.contactCount);
+	TEST_CHECK(system.badRanges == 0);
+	cd2DestroyWorld(world);
+	s_alwaysParallel = true;
+}
+
 static int s_refusals = 0;
 
 static bool CountRefusal(const char* condition, const char* fileName, int lineNumber)
@@ -480,6 +541,7 @@ int main(void)
 	TEST_RUN(TestSameBitsEveryRunAndWorkerCount);
 	TEST_RUN(TestJointGridSameBitsEveryWorkerCount);
 	TEST_RUN(TestTasksRunInsideEnqueue);
+	TEST_RUN(TestSmallWorldStaysOnOneThread);
 	TEST_RUN(TestHalfATaskSystemIsRefused);
 	TEST_RUN(TestPoolCreateDestroy);
 	return TEST_SUMMARY();

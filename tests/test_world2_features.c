@@ -4,6 +4,7 @@
 
 #include <collide/collide.h>
 
+#include <stdlib.h>
 #include <string.h>
 
 #define DT (CD_R(1.0) / CD_R(60.0))
@@ -464,6 +465,62 @@ static void TestSensorEvents(void)
 	cd2World_Step(world, DT, 4);
 	TEST_CHECK(cd2World_GetSensorEvents(world).endCount == 0);
 	cd2DestroyWorld(world);
+}
+
+/* A saved state with a visitor inside a sensor, restored into a new world: the sensor's end event
+ * comes when the visitor leaves, as in the world that saved it (the restored world knows it has
+ * sensor contacts to look at). */
+static void TestSensorEventsAfterRestore(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId zoneBody = cd2CreateBody(world, &bd);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	sd.isSensor = true;
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2CreatePolygonShape(zoneBody, &sd, &box);
+	bd.type = CD_KINEMATIC_BODY;
+	bd.position = cd2MakeVec(CD_R(-3.0), CD_R(0.0));
+	bd.linearVelocity = cd2MakeVec(CD_R(4.0), CD_R(0.0));
+	cd2BodyId visitor = cd2CreateBody(world, &bd);
+	sd = cd2DefaultShapeDef();
+	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.25)};
+	cd2CreateCircleShape(visitor, &sd, &circle);
+	int begins = 0;
+	for (int i = 0; i < 120 && begins == 0; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		begins += cd2World_GetSensorEvents(world).beginCount;
+	}
+	TEST_CHECK(begins == 1);
+	size_t size = cd2World_GetStateSize(world);
+	unsigned char* buffer = (unsigned char*)malloc(size);
+	TEST_CHECK(buffer != NULL && cd2World_SaveState(world, buffer, size) == CD_OK);
+	/* The saving world: steps until the visitor has left. */
+	int endStep = -1;
+	for (int i = 0; i < 120 && endStep < 0; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		endStep = cd2World_GetSensorEvents(world).endCount > 0 ? i : -1;
+	}
+	TEST_CHECK(endStep > 0);
+	cd2DestroyWorld(world);
+	/* A new world without a shape, given the saved state: the same end at the same step. */
+	cd2WorldId restored = cd2CreateWorld(&wd);
+	TEST_CHECK(buffer != NULL && cd2World_RestoreState(restored, buffer, size) == CD_OK);
+	int restoredEnd = -1;
+	for (int i = 0; i < 120 && restoredEnd < 0; ++i)
+	{
+		cd2World_Step(restored, DT, 4);
+		restoredEnd = cd2World_GetSensorEvents(restored).endCount > 0 ? i : -1;
+	}
+	TEST_CHECKF(restoredEnd == endStep, "end event at step %d after the restore, %d in the saving world",
+				restoredEnd, endStep);
+	cd2DestroyWorld(restored);
+	free(buffer);
 }
 
 static void TestContactAndHitEvents(void)
@@ -1514,6 +1571,7 @@ int main(void)
 	TEST_RUN(TestJointSetters);
 	TEST_RUN(TestFilterJointAndFilters);
 	TEST_RUN(TestSensorEvents);
+	TEST_RUN(TestSensorEventsAfterRestore);
 	TEST_RUN(TestContactAndHitEvents);
 	TEST_RUN(TestPreSolveAndCustomFilter);
 	TEST_RUN(TestLockedWorld);

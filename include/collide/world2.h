@@ -93,7 +93,9 @@ static inline bool cd2ShapeIdEqual(cd2ShapeId a, cd2ShapeId b)
  * workerCount - 1 items: each item works through the solver's stages together with the stepping
  * thread, and may wait (spinning, then yielding) for work another running item has taken, never for
  * an item that has not started; run the items at the same time to gain speed (any order and any
- * delay are correct). Give enqueueTask and finishTask to let
+ * delay are correct). A part of the step with little work (a small world's solver, a few hundred
+ * contacts to update) is not handed out: it runs on the calling thread, where it costs less than
+ * the handing out would. Give enqueueTask and finishTask to let
  * your own job system run them, or neither for the built-in pool (workerCount - 1 threads, started
  * by cd2CreateWorld and joined by cd2DestroyWorld; none in WebAssembly builds).
  * enqueueTask must make task(start, end, workerIndex, taskContext) run over ranges that cover

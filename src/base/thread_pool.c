@@ -1,7 +1,12 @@
 /* collide: the built-in task pool (see thread_pool.h). A task is cut into blocks of at least
  * minRange items; the workers and the finishing thread take blocks with an atomic counter. Which
  * thread runs which block varies; the callers' tasks are written so that the results do not
- * depend on it. */
+ * depend on it. Workers look for the next task for a short while before they sleep, and the
+ * finishing thread waits for them by spinning: within a step no thread sleeps. */
+#if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 199309L
+#undef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 199309L /* clock_gettime */
+#endif
 #include "thread_pool.h"
 
 #include "collide/collide.h"
@@ -50,6 +55,7 @@ void cdThreadPool_Wait(int spin)
 #include <pthread.h>
 #include <sched.h>
 #include <stdatomic.h>
+#include <time.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -57,6 +63,10 @@ void cdThreadPool_Wait(int spin)
 #include <string.h>
 
 #define CD_POOL_MAX_THREADS 64
+/* How long a worker keeps looking for the next task before it sleeps, in nanoseconds. The tasks of
+ * one step follow each other within microseconds, while waking a sleeping thread takes tens of
+ * microseconds (more in a virtual machine); between steps the workers sleep. */
+#define CD_POOL_SPIN_NS 200000
 
 typedef struct cdPoolWorker
 {
@@ -67,27 +77,43 @@ typedef struct cdPoolWorker
 struct cdThreadPool
 {
 	pthread_mutex_t mutex;
-	pthread_cond_t wake; /* a new task or the end */
-	pthread_cond_t done; /* a worker left the task */
+	pthread_cond_t wake; /* a new task or the end, for the sleeping workers */
 	pthread_t threads[CD_POOL_MAX_THREADS];
 	cdPoolWorker workers[CD_POOL_MAX_THREADS];
 	int threadCount;
-	bool quit;
-	/* the task in progress (written under the mutex before generation changes) */
-	uint64_t generation;
+	int sleepers; /* workers waiting on wake, under the mutex */
+	atomic_bool quit;
+	/* The task in progress: its fields are written under the mutex while no thread works on a
+	 * task, then generation changes. A worker joins a task under the mutex (active + 1), so the
+	 * fields it reads stay as they are until it leaves (active - 1). */
+	atomic_uint_fast64_t generation;
 	cdTaskCallback* task;
 	void* taskContext;
 	int itemCount, blockSize, blockCount;
-	int active; /* threads working on the task, under the mutex */
+	atomic_int active; /* workers (not the finishing thread) working on the task */
 	atomic_int nextBlock;
 };
+
+static void cdPoolPause(void)
+{
+#if defined(__SSE2__)
+	_mm_pause();
+#endif
+}
+
+static uint64_t cdPoolNow(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (uint64_t)t.tv_sec * 1000000000u + (uint64_t)t.tv_nsec;
+}
 
 /* Runs blocks of the current task until none is left. */
 static void cdPoolWork(cdThreadPool* pool, uint32_t workerIndex)
 {
 	for (;;)
 	{
-		int block = atomic_fetch_add(&pool->nextBlock, 1);
+		int block = atomic_fetch_add_explicit(&pool->nextBlock, 1, memory_order_relaxed);
 		if (block >= pool->blockCount)
 		{
 			return;
@@ -98,33 +124,72 @@ static void cdPoolWork(cdThreadPool* pool, uint32_t workerIndex)
 	}
 }
 
+/* Waits until the generation differs from seen or the pool quits: spinning first, then asleep. */
+static void cdPoolAwait(cdThreadPool* pool, uint64_t seen)
+{
+	uint64_t start = 0;
+	for (int spin = 0;; ++spin)
+	{
+		if (atomic_load_explicit(&pool->generation, memory_order_acquire) != seen ||
+			atomic_load_explicit(&pool->quit, memory_order_acquire))
+		{
+			return;
+		}
+		cdPoolPause();
+		if ((spin & 63) != 63)
+		{
+			continue;
+		}
+		uint64_t now = cdPoolNow();
+		if (start == 0)
+		{
+			start = now;
+		}
+		else if (now - start > CD_POOL_SPIN_NS)
+		{
+			break;
+		}
+		/* Now and then let another thread of this core run (a machine with more threads than
+		 * cores, the stepping thread among them). */
+		sched_yield();
+	}
+	pthread_mutex_lock(&pool->mutex);
+	pool->sleepers++;
+	while (atomic_load(&pool->generation) == seen && !atomic_load(&pool->quit))
+	{
+		pthread_cond_wait(&pool->wake, &pool->mutex);
+	}
+	pool->sleepers--;
+	pthread_mutex_unlock(&pool->mutex);
+}
+
 static void* cdPoolThread(void* arg)
 {
 	cdPoolWorker* worker = (cdPoolWorker*)arg;
 	cdThreadPool* pool = worker->pool;
 	uint64_t seen = 0;
-	pthread_mutex_lock(&pool->mutex);
 	for (;;)
 	{
-		while (!pool->quit && pool->generation == seen)
+		cdPoolAwait(pool, seen);
+		pthread_mutex_lock(&pool->mutex);
+		if (atomic_load(&pool->quit))
 		{
-			pthread_cond_wait(&pool->wake, &pool->mutex);
-		}
-		if (pool->quit)
-		{
+			pthread_mutex_unlock(&pool->mutex);
 			break;
 		}
-		seen = pool->generation;
-		pool->active++;
+		uint64_t generation = atomic_load(&pool->generation);
+		if (generation == seen)
+		{
+			pthread_mutex_unlock(&pool->mutex);
+			continue;
+		}
+		seen = generation;
+		atomic_fetch_add(&pool->active, 1);
 		pthread_mutex_unlock(&pool->mutex);
 		cdPoolWork(pool, worker->index);
-		pthread_mutex_lock(&pool->mutex);
-		if (--pool->active == 0)
-		{
-			pthread_cond_broadcast(&pool->done);
-		}
+		/* Release: the finishing thread reads what the blocks wrote once it sees active at 0. */
+		atomic_fetch_sub_explicit(&pool->active, 1, memory_order_release);
 	}
-	pthread_mutex_unlock(&pool->mutex);
 	return NULL;
 }
 
@@ -145,14 +210,15 @@ cdThreadPool* cdThreadPool_Create(int workerCount)
 		cdFree(pool);
 		return NULL;
 	}
-	if (pthread_cond_init(&pool->wake, NULL) != 0 || pthread_cond_init(&pool->done, NULL) != 0)
+	if (pthread_cond_init(&pool->wake, NULL) != 0)
 	{
-		/* Destroying a condition that failed to initialise is undefined: keep it simple and leak
-		 * nothing else. */
 		pthread_mutex_destroy(&pool->mutex);
 		cdFree(pool);
 		return NULL;
 	}
+	atomic_init(&pool->quit, false);
+	atomic_init(&pool->generation, 0);
+	atomic_init(&pool->active, 0);
 	atomic_init(&pool->nextBlock, 0);
 	int threads = workerCount - 1 < CD_POOL_MAX_THREADS ? workerCount - 1 : CD_POOL_MAX_THREADS;
 	for (int i = 0; i < threads; ++i)
@@ -180,7 +246,7 @@ void cdThreadPool_Destroy(cdThreadPool* pool)
 		return;
 	}
 	pthread_mutex_lock(&pool->mutex);
-	pool->quit = true;
+	atomic_store(&pool->quit, true);
 	pthread_cond_broadcast(&pool->wake);
 	pthread_mutex_unlock(&pool->mutex);
 	for (int i = 0; i < pool->threadCount; ++i)
@@ -188,29 +254,42 @@ void cdThreadPool_Destroy(cdThreadPool* pool)
 		pthread_join(pool->threads[i], NULL);
 	}
 	pthread_cond_destroy(&pool->wake);
-	pthread_cond_destroy(&pool->done);
 	pthread_mutex_destroy(&pool->mutex);
 	cdFree(pool);
 }
 
-/* Publishes the task (blocks of blockSize items) and wakes the threads. */
+/* Until no worker works on a task (acquire: what they wrote is seen after). */
+static void cdPoolAwaitIdle(cdThreadPool* pool)
+{
+	for (int spin = 0; atomic_load_explicit(&pool->active, memory_order_acquire) > 0; ++spin)
+	{
+		cdThreadPool_Wait(spin);
+	}
+}
+
+/* Publishes the task (blocks of blockSize items) and wakes the sleeping threads. */
 static void* cdPoolStart(cdThreadPool* pool, cdTaskCallback* task, int itemCount, int blockSize,
 						 void* taskContext)
 {
 	pthread_mutex_lock(&pool->mutex);
-	/* A thread that woke late for the last task may still be looking at it. */
-	while (pool->active > 0)
+	/* A thread that joined the last task late may still be looking at it (it finds no block). */
+	while (atomic_load(&pool->active) > 0)
 	{
-		pthread_cond_wait(&pool->done, &pool->mutex);
+		pthread_mutex_unlock(&pool->mutex);
+		cdPoolAwaitIdle(pool);
+		pthread_mutex_lock(&pool->mutex);
 	}
 	pool->task = task;
 	pool->taskContext = taskContext;
 	pool->itemCount = itemCount;
 	pool->blockSize = blockSize;
 	pool->blockCount = (itemCount + blockSize - 1) / blockSize;
-	atomic_store(&pool->nextBlock, 0);
-	pool->generation++;
-	pthread_cond_broadcast(&pool->wake);
+	atomic_store_explicit(&pool->nextBlock, 0, memory_order_relaxed);
+	atomic_fetch_add_explicit(&pool->generation, 1, memory_order_release);
+	if (pool->sleepers > 0)
+	{
+		pthread_cond_broadcast(&pool->wake);
+	}
 	pthread_mutex_unlock(&pool->mutex);
 	return pool;
 }
@@ -250,14 +329,12 @@ void* cdThreadPool_EnqueueEach(cdTaskCallback* task, int itemCount, void* taskCo
 
 void cdThreadPool_Wait(int spin)
 {
-	if (spin < 64)
+	if (spin < 256)
 	{
-#if defined(__SSE2__)
-		for (int i = 0; i < 8; ++i)
+		for (int i = 0; i < 4; ++i)
 		{
-			_mm_pause();
+			cdPoolPause();
 		}
-#endif
 		return;
 	}
 	sched_yield();
@@ -272,14 +349,9 @@ void cdThreadPool_Finish(void* userTask, void* userContext)
 		return;
 	}
 	/* Once this thread finds no block left, every block has been taken: by it (done) or by a
-	 * thread counted in active until it has finished its blocks. */
+	 * worker counted in active until it has finished its blocks. */
 	cdPoolWork(pool, 0);
-	pthread_mutex_lock(&pool->mutex);
-	while (pool->active > 0)
-	{
-		pthread_cond_wait(&pool->done, &pool->mutex);
-	}
-	pthread_mutex_unlock(&pool->mutex);
+	cdPoolAwaitIdle(pool);
 }
 
 #endif

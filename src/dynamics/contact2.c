@@ -350,9 +350,12 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 	int jobCount = cd2BroadPhase_BeginRebuild(world->broadPhase);
 	if (jobCount > 0)
 	{
-		cd2RunTask(world, cd2RebuildTreeTask, jobCount, 1, world->broadPhase);
+		/* (The jobs' sizes are unknown here: a small world rebuilds on this thread.) */
+		int minParallel = world->shapes.count >= CD2_PARALLEL_MIN_SHAPES ? 2 : jobCount + 1;
+		cd2RunTask(world, cd2RebuildTreeTask, jobCount, 1, minParallel, world->broadPhase);
 	}
 	cd2BroadPhase_EndRebuild(world->broadPhase);
+	CD2_TIMER_MARK(3, "tree rebuild");
 	int itemCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
 	if (itemCount == 0)
 	{
@@ -384,7 +387,8 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		cd2BroadPhase_EndMovedPairs(world->broadPhase, false);
 		return;
 	}
-	cd2RunTask(world, cd2FindPairsTask, itemCount, 64, &search);
+	cd2RunTask(world, cd2FindPairsTask, itemCount, 64, CD2_PARALLEL_MIN_PAIR_ITEMS, &search);
+	CD2_TIMER_MARK(4, "pair search");
 	/* The ranges that overflowed, again on this thread, with room doubled until they fit. */
 	bool anyFailed = memchr(search.failed, 1, (size_t)itemCount) != NULL;
 	cd2PairBuffer retry = {NULL, 0, 0, {0}};
@@ -504,9 +508,9 @@ void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies)
 		}
 	}
 	cdPairSet_Remove(&world->pairs, cdPairKey(contact->shapeA, contact->shapeB));
+	world->sensorContactCount -= (contact->flags & CD2_CONTACT_SENSOR) != 0 ? 1 : 0;
 	cd2UnlinkContactEdge(world, contactIndex, 0, contact->bodyA);
 	cd2UnlinkContactEdge(world, contactIndex, 1, contact->bodyB);
-	world->sensorContactCount -= (contact->flags & CD2_CONTACT_SENSOR) != 0 ? 1 : 0;
 	contact->inUse = false;
 	cdIdPool_Free(&world->contactPool, contactIndex);
 }
@@ -538,6 +542,7 @@ static bool cd2SensorOverlaps(cd2World* world, const cd2Contact* contact)
 
 void cd2UpdateSensors(cd2World* world)
 {
+	/* Most worlds have no sensor: do not read every contact for none. */
 	if (world->sensorContactCount == 0)
 	{
 		return;
@@ -686,67 +691,213 @@ typedef struct cd2ContactUpdateContext
 	cd2World* world;
 	cdReal timeStep;
 	cdReal recycleDistance; /* in length units, 0: off */
+	/* Per contact: 1 when the merge on the calling thread has something to do for it (it ended,
+	 * began or stopped touching, or the pre-solve callback wants it), else 0. Written by the
+	 * contact's own task, so the merge reads a byte per contact instead of every record. */
+	uint8_t* changed;
+	cd2ContactSolveEntry* entries; /* per contact, for the solver (NULL: none) */
 } cd2ContactUpdateContext;
 
-/* The parallel pass: each contact writes only itself (its manifold and the SIM flags), reading the
- * bodies and shapes as they were at the start of the step, so any split gives the same bits. */
+void cd2SetContactSolveEntry(cd2ContactSolveEntry* entry, const cd2Contact* contact)
+{
+	bool solved = contact->inUse && contact->pointCount > 0 &&
+				  (contact->flags & (CD2_CONTACT_SENSOR | CD2_CONTACT_DISABLED | CD2_CONTACT_TOUCHING)) ==
+					  CD2_CONTACT_TOUCHING;
+	entry->bodyA = solved ? contact->bodyA : CD2_NULL_INDEX;
+	entry->bodyB = solved ? contact->bodyB : CD2_NULL_INDEX;
+	entry->flags = contact->inUse ? contact->flags : 0u;
+}
+
+/* One contact of the parallel pass: it writes only itself (its manifold, the SIM flags and its byte
+ * of changed), reading the bodies and shapes as they were at the start of the step, so any split
+ * gives the same bits. */
+static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
+{
+	cd2World* world = ctx->world;
+	uint8_t* changed = ctx->changed;
+	cd2Contact* contact = world->contacts.data + i;
+	if (!contact->inUse)
+	{
+		return;
+	}
+	const cd2Body* bodyA = world->bodies.data + contact->bodyA;
+	const cd2Body* bodyB = world->bodies.data + contact->bodyB;
+	if (!bodyA->awake && !bodyB->awake)
+	{
+		return; /* sleeping (or static against sleeping): keep as is */
+	}
+	const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+	const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
+	if (!cd2OverlapAabbAabb(shapeA->fatAabb, shapeB->fatAabb))
+	{
+		contact->flags |= CD2_CONTACT_SIM_DISJOINT;
+		if (changed != NULL)
+		{
+			changed[i] = 1;
+		}
+		return;
+	}
+	contact->flags &= ~(uint32_t)(CD2_CONTACT_DISABLED | CD2_CONTACT_HIT_EVENTS);
+	/* The shapes' current hit-event flags, for the solver's hit report this step. */
+	if (shapeA->enableHitEvents || shapeB->enableHitEvents)
+	{
+		contact->flags |= CD2_CONTACT_HIT_EVENTS;
+	}
+	if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
+	{
+		return; /* sensors are updated after the solve (cd2UpdateSensors) */
+	}
+	cd2Transform xfAB = cd2InvMulTransforms(bodyA->transform, bodyB->transform);
+	/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
+	 * fast body is caught at the surface rather than found inside it a step later. */
+	cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
+					 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
+					 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
+	cdReal speculative = CD_SPECULATIVE_DISTANCE + ctx->timeStep * closing;
+	bool recycled = false;
+	if (ctx->recycleDistance > CD_R(0.0) && (contact->flags & CD2_CONTACT_CACHE_VALID) != 0 &&
+		!bodyA->isFast && !bodyB->isFast && !bodyA->isBullet && !bodyB->isBullet)
+	{
+		cdReal tolerance = ctx->recycleDistance;
+		if (contact->pointCount == 0)
+		{
+			tolerance = cdMin(tolerance, contact->cachedSpeculative - ctx->timeStep * closing);
+		}
+		recycled = cd2RecycleManifold(contact, bodyA, bodyB, xfAB, tolerance);
+	}
+	if (!recycled)
+	{
+		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative);
+	}
+	/* The merge's work: a change of touching, or a pre-solve call. */
+	bool touching = contact->pointCount > 0;
+	bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+	if (touching != wasTouching || (touching && world->preSolveFcn != NULL &&
+									(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents)))
+	{
+		contact->flags |= CD2_CONTACT_SIM_UPDATED;
+		if (changed != NULL)
+		{
+			changed[i] = 1;
+		}
+	}
+}
+
 static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
 	const cd2ContactUpdateContext* ctx = (const cd2ContactUpdateContext*)taskContext;
-	cd2World* world = ctx->world;
+	if (ctx->changed != NULL)
+	{
+		memset(ctx->changed + startIndex, 0, (size_t)(endIndex - startIndex));
+	}
 	for (int i = startIndex; i < endIndex; ++i)
 	{
-		cd2Contact* contact = world->contacts.data + i;
-		if (!contact->inUse)
+		cd2UpdateContact(ctx, i);
+		/* What the solver sees, unless the merge changes the contact (it rewrites its entry then). */
+		if (ctx->entries != NULL)
 		{
-			continue;
+			cd2SetContactSolveEntry(ctx->entries + i, ctx->world->contacts.data + i);
 		}
-		const cd2Body* bodyA = world->bodies.data + contact->bodyA;
-		const cd2Body* bodyB = world->bodies.data + contact->bodyB;
-		if (!bodyA->awake && !bodyB->awake)
+	}
+}
+
+/* The index of the first nonzero byte of changed at or after i (count when none; every index when
+ * there is no changed array). */
+static int cd2NextChanged(const uint8_t* changed, int i, int count)
+{
+	if (changed == NULL)
+	{
+		return i;
+	}
+	while (i < count && (i & 7) != 0)
+	{
+		if (changed[i] != 0)
 		{
-			continue; /* sleeping (or static against sleeping): keep as is */
+			return i;
 		}
-		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
-		const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
-		if (!cd2OverlapAabbAabb(shapeA->fatAabb, shapeB->fatAabb))
+		++i;
+	}
+	while (i + 8 <= count)
+	{
+		uint64_t word;
+		memcpy(&word, changed + i, sizeof(word));
+		if (word != 0)
 		{
-			contact->flags |= CD2_CONTACT_SIM_DISJOINT;
-			continue;
+			break;
 		}
-		contact->flags &= ~(uint32_t)(CD2_CONTACT_DISABLED | CD2_CONTACT_HIT_EVENTS);
-		/* The shapes' current hit-event flags, for the solver's hit report this step. */
-		if (shapeA->enableHitEvents || shapeB->enableHitEvents)
+		i += 8;
+	}
+	while (i < count && changed[i] == 0)
+	{
+		++i;
+	}
+	return i;
+}
+
+/* The serial part of one contact's update: destruction, the pre-solve callback, events, waking. */
+static void cd2MergeContact(cd2World* world, int i)
+{
+	cd2Contact* contact = world->contacts.data + i;
+	if (!contact->inUse || (contact->flags & (CD2_CONTACT_SIM_DISJOINT | CD2_CONTACT_SIM_UPDATED)) == 0)
+	{
+		return;
+	}
+	if ((contact->flags & CD2_CONTACT_SIM_DISJOINT) != 0)
+	{
+		contact->flags &= ~(uint32_t)CD2_CONTACT_SIM_DISJOINT;
+		cd2DestroyContact(world, i, false);
+		return;
+	}
+	contact->flags &= ~(uint32_t)CD2_CONTACT_SIM_UPDATED;
+	const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
+	const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
+	bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
+	bool touching = contact->pointCount > 0;
+	if (touching && world->preSolveFcn != NULL &&
+		(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents))
+	{
+		cd2Manifold wm = cd2WorldManifold(contact);
+		if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA),
+								cd2MakeShapeId(world, contact->shapeB), &wm, world->preSolveContext))
 		{
-			contact->flags |= CD2_CONTACT_HIT_EVENTS;
+			contact->flags |= CD2_CONTACT_DISABLED;
 		}
-		if ((contact->flags & CD2_CONTACT_SENSOR) != 0)
+	}
+	if (touching && !wasTouching && (shapeA->enableContactEvents || shapeB->enableContactEvents))
+	{
+		cd2ContactBeginTouchEvent e;
+		e.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
+		e.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
+		e.manifold = cd2WorldManifold(contact);
+		if (!cdArrayPush(world->beginEvents, e))
 		{
-			continue; /* sensors are updated after the solve (cd2UpdateSensors) */
+			world->outOfMemory = true;
 		}
-		cd2Transform xfAB = cd2InvMulTransforms(bodyA->transform, bodyB->transform);
-		/* Speculative margin: the fixed one plus how far the bodies can close in this step, so a
-		 * fast body is caught at the surface rather than found inside it a step later. */
-		cdReal closing = cd2Length(cd2Sub(bodyB->linearVelocity, bodyA->linearVelocity)) +
-						 cdAbs(bodyA->angularVelocity) * bodyA->maxExtent +
-						 cdAbs(bodyB->angularVelocity) * bodyB->maxExtent;
-		cdReal speculative = CD_SPECULATIVE_DISTANCE + ctx->timeStep * closing;
-		contact->flags |= CD2_CONTACT_SIM_UPDATED;
-		if (ctx->recycleDistance > CD_R(0.0) && (contact->flags & CD2_CONTACT_CACHE_VALID) != 0 &&
-			!bodyA->isFast && !bodyB->isFast && !bodyA->isBullet && !bodyB->isBullet)
+	}
+	if (touching)
+	{
+		contact->flags |= CD2_CONTACT_TOUCHING;
+	}
+	else
+	{
+		contact->flags &= ~(uint32_t)CD2_CONTACT_TOUCHING;
+	}
+	if (wasTouching && !touching)
+	{
+		cd2EmitEndEvent(world, contact);
+	}
+	if (touching && !wasTouching)
+	{
+		/* A new touch joins islands: wake the sleeping side. */
+		if (!world->bodies.data[contact->bodyA].awake)
 		{
-			cdReal tolerance = ctx->recycleDistance;
-			if (contact->pointCount == 0)
-			{
-				tolerance = cdMin(tolerance, contact->cachedSpeculative - ctx->timeStep * closing);
-			}
-			if (cd2RecycleManifold(contact, bodyA, bodyB, xfAB, tolerance))
-			{
-				continue;
-			}
+			cd2WakeBody(world, contact->bodyA);
 		}
-		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative);
+		if (!world->bodies.data[contact->bodyB].awake)
+		{
+			cd2WakeBody(world, contact->bodyB);
+		}
 	}
 }
 
@@ -758,70 +909,29 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 	ctx.world = world;
 	ctx.timeStep = timeStep;
 	ctx.recycleDistance = world->contactRecycleDistance * cdGetLengthUnitsPerMeter();
-	cd2RunTask(world, cd2UpdateContactsTask, world->contacts.count, 64, &ctx);
-
-	for (int i = 0; i < world->contacts.count; ++i)
+	world->stepSolveEntries = NULL;
+	int count = world->contacts.count;
+	if (count == 0)
 	{
-		cd2Contact* contact = world->contacts.data + i;
-		if (!contact->inUse || (contact->flags & (CD2_CONTACT_SIM_DISJOINT | CD2_CONTACT_SIM_UPDATED)) == 0)
+		return;
+	}
+	/* Out of scratch memory (NULL): the merge reads every contact. */
+	ctx.changed = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)count);
+	ctx.entries = (cd2ContactSolveEntry*)cdArena_AllocUncleared(&world->arena,
+																(size_t)count * sizeof(cd2ContactSolveEntry));
+	cd2RunTask(world, cd2UpdateContactsTask, count, 64, CD2_PARALLEL_MIN_CONTACTS, &ctx);
+	CD2_TIMER_MARK(1, "narrow");
+
+	/* (Contacts destroyed below only free their slot: count and the indices stay valid.) */
+	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count;
+		 i = cd2NextChanged(ctx.changed, i + 1, count))
+	{
+		cd2MergeContact(world, i);
+		if (ctx.entries != NULL)
 		{
-			continue;
-		}
-		if ((contact->flags & CD2_CONTACT_SIM_DISJOINT) != 0)
-		{
-			contact->flags &= ~(uint32_t)CD2_CONTACT_SIM_DISJOINT;
-			cd2DestroyContact(world, i, false);
-			continue;
-		}
-		contact->flags &= ~(uint32_t)CD2_CONTACT_SIM_UPDATED;
-		const cd2WorldShape* shapeA = world->shapes.data + contact->shapeA;
-		const cd2WorldShape* shapeB = world->shapes.data + contact->shapeB;
-		bool wasTouching = (contact->flags & CD2_CONTACT_TOUCHING) != 0;
-		bool touching = contact->pointCount > 0;
-		if (touching && world->preSolveFcn != NULL &&
-			(shapeA->enablePreSolveEvents || shapeB->enablePreSolveEvents))
-		{
-			cd2Manifold wm = cd2WorldManifold(contact);
-			if (!world->preSolveFcn(cd2MakeShapeId(world, contact->shapeA),
-									cd2MakeShapeId(world, contact->shapeB), &wm, world->preSolveContext))
-			{
-				contact->flags |= CD2_CONTACT_DISABLED;
-			}
-		}
-		if (touching && !wasTouching && (shapeA->enableContactEvents || shapeB->enableContactEvents))
-		{
-			cd2ContactBeginTouchEvent e;
-			e.shapeIdA = cd2MakeShapeId(world, contact->shapeA);
-			e.shapeIdB = cd2MakeShapeId(world, contact->shapeB);
-			e.manifold = cd2WorldManifold(contact);
-			if (!cdArrayPush(world->beginEvents, e))
-			{
-				world->outOfMemory = true;
-			}
-		}
-		if (touching)
-		{
-			contact->flags |= CD2_CONTACT_TOUCHING;
-		}
-		else
-		{
-			contact->flags &= ~(uint32_t)CD2_CONTACT_TOUCHING;
-		}
-		if (wasTouching && !touching)
-		{
-			cd2EmitEndEvent(world, contact);
-		}
-		if (touching && !wasTouching)
-		{
-			/* A new touch joins islands: wake the sleeping side. */
-			if (!world->bodies.data[contact->bodyA].awake)
-			{
-				cd2WakeBody(world, contact->bodyA);
-			}
-			if (!world->bodies.data[contact->bodyB].awake)
-			{
-				cd2WakeBody(world, contact->bodyB);
-			}
+			cd2SetContactSolveEntry(ctx.entries + i, world->contacts.data + i);
 		}
 	}
+	world->stepSolveEntries = ctx.entries;
+	CD2_TIMER_MARK(2, "contact merge");
 }

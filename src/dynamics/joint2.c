@@ -909,16 +909,17 @@ static cdReal cd2UnwindAngle(cdReal angle)
 
 bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 {
-	cd2SolverBody scratchA, scratchB;
 	if (context->jointCount == 0)
 	{
 		return true;
 	}
 	context->jointRefs = (cd2JointRef*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount *
 																				 sizeof(cd2JointRef));
+	context->jointIndexOrder =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount * sizeof(int));
 	/* The slot of each joint, so that the joints are read in index order (in memory order). */
 	int* slotOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
-	if (context->jointRefs == NULL || slotOf == NULL)
+	if (context->jointRefs == NULL || context->jointIndexOrder == NULL || slotOf == NULL)
 	{
 		return false;
 	}
@@ -930,13 +931,24 @@ bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 	{
 		slotOf[context->joints[i]] = i;
 	}
+	int k = 0;
 	for (int index = 0; index < world->joints.count; ++index)
 	{
-		int i = slotOf[index];
-		if (i < 0)
+		if (slotOf[index] >= 0)
 		{
-			continue;
+			context->jointIndexOrder[k++] = slotOf[index];
 		}
+	}
+	return true;
+}
+
+void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, int end)
+{
+	cd2SolverBody scratchA, scratchB;
+	for (int k = start; k < end; ++k)
+	{
+		int i = context->jointIndexOrder[k];
+		int index = context->joints[i];
 		cd2Joint* joint = world->joints.data + index;
 		const cd2Body* a = world->bodies.data + joint->bodyA;
 		const cd2Body* b = world->bodies.data + joint->bodyB;
@@ -994,7 +1006,6 @@ bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 				break;
 		}
 	}
-	return true;
 }
 
 /* The factor (at most 1) that keeps the velocity change of one body, by `linear` times invMass and
@@ -1127,10 +1138,10 @@ void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end
 	}
 }
 
-void cd2StoreJointReactions(cd2World* world, cd2StepContext* context)
+void cd2StoreJointReactions(cd2World* world, cd2StepContext* context, int start, int end)
 {
 	cdReal inv_h = context->inv_h;
-	for (int i = 0; i < context->jointCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		cd2Joint* joint = world->joints.data + context->joints[i];
 		const cd2JointData* d = &joint->data;

@@ -4,7 +4,7 @@
 
 void cd2PrepareMotorJoint(cd2JointSolverArgs* args)
 {
-	/* (cd2PrepareJoints placed the anchors at the offset on A and at B's origin.) */
+	/* (cd2PrepareJointRange placed the anchors at the offset on A and at B's origin.) */
 	cd2JointData* d = args->data;
 	cdReal k = args->a->invInertia + args->b->invInertia;
 	d->axialMass = k > CD_R(0.0) ? CD_R(1.0) / k : CD_R(0.0);

@@ -5,7 +5,7 @@
 void cd2PrepareMouseJoint(cd2JointSolverArgs* args)
 {
 	cd2JointData* d = args->data;
-	/* (cd2PrepareJoints set deltaCenter to centre of B - target.) */
+	/* (cd2PrepareJointRange set deltaCenter to centre of B - target.) */
 	d->springSoftness = cd2MakeSoft(d->hertz, d->dampingRatio, args->context->h);
 }
 
@@ -25,7 +25,7 @@ void cd2SolveMouseJoint(cd2JointSolverArgs* args, bool useBias)
 	cdReal h = args->context->h;
 	cd2Vec rB = cd2RotateVector(b->deltaRotation, d->anchorB);
 	cd2Vec Cdot = cd2Add(b->linearVelocity, cd2CrossSV(b->angularVelocity, rB));
-	/* deltaCenter holds centreB - target at the step's start (see cd2PrepareJoints). */
+	/* deltaCenter holds centreB - target at the step's start (see cd2PrepareJointRange). */
 	cd2Vec separation = cd2Add(cd2Add(d->deltaCenter, b->deltaPosition), rB);
 	cd2Vec bias = cd2Scale(d->springSoftness.biasRate, separation);
 	cdReal massScale = d->springSoftness.massScale, impulseScale = d->springSoftness.impulseScale;

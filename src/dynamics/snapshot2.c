@@ -369,10 +369,10 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->contacts.count = s.contacts.count;
 	world->contacts.capacity = s.contacts.capacity;
 	world->sensorContactCount = 0;
-	for (int i = 0; i < s.contacts.count; ++i)
+	for (int i = 0; i < world->contacts.count; ++i)
 	{
-		const cd2Contact* c = s.contacts.data + i;
-		world->sensorContactCount += (c->inUse && (c->flags & CD2_CONTACT_SENSOR) != 0) ? 1 : 0;
+		const cd2Contact* contact = world->contacts.data + i;
+		world->sensorContactCount += contact->inUse && (contact->flags & CD2_CONTACT_SENSOR) != 0 ? 1 : 0;
 	}
 	world->joints.data = s.joints.data;
 	world->joints.count = s.joints.count;

@@ -4,13 +4,15 @@
  * hit and move events, sleep). The contacts are sorted by graph colour; the coloured ones are solved
  * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one.
  *
- * Scheduling: everything from preparing the contacts to finalizing the bodies is a fixed list of
- * stages, each an index range (bodies, constraints, wide blocks of one colour, or a single item for
- * the serial parts) cut into blocks. Every thread of the step (the stepping thread and one task per
- * further worker, enqueued once per step) walks the same list: it takes blocks of the current stage
- * with an atomic counter until none is left, then waits until every block of the stage is finished
- * before going on to the next. A thread only ever waits for blocks that a running thread has taken,
- * never for another thread to arrive, so the step finishes whatever the task system does with the
+ * Scheduling: everything from filling the solver bodies and preparing the joints and contacts to
+ * finalizing the bodies is a fixed list of stages, each an index range (bodies, joints, constraints,
+ * wide blocks of one colour, or a single item for the serial parts) cut into blocks. Every thread of
+ * the step (the stepping thread and one task per further worker, enqueued once per step) walks the
+ * same list: it takes blocks of the current stage with an atomic counter until none is left, adds
+ * the number it finished to the stage's count, then waits until every block of the stage is
+ * finished before going on to the next. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
+ * stepping thread alone. A thread only ever waits for blocks that a running thread has taken, never
+ * for another thread to arrive, so the step finishes whatever the task system does with the
  * tasks (run them late, inline or one after another). Each block writes only its own items (a
  * colour's blocks share no movable body), so the results are the same bits for any worker count.
  *
@@ -114,6 +116,37 @@ static void cd2IntegratePositions(cd2StepContext* context, int start, int end)
 	}
 }
 
+/* The solver bodies [start, end) from their world bodies. */
+static void cd2SetupBodies(cd2World* world, cd2StepContext* context, int start, int end)
+{
+	cdReal h = context->h;
+	for (int k = start; k < end; ++k)
+	{
+		cd2Body* body = world->bodies.data + context->bodyIndices[k];
+		context->accelerations[k] =
+			body->invMass > CD_R(0.0)
+				? cd2MulAdd(cd2Scale(body->invMass, body->force), body->gravityScale, world->gravity)
+				: CD2_VEC_ZERO;
+		body->center0 = body->center;
+		body->rotation0 = body->transform.q;
+		body->isFast = false;
+		cd2SolverBody* s = context->bodies + k;
+		s->linearVelocity = body->linearVelocity;
+		s->angularVelocity = body->angularVelocity;
+		s->deltaPosition = CD2_VEC_ZERO;
+		s->deltaRotation = CD2_ROT_IDENTITY;
+		s->invMass = body->invMass;
+		s->invInertia = body->invInertia;
+		cd2SolverBodyParams* p = context->params + k;
+		p->dynamic = body->type == CD_DYNAMIC_BODY;
+		p->deltaV = cd2Scale(h * body->invMass,
+							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
+		p->deltaW = h * body->invInertia * body->torque;
+		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
+		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
+	}
+}
+
 static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, int start, int end)
 {
 	bool sleepAllowed = world->enableSleep;
@@ -199,6 +232,8 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 
 typedef enum cd2StageKind
 {
+	CD2_STAGE_SETUP_BODIES,			/* bodies */
+	CD2_STAGE_PREPARE_JOINTS,		/* joints, in index order */
 	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
 	CD2_STAGE_PACK_WIDE,			/* wide blocks */
 	CD2_STAGE_INTEGRATE_VELOCITIES, /* bodies */
@@ -213,14 +248,16 @@ typedef enum cd2StageKind
 	CD2_STAGE_RESTITUTION_WIDE,		/* wide blocks of one colour */
 	CD2_STAGE_RESTITUTION,			/* single */
 	CD2_STAGE_STORE_IMPULSES,		/* constraints */
-	CD2_STAGE_STORE_JOINTS,			/* single */
+	CD2_STAGE_STORE_JOINTS,			/* joints */
 	CD2_STAGE_FINALIZE_BODIES		/* bodies */
 } cd2StageKind;
 
 typedef struct cd2Stage
 {
-	cd2StageCounter claimed; /* blocks taken */
-	cd2StageCounter done;	 /* blocks finished */
+	/* A cache line per stage (the list is placed on a line boundary): the threads' writes to one
+	 * stage's counters do not evict the next stage's fields from the other threads' caches. */
+	_Alignas(64) cd2StageCounter claimed; /* blocks taken */
+	cd2StageCounter done; /* blocks finished (each thread adds its count once it has no more) */
 	cd2StageKind kind;
 	bool useBias;
 	int first; /* the first item (a colour's first wide block) */
@@ -275,7 +312,7 @@ static void cd2AddWideStages(cd2StageList* list, cd2StageKind kind, bool useBias
 	for (int c = 0; c < context->colorCount; ++c)
 	{
 		int first = context->colorBlockStart[c];
-		cd2AddStage(list, kind, context->colorBlockStart[c + 1] - first, 2, first, useBias);
+		cd2AddStage(list, kind, context->colorBlockStart[c + 1] - first, 4, first, useBias);
 	}
 }
 
@@ -307,6 +344,12 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	cd2StepContext* context = list->step;
 	switch (stage->kind)
 	{
+		case CD2_STAGE_SETUP_BODIES:
+			cd2SetupBodies(world, context, start, end);
+			break;
+		case CD2_STAGE_PREPARE_JOINTS:
+			cd2PrepareJointRange(world, context, start, end);
+			break;
 		case CD2_STAGE_PREPARE_CONTACTS:
 			if (cd2PrepareContacts(world, context, stage->first + start, stage->first + end))
 			{
@@ -356,7 +399,7 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2StoreImpulses(world, context, stage->first + start, stage->first + end);
 			break;
 		case CD2_STAGE_STORE_JOINTS:
-			cd2StoreJointReactions(world, context);
+			cd2StoreJointReactions(world, context, start, end);
 			break;
 		case CD2_STAGE_FINALIZE_BODIES:
 			cd2FinalizeBodies(world, context, start, end);
@@ -379,6 +422,7 @@ static void cd2RunStages(const cd2StageList* list)
 			continue;
 		}
 #if CD2_STAGE_ATOMICS
+		int finished = 0;
 		for (;;)
 		{
 			int block = atomic_fetch_add_explicit(&stage->claimed, 1, memory_order_relaxed);
@@ -390,7 +434,16 @@ static void cd2RunStages(const cd2StageList* list)
 			int end =
 				start + stage->blockSize < stage->itemCount ? start + stage->blockSize : stage->itemCount;
 			cd2ExecuteStage(list, stage, start, end);
-			atomic_fetch_add_explicit(&stage->done, 1, memory_order_release);
+			++finished;
+		}
+		/* One addition per thread and stage (a thread that took nothing need not write). */
+		if (finished > 0)
+		{
+			atomic_fetch_add_explicit(&stage->done, finished, memory_order_release);
+		}
+		if (finished == stage->blockCount)
+		{
+			continue; /* all of it on this thread: nothing to wait for */
 		}
 		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount;
 			 ++spin)
@@ -450,13 +503,17 @@ static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 	}
 }
 
-void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext)
+void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, int minParallel,
+				void* taskContext)
 {
 	if (itemCount <= 0)
 	{
 		return;
 	}
-	if (world->workerCount <= 1 || world->enqueueTask == NULL || itemCount <= minRange)
+	/* Too little work to be worth a second thread (handing a task out and waiting for it costs
+	 * microseconds): on this thread. */
+	if (world->workerCount <= 1 || world->enqueueTask == NULL || itemCount <= minRange ||
+		(itemCount < minParallel && !world->alwaysParallel))
 	{
 		task(0, itemCount, 0, taskContext);
 		return;
@@ -566,45 +623,26 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 		return;
 	}
-	/* One pass over the bodies (on the calling thread: the dense order is the bodies' order). */
+	/* One pass over the bodies for their dense indices (on the calling thread: the dense order is
+	 * the bodies' order); the first stage fills the solver bodies (cd2SetupBodies). */
 	for (int i = 0; i < world->bodies.count; ++i)
 	{
 		cd2Body* body = world->bodies.data + i;
-		body->solverIndex = CD2_NULL_INDEX;
 		solverOf[i] = CD2_NULL_INDEX;
 		colorBodyOf[i] = CD2_NULL_INDEX;
 		if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
 		{
+			body->solverIndex = CD2_NULL_INDEX;
 			continue;
 		}
 		int k = context.bodyCount++;
 		solverOf[i] = k;
 		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? k : CD2_NULL_INDEX;
-		context.accelerations[k] = body->invMass > CD_R(0.0) ? cd2MulAdd(cd2Scale(body->invMass, body->force),
-																		 body->gravityScale, world->gravity)
-															 : CD2_VEC_ZERO;
 		body->solverIndex = k;
-		body->center0 = body->center;
-		body->rotation0 = body->transform.q;
-		body->isFast = false;
 		context.bodyIndices[k] = i;
-		cd2SolverBody* s = context.bodies + k;
-		s->linearVelocity = body->linearVelocity;
-		s->angularVelocity = body->angularVelocity;
-		s->deltaPosition = CD2_VEC_ZERO;
-		s->deltaRotation = CD2_ROT_IDENTITY;
-		s->invMass = body->invMass;
-		s->invInertia = body->invInertia;
-		cd2SolverBodyParams* p = context.params + k;
-		cdReal h = context.h;
-		p->dynamic = body->type == CD_DYNAMIC_BODY;
-		p->deltaV = cd2Scale(h * body->invMass,
-							 cd2MulAdd(body->force, body->mass * body->gravityScale, world->gravity));
-		p->deltaW = h * body->invInertia * body->torque;
-		p->linearDamping = CD_R(1.0) / (CD_R(1.0) + h * body->linearDamping);
-		p->angularDamping = CD_R(1.0) + h * body->angularDamping;
 	}
 
+	CD2_TIMER_MARK(5, "setup bodies");
 	{
 		cd2SolverBody* zero = context.bodies + context.bodyCount;
 		memset(zero, 0, sizeof(*zero));
@@ -625,28 +663,36 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 		return;
 	}
+	/* From the entries the contact update left (a small array read in order), else from the
+	 * contacts themselves. */
+	const cd2ContactSolveEntry* entries = world->stepSolveEntries;
 	for (int i = 0; i < world->contacts.count; ++i)
 	{
-		const cd2Contact* contact = world->contacts.data + i;
-		if (!contact->inUse || contact->pointCount == 0 ||
-			(contact->flags & (CD2_CONTACT_SENSOR | CD2_CONTACT_DISABLED)) != 0 ||
-			(contact->flags & CD2_CONTACT_TOUCHING) == 0)
+		cd2ContactSolveEntry read;
+		const cd2ContactSolveEntry* entry = entries + i;
+		if (entries == NULL)
+		{
+			cd2SetContactSolveEntry(&read, world->contacts.data + i);
+			entry = &read;
+		}
+		if (entry->bodyA == CD2_NULL_INDEX)
 		{
 			continue;
 		}
-		int indexA = solverOf[contact->bodyA], indexB = solverOf[contact->bodyB];
+		int indexA = solverOf[entry->bodyA], indexB = solverOf[entry->bodyB];
 		if (indexA < 0 && indexB < 0)
 		{
 			continue;
 		}
-		hitCandidates += (contact->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
+		hitCandidates += (entry->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
 		int k = context.constraintCount++;
 		pairs[k].contact = i;
 		pairs[k].indexA = indexA;
 		pairs[k].indexB = indexB;
-		bodyA[k] = colorBodyOf[contact->bodyA];
-		bodyB[k] = colorBodyOf[contact->bodyB];
+		bodyA[k] = colorBodyOf[entry->bodyA];
+		bodyB[k] = colorBodyOf[entry->bodyB];
 	}
+	CD2_TIMER_MARK(13, "setup contact scan");
 	context.indexOrder = pairs;
 	context.pairs = pairs;
 	/* Colour order (see graph_color.h). */
@@ -669,6 +715,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			context.colorOfConstraint = bodyA;
 		}
 	}
+	CD2_TIMER_MARK(6, "setup color");
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
 	/* The solver indices of each joint's bodies (the colouring's, one read of each joint). */
 	int* jointBodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
@@ -706,6 +753,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 	cd2ColorJoints(world, &context, jointBodyA, jointBodyB);
 
+	CD2_TIMER_MARK(7, "setup joints");
 	if (!cd2PrepareContactsWide(world, &context))
 	{
 		/* Out of scratch memory: every constraint one by one. */
@@ -732,7 +780,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	memset(&list, 0, sizeof(list));
 	list.world = world;
 	list.step = &context;
-	list.workerCount = world->workerCount;
+	/* A small solve runs on this thread only: its stages take a few microseconds each, about what
+	 * handing them out and waiting at each stage's end would cost. */
+	int solveWork = context.constraintCount + 2 * context.jointCount + context.bodyCount / 4;
+	bool parallel = world->workerCount > 1 && world->enqueueTask != NULL &&
+					(solveWork >= CD2_PARALLEL_MIN_SOLVE || world->alwaysParallel);
+	list.workerCount = parallel ? world->workerCount : 1;
 	cd2StageCounter bouncing;
 #if CD2_STAGE_ATOMICS
 	atomic_init(&bouncing, 0);
@@ -746,18 +799,22 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		jointColors += context.jointColorStart[c + 1] > context.jointColorStart[c] ? 1 : 0;
 	}
 	/* Restitution adds one stage per contact colour after the sub-steps. */
-	list.stageCapacity = 8 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
-	list.stages =
-		(cd2Stage*)cdArena_AllocUncleared(&world->arena, (size_t)list.stageCapacity * sizeof(cd2Stage));
-	if (list.stages == NULL)
+	list.stageCapacity =
+		10 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
+	/* (One more, to start the stages on a cache line.) */
+	char* stageMemory =
+		(char*)cdArena_AllocUncleared(&world->arena, (size_t)(list.stageCapacity + 1) * sizeof(cd2Stage));
+	if (stageMemory == NULL)
 	{
 		world->outOfMemory = true;
 		return;
 	}
+	list.stages = (cd2Stage*)(stageMemory + (64u - (uintptr_t)stageMemory % 64u) % 64u);
 	int overflowCount = context.constraintCount > context.overflowStart ? 1 : 0;
-	int jointStage = context.jointCount > 0 ? 1 : 0;
 	/* The coloured constraints are prepared by the pack stage, block by block (in cache when packed);
 	 * this stage prepares the overflow colour's. */
+	cd2AddStage(&list, CD2_STAGE_SETUP_BODIES, context.bodyCount, 64, 0, false);
+	cd2AddStage(&list, CD2_STAGE_PREPARE_JOINTS, context.jointCount, 32, 0, false);
 	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount - context.overflowStart, 32,
 				context.overflowStart, false);
 	cd2AddStage(&list, CD2_STAGE_PACK_WIDE, context.wideCount, 8, 0, false);
@@ -782,7 +839,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	cd2AddStage(&list, CD2_STAGE_STORE_WIDE, context.wideCount, 8, 0, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_IMPULSES, context.constraintCount - context.overflowStart, 32,
 				context.overflowStart, false);
-	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, jointStage, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, context.jointCount, 64, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
 
 	context.finalFlags = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1);
@@ -802,10 +859,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 	}
 
+	CD2_TIMER_MARK(8, "setup wide+stages");
 	/* One task per further worker, enqueued once; the stepping thread walks the stages too. */
 	void* helpers = NULL;
 #if CD2_STAGE_ATOMICS
-	if (world->workerCount > 1 && world->enqueueTask != NULL)
+	if (parallel)
 	{
 		if (world->threadPool != NULL)
 		{
@@ -825,6 +883,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->finishTask(helpers, world->userTaskContext);
 	}
 
+	CD2_TIMER_MARK(9, "stages");
 	/* The rest of finalize, on this thread: what reads other bodies' final poses or writes shared
 	 * structures, for the bodies the finalize stage flagged, in body order. */
 	bool sleepAllowed = world->enableSleep;
@@ -896,12 +955,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			}
 		}
 	}
+	CD2_TIMER_MARK(10, "post finalize");
 	if (hitCandidates > 0)
 	{
 		cd2ReportHits(world, &context);
 	}
 	/* Only a body that has rested for CD2_TIME_TO_SLEEP can fall asleep (an island sleeps when its
 	 * least rested body has); without one the islands are not built. */
+	CD2_TIMER_MARK(11, "hits");
 	if (sleepAllowed && rested && cd2UpdateSleep(world) > 0)
 	{
 		for (int k = 0; k < context.bodyCount && context.moveEvents != NULL; ++k)

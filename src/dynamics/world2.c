@@ -2,6 +2,11 @@
 #include "world2_internal.h"
 #include "../broad/broad_internal.h"
 #include "../base/thread_pool.h"
+#ifdef CD2_STEP_TIMERS
+double cd2StepTimers[16];
+const char* cd2StepTimerNames[16];
+double cd2TimerLast_;
+#endif
 
 #include <stdio.h>
 
@@ -213,6 +218,15 @@ bool cd2World_IsValid(cd2WorldId worldId)
 	return cd2GetWorldQuiet(worldId) != NULL;
 }
 
+void cd2SetAlwaysParallel(cd2WorldId worldId, bool alwaysParallel)
+{
+	cd2World* world = cd2GetWorld(worldId);
+	if (world != NULL)
+	{
+		world->alwaysParallel = alwaysParallel;
+	}
+}
+
 void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 {
 	cd2World* world = cd2GetWorld(worldId);
@@ -255,14 +269,19 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 
 	/* New pairs become contacts, then every awake contact gets its manifold. */
 	world->stepTimeStep = timeStep;
+	CD2_TIMER_BEGIN;
 	cd2UpdateBroadPhasePairs(world);
+	CD2_TIMER_MARK(0, "pairs");
 	cd2UpdateContacts(world, timeStep);
 	if (timeStep > CD_R(0.0))
 	{
 		cd2Solve(world, timeStep, subStepCount);
 	}
+	CD2_TIMER_MARK(12, "sleep");
 	cd2UpdateSensors(world);
+	CD2_TIMER_MARK(15, "sensors");
 	cdArena_Reset(&world->arena);
+	world->stepSolveEntries = NULL;
 	world->stepTimeStep = CD_R(0.0);
 	world->stepEndEventCount = world->endEvents.count;
 	world->stepSensorEndEventCount = world->sensorEndEvents.count;

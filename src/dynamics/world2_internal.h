@@ -9,6 +9,35 @@
 #include "../base/graph_color.h"
 #include "wide2.h"
 
+/* Profiling, off unless the library is built with -DCD2_STEP_TIMERS: the stepping thread's wall time
+ * per part of the step, summed over the steps into cd2StepTimers[i] (seconds, named by
+ * cd2StepTimerNames[i]; a program declares both extern and reads them). The parts "narrow",
+ * "pair search", "tree rebuild" and "stages" run on the workers; the others are serial. */
+#ifdef CD2_STEP_TIMERS
+#include <time.h>
+extern double cd2StepTimers[16];
+extern const char* cd2StepTimerNames[16];
+extern double cd2TimerLast_;
+static inline double cd2TimerNow(void)
+{
+	struct timespec t;
+	timespec_get(&t, TIME_UTC);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+#define CD2_TIMER_BEGIN (cd2TimerLast_ = cd2TimerNow())
+#define CD2_TIMER_MARK(i, name)                                                                              \
+	do                                                                                                       \
+	{                                                                                                        \
+		double cd2TimerT_ = cd2TimerNow();                                                                   \
+		cd2StepTimers[i] += cd2TimerT_ - cd2TimerLast_;                                                      \
+		cd2StepTimerNames[i] = name;                                                                         \
+		cd2TimerLast_ = cd2TimerT_;                                                                          \
+	} while (0)
+#else
+#define CD2_TIMER_BEGIN ((void)0)
+#define CD2_TIMER_MARK(i, name) ((void)0)
+#endif
+
 #define CD2_NULL_INDEX (-1)
 
 /* Seconds a body must stay below its sleep threshold before its island may sleep. */
@@ -318,6 +347,8 @@ typedef struct cd2StepContext
 	/* One per joint of `joints`, set by cd2PrepareJoints: what the sub-steps read of it, so that
 	 * they never read the joint or body records. */
 	cd2JointRef* jointRefs;
+	/* The slots of `joints` in joint index order (memory order), for the prepare stage. */
+	int* jointIndexOrder;
 	bool enableWarmStarting;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
@@ -342,6 +373,15 @@ typedef CD_ARRAY(cd2SensorBeginTouchEvent) cd2SensorBeginArray;
 typedef CD_ARRAY(cd2SensorEndTouchEvent) cd2SensorEndArray;
 typedef CD_ARRAY(cd2BodyMoveEvent) cd2MoveEventArray;
 
+/* What the solver needs of a contact, written by cd2UpdateContacts for each contact index (so that
+ * the solver's setup reads a small array, not every contact record): its two bodies when it is
+ * touching, enabled and not a sensor (else bodyA is CD2_NULL_INDEX), and its flags. */
+typedef struct cd2ContactSolveEntry
+{
+	int bodyA, bodyB;
+	uint32_t flags;
+} cd2ContactSolveEntry;
+
 /* ---- the world ------------------------------------------------------------------------------- */
 typedef struct cd2World
 {
@@ -362,7 +402,8 @@ typedef struct cd2World
 	CD_ARRAY(cd2Joint) joints;
 	CD_ARRAY(cd2Island) islands;
 	cdIdPool bodyPool, shapePool, chainPool, contactPool, jointPool, islandPool;
-	cdPairSet pairs; /* shape pair -> contact index */
+	cdPairSet pairs;		/* shape pair -> contact index */
+	int sensorContactCount; /* live contacts flagged CD2_CONTACT_SENSOR (derived, not saved) */
 	cd2BroadPhase* broadPhase;
 	uint32_t generationCounter; /* never restored, so ids from a discarded future stay stale */
 	/* callbacks (not part of the state) */
@@ -381,9 +422,9 @@ typedef struct cd2World
 	/* End events recorded by the last step; those appended after it (a shape destroyed between
 	 * steps) are kept for the next step's arrays. */
 	int stepEndEventCount, stepSensorEndEventCount;
-	/* Live contacts with a sensor shape: the sensor pass skips its scan of every contact at 0. */
-	int sensorContactCount;
 	cdReal stepTimeStep; /* of the step in progress (0 outside a step) */
+	/* cd2UpdateContacts' entries for the step's solve (step scratch; NULL: read the contacts) */
+	cd2ContactSolveEntry* stepSolveEntries;
 	cdArena arena;
 	/* tasks: the user's callbacks, or the built-in pool's (see cd2RunTask) */
 	int workerCount;
@@ -391,6 +432,9 @@ typedef struct cd2World
 	cdFinishTaskCallback* finishTask;
 	void* userTaskContext;
 	struct cdThreadPool* threadPool;
+	/* Hand work to the workers however little there is (tests of the task paths; see
+	 * cd2SetAlwaysParallel). */
+	bool alwaysParallel;
 	bool outOfMemory;
 } cd2World;
 
@@ -446,6 +490,7 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove);
 /* ---- contact2.c ------------------------------------------------------------------------------ */
 void cd2UpdateBroadPhasePairs(cd2World* world);
 void cd2UpdateContacts(cd2World* world, cdReal timeStep);
+void cd2SetContactSolveEntry(cd2ContactSolveEntry* entry, const cd2Contact* contact);
 /* Sensor overlaps at the end of the step, with their begin and end events. */
 void cd2UpdateSensors(cd2World* world);
 void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies);
@@ -517,8 +562,22 @@ void cd2WarmStartContacts(cd2StepContext* context);
 void cd2SolveContacts(cd2StepContext* context, bool useBias);
 void cd2ApplyRestitution(cd2StepContext* context);
 /* Runs task over [0, itemCount) on the world's workers (in pieces of at least minRange items) and
- * returns when it is done; on the calling thread when there is one worker or few items. */
-void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, void* taskContext);
+ * returns when it is done; on the calling thread when there is one worker or fewer than
+ * minParallel items (too little work to pay for handing it out: a small world steps as fast with
+ * two workers as with one). */
+void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRange, int minParallel,
+				void* taskContext);
+/* The smallest amounts of work that go to the workers: contacts to update (a recycled manifold
+ * costs tens of nanoseconds), moved proxies' pair queries, shapes in the world for the
+ * broadphase's rebuild, and the solver's work per sub-step in constraints (a joint counts as 2, a
+ * body as 1/4; below it every stage runs on the stepping thread). */
+/* For tests of the task paths on small worlds: alwaysParallel true hands every task to the workers
+ * whatever its size (the results are the same bits either way). */
+void cd2SetAlwaysParallel(cd2WorldId worldId, bool alwaysParallel);
+#define CD2_PARALLEL_MIN_CONTACTS 1024
+#define CD2_PARALLEL_MIN_PAIR_ITEMS 128
+#define CD2_PARALLEL_MIN_SHAPES 1024
+#define CD2_PARALLEL_MIN_SOLVE 1200
 /* Lays the coloured constraints out in wide blocks (colorBlockStart, overflowStart) and allocates
  * them; cd2PackContactsWide then prepares the constraints of blocks [start, end)
  * (cd2PrepareContactConstraint's values) straight into the blocks, true when one has restitution. */
@@ -552,11 +611,15 @@ void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
 cd2Joint* cd2GetJoint(cd2World* world, cd2JointId id);
 void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies);
 /* False when out of scratch memory. */
+/* The joints' references and their order; false when out of scratch memory. The joints themselves
+ * are prepared by cd2PrepareJointRange over [0, jointCount) (in index order, any split). */
 bool cd2PrepareJoints(cd2World* world, cd2StepContext* context);
+void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, int end);
 /* Joints [start, end) of context->joints. */
 void cd2WarmStartJoints(cd2World* world, cd2StepContext* context, int start, int end);
 void cd2SolveJoints(cd2World* world, cd2StepContext* context, int start, int end, bool useBias);
-void cd2StoreJointReactions(cd2World* world, cd2StepContext* context);
+/* Joints [start, end) of context->joints: each writes only its own reaction. */
+void cd2StoreJointReactions(cd2World* world, cd2StepContext* context, int start, int end);
 
 /* The per-kind solvers (one file each). */
 typedef struct cd2JointSolverArgs
