@@ -2367,7 +2367,8 @@ static void TestPointBoxHugeTriangleRegressions(void)
 			cd3Vec centre = boxes[k]->box.center;
 			double off = m.pointCount > 0 ? (double)cd3Length(cd3Sub(m.points[0].point, centre)) : 0.0;
 			TEST_CHECKF(m.pointCount > 0 && off <= 1e-3 * (double)cd3Length(centre),
-						"case %d, order %d: %d points, the first %.3g from the box", k, order, m.pointCount, off);
+						"case %d, order %d: %d points, the first %.3g from the box", k, order, m.pointCount,
+						off);
 		}
 	}
 #endif
@@ -2399,7 +2400,8 @@ static void TestTinyHullsCappedEpaRegression(void)
 		CheckFuzzCase("tiny-hulls", &tetra, &other, 0.0, 0.0, 2e-4);
 		for (int order = 0; order < 2; ++order)
 		{
-			cd3Manifold m = order == 0 ? cd3Collide(&tetra, &other, CD_R(0.0)) : cd3Collide(&other, &tetra, CD_R(0.0));
+			cd3Manifold m =
+				order == 0 ? cd3Collide(&tetra, &other, CD_R(0.0)) : cd3Collide(&other, &tetra, CD_R(0.0));
 			TEST_CHECKF(m.pointCount > 0 && MinSeparation(&m) < -8e-7 && MinSeparation(&m) > -9e-7,
 						"order %d: %d points, smallest separation %.9g (overlap 8.7e-7)", order, m.pointCount,
 						MinSeparation(&m));

@@ -198,8 +198,8 @@ static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Q
 								 _mm_shuffle_ps(q2, q2, _MM_SHUFFLE(3, 2, 2, 1))); /* xy xz yz */
 	__m128 w = _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 3, 3, 3)),
 						  _mm_shuffle_ps(q2, q2, _MM_SHUFFLE(3, 0, 1, 2))); /* wz wy wx */
-	__m128 plus = _mm_add_ps(products, w);	 /* m.cx.y m.cz.x m.cy.z */
-	__m128 minus = _mm_sub_ps(products, w); /* m.cy.x m.cx.z m.cz.y */
+	__m128 plus = _mm_add_ps(products, w);									/* m.cx.y m.cz.x m.cy.z */
+	__m128 minus = _mm_sub_ps(products, w);									/* m.cy.x m.cx.z m.cz.y */
 	/* The columns (A's axes in the lanes) ... */
 	__m128 c0 = _mm_shuffle_ps(_mm_shuffle_ps(diagonal, plus, _MM_SHUFFLE(0, 0, 0, 0)), minus,
 							   _MM_SHUFFLE(1, 1, 2, 0)); /* d0 p0 m1 */
