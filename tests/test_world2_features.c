@@ -403,8 +403,10 @@ static void TestFilterJointAndFilters(void)
 
 static int g_hits;
 
-/* Sensor events fire exactly once per entry and per exit. */
-static void TestSensorEvents(void)
+/* A world without gravity holding a 2 x 2 m sensor box at the origin and a kinematic ball of radius
+ * 0.25 at (x, 0) moving at vx: the sensor scenes below. */
+static cd2WorldId CreateSensorScene(cdReal x, cdReal vx, cd2ShapeId* zone, cd2BodyId* visitor,
+									cd2ShapeId* visitorShape)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	wd.gravity = CD2_VEC_ZERO;
@@ -415,17 +417,26 @@ static void TestSensorEvents(void)
 	sd.isSensor = true;
 	cd2Polygon box;
 	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}}, &box);
-	cd2ShapeId zone = cd2CreatePolygonShape(zoneBody, &sd, &box);
-	/* A ball passes through the sensor three times (it bounces between walls far away). */
+	*zone = cd2CreatePolygonShape(zoneBody, &sd, &box);
 	bd.type = CD_KINEMATIC_BODY;
-	bd.position = cd2MakeVec(CD_R(-5.0), CD_R(0.0));
-	cd2BodyId visitor = cd2CreateBody(world, &bd);
+	bd.position = cd2MakeVec(x, CD_R(0.0));
+	bd.linearVelocity = cd2MakeVec(vx, CD_R(0.0));
+	*visitor = cd2CreateBody(world, &bd);
 	sd = cd2DefaultShapeDef();
 	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.25)};
-	cd2ShapeId visitorShape = cd2CreateCircleShape(visitor, &sd, &circle);
-	int begins = 0, ends = 0, wrong = 0;
+	*visitorShape = cd2CreateCircleShape(*visitor, &sd, &circle);
+	return world;
+}
+
+/* Sensor events fire exactly once per entry and per exit. */
+static void TestSensorEvents(void)
+{
+	/* A ball passes through the sensor back and forth (turned round at x = +-5). */
 	cdReal speed = CD_R(4.0);
-	cd2Body_SetLinearVelocity(visitor, cd2MakeVec(speed, CD_R(0.0)));
+	cd2ShapeId zone, visitorShape;
+	cd2BodyId visitor;
+	cd2WorldId world = CreateSensorScene(CD_R(-5.0), speed, &zone, &visitor, &visitorShape);
+	int begins = 0, ends = 0, wrong = 0;
 	for (int i = 0; i < 600; ++i)
 	{
 		cdReal x = cd2Body_GetPosition(visitor).x;
@@ -472,23 +483,9 @@ static void TestSensorEvents(void)
  * sensor contacts to look at). */
 static void TestSensorEventsAfterRestore(void)
 {
-	cd2WorldDef wd = cd2DefaultWorldDef();
-	wd.gravity = CD2_VEC_ZERO;
-	cd2WorldId world = cd2CreateWorld(&wd);
-	cd2BodyDef bd = cd2DefaultBodyDef();
-	cd2BodyId zoneBody = cd2CreateBody(world, &bd);
-	cd2ShapeDef sd = cd2DefaultShapeDef();
-	sd.isSensor = true;
-	cd2Polygon box;
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}}, &box);
-	cd2CreatePolygonShape(zoneBody, &sd, &box);
-	bd.type = CD_KINEMATIC_BODY;
-	bd.position = cd2MakeVec(CD_R(-3.0), CD_R(0.0));
-	bd.linearVelocity = cd2MakeVec(CD_R(4.0), CD_R(0.0));
-	cd2BodyId visitor = cd2CreateBody(world, &bd);
-	sd = cd2DefaultShapeDef();
-	cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, CD_R(0.25)};
-	cd2CreateCircleShape(visitor, &sd, &circle);
+	cd2ShapeId zone, visitorShape;
+	cd2BodyId visitor;
+	cd2WorldId world = CreateSensorScene(CD_R(-3.0), CD_R(4.0), &zone, &visitor, &visitorShape);
 	int begins = 0;
 	for (int i = 0; i < 120 && begins == 0; ++i)
 	{
@@ -509,6 +506,8 @@ static void TestSensorEventsAfterRestore(void)
 	TEST_CHECK(endStep > 0);
 	cd2DestroyWorld(world);
 	/* A new world without a shape, given the saved state: the same end at the same step. */
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
 	cd2WorldId restored = cd2CreateWorld(&wd);
 	TEST_CHECK(buffer != NULL && cd2World_RestoreState(restored, buffer, size) == CD_OK);
 	int restoredEnd = -1;
