@@ -442,21 +442,6 @@ static inline uint64_t EdgesOfFaces(const uint64_t (*table)[16], uint32_t faces)
 		   table[3][(faces >> 12) & 15u];
 }
 
-static inline int LowestBit32(uint32_t bits)
-{
-#if defined(__GNUC__) || defined(__clang__)
-	return __builtin_ctz(bits);
-#else
-	int i = 0;
-	while (!(bits & 1u))
-	{
-		bits >>= 1;
-		++i;
-	}
-	return i;
-#endif
-}
-
 /* A's side of the masked test, built once per query. */
 typedef struct ArcMasks
 {
@@ -497,7 +482,7 @@ static void InitArcMasks(ArcMasks* m, const cd3Polytope* a, const cd3Polytope* b
 		m->faceEdges[i][0] = 0u;
 		for (unsigned v = 1u; v < 16u; ++v)
 		{
-			m->faceEdges[i][v] = m->faceEdges[i][v & (v - 1u)] | of[4 * i + LowestBit32(v)];
+			m->faceEdges[i][v] = m->faceEdges[i][v & (v - 1u)] | of[4 * i + cd3LowestBit(v)];
 		}
 	}
 	int padded = (cached + 3) & ~3;
@@ -523,7 +508,7 @@ static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int
 	int n = 0;
 	while (pass != 0u)
 	{
-		out[n++] = LowestBit32(pass);
+		out[n++] = cd3LowestBit(pass);
 		pass &= pass - 1u;
 	}
 	return n;

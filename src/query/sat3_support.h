@@ -256,11 +256,6 @@ static inline cd3Vec cd3SoaPoint(const cd3SoaPoints* s, int i)
 	return cd3MakeVec(s->x[i], s->y[i], s->z[i]);
 }
 
-#if CD3_SUPPORT_SSE
-/* Up to this many points, cd3ColumnsSupportIndex finds the largest dot product first and its
- * first index after: one bit per point. */
-#define CD3_COLUMNS_TWO_PASS_MAX 64
-
 /* Lowest set bit of a nonzero mask. */
 static inline int cd3LowestBit(uint64_t bits)
 {
@@ -276,6 +271,11 @@ static inline int cd3LowestBit(uint64_t bits)
 	return i;
 #endif
 }
+
+#if CD3_SUPPORT_SSE
+/* Up to this many points, cd3ColumnsSupportIndex finds the largest dot product first and its
+ * first index after: one bit per point. */
+#define CD3_COLUMNS_TWO_PASS_MAX 64
 
 /* The support of at most CD3_COLUMNS_TWO_PASS_MAX column points (padded a multiple of 4) in two
  * passes: the dot products and their maximum (two running maxima, so that the chain of dependent
