@@ -3,6 +3,7 @@
  * turning fast past a small box, a box hull that must behave as the box, and property tests on
  * random pairs against the double-precision distance bracket of reference3.h sampled in time. */
 #include "collide/cast.h"
+#include "needle_cases3.h"
 #include "reference3.h"
 #include "test.h"
 
@@ -494,15 +495,6 @@ static void TestToiHugeTarget(void)
 #define CAST_NEEDLE_LENGTH 1.0e4
 #endif
 
-static cd3Quat RandomRotation(TestRng* rng)
-{
-	double x = TestRngRange(rng, -1.0, 1.0), y = TestRngRange(rng, -1.0, 1.0),
-		   z = TestRngRange(rng, -1.0, 1.0), w = TestRngRange(rng, -1.0, 1.0);
-	double length = sqrt(x * x + y * y + z * z + w * w);
-	cd3Quat q = {(cdReal)(x / length), (cdReal)(y / length), (cdReal)(z / length), (cdReal)(w / length)};
-	return q;
-}
-
 static void TestCastNeedleSegmentAtBox(void)
 {
 	TestRng rng = TestRngMake(0xca57e16u);
@@ -512,27 +504,9 @@ static void TestCastNeedleSegmentAtBox(void)
 	double worst = 0.0;
 	for (int trial = 0; trial < 500; ++trial)
 	{
-		cd3Box box = {{(cdReal)TestRngRange(&rng, -10.0, 10.0), (cdReal)TestRngRange(&rng, -10.0, 10.0),
-					   (cdReal)TestRngRange(&rng, -10.0, 10.0)},
-					  {(cdReal)TestRngRange(&rng, 1.0, 10.0), (cdReal)TestRngRange(&rng, 1.0, 10.0),
-					   (cdReal)TestRngRange(&rng, 1.0, 10.0)},
-					  RandomRotation(&rng)};
-		cd3Mat33 rotation = cd3MakeMatFromQuat(box.rotation);
-		cd3Vec axes[3] = {rotation.cx, rotation.cy, rotation.cz};
-		cdReal half[3] = {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z};
-		int axis = TestRngInt(&rng, 3), u = (axis + 1) % 3, v = (axis + 2) % 3;
-		cd3Vec normal = TestRngInt(&rng, 2) ? axes[axis] : cd3Neg(axes[axis]);
-		cd3Vec over = cd3Add(box.center, cd3Scale(half[axis] + CD_R(5.0), normal));
-		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[u], axes[u]);
-		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[v], axes[v]);
-		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
-		cd3Vec direction =
-			cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
-		double start = -TestRngRange(&rng, 0.1, 0.9) * CAST_NEEDLE_LENGTH;
-		cd3Segment segment = {cd3MulAdd(over, (cdReal)start, direction),
-							  cd3MulAdd(over, (cdReal)(start + CAST_NEEDLE_LENGTH), direction)};
-		cd3Shape a = cd3MakeSegmentShape(segment), b = cd3MakeBoxShape(box);
-		cd3CastOutput out = cd3ShapeCast(&a, &b, cd3Scale(CD_R(-10.0), normal));
+		NeedleCase needle = MakeNeedleOverBox(&rng, CAST_NEEDLE_LENGTH, 5.0);
+		cd3Shape a = cd3MakeSegmentShape(needle.segment), b = cd3MakeBoxShape(needle.box);
+		cd3CastOutput out = cd3ShapeCast(&a, &b, cd3Scale(CD_R(-10.0), needle.normal));
 		double error = out.hit ? fabs((double)out.fraction - 0.5) : 1.0;
 		worst = fmax(worst, error);
 		TEST_CHECKF(out.hit && error <= tolerance, "hit %d at fraction %.9g, expected 0.5 (tolerance %.3g)",

@@ -1,6 +1,7 @@
 /* Tests of cd3Distance (GJK): exact cases, and thousands of random pairs of every type
  * combination against an independent brute-force reference in double precision (feature
  * enumeration), plus symmetry, rigid-transform invariance and witness-point checks. */
+#include "needle_cases3.h"
 #include "test_distance3_reference.h"
 
 static double g_maxError = 0.0;
@@ -467,26 +468,9 @@ static void TestNeedleDifferences(void)
 	double worst = 0.0;
 	for (int trial = 0; trial < 2000; ++trial)
 	{
-		cd3Box box = {RandomVec(&rng, 10.0),
-					  {(cdReal)TestRngRange(&rng, 1.0, 10.0), (cdReal)TestRngRange(&rng, 1.0, 10.0),
-					   (cdReal)TestRngRange(&rng, 1.0, 10.0)},
-					  RandomQuat(&rng)};
-		cd3Mat33 rotation = cd3MakeMatFromQuat(box.rotation);
-		cd3Vec axes[3] = {rotation.cx, rotation.cy, rotation.cz};
-		cdReal half[3] = {box.halfExtents.x, box.halfExtents.y, box.halfExtents.z};
-		int axis = TestRngInt(&rng, 3), u = (axis + 1) % 3, v = (axis + 2) % 3;
-		cd3Vec normal = TestRngInt(&rng, 2) ? axes[axis] : cd3Neg(axes[axis]);
 		double gap = TestRngInt(&rng, 2) ? 0.0 : TestRngRange(&rng, 0.5, 3.0);
-		cd3Vec over = cd3Add(box.center, cd3Scale(half[axis] + (cdReal)gap, normal));
-		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[u], axes[u]);
-		over = cd3MulAdd(over, (cdReal)TestRngRange(&rng, -0.8, 0.8) * half[v], axes[v]);
-		double angle = TestRngRange(&rng, 0.0, 6.283185307179586);
-		cd3Vec direction =
-			cd3Add(cd3Scale((cdReal)cos(angle), axes[u]), cd3Scale((cdReal)sin(angle), axes[v]));
-		double start = -TestRngRange(&rng, 0.1, 0.9) * NEEDLE_LENGTH;
-		cd3Segment segment = {cd3MulAdd(over, (cdReal)start, direction),
-							  cd3MulAdd(over, (cdReal)(start + NEEDLE_LENGTH), direction)};
-		cd3Shape a = cd3MakeSegmentShape(segment), b = cd3MakeBoxShape(box);
+		NeedleCase needle = MakeNeedleOverBox(&rng, NEEDLE_LENGTH, gap);
+		cd3Shape a = cd3MakeSegmentShape(needle.segment), b = cd3MakeBoxShape(needle.box);
 		double forward = (double)cd3Distance(&a, &b).distance,
 			   backward = (double)cd3Distance(&b, &a).distance;
 		double error = fmax(fabs(forward - gap), fabs(backward - gap));
