@@ -356,6 +356,7 @@ typedef struct GjkState
 {
 	GjkVertex v0, v1, v2;
 	cdReal l0, l1, l2;
+	cdReal m0, m1, m2; /* cd2MaxAbs of each vertex's w, computed once per vertex */
 	int count;
 } GjkState;
 
@@ -378,11 +379,11 @@ SolveState(GjkState* s)
 	w[0] = s->v0.w;
 	w[1] = s->v1.w;
 	w[2] = s->v2.w;
-	cdReal largest = cdMax(CD_R(0.0), cd2MaxAbs(w[0]));
-	largest = cdMax(largest, cd2MaxAbs(w[1]));
+	cdReal largest = cdMax(CD_R(0.0), s->m0);
+	largest = cdMax(largest, s->m1);
 	if (s->count == 3)
 	{
-		largest = cdMax(largest, cd2MaxAbs(w[2]));
+		largest = cdMax(largest, s->m2);
 	}
 #if CD_DOUBLE
 	const cdReal safeLow = 0x1p-100, safeHigh = 0x1p100;
@@ -413,6 +414,7 @@ SolveState(GjkState* s)
 	{
 		out.v0 = s->v0;
 		out.l0 = l[0];
+		out.m0 = s->m0;
 		kept = 1;
 	}
 	if (l[1] > CD_R(0.0) || (kept == 0 && s->count == 2))
@@ -422,11 +424,13 @@ SolveState(GjkState* s)
 		{
 			out.v0 = s->v1;
 			out.l0 = weight;
+			out.m0 = s->m1;
 		}
 		else
 		{
 			out.v1 = s->v1;
 			out.l1 = weight;
+			out.m1 = s->m1;
 		}
 		++kept;
 	}
@@ -437,16 +441,19 @@ SolveState(GjkState* s)
 		{
 			out.v0 = s->v2;
 			out.l0 = weight;
+			out.m0 = s->m2;
 		}
 		else if (kept == 1)
 		{
 			out.v1 = s->v2;
 			out.l1 = weight;
+			out.m1 = s->m2;
 		}
 		else
 		{
 			out.v2 = s->v2;
 			out.l2 = weight;
+			out.m2 = s->m2;
 		}
 		++kept;
 	}
@@ -485,11 +492,11 @@ GjkRun(const cd2Core* a, const cd2Core* b, const cd2CoreLanes* lanesA, const cd2
 		}
 		/* sqrt(2) * the largest |coordinate|: at least the largest |w|. */
 		cd2Vec v = cd2MulAdd(CD2_VEC_ZERO, s.l0, s.v0.w);
-		cdReal size = cdMax(CD_R(0.0), cd2MaxAbs(s.v0.w));
+		cdReal size = cdMax(CD_R(0.0), s.m0);
 		if (s.count > 1)
 		{
 			v = cd2MulAdd(v, s.l1, s.v1.w);
-			size = cdMax(size, cd2MaxAbs(s.v1.w));
+			size = cdMax(size, s.m1);
 		}
 		CD_ASSERT(s.count <= 2); /* a triangle either encloses the origin or loses a vertex */
 		cdReal distanceSquared = cd2LengthSquared(v);
@@ -557,15 +564,18 @@ GjkRun(const cd2Core* a, const cd2Core* b, const cd2CoreLanes* lanesA, const cd2
 		{
 			break;
 		}
+		cdReal vertexSize = cd2MaxAbs(vertex.w);
 		if (s.count == 1)
 		{
 			s.v1 = vertex;
 			s.l1 = CD_R(0.0);
+			s.m1 = vertexSize;
 		}
 		else
 		{
 			s.v2 = vertex;
 			s.l2 = CD_R(0.0);
+			s.m2 = vertexSize;
 		}
 		++s.count;
 	}
@@ -614,6 +624,9 @@ GjkCoresLanes(const cd2Core* a, const cd2Core* b, const cd2CoreLanes* lanesA, co
 		start.l0 = warm ? CD_R(0.0) : CD_R(1.0);
 		start.l1 = CD_R(0.0);
 		start.l2 = CD_R(0.0);
+		start.m0 = cd2MaxAbs(start.v0.w);
+		start.m1 = cd2MaxAbs(start.v1.w);
+		start.m2 = cd2MaxAbs(start.v2.w);
 	}
 
 	GjkState s = start;
@@ -670,15 +683,15 @@ cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdD
 /* The closest points of the shapes from those of their cores (radiusA, radiusB around them). */
 static cd2ClosestPoints AddRadii(cd2Vec pointA, cd2Vec pointB, bool touching, cdReal radiusA, cdReal radiusB)
 {
+	if (touching)
+	{
+		return Touching(pointA); /* before the square root, which only the others need */
+	}
 	cd2ClosestPoints result;
 	cdReal radius = radiusA + radiusB;
 	cd2Vec delta = cd2Sub(pointB, pointA);
 	cdReal coreDistance = cd2Length(delta);
-	if (touching)
-	{
-		result = Touching(pointA);
-	}
-	else if (coreDistance <= radius)
+	if (coreDistance <= radius)
 	{
 		/* Only the rounded parts overlap: this point is within rA of pointA and rB of pointB. */
 		cdReal t = radius > CD_R(0.0) ? radiusA / radius : CD_R(0.0);
