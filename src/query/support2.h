@@ -221,6 +221,33 @@ static inline int cd2CoreSupportLanes(const cd2Core* core, cd2Vec direction)
 #endif
 }
 
+/* max over the core's points of dot(p, direction): the largest lane of cd2CoreSupportLanes's dot
+ * products (each cd2Dot's, so the value of its support point bit for bit, up to the sign of a
+ * zero), without going back from the index to the point, which made a chain of dependent steps
+ * (the index, the load, the dot product) at every step of a time of impact. Elsewhere the scan. */
+static inline cdReal cd2CoreSupportValueLanes(const cd2Core* core, cd2Vec direction)
+{
+#if CD2_SEPARATION_SSE
+	int count = core->count;
+	CD_ASSERT(count >= 1 && count <= CD2_CORE_MAX_POINTS);
+	const cd2Vec* p = core->points;
+	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+	int i4 = count > 4 ? 4 : 0, i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
+	__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y);
+	__m128 x, y;
+	cd2SeparationLoad4(p, 0, i1, i2, i3, &x, &y);
+	__m128 low = _mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy));
+	cd2SeparationLoad4(p, i4, i5, i6, i7, &x, &y);
+	__m128 high = _mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy));
+	__m128 top = _mm_max_ps(low, high);
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(1, 0, 3, 2)));
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
+	return _mm_cvtss_f32(top);
+#else
+	return cd2Dot(core->points[cd2CoreSupportLanes(core, direction)], direction);
+#endif
+}
+
 /* A core's points held in vector lanes for the whole of a GJK call (float build on SSE2): x and y
  * of points 0-3 and 4-7, lanes past the count repeating point 0, so that each support is the dot
  * products and the first maximum of cd2CoreSupportLanes without reloading and reshuffling the
