@@ -681,7 +681,11 @@ cd2ClosestPoints cd2DistanceWithStatus(const cd2Shape* a, const cd2Shape* b, cdD
 }
 
 /* The closest points of the shapes from those of their cores (radiusA, radiusB around them). */
-static cd2ClosestPoints AddRadii(cd2Vec pointA, cd2Vec pointB, bool touching, cdReal radiusA, cdReal radiusB)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline cd2ClosestPoints
+AddRadii(cd2Vec pointA, cd2Vec pointB, bool touching, cdReal radiusA, cdReal radiusB)
 {
 	if (touching)
 	{
