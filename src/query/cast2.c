@@ -31,15 +31,10 @@ static int CastCoreSupport(const cd2Core* core, cd2Vec direction, int start)
 	return cd2CoreSupportFrom(core, direction, start);
 }
 
-/* The supports of the time of impact's steps along a fixed axis: by lanes (support2.h), without
- * the hill climb's data-dependent branches, which a turning body's supports defeat (the same
- * largest value; the start is not needed). */
-static int CastAxisSupport(const cd2Core* core, cd2Vec direction, int start)
-{
-	(void)start;
-	return cd2CoreSupportLanes(core, direction);
-}
-#define CAST_AXIS_SUPPORT CastAxisSupport
+/* The support values of the time of impact's steps along a fixed axis: the largest value by lanes
+ * (support2.h), without the hill climb's data-dependent branches, which a turning body's supports
+ * defeat, and without going back to the support point (the start is not needed). */
+#define CAST_AXIS_SUPPORT_VALUE cd2CoreSupportValueLanes
 
 /* |a x b|^2: by Lagrange's identity |a|^2 |b|^2 - (a.b)^2 without its cancellation. */
 static cdReal CrossLengthSquared(cd2Vec a, cd2Vec b)

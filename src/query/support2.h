@@ -221,6 +221,111 @@ static inline int cd2CoreSupportLanes(const cd2Core* core, cd2Vec direction)
 #endif
 }
 
+/* max over the core's points of dot(p, direction): the largest lane of cd2CoreSupportLanes's dot
+ * products (each cd2Dot's, so the value of its support point bit for bit, up to the sign of a
+ * zero), without going back from the index to the point, which made a chain of dependent steps
+ * (the index, the load, the dot product) at every step of a time of impact. Elsewhere the scan. */
+static inline cdReal cd2CoreSupportValueLanes(const cd2Core* core, cd2Vec direction)
+{
+#if CD2_SEPARATION_SSE
+	int count = core->count;
+	CD_ASSERT(count >= 1 && count <= CD2_CORE_MAX_POINTS);
+	const cd2Vec* p = core->points;
+	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+	int i4 = count > 4 ? 4 : 0, i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
+	__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y);
+	__m128 x, y;
+	cd2SeparationLoad4(p, 0, i1, i2, i3, &x, &y);
+	__m128 low = _mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy));
+	cd2SeparationLoad4(p, i4, i5, i6, i7, &x, &y);
+	__m128 high = _mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy));
+	__m128 top = _mm_max_ps(low, high);
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(1, 0, 3, 2)));
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
+	return _mm_cvtss_f32(top);
+#else
+	return cd2Dot(core->points[cd2CoreSupportLanes(core, direction)], direction);
+#endif
+}
+
+/* A core's points held in vector lanes for the whole of a GJK call (float build on SSE2): x and y
+ * of points 0-3 and 4-7, lanes past the count repeating point 0, so that each support is the dot
+ * products and the first maximum of cd2CoreSupportLanes without reloading and reshuffling the
+ * points (GJK takes three or four supports per shape and call). cd2CoreLanesSupport gives
+ * cd2CoreSupportLanes's index bit for bit. Elsewhere a pointer to the core and its support. */
+#if CD2_SEPARATION_SSE
+typedef struct cd2CoreLanes
+{
+	__m128 x0, y0, x1, y1;
+} cd2CoreLanes;
+
+static inline void cd2MakeCoreLanes(const cd2Core* core, cd2CoreLanes* lanes)
+{
+	int count = core->count;
+	CD_ASSERT(count >= 1 && count <= CD2_CORE_MAX_POINTS);
+	const cd2Vec* p = core->points;
+	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+	int i4 = count > 4 ? 4 : 0, i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
+	cd2SeparationLoad4(p, 0, i1, i2, i3, &lanes->x0, &lanes->y0);
+	cd2SeparationLoad4(p, i4, i5, i6, i7, &lanes->x1, &lanes->y1);
+}
+
+/* The lanes of a body-frame core placed by xf (each lane as cd2TransformPoint: the rotated point
+ * plus the translation, in that order), and the placed points themselves, stored whole vectors at
+ * a time (placed: room for CD2_CORE_MAX_POINTS points) so that reading one back is forwarded from
+ * the store. */
+static inline void cd2MakePlacedCoreLanes(const cd2Core* local, cd2Transform xf, cd2Vec* placed,
+										  cd2CoreLanes* lanes)
+{
+	cd2CoreLanes l;
+	cd2MakeCoreLanes(local, &l);
+	__m128 c = _mm_set1_ps(xf.q.c), s = _mm_set1_ps(xf.q.s);
+	__m128 px = _mm_set1_ps(xf.p.x), py = _mm_set1_ps(xf.p.y);
+	lanes->x0 = _mm_add_ps(_mm_sub_ps(_mm_mul_ps(c, l.x0), _mm_mul_ps(s, l.y0)), px);
+	lanes->y0 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(s, l.x0), _mm_mul_ps(c, l.y0)), py);
+	lanes->x1 = _mm_add_ps(_mm_sub_ps(_mm_mul_ps(c, l.x1), _mm_mul_ps(s, l.y1)), px);
+	lanes->y1 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(s, l.x1), _mm_mul_ps(c, l.y1)), py);
+	float* out = (float*)(void*)placed;
+	_mm_storeu_ps(out, _mm_unpacklo_ps(lanes->x0, lanes->y0));
+	_mm_storeu_ps(out + 4, _mm_unpackhi_ps(lanes->x0, lanes->y0));
+	_mm_storeu_ps(out + 8, _mm_unpacklo_ps(lanes->x1, lanes->y1));
+	_mm_storeu_ps(out + 12, _mm_unpackhi_ps(lanes->x1, lanes->y1));
+}
+
+static inline int cd2CoreLanesSupport(const cd2CoreLanes* lanes, cd2Vec direction)
+{
+	__m128 dx = _mm_set1_ps(direction.x), dy = _mm_set1_ps(direction.y);
+	__m128 low = _mm_add_ps(_mm_mul_ps(lanes->x0, dx), _mm_mul_ps(lanes->y0, dy));
+	__m128 high = _mm_add_ps(_mm_mul_ps(lanes->x1, dx), _mm_mul_ps(lanes->y1, dy));
+	__m128 top = _mm_max_ps(low, high);
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(1, 0, 3, 2)));
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
+	int lanesEqual = _mm_movemask_ps(_mm_cmpeq_ps(low, top)) | _mm_movemask_ps(_mm_cmpeq_ps(high, top)) << 4;
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctz((unsigned)lanesEqual | 0x100u) & 7;
+#else
+	static const int8_t FIRST_LANE[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	return (lanesEqual & 15) != 0 ? FIRST_LANE[lanesEqual & 15]
+								  : (lanesEqual != 0 ? 4 + FIRST_LANE[lanesEqual >> 4] : 0);
+#endif
+}
+#else
+typedef struct cd2CoreLanes
+{
+	const cd2Core* core;
+} cd2CoreLanes;
+
+static inline void cd2MakeCoreLanes(const cd2Core* core, cd2CoreLanes* lanes)
+{
+	lanes->core = core;
+}
+
+static inline int cd2CoreLanesSupport(const cd2CoreLanes* lanes, cd2Vec direction)
+{
+	return cd2CoreSupportLanes(lanes->core, direction);
+}
+#endif
+
 /* Support by hill climbing from `start` along the counter-clockwise ring of core points: on a
  * convex ring the projections rise to one maximum (plateaus only at an edge perpendicular to the
  * direction, which is the top or the bottom), so a vertex neither of whose neighbours projects
