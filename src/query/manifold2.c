@@ -170,6 +170,18 @@ static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativ
 /* The point `center` grown by pointRadius against the segment or polygon core k; the normal
  * points from k to the point. Takes the point's fields rather than a point core so that
  * cd2CollideCirclePolygon, whose whole cost is this function, builds no cores. */
+/* cd2Length without the library call that sets errno on a negative argument (a sum of squares
+ * never is): in the float build on SSE2 the square root instruction alone, the same bits. The
+ * call's path, even never taken, made the compiler keep values on the stack around it. */
+static inline cdReal LengthNoErrno(cd2Vec v)
+{
+#if CD2_SEPARATION_SSE
+	return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(v.x * v.x + v.y * v.y)));
+#else
+	return cd2Length(v);
+#endif
+}
+
 /* The one contact of a point against a core, as plain values: built into a manifold by value
  * only at the end, so that the manifold is not assembled on the stack and copied out (the copy's
  * wide loads of narrow stores waited on store forwarding). normal points from k to the point. */
@@ -221,7 +233,7 @@ static inline CenterContact CenterContactOnEdge(const Core* k, cd2Vec center, cd
 			/* cd2GetLengthAndNormalize inline: a length it accepts (at least CD_REAL_EPSILON^2 and
 			 * finite) gives a direction whose larger component is at least 0.7, never zero. */
 			cd2Vec offset = cd2Sub(center, k->vertices[vertex]);
-			cdReal distance = cd2Length(offset);
+			cdReal distance = LengthNoErrno(offset);
 			if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
 			{
 				cd2Vec direction = cd2Scale(CD_R(1.0) / distance, offset);
