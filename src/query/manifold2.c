@@ -167,9 +167,6 @@ static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativ
 	return manifold;
 }
 
-/* The point `center` grown by pointRadius against the segment or polygon core k; the normal
- * points from k to the point. Takes the point's fields rather than a point core so that
- * cd2CollideCirclePolygon, whose whole cost is this function, builds no cores. */
 /* cd2Length without the library call that sets errno on a negative argument (a sum of squares
  * never is): in the float build on SSE2 the square root instruction alone, the same bits. The
  * call's path, even never taken, made the compiler keep values on the stack around it. */
@@ -182,6 +179,9 @@ static inline cdReal LengthNoErrno(cd2Vec v)
 #endif
 }
 
+/* The point `center` grown by pointRadius against the segment or polygon core k; the normal
+ * points from k to the point. Takes the point's fields rather than a point core so that
+ * cd2CollideCirclePolygon, whose whole cost is this function, builds no cores. */
 /* The one contact of a point against a core, as plain values: built into a manifold by value
  * only at the end, so that the manifold is not assembled on the stack and copied out (the copy's
  * wide loads of narrow stores waited on store forwarding). normal points from k to the point. */
