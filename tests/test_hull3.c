@@ -785,8 +785,9 @@ static void CopyHull(MutableHull* m, const cd3Hull* source)
 	memcpy(m->faceEdges, source->faceEdges, 6 * sizeof(int32_t));
 	memcpy(m->planes, source->planes, 6 * sizeof(cd3Plane));
 	m->hull.vertices = m->vertices;
-	/* Assembled by hand: no columns (they would be the source's). */
+	/* Assembled by hand: no columns nor query data (they would be the source's). */
 	m->hull.vertexColumns = NULL;
+	m->hull.queryData = NULL;
 	m->hull.edges = m->edges;
 	m->hull.faceEdges = m->faceEdges;
 	m->hull.planes = m->planes;

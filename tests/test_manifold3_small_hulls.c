@@ -226,8 +226,71 @@ static void TestUncarriedB(void)
 	TEST_CHECKF(checked > 80, "%d overlapping pairs", checked);
 }
 
+static bool SameManifold(const cd3Manifold* x, const cd3Manifold* y)
+{
+	bool same = x->pointCount == y->pointCount && cd3VecEqual(x->normal, y->normal);
+	for (int i = 0; same && i < x->pointCount; ++i)
+	{
+		same = cd3VecEqual(x->points[i].point, y->points[i].point) &&
+			   x->points[i].separation == y->points[i].separation && x->points[i].id == y->points[i].id;
+	}
+	return same;
+}
+
+/* Hulls of at most 16 faces and 32 edges carry precomputed query data, larger ones none; a hull
+ * without it (assembled by hand) gets the very same contacts, overlapping or apart, in both orders;
+ * and the validator refuses data that is not the hull's own. */
+static void TestQueryDataAgrees(void)
+{
+	TestRng rng = TestRngMake(0x5a7e14u);
+	int compared = 0, refused = 0;
+	for (int k = 0; k < 600; ++k)
+	{
+		int countA = 4 + (int)TestRngRange(&rng, 0.0, 9.0), countB = 4 + (int)TestRngRange(&rng, 0.0, 9.0);
+		cd3Hull* ha = RandomHull(&rng, countA);
+		cd3Hull* hb = RandomHull(&rng, countB);
+		for (const cd3Hull* h = ha; h != NULL; h = h == ha ? hb : NULL)
+		{
+			bool small = h->faceCount <= 16 && h->edgeCount / 2 <= 32;
+			TEST_CHECKF((h->queryData != NULL) == small, "%d faces, %d edges: query data %s", h->faceCount,
+						h->edgeCount / 2, h->queryData != NULL ? "present" : "absent");
+		}
+		cd3Hull plainA = *ha, plainB = *hb;
+		plainA.queryData = NULL;
+		plainB.queryData = NULL;
+		TEST_CHECK(cd3ValidateHull(&plainA) == CD_OK && cd3ValidateHull(ha) == CD_OK);
+		cd3HullShape a = {ha, {cd3Scale(CD_R(0.2), RandomUnit(&rng)), RandomRotation(&rng)}};
+		cd3HullShape b = {
+			hb, {cd3Scale((cdReal)TestRngRange(&rng, 0.3, 2.0), RandomUnit(&rng)), RandomRotation(&rng)}};
+		cd3HullShape pa = {&plainA, a.transform}, pb = {&plainB, b.transform};
+		cd3Manifold withData = cd3CollideHullHull(a, b, CD_R(0.1));
+		cd3Manifold without = cd3CollideHullHull(pa, pb, CD_R(0.1));
+		cd3Manifold mixed = cd3CollideHullHull(a, pb, CD_R(0.1));
+		cd3Manifold reversed = cd3CollideHullHull(b, a, CD_R(0.1));
+		cd3Manifold reversedPlain = cd3CollideHullHull(pb, pa, CD_R(0.1));
+		TEST_CHECKF(SameManifold(&withData, &without) && SameManifold(&withData, &mixed) &&
+						SameManifold(&reversed, &reversedPlain),
+					"pair %d (hull(%d)-hull(%d)): %d points with the data, %d without", k, countA, countB,
+					withData.pointCount, without.pointCount);
+		compared += withData.pointCount > 0;
+		/* Another hull's data of the same sizes is not this hull's. */
+		if (ha->queryData != NULL && hb->queryData != NULL && ha->edgeCount == hb->edgeCount &&
+			ha->faceCount == hb->faceCount)
+		{
+			cd3Hull swapped = *ha;
+			swapped.queryData = hb->queryData;
+			TEST_CHECK(cd3ValidateHull(&swapped) == CD_ERROR_INVALID_ARGUMENT);
+			++refused;
+		}
+		cd3DestroyHull(ha);
+		cd3DestroyHull(hb);
+	}
+	TEST_CHECKF(compared > 200 && refused > 20, "%d pairs in contact, %d swaps refused", compared, refused);
+}
+
 int main(void)
 {
+	TEST_RUN(TestQueryDataAgrees);
 	TEST_RUN(TestMaskedGaussTest);
 	TEST_RUN(TestLargerA);
 	TEST_RUN(TestUncarriedB);

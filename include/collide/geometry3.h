@@ -112,6 +112,12 @@ typedef struct cd3Hull
 	 * searches read them four vertices at a time. Must match `vertices` (cd3ValidateHull checks);
 	 * NULL in a hull assembled by hand, which the searches then read from `vertices`. */
 	const cdReal* vertexColumns;
+	/* What the pair queries would otherwise derive from the edges and faces on every call (the
+	 * unique edges, their Gauss-map arcs, the face normals as columns), computed once by
+	 * cd3ComputeHull for hulls of at most 16 faces and 32 edges; internal layout. Must match the
+	 * hull (cd3ValidateHull checks); NULL for larger hulls and in a hull assembled by hand, whose
+	 * queries then derive it per call. */
+	const void* queryData;
 } cd3Hull;
 
 /* Entries per column of cd3Hull.vertexColumns: the vertex count rounded up to a multiple of 4. */

@@ -7,6 +7,8 @@
  * surface; merged regions of a convex surface are discs, so their boundaries are simple loops. */
 #include "collide/geometry3.h"
 
+#include "../query/sat3.h"
+
 #include <string.h>
 
 typedef struct HVec
@@ -904,8 +906,9 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	size_t faceEdgesSize = AlignUp((size_t)faceCount * sizeof(int32_t));
 	size_t planesSize = AlignUp((size_t)faceCount * sizeof(cd3Plane));
 	size_t columnsSize = AlignUp(3 * (size_t)CD3_HULL_COLUMN_STRIDE(vertexCount) * sizeof(cdReal));
-	char* memory =
-		(char*)cdAlloc(headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize + columnsSize);
+	size_t queryDataSize = AlignUp(cd3HullQueryDataSize(halfEdgeCount, faceCount));
+	char* memory = (char*)cdAlloc(headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize +
+								  columnsSize + queryDataSize);
 	/* Each half-edge covers a chain of boundary slots (the dropped vertices in between); its
 	 * twin is the half-edge covering the twin of its chain's last slot. */
 	int* slotEdge = m->slotEdge;
@@ -1097,6 +1100,12 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	hull->centroid = cd3MakeVec((cdReal)centroid.x, (cdReal)centroid.y, (cdReal)centroid.z);
 	hull->volume = (cdReal)(volume / 6.0);
 	hull->bounds = bounds;
+	if (queryDataSize > 0)
+	{
+		void* queryData = memory + headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize + columnsSize;
+		cd3BuildHullQueryData(hull, queryData);
+		hull->queryData = queryData;
+	}
 	*out = hull;
 	return CD_OK;
 }
@@ -1679,6 +1688,25 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 	if (!manifold)
 	{
 		return CD_ERROR_INVALID_ARGUMENT;
+	}
+	/* The queries read the precomputed data instead of the edges and planes: it must be theirs. */
+	if (hull->queryData != NULL)
+	{
+		union
+		{
+			uint64_t align;
+			unsigned char bytes[2048];
+		} expected;
+		size_t size = cd3HullQueryDataSize(e, f);
+		if (size == 0 || size > sizeof(expected.bytes))
+		{
+			return CD_ERROR_INVALID_ARGUMENT;
+		}
+		cd3BuildHullQueryData(hull, expected.bytes);
+		if (memcmp(expected.bytes, hull->queryData, size) != 0)
+		{
+			return CD_ERROR_INVALID_ARGUMENT;
+		}
 	}
 
 	cdReal tolerance = cd3Hull_GetTolerance(hull);

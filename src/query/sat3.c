@@ -7,6 +7,8 @@
  * half-circle arcs, so their edge pairs are tested by projecting both polytopes instead. */
 #include "sat3.h"
 
+#include <string.h>
+
 #include "sat3_box.h"
 #include "sat3_support.h"
 
@@ -80,6 +82,7 @@ void cd3InitBoxPolytope(cd3Polytope* p, cd3Box box)
 	p->edgeAxisCount = 24;
 	p->faceCount = 6;
 	p->centroid = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	p->query = NULL;
 	p->transform.p = box.center;
 	p->transform.q = box.rotation;
 	p->flat = false;
@@ -101,6 +104,7 @@ void cd3InitHullPolytope(cd3Polytope* p, cd3HullShape hull)
 	p->faceCount = h->faceCount;
 	p->centroid = h->centroid;
 	p->transform = hull.transform;
+	p->query = (const cd3HullQueryData*)h->queryData;
 	p->flat = false;
 	p->size = cd3Length(cd3Sub(h->bounds.max, h->bounds.min));
 	p->shape.type = CD3_SHAPE_HULL;
@@ -176,6 +180,7 @@ void cd3InitTrianglePolytope(cd3Polytope* p, cd3Triangle t)
 	p->faceCount = 2;
 	p->centroid = cd3Scale(CD_R(1.0) / CD_R(3.0), cd3Add(t.a, cd3Add(t.b, t.c)));
 	p->transform = CD3_TRANSFORM_IDENTITY;
+	p->query = NULL;
 	p->flat = true;
 	p->size =
 		cdMax(cd3Length(cd3Sub(t.b, t.a)), cdMax(cd3Length(cd3Sub(t.c, t.b)), cd3Length(cd3Sub(t.a, t.c))));
@@ -210,19 +215,30 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 		int padded = (faceCount + 3) & ~3; /* zero normals beyond the faces */
 #if CD3_SUPPORT_SSE
 		__m128 columns[4 * SMALL_POLYTOPE / 4];
-		float* nx = (float*)(void*)columns;
-		float* ny = nx + SMALL_POLYTOPE;
-		float* nz = ny + SMALL_POLYTOPE;
-		float* low = nz + SMALL_POLYTOPE;
+		float* cx = (float*)(void*)columns;
+		float* cy = cx + SMALL_POLYTOPE;
+		float* cz = cy + SMALL_POLYTOPE;
+		float* low = cz + SMALL_POLYTOPE;
 #else
-		cdReal nx[SMALL_POLYTOPE], ny[SMALL_POLYTOPE], nz[SMALL_POLYTOPE], low[SMALL_POLYTOPE];
+		cdReal cx[SMALL_POLYTOPE], cy[SMALL_POLYTOPE], cz[SMALL_POLYTOPE], low[SMALL_POLYTOPE];
 #endif
+		const cdReal *nx = cx, *ny = cy, *nz = cz;
+		if (p->query != NULL)
+		{
+			/* The hull's own columns (the same values). */
+			nx = cd3HullQueryFaces(p->query);
+			ny = nx + padded;
+			nz = ny + padded;
+		}
 		for (int f = 0; f < padded; ++f)
 		{
-			cd3Vec n = f < faceCount ? p->planes[f].normal : CD3_VEC_ZERO;
-			nx[f] = n.x;
-			ny[f] = n.y;
-			nz[f] = n.z;
+			if (p->query == NULL)
+			{
+				cd3Vec n = f < faceCount ? p->planes[f].normal : CD3_VEC_ZERO;
+				cx[f] = n.x;
+				cy[f] = n.y;
+				cz[f] = n.z;
+			}
 			low[f] = CD_REAL_MAX;
 		}
 		for (int i = 0; i < q->vertexCount; ++i)
@@ -436,61 +452,144 @@ static void SideMasks(const cdReal* x, const cdReal* y, const cdReal* z, int pad
 /* The edges of A (bits of its cached arcs) whose first face is among `faces` (bits of A's faces)
  * in the low 32 bits, those whose second face is in the high 32, from tables of 16 entries per 4
  * faces (unused tables map every index to no edge). */
-static inline uint64_t EdgesOfFaces(const uint64_t (*table)[16], uint32_t faces)
+static inline uint64_t EdgesOfFaces(const uint64_t* const* table, uint32_t faces)
 {
 	return table[0][faces & 15u] | table[1][(faces >> 4) & 15u] | table[2][(faces >> 8) & 15u] |
 		   table[3][(faces >> 12) & 15u];
 }
 
-/* A's side of the masked test, built once per query. */
+/* EdgesOfFaces' tables of `tableCount` groups of 4 faces for the edges `unique` (half-edge
+ * indices; at most MASK_ARCS). */
+static void BuildFaceTables(const cd3HullHalfEdge* edges, const int32_t* unique, int count, int tableCount,
+							uint64_t (*tables)[16])
+{
+	uint64_t of[MASK_FACES];
+	for (int g = 0; g < MASK_FACES; ++g)
+	{
+		of[g] = 0u;
+	}
+	for (int k = 0; k < count; ++k)
+	{
+		const cd3HullHalfEdge* e = &edges[unique[k]];
+		of[e->face] |= (uint64_t)1u << k;
+		of[edges[e->twin].face] |= (uint64_t)1u << (k + 32);
+	}
+	for (int i = 0; i < tableCount; ++i)
+	{
+		tables[i][0] = 0u;
+		for (unsigned v = 1u; v < 16u; ++v)
+		{
+			tables[i][v] = tables[i][v & (v - 1u)] | of[4 * i + cd3LowestBit(v)];
+		}
+	}
+}
+
+static const uint64_t NO_EDGES[16] = {0u};
+
+/* A's side of the masked test, built once per query (or read from the hull's query data). */
 typedef struct ArcMasks
 {
 #if CD3_SUPPORT_SSE
 	__m128 align;
 #endif
-	cdReal fx[MASK_FACES], fy[MASK_FACES], fz[MASK_FACES]; /* A's face normals, zero padded */
-	uint64_t faceEdges[MASK_FACES / 4][16];				   /* EdgesOfFaces' tables */
+	cdReal ownX[MASK_FACES], ownY[MASK_FACES], ownZ[MASK_FACES]; /* A's face normals, zero padded */
+	uint64_t ownTables[MASK_FACES / 4][16];
+	const cdReal *fx, *fy, *fz;				 /* A's face normals as columns, zero padded */
+	const uint64_t* faceEdges[MASK_FACES / 4]; /* EdgesOfFaces' tables */
 	int facePadded;
 	uint32_t positive[SMALL_POLYTOPE], negative[SMALL_POLYTOPE]; /* B's faces against A's arc planes */
 } ArcMasks;
 
-static void InitArcMasks(ArcMasks* m, const cd3Polytope* a, const cd3Polytope* b, const EdgeData* cache,
-						 int cached, const ArcColumns* arcs, const cd3Vec* carriedNormals)
+/* `unique`: A's cached edges' half-edge indices; arcX, arcY, arcZ: their arcs' columns, padded. */
+static void InitArcMasks(ArcMasks* m, const cd3Polytope* a, const cd3Polytope* b, const int32_t* unique,
+						 int cached, const cdReal* arcX, const cdReal* arcY, const cdReal* arcZ,
+						 const cd3Vec* carriedNormals)
 {
 	int faces = a->faceCount;
 	m->facePadded = (faces + 3) & ~3;
-	uint64_t of[MASK_FACES];
-	for (int g = 0; g < MASK_FACES; ++g)
+	if (a->query != NULL)
 	{
-		cd3Vec n = g < faces ? a->planes[g].normal : CD3_VEC_ZERO;
-		if (g < m->facePadded)
+		m->fx = cd3HullQueryFaces(a->query);
+		m->fy = m->fx + m->facePadded;
+		m->fz = m->fy + m->facePadded;
+		const uint64_t(*tables)[16] = cd3HullQueryTables(a->query);
+		for (int i = 0; i < MASK_FACES / 4; ++i)
 		{
-			m->fx[g] = n.x;
-			m->fy[g] = n.y;
-			m->fz[g] = n.z;
+			m->faceEdges[i] = 4 * i < m->facePadded ? tables[i] : NO_EDGES;
 		}
-		of[g] = 0u;
 	}
-	for (int k = 0; k < cached; ++k)
+	else
 	{
-		const cd3HullHalfEdge* e = &a->edges[cache[k].index];
-		of[e->face] |= (uint64_t)1u << k;
-		of[a->edges[e->twin].face] |= (uint64_t)1u << (k + 32);
-	}
-	for (int i = 0; i < MASK_FACES / 4; ++i)
-	{
-		m->faceEdges[i][0] = 0u;
-		for (unsigned v = 1u; v < 16u; ++v)
+		for (int g = 0; g < m->facePadded; ++g)
 		{
-			m->faceEdges[i][v] = m->faceEdges[i][v & (v - 1u)] | of[4 * i + cd3LowestBit(v)];
+			cd3Vec n = g < faces ? a->planes[g].normal : CD3_VEC_ZERO;
+			m->ownX[g] = n.x;
+			m->ownY[g] = n.y;
+			m->ownZ[g] = n.z;
+		}
+		m->fx = m->ownX;
+		m->fy = m->ownY;
+		m->fz = m->ownZ;
+		BuildFaceTables(a->edges, unique, cached, MASK_FACES / 4, m->ownTables);
+		for (int i = 0; i < MASK_FACES / 4; ++i)
+		{
+			m->faceEdges[i] = m->ownTables[i];
 		}
 	}
 	int padded = (cached + 3) & ~3;
 	for (int f = 0; f < b->faceCount; ++f)
 	{
-		SideMasks(arcs->bxax, arcs->bxay, arcs->bxaz, padded, carriedNormals[f], &m->positive[f],
-				  &m->negative[f]);
+		SideMasks(arcX, arcY, arcZ, padded, carriedNormals[f], &m->positive[f], &m->negative[f]);
 	}
+}
+
+size_t cd3HullQueryDataSize(int halfEdgeCount, int faceCount)
+{
+	if (halfEdgeCount / 2 > CD3_HULL_QUERY_EDGES || faceCount > CD3_HULL_QUERY_FACES)
+	{
+		return 0;
+	}
+	size_t edgePadded = (size_t)((halfEdgeCount / 2 + 3) & ~3), facePadded = (size_t)((faceCount + 3) & ~3);
+	return sizeof(cd3HullQueryData) + 3 * (edgePadded + facePadded) * sizeof(cdReal) +
+		   facePadded / 4 * 16 * sizeof(uint64_t) + edgePadded * sizeof(int32_t);
+}
+
+void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
+{
+	size_t size = cd3HullQueryDataSize(hull->edgeCount, hull->faceCount);
+	memset(memory, 0, size);
+	cd3HullQueryData* q = (cd3HullQueryData*)memory;
+	q->edgeCount = hull->edgeCount / 2;
+	q->edgePadded = (q->edgeCount + 3) & ~3;
+	q->faceCount = hull->faceCount;
+	q->facePadded = (hull->faceCount + 3) & ~3;
+	int32_t* unique = (int32_t*)(void*)cd3HullQueryEdges(q);
+	int count = 0;
+	for (int i = 0; i < hull->edgeCount && count < q->edgeCount; ++i)
+	{
+		if (hull->edges[i].twin > i)
+		{
+			unique[count++] = i;
+		}
+	}
+	cdReal* arcs = (cdReal*)(void*)cd3HullQueryArcs(q);
+	for (int k = 0; k < count; ++k)
+	{
+		const cd3HullHalfEdge* e = &hull->edges[unique[k]];
+		cd3Vec bxa = cd3Cross(hull->planes[hull->edges[e->twin].face].normal, hull->planes[e->face].normal);
+		arcs[k] = bxa.x;
+		arcs[q->edgePadded + k] = bxa.y;
+		arcs[2 * q->edgePadded + k] = bxa.z;
+	}
+	cdReal* faces = (cdReal*)(void*)cd3HullQueryFaces(q);
+	for (int f = 0; f < hull->faceCount; ++f)
+	{
+		faces[f] = hull->planes[f].normal.x;
+		faces[q->facePadded + f] = hull->planes[f].normal.y;
+		faces[2 * q->facePadded + f] = hull->planes[f].normal.z;
+	}
+	BuildFaceTables(hull->edges, unique, count, q->facePadded / 4,
+					(uint64_t(*)[16])(void*)cd3HullQueryTables(q));
 }
 
 /* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c). */
@@ -749,38 +848,74 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	pending.bestOrder = -1;
 	int cached = 0;
 	bool useCache = a->edgeAxisCount / 2 <= EDGE_CACHE;
-	if (useCache)
-	{
-		for (int i = 0; i < a->edgeAxisCount; ++i)
-		{
-			if (a->edges[i].twin > i && cached < EDGE_CACHE)
-			{
-				EdgeData e = MakeEdgeData(a, i);
-				cache[cached] = e;
-				arcs.nax[cached] = e.na.x;
-				arcs.nay[cached] = e.na.y;
-				arcs.naz[cached] = e.na.z;
-				arcs.nbx[cached] = e.nb.x;
-				arcs.nby[cached] = e.nb.y;
-				arcs.nbz[cached] = e.nb.z;
-				arcs.bxax[cached] = e.bxa.x;
-				arcs.bxay[cached] = e.bxa.y;
-				arcs.bxaz[cached] = e.bxa.z;
-				++cached;
-			}
-		}
-		/* Zero arcs up to a multiple of 4: their products are zero, so they never pass. */
-		for (int k = cached; (k & 3) != 0; ++k)
-		{
-			arcs.nax[k] = arcs.nay[k] = arcs.naz[k] = CD_R(0.0);
-			arcs.nbx[k] = arcs.nby[k] = arcs.nbz[k] = CD_R(0.0);
-			arcs.bxax[k] = arcs.bxay[k] = arcs.bxaz[k] = CD_R(0.0);
-		}
-	}
 	/* B's vertices and reversed face normals in A's frame, once each rather than once per edge end
 	 * and edge side (the same values). */
 	cd3Vec carriedVertices[SMALL_POLYTOPE], carriedNormals[SMALL_POLYTOPE];
 	bool carry = b->vertexCount <= SMALL_POLYTOPE && b->faceCount <= SMALL_POLYTOPE;
+	/* A's edges (the half-edges below their twins): the hull's list, or listed here without
+	 * branches (which half-edge of a pair comes first follows no pattern the processor learns). */
+	int32_t listA[EDGE_CACHE];
+	const int32_t* uniqueA = listA;
+	if (a->query != NULL)
+	{
+		uniqueA = cd3HullQueryEdges(a->query);
+		cached = a->query->edgeCount;
+	}
+	else
+	{
+		for (int i = 0; useCache && i < a->edgeAxisCount && cached < EDGE_CACHE; ++i)
+		{
+			listA[cached] = i;
+			cached += a->edges[i].twin > i;
+		}
+	}
+	bool masked = useCache && carry && cached <= MASK_ARCS && a->faceCount <= MASK_FACES;
+	/* The arcs' columns: the masked test reads only cross(nb, na), which a hull keeps. */
+	bool ownArcs = useCache && !(masked && a->query != NULL);
+	const cdReal *arcX = arcs.bxax, *arcY = arcs.bxay, *arcZ = arcs.bxaz;
+	if (!ownArcs && useCache)
+	{
+		arcX = cd3HullQueryArcs(a->query);
+		arcY = arcX + a->query->edgePadded;
+		arcZ = arcY + a->query->edgePadded;
+	}
+	for (int k = 0; useCache && k < cached; ++k)
+	{
+		EdgeData e;
+		if (ownArcs)
+		{
+			e = MakeEdgeData(a, uniqueA[k]);
+			arcs.nax[k] = e.na.x;
+			arcs.nay[k] = e.na.y;
+			arcs.naz[k] = e.na.z;
+			arcs.nbx[k] = e.nb.x;
+			arcs.nby[k] = e.nb.y;
+			arcs.nbz[k] = e.nb.z;
+			arcs.bxax[k] = e.bxa.x;
+			arcs.bxay[k] = e.bxa.y;
+			arcs.bxaz[k] = e.bxa.z;
+		}
+		else
+		{
+			/* MakeEdgeData with the hull's cross(nb, na) (the same value). */
+			const cd3HullHalfEdge* ea = &a->edges[uniqueA[k]];
+			e.na = a->planes[ea->face].normal;
+			e.nb = a->planes[a->edges[ea->twin].face].normal;
+			e.bxa = cd3MakeVec(arcX[k], arcY[k], arcZ[k]);
+			e.origin = a->vertices[ea->origin];
+			e.direction = cd3Sub(a->vertices[a->edges[ea->twin].origin], e.origin);
+			e.lengthSquared = cd3LengthSquared(e.direction);
+			e.index = uniqueA[k];
+		}
+		cache[k] = e;
+	}
+	/* Zero arcs up to a multiple of 4: their products are zero, so they never pass. */
+	for (int k = cached; ownArcs && (k & 3) != 0; ++k)
+	{
+		arcs.nax[k] = arcs.nay[k] = arcs.naz[k] = CD_R(0.0);
+		arcs.nbx[k] = arcs.nby[k] = arcs.nbz[k] = CD_R(0.0);
+		arcs.bxax[k] = arcs.bxay[k] = arcs.bxaz[k] = CD_R(0.0);
+	}
 	for (int i = 0; carry && i < b->vertexCount; ++i)
 	{
 		carriedVertices[i] = cd3TransformPoint(relB, b->vertices[i]);
@@ -790,13 +925,16 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		carriedNormals[f] = cd3Neg(cd3RotateVector(relB.q, b->planes[f].normal));
 	}
 	ArcMasks masks;
-	bool masked = useCache && carry && cached <= MASK_ARCS && a->faceCount <= MASK_FACES;
 	if (masked)
 	{
-		InitArcMasks(&masks, a, b, cache, cached, &arcs, carriedNormals);
+		InitArcMasks(&masks, a, b, uniqueA, cached, arcX, arcY, arcZ, carriedNormals);
 	}
-	for (int j = 0; j < b->edgeAxisCount; ++j)
+	/* B's edges: the hull's list, or every half-edge above its twin. */
+	const int32_t* uniqueB = b->query != NULL ? cd3HullQueryEdges(b->query) : NULL;
+	int edgesB = b->query != NULL ? b->query->edgeCount : b->edgeAxisCount;
+	for (int u = 0; u < edgesB; ++u)
 	{
+		int j = uniqueB != NULL ? uniqueB[u] : u;
 		const cd3HullHalfEdge* eb = &b->edges[j];
 		if (eb->twin < j)
 		{

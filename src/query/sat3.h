@@ -5,6 +5,45 @@
 
 #include "collide/geometry3.h"
 
+/* cd3Hull.queryData: a header, then the columns (cdReal) of the unique edges' arcs cross(nb, na)
+ * (x, y, z, each edgePadded entries), of the face normals (x, y, z, each facePadded entries), then
+ * EdgesOfFaces' tables (facePadded / 4 of 16 uint64_t), then the unique edges' half-edge indices
+ * (the half-edge below its twin, in index order; edgePadded int32_t). Padding is zero. */
+#define CD3_HULL_QUERY_EDGES 32
+#define CD3_HULL_QUERY_FACES 16
+
+typedef struct cd3HullQueryData
+{
+	int32_t edgeCount, edgePadded, faceCount, facePadded;
+} cd3HullQueryData;
+
+static inline const cdReal* cd3HullQueryArcs(const cd3HullQueryData* q)
+{
+	return (const cdReal*)(const void*)(q + 1);
+}
+
+static inline const cdReal* cd3HullQueryFaces(const cd3HullQueryData* q)
+{
+	return cd3HullQueryArcs(q) + 3 * q->edgePadded;
+}
+
+static inline const uint64_t (*cd3HullQueryTables(const cd3HullQueryData* q))[16]
+{
+	return (const uint64_t (*)[16])(const void*)(cd3HullQueryFaces(q) + 3 * q->facePadded);
+}
+
+static inline const int32_t* cd3HullQueryEdges(const cd3HullQueryData* q)
+{
+	return (const int32_t*)(const void*)(cd3HullQueryTables(q) + q->facePadded / 4);
+}
+
+/* Bytes of the query data of a hull with these counts (a multiple of 16), 0 when it gets none. */
+size_t cd3HullQueryDataSize(int halfEdgeCount, int faceCount);
+
+/* Fills `memory` (cd3HullQueryDataSize bytes, 16-byte aligned) from the hull's edges, planes and
+ * counts, which must be valid. */
+void cd3BuildHullQueryData(const cd3Hull* hull, void* memory);
+
 /* A polytope placed in the world: the half-edge data of a hull in its local frame plus the
  * transform. Boxes and triangles keep their vertices and planes in the storage arrays, so a
  * polytope must not be copied after it is initialized. A triangle is flat: two faces (front and
@@ -19,6 +58,7 @@ typedef struct cd3Polytope
 	int edgeAxisCount; /* half-edges the edge axes come from: 1 for a collinear triangle */
 	cd3Vec centroid;   /* local, strictly inside unless flat */
 	cd3Transform transform;
+	const cd3HullQueryData* query; /* the hull's precomputed data, or NULL */
 	bool flat;
 	cdReal size; /* diagonal of the local bounds: the scale of tolerances */
 	cd3Shape shape;
