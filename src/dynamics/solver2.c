@@ -10,7 +10,8 @@
  * the step (the stepping thread and one task per further worker, enqueued once per step) walks the
  * same list: it takes blocks of the current stage with an atomic counter until none is left, adds
  * the number it finished to the stage's count, then waits until every block of the stage is
- * finished before going on to the next. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
+ * finished before going on to the next (cdSyncCount: a short spin, then asleep, so that a thread
+ * descheduled in the middle of a block can take over the waiting thread's processor). A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
  * stepping thread alone. A thread only ever waits for blocks that a running thread has taken, never
  * for another thread to arrive, so the step finishes whatever the task system does with the
  * tasks (run them late, inline or one after another). Each block writes only its own items (a
@@ -257,7 +258,9 @@ typedef struct cd2Stage
 	/* A cache line per stage (the list is placed on a line boundary): the threads' writes to one
 	 * stage's counters do not evict the next stage's fields from the other threads' caches. */
 	_Alignas(64) cd2StageCounter claimed; /* blocks taken */
-	cd2StageCounter done; /* blocks finished (each thread adds its count once it has no more) */
+#if CD2_STAGE_ATOMICS
+	cdSyncCount done; /* blocks finished (each thread adds its count once it has no more) */
+#endif
 	cd2StageKind kind;
 	bool useBias;
 	int first; /* the first item (a colour's first wide block) */
@@ -293,10 +296,9 @@ static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, in
 	}
 #if CD2_STAGE_ATOMICS
 	atomic_init(&stage->claimed, 0);
-	atomic_init(&stage->done, 0);
+	cdSyncCount_Init(&stage->done, 0);
 #else
 	stage->claimed = 0;
-	stage->done = 0;
 #endif
 	stage->kind = kind;
 	stage->useBias = useBias;
@@ -439,17 +441,13 @@ static void cd2RunStages(const cd2StageList* list)
 		/* One addition per thread and stage (a thread that took nothing need not write). */
 		if (finished > 0)
 		{
-			atomic_fetch_add_explicit(&stage->done, finished, memory_order_release);
+			cdSyncCount_Add(&stage->done, finished);
 		}
 		if (finished == stage->blockCount)
 		{
 			continue; /* all of it on this thread: nothing to wait for */
 		}
-		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount;
-			 ++spin)
-		{
-			cdThreadPool_Wait(spin);
-		}
+		cdSyncCount_AwaitAtLeast(&stage->done, stage->blockCount);
 #else
 		cd2ExecuteStage(list, stage, 0, stage->itemCount);
 #endif
