@@ -93,6 +93,9 @@ void cdSyncCount_AwaitAtLeast(cdSyncCount* count, int target)
 #endif
 
 #define CD_POOL_MAX_THREADS 64
+#ifndef CD_POOL_BLOCKS_PER_WORKER
+#define CD_POOL_BLOCKS_PER_WORKER 16
+#endif
 /* How long a worker keeps looking for the next task before it sleeps, in nanoseconds. The tasks of
  * one step follow each other within microseconds, while waking a sleeping thread takes tens of
  * microseconds (more in a virtual machine); between steps the workers sleep. */
@@ -343,8 +346,9 @@ void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, vo
 	}
 	int workers = pool->threadCount + 1;
 	int blockSize = minRange > 1 ? minRange : 1;
-	/* A few blocks per worker, so that a slow thread does not hold the others up. */
-	int even = (itemCount + 4 * workers - 1) / (4 * workers);
+	/* Many blocks per worker (a claim costs one atomic addition), so that a slow thread or a
+	 * range of costly items (new contacts among recycled ones) does not hold the others up. */
+	int even = (itemCount + CD_POOL_BLOCKS_PER_WORKER * workers - 1) / (CD_POOL_BLOCKS_PER_WORKER * workers);
 	if (even > blockSize)
 	{
 		blockSize = even;
