@@ -1,8 +1,12 @@
 /* collide: the built-in task pool (see thread_pool.h). A task is cut into blocks of at least
  * minRange items; the workers and the finishing thread take blocks with an atomic counter. Which
  * thread runs which block varies; the callers' tasks are written so that the results do not
- * depend on it. Workers look for the next task for a short while before they sleep, and the
- * finishing thread waits for them by spinning: within a step no thread sleeps. */
+ * depend on it. Workers look for the next task for a short while before they sleep; the finishing
+ * thread waits for the blocks it did not run with a cdSyncCount (a short spin, then asleep until
+ * the last block is counted). */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE /* syscall (futex) */
+#endif
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 199309L
 #undef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
@@ -50,6 +54,26 @@ void cdThreadPool_Wait(int spin)
 	(void)spin;
 }
 
+#if !defined(__STDC_NO_ATOMICS__)
+void cdSyncCount_Init(cdSyncCount* count, int value)
+{
+	atomic_init(&count->value, value);
+	atomic_init(&count->sleepers, 0);
+}
+
+void cdSyncCount_Add(cdSyncCount* count, int n)
+{
+	atomic_fetch_add_explicit(&count->value, n, memory_order_release);
+}
+
+void cdSyncCount_AwaitAtLeast(cdSyncCount* count, int target)
+{
+	while (atomic_load_explicit(&count->value, memory_order_acquire) < target)
+	{
+	}
+}
+#endif
+
 #else
 
 #include <pthread.h>
@@ -61,8 +85,17 @@ void cdThreadPool_Wait(int spin)
 #endif
 #include <stdlib.h>
 #include <string.h>
+#if defined(__linux__)
+#include <limits.h>
+#include <linux/futex.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 #define CD_POOL_MAX_THREADS 64
+#ifndef CD_POOL_BLOCKS_PER_WORKER
+#define CD_POOL_BLOCKS_PER_WORKER 16
+#endif
 /* How long a worker keeps looking for the next task before it sleeps, in nanoseconds. The tasks of
  * one step follow each other within microseconds, while waking a sleeping thread takes tens of
  * microseconds (more in a virtual machine); between steps the workers sleep. */
@@ -92,6 +125,7 @@ struct cdThreadPool
 	int itemCount, blockSize, blockCount;
 	atomic_int active; /* workers (not the finishing thread) working on the task */
 	atomic_int nextBlock;
+	cdSyncCount finished; /* blocks finished: each thread adds its count once it finds no more */
 };
 
 static void cdPoolPause(void)
@@ -108,19 +142,25 @@ static uint64_t cdPoolNow(void)
 	return (uint64_t)t.tv_sec * 1000000000u + (uint64_t)t.tv_nsec;
 }
 
-/* Runs blocks of the current task until none is left. */
+/* Runs blocks of the current task until none is left, then counts them finished. */
 static void cdPoolWork(cdThreadPool* pool, uint32_t workerIndex)
 {
+	int finished = 0;
 	for (;;)
 	{
 		int block = atomic_fetch_add_explicit(&pool->nextBlock, 1, memory_order_relaxed);
 		if (block >= pool->blockCount)
 		{
-			return;
+			break;
 		}
 		int start = block * pool->blockSize;
 		int end = start + pool->blockSize < pool->itemCount ? start + pool->blockSize : pool->itemCount;
 		pool->task(start, end, workerIndex, pool->taskContext);
+		++finished;
+	}
+	if (finished > 0)
+	{
+		cdSyncCount_Add(&pool->finished, finished);
 	}
 }
 
@@ -220,6 +260,7 @@ cdThreadPool* cdThreadPool_Create(int workerCount)
 	atomic_init(&pool->generation, 0);
 	atomic_init(&pool->active, 0);
 	atomic_init(&pool->nextBlock, 0);
+	cdSyncCount_Init(&pool->finished, 0);
 	int threads = workerCount - 1 < CD_POOL_MAX_THREADS ? workerCount - 1 : CD_POOL_MAX_THREADS;
 	for (int i = 0; i < threads; ++i)
 	{
@@ -285,6 +326,7 @@ static void* cdPoolStart(cdThreadPool* pool, cdTaskCallback* task, int itemCount
 	pool->blockSize = blockSize;
 	pool->blockCount = (itemCount + blockSize - 1) / blockSize;
 	atomic_store_explicit(&pool->nextBlock, 0, memory_order_relaxed);
+	atomic_store_explicit(&pool->finished.value, 0, memory_order_relaxed);
 	atomic_fetch_add_explicit(&pool->generation, 1, memory_order_release);
 	if (pool->sleepers > 0)
 	{
@@ -304,8 +346,9 @@ void* cdThreadPool_Enqueue(cdTaskCallback* task, int itemCount, int minRange, vo
 	}
 	int workers = pool->threadCount + 1;
 	int blockSize = minRange > 1 ? minRange : 1;
-	/* A few blocks per worker, so that a slow thread does not hold the others up. */
-	int even = (itemCount + 4 * workers - 1) / (4 * workers);
+	/* Many blocks per worker (a claim costs one atomic addition), so that a slow thread or a
+	 * range of costly items (new contacts among recycled ones) does not hold the others up. */
+	int even = (itemCount + CD_POOL_BLOCKS_PER_WORKER * workers - 1) / (CD_POOL_BLOCKS_PER_WORKER * workers);
 	if (even > blockSize)
 	{
 		blockSize = even;
@@ -348,10 +391,69 @@ void cdThreadPool_Finish(void* userTask, void* userContext)
 	{
 		return;
 	}
-	/* Once this thread finds no block left, every block has been taken: by it (done) or by a
-	 * worker counted in active until it has finished its blocks. */
+	/* Every block finished (a worker descheduled in the middle of one: this thread sleeps, see
+	 * cdSyncCount), then until the workers have left the task (right after they counted their
+	 * blocks), so that the next task may change its fields. */
 	cdPoolWork(pool, 0);
+	cdSyncCount_AwaitAtLeast(&pool->finished, pool->blockCount);
 	cdPoolAwaitIdle(pool);
+}
+
+/* Turns of a cdSyncCount wait spent pausing before the thread sleeps (a turn is two pauses, 20 to
+ * 150 ns each depending on the processor): some tens of microseconds, several blocks' worth. */
+#define CD_SYNC_SPINS 512
+
+void cdSyncCount_Init(cdSyncCount* count, int value)
+{
+	atomic_init(&count->value, value);
+	atomic_init(&count->sleepers, 0);
+}
+
+void cdSyncCount_Add(cdSyncCount* count, int n)
+{
+	/* Sequentially consistent, with the sleepers' count below and in the wait: either the waiter
+	 * sees the new value, or this sees the waiter and wakes it. */
+	atomic_fetch_add(&count->value, n);
+#if defined(__linux__)
+	if (atomic_load(&count->sleepers) > 0)
+	{
+		syscall(SYS_futex, (int*)&count->value, FUTEX_WAKE_PRIVATE, INT_MAX, NULL, NULL, 0);
+	}
+#endif
+}
+
+void cdSyncCount_AwaitAtLeast(cdSyncCount* count, int target)
+{
+	for (int spin = 0; spin < CD_SYNC_SPINS; ++spin)
+	{
+		if (atomic_load_explicit(&count->value, memory_order_acquire) >= target)
+		{
+			return;
+		}
+		cdPoolPause();
+		cdPoolPause();
+	}
+#if defined(__linux__)
+	atomic_fetch_add(&count->sleepers, 1);
+	for (;;)
+	{
+		int value = atomic_load(&count->value);
+		if (value >= target)
+		{
+			break;
+		}
+		/* Sleeps unless the value has changed since it was read (the protocol above misses no
+		 * wake-up; the timeout is only a safety net). */
+		struct timespec timeout = {0, 1000000};
+		syscall(SYS_futex, (int*)&count->value, FUTEX_WAIT_PRIVATE, value, &timeout, NULL, 0);
+	}
+	atomic_fetch_sub_explicit(&count->sleepers, 1, memory_order_relaxed);
+#else
+	while (atomic_load_explicit(&count->value, memory_order_acquire) < target)
+	{
+		sched_yield();
+	}
+#endif
 }
 
 #endif

@@ -25,4 +25,25 @@ void* cdThreadPool_EnqueueEach(cdTaskCallback* task, int itemCount, void* taskCo
  * the first turns pause the processor briefly, the later ones give it to another thread. */
 void cdThreadPool_Wait(int spin);
 
+#if !defined(__STDC_NO_ATOMICS__)
+#include <stdatomic.h>
+/* A count that threads add to and wait on: the end of a stage of the step, a number of finished
+ * blocks. A waiting thread pauses the processor for a short while (another thread's block takes
+ * microseconds), then, where the system has them (Linux futexes), sleeps until an addition wakes
+ * it, so that its processor is free: a thread descheduled in the middle of a block (its processor
+ * taken by another program) can then move there and finish, instead of the whole step waiting for
+ * its processor to come back. Elsewhere the wait gives its processor away turn by turn. */
+typedef struct cdSyncCount
+{
+	atomic_int value;
+	atomic_int sleepers;
+} cdSyncCount;
+
+void cdSyncCount_Init(cdSyncCount* count, int value);
+/* Adds n (release: what this thread wrote before is seen by a thread whose wait it ends). */
+void cdSyncCount_Add(cdSyncCount* count, int n);
+/* Returns once the value is at least target (acquire). */
+void cdSyncCount_AwaitAtLeast(cdSyncCount* count, int target);
+#endif
+
 #endif

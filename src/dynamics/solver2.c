@@ -10,7 +10,10 @@
  * the step (the stepping thread and one task per further worker, enqueued once per step) walks the
  * same list: it takes blocks of the current stage with an atomic counter until none is left, adds
  * the number it finished to the stage's count, then waits until every block of the stage is
- * finished before going on to the next. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
+ * finished before going on to the next (cdSyncCount: a short spin, then asleep, so that a thread
+ * descheduled in the middle of a block can take over the waiting thread's processor). Consecutive
+ * stages of one block each (the last small colours, the overflow colour) are one block of one
+ * stage, run by one thread in list order: one wait instead of one per stage. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
  * stepping thread alone. A thread only ever waits for blocks that a running thread has taken, never
  * for another thread to arrive, so the step finishes whatever the task system does with the
  * tasks (run them late, inline or one after another). Each block writes only its own items (a
@@ -257,11 +260,18 @@ typedef struct cd2Stage
 	/* A cache line per stage (the list is placed on a line boundary): the threads' writes to one
 	 * stage's counters do not evict the next stage's fields from the other threads' caches. */
 	_Alignas(64) cd2StageCounter claimed; /* blocks taken */
-	cd2StageCounter done; /* blocks finished (each thread adds its count once it has no more) */
+#if CD2_STAGE_ATOMICS
+	cdSyncCount done; /* blocks finished (each thread adds its count once it has no more) */
+#endif
 	cd2StageKind kind;
 	bool useBias;
 	int first; /* the first item (a colour's first wide block) */
 	int itemCount, blockSize, blockCount;
+	/* A stage of one block that starts a run of such stages: the run's length (the whole run is
+	 * one block of this stage, done by one thread in list order, one wait instead of one per
+	 * stage: the small colours at the end of the colouring, the overflow colour, a few joints);
+	 * 1 otherwise. */
+	int runLength;
 } cd2Stage;
 
 typedef struct cd2StageList
@@ -293,10 +303,9 @@ static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, in
 	}
 #if CD2_STAGE_ATOMICS
 	atomic_init(&stage->claimed, 0);
-	atomic_init(&stage->done, 0);
+	cdSyncCount_Init(&stage->done, 0);
 #else
 	stage->claimed = 0;
-	stage->done = 0;
 #endif
 	stage->kind = kind;
 	stage->useBias = useBias;
@@ -304,6 +313,25 @@ static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, in
 	stage->itemCount = itemCount;
 	stage->blockSize = blockSize;
 	stage->blockCount = (itemCount + blockSize - 1) / blockSize;
+	stage->runLength = 1;
+}
+
+/* Joins each run of consecutive one-block stages into one (see runLength). */
+static void cd2JoinSmallStages(cd2StageList* list)
+{
+	for (int s = 0; s < list->stageCount;)
+	{
+		int end = s + 1;
+		if (list->stages[s].blockCount == 1)
+		{
+			while (end < list->stageCount && list->stages[end].blockCount == 1)
+			{
+				++end;
+			}
+		}
+		list->stages[s].runLength = end - s;
+		s = end;
+	}
 }
 
 static void cd2AddWideStages(cd2StageList* list, cd2StageKind kind, bool useBias)
@@ -407,14 +435,45 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	}
 }
 
+/* The stages of a run (runLength), each whole, in order. Every thread reads the same restitution
+ * flag: it was set before the stages that set it were seen finished. */
+static void cd2ExecuteRun(const cd2StageList* list, const cd2Stage* first)
+{
+	for (int k = 0; k < first->runLength; ++k)
+	{
+		const cd2Stage* stage = first + k;
+		if (!cd2StageSkipped(list, stage))
+		{
+			cd2ExecuteStage(list, stage, 0, stage->itemCount);
+		}
+	}
+}
+
 /* Walks every stage in order, taking blocks while there are some, then waiting for the blocks that
  * other threads took (release on finishing a block, acquire on seeing them all finished: the next
- * stage reads what this one wrote). */
+ * stage reads what this one wrote). A run of one-block stages is one block. */
 static void cd2RunStages(const cd2StageList* list)
 {
-	for (int s = 0; s < list->stageCount; ++s)
+	for (int s = 0; s < list->stageCount; s += list->stages[s].runLength)
 	{
 		cd2Stage* stage = list->stages + s;
+		if (stage->runLength > 1)
+		{
+#if CD2_STAGE_ATOMICS
+			if (atomic_fetch_add_explicit(&stage->claimed, 1, memory_order_relaxed) == 0)
+			{
+				cd2ExecuteRun(list, stage);
+				cdSyncCount_Add(&stage->done, 1);
+			}
+			else
+			{
+				cdSyncCount_AwaitAtLeast(&stage->done, 1);
+			}
+#else
+			cd2ExecuteRun(list, stage);
+#endif
+			continue;
+		}
 		/* Every worker reads the same flag here: it was set before the stages that set it were
 		 * seen finished. */
 		if (cd2StageSkipped(list, stage))
@@ -439,17 +498,13 @@ static void cd2RunStages(const cd2StageList* list)
 		/* One addition per thread and stage (a thread that took nothing need not write). */
 		if (finished > 0)
 		{
-			atomic_fetch_add_explicit(&stage->done, finished, memory_order_release);
+			cdSyncCount_Add(&stage->done, finished);
 		}
 		if (finished == stage->blockCount)
 		{
 			continue; /* all of it on this thread: nothing to wait for */
 		}
-		for (int spin = 0; atomic_load_explicit(&stage->done, memory_order_acquire) < stage->blockCount;
-			 ++spin)
-		{
-			cdThreadPool_Wait(spin);
-		}
+		cdSyncCount_AwaitAtLeast(&stage->done, stage->blockCount);
 #else
 		cd2ExecuteStage(list, stage, 0, stage->itemCount);
 #endif
@@ -841,6 +896,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 				context.overflowStart, false);
 	cd2AddStage(&list, CD2_STAGE_STORE_JOINTS, context.jointCount, 64, 0, false);
 	cd2AddStage(&list, CD2_STAGE_FINALIZE_BODIES, context.bodyCount, 64, 0, false);
+
+	cd2JoinSmallStages(&list);
 
 	context.finalFlags = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1);
 	if (context.finalFlags == NULL)
