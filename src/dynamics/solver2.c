@@ -13,11 +13,11 @@
  * finished before going on to the next (cdSyncCount: a short spin, then asleep, so that a thread
  * descheduled in the middle of a block can take over the waiting thread's processor). Consecutive
  * stages of one block each (the last small colours, the overflow colour) are one block of one
- * stage, run by one thread in list order: one wait instead of one per stage. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the
- * stepping thread alone. A thread only ever waits for blocks that a running thread has taken, never
- * for another thread to arrive, so the step finishes whatever the task system does with the
- * tasks (run them late, inline or one after another). Each block writes only its own items (a
- * colour's blocks share no movable body), so the results are the same bits for any worker count.
+ * stage, run by one thread in list order: one wait instead of one per stage. A small solve
+ * (CD2_PARALLEL_MIN_SOLVE) runs the list on the stepping thread alone. A thread only ever waits for blocks
+ * that a running thread has taken, never for another thread to arrive, so the step finishes whatever the task
+ * system does with the tasks (run them late, inline or one after another). Each block writes only its own
+ * items (a colour's blocks share no movable body), so the results are the same bits for any worker count.
  *
  * The last stage, finalize, does per body all that reads only the body itself and static geometry:
  * transform, sleep time, continuous collision of a fast non-bullet, the shapes' tight boxes, the

@@ -1102,7 +1102,8 @@ static cdResult BuildHull(const Builder* b, const Merged* m, const cd3Vec* input
 	hull->bounds = bounds;
 	if (queryDataSize > 0)
 	{
-		void* queryData = memory + headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize + columnsSize;
+		void* queryData =
+			memory + headerSize + verticesSize + edgesSize + faceEdgesSize + planesSize + columnsSize;
 		cd3BuildHullQueryData(hull, queryData);
 		hull->queryData = queryData;
 	}

@@ -494,7 +494,7 @@ typedef struct ArcMasks
 #endif
 	cdReal ownX[MASK_FACES], ownY[MASK_FACES], ownZ[MASK_FACES]; /* A's face normals, zero padded */
 	uint64_t ownTables[MASK_FACES / 4][16];
-	const cdReal *fx, *fy, *fz;				 /* A's face normals as columns, zero padded */
+	const cdReal *fx, *fy, *fz;				   /* A's face normals as columns, zero padded */
 	const uint64_t* faceEdges[MASK_FACES / 4]; /* EdgesOfFaces' tables */
 	int facePadded;
 	uint32_t positive[SMALL_POLYTOPE], negative[SMALL_POLYTOPE]; /* B's faces against A's arc planes */

@@ -29,7 +29,7 @@ static inline const cdReal* cd3HullQueryFaces(const cd3HullQueryData* q)
 
 static inline const uint64_t (*cd3HullQueryTables(const cd3HullQueryData* q))[16]
 {
-	return (const uint64_t (*)[16])(const void*)(cd3HullQueryFaces(q) + 3 * q->facePadded);
+	return (const uint64_t(*)[16])(const void*)(cd3HullQueryFaces(q) + 3 * q->facePadded);
 }
 
 static inline const int32_t* cd3HullQueryEdges(const cd3HullQueryData* q)
