@@ -1,8 +1,9 @@
-/* The constraint colouring of src/base (internal module, linked from the static library): no two
- * constraints of a colour share a movable body, immovable constraints and pairs keep to their
- * colour ranges, the order runs colour by colour in index order, a constraint goes to the overflow
- * colour only when every colour of its range is taken, and on a regular structure (a pyramid's
- * contacts listed box by box) every colour holds a mix of kinds of contact. */
+/* The constraint colourings of src/base (internal module, linked from the static library), in
+ * index order and mixed: no two constraints of a colour share a movable body, immovable
+ * constraints and pairs keep to their colour ranges, the order runs colour by colour in index
+ * order, a constraint goes to the overflow colour only when every colour of its range is taken,
+ * and, mixed, on a regular structure (a pyramid's contacts listed box by box) every colour holds a
+ * mix of kinds of contact. */
 #include "test.h"
 
 #include "../src/base/graph_color.h"
@@ -29,11 +30,12 @@ static bool IsImmovableColor(int color)
 }
 
 /* Colours count constraints on bodyCount bodies and checks every rule of graph_color.h. */
-static void CheckColoring(int count, int bodyCount)
+static void CheckColoring(int count, int bodyCount, bool mixed)
 {
 	cdArena arena;
 	memset(&arena, 0, sizeof(arena));
-	bool ok = cdColorConstraints(g_bodyA, g_bodyB, count, bodyCount, g_colors, g_order, &arena);
+	bool ok = mixed ? cdColorConstraintsMixed(g_bodyA, g_bodyB, count, bodyCount, g_colors, g_order, &arena)
+					: cdColorConstraints(g_bodyA, g_bodyB, count, bodyCount, g_colors, g_order, &arena);
 	TEST_CHECK(ok);
 	cdArena_Destroy(&arena);
 	if (!ok)
@@ -133,7 +135,8 @@ static void TestRandomConstraints(void)
 					g_bodyB[i] = t;
 				}
 			}
-			CheckColoring(count, bodyCount);
+			CheckColoring(count, bodyCount, false);
+			CheckColoring(count, bodyCount, true);
 		}
 	}
 }
@@ -151,8 +154,8 @@ enum
 
 /* A pyramid of base 60 (1830 boxes, 5370 contacts) listed box by box, row by row, each box with
  * its contacts in the same order: the regular layout a world's contact list has for a pyramid.
- * Every colour with many constraints holds both kinds of support, neither above three quarters:
- * colouring them in index order would give colours of one kind (every box's support on its left
+ * Coloured mixed, every colour with many constraints holds both kinds of support, neither above
+ * three quarters: in index order the colours hold one kind each (every box's support on its left
  * solved before every support on its right, a bias the same in every pass that sways the
  * pyramid). */
 static void TestPyramidColorsMixKinds(void)
@@ -202,7 +205,7 @@ static void TestPyramidColorsMixKinds(void)
 	}
 	TEST_CHECKF(count <= MAX_CONSTRAINTS && bodyCount <= MAX_BODIES, "%d constraints, %d bodies", count,
 				bodyCount);
-	CheckColoring(count, bodyCount);
+	CheckColoring(count, bodyCount, true);
 	int perColor[CD_GRAPH_COLOR_COUNT + 1][KIND_COUNT];
 	memset(perColor, 0, sizeof(perColor));
 	for (int i = 0; i < count; ++i)

@@ -53,8 +53,8 @@ static inline uint32_t cdScramble(uint32_t x, uint32_t seed)
 	return x;
 }
 
-bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
-						cdArena* arena)
+static bool cdColor(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
+					cdArena* arena, bool mixed)
 {
 	for (int i = 0; i < count; ++i)
 	{
@@ -82,14 +82,16 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
 	 * regular pattern) every colour would hold one kind of contact, such as every box's contact
 	 * with the box below on its left: each pass of the solver would then correct all the left
 	 * supports before all the right ones, and that bias, the same in every sub-step, sways a tall
-	 * pyramid sideways. Visited block by block, each block in a pseudo-random order (the same
-	 * every step), every colour holds a mix of kinds, and the blocks keep the accesses local. */
+	 * pyramid sideways. Mixed: visited block by block, each block in a pseudo-random order (the
+	 * same every step), every colour holds a mix of kinds, and the blocks keep the accesses local.
+	 * A chain of joints listed link by link keeps the index order: its colours alternate along the
+	 * chain, one pass over every other joint, then the others. */
 	for (int first = 0; first < count; first += CD_GRAPH_SCRAMBLE_SIZE)
 	{
 		uint32_t seed = (uint32_t)(first / CD_GRAPH_SCRAMBLE_SIZE) * 0x9E3779B9u;
 		for (int k = 0; k < CD_GRAPH_SCRAMBLE_SIZE; ++k)
 		{
-			int i = first + (int)cdScramble((uint32_t)k, seed);
+			int i = first + (mixed ? (int)cdScramble((uint32_t)k, seed) : k);
 			if (i >= count)
 			{
 				continue;
@@ -136,4 +138,16 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
 		order[start[colors[i]]++] = i;
 	}
 	return true;
+}
+
+bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
+						cdArena* arena)
+{
+	return cdColor(bodyA, bodyB, count, bodyCount, colors, order, arena, false);
+}
+
+bool cdColorConstraintsMixed(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
+							 int* order, cdArena* arena)
+{
+	return cdColor(bodyA, bodyB, count, bodyCount, colors, order, arena, true);
 }
