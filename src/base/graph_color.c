@@ -35,8 +35,26 @@ static inline int cdHighestBit32(uint32_t bits)
 #endif
 }
 
-bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
-						cdArena* arena)
+/* Constraints are coloured in blocks of CD_GRAPH_SCRAMBLE_SIZE consecutive indices, each block in
+ * a pseudo-random order (see cdColorConstraints). */
+#define CD_GRAPH_SCRAMBLE_BITS 8
+#define CD_GRAPH_SCRAMBLE_SIZE (1 << CD_GRAPH_SCRAMBLE_BITS)
+
+/* A bijection of [0, CD_GRAPH_SCRAMBLE_SIZE) chosen by seed: odd multiplications and xor-shifts,
+ * each invertible modulo a power of two. */
+static inline uint32_t cdScramble(uint32_t x, uint32_t seed)
+{
+	const uint32_t mask = (uint32_t)CD_GRAPH_SCRAMBLE_SIZE - 1u;
+	const int shift = CD_GRAPH_SCRAMBLE_BITS / 2 + 1;
+	x = (x * 0x9E3779B1u + seed) & mask;
+	x ^= x >> shift;
+	x = (x * 0x85EBCA6Bu) & mask;
+	x ^= x >> shift;
+	return x;
+}
+
+static bool cdColor(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
+					cdArena* arena, bool mixed)
 {
 	for (int i = 0; i < count; ++i)
 	{
@@ -59,30 +77,48 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
 	 * with an immovable body: colours 1 .. CD_GRAPH_COLOR_COUNT - 1. */
 	const uint32_t pairColors = ((uint32_t)1 << (CD_GRAPH_COLOR_COUNT - CD_GRAPH_IMMOVABLE_COLORS)) - 1u;
 	const uint32_t immovableColors = (((uint32_t)1 << CD_GRAPH_COLOR_COUNT) - 1u) & ~(uint32_t)1;
-	for (int i = 0; i < count; ++i)
+	/* The colouring is greedy, so its visiting order decides which constraints share a colour. In
+	 * index order, on a regular structure (a pyramid of boxes, whose contacts are stored in a
+	 * regular pattern) every colour would hold one kind of contact, such as every box's contact
+	 * with the box below on its left: each pass of the solver would then correct all the left
+	 * supports before all the right ones, and that bias, the same in every sub-step, sways a tall
+	 * pyramid sideways. Mixed: visited block by block, each block in a pseudo-random order (the
+	 * same every step), every colour holds a mix of kinds, and the blocks keep the accesses local.
+	 * A chain of joints listed link by link keeps the index order: its colours alternate along the
+	 * chain, one pass over every other joint, then the others. */
+	for (int first = 0; first < count; first += CD_GRAPH_SCRAMBLE_SIZE)
 	{
-		int a = bodyA[i], b = bodyB[i];
-		int color = CD_GRAPH_COLOR_COUNT;
-		/* A pair of movable bodies takes the first free colour below the reserved ones; a
-		 * constraint with an immovable body the last free colour, searching down to colour 1, so
-		 * that it is solved after the pairs around it and has the last word in each pass. */
-		bool immovable = a < 0 || b < 0;
-		uint32_t busy = (a >= 0 ? used[a] : 0u) | (b >= 0 ? used[b] : 0u);
-		uint32_t free = ~busy & (immovable ? immovableColors : pairColors);
-		if (free != 0u)
+		uint32_t seed = (uint32_t)(first / CD_GRAPH_SCRAMBLE_SIZE) * 0x9E3779B9u;
+		for (int k = 0; k < CD_GRAPH_SCRAMBLE_SIZE; ++k)
 		{
-			color = immovable ? cdHighestBit32(free) : cdLowestBit32(free);
-			uint32_t bit = (uint32_t)1 << color;
-			if (a >= 0)
+			int i = first + (mixed ? (int)cdScramble((uint32_t)k, seed) : k);
+			if (i >= count)
 			{
-				used[a] |= bit;
+				continue;
 			}
-			if (b >= 0)
+			int a = bodyA[i], b = bodyB[i];
+			int color = CD_GRAPH_COLOR_COUNT;
+			/* A pair of movable bodies takes the first free colour below the reserved ones; a
+			 * constraint with an immovable body the last free colour, searching down to colour 1,
+			 * so that it is solved after the pairs around it and has the last word in each pass. */
+			bool immovable = a < 0 || b < 0;
+			uint32_t busy = (a >= 0 ? used[a] : 0u) | (b >= 0 ? used[b] : 0u);
+			uint32_t free = ~busy & (immovable ? immovableColors : pairColors);
+			if (free != 0u)
 			{
-				used[b] |= bit;
+				color = immovable ? cdHighestBit32(free) : cdLowestBit32(free);
+				uint32_t bit = (uint32_t)1 << color;
+				if (a >= 0)
+				{
+					used[a] |= bit;
+				}
+				if (b >= 0)
+				{
+					used[b] |= bit;
+				}
 			}
+			colors[i] = color;
 		}
-		colors[i] = color;
 	}
 	/* Counting sort by colour, stable. */
 	for (int c = 0; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
@@ -102,4 +138,16 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
 		order[start[colors[i]]++] = i;
 	}
 	return true;
+}
+
+bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
+						cdArena* arena)
+{
+	return cdColor(bodyA, bodyB, count, bodyCount, colors, order, arena, false);
+}
+
+bool cdColorConstraintsMixed(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
+							 int* order, cdArena* arena)
+{
+	return cdColor(bodyA, bodyB, count, bodyCount, colors, order, arena, true);
 }

@@ -21,9 +21,15 @@
  * one down to colour 1, and the pairs of movable bodies colours from 0 up to the last
  * CD_GRAPH_IMMOVABLE_COLORS, so that within each pass a body's contact with a wall is solved after
  * its contacts with the bodies pressing it there: a crowd pushed against a wall cannot push one of
- * its bodies through it. Scratch memory comes from the arena; returns false when it runs out
- * (order is then the index order). */
+ * its bodies through it. The constraints are coloured in index order. Scratch memory comes from
+ * the arena; returns false when it runs out (order is then the index order). */
 bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
 						cdArena* arena);
+/* The same, with the constraints coloured in blocks of 256 consecutive indices, each block in a
+ * fixed pseudo-random order, so that the colours of a regular structure (a pyramid's contacts)
+ * mix its kinds of constraint instead of holding one kind each (graph_color.c); the contacts'
+ * colouring. The result depends only on the arguments. */
+bool cdColorConstraintsMixed(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
+							 int* order, cdArena* arena);
 
 #endif

@@ -759,7 +759,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2ConstraintPair* sorted =
 			(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ConstraintPair));
 		if (colors != NULL && order != NULL && sorted != NULL &&
-			cdColorConstraints(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
+			cdColorConstraintsMixed(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
 		{
 			for (int i = 0; i < n; ++i)
 			{
