@@ -110,6 +110,11 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 void cd2SolveContinuous(cd2World* world, int bodyIndex)
 {
 	cd2Body* body = world->bodies.data + bodyIndex;
+	/* A non-bullet sweeps against static shapes only: none, nothing to sweep against. */
+	if (!body->isBullet && world->staticProxyCount == 0)
+	{
+		return;
+	}
 	cd2ContinuousContext c;
 	c.world = world;
 	c.bodyIndex = bodyIndex;

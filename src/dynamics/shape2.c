@@ -241,6 +241,20 @@ bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape)
 	return shape->proxyId == CD_NULL_PROXY || !cd2AabbContains(shape->fatAabb, shape->aabb);
 }
 
+void cd2DestroyShapeProxy(cd2World* world, cd2WorldShape* shape)
+{
+	if (shape->proxyId == CD_NULL_PROXY)
+	{
+		return;
+	}
+	if ((cd2BroadPhase_GetUserData(world->broadPhase, shape->proxyId) & CD2_PROXY_STATIC) != 0u)
+	{
+		world->staticProxyCount -= 1;
+	}
+	cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
+	shape->proxyId = CD_NULL_PROXY;
+}
+
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 {
 	cd2WorldShape* shape = world->shapes.data + shapeIndex;
@@ -250,12 +264,16 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 	if (shape->proxyId == CD_NULL_PROXY)
 	{
 		shape->fatAabb = cd2AabbInflate(aabb, margin);
-		shape->proxyId = cd2BroadPhase_CreateProxy(
-			world->broadPhase, shape->fatAabb,
-			cd2ProxyUserData(shapeIndex, world->bodies.data[shape->body].type == CD_STATIC_BODY));
+		bool isStatic = world->bodies.data[shape->body].type == CD_STATIC_BODY;
+		shape->proxyId =
+			cd2BroadPhase_CreateProxy(world->broadPhase, shape->fatAabb, cd2ProxyUserData(shapeIndex, isStatic));
 		if (shape->proxyId == CD_NULL_PROXY)
 		{
 			world->outOfMemory = true;
+		}
+		else
+		{
+			world->staticProxyCount += isStatic ? 1 : 0;
 		}
 		return;
 	}
@@ -478,8 +496,7 @@ void cd2DestroyShapeInternal(cd2World* world, int shapeIndex, bool wakeBodies)
 	}
 	if (shape->proxyId != CD_NULL_PROXY)
 	{
-		cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
-		shape->proxyId = CD_NULL_PROXY;
+		cd2DestroyShapeProxy(world, shape);
 	}
 	/* Unlink from the body. */
 	int* link = &body->headShape;
@@ -811,8 +828,7 @@ void cd2Shape_SetFilter(cd2ShapeId shapeId, cd2Filter filter)
 	/* A new proxy counts as moved: the broadphase reports its pairs again at the next step. */
 	if (shape->proxyId != CD_NULL_PROXY)
 	{
-		cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
-		shape->proxyId = CD_NULL_PROXY;
+		cd2DestroyShapeProxy(world, shape);
 		cd2UpdateShapeBounds(world, index, false);
 	}
 	cd2WakeBody(world, shape->body);

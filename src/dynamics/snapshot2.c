@@ -319,6 +319,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	cdPairSet pairs;
 	memset(&pairs, 0, sizeof(pairs));
 	bool memoryOk = true;
+	int staticProxyCount = 0;
 	for (int i = 0; i < s.shapes.count && memoryOk; ++i)
 	{
 		cd2WorldShape* shape = s.shapes.data + i;
@@ -326,9 +327,10 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		{
 			continue;
 		}
-		shape->proxyId = cd2BroadPhase_CreateProxy(
-			bp, shape->fatAabb, cd2ProxyUserData(i, s.bodies.data[shape->body].type == CD_STATIC_BODY));
+		bool isStatic = s.bodies.data[shape->body].type == CD_STATIC_BODY;
+		shape->proxyId = cd2BroadPhase_CreateProxy(bp, shape->fatAabb, cd2ProxyUserData(i, isStatic));
 		memoryOk = shape->proxyId != CD_NULL_PROXY;
+		staticProxyCount += isStatic ? 1 : 0;
 	}
 	for (int i = 0; i < s.contacts.count && memoryOk; ++i)
 	{
@@ -348,6 +350,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	/* Commit. */
 	cd2BroadPhase_Destroy(world->broadPhase);
 	world->broadPhase = bp;
+	world->staticProxyCount = staticProxyCount;
 	cdPairSet_Destroy(&world->pairs);
 	world->pairs = pairs;
 	cdArrayFree(world->bodies);
