@@ -863,29 +863,35 @@ static void TestContinuous(void)
 	cd2DestroyWorld(world);
 }
 
-/* Fast non-bullet balls shot at the wall (x = 0, from x < 0); how many ended beyond it. */
-static int ShootAtWall(cd2WorldId world, int shots, TestRng* rng)
+/* Fast non-bullet balls shot at the wall (at x = wallX, from 10 m before it); how many ended beyond it. */
+static int ShootAtWallAt(cd2WorldId world, int shots, TestRng* rng, cdReal wallX)
 {
 	int crossed = 0;
 	for (int s = 0; s < shots; ++s)
 	{
 		cdReal y = (cdReal)TestRngRange(rng, -5.0, 5.0);
-		cd2BodyId ball = MakeBall(world, cd2MakeVec(-CD_R(10.0), y), CD_R(0.05), false);
+		/* It crosses the wall in its first step, before any contact: only the sweep stops it. */
+		cd2BodyId ball = MakeBall(world, cd2MakeVec(wallX - CD_R(10.0), y), CD_R(0.05), false);
 		cd2Body_SetLinearVelocity(ball, cd2MakeVec(CD_R(800.0), CD_R(0.0)));
 		for (int i = 0; i < 4; ++i)
 		{
 			cd2World_Step(world, DT, 4);
 		}
-		crossed += cd2Body_GetPosition(ball).x > CD_R(0.0);
+		crossed += cd2Body_GetPosition(ball).x > wallX;
 		cd2DestroyBody(ball);
 	}
 	return crossed;
 }
 
-/* A fast ordinary body sweeps against static shapes only, and a world without any skips the sweep:
- * the static shapes are counted through every way a shape enters or leaves the static set (made
- * static, a body made dynamic and static again, disabled and enabled, other bodies destroyed, the
- * state restored), and the wall stops the balls after each. */
+static int ShootAtWall(cd2WorldId world, int shots, TestRng* rng)
+{
+	return ShootAtWallAt(world, shots, rng, CD_R(0.0));
+}
+
+/* A fast ordinary body sweeps against static shapes only (the world's static broadphase; none: no
+ * sweep). The static shapes are followed through every way a shape enters, leaves or moves in the
+ * static set (made static, a body made dynamic and static again, disabled and enabled, destroyed,
+ * the state restored, the body moved), and the wall stops the balls after each. */
 static void TestContinuousStaticCount(void)
 {
 	TestRng rng = TestRngMake(5);
@@ -910,6 +916,12 @@ static void TestContinuousStaticCount(void)
 	TEST_CHECK(ShootAtWall(world, 1, &rng) == 1);
 	TEST_CHECK(state != NULL && cd2World_RestoreState(world, state, size) == CD_OK);
 	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "state with the wall restored");
+	/* Moved away and back (a static body's shapes move with it). */
+	TEST_CHECK(cd2Body_IsValid(wall));
+	cd2Body_SetTransform(wall, cd2MakeVec(CD_R(20.0), CD_R(0.0)), CD2_ROT_IDENTITY);
+	TEST_CHECKF(ShootAtWallAt(world, 20, &rng, CD_R(20.0)) == 0, "wall moved");
+	cd2Body_SetTransform(wall, CD2_VEC_ZERO, CD2_ROT_IDENTITY);
+	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "wall moved away and back");
 	free(state);
 	cd2DestroyWorld(world);
 }

@@ -253,6 +253,28 @@ void cd2DestroyShapeProxy(cd2World* world, cd2WorldShape* shape)
 	}
 	cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
 	shape->proxyId = CD_NULL_PROXY;
+	if (shape->staticProxyId != CD_NULL_PROXY)
+	{
+		cd2BroadPhase_DestroyProxy(world->staticBroadPhase, shape->staticProxyId);
+		shape->staticProxyId = CD_NULL_PROXY;
+	}
+}
+
+/* The static shape's proxy in the static broadphase, with its fat box of the main one (made anew:
+ * a static shape rarely moves). */
+static void cd2SyncStaticProxy(cd2World* world, int shapeIndex)
+{
+	cd2WorldShape* shape = world->shapes.data + shapeIndex;
+	if (shape->staticProxyId != CD_NULL_PROXY)
+	{
+		cd2BroadPhase_DestroyProxy(world->staticBroadPhase, shape->staticProxyId);
+	}
+	shape->staticProxyId =
+		cd2BroadPhase_CreateProxy(world->staticBroadPhase, shape->fatAabb, cd2ProxyUserData(shapeIndex, true));
+	if (shape->staticProxyId == CD_NULL_PROXY)
+	{
+		world->outOfMemory = true;
+	}
 }
 
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
@@ -271,9 +293,10 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 		{
 			world->outOfMemory = true;
 		}
-		else
+		else if (isStatic)
 		{
-			world->staticProxyCount += isStatic ? 1 : 0;
+			world->staticProxyCount += 1;
+			cd2SyncStaticProxy(world, shapeIndex);
 		}
 		return;
 	}
@@ -292,6 +315,10 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 		{
 			/* A same-size fat box is not a move for the broadphase; keep its box and ours equal. */
 			shape->fatAabb = cd2BroadPhase_GetFatAabb(world->broadPhase, shape->proxyId);
+		}
+		if (shape->staticProxyId != CD_NULL_PROXY)
+		{
+			cd2SyncStaticProxy(world, shapeIndex);
 		}
 	}
 }
@@ -355,6 +382,7 @@ static int cd2AddShape(cd2World* world, int bodyIndex, const cd2ShapeDef* def, c
 	shape->enablePreSolveEvents = def->enablePreSolveEvents;
 	shape->userData = def->userData;
 	shape->proxyId = CD_NULL_PROXY;
+	shape->staticProxyId = CD_NULL_PROXY;
 	return index;
 }
 

@@ -102,6 +102,7 @@ typedef struct cd2WorldShape
 	cd2Filter filter;
 	bool isSensor, enableSensorEvents, enableContactEvents, enableHitEvents, enablePreSolveEvents;
 	int proxyId;
+	int staticProxyId; /* a static body's shape: its proxy in world->staticBroadPhase too */
 	cd2Aabb aabb;	 /* tight, world */
 	cd2Aabb fatAabb; /* what the broadphase holds */
 	void* userData;
@@ -406,6 +407,9 @@ typedef struct cd2World
 	int sensorContactCount; /* live contacts flagged CD2_CONTACT_SENSOR (derived, not saved) */
 	int staticProxyCount;	/* broadphase proxies flagged CD2_PROXY_STATIC (derived, not saved) */
 	cd2BroadPhase* broadPhase;
+	/* The static shapes' proxies again (same boxes and user data), for continuous collision: a
+	 * fast non-bullet sweeps against static shapes only (derived, rebuilt on restore). */
+	cd2BroadPhase* staticBroadPhase;
 	uint32_t generationCounter; /* never restored, so ids from a discarded future stay stale */
 	/* callbacks (not part of the state) */
 	cd2PreSolveFcn* preSolveFcn;
