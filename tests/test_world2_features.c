@@ -863,6 +863,69 @@ static void TestContinuous(void)
 	cd2DestroyWorld(world);
 }
 
+/* Fast non-bullet balls shot at the wall (at x = wallX, from 10 m before it); how many ended beyond it. */
+static int ShootAtWallAt(cd2WorldId world, int shots, TestRng* rng, cdReal wallX)
+{
+	int crossed = 0;
+	for (int s = 0; s < shots; ++s)
+	{
+		cdReal y = (cdReal)TestRngRange(rng, -5.0, 5.0);
+		/* It crosses the wall in its first step, before any contact: only the sweep stops it. */
+		cd2BodyId ball = MakeBall(world, cd2MakeVec(wallX - CD_R(10.0), y), CD_R(0.05), false);
+		cd2Body_SetLinearVelocity(ball, cd2MakeVec(CD_R(800.0), CD_R(0.0)));
+		for (int i = 0; i < 4; ++i)
+		{
+			cd2World_Step(world, DT, 4);
+		}
+		crossed += cd2Body_GetPosition(ball).x > wallX;
+		cd2DestroyBody(ball);
+	}
+	return crossed;
+}
+
+static int ShootAtWall(cd2WorldId world, int shots, TestRng* rng)
+{
+	return ShootAtWallAt(world, shots, rng, CD_R(0.0));
+}
+
+/* A fast ordinary body sweeps against static shapes only (the world's static broadphase; none: no
+ * sweep). The static shapes are followed through every way a shape enters, leaves or moves in the
+ * static set (made static, a body made dynamic and static again, disabled and enabled, destroyed,
+ * the state restored, the body moved), and the wall stops the balls after each. */
+static void TestContinuousStaticCount(void)
+{
+	TestRng rng = TestRngMake(5);
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.gravity = CD2_VEC_ZERO;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	/* No static shape: a fast ball meets nothing and flies on. */
+	TEST_CHECK(ShootAtWall(world, 1, &rng) == 1);
+	cd2BodyId wall = MakeStaticBox(world, CD2_VEC_ZERO, CD_R(0.02), CD_R(10.0));
+	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "static wall");
+	cd2Body_SetType(wall, CD_DYNAMIC_BODY);
+	cd2Body_SetType(wall, CD_STATIC_BODY);
+	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "wall made dynamic and static again");
+	cd2Body_Disable(wall);
+	TEST_CHECK(ShootAtWall(world, 1, &rng) == 1);
+	cd2Body_Enable(wall);
+	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "wall disabled and enabled");
+	size_t size = cd2World_GetStateSize(world);
+	void* state = malloc(size);
+	TEST_CHECK(state != NULL && cd2World_SaveState(world, state, size) == CD_OK);
+	cd2DestroyBody(wall);
+	TEST_CHECK(ShootAtWall(world, 1, &rng) == 1);
+	TEST_CHECK(state != NULL && cd2World_RestoreState(world, state, size) == CD_OK);
+	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "state with the wall restored");
+	/* Moved away and back (a static body's shapes move with it). */
+	TEST_CHECK(cd2Body_IsValid(wall));
+	cd2Body_SetTransform(wall, cd2MakeVec(CD_R(20.0), CD_R(0.0)), CD2_ROT_IDENTITY);
+	TEST_CHECKF(ShootAtWallAt(world, 20, &rng, CD_R(20.0)) == 0, "wall moved");
+	cd2Body_SetTransform(wall, CD2_VEC_ZERO, CD2_ROT_IDENTITY);
+	TEST_CHECKF(ShootAtWall(world, 20, &rng) == 0, "wall moved away and back");
+	free(state);
+	cd2DestroyWorld(world);
+}
+
 /* The end of the step with every kind of body it treats apart (fast bodies swept against static
  * shapes, a bullet swept against a moving plank, a moving kinematic body that wakes what it
  * touches, boxes that fall asleep): every move event carries its body's pose after the step and
@@ -1577,6 +1640,7 @@ int main(void)
 	TEST_RUN(TestQueries);
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
+	TEST_RUN(TestContinuousStaticCount);
 	TEST_RUN(TestFinalizeAcrossWorkers);
 	TEST_RUN(TestJointColorsAcrossWorkers);
 	TEST_RUN(TestCreatedAsleep);

@@ -794,8 +794,7 @@ static void cd2SetBodyInSimulation(cd2World* world, int index, bool enabled)
 		cd2WorldShape* shape = world->shapes.data + s;
 		if (!enabled && shape->proxyId != CD_NULL_PROXY)
 		{
-			cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
-			shape->proxyId = CD_NULL_PROXY;
+			cd2DestroyShapeProxy(world, shape);
 		}
 		if (enabled)
 		{

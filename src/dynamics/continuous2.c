@@ -1,6 +1,7 @@
 /* collide: continuous collision for the 2D world. A fast body (one that moved more than half its
- * inner extent in the step) is swept from its start to its end pose against static shapes, and a
- * bullet also against the other moving bodies' final poses, with cd2TimeOfImpact; it is then put
+ * inner extent in the step) is swept from its start to its end pose against static shapes (the
+ * world's static broadphase, which holds only those), and a bullet also against the other moving
+ * bodies' final poses (the whole broadphase), with cd2TimeOfImpact; it is then put
  * back at the first time of impact (its velocity is kept, so the next step's contact stops it).
  * This is what keeps a fast ball from tunnelling through a thin wall. */
 #include "world2_internal.h"
@@ -110,6 +111,11 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 void cd2SolveContinuous(cd2World* world, int bodyIndex)
 {
 	cd2Body* body = world->bodies.data + bodyIndex;
+	/* A non-bullet sweeps against static shapes only: none, nothing to sweep against. */
+	if (!body->isBullet && world->staticProxyCount == 0)
+	{
+		return;
+	}
 	cd2ContinuousContext c;
 	c.world = world;
 	c.bodyIndex = bodyIndex;
@@ -133,7 +139,9 @@ void cd2SolveContinuous(cd2World* world, int bodyIndex)
 		c.shapeIndex = s;
 		cd2Aabb box = cd2AabbUnion(cd2ComputeWorldShapeAabb(shape, xf0),
 								   cd2ComputeWorldShapeAabb(shape, body->transform));
-		cd2BroadPhase_Query(world->broadPhase, box, cd2ContinuousCallback, &c);
+		/* A bullet against every shape, the others against the static ones (their own tree). */
+		cd2BroadPhase_Query(c.isBullet ? world->broadPhase : world->staticBroadPhase, box, cd2ContinuousCallback,
+							&c);
 	}
 	if (c.fraction < CD_R(1.0))
 	{

@@ -137,6 +137,60 @@ static void cd2BuildGroups(cd2World* world, int* parent, uint8_t* candidate)
 	}
 }
 
+/* Whether a group can sleep at all this step, from the rested bodies alone (bodyIndices[k] for the
+ * k with rested[k] != 0): a group sleeps when all its bodies have rested, so a rested dynamic
+ * body that touches or is jointed to an awake dynamic body that has not rested cannot be in one.
+ * When every rested body has such a neighbour (and no kinematic body rested), the union-find over
+ * the world would put nothing to sleep and is passed over; the answer is exact. */
+bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested, uint8_t restedMask,
+					  int count)
+{
+	for (int k = 0; k < count; ++k)
+	{
+		if ((rested[k] & restedMask) == 0u)
+		{
+			continue;
+		}
+		const cd2Body* body = world->bodies.data + bodyIndices[k];
+		if (body->sleepTime < CD2_TIME_TO_SLEEP)
+		{
+			continue; /* woken since (a moving kinematic body touches it): its group stays awake */
+		}
+		if (!cd2IsSleepCandidate(body))
+		{
+			return true; /* a kinematic body sleeps alone */
+		}
+		bool blocked = false;
+		for (int key = body->headContactKey; key != CD2_NULL_INDEX && !blocked;)
+		{
+			const cd2Contact* contact = world->contacts.data + cd2EdgeContact(key);
+			if (contact->inUse && (contact->flags & CD2_CONTACT_TOUCHING) != 0 &&
+				(contact->flags & CD2_CONTACT_SENSOR) == 0)
+			{
+				const cd2Body* other =
+					world->bodies.data + (cd2EdgeSide(key) == 0 ? contact->bodyB : contact->bodyA);
+				blocked = cd2IsSleepCandidate(other) && other->sleepTime < CD2_TIME_TO_SLEEP;
+			}
+			key = contact->nextKey[cd2EdgeSide(key)];
+		}
+		for (int key = body->headJointKey; key != CD2_NULL_INDEX && !blocked;)
+		{
+			const cd2Joint* joint = world->joints.data + cd2EdgeContact(key);
+			if (joint->inUse && joint->type != CD2_FILTER_JOINT)
+			{
+				const cd2Body* other = world->bodies.data + (cd2EdgeSide(key) == 0 ? joint->bodyB : joint->bodyA);
+				blocked = cd2IsSleepCandidate(other) && other->sleepTime < CD2_TIME_TO_SLEEP;
+			}
+			key = joint->nextKey[cd2EdgeSide(key)];
+		}
+		if (!blocked)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
 int cd2UpdateSleep(cd2World* world)
 {
 	int n = world->bodies.count;

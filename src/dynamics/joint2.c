@@ -472,8 +472,7 @@ void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies)
 			cd2WorldShape* shape = world->shapes.data + s;
 			if (shape->proxyId != CD_NULL_PROXY)
 			{
-				cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
-				shape->proxyId = CD_NULL_PROXY;
+				cd2DestroyShapeProxy(world, shape);
 				cd2UpdateShapeBounds(world, s, false);
 			}
 		}

@@ -241,6 +241,42 @@ bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape)
 	return shape->proxyId == CD_NULL_PROXY || !cd2AabbContains(shape->fatAabb, shape->aabb);
 }
 
+void cd2DestroyShapeProxy(cd2World* world, cd2WorldShape* shape)
+{
+	if (shape->proxyId == CD_NULL_PROXY)
+	{
+		return;
+	}
+	if ((cd2BroadPhase_GetUserData(world->broadPhase, shape->proxyId) & CD2_PROXY_STATIC) != 0u)
+	{
+		world->staticProxyCount -= 1;
+	}
+	cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
+	shape->proxyId = CD_NULL_PROXY;
+	if (shape->staticProxyId != CD_NULL_PROXY)
+	{
+		cd2BroadPhase_DestroyProxy(world->staticBroadPhase, shape->staticProxyId);
+		shape->staticProxyId = CD_NULL_PROXY;
+	}
+}
+
+/* The static shape's proxy in the static broadphase, with its fat box of the main one (made anew:
+ * a static shape rarely moves). */
+static void cd2SyncStaticProxy(cd2World* world, int shapeIndex)
+{
+	cd2WorldShape* shape = world->shapes.data + shapeIndex;
+	if (shape->staticProxyId != CD_NULL_PROXY)
+	{
+		cd2BroadPhase_DestroyProxy(world->staticBroadPhase, shape->staticProxyId);
+	}
+	shape->staticProxyId =
+		cd2BroadPhase_CreateProxy(world->staticBroadPhase, shape->fatAabb, cd2ProxyUserData(shapeIndex, true));
+	if (shape->staticProxyId == CD_NULL_PROXY)
+	{
+		world->outOfMemory = true;
+	}
+}
+
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 {
 	cd2WorldShape* shape = world->shapes.data + shapeIndex;
@@ -250,12 +286,17 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 	if (shape->proxyId == CD_NULL_PROXY)
 	{
 		shape->fatAabb = cd2AabbInflate(aabb, margin);
-		shape->proxyId = cd2BroadPhase_CreateProxy(
-			world->broadPhase, shape->fatAabb,
-			cd2ProxyUserData(shapeIndex, world->bodies.data[shape->body].type == CD_STATIC_BODY));
+		bool isStatic = world->bodies.data[shape->body].type == CD_STATIC_BODY;
+		shape->proxyId =
+			cd2BroadPhase_CreateProxy(world->broadPhase, shape->fatAabb, cd2ProxyUserData(shapeIndex, isStatic));
 		if (shape->proxyId == CD_NULL_PROXY)
 		{
 			world->outOfMemory = true;
+		}
+		else if (isStatic)
+		{
+			world->staticProxyCount += 1;
+			cd2SyncStaticProxy(world, shapeIndex);
 		}
 		return;
 	}
@@ -274,6 +315,10 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 		{
 			/* A same-size fat box is not a move for the broadphase; keep its box and ours equal. */
 			shape->fatAabb = cd2BroadPhase_GetFatAabb(world->broadPhase, shape->proxyId);
+		}
+		if (shape->staticProxyId != CD_NULL_PROXY)
+		{
+			cd2SyncStaticProxy(world, shapeIndex);
 		}
 	}
 }
@@ -337,6 +382,7 @@ static int cd2AddShape(cd2World* world, int bodyIndex, const cd2ShapeDef* def, c
 	shape->enablePreSolveEvents = def->enablePreSolveEvents;
 	shape->userData = def->userData;
 	shape->proxyId = CD_NULL_PROXY;
+	shape->staticProxyId = CD_NULL_PROXY;
 	return index;
 }
 
@@ -478,8 +524,7 @@ void cd2DestroyShapeInternal(cd2World* world, int shapeIndex, bool wakeBodies)
 	}
 	if (shape->proxyId != CD_NULL_PROXY)
 	{
-		cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
-		shape->proxyId = CD_NULL_PROXY;
+		cd2DestroyShapeProxy(world, shape);
 	}
 	/* Unlink from the body. */
 	int* link = &body->headShape;
@@ -811,8 +856,7 @@ void cd2Shape_SetFilter(cd2ShapeId shapeId, cd2Filter filter)
 	/* A new proxy counts as moved: the broadphase reports its pairs again at the next step. */
 	if (shape->proxyId != CD_NULL_PROXY)
 	{
-		cd2BroadPhase_DestroyProxy(world->broadPhase, shape->proxyId);
-		shape->proxyId = CD_NULL_PROXY;
+		cd2DestroyShapeProxy(world, shape);
 		cd2UpdateShapeBounds(world, index, false);
 	}
 	cd2WakeBody(world, shape->body);

@@ -316,19 +316,34 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		return CD_ERROR_OUT_OF_MEMORY;
 	}
 	cd2BroadPhase_SetEnlargeMoves(bp, true);
+	cd2BroadPhase* staticBp = NULL;
+	if (cd2BroadPhase_Create(&bpDef, &staticBp) != CD_OK)
+	{
+		cd2BroadPhase_Destroy(bp);
+		cd2FreeLoaded(&s);
+		return CD_ERROR_OUT_OF_MEMORY;
+	}
 	cdPairSet pairs;
 	memset(&pairs, 0, sizeof(pairs));
 	bool memoryOk = true;
+	int staticProxyCount = 0;
 	for (int i = 0; i < s.shapes.count && memoryOk; ++i)
 	{
 		cd2WorldShape* shape = s.shapes.data + i;
+		shape->staticProxyId = CD_NULL_PROXY;
 		if (!shape->inUse || shape->proxyId == CD_NULL_PROXY)
 		{
 			continue;
 		}
-		shape->proxyId = cd2BroadPhase_CreateProxy(
-			bp, shape->fatAabb, cd2ProxyUserData(i, s.bodies.data[shape->body].type == CD_STATIC_BODY));
+		bool isStatic = s.bodies.data[shape->body].type == CD_STATIC_BODY;
+		shape->proxyId = cd2BroadPhase_CreateProxy(bp, shape->fatAabb, cd2ProxyUserData(i, isStatic));
 		memoryOk = shape->proxyId != CD_NULL_PROXY;
+		if (isStatic && memoryOk)
+		{
+			staticProxyCount += 1;
+			shape->staticProxyId = cd2BroadPhase_CreateProxy(staticBp, shape->fatAabb, cd2ProxyUserData(i, true));
+			memoryOk = shape->staticProxyId != CD_NULL_PROXY;
+		}
 	}
 	for (int i = 0; i < s.contacts.count && memoryOk; ++i)
 	{
@@ -341,6 +356,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	if (!memoryOk)
 	{
 		cd2BroadPhase_Destroy(bp);
+		cd2BroadPhase_Destroy(staticBp);
 		cdPairSet_Destroy(&pairs);
 		cd2FreeLoaded(&s);
 		return CD_ERROR_OUT_OF_MEMORY;
@@ -348,6 +364,9 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	/* Commit. */
 	cd2BroadPhase_Destroy(world->broadPhase);
 	world->broadPhase = bp;
+	cd2BroadPhase_Destroy(world->staticBroadPhase);
+	world->staticBroadPhase = staticBp;
+	world->staticProxyCount = staticProxyCount;
 	cdPairSet_Destroy(&world->pairs);
 	world->pairs = pairs;
 	cdArrayFree(world->bodies);

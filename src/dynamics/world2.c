@@ -132,6 +132,12 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 		return CD2_NULL_WORLD_ID;
 	}
 	cd2BroadPhase_SetEnlargeMoves(world->broadPhase, true);
+	if (cd2BroadPhase_Create(&bpDef, &world->staticBroadPhase) != CD_OK)
+	{
+		cd2BroadPhase_Destroy(world->broadPhase);
+		cdFree(world);
+		return CD2_NULL_WORLD_ID;
+	}
 	if (def->lengthUnitsPerMeter > CD_R(0.0))
 	{
 		cdSetLengthUnitsPerMeter(def->lengthUnitsPerMeter);
@@ -188,6 +194,7 @@ void cd2DestroyWorld(cd2WorldId worldId)
 		return;
 	}
 	cd2BroadPhase_Destroy(world->broadPhase);
+	cd2BroadPhase_Destroy(world->staticBroadPhase);
 	cdArrayFree(world->bodies);
 	cdArrayFree(world->shapes);
 	cdArrayFree(world->chains);

@@ -102,6 +102,7 @@ typedef struct cd2WorldShape
 	cd2Filter filter;
 	bool isSensor, enableSensorEvents, enableContactEvents, enableHitEvents, enablePreSolveEvents;
 	int proxyId;
+	int staticProxyId; /* a static body's shape: its proxy in world->staticBroadPhase too */
 	cd2Aabb aabb;	 /* tight, world */
 	cd2Aabb fatAabb; /* what the broadphase holds */
 	void* userData;
@@ -404,7 +405,11 @@ typedef struct cd2World
 	cdIdPool bodyPool, shapePool, chainPool, contactPool, jointPool, islandPool;
 	cdPairSet pairs;		/* shape pair -> contact index */
 	int sensorContactCount; /* live contacts flagged CD2_CONTACT_SENSOR (derived, not saved) */
+	int staticProxyCount;	/* broadphase proxies flagged CD2_PROXY_STATIC (derived, not saved) */
 	cd2BroadPhase* broadPhase;
+	/* The static shapes' proxies again (same boxes and user data), for continuous collision: a
+	 * fast non-bullet sweeps against static shapes only (derived, rebuilt on restore). */
+	cd2BroadPhase* staticBroadPhase;
 	uint32_t generationCounter; /* never restored, so ids from a discarded future stay stale */
 	/* callbacks (not part of the state) */
 	cd2PreSolveFcn* preSolveFcn;
@@ -476,6 +481,9 @@ static inline int cd2ProxyShape(uint64_t userData)
 {
 	return (int)(uint32_t)userData;
 }
+
+/* Removes the shape's proxy from the broadphase (if it has one), keeping the static count. */
+void cd2DestroyShapeProxy(cd2World* world, cd2WorldShape* shape);
 
 /* Brings the broadphase box up to date after a move; teleport: the body jumped. */
 void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
@@ -603,6 +611,10 @@ void cd2WakeIsland(cd2World* world, int islandId);
 /* Groups the awake bodies by touching contacts and joints and puts to sleep each group whose
  * bodies have all rested for CD2_TIME_TO_SLEEP; returns how many bodies it put to sleep. */
 int cd2UpdateSleep(cd2World* world);
+/* false when cd2UpdateSleep would put nothing to sleep, judged from the bodies bodyIndices[k] whose
+ * rested[k] has a bit of restedMask (those that rested for CD2_TIME_TO_SLEEP this step). */
+bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested, uint8_t restedMask,
+					  int count);
 /* Puts the body's connected group to sleep now. */
 void cd2SleepBodyGroup(cd2World* world, int bodyIndex);
 void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
