@@ -140,8 +140,8 @@ void cd2SolveContinuous(cd2World* world, int bodyIndex)
 		cd2Aabb box = cd2AabbUnion(cd2ComputeWorldShapeAabb(shape, xf0),
 								   cd2ComputeWorldShapeAabb(shape, body->transform));
 		/* A bullet against every shape, the others against the static ones (their own tree). */
-		cd2BroadPhase_Query(c.isBullet ? world->broadPhase : world->staticBroadPhase, box, cd2ContinuousCallback,
-							&c);
+		cd2BroadPhase_Query(c.isBullet ? world->broadPhase : world->staticBroadPhase, box,
+							cd2ContinuousCallback, &c);
 	}
 	if (c.fraction < CD_R(1.0))
 	{

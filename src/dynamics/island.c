@@ -142,8 +142,8 @@ static void cd2BuildGroups(cd2World* world, int* parent, uint8_t* candidate)
  * body that touches or is jointed to an awake dynamic body that has not rested cannot be in one.
  * When every rested body has such a neighbour (and no kinematic body rested), the union-find over
  * the world would put nothing to sleep and is passed over; the answer is exact. */
-bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested, uint8_t restedMask,
-					  int count)
+bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested,
+					  uint8_t restedMask, int count)
 {
 	for (int k = 0; k < count; ++k)
 	{
@@ -178,7 +178,8 @@ bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8
 			const cd2Joint* joint = world->joints.data + cd2EdgeContact(key);
 			if (joint->inUse && joint->type != CD2_FILTER_JOINT)
 			{
-				const cd2Body* other = world->bodies.data + (cd2EdgeSide(key) == 0 ? joint->bodyB : joint->bodyA);
+				const cd2Body* other =
+					world->bodies.data + (cd2EdgeSide(key) == 0 ? joint->bodyB : joint->bodyA);
 				blocked = cd2IsSleepCandidate(other) && other->sleepTime < CD2_TIME_TO_SLEEP;
 			}
 			key = joint->nextKey[cd2EdgeSide(key)];

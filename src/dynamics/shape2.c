@@ -269,8 +269,8 @@ static void cd2SyncStaticProxy(cd2World* world, int shapeIndex)
 	{
 		cd2BroadPhase_DestroyProxy(world->staticBroadPhase, shape->staticProxyId);
 	}
-	shape->staticProxyId =
-		cd2BroadPhase_CreateProxy(world->staticBroadPhase, shape->fatAabb, cd2ProxyUserData(shapeIndex, true));
+	shape->staticProxyId = cd2BroadPhase_CreateProxy(world->staticBroadPhase, shape->fatAabb,
+													 cd2ProxyUserData(shapeIndex, true));
 	if (shape->staticProxyId == CD_NULL_PROXY)
 	{
 		world->outOfMemory = true;
@@ -287,8 +287,8 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 	{
 		shape->fatAabb = cd2AabbInflate(aabb, margin);
 		bool isStatic = world->bodies.data[shape->body].type == CD_STATIC_BODY;
-		shape->proxyId =
-			cd2BroadPhase_CreateProxy(world->broadPhase, shape->fatAabb, cd2ProxyUserData(shapeIndex, isStatic));
+		shape->proxyId = cd2BroadPhase_CreateProxy(world->broadPhase, shape->fatAabb,
+												   cd2ProxyUserData(shapeIndex, isStatic));
 		if (shape->proxyId == CD_NULL_PROXY)
 		{
 			world->outOfMemory = true;

@@ -341,7 +341,8 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		if (isStatic && memoryOk)
 		{
 			staticProxyCount += 1;
-			shape->staticProxyId = cd2BroadPhase_CreateProxy(staticBp, shape->fatAabb, cd2ProxyUserData(i, true));
+			shape->staticProxyId =
+				cd2BroadPhase_CreateProxy(staticBp, shape->fatAabb, cd2ProxyUserData(i, true));
 			memoryOk = shape->staticProxyId != CD_NULL_PROXY;
 		}
 	}

@@ -1021,7 +1021,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	 * least rested body has); without one the islands are not built. */
 	CD2_TIMER_MARK(11, "hits");
 	if (sleepAllowed && rested &&
-		cd2SleepPossible(world, context.bodyIndices, context.finalFlags, CD2_FINAL_RESTED, context.bodyCount) &&
+		cd2SleepPossible(world, context.bodyIndices, context.finalFlags, CD2_FINAL_RESTED,
+						 context.bodyCount) &&
 		cd2UpdateSleep(world) > 0)
 	{
 		for (int k = 0; k < context.bodyCount && context.moveEvents != NULL; ++k)

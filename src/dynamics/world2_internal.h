@@ -103,8 +103,8 @@ typedef struct cd2WorldShape
 	bool isSensor, enableSensorEvents, enableContactEvents, enableHitEvents, enablePreSolveEvents;
 	int proxyId;
 	int staticProxyId; /* a static body's shape: its proxy in world->staticBroadPhase too */
-	cd2Aabb aabb;	 /* tight, world */
-	cd2Aabb fatAabb; /* what the broadphase holds */
+	cd2Aabb aabb;	   /* tight, world */
+	cd2Aabb fatAabb;   /* what the broadphase holds */
 	void* userData;
 } cd2WorldShape;
 
@@ -613,8 +613,8 @@ void cd2WakeIsland(cd2World* world, int islandId);
 int cd2UpdateSleep(cd2World* world);
 /* false when cd2UpdateSleep would put nothing to sleep, judged from the bodies bodyIndices[k] whose
  * rested[k] has a bit of restedMask (those that rested for CD2_TIME_TO_SLEEP this step). */
-bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested, uint8_t restedMask,
-					  int count);
+bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested,
+					  uint8_t restedMask, int count);
 /* Puts the body's connected group to sleep now. */
 void cd2SleepBodyGroup(cd2World* world, int bodyIndex);
 void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
