@@ -54,6 +54,12 @@
 #else
 #define MANIFOLD_NOINLINE
 #endif
+/* Inlined into its hot caller even when a rare one calls it too (FaceContact's clip loop). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MANIFOLD_INLINE inline __attribute__((always_inline))
+#else
+#define MANIFOLD_INLINE inline
+#endif
 
 typedef struct ClipVertex
 {
@@ -387,8 +393,8 @@ static int IncidentFaceAtSupport(const cd3Polytope* p, cd3Vec worldNormal)
 	return best;
 }
 
-static int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec origin, uint32_t tag,
-					   ClipVertex* out)
+static MANIFOLD_INLINE int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec origin,
+									   uint32_t tag, ClipVertex* out)
 {
 	int n = 0;
 	for (int i = 0; i < count && n + 2 <= MAX_CLIP; ++i)
@@ -729,13 +735,13 @@ MANIFOLD_NOINLINE static RoundOffPlane RoundOffSide(const cd3Polytope* p, int fa
  * face by that over the sine. Such a corner gets one more plane across it (SharpCornerClip). */
 #define SHARP_CORNER_SINE CD_R(0.0625)
 
-/* The two side normals (outward, any length) s0 and s1 of consecutive edges meet at a corner
- * sharper than SHARP_CORNER_SINE: antiparallel within that sine. */
-static bool SharpCorner(cd3Vec s0, cd3Vec s1)
+/* The two side normals (outward, any length; l0 and l1 their squared lengths) s0 and s1 of
+ * consecutive edges meet at a corner sharper than SHARP_CORNER_SINE: antiparallel within that
+ * sine. */
+static bool SharpCorner(cd3Vec s0, cd3Vec s1, cdReal l0, cdReal l1)
 {
 	cdReal d = cd3Dot(s0, s1);
-	return d < CD_R(0.0) &&
-		   d * d > (CD_R(1.0) - SHARP_CORNER_SINE * SHARP_CORNER_SINE) * cd3LengthSquared(s0) * cd3LengthSquared(s1);
+	return d < CD_R(0.0) && d * d > (CD_R(1.0) - SHARP_CORNER_SINE * SHARP_CORNER_SINE) * l0 * l1;
 }
 
 /* Clips the polygon against the plane through the sharp corner whose normal is the sum of its
@@ -748,6 +754,28 @@ MANIFOLD_NOINLINE static int SharpCornerClip(const ClipVertex* in, int count, cd
 {
 	cd3Vec cap = cd3Add(cd3Normalize(s0), cd3Normalize(s1));
 	return ClipToPlane(in, count, cap, corner, tag, out);
+}
+
+/* SharpCornerClip at each sharp corner of a face of `sideCount` sides (their normals, squared
+ * lengths and first corners): the polygon `in` of *count vertices, `spare` the other buffer.
+ * Returns the buffer that holds the result. Out of line: FaceContact's clip loop stays lean. */
+MANIFOLD_NOINLINE static ClipVertex* ClipSharpCorners(ClipVertex* in, ClipVertex* spare, int* count,
+													  const cd3Vec* sides, const cdReal* lengths,
+													  const cd3Vec* corners, int sideCount)
+{
+	for (int k = 0; k < sideCount && *count > 0; ++k)
+	{
+		int before = k > 0 ? k - 1 : sideCount - 1;
+		if (SharpCorner(sides[before], sides[k], lengths[before], lengths[k]))
+		{
+			uint32_t tag = SIDE_TAG + (uint32_t)(k < (int)SIDE_TAG - 1 ? k : (int)SIDE_TAG - 1);
+			*count = SharpCornerClip(in, *count, sides[before], sides[k], corners[k], tag, spare);
+			ClipVertex* t = in;
+			in = spare;
+			spare = t;
+		}
+	}
+	return in;
 }
 
 /* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
@@ -778,18 +806,22 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	cd3Vec first = WorldVertex(ref, ref->edges[e].origin);
 	cd3Vec v1 = first;
 	cdReal floorSquared = EdgeFloorSquared(first, ref->size);
-	cd3Vec firstSide = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
-	cd3Vec previousSide = firstSide;
+	/* Each side's normal and corner, for the sharp corners after the clip (kept out of the loop,
+	 * whose registers they would crowd). */
+	cd3Vec sides[MAX_CLIP / 2], corners[MAX_CLIP / 2];
+	cdReal sideLengths[MAX_CLIP / 2]; /* squared */
 	do
 	{
 		cd3Vec v0 = v1;
 		int next = ref->edges[e].next;
 		v1 = next == ref->faceEdges[face] ? first : WorldVertex(ref, ref->edges[next].origin);
-		cd3Vec sideNormal;
-		if (!FaceSideNormal(v0, v1, n, floorSquared, &sideNormal))
+		cd3Vec sideNormal = cd3Cross(cd3Sub(v1, v0), n); /* FaceSideNormal, with its length kept */
+		cdReal sideSquared = cd3LengthSquared(sideNormal);
+		if (!(sideSquared > floorSquared))
 		{
 			RoundOffPlane plane = RoundOffSide(ref, face, e, n, floorSquared);
 			sideNormal = plane.side;
+			sideSquared = cd3LengthSquared(sideNormal);
 			if (plane.thin)
 			{
 				cd3Vec r0, r1;
@@ -803,25 +835,19 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 		ClipVertex* t = in;
 		in = out;
 		out = t;
-		if (side == 0)
+		if (side < MAX_CLIP / 2)
 		{
-			firstSide = sideNormal;
+			sides[side] = sideNormal;
+			sideLengths[side] = sideSquared;
+			corners[side] = v0;
 		}
-		else if (SharpCorner(previousSide, sideNormal) && count > 0)
-		{
-			count = SharpCornerClip(in, count, previousSide, sideNormal, v0, tag, out);
-			t = in;
-			in = out;
-			out = t;
-		}
-		previousSide = sideNormal;
 		++side;
 		e = ref->edges[e].next;
 	} while (e != ref->faceEdges[face] && count > 0);
-	if (count > 0 && SharpCorner(previousSide, firstSide))
+	if (count > 0 && side <= MAX_CLIP / 2)
 	{
-		count = SharpCornerClip(in, count, previousSide, firstSide, first, SIDE_TAG, out);
-		in = out;
+		/* A face of more sides than recorded has no corner checked (its corners are rarely sharp). */
+		in = ClipSharpCorners(in, out, &count, sides, sideLengths, corners, side);
 	}
 
 	Candidate candidates[MAX_CLIP];
