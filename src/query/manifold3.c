@@ -756,28 +756,6 @@ MANIFOLD_NOINLINE static int SharpCornerClip(const ClipVertex* in, int count, cd
 	return ClipToPlane(in, count, cap, corner, tag, out);
 }
 
-/* SharpCornerClip at each sharp corner of a face of `sideCount` sides (their normals, squared
- * lengths and first corners): the polygon `in` of *count vertices, `spare` the other buffer.
- * Returns the buffer that holds the result. Out of line: FaceContact's clip loop stays lean. */
-MANIFOLD_NOINLINE static ClipVertex* ClipSharpCorners(ClipVertex* in, ClipVertex* spare, int* count,
-													  const cd3Vec* sides, const cdReal* lengths,
-													  const cd3Vec* corners, int sideCount)
-{
-	for (int k = 0; k < sideCount && *count > 0; ++k)
-	{
-		int before = k > 0 ? k - 1 : sideCount - 1;
-		if (SharpCorner(sides[before], sides[k], lengths[before], lengths[k]))
-		{
-			uint32_t tag = SIDE_TAG + (uint32_t)(k < (int)SIDE_TAG - 1 ? k : (int)SIDE_TAG - 1);
-			*count = SharpCornerClip(in, *count, sides[before], sides[k], corners[k], tag, spare);
-			ClipVertex* t = in;
-			in = spare;
-			spare = t;
-		}
-	}
-	return in;
-}
-
 /* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
 static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polytope* inc, bool flip,
 							   cdReal speculativeDistance)
@@ -806,10 +784,9 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	cd3Vec first = WorldVertex(ref, ref->edges[e].origin);
 	cd3Vec v1 = first;
 	cdReal floorSquared = EdgeFloorSquared(first, ref->size);
-	/* Each side's normal and corner, for the sharp corners after the clip (kept out of the loop,
-	 * whose registers they would crowd). */
-	cd3Vec sides[MAX_CLIP / 2], corners[MAX_CLIP / 2];
-	cdReal sideLengths[MAX_CLIP / 2]; /* squared */
+	/* The first and the previous side's normal and squared length: their corners' sharpness. */
+	cd3Vec firstSide = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)), previousSide = firstSide;
+	cdReal firstSquared = CD_R(0.0), previousSquared = CD_R(0.0);
 	do
 	{
 		cd3Vec v0 = v1;
@@ -835,19 +812,27 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 		ClipVertex* t = in;
 		in = out;
 		out = t;
-		if (side < MAX_CLIP / 2)
+		if (side == 0)
 		{
-			sides[side] = sideNormal;
-			sideLengths[side] = sideSquared;
-			corners[side] = v0;
+			firstSide = sideNormal;
+			firstSquared = sideSquared;
 		}
+		else if (SharpCorner(previousSide, sideNormal, previousSquared, sideSquared) && count > 0)
+		{
+			count = SharpCornerClip(in, count, previousSide, sideNormal, v0, tag, out);
+			t = in;
+			in = out;
+			out = t;
+		}
+		previousSide = sideNormal;
+		previousSquared = sideSquared;
 		++side;
 		e = ref->edges[e].next;
 	} while (e != ref->faceEdges[face] && count > 0);
-	if (count > 0 && side <= MAX_CLIP / 2)
+	if (count > 0 && SharpCorner(previousSide, firstSide, previousSquared, firstSquared))
 	{
-		/* A face of more sides than recorded has no corner checked (its corners are rarely sharp). */
-		in = ClipSharpCorners(in, out, &count, sides, sideLengths, corners, side);
+		count = SharpCornerClip(in, count, previousSide, firstSide, first, SIDE_TAG, out);
+		in = out;
 	}
 
 	Candidate candidates[MAX_CLIP];
