@@ -2411,6 +2411,180 @@ static void TestTinyHullsCappedEpaRegression(void)
 	cd3DestroyHull(otherHull);
 }
 
+
+/* The fuzz cases' shapes exactly: hulls and boxes with the quaternion as the fuzzer printed it
+ * (normalizing it again can change its last bit, and the path). */
+static cd3Shape ExactHullShape(const double* xyz, int count, const double* pq, cd3Hull** hull)
+{
+	cd3Shape shape = HullShapeOf(xyz, count, pq, hull);
+	shape.hull.transform.q = cd3MakeQuat((cdReal)pq[3], (cdReal)pq[4], (cdReal)pq[5], (cdReal)pq[6]);
+	return shape;
+}
+
+/* Both orders: points, each side on its shape within `offTolerance`. */
+static void CheckOnShapes(const char* name, const cd3Shape* a, const cd3Shape* b, double speculative,
+						  double offTolerance)
+{
+	for (int order = 0; order < 2; ++order)
+	{
+		const cd3Shape* first = order == 0 ? a : b;
+		const cd3Shape* second = order == 0 ? b : a;
+		cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
+		double off = WorstOffSurface(&m, first, second);
+		TEST_CHECKF(m.pointCount > 0 && off <= offTolerance, "%s, order %d: %d points, %.3g off a surface (%.3g)",
+					name, order, m.pointCount, off, offTolerance);
+	}
+}
+
+/* A capsule whose deepest end lies 6e6 beyond the far edge of a sliver hull face (the hull a
+ * tetrahedron 1e9 across and 1e6 thick; float; corpus regression-float-capsule-needle-hull-far):
+ * the face won within the edge bias, and the point's side was within the round-off of both large
+ * faces' planes, which meet at that edge at 1e-3 rad, though 5.96e6 off the hull. The point is now
+ * checked by its distance to the hull too, and the edge pair's contact taken. */
+static void TestCapsuleBeyondSliverEdgeRegression(void)
+{
+	cd3Shape capsule = CapsuleShape(-11500000, -125000, -12250000, -1e9, 7500000, 7500000, 7500000);
+	static const double points[12] = {-12500000, -12500000, -1e9,	   -1e9,	  -11500000, -1e9,
+									  -1e9,		 -12500000, -12500000, -12500000, -12500000, -12500000};
+	static const double place[7] = {7500000, -10250000, -12500000, -0.588143647, -0.423463434, -0.5293293, -0.44110775};
+	cd3Hull* hull = NULL;
+#if CD_DOUBLE
+	cd3Shape sliver = HullShapeOf(points, 4, place, &hull); /* the float quaternion, normalized */
+#else
+	cd3Shape sliver = ExactHullShape(points, 4, place, &hull);
+#endif
+	TEST_CHECK(hull != NULL);
+	if (hull != NULL)
+	{
+		/* Off by 5.96e6 before the fix; the point's side on the hull is now within 1 (float
+		 * round-off of 1e9 is 64). */
+		CheckOnShapes("capsule-sliver-edge", &capsule, &sliver, 12250000.0, 1e-6 * 1e9);
+		CheckFuzzCase("capsule-sliver-edge", &capsule, &sliver, 12250000.0, 0.0, 1e9);
+	}
+	cd3DestroyHull(hull);
+}
+
+#if CD_DOUBLE
+/* A point box inside a hull's tip by 5.4628e-9 (double; corpus
+ * regression-double-hull-tip-point-aabb): the SAT's face contact clipped away, GJK said touching,
+ * and EPA stopped at its iteration cap 3.1e-13 short of the SAT's depth, beyond round-off, so the
+ * manifold was empty. The contact now comes from the SAT's face axis: the box's point against the
+ * hull's nearest face. Reference: the depth of the point below the hull's nearest plane. */
+static void TestCappedEpaFallbackRegression(void)
+{
+	static const double points[33] = {7.5000000000000007e-05, 7.5000000000000007e-05, 7.5000000000000007e-05,
+									  7.5000000000000007e-05, -0.000125, -0.000125, -0.000125,
+									  -0.00010375000000000001, 7.5000000000000007e-05, 7.5000000000000007e-05,
+									  7.5000000000000007e-05, -0.00010250000000000001, -5.0000000000000004e-06,
+									  1.6250000000000002e-05, -1.2500000000000001e-06, -1.6250000000000002e-05,
+									  -6.2500000000000003e-06, 2.5000000000000002e-06, -6.2500000000000003e-06,
+									  1.6250000000000002e-05, -3.375e-05, 6.2500000000000003e-06,
+									  7.5000000000000007e-05, 4.2500000000000003e-05, -0.00012000000000000002,
+									  1, 1, 1, 1, 1, 1, 1, 1};
+	static const double place[7] = {7.5000000000000007e-05, 7.5000000000000007e-05, 7.5000000000000007e-05,
+									0.5, 0.5, 0.5, 0.5};
+	cd3Hull* hull = NULL;
+	cd3Shape tip = ExactHullShape(points, 11, place, &hull);
+	cd3Shape point = AabbShape(1, 1, 1, 1, 1, 1);
+	TEST_CHECK(hull != NULL);
+	if (hull != NULL)
+	{
+		cd3Vec local = cd3InvTransformPoint(tip.hull.transform, cd3MakeVec(1, 1, 1));
+		double depth = INFINITY;
+		for (int i = 0; i < hull->faceCount; ++i)
+		{
+			depth = fmin(depth, (double)hull->planes[i].offset - (double)cd3Dot(hull->planes[i].normal, local));
+		}
+		TEST_CHECKF(depth > 5e-9 && depth < 6e-9, "the point's depth %.9g", depth);
+		for (int order = 0; order < 2; ++order)
+		{
+			cd3Manifold m = order == 0 ? cd3Collide(&tip, &point, 0.0) : cd3Collide(&point, &tip, 0.0);
+			TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) + depth) <= 1e-3 * depth,
+						"order %d: %d points, separation %.17g, depth %.17g", order, m.pointCount,
+						MinSeparation(&m), depth);
+		}
+		/* Each side on its shape within 1e-12 of the size (2e-9 is the fuzzer's band). */
+		CheckOnShapes("hull-tip-point", &tip, &point, 0.0, 1e-12 * 1.7);
+	}
+	cd3DestroyHull(hull);
+}
+
+/* Two needle hulls 1 long and 5e-8 across, crossing (double; corpus
+ * regression-double-needle-hulls-crossing): the reference face, a sliver whose corner at the
+ * needle's base has an angle of 2.6e-9 rad, clipped the other hull's face between side planes
+ * that cross within their round-off over that angle: a point 5.04e-9 beyond the corner, off the
+ * hull. A sharp corner now gets a plane across it. */
+static void TestSharpCornerClipRegression(void)
+{
+	static const double pointsA[21] = {1.3750000000000002e-08, -2.5000000000000005e-09, -1.2125000000000003e-07,
+									   5.0000000000000009e-09, -8.7500000000000023e-09, 8.7500000000000023e-09,
+									   1.8750000000000002e-08, 2.5000000000000005e-09, 1, -3.7500000000000005e-08,
+									   0, 0, 0, 0, 1, -3.7500000000000005e-08, -3.7500000000000005e-08,
+									   -3.7500000000000005e-08, -3.7500000000000005e-08, -3.7500000000000005e-08,
+									   -3.7500000000000005e-08};
+	static const double placeA[7] = {-1.0000000000000002e-08, -3.7500000000000005e-09, 5.0000000000000009e-09,
+									 -0.47140452079103162,	  0.78567420131838606,	  -0.078567420131838608,
+									 -0.39283710065919303};
+	static const double pointsB[24] = {
+		1.2500000000000003e-08,	 -1.2500000000000002e-09, -6.2500000000000014e-09, -8.7500000000000023e-09,
+		8.7500000000000023e-09,	 1.8750000000000002e-08,  2.5000000000000005e-09,  1,
+		-3.7500000000000005e-08, 0,						  0,					   0,
+		0,						 1,						  -3.7500000000000005e-08, -3.7500000000000005e-08,
+		-3.7500000000000005e-08, -3.7500000000000005e-08, -3.7500000000000005e-08, -3.7500000000000005e-08,
+		-3.7500000000000005e-08, -3.7500000000000005e-08, -8.7500000000000023e-09, -7.500000000000001e-09};
+	static const double placeB[7] = {-3.7500000000000005e-08, -8.7500000000000023e-09, -7.500000000000001e-09,
+									 -0.30304576336566319,	  -0.80812203564176854,	  -0.30304576336566319,
+									 0.40406101782088427};
+	cd3Hull *hullA = NULL, *hullB = NULL;
+	cd3Shape a = ExactHullShape(pointsA, 7, placeA, &hullA);
+	cd3Shape b = ExactHullShape(pointsB, 8, placeB, &hullB);
+	TEST_CHECK(hullA != NULL && hullB != NULL);
+	if (hullA != NULL && hullB != NULL)
+	{
+		/* 5.04e-9 off before the fix; now within 1e-12 of the length. */
+		CheckOnShapes("needle-hulls-crossing", &a, &b, 1e-8, 1e-12);
+		Brute ba, bb;
+		BruteFromShape(&ba, &a);
+		BruteFromShape(&bb, &b);
+		double exact = BruteSat(&ba, &bb);
+		TEST_CHECKF(exact < 0.0, "overlapping by the reference SAT: %.9g", exact);
+		cd3Manifold m = cd3Collide(&b, &a, CD_R(1e-8));
+		TEST_CHECKF(m.pointCount > 0 && MinSeparation(&m) < 0.0, "%d points, separation %.9g", m.pointCount,
+					MinSeparation(&m));
+	}
+	cd3DestroyHull(hullA);
+	cd3DestroyHull(hullB);
+}
+
+/* A box reduced to a segment 2 long (half extents (1, 0, 0)) through a box 1e-4 across (double;
+ * corpus regression-double-segment-box-overlap): the box path took the segment's face within the
+ * tie bias of the sizes' sum (2e-4), and its clip kept only points at separation +2.72e-5 for
+ * boxes that overlap by 3.15e-5. A box contact apart beyond round-off for overlapping boxes now
+ * goes to the polytope path, whose ties follow the smaller box. Reference: the brute SAT. */
+static void TestSegmentBoxTieRegression(void)
+{
+	cd3Box segmentBox = {cd3MakeVec(1.2500000000000001e-05, 0, 0), cd3MakeVec(0.99999999999999978, 0, 0),
+						 cd3MakeQuat(0, 0, 0, 1)};
+	cd3Box small = {cd3MakeVec(0, 0, 0), cd3MakeVec(8.7500000000000009e-06, 3.625e-05, 6.5000000000000008e-05),
+					cd3MakeQuat(0, 0.41670824989578387, -0.80790374979794821, 0.41670824989578387)};
+	cd3Shape a = cd3MakeBoxShape(segmentBox);
+	cd3Shape b = cd3MakeBoxShape(small);
+	Brute ba, bb;
+	BruteFromShape(&ba, &a);
+	BruteFromShape(&bb, &b);
+	double exact = BruteSat(&ba, &bb);
+	TEST_CHECKF(exact < -3e-5 && exact > -3.3e-5, "the reference SAT: %.9g", exact);
+	for (int order = 0; order < 2; ++order)
+	{
+		cd3Manifold m = order == 0 ? cd3Collide(&a, &b, CD_R(5.25e-05)) : cd3Collide(&b, &a, CD_R(5.25e-05));
+		TEST_CHECKF(m.pointCount > 0 && fabs(MinSeparation(&m) - exact) <= 1e-9 * 2.0,
+					"order %d: %d points, separation %.17g, reference %.17g", order, m.pointCount,
+					MinSeparation(&m), exact);
+	}
+	CheckOnShapes("segment-box", &a, &b, 5.25e-05, 1e-12 * 2.0);
+}
+#endif
+
 static void TestHugeDoubleRegressions(void)
 {
 #if CD_DOUBLE
@@ -3001,6 +3175,12 @@ int main(void)
 	TEST_RUN(TestEpaWitnessRegressions);
 	TEST_RUN(TestPointBoxHugeTriangleRegressions);
 	TEST_RUN(TestTinyHullsCappedEpaRegression);
+	TEST_RUN(TestCapsuleBeyondSliverEdgeRegression);
+#if CD_DOUBLE
+	TEST_RUN(TestCappedEpaFallbackRegression);
+	TEST_RUN(TestSharpCornerClipRegression);
+	TEST_RUN(TestSegmentBoxTieRegression);
+#endif
 	TEST_RUN(TestTiltedCapsules);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestFlatCapsulesDepthAlongNormal);

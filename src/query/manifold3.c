@@ -54,6 +54,12 @@
 #else
 #define MANIFOLD_NOINLINE
 #endif
+/* Inlined into its hot caller even when a rare one calls it too (FaceContact's clip loop). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MANIFOLD_INLINE inline __attribute__((always_inline))
+#else
+#define MANIFOLD_INLINE inline
+#endif
 
 typedef struct ClipVertex
 {
@@ -210,7 +216,12 @@ MANIFOLD_NOINLINE static bool MatchBoxDepth(cd3Manifold* m, cdReal exact, const 
 	cdReal size = CD_R(2.0) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
 							   cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
 	cdReal limit = (FACE_BIAS + EDGE_BIAS) * size;
-	if (ManifoldMinSeparation(m) > exact + limit)
+	/* Nor may the deepest point be apart beyond round-off, as in CollidePolytopesSat: a box reduced
+	 * to a segment 2 long through a box 1e-4 across (double) took its face within the bias of the
+	 * sizes' sum, whose clip of the other box kept only points at separation +2.7e-5 for boxes
+	 * that overlap by 3.2e-5. The polytope path's ties follow the smaller box. */
+	cdReal smallest = ManifoldMinSeparation(m);
+	if (smallest > exact + limit || smallest > RoundOff(m->points[0].point, size))
 	{
 		return false;
 	}
@@ -382,8 +393,8 @@ static int IncidentFaceAtSupport(const cd3Polytope* p, cd3Vec worldNormal)
 	return best;
 }
 
-static int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec origin, uint32_t tag,
-					   ClipVertex* out)
+static MANIFOLD_INLINE int ClipToPlane(const ClipVertex* in, int count, cd3Vec normal, cd3Vec origin,
+									   uint32_t tag, ClipVertex* out)
 {
 	int n = 0;
 	for (int i = 0; i < count && n + 2 <= MAX_CLIP; ++i)
@@ -719,6 +730,32 @@ MANIFOLD_NOINLINE static RoundOffPlane RoundOffSide(const cd3Polytope* p, int fa
 	return plane;
 }
 
+/* A corner of a reference face is sharp when the sine of its angle is below this: its side
+ * planes meet at the angle, so their round-off moves the corner of the clip region along the
+ * face by that over the sine. Such a corner gets one more plane across it (SharpCornerClip). */
+#define SHARP_CORNER_SINE CD_R(0.0625)
+
+/* The two side normals (outward, any length; l0 and l1 their squared lengths) s0 and s1 of
+ * consecutive edges meet at a corner sharper than SHARP_CORNER_SINE: antiparallel within that
+ * sine. */
+static bool SharpCorner(cd3Vec s0, cd3Vec s1, cdReal l0, cdReal l1)
+{
+	cdReal d = cd3Dot(s0, s1);
+	return d < CD_R(0.0) && d * d > (CD_R(1.0) - SHARP_CORNER_SINE * SHARP_CORNER_SINE) * l0 * l1;
+}
+
+/* Clips the polygon against the plane through the sharp corner whose normal is the sum of its
+ * sides' unit normals: the face lies behind it, and the polygon no longer reaches beyond the
+ * corner where the nearly parallel side planes cross within their round-off (a sliver face 1 long
+ * whose corner's angle was 2.6e-9, double: a clipped point 5e-9 beyond the corner, off the hull).
+ * Out of line: rare. Returns the count, the result in `out`. */
+MANIFOLD_NOINLINE static int SharpCornerClip(const ClipVertex* in, int count, cd3Vec s0, cd3Vec s1,
+											 cd3Vec corner, uint32_t tag, ClipVertex* out)
+{
+	cd3Vec cap = cd3Add(cd3Normalize(s0), cd3Normalize(s1));
+	return ClipToPlane(in, count, cap, corner, tag, out);
+}
+
 /* Face contact with `ref`'s face `face` as reference. flip: ref is B. */
 static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polytope* inc, bool flip,
 							   cdReal speculativeDistance)
@@ -747,16 +784,21 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 	cd3Vec first = WorldVertex(ref, ref->edges[e].origin);
 	cd3Vec v1 = first;
 	cdReal floorSquared = EdgeFloorSquared(first, ref->size);
+	/* The first and the previous side's normal and squared length: their corners' sharpness. */
+	cd3Vec firstSide = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0)), previousSide = firstSide;
+	cdReal firstSquared = CD_R(0.0), previousSquared = CD_R(0.0);
 	do
 	{
 		cd3Vec v0 = v1;
 		int next = ref->edges[e].next;
 		v1 = next == ref->faceEdges[face] ? first : WorldVertex(ref, ref->edges[next].origin);
-		cd3Vec sideNormal;
-		if (!FaceSideNormal(v0, v1, n, floorSquared, &sideNormal))
+		cd3Vec sideNormal = cd3Cross(cd3Sub(v1, v0), n); /* FaceSideNormal, with its length kept */
+		cdReal sideSquared = cd3LengthSquared(sideNormal);
+		if (!(sideSquared > floorSquared))
 		{
 			RoundOffPlane plane = RoundOffSide(ref, face, e, n, floorSquared);
 			sideNormal = plane.side;
+			sideSquared = cd3LengthSquared(sideNormal);
 			if (plane.thin)
 			{
 				cd3Vec r0, r1;
@@ -770,9 +812,28 @@ static cd3Manifold FaceContact(const cd3Polytope* ref, int face, const cd3Polyto
 		ClipVertex* t = in;
 		in = out;
 		out = t;
+		if (side == 0)
+		{
+			firstSide = sideNormal;
+			firstSquared = sideSquared;
+		}
+		else if (SharpCorner(previousSide, sideNormal, previousSquared, sideSquared) && count > 0)
+		{
+			count = SharpCornerClip(in, count, previousSide, sideNormal, v0, tag, out);
+			t = in;
+			in = out;
+			out = t;
+		}
+		previousSide = sideNormal;
+		previousSquared = sideSquared;
 		++side;
 		e = ref->edges[e].next;
 	} while (e != ref->faceEdges[face] && count > 0);
+	if (count > 0 && SharpCorner(previousSide, firstSide, previousSquared, firstSquared))
+	{
+		count = SharpCornerClip(in, count, previousSide, firstSide, first, SIDE_TAG, out);
+		in = out;
+	}
 
 	Candidate candidates[MAX_CLIP];
 	int kept = 0;
@@ -1075,6 +1136,38 @@ static cd3Vec SatNormal(const cd3Polytope* a, const cd3Polytope* b, const cd3Sat
 	return cd3Normalize(sat->edgeNormal);
 }
 
+/* One point on the SAT's face axis of largest separation (from the face's side, the axis the
+ * separation is exact on): the other polytope's deepest vertex against the face (its support
+ * along the normal) and that vertex moved onto the face's plane by the separation. For an
+ * interior vertex the nearest face plane's projection lies on its face, so the point is on both
+ * shapes; empty when the axis is an edge pair or a side is off its shape beyond round-off. */
+static cd3Manifold SupportContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat)
+{
+	cd3Manifold m = EmptyManifold();
+	cdReal separation = cd3SatSeparation(sat);
+	bool faceA = sat->faceA >= 0 && sat->faceSeparationA == separation;
+	bool faceB = !faceA && sat->faceB >= 0 && sat->faceSeparationB == separation;
+	if (!faceA && !faceB)
+	{
+		return m;
+	}
+	cd3Vec n = SatNormal(a, b, sat); /* from A to B */
+	cd3Vec onA, onB;
+	if (faceA)
+	{
+		onB = cd3PolytopeSupport(b, cd3Neg(n));
+		onA = cd3MulSub(onB, separation, n);
+	}
+	else
+	{
+		onA = cd3PolytopeSupport(a, n);
+		onB = cd3MulAdd(onA, separation, n);
+	}
+	m.normal = n;
+	AddPoint(&m, cd3Lerp(onA, onB, CD_R(0.5)), separation, ID_VERTEX_PAIR);
+	return PointsOnShapes(&m, a, b) ? m : EmptyManifold();
+}
+
 /* Overlapping or touching polytopes (GJK's distance 0) whose SAT features give no contact on both
  * surfaces: the incident polygon clipped away in round-off and the edge pair's edges do not cross
  * (at 1e9 in float, a triangle's vertex touching a box's face, or its edge a box's edge, within
@@ -1115,8 +1208,11 @@ static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, co
 							 ? point
 							 : cd3Lerp(epa.pointA, epa.pointB, CD_R(0.5));
 		AddPoint(&m, deepest, -epa.depth, ID_VERTEX_PAIR);
+		return m;
 	}
-	return m;
+	/* EPA failed or stopped at its cap short of the SAT's depth (a point box 5.5e-9 inside a hull
+	 * of size 1.7, double: 3.1e-13 short, beyond the round-off of 3.8e-14): the SAT's face axis. */
+	return SupportContact(a, b, sat);
 }
 
 MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b,
@@ -1439,13 +1535,18 @@ static cd3Manifold CoreEdgeContact(cd3Vec p1, cd3Vec p2, cdReal r, const cd3Poly
 	return m;
 }
 
-/* Every point's polytope side lies in b within round-off (the normal points from the core to b). */
+/* Every point's polytope side lies in b within round-off (the normal points from the core to b):
+ * within each face plane and, as the planes of a sliver's two large faces meet at its edge at a
+ * small angle (1e-3 rad), by the distance to b too (as DropPointsOffShapes): a capsule's end 6e6
+ * beyond the edge of a hull 1e9 across and 1e6 thick (float) was within 6e3 of both planes. */
 static bool CorePointOnPolytope(const cd3Manifold* m, const cd3Polytope* b, cdReal size)
 {
 	for (int i = 0; i < m->pointCount; ++i)
 	{
 		cd3Vec onB = cd3MulAdd(m->points[i].point, CD_R(0.5) * m->points[i].separation, m->normal);
-		if (!InsideShape(&b->shape, onB, RoundOff(onB, size)))
+		cdReal tolerance = RoundOff(onB, size);
+		if (!InsideShape(&b->shape, onB, tolerance) ||
+			cd3VecDistance(cd3ClosestPointOnShape(&b->shape, onB), onB) > CD_R(4.0) * tolerance)
 		{
 			return false;
 		}
