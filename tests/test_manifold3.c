@@ -2411,7 +2411,6 @@ static void TestTinyHullsCappedEpaRegression(void)
 	cd3DestroyHull(otherHull);
 }
 
-
 /* The fuzz cases' shapes exactly: hulls and boxes with the quaternion as the fuzzer printed it
  * (normalizing it again can change its last bit, and the path). */
 static cd3Shape ExactHullShape(const double* xyz, int count, const double* pq, cd3Hull** hull)
@@ -2431,8 +2430,9 @@ static void CheckOnShapes(const char* name, const cd3Shape* a, const cd3Shape* b
 		const cd3Shape* second = order == 0 ? b : a;
 		cd3Manifold m = cd3Collide(first, second, (cdReal)speculative);
 		double off = WorstOffSurface(&m, first, second);
-		TEST_CHECKF(m.pointCount > 0 && off <= offTolerance, "%s, order %d: %d points, %.3g off a surface (%.3g)",
-					name, order, m.pointCount, off, offTolerance);
+		TEST_CHECKF(m.pointCount > 0 && off <= offTolerance,
+					"%s, order %d: %d points, %.3g off a surface (%.3g)", name, order, m.pointCount, off,
+					offTolerance);
 	}
 }
 
@@ -2446,7 +2446,8 @@ static void TestCapsuleBeyondSliverEdgeRegression(void)
 	cd3Shape capsule = CapsuleShape(-11500000, -125000, -12250000, -1e9, 7500000, 7500000, 7500000);
 	static const double points[12] = {-12500000, -12500000, -1e9,	   -1e9,	  -11500000, -1e9,
 									  -1e9,		 -12500000, -12500000, -12500000, -12500000, -12500000};
-	static const double place[7] = {7500000, -10250000, -12500000, -0.588143647, -0.423463434, -0.5293293, -0.44110775};
+	static const double place[7] = {7500000,	  -10250000,  -12500000,  -0.588143647,
+									-0.423463434, -0.5293293, -0.44110775};
 	cd3Hull* hull = NULL;
 #if CD_DOUBLE
 	cd3Shape sliver = HullShapeOf(points, 4, place, &hull); /* the float quaternion, normalized */
@@ -2472,17 +2473,41 @@ static void TestCapsuleBeyondSliverEdgeRegression(void)
  * hull's nearest face. Reference: the depth of the point below the hull's nearest plane. */
 static void TestCappedEpaFallbackRegression(void)
 {
-	static const double points[33] = {7.5000000000000007e-05, 7.5000000000000007e-05, 7.5000000000000007e-05,
-									  7.5000000000000007e-05, -0.000125, -0.000125, -0.000125,
-									  -0.00010375000000000001, 7.5000000000000007e-05, 7.5000000000000007e-05,
-									  7.5000000000000007e-05, -0.00010250000000000001, -5.0000000000000004e-06,
-									  1.6250000000000002e-05, -1.2500000000000001e-06, -1.6250000000000002e-05,
-									  -6.2500000000000003e-06, 2.5000000000000002e-06, -6.2500000000000003e-06,
-									  1.6250000000000002e-05, -3.375e-05, 6.2500000000000003e-06,
-									  7.5000000000000007e-05, 4.2500000000000003e-05, -0.00012000000000000002,
-									  1, 1, 1, 1, 1, 1, 1, 1};
-	static const double place[7] = {7.5000000000000007e-05, 7.5000000000000007e-05, 7.5000000000000007e-05,
-									0.5, 0.5, 0.5, 0.5};
+	static const double points[33] = {7.5000000000000007e-05,
+									  7.5000000000000007e-05,
+									  7.5000000000000007e-05,
+									  7.5000000000000007e-05,
+									  -0.000125,
+									  -0.000125,
+									  -0.000125,
+									  -0.00010375000000000001,
+									  7.5000000000000007e-05,
+									  7.5000000000000007e-05,
+									  7.5000000000000007e-05,
+									  -0.00010250000000000001,
+									  -5.0000000000000004e-06,
+									  1.6250000000000002e-05,
+									  -1.2500000000000001e-06,
+									  -1.6250000000000002e-05,
+									  -6.2500000000000003e-06,
+									  2.5000000000000002e-06,
+									  -6.2500000000000003e-06,
+									  1.6250000000000002e-05,
+									  -3.375e-05,
+									  6.2500000000000003e-06,
+									  7.5000000000000007e-05,
+									  4.2500000000000003e-05,
+									  -0.00012000000000000002,
+									  1,
+									  1,
+									  1,
+									  1,
+									  1,
+									  1,
+									  1,
+									  1};
+	static const double place[7] = {
+		7.5000000000000007e-05, 7.5000000000000007e-05, 7.5000000000000007e-05, 0.5, 0.5, 0.5, 0.5};
 	cd3Hull* hull = NULL;
 	cd3Shape tip = ExactHullShape(points, 11, place, &hull);
 	cd3Shape point = AabbShape(1, 1, 1, 1, 1, 1);
@@ -2493,7 +2518,8 @@ static void TestCappedEpaFallbackRegression(void)
 		double depth = INFINITY;
 		for (int i = 0; i < hull->faceCount; ++i)
 		{
-			depth = fmin(depth, (double)hull->planes[i].offset - (double)cd3Dot(hull->planes[i].normal, local));
+			depth =
+				fmin(depth, (double)hull->planes[i].offset - (double)cd3Dot(hull->planes[i].normal, local));
 		}
 		TEST_CHECKF(depth > 5e-9 && depth < 6e-9, "the point's depth %.9g", depth);
 		for (int order = 0; order < 2; ++order)
@@ -2516,24 +2542,56 @@ static void TestCappedEpaFallbackRegression(void)
  * hull. A sharp corner now gets a plane across it. */
 static void TestSharpCornerClipRegression(void)
 {
-	static const double pointsA[21] = {1.3750000000000002e-08, -2.5000000000000005e-09, -1.2125000000000003e-07,
-									   5.0000000000000009e-09, -8.7500000000000023e-09, 8.7500000000000023e-09,
-									   1.8750000000000002e-08, 2.5000000000000005e-09, 1, -3.7500000000000005e-08,
-									   0, 0, 0, 0, 1, -3.7500000000000005e-08, -3.7500000000000005e-08,
-									   -3.7500000000000005e-08, -3.7500000000000005e-08, -3.7500000000000005e-08,
+	static const double pointsA[21] = {1.3750000000000002e-08,
+									   -2.5000000000000005e-09,
+									   -1.2125000000000003e-07,
+									   5.0000000000000009e-09,
+									   -8.7500000000000023e-09,
+									   8.7500000000000023e-09,
+									   1.8750000000000002e-08,
+									   2.5000000000000005e-09,
+									   1,
+									   -3.7500000000000005e-08,
+									   0,
+									   0,
+									   0,
+									   0,
+									   1,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
 									   -3.7500000000000005e-08};
 	static const double placeA[7] = {-1.0000000000000002e-08, -3.7500000000000005e-09, 5.0000000000000009e-09,
-									 -0.47140452079103162,	  0.78567420131838606,	  -0.078567420131838608,
+									 -0.47140452079103162,	  0.78567420131838606,	   -0.078567420131838608,
 									 -0.39283710065919303};
-	static const double pointsB[24] = {
-		1.2500000000000003e-08,	 -1.2500000000000002e-09, -6.2500000000000014e-09, -8.7500000000000023e-09,
-		8.7500000000000023e-09,	 1.8750000000000002e-08,  2.5000000000000005e-09,  1,
-		-3.7500000000000005e-08, 0,						  0,					   0,
-		0,						 1,						  -3.7500000000000005e-08, -3.7500000000000005e-08,
-		-3.7500000000000005e-08, -3.7500000000000005e-08, -3.7500000000000005e-08, -3.7500000000000005e-08,
-		-3.7500000000000005e-08, -3.7500000000000005e-08, -8.7500000000000023e-09, -7.500000000000001e-09};
+	static const double pointsB[24] = {1.2500000000000003e-08,
+									   -1.2500000000000002e-09,
+									   -6.2500000000000014e-09,
+									   -8.7500000000000023e-09,
+									   8.7500000000000023e-09,
+									   1.8750000000000002e-08,
+									   2.5000000000000005e-09,
+									   1,
+									   -3.7500000000000005e-08,
+									   0,
+									   0,
+									   0,
+									   0,
+									   1,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -3.7500000000000005e-08,
+									   -8.7500000000000023e-09,
+									   -7.500000000000001e-09};
 	static const double placeB[7] = {-3.7500000000000005e-08, -8.7500000000000023e-09, -7.500000000000001e-09,
-									 -0.30304576336566319,	  -0.80812203564176854,	  -0.30304576336566319,
+									 -0.30304576336566319,	  -0.80812203564176854,	   -0.30304576336566319,
 									 0.40406101782088427};
 	cd3Hull *hullA = NULL, *hullB = NULL;
 	cd3Shape a = ExactHullShape(pointsA, 7, placeA, &hullA);
@@ -2565,7 +2623,8 @@ static void TestSegmentBoxTieRegression(void)
 {
 	cd3Box segmentBox = {cd3MakeVec(1.2500000000000001e-05, 0, 0), cd3MakeVec(0.99999999999999978, 0, 0),
 						 cd3MakeQuat(0, 0, 0, 1)};
-	cd3Box small = {cd3MakeVec(0, 0, 0), cd3MakeVec(8.7500000000000009e-06, 3.625e-05, 6.5000000000000008e-05),
+	cd3Box small = {cd3MakeVec(0, 0, 0),
+					cd3MakeVec(8.7500000000000009e-06, 3.625e-05, 6.5000000000000008e-05),
 					cd3MakeQuat(0, 0.41670824989578387, -0.80790374979794821, 0.41670824989578387)};
 	cd3Shape a = cd3MakeBoxShape(segmentBox);
 	cd3Shape b = cd3MakeBoxShape(small);
