@@ -1256,6 +1256,52 @@ static void TestCreatedAsleep(void)
 	cd2DestroyWorld(world);
 }
 
+/* cd2Body_SetAwake(body, false) puts the body's group to sleep: the bodies it touches or is jointed
+ * to, through any chain of them, and no other body (a static ground joins nothing). */
+static void TestSetAwakeFalseSleepsGroup(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	MakeStaticBox(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(50.0), CD_R(1.0));
+	/* A stack of three balls, a lone ball on the same ground, and a jointed pair in the air. */
+	cd2BodyId stack[3];
+	for (int i = 0; i < 3; ++i)
+	{
+		stack[i] =
+			MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(0.5) + CD_R(1.0) * (cdReal)i), CD_R(0.5), false);
+	}
+	cd2BodyId lone = MakeBall(world, cd2MakeVec(CD_R(10.0), CD_R(0.5)), CD_R(0.5), false);
+	cd2BodyId pair[2] = {MakeBall(world, cd2MakeVec(CD_R(-10.0), CD_R(20.0)), CD_R(0.5), false),
+						 MakeBall(world, cd2MakeVec(CD_R(-12.0), CD_R(20.0)), CD_R(0.5), false)};
+	cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+	jd.bodyIdA = pair[0];
+	jd.bodyIdB = pair[1];
+	jd.localAnchorB = cd2MakeVec(CD_R(2.0), CD_R(0.0));
+	cd2CreateRevoluteJoint(world, &jd);
+	for (int i = 0; i < 5; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECK(cd2World_GetCounters(world).awakeBodyCount == 6);
+
+	cd2Body_SetAwake(stack[1], false);
+	for (int i = 0; i < 3; ++i)
+	{
+		TEST_CHECKF(!cd2Body_IsAwake(stack[i]), "stack ball %d awake", i);
+	}
+	TEST_CHECK(cd2Body_IsAwake(lone) && cd2Body_IsAwake(pair[0]) && cd2Body_IsAwake(pair[1]));
+	cd2Body_SetAwake(pair[1], false);
+	TEST_CHECK(!cd2Body_IsAwake(pair[0]) && !cd2Body_IsAwake(pair[1]));
+	cdReal pairY = cd2Body_GetPosition(pair[0]).y;
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetCounters(world).awakeBodyCount == 1);
+	TEST_CHECK(cd2Body_GetPosition(pair[0]).y == pairY); /* asleep in the air: it did not fall */
+	/* Waking one body of a sleeping group wakes the group. */
+	cd2Body_SetAwake(stack[2], true);
+	TEST_CHECK(cd2Body_IsAwake(stack[0]) && cd2Body_IsAwake(stack[1]));
+	cd2DestroyWorld(world);
+}
+
 /* Disable/enable, set type, set transform, mass data. */
 static void TestBodyControls(void)
 {
@@ -1644,6 +1690,7 @@ int main(void)
 	TEST_RUN(TestFinalizeAcrossWorkers);
 	TEST_RUN(TestJointColorsAcrossWorkers);
 	TEST_RUN(TestCreatedAsleep);
+	TEST_RUN(TestSetAwakeFalseSleepsGroup);
 	TEST_RUN(TestBodyControls);
 	TEST_RUN(TestDebugDraw);
 	TEST_RUN(TestMover);

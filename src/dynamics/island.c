@@ -6,6 +6,8 @@
  * bookkeeping is indices only, nothing 2D-specific beyond the body and contact records. */
 #include "world2_internal.h"
 
+#include <stdlib.h>
+
 static int cd2FindRoot(int* parent, int i)
 {
 	while (parent[i] != i)
@@ -267,6 +269,19 @@ int cd2UpdateSleep(cd2World* world)
 	return slept;
 }
 
+static int cd2CompareIndicesDescending(const void* a, const void* b)
+{
+	int x = *(const int*)a, y = *(const int*)b;
+	return (x < y) - (x > y);
+}
+
+/* Returns an empty island to the pool (memory for its group ran out). */
+static void cd2FreeIsland(cd2World* world, int islandId)
+{
+	world->islands.data[islandId].inUse = false;
+	cdIdPool_Free(&world->islandPool, islandId);
+}
+
 void cd2SleepBodyGroup(cd2World* world, int bodyIndex)
 {
 	cd2Body* start = world->bodies.data + bodyIndex;
@@ -283,30 +298,75 @@ void cd2SleepBodyGroup(cd2World* world, int bodyIndex)
 		}
 		return;
 	}
-	int n = world->bodies.count;
-	int* parent = (int*)cdAlloc((size_t)n * sizeof(int));
-	uint8_t* candidate = (uint8_t*)cdAlloc((size_t)n);
-	if (parent == NULL || candidate == NULL)
+	/* The group is the start body's connected part of the touch and joint graph (the edges of
+	 * cd2BuildGroups), found by a walk from it: its cost is the group's, not the world's, so that
+	 * creating many bodies asleep stays linear. A visited body is marked by the new island's id
+	 * (awake candidates have none). */
+	if (!cd2IsSleepCandidate(start))
 	{
-		cdFree(parent);
-		cdFree(candidate);
+		return; /* disabled: it neither sleeps nor wakes */
+	}
+	int island = cd2NewIsland(world);
+	if (island == CD2_NULL_INDEX)
+	{
 		return;
 	}
-	cd2BuildGroups(world, parent, candidate);
-	int root = cd2FindRoot(parent, bodyIndex);
-	int island = cd2NewIsland(world);
-	if (island != CD2_NULL_INDEX)
+	/* Room for every body; left uncleared, so its cost is the group's too. */
+	int count = 0;
+	int* group = (int*)cdAlloc((size_t)world->bodies.count * sizeof(int));
+	if (group == NULL)
 	{
-		for (int i = n - 1; i >= 0; --i)
+		cd2FreeIsland(world, island);
+		return;
+	}
+	group[count++] = bodyIndex;
+	start->islandId = island;
+	for (int next = 0; next < count; ++next)
+	{
+		const cd2Body* body = world->bodies.data + group[next];
+		for (int pass = 0; pass < 2; ++pass)
 		{
-			if (cd2IsSleepCandidate(world->bodies.data + i) && cd2FindRoot(parent, i) == root)
+			int key = pass == 0 ? body->headContactKey : body->headJointKey;
+			while (key != CD2_NULL_INDEX)
 			{
-				cd2PutToSleep(world, island, i);
+				int other = CD2_NULL_INDEX, side = cd2EdgeSide(key);
+				if (pass == 0)
+				{
+					const cd2Contact* contact = world->contacts.data + cd2EdgeContact(key);
+					if (contact->inUse && (contact->flags & CD2_CONTACT_TOUCHING) != 0 &&
+						(contact->flags & CD2_CONTACT_SENSOR) == 0)
+					{
+						other = side == 0 ? contact->bodyB : contact->bodyA;
+					}
+					key = contact->nextKey[side];
+				}
+				else
+				{
+					const cd2Joint* joint = world->joints.data + cd2EdgeContact(key);
+					if (joint->inUse && joint->type != CD2_FILTER_JOINT)
+					{
+						other = side == 0 ? joint->bodyB : joint->bodyA;
+					}
+					key = joint->nextKey[side];
+				}
+				cd2Body* neighbour = other == CD2_NULL_INDEX ? NULL : world->bodies.data + other;
+				if (neighbour == NULL || !cd2IsSleepCandidate(neighbour) || neighbour->islandId == island)
+				{
+					continue;
+				}
+				neighbour->islandId = island;
+				group[count++] = other;
 			}
 		}
 	}
-	cdFree(parent);
-	cdFree(candidate);
+	/* In decreasing index order, so that the island's list runs in increasing order, as the
+	 * step's own sleeping does. */
+	qsort(group, (size_t)count, sizeof(int), cd2CompareIndicesDescending);
+	for (int i = 0; i < count; ++i)
+	{
+		cd2PutToSleep(world, island, group[i]);
+	}
+	cdFree(group);
 }
 
 void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex)
