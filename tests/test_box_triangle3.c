@@ -6,6 +6,7 @@
  * signed separation of a double-precision SAT over every face normal and edge pair. */
 #include "collide/manifold3.h"
 #include "random_shapes3.h"
+#include "manifold_separation3.h"
 #include "test.h"
 
 #include <math.h>
@@ -100,16 +101,6 @@ static double ReferenceSeparation(cd3Box box, cd3Triangle t)
 		}
 	}
 	return best;
-}
-
-static double MinSeparation(const cd3Manifold* m)
-{
-	double s = INFINITY;
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		s = fmin(s, (double)m->points[i].separation);
-	}
-	return s;
 }
 
 /* A random box near the origin, and a triangle about its size placed by a random signed gap

@@ -6,6 +6,7 @@
 #include "../src/query/epa3.h"		   /* internal: EPA and the polytope SAT, tested against each other */
 #include "../src/query/sat3_support.h" /* internal: the support scans */
 #include "random_shapes3.h"
+#include "manifold_separation3.h"
 #include "test.h"
 
 #define SPECULATIVE CD_R(0.1)
@@ -15,16 +16,6 @@
 #else
 #define TOL 1e-5
 #endif
-
-static double MinSeparation(const cd3Manifold* m)
-{
-	double s = INFINITY;
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		s = fmin(s, (double)m->points[i].separation);
-	}
-	return s;
-}
 
 static cd3Box MakeBox(double cx, double cy, double cz, double hx, double hy, double hz, cd3Quat q)
 {

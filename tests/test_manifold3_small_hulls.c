@@ -6,6 +6,7 @@
  * depth (a brute separating-axis test in double over every face normal and every edge pair's
  * cross product) and the contact must not be empty. */
 #include "collide/collide.h"
+#include "manifold_separation3.h"
 #include "test.h"
 
 #include <math.h>
@@ -140,16 +141,6 @@ static double BruteSeparation(const Placed* a, const Placed* b)
 		}
 	}
 	return best;
-}
-
-static double MinSeparation(const cd3Manifold* m)
-{
-	double s = INFINITY;
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		s = fmin(s, (double)m->points[i].separation);
-	}
-	return s;
 }
 
 /* Overlapping pairs of hulls of the given point counts (their edge pairs at most 1,024: the

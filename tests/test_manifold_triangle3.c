@@ -5,6 +5,7 @@
  * transform. */
 #include "collide/manifold3.h"
 
+#include "manifold_separation3.h"
 #include "test.h"
 
 #include <stdbool.h>
@@ -26,16 +27,6 @@ static double DistanceToTriangle(cd3Triangle t, cd3Vec p)
 {
 	cd3Shape shape = cd3MakeTriangleShape(t);
 	return (double)cd3VecDistance(cd3ClosestPointOnShape(&shape, p), p);
-}
-
-static double MinSeparation(const cd3Manifold* m)
-{
-	double s = INFINITY;
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		s = fmin(s, (double)m->points[i].separation);
-	}
-	return s;
 }
 
 static bool IsFiniteManifold(const cd3Manifold* m)
