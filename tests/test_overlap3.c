@@ -1050,6 +1050,36 @@ static void TestNearlyParallelSegmentBoxes(void)
 #endif
 }
 
+/* fuzz_query3 (corpus regression-triangle-corner-on-hull-vertex): a triangle whose corner is a
+ * vertex of a hull it overlaps deeply (its other corners inside and outside). The cores'
+ * difference has a point at the origin, GJK's triangle passed within round-off of it, the support
+ * along -v repeated a vertex, and the boolean GJK said apart. */
+static void TestTriangleCornerOnHullVertex(void)
+{
+	cd3Vec points[5] = {{CD_R(0.5), CD_R(6.0), CD_R(0.5)},
+						{CD_R(0.0), CD_R(-1.0), CD_R(-1.0)},
+						{CD_R(1.0), CD_R(1.0), CD_R(1.0)},
+						{CD_R(-1.0), CD_R(-1.0), CD_R(1.0)},
+						{CD_R(-1.0), CD_R(1.0), CD_R(1.0)}};
+	cd3Hull* hull = NULL;
+	TEST_CHECK(cd3ComputeHull(points, 5, &hull) == CD_OK);
+	if (hull == NULL)
+	{
+		return;
+	}
+	cd3Transform place = {CD3_VEC_ZERO,
+						  {CD_R(0.0), CD_R(-0.408248276), CD_R(0.408248276), CD_R(0.816496551)}};
+	cd3Shape a = cd3MakeHullShape(hull, place);
+	cd3Triangle triangle = {
+		{CD_R(-1.0), CD_R(1.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0), CD_R(0.0)}, CD3_VEC_ZERO};
+	cd3Shape b = cd3MakeTriangleShape(triangle);
+	/* The reference: the triangle's centroid lies inside the hull. */
+	TEST_CHECK(cd3PointInShape(&a, cd3MakeVec(CD_R(0.0), CD_R(1.0) / CD_R(3.0), CD_R(1.0) / CD_R(3.0))));
+	TEST_CHECK(cd3Overlap(&a, &b) && cd3Overlap(&b, &a));
+	TEST_CHECK(cd3Distance(&a, &b).distance == CD_R(0.0) && cd3Distance(&b, &a).distance == CD_R(0.0));
+	cd3DestroyHull(hull);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSourceTexts);
@@ -1070,5 +1100,6 @@ int main(void)
 	TEST_RUN(TestTriangleSegmentRejection);
 	TEST_RUN(TestSegmentNearlyParallelToBoxEdge);
 	TEST_RUN(TestNearlyParallelSegmentBoxes);
+	TEST_RUN(TestTriangleCornerOnHullVertex);
 	return TEST_SUMMARY();
 }

@@ -969,6 +969,48 @@ static cdReal VertexSize(const GjkVertex* vertex)
 	return cdMax(MaxAbsComponent(vertex->a), MaxAbsComponent(vertex->b));
 }
 
+/* For a triangle simplex whose next support repeats one of its vertices: a support along the
+ * triangle's normal, either way (the origin's side first), that lies beyond the triangle's plane
+ * by more than the round-off of its points. Sets *direction and the support's indices and returns
+ * true when there is one. */
+static bool FaceNormalSupport(const cd3Core* a, const cd3Core* b, const GjkSimplex* simplex, cdReal size,
+							  cd3Vec* direction, int* indexA, int* indexB)
+{
+	cd3Vec w0 = simplex->v[0].w;
+	cd3Vec normal = cd3Cross(cd3Sub(simplex->v[1].w, w0), cd3Sub(simplex->v[2].w, w0));
+	cdReal length = cd3Length(normal);
+	if (!(length > CD_R(0.0)))
+	{
+		return false;
+	}
+	normal = cd3Scale(CD_R(1.0) / length, normal);
+	if (cd3Dot(normal, w0) > CD_R(0.0))
+	{
+		normal = cd3Neg(normal); /* towards the origin's side of the plane */
+	}
+	for (int side = 0; side < 2; ++side)
+	{
+		cd3Vec d = side == 0 ? normal : cd3Neg(normal);
+		int ia = cd3CoreSupport(a, d), ib = cd3CoreSupport(b, cd3Neg(d));
+		bool repeated = false;
+		for (int i = 0; i < 3; ++i)
+		{
+			repeated = repeated || (simplex->v[i].indexA == ia && simplex->v[i].indexB == ib);
+		}
+		cd3Vec w = cd3Sub(cd3CorePoint(a, ia), cd3CorePoint(b, ib));
+		cdReal roundOff = GJK_TOUCH_TOLERANCE * cdMax(size, cdMax(MaxAbsComponent(cd3CorePoint(a, ia)),
+																  MaxAbsComponent(cd3CorePoint(b, ib))));
+		if (!repeated && cd3Dot(d, cd3Sub(w, w0)) > roundOff)
+		{
+			*direction = d;
+			*indexA = ia;
+			*indexB = ib;
+			return true;
+		}
+	}
+	return false;
+}
+
 /* Closest points of the cores of a and b; *touching is set when the cores overlap (then
  * *pointA and *pointB coincide up to round-off). Warm-started from *cache when it is usable, and
  * writes the final simplex back to it (cache may be NULL). */
@@ -1009,6 +1051,7 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 	 * and of the vertex appended to it (set at each append; the lean path runs only after one).
 	 * Kept as it goes: a loop over the simplex's changing count mispredicted its exit. */
 	cdReal appendedSize = CD_R(0.0);
+	bool normalTried = false;
 	int iteration = 0;
 	for (; iteration < GJK_MAX_ITERATIONS; ++iteration)
 	{
@@ -1120,7 +1163,17 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 		}
 		if (duplicate)
 		{
-			break;
+			/* A triangle whose plane passes through the origin within round-off: -v is round-off,
+			 * and its support can repeat a vertex although the cores' difference reaches beyond
+			 * the plane (the origin deep inside it: a triangle's corner on a hull's vertex makes
+			 * a point of the difference at the origin). Once per call, the plane's normal, the
+			 * origin's side first, looks for a vertex beyond the plane by more than round-off. */
+			if (simplex.count != 3 || normalTried ||
+				!FaceNormalSupport(a, b, &simplex, simplexSize, &direction, &indexA, &indexB))
+			{
+				break;
+			}
+			normalTried = true;
 		}
 		/* Built in place, in the free slot after the simplex's vertices (at most three remain
 		 * after a solve that does not enclose the origin). */
