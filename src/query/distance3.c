@@ -28,6 +28,10 @@
 /* The origin counts as touching the simplex when the closest point is within this many
  * epsilons of the largest coordinate of its support points: below it the distance is round-off. */
 #define GJK_TOUCH_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
+/* A triangle simplex within this many touching tolerances of the origin whose next support repeats
+ * a vertex may have the origin on its plane by round-off only: its normal is tried (GjkCores).
+ * Farther out the repeated support is convergence, and the common case costs nothing more. */
+#define GJK_FACE_NORMAL_BAND CD_R(64.0)
 
 static cdReal MaxAbsComponent(cd3Vec v)
 {
@@ -1166,9 +1170,11 @@ static int GjkCores(const cd3Core* a, const cd3Core* b, cd3SimplexCache* cache, 
 			/* A triangle whose plane passes through the origin within round-off: -v is round-off,
 			 * and its support can repeat a vertex although the cores' difference reaches beyond
 			 * the plane (the origin deep inside it: a triangle's corner on a hull's vertex makes
-			 * a point of the difference at the origin). Once per call, the plane's normal, the
-			 * origin's side first, looks for a vertex beyond the plane by more than round-off. */
-			if (simplex.count != 3 || normalTried ||
+			 * a point of the difference at the origin). Once per call, when the triangle is that
+			 * close, the plane's normal, the origin's side first, looks for a vertex beyond the
+			 * plane by more than round-off. */
+			cdReal nearOrigin = GJK_FACE_NORMAL_BAND * touch;
+			if (simplex.count != 3 || normalTried || distanceSquared > nearOrigin * nearOrigin ||
 				!FaceNormalSupport(a, b, &simplex, simplexSize, &direction, &indexA, &indexB))
 			{
 				break;
