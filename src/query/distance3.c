@@ -30,7 +30,7 @@
 #define GJK_TOUCH_TOLERANCE (CD_R(16.0) * CD_REAL_EPSILON)
 /* A triangle simplex within this many touching tolerances of the origin whose next support repeats
  * a vertex may have the origin on its plane by round-off only: its normal is tried (GjkCores).
- * Farther out the repeated support is convergence, and the common case costs nothing more. */
+ * Farther out the repeated support is convergence. */
 #define GJK_FACE_NORMAL_BAND CD_R(64.0)
 
 static cdReal MaxAbsComponent(cd3Vec v)
