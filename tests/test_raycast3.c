@@ -627,6 +627,41 @@ static void TestCapsuleExact(void)
 	TEST_CHECK(IsFiniteHit(hit));
 }
 
+/* A ray from a point on a capsule's side (rounded to cdReal from the exact surface point) towards
+ * the axis ends deep inside: a hit at or near fraction 0 at every scale up to 1e9, although the
+ * inside test may round the origin to either side (the 1e9 case missed; fuzz_query2). */
+static void TestCapsuleRayFromSurfaceInward(void)
+{
+#define SURFACE_VEC(x, y) cd3MakeVec((cdReal)(x), (cdReal)(y), CD_R(0.0))
+	cd3Capsule big = {SURFACE_VEC(-1e9, -1e9), SURFACE_VEC(1e9, 5e8), CD_R(1e9)};
+	cd3RayHit hit;
+	TEST_CHECK(cd3RaycastCapsule(big, Ray(CD_R(-1e9), CD_R(2.5e8), 0, CD_R(1e9), 0, 0), &hit));
+	TEST_CHECK(hit.fraction <= CD_R(1e-6));
+	TestRng rng = TestRngMake(0x5eed0cab);
+	int misses = 0;
+	for (int i = 0; i < 20000; ++i)
+	{
+		double scale = pow(10.0, TestRngRange(&rng, 0.0, 9.0));
+		double ax = TestRngRange(&rng, -scale, scale), ay = TestRngRange(&rng, -scale, scale);
+		double bx = TestRngRange(&rng, -scale, scale), by = TestRngRange(&rng, -scale, scale);
+		double radius = TestRngRange(&rng, 0.05, 1.05) * scale;
+		double length = sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
+		double ux = (bx - ax) / length, uy = (by - ay) / length;
+		double t = TestRngRange(&rng, 0.0, 1.0);
+		double side = TestRngRange(&rng, -1.0, 1.0) < 0.0 ? -1.0 : 1.0;
+		double footX = ax + t * (bx - ax), footY = ay + t * (by - ay);
+		double px = footX - side * uy * radius, py = footY + side * ux * radius;
+		cd3Capsule c = {SURFACE_VEC(ax, ay), SURFACE_VEC(bx, by), (cdReal)radius};
+		cd3Ray ray = {SURFACE_VEC(px, py), SURFACE_VEC(footX - px, footY - py)};
+		if (!cd3RaycastCapsule(c, ray, &hit) || hit.fraction > CD_R(1e-3))
+		{
+			++misses;
+		}
+	}
+	TEST_CHECKF(misses == 0, "%d of 20000 rays from the side inward missed or entered late", misses);
+#undef SURFACE_VEC
+}
+
 static void TestAabbExact(void)
 {
 	cd3Aabb b = {cd3MakeVec(CD_R(-1.0), CD_R(-2.0), CD_R(-3.0)), cd3MakeVec(CD_R(1.0), CD_R(2.0), CD_R(3.0))};
@@ -1513,6 +1548,7 @@ int main(void)
 {
 	TEST_RUN(TestSphereExact);
 	TEST_RUN(TestCapsuleExact);
+	TEST_RUN(TestCapsuleRayFromSurfaceInward);
 	TEST_RUN(TestAabbExact);
 	TEST_RUN(TestBoxExact);
 	TEST_RUN(TestTriangleExact);

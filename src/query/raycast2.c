@@ -127,10 +127,12 @@ bool cd2RaycastCapsule(cd2Capsule c, cd2Ray ray, cd2RayHit* hit)
 		cdReal rate = cd2Cross(unitAxis, direction);
 		bool approaching = (side > CD_R(0.0) && rate < CD_R(0.0)) || (side < CD_R(0.0) && rate > CD_R(0.0));
 		cdReal gap = cdAbs(side) - c.radius;
-		/* gap <= best * |rate| before dividing: a nearly parallel ray never divides by ~0. */
-		if (gap > CD_R(0.0) && approaching && gap <= best * cdAbs(rate))
+		/* gap <= best * |rate| before dividing: a nearly parallel ray never divides by ~0. A gap
+		 * at or below zero is an origin on the side that the inside test above rounded the other
+		 * way (at the 1e9 scale, a ray from the surface into the capsule missed): it enters at 0. */
+		if (approaching && gap <= best * cdAbs(rate))
 		{
-			cdReal t = gap / cdAbs(rate);
+			cdReal t = gap > CD_R(0.0) ? gap / cdAbs(rate) : CD_R(0.0);
 			cdReal hitAlong = cd2Dot(offset, unitAxis) + t * cd2Dot(direction, unitAxis);
 			if (CD_R(0.0) <= hitAlong && hitAlong <= axisLength)
 			{

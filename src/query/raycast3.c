@@ -158,9 +158,11 @@ bool cd3RaycastCapsule(cd3Capsule c, cd3Ray ray, cd3RayHit* hit)
 		 * sideways by less than the round-off of its coordinates: left to the end balls. */
 		cd3Vec across = cd3Normalize(directionPerp);
 		bool sideways = cd3LengthSquared(across) > CD_R(0.0);
-		if (sideways && outside > CD_R(0.0) && b < CD_R(0.0) && disc >= CD_R(0.0))
+		/* An outside at or below zero is an origin on the side that the inside test above rounded
+		 * the other way (as in 2D, a ray from the surface into the capsule missed): it enters at 0. */
+		if (sideways && b < CD_R(0.0) && disc >= CD_R(0.0))
 		{
-			cdReal t = outside / (-b + cdSqrt(disc));
+			cdReal t = outside > CD_R(0.0) ? outside / (-b + cdSqrt(disc)) : CD_R(0.0);
 			cdReal hitAlong = offsetAlong + t * directionAlong;
 			/* The perpendicular parts carry a round-off of epsilon times the coordinates: for a
 			 * radius below it (a zero-radius capsule at the 1e9 scale) t is noise, and a hit
