@@ -152,7 +152,7 @@ static World2Quality checkPyramids(const World2Snapshot* start, const World2Snap
 	q.computed = true;
 	q.limit = 0.02;
 	int apexCount = 0, fallen = 0, dynamicCount = 0;
-	double worst = 0.0;
+	double worst = 0.0, worstDx = 0.0, worstDy = 0.0;
 	/* Bucket the dynamic bodies by rows of 1 m for the "resting on" search. */
 	for (int i = 0; i < start->count; ++i)
 	{
@@ -183,13 +183,19 @@ static World2Quality checkPyramids(const World2Snapshot* start, const World2Snap
 		if (!covered)
 		{
 			++apexCount;
-			worst = d > worst ? d : worst;
+			if (d > worst)
+			{
+				worst = d;
+				worstDx = e->x - b->x;
+				worstDy = e->y - b->y;
+			}
 		}
 	}
 	q.value = worst;
 	q.pass = apexCount > 0 && worst < q.limit;
-	snprintf(q.text, sizeof(q.text), "worst of %d apexes moved %.2f cm; %d of %d boxes moved > 10 cm",
-			 apexCount, 100.0 * worst, fallen, dynamicCount);
+	snprintf(q.text, sizeof(q.text),
+			 "worst of %d apexes moved %.2f cm (x %+.2f, y %+.2f); %d of %d boxes moved > 10 cm", apexCount,
+			 100.0 * worst, 100.0 * worstDx, 100.0 * worstDy, fallen, dynamicCount);
 	return q;
 }
 
@@ -240,7 +246,7 @@ static World2Quality checkPyramidsFast(const World2Snapshot* start, const World2
 	q.computed = true;
 	q.limit = 0.02;
 	int apexCount = 0, fallen = 0, dynamicCount = 0;
-	double worst = 0.0;
+	double worst = 0.0, worstDx = 0.0, worstDy = 0.0;
 	for (int i = 0; i < start->count; ++i)
 	{
 		const World2Body* b = &start->bodies[i];
@@ -276,7 +282,12 @@ static World2Quality checkPyramidsFast(const World2Snapshot* start, const World2
 		if (!covered)
 		{
 			++apexCount;
-			worst = d > worst ? d : worst;
+			if (d > worst)
+			{
+				worst = d;
+				worstDx = e->x - b->x;
+				worstDy = e->y - b->y;
+			}
 		}
 	}
 #undef W2_CELL
@@ -284,8 +295,9 @@ static World2Quality checkPyramidsFast(const World2Snapshot* start, const World2
 	free(table);
 	q.value = worst;
 	q.pass = apexCount > 0 && worst < q.limit;
-	snprintf(q.text, sizeof(q.text), "worst of %d apexes moved %.2f cm; %d of %d boxes moved > 10 cm",
-			 apexCount, 100.0 * worst, fallen, dynamicCount);
+	snprintf(q.text, sizeof(q.text),
+			 "worst of %d apexes moved %.2f cm (x %+.2f, y %+.2f); %d of %d boxes moved > 10 cm", apexCount,
+			 100.0 * worst, 100.0 * worstDx, 100.0 * worstDy, fallen, dynamicCount);
 	return q;
 }
 
