@@ -1027,10 +1027,10 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 /* The two floats of v in lanes 0 and 1 of a vector (upper lanes zero). Through a double: a
  * cd2Vec or cd2Rot argument arrives in one vector register, and this keeps it there, where
  * reading its fields split it through the stack or the integer registers. */
-static inline __m128 PairLanes(const void* pair)
+static inline __m128 PairLanes(cd2Vec pair)
 {
 	double bits;
-	memcpy(&bits, pair, sizeof bits);
+	memcpy(&bits, &pair, sizeof bits);
 	return _mm_castpd_ps(_mm_set_sd(bits));
 }
 
@@ -1056,12 +1056,12 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 #if CD2_SEPARATION_SSE
 	/* In the float build on SSE2 on the argument registers' pairs as they arrive (centre, xfB.p
 	 * and xfB.q two floats each), and the contact mapped back the same way. */
-	__m128 rotation = PairLanes(&xfB.q);
+	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
 	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
 	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
-	__m128 origin = PairLanes(&xfB.p);
+	__m128 origin = PairLanes(xfB.p);
 	__m128 inverseSine = _mm_xor_ps(sine, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); /* (s, -s) */
-	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(&a.center), origin));
+	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(a.center), origin));
 	cd2Vec center = cd2MakeVec(_mm_cvtss_f32(placed),
 							   _mm_cvtss_f32(_mm_shuffle_ps(placed, placed, _MM_SHUFFLE(1, 1, 1, 1))));
 #else
