@@ -14,6 +14,12 @@
 // - time of impact: both take local shapes and two sweeps (A at rest, B translating and rotating
 //   from separated to overlapping); target separation one linear slop, tolerance a quarter slop;
 // - mesh rays: the closest hit of each ray (segment of length 30) on the height field.
+// - 2D manifolds, "world output" rows: collide's manifold holds the normal, the points and their
+//   separations (in A's frame), b2Manifold only local anchors; a step needs world normals, points
+//   and separations, which Box2D 2.4's solver gets from b2WorldManifold and collide's world from
+//   one rotation and one transform per point. These rows time the manifold call and that step to
+//   world output on the pairs that touch, on both sides; the other manifold rows time the call
+//   alone. Contact margins match Box2D's polygon skin (b2_polygonRadius per polygon).
 //
 // Timing: thread CPU time; each figure is the median of the runs, collide's and the peers' runs
 // alternating so that all see the same machine load. Compare ratios, not nanoseconds, across
@@ -197,7 +203,41 @@ b2Transform ToBox2D(const double c[2], double angle)
 	x.Set(b2Vec2((float)c[0], (float)c[1]), (float)angle);
 	return x;
 }
+
+// Box2D's world output of a manifold (world normal, points and separations), as its solver
+// builds it for a touching contact; returns pointCount (one separation is tested so that the
+// result is used).
+int Box2DWorldOutput(const b2Manifold& m, const b2Transform& xfA, float radiusA, const b2Transform& xfB,
+					 float radiusB)
+{
+	if (m.pointCount == 0)
+	{
+		return 0;
+	}
+	b2WorldManifold w;
+	w.Initialize(&m, xfA, radiusA, xfB, radiusB);
+	return m.pointCount + (w.separations[0] > 1.0e30f ? 1 : 0);
+}
 #endif
+
+// collide's world output of a manifold in A's frame (cd2CollideLocal and the ...Local functions):
+// the normal rotated and the points moved by A's body transform, as the 2D world does for a
+// touching contact; returns pointCount (the results are tested so that they are computed).
+int WorldOutput(const cd2Manifold& m, cd2Transform xfA)
+{
+	if (m.pointCount == 0)
+	{
+		return 0;
+	}
+	cd2Vec normal = cd2RotateVector(xfA.q, m.normal);
+	cdReal check = normal.x + normal.y;
+	for (int k = 0; k < m.pointCount; ++k)
+	{
+		cd2Vec point = cd2TransformPoint(xfA, m.points[k].point);
+		check += point.x + point.y + m.points[k].separation;
+	}
+	return m.pointCount + (check > (cdReal)1.0e30 ? 1 : 0);
+}
 
 struct Set2
 {
@@ -418,6 +458,25 @@ int main(int argc, char** argv)
 #endif
 		Row(o, kind == 0 ? "2D manifold box-box" : "2D manifold polygon-polygon", SC_NPAIRS, mine, peers);
 
+		auto mineWorld = [&s, speculative](int i) {
+			cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.b[(size_t)i].xf);
+			return WorldOutput(
+				cd2CollidePolygonPolygonLocal(&s.a[(size_t)i].local, &s.b[(size_t)i].local, xf, speculative),
+				s.a[(size_t)i].xf);
+		};
+		std::vector<Column> worldPeers;
+#ifdef COLLIDE_BENCH_HAVE_BOX2D
+		worldPeers.push_back(Column{"box2d-2.4 +b2WorldManifold", [&s](int i) {
+										b2Manifold m;
+										b2CollidePolygons(&m, &s.pa[(size_t)i], s.xa[(size_t)i],
+														  &s.pb[(size_t)i], s.xb[(size_t)i]);
+										return Box2DWorldOutput(m, s.xa[(size_t)i], s.pa[(size_t)i].m_radius,
+																s.xb[(size_t)i], s.pb[(size_t)i].m_radius);
+									}});
+#endif
+		Row(o, kind == 0 ? "2D manifold box-box, world output" : "2D manifold polygon, world output",
+			SC_NPAIRS, mineWorld, worldPeers);
+
 		// The 2D world's call: the tagged-shape dispatcher in the local frame.
 		std::vector<cd2Shape> ta, tb;
 		for (int i = 0; i < SC_NPAIRS; ++i)
@@ -468,9 +527,12 @@ int main(int argc, char** argv)
 	}
 	{
 		Set2 s = MakeSet2(2, SC_SEED_CIRCLE2);
-		auto mine = [&s](int i) {
+		// Box2D 2.4 reports circle-polygon contacts up to b2_polygonRadius apart (the polygon's
+		// skin); collide's sharp polygon gets the same margin as a speculative distance.
+		const cdReal skin = (cdReal)(2.0 * 0.005);
+		auto mine = [&s, skin](int i) {
 			cd2Transform xf = cd2InvMulTransforms(s.xfCircle[(size_t)i], s.a[(size_t)i].xf);
-			return cd2CollideCirclePolygonLocal(s.circle[(size_t)i], &s.a[(size_t)i].local, xf, (cdReal)0)
+			return cd2CollideCirclePolygonLocal(s.circle[(size_t)i], &s.a[(size_t)i].local, xf, skin)
 				.pointCount;
 		};
 		std::vector<Column> peers;
@@ -483,6 +545,24 @@ int main(int argc, char** argv)
 							   }});
 #endif
 		Row(o, "2D manifold circle-polygon", SC_NPAIRS, mine, peers);
+
+		auto mineWorld = [&s, skin](int i) {
+			cd2Transform xf = cd2InvMulTransforms(s.xfCircle[(size_t)i], s.a[(size_t)i].xf);
+			return WorldOutput(
+				cd2CollideCirclePolygonLocal(s.circle[(size_t)i], &s.a[(size_t)i].local, xf, skin),
+				s.xfCircle[(size_t)i]);
+		};
+		std::vector<Column> worldPeers;
+#ifdef COLLIDE_BENCH_HAVE_BOX2D
+		worldPeers.push_back(Column{"box2d-2.4 +b2WorldManifold", [&s](int i) {
+										b2Manifold m;
+										b2CollidePolygonAndCircle(&m, &s.pa[(size_t)i], s.xa[(size_t)i],
+																  &s.pc[(size_t)i], s.xc[(size_t)i]);
+										return Box2DWorldOutput(m, s.xa[(size_t)i], s.pa[(size_t)i].m_radius,
+																s.xc[(size_t)i], s.pc[(size_t)i].m_radius);
+									}});
+#endif
+		Row(o, "2D manifold circle-polygon, world output", SC_NPAIRS, mineWorld, worldPeers);
 	}
 	{
 		Toi2 s = MakeToi2();

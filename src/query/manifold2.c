@@ -23,6 +23,9 @@
 #include "pairs2.h"
 #include "sat2_separation.h"
 
+#include <stddef.h>
+#include <string.h>
+
 /* Cores apart by more than this many linear slops take the closest-feature path (and
  * vertex-vertex normals are then safe to normalize); below it the separating axis answer is used
  * as is. B's reference edge is preferred over A's only when it separates by this many slops more:
@@ -173,7 +176,9 @@ static cd2Manifold CollidePoints(const Core* a, const Core* b, cdReal speculativ
 static inline cdReal LengthNoErrno(cd2Vec v)
 {
 #if CD2_SEPARATION_SSE
-	return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(v.x * v.x + v.y * v.y)));
+	/* _mm_set1_ps, not _mm_set_ss: only lane 0 counts, and zeroing the others took the value
+	 * through an integer register on the way to the square root. */
+	return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set1_ps(v.x * v.x + v.y * v.y)));
 #else
 	return cd2Length(v);
 #endif
@@ -1018,6 +1023,27 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	return CollideCoresFrom(&coreA, &coreB, speculativeDistance, separationA, edgeA);
 }
 
+#if CD2_SEPARATION_SSE
+/* The two floats of v in lanes 0 and 1 of a vector (upper lanes zero). Through a double: a
+ * cd2Vec or cd2Rot argument arrives in one vector register, and this keeps it there, where
+ * reading its fields split it through the stack or the integer registers. */
+static inline __m128 PairLanes(cd2Vec pair)
+{
+	double bits;
+	memcpy(&bits, &pair, sizeof bits);
+	return _mm_castpd_ps(_mm_set_sd(bits));
+}
+
+/* cosine * v + sine * swap(v) in lanes 0 and 1: with sine = (-s, s) the rotation of v by (c, s),
+ * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
+ * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
+ * product plus or minus another, and addition commutes exactly). */
+static inline __m128 RotateLanes(__m128 cosine, __m128 sine, __m128 v)
+{
+	return _mm_add_ps(_mm_mul_ps(cosine, v), _mm_mul_ps(sine, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+}
+#endif
+
 /* The circle's centre into the polygon's frame, the manifold built there and mapped back in
  * place (a manifold returned by one call and copied by the next waited on store forwarding). */
 cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
@@ -1027,8 +1053,21 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	/* The centre in B's frame, cd2InvTransformPoint(xfB, centre): one subtraction and one
 	 * rotation on the way to the first edge test, whose branch every pair waits on (building the
 	 * inverse transform first and placing the centre by it adds work before that branch). */
+#if CD2_SEPARATION_SSE
+	/* In the float build on SSE2 on the argument registers' pairs as they arrive (centre, xfB.p
+	 * and xfB.q two floats each), and the contact mapped back the same way. */
+	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
+	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
+	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+	__m128 origin = PairLanes(xfB.p);
+	__m128 inverseSine = _mm_xor_ps(sine, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); /* (s, -s) */
+	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(a.center), origin));
+	cd2Vec center = cd2MakeVec(_mm_cvtss_f32(placed),
+							   _mm_cvtss_f32(_mm_shuffle_ps(placed, placed, _MM_SHUFFLE(1, 1, 1, 1))));
+#else
 	cd2Rot q = xfB.q;
 	cd2Vec center = cd2InvRotateVector(q, cd2Sub(a.center, xfB.p));
+#endif
 	cd2Manifold m;
 	Core coreB;
 	InitPolygonCore(&coreB, b);
@@ -1036,14 +1075,36 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	m = EmptyManifold();
 	if (contact.hit)
 	{
+#if CD2_SEPARATION_SSE
+		/* Normal (negated: from the circle to the polygon) rotated, point rotated and moved, in
+		 * one vector: cd2RotateVector(q, cd2Neg(normal)) and cd2TransformPoint(xfB, point). */
+		__m128 normal =
+			_mm_xor_ps(_mm_unpacklo_ps(_mm_set1_ps(contact.normal.x), _mm_set1_ps(contact.normal.y)),
+					   _mm_set1_ps(-0.0f));
+		__m128 pair = _mm_movelh_ps(
+			normal, _mm_unpacklo_ps(_mm_set1_ps(contact.point.x), _mm_set1_ps(contact.point.y)));
+		__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
+		__m128 mapped = RotateLanes(cosine, forwardSine, pair);
+		/* Plus -0 in the normal's lanes: x + -0 is x for every x, signed zeros included. */
+		mapped = _mm_add_ps(mapped, _mm_movelh_ps(_mm_set1_ps(-0.0f), origin));
+		/* The normal and the first point are adjacent (checked below the function). */
+		_mm_storeu_ps(&m.normal.x, mapped);
+#else
 		m.normal = cd2RotateVector(q, cd2Neg(contact.normal));
 		m.points[0].point = cd2TransformPoint(xfB, contact.point);
+#endif
 		m.points[0].separation = contact.separation;
 		m.points[0].id = contact.id;
 		m.pointCount = 1;
 	}
 	return m;
 }
+
+#if CD2_SEPARATION_SSE
+_Static_assert(offsetof(cd2Manifold, points) == 2 * sizeof(cdReal) &&
+				   offsetof(cd2ManifoldPoint, point) == 0 && sizeof(cd2Vec) == 2 * sizeof(cdReal),
+			   "cd2CollideCirclePolygonLocal stores the normal and the first point as four adjacent floats");
+#endif
 
 cd2Manifold cd2CollidePolygonSegment(const cd2Polygon* a, cd2Segment b, cdReal speculativeDistance)
 {
