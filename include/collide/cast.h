@@ -17,9 +17,12 @@
  * the closest-point normal plus |angular speed| times each shape's largest distance from its
  * sweep centre. It never steps past a time where the distance falls below the target. The
  * bounding circles (spheres) about the sweep centres skip the far part of the step, and between
- * GJK calls a few cheap steps advance on the separation along the last closest-point axis (a
- * lower bound on the distance): both keep the guarantee. Each GJK call is warm-started from the
- * previous one's simplex (cd2SimplexCache / cd3SimplexCache). */
+ * GJK calls a few cheap steps advance on the separation along one axis (a lower bound on the
+ * distance, with the same kind of speed bound): both keep the guarantee. The axis is the last
+ * closest-point normal (3D), or in 2D the axis of the last closest features turning with the
+ * bodies (the normal of the closest edge, or the direction between the closest vertices), whose
+ * points also show when the distance is within the tolerance without another GJK call. Each GJK
+ * call is warm-started from the previous one's simplex (cd2SimplexCache / cd3SimplexCache). */
 #ifndef COLLIDE_CAST_H
 #define COLLIDE_CAST_H
 

@@ -269,4 +269,143 @@ static int ContactAxes(const cd2Shape* a, const cd2Shape* b, cd2Vec* axes, int c
 	return count;
 }
 
+/* The time of impact's axis between GJK calls (cast.inc): the features of the last GJK simplex
+ * (its cache, on the body-frame cores) moved with the bodies. One point of each core: the
+ * direction between them; an edge of one core (two of its points) against a point or an edge of
+ * the other: the edge's normal, turning with its body. Any unit axis gives a separation at most
+ * the distance, so the choice changes how fast the steps go, never their bound. */
+typedef enum FeatureAxisType
+{
+	FEATURE_AXIS_FIXED,	 /* the closest-point normal, fixed in the world */
+	FEATURE_AXIS_POINTS, /* pointB - pointA, normalized */
+	FEATURE_AXIS_EDGE_A, /* an edge normal of A, in A's frame */
+	FEATURE_AXIS_EDGE_B	 /* an edge normal of B, in B's frame */
+} FeatureAxisType;
+
+typedef struct FeatureAxis
+{
+	FeatureAxisType type;
+	int countA, countB; /* the features' points: 1 or 2 on each core (index 1 = index 0 for 1) */
+	int indexA[2], indexB[2];
+	cd2Vec normal; /* FIXED: the world axis; EDGE_A / EDGE_B: the axis in that body's frame */
+} FeatureAxis;
+#define CAST_FEATURE_AXIS
+
+/* The unit normal of the edge p0-p1 (local points) in that body's frame, signed so that turned
+ * by q it points along the closest-point normal; false when the edge is degenerate or does not
+ * face that normal (a cache of no edge). */
+static bool EdgeAxis(cd2Vec p0, cd2Vec p1, cd2Rot q, cd2Vec normal, cd2Vec* axis)
+{
+	cd2Vec n = cd2Normalize(cd2RightPerp(cd2Sub(p1, p0)));
+	cdReal facing = cd2Dot(cd2RotateVector(q, n), normal);
+	if (cdAbs(facing) < CD_R(0.99))
+	{
+		return false;
+	}
+	*axis = facing > CD_R(0.0) ? n : cd2Neg(n);
+	return true;
+}
+
+static FeatureAxis MakeFeatureAxis(const cd2Core* localA, const cd2Core* localB, const cd2SimplexCache* cache,
+								   cd2Transform xfA, cd2Transform xfB, cd2Vec normal)
+{
+	FeatureAxis f;
+	f.type = FEATURE_AXIS_FIXED;
+	f.normal = normal;
+	f.countA = f.countB = 1;
+	f.indexA[0] = f.indexA[1] = f.indexB[0] = f.indexB[1] = 0;
+	if (cache->count < 1 || cache->count > 2)
+	{
+		return f;
+	}
+	/* The distinct points of each core in the simplex (GJK's cache holds valid indices). */
+	f.indexA[0] = cache->indexA[0];
+	f.indexB[0] = cache->indexB[0];
+	if (cache->count == 2)
+	{
+		if (cache->indexA[1] != cache->indexA[0])
+		{
+			f.indexA[f.countA++] = cache->indexA[1];
+		}
+		if (cache->indexB[1] != cache->indexB[0])
+		{
+			f.indexB[f.countB++] = cache->indexB[1];
+		}
+	}
+	f.indexA[1] = f.indexA[f.countA - 1];
+	f.indexB[1] = f.indexB[f.countB - 1];
+	CD_ASSERT(f.indexA[0] < localA->count && f.indexA[1] < localA->count && f.indexB[0] < localB->count &&
+			  f.indexB[1] < localB->count);
+	cd2Vec axis;
+	if (f.countA == 2 &&
+		EdgeAxis(localA->points[f.indexA[0]], localA->points[f.indexA[1]], xfA.q, normal, &axis))
+	{
+		f.type = FEATURE_AXIS_EDGE_A;
+		f.normal = axis;
+	}
+	else if (f.countB == 2 &&
+			 EdgeAxis(localB->points[f.indexB[0]], localB->points[f.indexB[1]], xfB.q, normal, &axis))
+	{
+		f.type = FEATURE_AXIS_EDGE_B;
+		f.normal = axis;
+	}
+	else if (f.countA == 1 && f.countB == 1)
+	{
+		f.type = FEATURE_AXIS_POINTS;
+	}
+	return f;
+}
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline cd2Vec
+FeatureAxisAt(const FeatureAxis* f, const cd2Core* localA, const cd2Core* localB, cd2Transform xfA,
+			  cd2Transform xfB)
+{
+	switch (f->type)
+	{
+		case FEATURE_AXIS_POINTS:
+			return cd2Normalize(cd2Sub(cd2TransformPoint(xfB, localB->points[f->indexB[0]]),
+									   cd2TransformPoint(xfA, localA->points[f->indexA[0]])));
+		case FEATURE_AXIS_EDGE_A:
+			return cd2RotateVector(xfA.q, f->normal);
+		case FEATURE_AXIS_EDGE_B:
+			return cd2RotateVector(xfB.q, f->normal);
+		default:
+			return f->normal;
+	}
+}
+
+/* |p - segment p0-p1|^2 <= limit^2. */
+static bool PointNearSegment(cd2Vec p, cd2Vec p0, cd2Vec p1, cdReal limitSquared)
+{
+	cd2Vec e = cd2Sub(p1, p0), d = cd2Sub(p, p0);
+	cdReal along = cd2Dot(d, e), lengthSquared = cd2LengthSquared(e);
+	if (along > CD_R(0.0))
+	{
+		d = along >= lengthSquared ? cd2Sub(p, p1) : cd2MulSub(d, along / lengthSquared, e);
+	}
+	return cd2LengthSquared(d) <= limitSquared;
+}
+
+static bool FeatureAxisWithin(const FeatureAxis* f, const cd2Core* localA, const cd2Core* localB,
+							  cd2Transform xfA, cd2Transform xfB, cdReal limit)
+{
+	if (f->type == FEATURE_AXIS_FIXED)
+	{
+		return false;
+	}
+	cd2Vec a0 = cd2TransformPoint(xfA, localA->points[f->indexA[0]]);
+	cd2Vec a1 = cd2TransformPoint(xfA, localA->points[f->indexA[1]]);
+	cd2Vec b0 = cd2TransformPoint(xfB, localB->points[f->indexB[0]]);
+	cd2Vec b1 = cd2TransformPoint(xfB, localB->points[f->indexB[1]]);
+	/* Each feature is a point or a segment of its core: a point of one within limit of the
+	 * other's segment is a pair of points of the cores within limit. */
+	cdReal limitSquared = limit * limit;
+	return PointNearSegment(b0, a0, a1, limitSquared) || PointNearSegment(a0, b0, b1, limitSquared) ||
+		   (f->countB == 2 && PointNearSegment(b1, a0, a1, limitSquared)) ||
+		   (f->countA == 2 && PointNearSegment(a1, b0, b1, limitSquared));
+}
+
 #include "cast.inc"
