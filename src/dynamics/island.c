@@ -4,8 +4,9 @@
  * that can sleep. A group whose bodies have all been slower than their sleep threshold for
  * CD2_TIME_TO_SLEEP seconds goes to sleep as one island: its bodies leave the solver's arrays and
  * their contacts are no longer updated until something wakes the island (a new touch, a force with
- * wake, a teleport, a joint). So the step's sleep check costs what changed (the sets it looks at),
- * not the world. The bookkeeping is indices only, nothing 2D-specific beyond the body and contact
+ * wake, a teleport, a joint). So the step's sleep check reads the awake bodies' rest flags and
+ * splits only the sets it must, instead of grouping every touch and joint of the world. The
+ * bookkeeping is indices only, nothing 2D-specific beyond the body and contact
  * records. */
 #include "world2_internal.h"
 
