@@ -103,7 +103,8 @@ static int cd2NextLinked(const cd2World* world, cd2LinkWalk* walk)
 		const cd2Contact* contact = world->contacts.data + cd2EdgeContact(walk->contactKey);
 		int side = cd2EdgeSide(walk->contactKey);
 		walk->contactKey = contact->nextKey[side];
-		if (contact->inUse && (contact->flags & (CD2_CONTACT_TOUCHING | CD2_CONTACT_SENSOR)) == CD2_CONTACT_TOUCHING)
+		if (contact->inUse &&
+			(contact->flags & (CD2_CONTACT_TOUCHING | CD2_CONTACT_SENSOR)) == CD2_CONTACT_TOUCHING)
 		{
 			return side == 0 ? contact->bodyB : contact->bodyA;
 		}
@@ -331,7 +332,8 @@ void cd2AwakeSets_SyncBody(cd2World* world, int bodyIndex)
 	}
 	cd2InsertAwake(sets, id, bodyIndex);
 	cd2LinkWalk walk = cd2BeginLinkWalk(body);
-	for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX; other = cd2NextLinked(world, &walk))
+	for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX;
+		 other = cd2NextLinked(world, &walk))
 	{
 		cd2AwakeSets_Link(world, bodyIndex, other);
 	}
@@ -348,9 +350,11 @@ static int cd2FloodAwakeSet(cd2World* world, int id, int* queue, int count, bool
 		const cd2Body* body = world->bodies.data + queue[head];
 		*restless = *restless || body->sleepTime < CD2_TIME_TO_SLEEP;
 		cd2LinkWalk walk = cd2BeginLinkWalk(body);
-		for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX; other = cd2NextLinked(world, &walk))
+		for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX;
+			 other = cd2NextLinked(world, &walk))
 		{
-			if (sets->links.data[other].set == CD2_NULL_INDEX && cd2IsSleepCandidate(world->bodies.data + other))
+			if (sets->links.data[other].set == CD2_NULL_INDEX &&
+				cd2IsSleepCandidate(world->bodies.data + other))
 			{
 				cd2InsertAwake(sets, id, other);
 				queue[count++] = other;
@@ -453,7 +457,8 @@ static int cd2SplitAwakeSet(cd2World* world, int id, int* parts, bool* restlessP
 static bool cd2RestsAmongRested(const cd2World* world, const cd2Body* body)
 {
 	cd2LinkWalk walk = cd2BeginLinkWalk(body);
-	for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX; other = cd2NextLinked(world, &walk))
+	for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX;
+		 other = cd2NextLinked(world, &walk))
 	{
 		const cd2Body* neighbour = world->bodies.data + other;
 		if (cd2IsSleepCandidate(neighbour) && neighbour->sleepTime < CD2_TIME_TO_SLEEP)
@@ -596,7 +601,8 @@ int cd2UpdateSleep(cd2World* world, const int* bodyIndices, const uint8_t* flags
 	for (int g = 0; g < groupCount; ++g)
 	{
 		int maxBody = CD2_NULL_INDEX;
-		for (int b = sets->sets.data[groups[g].set].headBody; b != CD2_NULL_INDEX; b = sets->links.data[b].next)
+		for (int b = sets->sets.data[groups[g].set].headBody; b != CD2_NULL_INDEX;
+			 b = sets->links.data[b].next)
 		{
 			maxBody = b > maxBody ? b : maxBody;
 		}
@@ -676,7 +682,8 @@ void cd2SleepBodyGroup(cd2World* world, int bodyIndex)
 	{
 		const cd2Body* body = world->bodies.data + group[next];
 		cd2LinkWalk walk = cd2BeginLinkWalk(body);
-		for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX; other = cd2NextLinked(world, &walk))
+		for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX;
+			 other = cd2NextLinked(world, &walk))
 		{
 			cd2Body* neighbour = world->bodies.data + other;
 			if (!cd2IsSleepCandidate(neighbour) || neighbour->islandId == island)
@@ -730,14 +737,17 @@ void cd2AwakeSets_Validate(cd2World* world)
 		int id = cd2SetOf(sets, i);
 		if (candidate != (id != CD2_NULL_INDEX))
 		{
-			cd2AwakeSetsFail(candidate ? "an awake dynamic body in no set" : "a set holds a body that is not awake and dynamic", i);
+			cd2AwakeSetsFail(candidate ? "an awake dynamic body in no set"
+									   : "a set holds a body that is not awake and dynamic",
+							 i);
 		}
 		if (!candidate)
 		{
 			continue;
 		}
 		cd2LinkWalk walk = cd2BeginLinkWalk(world->bodies.data + i);
-		for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX; other = cd2NextLinked(world, &walk))
+		for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX;
+			 other = cd2NextLinked(world, &walk))
 		{
 			if (cd2IsSleepCandidate(world->bodies.data + other) && cd2SetOf(sets, other) != id)
 			{
@@ -788,7 +798,8 @@ void cd2AwakeSets_Validate(cd2World* world)
 		for (int head = 0; head < reached; ++head)
 		{
 			cd2LinkWalk walk = cd2BeginLinkWalk(world->bodies.data + queue[head]);
-			for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX; other = cd2NextLinked(world, &walk))
+			for (int other = cd2NextLinked(world, &walk); other != CD2_NULL_INDEX;
+				 other = cd2NextLinked(world, &walk))
 			{
 				if (cd2IsSleepCandidate(world->bodies.data + other) && seen[other] != id)
 				{
