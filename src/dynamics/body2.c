@@ -129,6 +129,7 @@ cd2BodyId cd2CreateBody(cd2WorldId worldId, const cd2BodyDef* def)
 		/* Created asleep: its own island. */
 		cd2SleepBodyGroup(world, index);
 	}
+	cd2AwakeSets_SyncBody(world, index);
 	return cd2MakeBodyId(world, index);
 }
 
@@ -173,6 +174,7 @@ void cd2DestroyBody(cd2BodyId bodyId)
 	}
 	body->inUse = false;
 	body->generation = 0;
+	cd2AwakeSets_SyncBody(world, index);
 	cdIdPool_Free(&world->bodyPool, index);
 }
 
@@ -194,6 +196,7 @@ void cd2WakeBody(cd2World* world, int bodyIndex)
 	}
 	body->awake = true;
 	body->sleepTime = CD_R(0.0);
+	cd2AwakeSets_SyncBody(world, bodyIndex);
 }
 
 /* The extents continuous collision needs: the smallest inner and the largest outer radius of the
@@ -818,6 +821,7 @@ void cd2Body_Disable(cd2BodyId bodyId)
 	}
 	body->enabled = false;
 	cd2SetBodyInSimulation(world, index, false);
+	cd2AwakeSets_SyncBody(world, index);
 }
 
 void cd2Body_Enable(cd2BodyId bodyId)
@@ -870,6 +874,7 @@ void cd2Body_SetType(cd2BodyId bodyId, cd2BodyType type)
 		cd2SetBodyInSimulation(world, index, false);
 		cd2SetBodyInSimulation(world, index, true);
 	}
+	cd2AwakeSets_SyncBody(world, index);
 }
 
 bool cd2ShouldBodiesCollide(const cd2World* world, int bodyA, int bodyB)

@@ -513,6 +513,11 @@ void cd2DestroyContact(cd2World* world, int contactIndex, bool wakeBodies)
 	cd2UnlinkContactEdge(world, contactIndex, 1, contact->bodyB);
 	contact->inUse = false;
 	cdIdPool_Free(&world->contactPool, contactIndex);
+	/* After the wakes: a woken body joins its set through the contact while it is there. */
+	if ((contact->flags & (CD2_CONTACT_TOUCHING | CD2_CONTACT_SENSOR)) == CD2_CONTACT_TOUCHING)
+	{
+		cd2AwakeSets_Unlink(world, contact->bodyA, contact->bodyB);
+	}
 }
 
 static cd2Manifold cd2WorldManifold(const cd2Contact* contact)
@@ -886,6 +891,10 @@ static void cd2MergeContact(cd2World* world, int i)
 	if (wasTouching && !touching)
 	{
 		cd2EmitEndEvent(world, contact);
+		if ((contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			cd2AwakeSets_Unlink(world, contact->bodyA, contact->bodyB);
+		}
 	}
 	if (touching && !wasTouching)
 	{
@@ -897,6 +906,10 @@ static void cd2MergeContact(cd2World* world, int i)
 		if (!world->bodies.data[contact->bodyB].awake)
 		{
 			cd2WakeBody(world, contact->bodyB);
+		}
+		if ((contact->flags & CD2_CONTACT_SENSOR) == 0)
+		{
+			cd2AwakeSets_Link(world, contact->bodyA, contact->bodyB);
 		}
 	}
 }

@@ -134,6 +134,10 @@ static cd2Joint* cd2CreateJointRecord(cd2WorldId worldId, cd2BodyId idA, cd2Body
 	}
 	cd2WakeBody(world, joint->bodyA);
 	cd2WakeBody(world, joint->bodyB);
+	if (type != CD2_FILTER_JOINT)
+	{
+		cd2AwakeSets_Link(world, joint->bodyA, joint->bodyB);
+	}
 	cd2JointId id = {index + 1, world->index, joint->generation};
 	*outId = id;
 	return joint;
@@ -453,6 +457,7 @@ void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies)
 	cd2Joint* joint = world->joints.data + jointIndex;
 	int a = joint->bodyA, b = joint->bodyB;
 	bool refilter = !joint->collideConnected;
+	bool linked = joint->type != CD2_FILTER_JOINT;
 	cd2UnlinkJointEdge(world, jointIndex, 0, a);
 	cd2UnlinkJointEdge(world, jointIndex, 1, b);
 	joint->inUse = false;
@@ -462,6 +467,10 @@ void cd2DestroyJointInternal(cd2World* world, int jointIndex, bool wakeBodies)
 	{
 		cd2WakeBody(world, a);
 		cd2WakeBody(world, b);
+	}
+	if (linked)
+	{
+		cd2AwakeSets_Unlink(world, a, b);
 	}
 	/* The bodies may collide now: let the broadphase report their pairs again. */
 	if (refilter)

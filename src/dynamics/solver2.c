@@ -1018,12 +1018,10 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		cd2ReportHits(world, &context);
 	}
 	/* Only a body that has rested for CD2_TIME_TO_SLEEP can fall asleep (an island sleeps when its
-	 * least rested body has); without one the islands are not built. */
+	 * least rested body has); without one there is nothing to check. */
 	CD2_TIMER_MARK(11, "hits");
 	if (sleepAllowed && rested &&
-		cd2SleepPossible(world, context.bodyIndices, context.finalFlags, CD2_FINAL_RESTED,
-						 context.bodyCount) &&
-		cd2UpdateSleep(world) > 0)
+		cd2UpdateSleep(world, context.bodyIndices, context.finalFlags, context.bodyCount) > 0)
 	{
 		for (int k = 0; k < context.bodyCount && context.moveEvents != NULL; ++k)
 		{

@@ -121,6 +121,7 @@ cd2WorldId cd2CreateWorld(const cd2WorldDef* def)
 		return CD2_NULL_WORLD_ID;
 	}
 	memset(world, 0, sizeof(*world));
+	world->awakeSets.valid = true;
 	cd2BroadPhaseDef bpDef = cd2DefaultBroadPhaseDef();
 	bpDef.type = CD_BROADPHASE_TREE;
 	/* The world computes the fat boxes itself (so that a snapshot can restore them exactly). */
@@ -201,6 +202,7 @@ void cd2DestroyWorld(cd2WorldId worldId)
 	cdArrayFree(world->contacts);
 	cdArrayFree(world->joints);
 	cdArrayFree(world->islands);
+	cd2AwakeSets_Destroy(world);
 	cdIdPool_Destroy(&world->bodyPool);
 	cdIdPool_Destroy(&world->shapePool);
 	cdIdPool_Destroy(&world->chainPool);
@@ -276,6 +278,9 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 
 	/* New pairs become contacts, then every awake contact gets its manifold. */
 	world->stepTimeStep = timeStep;
+#ifdef CD2_VALIDATE_AWAKE_SETS
+	cd2AwakeSets_Validate(world);
+#endif
 	CD2_TIMER_BEGIN;
 	cd2UpdateBroadPhasePairs(world);
 	CD2_TIMER_MARK(0, "pairs");
@@ -285,6 +290,9 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 		cd2Solve(world, timeStep, subStepCount);
 	}
 	CD2_TIMER_MARK(12, "sleep");
+#ifdef CD2_VALIDATE_AWAKE_SETS
+	cd2AwakeSets_Validate(world);
+#endif
 	cd2UpdateSensors(world);
 	CD2_TIMER_MARK(15, "sensors");
 	cdArena_Reset(&world->arena);

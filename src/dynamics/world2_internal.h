@@ -218,6 +218,38 @@ typedef struct cd2Island
 	int bodyCount;
 } cd2Island;
 
+/* ---- awake sets (island.c) ---------------------------------------------------------------------
+ * The awake dynamic bodies (enabled, in use) in persistent sets, kept so that the step's sleep
+ * check never groups the whole world: two bodies joined by a touching non-sensor contact or a joint
+ * (not a filter joint) are always in the same set; sets merge when such a link appears (a touch
+ * begins, a joint is made, a body wakes) and are split only when one may hold a group that can
+ * sleep. A set that lost a link or a body since it was built (dirty) may hold several groups; a
+ * clean one is exactly one group. Derived state: not saved, rebuilt after a restore or a failed
+ * allocation (valid false). */
+typedef struct cd2AwakeSet
+{
+	int headBody; /* members through cd2AwakeLink.next */
+	int bodyCount;
+	int restlessStamp; /* == the sleep check's stamp: holds a body that has not rested */
+	int queuedStamp;   /* == the sleep check's stamp: already queued for the check */
+	bool dirty;
+} cd2AwakeSet;
+
+typedef struct cd2AwakeLink
+{
+	int set; /* CD2_NULL_INDEX: in no set */
+	int prev, next;
+} cd2AwakeLink;
+
+typedef struct cd2AwakeSets
+{
+	CD_ARRAY(cd2AwakeSet) sets;
+	CD_ARRAY(int) freeSets;
+	CD_ARRAY(cd2AwakeLink) links; /* per body index; count: entries set up so far */
+	int stamp;
+	bool valid;
+} cd2AwakeSets;
+
 /* ---- solver scratch -------------------------------------------------------------------------- */
 typedef struct cd2SolverBody
 {
@@ -403,6 +435,7 @@ typedef struct cd2World
 	CD_ARRAY(cd2Joint) joints;
 	CD_ARRAY(cd2Island) islands;
 	cdIdPool bodyPool, shapePool, chainPool, contactPool, jointPool, islandPool;
+	cd2AwakeSets awakeSets; /* derived (not saved) */
 	cdPairSet pairs;		/* shape pair -> contact index */
 	int sensorContactCount; /* live contacts flagged CD2_CONTACT_SENSOR (derived, not saved) */
 	int staticProxyCount;	/* broadphase proxies flagged CD2_PROXY_STATIC (derived, not saved) */
@@ -608,13 +641,24 @@ cd2Rot cd2IntegrateRotation(cd2Rot q, cdReal deltaAngle);
 
 /* ---- island.c -------------------------------------------------------------------------------- */
 void cd2WakeIsland(cd2World* world, int islandId);
-/* Groups the awake bodies by touching contacts and joints and puts to sleep each group whose
- * bodies have all rested for CD2_TIME_TO_SLEEP; returns how many bodies it put to sleep. */
-int cd2UpdateSleep(cd2World* world);
-/* false when cd2UpdateSleep would put nothing to sleep, judged from the bodies bodyIndices[k] whose
- * rested[k] has a bit of restedMask (those that rested for CD2_TIME_TO_SLEEP this step). */
-bool cd2SleepPossible(const cd2World* world, const int* bodyIndices, const uint8_t* rested,
-					  uint8_t restedMask, int count);
+/* Puts to sleep each group of awake dynamic bodies (joined by touching contacts and joints) whose
+ * bodies have all rested for CD2_TIME_TO_SLEEP, and each kinematic body that has; returns how many
+ * bodies it put to sleep. bodyIndices[0, count) are the step's awake bodies (every awake dynamic
+ * body, in increasing index order) and flags[k] their CD2_FINAL_* flags. */
+int cd2UpdateSleep(cd2World* world, const int* bodyIndices, const uint8_t* flags, int count);
+/* The awake sets' bookkeeping: after a body may have started or stopped being an awake dynamic
+ * body (created, destroyed, woken, put to sleep, enabled, disabled, type changed); after a link
+ * (touching non-sensor contact, joint other than a filter joint) between two bodies appeared or
+ * went; and to drop the sets (a restore), so that the next sleep check rebuilds them. */
+void cd2AwakeSets_SyncBody(cd2World* world, int bodyIndex);
+void cd2AwakeSets_Link(cd2World* world, int bodyA, int bodyB);
+void cd2AwakeSets_Unlink(cd2World* world, int bodyA, int bodyB);
+void cd2AwakeSets_Invalidate(cd2World* world);
+void cd2AwakeSets_Destroy(cd2World* world);
+#ifdef CD2_VALIDATE_AWAKE_SETS
+/* Aborts when the sets break their rules (a test build's check). */
+void cd2AwakeSets_Validate(cd2World* world);
+#endif
 /* Puts the body's connected group to sleep now. */
 void cd2SleepBodyGroup(cd2World* world, int bodyIndex);
 void cd2RemoveBodyFromIsland(cd2World* world, int bodyIndex);
