@@ -201,6 +201,8 @@ void cd2DestroyWorld(cd2WorldId worldId)
 	cdArrayFree(world->contacts);
 	cdArrayFree(world->joints);
 	cdArrayFree(world->islands);
+	cd2ColorCache_Destroy(&world->contactColorCache);
+	cd2ColorCache_Destroy(&world->jointColorCache);
 	cdIdPool_Destroy(&world->bodyPool);
 	cdIdPool_Destroy(&world->shapePool);
 	cdIdPool_Destroy(&world->chainPool);

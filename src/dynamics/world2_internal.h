@@ -383,6 +383,20 @@ typedef struct cd2ContactSolveEntry
 	uint32_t flags;
 } cd2ContactSolveEntry;
 
+/* The last colouring of the solver's contacts (or joints), kept between steps: a step whose
+ * constraints have the same colouring bodies in the same order (a settled stack, a resting chain)
+ * takes the colours and the order from here instead of colouring again. The colouring depends on
+ * nothing else, so the result is the same bits. Derived data: not part of the saved state. */
+typedef struct cd2ColorCache
+{
+	int* bodyA; /* the colouring's bodies of each constraint */
+	int* bodyB;
+	int* colors;
+	int* order;
+	int count; /* constraints coloured (0: none) */
+	int capacity;
+} cd2ColorCache;
+
 /* ---- the world ------------------------------------------------------------------------------- */
 typedef struct cd2World
 {
@@ -441,6 +455,9 @@ typedef struct cd2World
 	 * cd2SetAlwaysParallel). */
 	bool alwaysParallel;
 	bool outOfMemory;
+	/* The solver's last colourings (solver2.c). */
+	cd2ColorCache contactColorCache;
+	cd2ColorCache jointColorCache;
 } cd2World;
 
 /* ---- world2.c -------------------------------------------------------------------------------- */
@@ -451,6 +468,9 @@ cd2World* cd2GetWorldFromIndex(uint16_t world0);
 void cd2Refuse(const char* reason, const char* file, int line);
 #define CD2_REFUSE(reason) cd2Refuse(reason, __FILE__, __LINE__)
 uint32_t cd2NextGeneration(cd2World* world);
+
+/* Frees a colour cache's arrays (cd2DestroyWorld). */
+void cd2ColorCache_Destroy(cd2ColorCache* cache);
 
 /* ---- body2.c --------------------------------------------------------------------------------- */
 cd2Body* cd2GetBody(cd2World* world, cd2BodyId id); /* NULL when stale */
