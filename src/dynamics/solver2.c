@@ -1183,7 +1183,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		hitCandidates += setup.contactChunkHits[c];
 	}
 	CD2_TIMER_MARK(6, "setup stages");
-	CD2_TIMER_MARK(7, "setup joints");
 	bool ok = true;
 	if (!cd2PrepareContactsWide(world, &context))
 	{

@@ -12,7 +12,8 @@
 /* Profiling, off unless the library is built with -DCD2_STEP_TIMERS: the stepping thread's wall time
  * per part of the step, summed over the steps into cd2StepTimers[i] (seconds, named by
  * cd2StepTimerNames[i]; a program declares both extern and reads them). The parts "narrow",
- * "pair search", "tree rebuild" and "stages" run on the workers; the others are serial. */
+ * "pair search", "tree rebuild", "setup stages" and "stages" run on the workers; the others are
+ * serial. */
 #ifdef CD2_STEP_TIMERS
 #include <time.h>
 extern double cd2StepTimers[16];
