@@ -323,45 +323,6 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 	}
 }
 
-bool cd2SyncShapeProxies(cd2World* world, const int* shapeIndices, int count)
-{
-	if (count <= 0)
-	{
-		return true;
-	}
-	int* proxies = (int*)cdArena_AllocUncleared(&world->arena, (size_t)count * sizeof(int));
-	cd2Aabb* fat = (cd2Aabb*)cdArena_AllocUncleared(&world->arena, (size_t)count * sizeof(cd2Aabb));
-	bool* moved = (bool*)cdArena_AllocUncleared(&world->arena, (size_t)count * sizeof(bool));
-	if (proxies == NULL || fat == NULL || moved == NULL)
-	{
-		return false;
-	}
-	for (int i = 0; i < count; ++i)
-	{
-		const cd2WorldShape* shape = world->shapes.data + shapeIndices[i];
-		proxies[i] = shape->proxyId;
-		fat[i] = cd2AabbInflate(shape->aabb, cd2ShapeAabbMargin(shape));
-	}
-	cd2BroadPhase_MoveProxies(world->broadPhase, count, proxies, fat, NULL, moved);
-	for (int i = 0; i < count; ++i)
-	{
-		cd2WorldShape* shape = world->shapes.data + shapeIndices[i];
-		if (moved[i])
-		{
-			shape->fatAabb = fat[i];
-		}
-		else if (!cd2AabbContains(shape->fatAabb, shape->aabb))
-		{
-			world->outOfMemory = true;
-		}
-		else
-		{
-			shape->fatAabb = cd2BroadPhase_GetFatAabb(world->broadPhase, shape->proxyId);
-		}
-	}
-	return true;
-}
-
 void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove)
 {
 	cd2WorldShape* shape = world->shapes.data + shapeIndex;

@@ -1336,41 +1336,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			event->fellAsleep = false;
 		}
 	}
-	/* The broadphase, after every sweep (they query it as it was before the step's moves): without
-	 * bullets and new proxies, in one batch (see cd2SyncShapeProxies), else one by one in body
-	 * order. */
-	int syncCount = 0;
-	int* syncShapes = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->shapes.count * sizeof(int));
-	for (int k = 0; k < context.bodyCount && syncShapes != NULL; ++k)
-	{
-		unsigned flags = context.finalFlags[k];
-		if ((flags & CD2_FINAL_BULLET) != 0u)
-		{
-			syncShapes = NULL;
-			break;
-		}
-		if ((flags & CD2_FINAL_SYNC_PROXY) == 0u)
-		{
-			continue;
-		}
-		const cd2Body* body = world->bodies.data + context.bodyIndices[k];
-		for (int s = body->headShape; s != CD2_NULL_INDEX; s = world->shapes.data[s].nextShape)
-		{
-			const cd2WorldShape* shape = world->shapes.data + s;
-			if (!cd2ShapeProxyNeedsSync(shape))
-			{
-				continue;
-			}
-			if (shape->proxyId == CD_NULL_PROXY || shape->staticProxyId != CD_NULL_PROXY)
-			{
-				syncShapes = NULL;
-				break;
-			}
-			syncShapes[syncCount++] = s;
-		}
-	}
-	bool synced = syncShapes != NULL && cd2SyncShapeProxies(world, syncShapes, syncCount);
-	for (int k = 0; k < context.bodyCount && !synced; ++k)
+	/* The broadphase, after every sweep (they query it as it was before the step's moves). */
+	for (int k = 0; k < context.bodyCount; ++k)
 	{
 		unsigned flags = context.finalFlags[k];
 		if ((flags & (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET)) == 0u)

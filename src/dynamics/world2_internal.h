@@ -515,12 +515,6 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 cd2Aabb cd2ComputeShapeBounds(const cd2World* world, const cd2WorldShape* shape);
 bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape);
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove);
-/* cd2SyncShapeProxy(world, s, false) for each of the count shapes (each with a proxy in the main
- * broadphase only, none in the static one) in one call to the broadphase, which takes the moves in
- * the order it finds fastest: its enlarged moves (cd2BroadPhase_SetEnlargeMoves) leave the same
- * tree in any order. The scratch comes from the world's arena; false when it runs out (then
- * nothing was done). */
-bool cd2SyncShapeProxies(cd2World* world, const int* shapeIndices, int count);
 
 /* ---- contact2.c ------------------------------------------------------------------------------ */
 void cd2UpdateBroadPhasePairs(cd2World* world);
