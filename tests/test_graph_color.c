@@ -3,7 +3,7 @@
  * constraints and pairs keep to their colour ranges, the order runs colour by colour in index
  * order, a constraint goes to the overflow colour only when every colour of its range is taken,
  * and, mixed, on a regular structure (a pyramid's contacts listed box by box) every colour holds a
- * mix of kinds of contact. */
+ * mix of kinds of contact. The same with the caller's scratch memory. */
 #include "test.h"
 
 #include "../src/base/graph_color.h"
@@ -42,6 +42,18 @@ static void CheckColoring(int count, int bodyCount, bool mixed)
 	{
 		return;
 	}
+	/* With the caller's scratch (left dirty by anything before): the same colours and order. */
+	static int scratchColors[MAX_CONSTRAINTS], scratchOrder[MAX_CONSTRAINTS];
+	static uint32_t used[MAX_BODIES];
+	int start[CD_GRAPH_COLOR_COUNT + 2];
+	memset(used, 0xa5, sizeof(used));
+	memset(start, 0x5a, sizeof(start));
+	memset(scratchColors, 0x77, sizeof(scratchColors));
+	memset(scratchOrder, 0x77, sizeof(scratchOrder));
+	cdColorConstraintsScratch(g_bodyA, g_bodyB, count, bodyCount, scratchColors, scratchOrder, mixed, used,
+							  start);
+	TEST_CHECK(count == 0 || memcmp(scratchColors, g_colors, (size_t)count * sizeof(int)) == 0);
+	TEST_CHECK(count == 0 || memcmp(scratchOrder, g_order, (size_t)count * sizeof(int)) == 0);
 	memset(g_owner, 0xff, sizeof(g_owner));
 	for (int i = 0; i < count; ++i)
 	{

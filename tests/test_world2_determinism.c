@@ -12,6 +12,7 @@
 #include "../src/dynamics/world2_internal.h" /* cd2SetAlwaysParallel */
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #if defined(__unix__) || defined(__APPLE__)
@@ -479,6 +480,101 @@ static void TestSmallWorldStaysOnOneThread(void)
 	s_alwaysParallel = true;
 }
 
+/* Four discs in two touching pairs (A-B, C-D) and six discs in three jointed pairs, without
+ * gravity; bodies[0..10). */
+static void BuildPairs(cd2WorldId world, cd2BodyId* bodies, cd2JointId* joints)
+{
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	for (int i = 0; i < 10; ++i)
+	{
+		cd2BodyDef bd = cd2DefaultBodyDef();
+		bd.type = CD_DYNAMIC_BODY;
+		/* A and B overlap by a tenth, as C and D; the jointed discs are far apart. */
+		bd.position = i < 4 ? cd2MakeVec(CD_R(3.0) * (cdReal)(i / 2) + CD_R(0.9) * (cdReal)(i % 2), CD_R(0.0))
+							: cd2MakeVec(CD_R(1.5) * (cdReal)i, CD_R(20.0));
+		bd.angularVelocity = CD_R(0.1) * (cdReal)i;
+		bodies[i] = cd2CreateBody(world, &bd);
+		cd2Circle circle = {{CD_R(0.0), CD_R(0.0)}, i < 4 ? CD_R(0.5) : CD_R(0.2)};
+		cd2CreateCircleShape(bodies[i], &sd, &circle);
+	}
+	for (int k = 0; k < 3; ++k)
+	{
+		cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+		jd.bodyIdA = bodies[4 + 2 * k];
+		jd.bodyIdB = bodies[5 + 2 * k];
+		jd.localAnchorA = cd2MakeVec(CD_R(0.75), CD_R(0.0));
+		jd.localAnchorB = cd2MakeVec(CD_R(-0.75), CD_R(0.0));
+		joints[k] = cd2CreateRevoluteJoint(world, &jd);
+	}
+}
+
+/* The solver keeps a step's colourings and takes them again while the next step's constraints are
+ * the same. A step with as many constraints as the last one but not the same (a touch ends and
+ * another begins; two joints are destroyed and two made, on shared bodies) is coloured anew: it
+ * gives the same bits as a world restored from the state before that step, which has kept no
+ * colouring. (Taking the old colours would put constraints on one body in one colour.) */
+static void TestColoringKeptOnlyWhileTheSame(void)
+{
+	int workers[3] = {1, 2, 4};
+	for (int w = 0; w < 3; ++w)
+	{
+		cd2WorldId world = CreateWorld(workers[w], NULL);
+		cd2World_SetGravity(world, CD2_VEC_ZERO);
+		cd2BodyId bodies[10];
+		cd2JointId joints[3];
+		BuildPairs(world, bodies, joints);
+		for (int step = 0; step < 3; ++step)
+		{
+			cd2World_Step(world, DT, 4);
+		}
+		TEST_CHECK(cd2World_GetCounters(world).touchingContactCount == 2);
+		/* C moves next to B, D away: the touches become A-B and B-C. The joints become a chain
+		 * of the first four jointed discs: 4-5, 5-6, 6-7. */
+		cd2Body_SetTransform(bodies[2], cd2MakeVec(CD_R(1.8), CD_R(0.0)), cd2MakeRot(CD_R(0.0)));
+		cd2Body_SetTransform(bodies[3], cd2MakeVec(CD_R(30.0), CD_R(0.0)), cd2MakeRot(CD_R(0.0)));
+		/* A and C close in on B: both touches push. */
+		cd2Body_SetLinearVelocity(bodies[0], cd2MakeVec(CD_R(2.0), CD_R(0.0)));
+		cd2Body_SetLinearVelocity(bodies[1], CD2_VEC_ZERO);
+		cd2Body_SetLinearVelocity(bodies[2], cd2MakeVec(CD_R(-2.0), CD_R(0.0)));
+		cd2DestroyJoint(joints[1]);
+		cd2DestroyJoint(joints[2]);
+		for (int k = 2; k >= 1; --k)
+		{
+			cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+			jd.bodyIdA = bodies[4 + k];
+			jd.bodyIdB = bodies[5 + k];
+			jd.localAnchorA = cd2MakeVec(CD_R(0.75), CD_R(0.0));
+			jd.localAnchorB = cd2MakeVec(CD_R(-0.75), CD_R(0.0));
+			joints[k] = cd2CreateRevoluteJoint(world, &jd);
+		}
+		size_t size = cd2World_GetStateSize(world);
+		void* state = malloc(size);
+		TEST_CHECK(state != NULL && cd2World_SaveState(world, state, size) == CD_OK);
+		for (int step = 0; step < 5; ++step)
+		{
+			cd2World_Step(world, DT, 4);
+		}
+		TEST_CHECK(cd2World_GetCounters(world).touchingContactCount == 2);
+		uint64_t kept = HashBodies(bodies, 10);
+
+		cd2WorldId fresh = CreateWorld(workers[w], NULL);
+		cd2BodyId freshBodies[10];
+		cd2JointId freshJoints[3];
+		BuildPairs(fresh, freshBodies, freshJoints);
+		TEST_CHECK(state != NULL && cd2World_RestoreState(fresh, state, size) == CD_OK);
+		for (int step = 0; step < 5; ++step)
+		{
+			cd2World_Step(fresh, DT, 4);
+		}
+		uint64_t anew = HashBodies(freshBodies, 10);
+		TEST_CHECKF(kept == anew, "%d workers: hash %016llx after the change, %016llx restored", workers[w],
+					(unsigned long long)kept, (unsigned long long)anew);
+		free(state);
+		cd2DestroyWorld(fresh);
+		cd2DestroyWorld(world);
+	}
+}
+
 static int s_refusals = 0;
 
 static bool CountRefusal(const char* condition, const char* fileName, int lineNumber)
@@ -542,6 +638,7 @@ int main(void)
 	TEST_RUN(TestJointGridSameBitsEveryWorkerCount);
 	TEST_RUN(TestTasksRunInsideEnqueue);
 	TEST_RUN(TestSmallWorldStaysOnOneThread);
+	TEST_RUN(TestColoringKeptOnlyWhileTheSame);
 	TEST_RUN(TestHalfATaskSystemIsRefused);
 	TEST_RUN(TestPoolCreateDestroy);
 	return TEST_SUMMARY();

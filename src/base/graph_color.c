@@ -1,6 +1,8 @@
 /* collide: greedy constraint colouring, see graph_color.h. */
 #include "graph_color.h"
 
+#include <string.h>
+
 /* The colour masks below hold one bit per colour. */
 typedef char cdGraphColorsFit[CD_GRAPH_COLOR_COUNT <= 31 ? 1 : -1];
 
@@ -53,25 +55,18 @@ static inline uint32_t cdScramble(uint32_t x, uint32_t seed)
 	return x;
 }
 
-static bool cdColor(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
-					cdArena* arena, bool mixed)
+/* Per body, one bit per colour it already has (used, bodyCount words): a constraint's free colours
+ * are the bits clear in both of its bodies' masks. */
+static void cdColor(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
+					uint32_t* used, int* start, bool mixed)
 {
-	for (int i = 0; i < count; ++i)
-	{
-		order[i] = i;
-	}
 	if (count == 0)
 	{
-		return true;
+		return;
 	}
-	/* Per body, one bit per colour it already has: a constraint's free colours are the bits clear in
-	 * both of its bodies' masks. */
-	uint32_t* used =
-		(uint32_t*)cdArena_Alloc(arena, (size_t)(bodyCount > 0 ? bodyCount : 1) * sizeof(uint32_t));
-	int* start = (int*)cdArena_Alloc(arena, (size_t)(CD_GRAPH_COLOR_COUNT + 2) * sizeof(int));
-	if (used == NULL || start == NULL)
+	if (bodyCount > 0)
 	{
-		return false;
+		memset(used, 0, (size_t)bodyCount * sizeof(uint32_t));
 	}
 	/* Movable pairs: colours 0 .. CD_GRAPH_COLOR_COUNT - 1 - CD_GRAPH_IMMOVABLE_COLORS; constraints
 	 * with an immovable body: colours 1 .. CD_GRAPH_COLOR_COUNT - 1. */
@@ -137,17 +132,44 @@ static bool cdColor(const int* bodyA, const int* bodyB, int count, int bodyCount
 	{
 		order[start[colors[i]]++] = i;
 	}
+}
+
+static bool cdColorInArena(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
+						   int* order, cdArena* arena, bool mixed)
+{
+	for (int i = 0; i < count; ++i)
+	{
+		order[i] = i;
+	}
+	if (count == 0)
+	{
+		return true;
+	}
+	uint32_t* used =
+		(uint32_t*)cdArena_AllocUncleared(arena, (size_t)(bodyCount > 0 ? bodyCount : 1) * sizeof(uint32_t));
+	int* start = (int*)cdArena_AllocUncleared(arena, (size_t)(CD_GRAPH_COLOR_COUNT + 2) * sizeof(int));
+	if (used == NULL || start == NULL)
+	{
+		return false;
+	}
+	cdColor(bodyA, bodyB, count, bodyCount, colors, order, used, start, mixed);
 	return true;
 }
 
 bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors, int* order,
 						cdArena* arena)
 {
-	return cdColor(bodyA, bodyB, count, bodyCount, colors, order, arena, false);
+	return cdColorInArena(bodyA, bodyB, count, bodyCount, colors, order, arena, false);
 }
 
 bool cdColorConstraintsMixed(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
 							 int* order, cdArena* arena)
 {
-	return cdColor(bodyA, bodyB, count, bodyCount, colors, order, arena, true);
+	return cdColorInArena(bodyA, bodyB, count, bodyCount, colors, order, arena, true);
+}
+
+void cdColorConstraintsScratch(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
+							   int* order, bool mixed, uint32_t* used, int* start)
+{
+	cdColor(bodyA, bodyB, count, bodyCount, colors, order, used, start, mixed);
 }

@@ -31,5 +31,10 @@ bool cdColorConstraints(const int* bodyA, const int* bodyB, int count, int bodyC
  * colouring. The result depends only on the arguments. */
 bool cdColorConstraintsMixed(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
 							 int* order, cdArena* arena);
+/* Either of the two (mixed: cdColorConstraintsMixed's order) with the caller's scratch, so that it
+ * allocates nothing and can run on any thread: used holds bodyCount words and start
+ * CD_GRAPH_COLOR_COUNT + 2 ints, their contents overwritten. The same colours and order. */
+void cdColorConstraintsScratch(const int* bodyA, const int* bodyB, int count, int bodyCount, int* colors,
+							   int* order, bool mixed, uint32_t* used, int* start);
 
 #endif

@@ -4,20 +4,24 @@
  * hit and move events, sleep). The contacts are sorted by graph colour; the coloured ones are solved
  * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one.
  *
- * Scheduling: everything from filling the solver bodies and preparing the joints and contacts to
- * finalizing the bodies is a fixed list of stages, each an index range (bodies, joints, constraints,
- * wide blocks of one colour, or a single item for the serial parts) cut into blocks. Every thread of
- * the step (the stepping thread and one task per further worker, enqueued once per step) walks the
- * same list: it takes blocks of the current stage with an atomic counter until none is left, adds
- * the number it finished to the stage's count, then waits until every block of the stage is
- * finished before going on to the next (cdSyncCount: a short spin, then asleep, so that a thread
- * descheduled in the middle of a block can take over the waiting thread's processor). Consecutive
- * stages of one block each (the last small colours, the overflow colour) are one block of one
- * stage, run by one thread in list order: one wait instead of one per stage. A small solve
- * (CD2_PARALLEL_MIN_SOLVE) runs the list on the stepping thread alone. A thread only ever waits for blocks
- * that a running thread has taken, never for another thread to arrive, so the step finishes whatever the task
- * system does with the tasks (run them late, inline or one after another). Each block writes only its own
- * items (a colour's blocks share no movable body), so the results are the same bits for any worker count.
+ * Scheduling: everything from listing the awake bodies and the touching contacts to finalizing the
+ * bodies is two fixed lists of stages, each an index range (chunks of bodies or contacts, bodies,
+ * joints, constraints, wide blocks of one colour, or a single item for the serial parts) cut into
+ * blocks. The first list is the setup's (cd2SolveSetup): the dense lists of bodies and constraints,
+ * then the colourings of the contacts and of the joints next to the filling of the solver bodies;
+ * the stepping thread then lays out the wide blocks and sets the second list from what the first
+ * found: preparing the joints and contacts, the sub-steps, finalize. Every thread of the step (the
+ * stepping thread and one task per further worker, enqueued once per list) walks the same list: it takes
+ * blocks of the current stage with an atomic counter until none is left, adds the number it finished to the
+ * stage's count, then waits until every block of the stage is finished before going on to the next
+ * (cdSyncCount: a short spin, then asleep, so that a thread descheduled in the middle of a block can take
+ * over the waiting thread's processor). Consecutive stages of one block each (the last small colours, the
+ * overflow colour) are one block of one stage, run by one thread in list order: one wait instead of one per
+ * stage. A small solve (CD2_PARALLEL_MIN_SOLVE) runs the list on the stepping thread alone. A thread only
+ * ever waits for blocks that a running thread has taken, never for another thread to arrive, so the step
+ * finishes whatever the task system does with the tasks (run them late, inline or one after another). Each
+ * block writes only its own items (a colour's blocks share no movable body), so the results are the same bits
+ * for any worker count.
  *
  * The last stage, finalize, does per body all that reads only the body itself and static geometry:
  * transform, sleep time, continuous collision of a fast non-bullet, the shapes' tight boxes, the
@@ -235,7 +239,11 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 
 typedef enum cd2StageKind
 {
-	CD2_STAGE_SETUP_BODIES,			/* bodies */
+	CD2_STAGE_COUNT_BODIES,			/* chunks of world bodies (the setup's, before the list) */
+	CD2_STAGE_LIST_BODIES,			/* chunks of world bodies */
+	CD2_STAGE_COUNT_CONTACTS,		/* chunks of contacts */
+	CD2_STAGE_LIST_CONTACTS,		/* chunks of contacts */
+	CD2_STAGE_COLOR_AND_SETUP,		/* the two colourings, then blocks of bodies */
 	CD2_STAGE_PREPARE_JOINTS,		/* joints, in index order */
 	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
 	CD2_STAGE_PACK_WIDE,			/* wide blocks */
@@ -274,10 +282,62 @@ typedef struct cd2Stage
 	int runLength;
 } cd2Stage;
 
+/* The setup of the step before the stages proper: the dense lists of awake bodies and of the
+ * touching contacts, counted and then written chunk by chunk (chunks of a fixed size, so that the
+ * lists do not depend on how the chunks are split among threads), then the colourings of the
+ * contacts and of the joints, each on one thread, next to the filling of the solver bodies. The
+ * scratch is allocated before, for the largest counts (the arena is not for several threads). */
+#define CD2_SETUP_CHUNK 1024
+
+typedef struct cd2SolveSetup
+{
+	int* solverOf;	   /* per world body: its solver index, or CD2_NULL_INDEX */
+	int* colorBodyOf;  /* the same for dynamic bodies only (kinematic ones take no colour) */
+	uint8_t* bodyKind; /* per world body: 0 not solved, 1 kinematic, 2 dynamic */
+	int* bodyChunkCounts;
+	int bodyChunkCount;
+	const cd2ContactSolveEntry* entries; /* NULL: read from the contacts */
+	int* contactChunkCounts;
+	int* contactChunkHits;
+	uint8_t* contactChunkNew; /* the chunk's constraints differ from the cached colouring's */
+	int contactChunkCount;
+	cd2ConstraintPair* pairs; /* the constraints in contact index order */
+	int* bodyA;				  /* the colouring's bodies of each pair */
+	int* bodyB;
+	/* The last steps' colourings (NULL: none, out of memory), whose colours and order are taken
+	 * when the constraints are the same; otherwise they keep the new ones. */
+	cd2ColorCache* contactCache;
+	cd2ColorCache* jointCache;
+	/* The contacts' colouring, in the cache or else in the step's scratch (NULL when out of
+	 * memory: then not coloured). */
+	int* colors;
+	int* order;
+	cd2ConstraintPair* sorted;
+	uint32_t* used;
+	int colorStart[CD_GRAPH_COLOR_COUNT + 2];
+	/* The joints' (NULL when out of memory: every joint in the overflow colour). */
+	int* jointBodyA;
+	int* jointBodyB;
+	int* jointColors;
+	int* jointOrder;
+	int* jointSorted;
+	uint32_t* jointUsed;
+	int jointColorScratch[CD_GRAPH_COLOR_COUNT + 2];
+	/* The bodies per block of the solver bodies' filling, next to the colourings. */
+	int setupBlockSize;
+	/* The joints' colouring is the first item (when there are more joints than contacts). */
+	bool jointsFirst;
+} cd2SolveSetup;
+
 typedef struct cd2StageList
 {
 	cd2World* world;
 	cd2StepContext* step;
+	cd2SolveSetup* setup;
+	/* The setup's stages, walked first; then the rest, set by the stepping thread from what the
+	 * setup found (two walks, each with its own tasks: a thread never waits for another to arrive). */
+	cd2Stage* preStages;
+	int preStageCount;
 	cd2Stage* stages;
 	int stageCount, stageCapacity;
 	int workerCount;
@@ -285,6 +345,326 @@ typedef struct cd2StageList
 	 * after them, are passed over by every worker while it is 0. */
 	cd2StageCounter* bouncing;
 } cd2StageList;
+
+void cd2ColorCache_Destroy(cd2ColorCache* cache)
+{
+	cdFree(cache->bodyA);
+	cdFree(cache->bodyB);
+	cdFree(cache->colors);
+	cdFree(cache->order);
+	memset(cache, 0, sizeof(*cache));
+}
+
+/* Room for capacity constraints (a larger cache forgets its colouring); false when out of memory
+ * (then the cache is empty and unused). */
+static bool cd2ColorCache_Reserve(cd2ColorCache* cache, int capacity)
+{
+	if (capacity <= cache->capacity)
+	{
+		return true;
+	}
+	int grown = cdMaxInt(cdMaxInt(capacity, cache->capacity + cache->capacity / 2), 64);
+	cd2ColorCache_Destroy(cache);
+	size_t size = (size_t)grown * sizeof(int);
+	cache->bodyA = (int*)cdAlloc(size);
+	cache->bodyB = (int*)cdAlloc(size);
+	cache->colors = (int*)cdAlloc(size);
+	cache->order = (int*)cdAlloc(size);
+	if (cache->bodyA == NULL || cache->bodyB == NULL || cache->colors == NULL || cache->order == NULL)
+	{
+		cd2ColorCache_Destroy(cache);
+		return false;
+	}
+	cache->capacity = grown;
+	return true;
+}
+
+static int cd2ChunkEnd(int chunk, int count)
+{
+	return count - chunk * CD2_SETUP_CHUNK > CD2_SETUP_CHUNK ? (chunk + 1) * CD2_SETUP_CHUNK : count;
+}
+
+/* Chunks [startChunk, endChunk) of the world bodies: which are solved (awake, enabled, not static),
+ * counted per chunk; the others lose their solver index. */
+static void cd2CountBodies(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
+{
+	int count = world->bodies.count;
+	for (int c = startChunk; c < endChunk; ++c)
+	{
+		int solved = 0;
+		for (int i = c * CD2_SETUP_CHUNK, end = cd2ChunkEnd(c, count); i < end; ++i)
+		{
+			cd2Body* body = world->bodies.data + i;
+			uint8_t kind = 0;
+			if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
+			{
+				body->solverIndex = CD2_NULL_INDEX;
+			}
+			else
+			{
+				kind = body->type == CD_DYNAMIC_BODY ? 2 : 1;
+				++solved;
+			}
+			setup->bodyKind[i] = kind;
+		}
+		setup->bodyChunkCounts[c] = solved;
+	}
+}
+
+/* The solved bodies of chunks [startChunk, endChunk) get their dense indices, in body order after
+ * those of the chunks before (the same whatever the split). */
+static void cd2ListBodies(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
+						  int endChunk)
+{
+	int k = 0;
+	for (int c = 0; c < startChunk; ++c)
+	{
+		k += setup->bodyChunkCounts[c];
+	}
+	int end = cd2ChunkEnd(endChunk - 1, world->bodies.count);
+	for (int i = startChunk * CD2_SETUP_CHUNK; i < end; ++i)
+	{
+		uint8_t kind = setup->bodyKind[i];
+		if (kind == 0)
+		{
+			setup->solverOf[i] = CD2_NULL_INDEX;
+			setup->colorBodyOf[i] = CD2_NULL_INDEX;
+			continue;
+		}
+		setup->solverOf[i] = k;
+		setup->colorBodyOf[i] = kind == 2 ? k : CD2_NULL_INDEX;
+		world->bodies.data[i].solverIndex = k;
+		context->bodyIndices[k] = i;
+		++k;
+	}
+	if (endChunk == setup->bodyChunkCount)
+	{
+		context->bodyCount = k;
+	}
+}
+
+/* The contact's solve entry (from the contact update, else from the contact) and whether it is a
+ * constraint this step: touching, with an awake body. */
+static bool cd2ContactSolved(const cd2World* world, const cd2SolveSetup* setup, int i,
+							 cd2ContactSolveEntry* out)
+{
+	if (setup->entries != NULL)
+	{
+		*out = setup->entries[i];
+	}
+	else
+	{
+		cd2SetContactSolveEntry(out, world->contacts.data + i);
+	}
+	return out->bodyA != CD2_NULL_INDEX &&
+		   (setup->solverOf[out->bodyA] >= 0 || setup->solverOf[out->bodyB] >= 0);
+}
+
+static void cd2CountContacts(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
+{
+	int count = world->contacts.count;
+	for (int c = startChunk; c < endChunk; ++c)
+	{
+		int solved = 0, hits = 0;
+		for (int i = c * CD2_SETUP_CHUNK, end = cd2ChunkEnd(c, count); i < end; ++i)
+		{
+			cd2ContactSolveEntry entry;
+			if (cd2ContactSolved(world, setup, i, &entry))
+			{
+				++solved;
+				hits += (entry.flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
+			}
+		}
+		setup->contactChunkCounts[c] = solved;
+		setup->contactChunkHits[c] = hits;
+	}
+}
+
+/* The constraints of chunks [startChunk, endChunk): their pairs in contact index order. */
+static void cd2ListContacts(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
+							int endChunk)
+{
+	int k = 0;
+	for (int c = 0; c < startChunk; ++c)
+	{
+		k += setup->contactChunkCounts[c];
+	}
+	const cd2ColorCache* cache = setup->contactCache;
+	int cached = cache != NULL ? cache->count : 0;
+	for (int c = startChunk; c < endChunk; ++c)
+	{
+		bool fresh = false;
+		for (int i = c * CD2_SETUP_CHUNK, end = cd2ChunkEnd(c, world->contacts.count); i < end; ++i)
+		{
+			cd2ContactSolveEntry entry;
+			if (!cd2ContactSolved(world, setup, i, &entry))
+			{
+				continue;
+			}
+			int a = setup->colorBodyOf[entry.bodyA], b = setup->colorBodyOf[entry.bodyB];
+			setup->pairs[k].contact = i;
+			setup->pairs[k].indexA = setup->solverOf[entry.bodyA];
+			setup->pairs[k].indexB = setup->solverOf[entry.bodyB];
+			setup->bodyA[k] = a;
+			setup->bodyB[k] = b;
+			fresh = fresh || k >= cached || cache->bodyA[k] != a || cache->bodyB[k] != b;
+			++k;
+		}
+		setup->contactChunkNew[c] = (uint8_t)fresh;
+	}
+	if (endChunk == setup->contactChunkCount)
+	{
+		context->constraintCount = k;
+	}
+}
+
+/* Colour order of the contacts (see graph_color.h); the pairs stay in index order when there is no
+ * scratch. */
+static void cd2ColorContacts(cd2StepContext* context, cd2SolveSetup* setup)
+{
+	context->indexOrder = setup->pairs;
+	context->pairs = setup->pairs;
+	int n = context->constraintCount;
+	if (n < 2 || setup->colors == NULL || setup->order == NULL || setup->sorted == NULL ||
+		setup->used == NULL)
+	{
+		return;
+	}
+	cd2ColorCache* cache = setup->contactCache;
+	bool same = cache != NULL && cache->count == n;
+	for (int c = 0; c < setup->contactChunkCount && same; ++c)
+	{
+		same = setup->contactChunkNew[c] == 0;
+	}
+	if (!same)
+	{
+		cdColorConstraintsScratch(setup->bodyA, setup->bodyB, n, context->bodyCount, setup->colors,
+								  setup->order, true, setup->used, setup->colorStart);
+		if (cache != NULL)
+		{
+			memcpy(cache->bodyA, setup->bodyA, (size_t)n * sizeof(int));
+			memcpy(cache->bodyB, setup->bodyB, (size_t)n * sizeof(int));
+			cache->count = n;
+		}
+	}
+	for (int i = 0; i < n; ++i)
+	{
+		setup->sorted[i] = setup->pairs[setup->order[i]];
+		setup->bodyA[i] = setup->colors[setup->order[i]];
+	}
+	context->pairs = setup->sorted;
+	context->colorOfConstraint = setup->bodyA;
+}
+
+/* Sorts context->joints by graph colour (graph_color.h), as the contacts: the joints of one
+ * colour share no awake body, so a colour's joints run on any number of threads with the same
+ * bits, and the results do not depend on the worker count. Kinematic bodies count as movable here
+ * (a joint's solve writes both of its awake bodies); static and sleeping ones do not. Out of
+ * scratch memory: every joint in the overflow colour, in index order, on one thread. */
+static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
+{
+	int n = context->jointCount;
+	int* start = context->jointColorStart;
+	for (int c = 0; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
+	{
+		start[c] = 0;
+	}
+	start[CD_GRAPH_COLOR_COUNT + 1] = n;
+	if (n < 2 || setup->jointBodyA == NULL || setup->jointBodyB == NULL || setup->jointColors == NULL ||
+		setup->jointOrder == NULL || setup->jointSorted == NULL || setup->jointUsed == NULL)
+	{
+		return;
+	}
+	int* colors = setup->jointColors;
+	int* order = setup->jointOrder;
+	int* sorted = setup->jointSorted;
+	cd2ColorCache* cache = setup->jointCache;
+	if (cache == NULL || cache->count != n ||
+		memcmp(cache->bodyA, setup->jointBodyA, (size_t)n * sizeof(int)) != 0 ||
+		memcmp(cache->bodyB, setup->jointBodyB, (size_t)n * sizeof(int)) != 0)
+	{
+		cdColorConstraintsScratch(setup->jointBodyA, setup->jointBodyB, n, context->bodyCount, colors, order,
+								  false, setup->jointUsed, setup->jointColorScratch);
+		if (cache != NULL)
+		{
+			memcpy(cache->bodyA, setup->jointBodyA, (size_t)n * sizeof(int));
+			memcpy(cache->bodyB, setup->jointBodyB, (size_t)n * sizeof(int));
+			cache->count = n;
+		}
+	}
+	start[CD_GRAPH_COLOR_COUNT + 1] = 0;
+	for (int i = 0; i < n; ++i)
+	{
+		sorted[i] = context->joints[order[i]];
+		start[colors[i] + 1] += 1;
+	}
+	for (int c = 1; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
+	{
+		start[c] += start[c - 1];
+	}
+	memcpy(context->joints, sorted, (size_t)n * sizeof(int));
+}
+
+/* The joints to solve (an awake body, none disabled), in index order, then coloured. */
+static void cd2CollectJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup)
+{
+	const int* solverOf = setup->solverOf;
+	for (int i = 0; i < world->joints.count && context->joints != NULL; ++i)
+	{
+		const cd2Joint* joint = world->joints.data + i;
+		if (i + 16 < world->joints.count)
+		{
+			CD2_PREFETCH(joint + 16);
+		}
+		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
+		{
+			continue;
+		}
+		/* A body without a solver index is static, asleep or disabled; a disabled one drops the joint. */
+		int indexA = solverOf[joint->bodyA], indexB = solverOf[joint->bodyB];
+		if ((indexA < 0 && indexB < 0) || (indexA < 0 && !world->bodies.data[joint->bodyA].enabled) ||
+			(indexB < 0 && !world->bodies.data[joint->bodyB].enabled))
+		{
+			continue;
+		}
+		if (setup->jointBodyA != NULL && setup->jointBodyB != NULL)
+		{
+			setup->jointBodyA[context->jointCount] = indexA;
+			setup->jointBodyB[context->jointCount] = indexB;
+		}
+		context->joints[context->jointCount++] = i;
+	}
+	cd2ColorJoints(context, setup);
+}
+
+/* Items [start, end) of the colour-and-setup stage: item 0 and item 1 are the contacts' and the
+ * joints' colourings (the larger first), each whole on one thread; item 2 + b fills block b of the
+ * solver bodies. */
+static void cd2ColorAndSetup(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int start,
+							 int end)
+{
+	for (int item = start; item < end; ++item)
+	{
+		int job = item < 2 && setup->jointsFirst ? 1 - item : item;
+		if (job == 0)
+		{
+			cd2ColorContacts(context, setup);
+		}
+		else if (job == 1)
+		{
+			cd2CollectJoints(world, context, setup);
+		}
+		else
+		{
+			int first = (job - 2) * setup->setupBlockSize;
+			int last = cdMinInt(first + setup->setupBlockSize, context->bodyCount);
+			if (first < last)
+			{
+				cd2SetupBodies(world, context, first, last);
+			}
+		}
+	}
+}
 
 /* Appends a stage of itemCount items in blocks of at least minBlock (a few blocks per worker). */
 static void cd2AddStage(cd2StageList* list, cd2StageKind kind, int itemCount, int minBlock, int first,
@@ -372,8 +752,20 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	cd2StepContext* context = list->step;
 	switch (stage->kind)
 	{
-		case CD2_STAGE_SETUP_BODIES:
-			cd2SetupBodies(world, context, start, end);
+		case CD2_STAGE_COUNT_BODIES:
+			cd2CountBodies(world, list->setup, start, end);
+			break;
+		case CD2_STAGE_LIST_BODIES:
+			cd2ListBodies(world, context, list->setup, start, end);
+			break;
+		case CD2_STAGE_COUNT_CONTACTS:
+			cd2CountContacts(world, list->setup, start, end);
+			break;
+		case CD2_STAGE_LIST_CONTACTS:
+			cd2ListContacts(world, context, list->setup, start, end);
+			break;
+		case CD2_STAGE_COLOR_AND_SETUP:
+			cd2ColorAndSetup(world, context, list->setup, start, end);
 			break;
 		case CD2_STAGE_PREPARE_JOINTS:
 			cd2PrepareJointRange(world, context, start, end);
@@ -452,11 +844,11 @@ static void cd2ExecuteRun(const cd2StageList* list, const cd2Stage* first)
 /* Walks every stage in order, taking blocks while there are some, then waiting for the blocks that
  * other threads took (release on finishing a block, acquire on seeing them all finished: the next
  * stage reads what this one wrote). A run of one-block stages is one block. */
-static void cd2RunStages(const cd2StageList* list)
+static void cd2RunStages(const cd2StageList* list, cd2Stage* stages, int stageCount)
 {
-	for (int s = 0; s < list->stageCount; s += list->stages[s].runLength)
+	for (int s = 0; s < stageCount; s += stages[s].runLength)
 	{
-		cd2Stage* stage = list->stages + s;
+		cd2Stage* stage = stages + s;
 		if (stage->runLength > 1)
 		{
 #if CD2_STAGE_ATOMICS
@@ -511,13 +903,41 @@ static void cd2RunStages(const cd2StageList* list)
 	}
 }
 
-/* One further worker's share of the step: the same walk. */
+/* One further worker's share of the setup's stages, then of the others: the same walks. */
+static void cd2PreStageTask(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)start;
+	(void)end;
+	(void)workerIndex;
+	const cd2StageList* list = (const cd2StageList*)taskContext;
+	cd2RunStages(list, list->preStages, list->preStageCount);
+}
+
 static void cd2StageTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
 	(void)start;
 	(void)end;
 	(void)workerIndex;
-	cd2RunStages((const cd2StageList*)taskContext);
+	const cd2StageList* list = (const cd2StageList*)taskContext;
+	cd2RunStages(list, list->stages, list->stageCount);
+}
+
+/* One task per further worker (the stepping thread walks the stages too); NULL when there are
+ * none or the task system ran them already. */
+static void* cd2StartHelpers(cd2World* world, cdTaskCallback* task, cd2StageList* list)
+{
+#if CD2_STAGE_ATOMICS
+	if (world->threadPool != NULL)
+	{
+		return cdThreadPool_EnqueueEach(task, world->workerCount - 1, list, world->threadPool);
+	}
+	return world->enqueueTask(task, world->workerCount - 1, 1, list, world->userTaskContext);
+#else
+	(void)world;
+	(void)task;
+	(void)list;
+	return NULL;
+#endif
 }
 
 /* Hit events: touching contacts whose approach speed exceeded the threshold and that pushed. */
@@ -581,48 +1001,6 @@ void cd2RunTask(cd2World* world, cdTaskCallback* task, int itemCount, int minRan
 	}
 }
 
-/* Sorts context->joints by graph colour (graph_color.h), as the contacts: the joints of one
- * colour share no awake body, so a colour's joints run on any number of threads with the same
- * bits, and the results do not depend on the worker count. Kinematic bodies count as movable here
- * (a joint's solve writes both of its awake bodies); static and sleeping ones do not. Out of
- * scratch memory: every joint in the overflow colour, in index order, on one thread. */
-static void cd2ColorJoints(cd2World* world, cd2StepContext* context, const int* bodyA, const int* bodyB)
-{
-	int n = context->jointCount;
-	int* start = context->jointColorStart;
-	for (int c = 0; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
-	{
-		start[c] = 0;
-	}
-	start[CD_GRAPH_COLOR_COUNT + 1] = n;
-	if (n < 2)
-	{
-		return;
-	}
-	int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-	int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-	int* sorted = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-	if (bodyA == NULL || bodyB == NULL || colors == NULL || order == NULL || sorted == NULL)
-	{
-		return;
-	}
-	if (!cdColorConstraints(bodyA, bodyB, n, context->bodyCount, colors, order, &world->arena))
-	{
-		return;
-	}
-	start[CD_GRAPH_COLOR_COUNT + 1] = 0;
-	for (int i = 0; i < n; ++i)
-	{
-		sorted[i] = context->joints[order[i]];
-		start[colors[i] + 1] += 1;
-	}
-	for (int c = 1; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
-	{
-		start[c] += start[c - 1];
-	}
-	memcpy(context->joints, sorted, (size_t)n * sizeof(int));
-}
-
 /* One stage per non-empty joint colour; the overflow colour's joints in one block. */
 static void cd2AddJointStages(cd2StageList* list, cd2StageKind kind, bool useBias)
 {
@@ -658,157 +1036,154 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	/* The awake bodies, dense. */
 	int bodyCapacity = world->bodies.count;
+	int contactCapacity = world->contacts.count;
+	int jointCapacity = world->joints.count;
 	/* One more: the zero body the wide contact solver points immovable bodies at. */
 	context.bodies = (cd2SolverBody*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) *
 																			   sizeof(cd2SolverBody));
 	context.bodyIndices = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	context.params = (cd2SolverBodyParams*)cdArena_AllocUncleared(
 		&world->arena, (size_t)bodyCapacity * sizeof(cd2SolverBodyParams));
-	/* Per world body: its solver index, and the same for dynamic bodies only (the colouring's;
-	 * kinematic bodies are immovable for the solver and take no colour). Small arrays, so that
-	 * the contact loops below do not visit the bodies. */
-	int* solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
-	int* colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
 	context.accelerations =
 		(cd2Vec*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(cd2Vec));
-	if (bodyCapacity > 0 &&
-		(context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
-		 solverOf == NULL || colorBodyOf == NULL || context.accelerations == NULL))
+	/* The setup's lists and scratch (see cd2SolveSetup). Per world body its solver index, and the
+	 * same for dynamic bodies only: small arrays, so that the contact loops do not visit the
+	 * bodies. */
+	cd2SolveSetup setup;
+	memset(&setup, 0, sizeof(setup));
+	setup.bodyChunkCount = (bodyCapacity + CD2_SETUP_CHUNK - 1) / CD2_SETUP_CHUNK;
+	setup.contactChunkCount = (contactCapacity + CD2_SETUP_CHUNK - 1) / CD2_SETUP_CHUNK;
+	setup.solverOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	setup.colorBodyOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity * sizeof(int));
+	setup.bodyKind = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity);
+	setup.bodyChunkCounts =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.bodyChunkCount * sizeof(int));
+	setup.contactChunkCounts =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount * sizeof(int));
+	setup.contactChunkHits =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount * sizeof(int));
+	setup.contactChunkNew = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount);
+	/* From the entries the contact update left (a small array read in order), else from the
+	 * contacts themselves. */
+	setup.entries = world->stepSolveEntries;
+	setup.pairs = (cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity *
+																				sizeof(cd2ConstraintPair));
+	setup.bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
+	setup.bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
+	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)jointCapacity * sizeof(int));
+	if ((bodyCapacity > 0 &&
+		 (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
+		  context.accelerations == NULL || setup.solverOf == NULL || setup.colorBodyOf == NULL ||
+		  setup.bodyKind == NULL || setup.bodyChunkCounts == NULL)) ||
+		(contactCapacity > 0 && (setup.contactChunkCounts == NULL || setup.contactChunkHits == NULL ||
+								 setup.contactChunkNew == NULL || setup.pairs == NULL ||
+								 setup.bodyA == NULL || setup.bodyB == NULL)) ||
+		(jointCapacity > 0 && context.joints == NULL))
 	{
 		world->outOfMemory = true;
 		return;
 	}
-	/* One pass over the bodies for their dense indices (on the calling thread: the dense order is
-	 * the bodies' order); the first stage fills the solver bodies (cd2SetupBodies). */
-	for (int i = 0; i < world->bodies.count; ++i)
+	/* The colourings' scratch; without it they leave the index order. */
+	if (contactCapacity > 1)
 	{
-		cd2Body* body = world->bodies.data + i;
-		solverOf[i] = CD2_NULL_INDEX;
-		colorBodyOf[i] = CD2_NULL_INDEX;
-		if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
+		if (cd2ColorCache_Reserve(&world->contactColorCache, contactCapacity))
 		{
-			body->solverIndex = CD2_NULL_INDEX;
-			continue;
+			setup.contactCache = &world->contactColorCache;
+			setup.colors = setup.contactCache->colors;
+			setup.order = setup.contactCache->order;
 		}
-		int k = context.bodyCount++;
-		solverOf[i] = k;
-		colorBodyOf[i] = body->type == CD_DYNAMIC_BODY ? k : CD2_NULL_INDEX;
-		body->solverIndex = k;
-		context.bodyIndices[k] = i;
+		else
+		{
+			setup.colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
+			setup.order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
+		}
+		setup.sorted = (cd2ConstraintPair*)cdArena_AllocUncleared(
+			&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
+		setup.used =
+			(uint32_t*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(uint32_t));
 	}
-
-	CD2_TIMER_MARK(5, "setup bodies");
+	if (jointCapacity > 1)
 	{
+		setup.jointBodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
+		setup.jointBodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
+		if (cd2ColorCache_Reserve(&world->jointColorCache, jointCapacity))
+		{
+			setup.jointCache = &world->jointColorCache;
+			setup.jointColors = setup.jointCache->colors;
+			setup.jointOrder = setup.jointCache->order;
+		}
+		else
+		{
+			setup.jointColors =
+				(int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
+			setup.jointOrder =
+				(int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
+		}
+		setup.jointSorted = (int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
+		setup.jointUsed =
+			(uint32_t*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(uint32_t));
+	}
+	setup.jointsFirst = jointCapacity > contactCapacity;
+
+	/* The stages, from the setup's to finalizing the bodies (see the top of the file). Whether the
+	 * workers help is first judged on the world's counts (at least the solve's), then on the solve's
+	 * once the setup has counted it: a small solve runs on this thread only, its stages taking a
+	 * few microseconds each, about what handing them out and waiting at each stage's end would
+	 * cost. */
+	cd2StageList list;
+	memset(&list, 0, sizeof(list));
+	list.world = world;
+	list.step = &context;
+	list.setup = &setup;
+	bool canParallel = world->workerCount > 1 && world->enqueueTask != NULL && CD2_STAGE_ATOMICS;
+	int worldWork = contactCapacity + 2 * jointCapacity + bodyCapacity / 4;
+	bool helpersStart = canParallel && (worldWork >= CD2_PARALLEL_MIN_SOLVE || world->alwaysParallel);
+	list.workerCount = helpersStart ? world->workerCount : 1;
+	cd2Stage preStages[5];
+	list.preStages = preStages;
+	list.stages = preStages;
+	list.stageCapacity = 5;
+	cd2AddStage(&list, CD2_STAGE_COUNT_BODIES, setup.bodyChunkCount, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_LIST_BODIES, setup.bodyChunkCount, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_COUNT_CONTACTS, setup.contactChunkCount, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_LIST_CONTACTS, setup.contactChunkCount, 1, 0, false);
+	{
+		/* Blocks of solver bodies as the setup stage's were (the count is not known yet: blocks past
+		 * it do nothing). */
+		int even = (bodyCapacity + 4 * list.workerCount - 1) / (4 * list.workerCount);
+		setup.setupBlockSize = cdMaxInt(list.workerCount > 1 ? cdMaxInt(even, 64) : bodyCapacity, 1);
+		int setupBlocks = (bodyCapacity + setup.setupBlockSize - 1) / setup.setupBlockSize;
+		cd2AddStage(&list, CD2_STAGE_COLOR_AND_SETUP, 2 + setupBlocks, 1, 0, false);
+		/* (One item per block, whatever the worker count.) */
+		cd2Stage* stage = list.stages + list.stageCount - 1;
+		stage->blockSize = 1;
+		stage->blockCount = stage->itemCount;
+	}
+	list.preStageCount = list.stageCount;
+	list.stages = NULL;
+	list.stageCount = 0;
+	list.stageCapacity = 0;
+	CD2_TIMER_MARK(5, "setup alloc");
+
+	void* helpers = helpersStart ? cd2StartHelpers(world, cd2PreStageTask, &list) : NULL;
+	cd2RunStages(&list, list.preStages, list.preStageCount);
+	if (helpers != NULL)
+	{
+		world->finishTask(helpers, world->userTaskContext);
+	}
+	{
+		/* The zero body, after the awake ones. */
 		cd2SolverBody* zero = context.bodies + context.bodyCount;
 		memset(zero, 0, sizeof(*zero));
 		zero->deltaRotation = CD2_ROT_IDENTITY;
 	}
-
-	/* Touching contacts with an awake body: their pairs in index order, small records (the constraints
-	 * themselves are filled by the prepare stage, in colour order). */
 	int hitCandidates = 0;
-	int contactCapacity = world->contacts.count;
-	cd2ConstraintPair* pairs = (cd2ConstraintPair*)cdArena_AllocUncleared(
-		&world->arena, (size_t)contactCapacity * sizeof(cd2ConstraintPair));
-	/* The colouring's bodies of each pair. */
-	int* bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
-	int* bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
-	if (contactCapacity > 0 && (pairs == NULL || bodyA == NULL || bodyB == NULL))
+	for (int c = 0; c < setup.contactChunkCount; ++c)
 	{
-		world->outOfMemory = true;
-		return;
+		hitCandidates += setup.contactChunkHits[c];
 	}
-	/* From the entries the contact update left (a small array read in order), else from the
-	 * contacts themselves. */
-	const cd2ContactSolveEntry* entries = world->stepSolveEntries;
-	for (int i = 0; i < world->contacts.count; ++i)
-	{
-		cd2ContactSolveEntry read;
-		const cd2ContactSolveEntry* entry = entries + i;
-		if (entries == NULL)
-		{
-			cd2SetContactSolveEntry(&read, world->contacts.data + i);
-			entry = &read;
-		}
-		if (entry->bodyA == CD2_NULL_INDEX)
-		{
-			continue;
-		}
-		int indexA = solverOf[entry->bodyA], indexB = solverOf[entry->bodyB];
-		if (indexA < 0 && indexB < 0)
-		{
-			continue;
-		}
-		hitCandidates += (entry->flags & CD2_CONTACT_HIT_EVENTS) != 0 ? 1 : 0;
-		int k = context.constraintCount++;
-		pairs[k].contact = i;
-		pairs[k].indexA = indexA;
-		pairs[k].indexB = indexB;
-		bodyA[k] = colorBodyOf[entry->bodyA];
-		bodyB[k] = colorBodyOf[entry->bodyB];
-	}
-	CD2_TIMER_MARK(13, "setup contact scan");
-	context.indexOrder = pairs;
-	context.pairs = pairs;
-	/* Colour order (see graph_color.h). */
-	if (context.constraintCount > 1)
-	{
-		int n = context.constraintCount;
-		int* colors = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		int* order = (int*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(int));
-		cd2ConstraintPair* sorted =
-			(cd2ConstraintPair*)cdArena_AllocUncleared(&world->arena, (size_t)n * sizeof(cd2ConstraintPair));
-		if (colors != NULL && order != NULL && sorted != NULL &&
-			cdColorConstraintsMixed(bodyA, bodyB, n, context.bodyCount, colors, order, &world->arena))
-		{
-			for (int i = 0; i < n; ++i)
-			{
-				sorted[i] = pairs[order[i]];
-				bodyA[i] = colors[order[i]];
-			}
-			context.pairs = sorted;
-			context.colorOfConstraint = bodyA;
-		}
-	}
-	CD2_TIMER_MARK(6, "setup color");
-	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)world->joints.count * sizeof(int));
-	/* The solver indices of each joint's bodies (the colouring's, one read of each joint). */
-	int* jointBodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
-	int* jointBodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
-	for (int i = 0; i < world->joints.count && context.joints != NULL; ++i)
-	{
-		const cd2Joint* joint = world->joints.data + i;
-		if (i + 16 < world->joints.count)
-		{
-			CD2_PREFETCH(joint + 16);
-		}
-		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
-		{
-			continue;
-		}
-		/* A body without a solver index is static, asleep or disabled; a disabled one drops the joint. */
-		int indexA = solverOf[joint->bodyA], indexB = solverOf[joint->bodyB];
-		if ((indexA < 0 && indexB < 0) || (indexA < 0 && !world->bodies.data[joint->bodyA].enabled) ||
-			(indexB < 0 && !world->bodies.data[joint->bodyB].enabled))
-		{
-			continue;
-		}
-		if (jointBodyA != NULL && jointBodyB != NULL)
-		{
-			jointBodyA[context.jointCount] = indexA;
-			jointBodyB[context.jointCount] = indexB;
-		}
-		context.joints[context.jointCount++] = i;
-	}
-
-	if (context.joints == NULL && world->joints.count > 0)
-	{
-		world->outOfMemory = true;
-		return;
-	}
-	cd2ColorJoints(world, &context, jointBodyA, jointBodyB);
-
-	CD2_TIMER_MARK(7, "setup joints");
+	CD2_TIMER_MARK(6, "setup stages");
+	bool ok = true;
 	if (!cd2PrepareContactsWide(world, &context))
 	{
 		/* Out of scratch memory: every constraint one by one. */
@@ -821,25 +1196,15 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		&world->arena, (size_t)overflowConstraints * sizeof(cd2ContactConstraint));
 	if (overflowConstraints > 0 && context.constraints == NULL)
 	{
-		world->outOfMemory = true;
-		return;
+		ok = false;
 	}
-	if (!cd2PrepareJoints(world, &context))
+	if (ok && !cd2PrepareJoints(world, &context))
 	{
-		world->outOfMemory = true;
-		return;
+		ok = false;
 	}
 
-	/* The stages, from preparing the contacts to finalizing the bodies (see the top of the file). */
-	cd2StageList list;
-	memset(&list, 0, sizeof(list));
-	list.world = world;
-	list.step = &context;
-	/* A small solve runs on this thread only: its stages take a few microseconds each, about what
-	 * handing them out and waiting at each stage's end would cost. */
 	int solveWork = context.constraintCount + 2 * context.jointCount + context.bodyCount / 4;
-	bool parallel = world->workerCount > 1 && world->enqueueTask != NULL &&
-					(solveWork >= CD2_PARALLEL_MIN_SOLVE || world->alwaysParallel);
+	bool parallel = helpersStart && (solveWork >= CD2_PARALLEL_MIN_SOLVE || world->alwaysParallel);
 	list.workerCount = parallel ? world->workerCount : 1;
 	cd2StageCounter bouncing;
 #if CD2_STAGE_ATOMICS
@@ -858,8 +1223,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		10 + context.colorCount + subStepCount * (8 + 3 * (context.colorCount + jointColors));
 	/* (One more, to start the stages on a cache line.) */
 	char* stageMemory =
-		(char*)cdArena_AllocUncleared(&world->arena, (size_t)(list.stageCapacity + 1) * sizeof(cd2Stage));
-	if (stageMemory == NULL)
+		ok ? (char*)cdArena_AllocUncleared(&world->arena, (size_t)(list.stageCapacity + 1) * sizeof(cd2Stage))
+		   : NULL;
+	context.finalFlags =
+		ok ? (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1) : NULL;
+	if (stageMemory == NULL || context.finalFlags == NULL)
 	{
 		world->outOfMemory = true;
 		return;
@@ -868,7 +1236,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	int overflowCount = context.constraintCount > context.overflowStart ? 1 : 0;
 	/* The coloured constraints are prepared by the pack stage, block by block (in cache when packed);
 	 * this stage prepares the overflow colour's. */
-	cd2AddStage(&list, CD2_STAGE_SETUP_BODIES, context.bodyCount, 64, 0, false);
 	cd2AddStage(&list, CD2_STAGE_PREPARE_JOINTS, context.jointCount, 32, 0, false);
 	cd2AddStage(&list, CD2_STAGE_PREPARE_CONTACTS, context.constraintCount - context.overflowStart, 32,
 				context.overflowStart, false);
@@ -899,12 +1266,6 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 
 	cd2JoinSmallStages(&list);
 
-	context.finalFlags = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1);
-	if (context.finalFlags == NULL)
-	{
-		world->outOfMemory = true;
-		return;
-	}
 	/* The move events are written by index; the step cleared the array. */
 	context.moveEvents = NULL;
 	if (world->moveEvents.count == 0 && cdArrayReserveFor(world->moveEvents, context.bodyCount))
@@ -917,24 +1278,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 
 	CD2_TIMER_MARK(8, "setup wide+stages");
-	/* One task per further worker, enqueued once; the stepping thread walks the stages too. */
-	void* helpers = NULL;
-#if CD2_STAGE_ATOMICS
-	if (parallel)
-	{
-		if (world->threadPool != NULL)
-		{
-			helpers =
-				cdThreadPool_EnqueueEach(cd2StageTask, world->workerCount - 1, &list, world->threadPool);
-		}
-		else
-		{
-			helpers =
-				world->enqueueTask(cd2StageTask, world->workerCount - 1, 1, &list, world->userTaskContext);
-		}
-	}
-#endif
-	cd2RunStages(&list);
+	helpers = parallel ? cd2StartHelpers(world, cd2StageTask, &list) : NULL;
+	cd2RunStages(&list, list.stages, list.stageCount);
 	if (helpers != NULL)
 	{
 		world->finishTask(helpers, world->userTaskContext);

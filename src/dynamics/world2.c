@@ -203,6 +203,8 @@ void cd2DestroyWorld(cd2WorldId worldId)
 	cdArrayFree(world->joints);
 	cdArrayFree(world->islands);
 	cd2AwakeSets_Destroy(world);
+	cd2ColorCache_Destroy(&world->contactColorCache);
+	cd2ColorCache_Destroy(&world->jointColorCache);
 	cdIdPool_Destroy(&world->bodyPool);
 	cdIdPool_Destroy(&world->shapePool);
 	cdIdPool_Destroy(&world->chainPool);

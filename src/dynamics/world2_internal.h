@@ -12,7 +12,8 @@
 /* Profiling, off unless the library is built with -DCD2_STEP_TIMERS: the stepping thread's wall time
  * per part of the step, summed over the steps into cd2StepTimers[i] (seconds, named by
  * cd2StepTimerNames[i]; a program declares both extern and reads them). The parts "narrow",
- * "pair search", "tree rebuild" and "stages" run on the workers; the others are serial. */
+ * "pair search", "tree rebuild", "setup stages" and "stages" run on the workers; the others are
+ * serial. */
 #ifdef CD2_STEP_TIMERS
 #include <time.h>
 extern double cd2StepTimers[16];
@@ -415,6 +416,20 @@ typedef struct cd2ContactSolveEntry
 	uint32_t flags;
 } cd2ContactSolveEntry;
 
+/* The last colouring of the solver's contacts (or joints), kept between steps: a step whose
+ * constraints have the same colouring bodies in the same order (a settled stack, a resting chain)
+ * takes the colours and the order from here instead of colouring again. The colouring depends on
+ * nothing else, so the result is the same bits. Derived data: not part of the saved state. */
+typedef struct cd2ColorCache
+{
+	int* bodyA; /* the colouring's bodies of each constraint */
+	int* bodyB;
+	int* colors;
+	int* order;
+	int count; /* constraints coloured (0: none) */
+	int capacity;
+} cd2ColorCache;
+
 /* ---- the world ------------------------------------------------------------------------------- */
 typedef struct cd2World
 {
@@ -474,6 +489,9 @@ typedef struct cd2World
 	 * cd2SetAlwaysParallel). */
 	bool alwaysParallel;
 	bool outOfMemory;
+	/* The solver's last colourings (solver2.c). */
+	cd2ColorCache contactColorCache;
+	cd2ColorCache jointColorCache;
 } cd2World;
 
 /* ---- world2.c -------------------------------------------------------------------------------- */
@@ -484,6 +502,9 @@ cd2World* cd2GetWorldFromIndex(uint16_t world0);
 void cd2Refuse(const char* reason, const char* file, int line);
 #define CD2_REFUSE(reason) cd2Refuse(reason, __FILE__, __LINE__)
 uint32_t cd2NextGeneration(cd2World* world);
+
+/* Frees a colour cache's arrays (cd2DestroyWorld). */
+void cd2ColorCache_Destroy(cd2ColorCache* cache);
 
 /* ---- body2.c --------------------------------------------------------------------------------- */
 cd2Body* cd2GetBody(cd2World* world, cd2BodyId id); /* NULL when stale */
