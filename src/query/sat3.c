@@ -293,6 +293,81 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 	return best;
 }
 
+/* Edge pruning (cd3SatPolytopesPruned). Along any axis n between the normals of an edge's two faces
+ * (its arc on the Gauss map) the edge supports its polytope P, so the separation of the pair along n
+ * is at most dot(n, x - edge point) for any point x of the other polytope Q: when that is negative at
+ * both ends of the arc, it is at most the larger of x's two plane distances (a negative linear
+ * function on the arc, divided by |n| <= 1 of the normals' blend). So an edge of P with a vertex of Q
+ * farther than `floor` (negative) below both its faces' planes separates by less than `floor` along
+ * every edge pair it forms. */
+
+/* Polytopes take the pruning when the other one has at most this many vertices (bit masks). */
+#define PRUNE_VERTICES 64
+
+/* Bits i of below[f] for each face f of p: q's vertex i (carried into p's frame by `rel`) lies below
+ * the face's plane by more than -floor: dot(normal, v) - offset < floor. */
+static void FacesBelow(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, cdReal floor,
+					   uint64_t* below)
+{
+	cd3Mat33 rotation = cd3MakeMatFromQuat(rel.q);
+	int count = q->vertexCount;
+#if CD3_SUPPORT_SSE
+	__m128 columns[3 * PRUNE_VERTICES / 4];
+	float* vx = (float*)(void*)columns;
+	float* vy = vx + PRUNE_VERTICES;
+	float* vz = vy + PRUNE_VERTICES;
+	int padded = (count + 3) & ~3;
+	for (int i = 0; i < padded; ++i)
+	{
+		/* Lanes past the count repeat vertex 0 (their bits are masked off below). */
+		cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i < count ? i : 0]), rel.p);
+		vx[i] = v.x;
+		vy[i] = v.y;
+		vz[i] = v.z;
+	}
+	uint64_t valid = count >= 64 ? ~(uint64_t)0 : (((uint64_t)1 << count) - 1u);
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cd3Plane plane = p->planes[f];
+		__m128 nx = _mm_set1_ps(plane.normal.x), ny = _mm_set1_ps(plane.normal.y), nz = _mm_set1_ps(plane.normal.z);
+		__m128 level = _mm_set1_ps(plane.offset + floor);
+		uint64_t bits = 0u;
+		for (int i = 0; i < padded; i += 4)
+		{
+			__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, _mm_load_ps(vx + i)), _mm_mul_ps(ny, _mm_load_ps(vy + i))),
+								  _mm_mul_ps(nz, _mm_load_ps(vz + i)));
+			bits |= (uint64_t)_mm_movemask_ps(_mm_cmplt_ps(d, level)) << i;
+		}
+		below[f] = bits & valid;
+	}
+#else
+	cd3Vec carried[PRUNE_VERTICES];
+	for (int i = 0; i < count; ++i)
+	{
+		carried[i] = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
+	}
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cd3Plane plane = p->planes[f];
+		cdReal level = plane.offset + floor;
+		uint64_t bits = 0u;
+		for (int i = 0; i < count; ++i)
+		{
+			bits |= (uint64_t)(cd3Dot(plane.normal, carried[i]) < level) << i;
+		}
+		below[f] = bits;
+	}
+#endif
+}
+
+/* Whether p's edge of half-edge i is pruned: a vertex of the other polytope lies below both its
+ * faces (FacesBelow). */
+static inline bool EdgePruned(const cd3Polytope* p, const uint64_t* below, int i)
+{
+	const cd3HullHalfEdge* e = &p->edges[i];
+	return (below[e->face] & below[p->edges[e->twin].face]) != 0u;
+}
+
 static void Project(const cd3Polytope* p, cd3Transform rel, cd3Vec axis, cdReal* lo, cdReal* hi)
 {
 	cd3Vec local = cd3InvRotateVector(rel.q, axis);
@@ -592,8 +667,9 @@ void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
 					(uint64_t(*)[16])(void*)cd3HullQueryTables(q));
 }
 
-/* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c). */
-static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int* out)
+/* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c), among
+ * A's arcs `keep` (bits). */
+static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, uint32_t keep, cd3Vec dxc, int* out)
 {
 	uint32_t up, down;
 	SideMasks(m->fx, m->fy, m->fz, m->facePadded, dxc, &up, &down);
@@ -603,7 +679,7 @@ static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int
 	uint32_t cUp = m->positive[fc], cDown = m->negative[fc];
 	uint32_t dUp = m->positive[fd], dDown = m->negative[fd];
 	uint32_t pass =
-		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown));
+		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown)) & keep;
 	int n = 0;
 	while (pass != 0u)
 	{
@@ -832,13 +908,123 @@ static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform 
 	pending->count = 0;
 }
 
+/* At most this many edge pairs left by the pruning take QueryEdgesFew. */
+#define FEW_PAIRS 24
+
+/* The edge pairs of A's edges `keptA` and B's edges `keptB` (half-edge indices, in the order of
+ * QueryEdgesGauss, which is the test order), without the tables: the Gauss-map test of the
+ * uncached path and TestEdgePair, pair by pair (the same arithmetic as the tables' path). */
+static void QueryEdgesFew(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cdReal limit,
+						  const int* keptA, int countA, const int* keptB, int countB, cd3SatResult* r,
+						  cd3Vec* bestAxis)
+{
+	EdgeData edges[FEW_PAIRS];
+	for (int k = 0; k < countA; ++k)
+	{
+		edges[k] = MakeEdgeData(a, keptA[k]);
+	}
+	for (int u = 0; u < countB; ++u)
+	{
+		int j = keptB[u];
+		const cd3HullHalfEdge* eb = &b->edges[j];
+		const cd3HullHalfEdge* twin = &b->edges[eb->twin];
+		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
+		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[twin->origin]);
+		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
+		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[twin->face].normal));
+		cd3Vec edgeB = cd3Sub(qb1, qb0);
+		cdReal edgeB2 = cd3LengthSquared(edgeB);
+		cd3Vec dxc = cd3Cross(d, c);
+		for (int k = 0; k < countA; ++k)
+		{
+			const EdgeData* e = &edges[k];
+			cdReal cba = cd3Dot(c, e->bxa);
+			cdReal dba = cd3Dot(d, e->bxa);
+			cdReal adc = cd3Dot(e->na, dxc);
+			cdReal bdc = cd3Dot(e->nb, dxc);
+			if (cba * dba < CD_R(0.0) && adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0))
+			{
+				TestEdgePair(a, b, relB, e, j, qb0, edgeB, edgeB2, r, bestAxis);
+			}
+		}
+		if (r->edgeSeparation > limit)
+		{
+			return;
+		}
+	}
+}
+
 /* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
  * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
  * difference, whose normal is the cross of the edges oriented within A's arc. Stops early once an
- * edge pair separates by more than `limit` (the answer is then only known to exceed it). */
+ * edge pair separates by more than `limit` (the answer is then only known to exceed it). With
+ * belowA and belowB (FacesBelow of A against B and of B against A), the pruned edges are skipped,
+ * and *pruned tells whether there were any. */
 static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cdReal limit,
-							cd3SatResult* r, cd3Vec* bestAxis)
+							const uint64_t* belowA, const uint64_t* belowB, bool* pruned, cd3SatResult* r,
+							cd3Vec* bestAxis)
 {
+	/* The edges left by the pruning, in test order (A's as QueryEdgesGauss lists them below). */
+	bool keepA[EDGE_CACHE];
+	uint32_t keepMaskA = ~0u;
+	if (belowA != NULL)
+	{
+		int keptA[FEW_PAIRS], keptB[FEW_PAIRS];
+		int countA = 0, countB = 0, allA = 0, allB = 0;
+		const int32_t* listA = a->query != NULL ? cd3HullQueryEdges(a->query) : NULL;
+		int edgesA = a->query != NULL ? a->query->edgeCount : a->edgeAxisCount;
+		keepMaskA = 0u;
+		for (int u = 0; u < edgesA; ++u)
+		{
+			int i = listA != NULL ? listA[u] : u;
+			if (a->edges[i].twin < i)
+			{
+				continue;
+			}
+			bool keep = !EdgePruned(a, belowA, i);
+			if (allA < EDGE_CACHE)
+			{
+				keepA[allA] = keep;
+				keepMaskA |= (uint32_t)keep << (allA & 31);
+			}
+			++allA;
+			if (keep && countA < FEW_PAIRS)
+			{
+				keptA[countA] = i;
+			}
+			countA += keep;
+		}
+		const int32_t* listB = b->query != NULL ? cd3HullQueryEdges(b->query) : NULL;
+		int edgesB = b->query != NULL ? b->query->edgeCount : b->edgeAxisCount;
+		for (int u = 0; u < edgesB; ++u)
+		{
+			int j = listB != NULL ? listB[u] : u;
+			if (b->edges[j].twin < j)
+			{
+				continue;
+			}
+			++allB;
+			if (!EdgePruned(b, belowB, j))
+			{
+				if (countB < FEW_PAIRS)
+				{
+					keptB[countB] = j;
+				}
+				++countB;
+			}
+		}
+		*pruned = countA < allA || countB < allB;
+		if (countA * countB <= FEW_PAIRS)
+		{
+			QueryEdgesFew(a, b, relB, limit, keptA, countA, keptB, countB, r, bestAxis);
+			return;
+		}
+	}
+	else
+	{
+		*pruned = false;
+	}
+
 	EdgeData cache[EDGE_CACHE];
 	ArcColumns arcs;
 	int crossing[EDGE_CACHE];
@@ -936,7 +1122,7 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	{
 		int j = uniqueB != NULL ? uniqueB[u] : u;
 		const cd3HullHalfEdge* eb = &b->edges[j];
-		if (eb->twin < j)
+		if (eb->twin < j || (belowB != NULL && EdgePruned(b, belowB, j)))
 		{
 			continue;
 		}
@@ -969,11 +1155,14 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 					return;
 				}
 			}
-			int n = masked ? CrossingArcsMasked(&masks, eb->face, twin->face, dxc, crossing)
+			int n = masked ? CrossingArcsMasked(&masks, eb->face, twin->face, keepMaskA, dxc, crossing)
 						   : CrossingArcs(&arcs, cached, c, d, dxc, crossing);
 			for (int k = 0; k < n; ++k)
 			{
-				AddPendingPair(&pending, &cache[crossing[k]], crossing[k], j, qb0, edgeB, edgeB2);
+				if (belowA == NULL || keepA[crossing[k]])
+				{
+					AddPendingPair(&pending, &cache[crossing[k]], crossing[k], j, qb0, edgeB, edgeB2);
+				}
 			}
 			continue;
 		}
@@ -981,7 +1170,7 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			for (int k = 0; k < a->edgeAxisCount; ++k)
 			{
-				if (a->edges[k].twin < k)
+				if (a->edges[k].twin < k || (belowA != NULL && EdgePruned(a, belowA, k)))
 				{
 					continue;
 				}
@@ -1180,7 +1369,9 @@ static void QueryEdgesProjected(const cd3Polytope* a, const cd3Polytope* b, cd3T
 	}
 }
 
-cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit)
+/* cd3SatPolytopesWithin, and with prune cd3SatPolytopesPruned. */
+static cd3SatResult SatPolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal limit, bool prune,
+								 cdReal slack, bool* pruned)
 {
 	cd3SatResult r;
 	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
@@ -1192,6 +1383,7 @@ cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, c
 	r.edgeA = -1;
 	r.edgeB = -1;
 	r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	*pruned = false;
 	if (r.faceSeparationA > limit)
 	{
 		return r;
@@ -1206,12 +1398,37 @@ cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, c
 	{
 		QueryEdgesProjected(a, b, relB, &r, &bestAxis);
 	}
+	else if (prune && a->vertexCount <= PRUNE_VERTICES && b->vertexCount <= PRUNE_VERTICES &&
+			 a->faceCount <= SMALL_POLYTOPE && b->faceCount <= SMALL_POLYTOPE)
+	{
+		/* The floor below every face separation that matters to the caller, less the round-off of
+		 * the plane distances (coordinates of the sizes and of the offset between the frames). */
+		cdReal best = cdMax(r.faceSeparationA, r.faceSeparationB);
+		cdReal roundOff = SUPPORT_TOLERANCE * (a->size + b->size + cd3Length(relB.p));
+		cdReal floor = cdMin(best - slack, CD_R(0.0)) - roundOff;
+		uint64_t belowA[SMALL_POLYTOPE], belowB[SMALL_POLYTOPE];
+		FacesBelow(a, b, relB, floor, belowA);
+		FacesBelow(b, a, relA, floor, belowB);
+		QueryEdgesGauss(a, b, relB, limit, belowA, belowB, pruned, &r, &bestAxis);
+	}
 	else
 	{
-		QueryEdgesGauss(a, b, relB, limit, &r, &bestAxis);
+		QueryEdgesGauss(a, b, relB, limit, NULL, NULL, pruned, &r, &bestAxis);
 	}
 	r.edgeNormal = cd3RotateVector(a->transform.q, bestAxis);
 	return r;
+}
+
+cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit)
+{
+	bool pruned;
+	return SatPolytopes(a, b, limit, false, CD_R(0.0), &pruned);
+}
+
+cd3SatResult cd3SatPolytopesPruned(const cd3Polytope* a, const cd3Polytope* b, cdReal limit, cdReal slack,
+								   bool* pruned)
+{
+	return SatPolytopes(a, b, limit, true, slack, pruned);
 }
 
 cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)

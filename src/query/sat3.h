@@ -96,6 +96,16 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
  * the separation is at most `limit`. */
 cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit);
 
+/* cd3SatPolytopesWithin that skips the edge pairs that cannot separate the polytopes by more than
+ * the best face axis less `slack` (nor by more than zero), when the other polytope has a vertex that
+ * far below both faces of one of their edges. The separation (cd3SatSeparation) stays exact and so
+ * does the best edge pair when it separates by more than that floor; below it, the edge pair
+ * reported may be a lesser one or none (edgeA -1). *pruned tells whether any edge was skipped: the
+ * result is then cd3SatPolytopesWithin's in every field only above the floor. Solid polytopes only
+ * (flat ones take every edge pair). */
+cd3SatResult cd3SatPolytopesPruned(const cd3Polytope* a, const cd3Polytope* b, cdReal limit, cdReal slack,
+								   bool* pruned);
+
 /* The same for two boxes, with the fifteen axes in closed form; face and half-edge indices are
  * those of cd3InitBoxPolytope. Edge axes that do not beat the best face axis are not reported
  * (edgeA is then -1): the overall separation is still exact. Also gives B's frame in A's: rotation (B's axes
