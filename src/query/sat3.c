@@ -198,9 +198,22 @@ static bool IsZero(cd3Vec v)
  * eight at a time (the loops vectorize). Larger ones search q's support vertex per face. */
 #define SMALL_POLYTOPE 64
 
+/* Vertices of the other polytope carried into a polytope's frame, as columns (for the pruning). */
+#define PRUNE_VERTICES 64
+
+typedef struct CarriedVertices
+{
+#if CD3_SUPPORT_SSE
+	__m128 align; /* the columns 16-byte aligned (PRUNE_VERTICES is a multiple of 4) */
+#endif
+	cdReal x[PRUNE_VERTICES], y[PRUNE_VERTICES], z[PRUNE_VERTICES];
+} CarriedVertices;
+
 /* Largest separation over p's face normals against q, whose local points map into p's frame by
- * `rel`. */
-static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace)
+ * `rel`. With `carried` (when q has at most PRUNE_VERTICES vertices and both are small), q's
+ * vertices in p's frame are kept there. */
+static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace,
+						 CarriedVertices* carried)
 {
 	cdReal best = -CD_REAL_MAX;
 	*bestFace = -1;
@@ -244,6 +257,12 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 		for (int i = 0; i < q->vertexCount; ++i)
 		{
 			cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
+			if (carried != NULL)
+			{
+				carried->x[i] = v.x;
+				carried->y[i] = v.y;
+				carried->z[i] = v.z;
+			}
 #if CD3_SUPPORT_SSE
 			__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
 			for (int f = 0; f < padded; f += 4)
@@ -301,59 +320,48 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
  * farther than `floor` (negative) below both its faces' planes separates by less than `floor` along
  * every edge pair it forms. */
 
-/* Polytopes take the pruning when the other one has at most this many vertices (bit masks). */
-#define PRUNE_VERTICES 64
-
-/* Bits i of below[f] for each face f of p: q's vertex i (carried into p's frame by `rel`) lies below
- * the face's plane by more than -floor: dot(normal, v) - offset < floor. */
-static void FacesBelow(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, cdReal floor,
+/* Bits i of below[f] for each face f of p: q's vertex i (`carried` into p's frame by QueryFaces)
+ * lies below the face's plane by more than -floor: dot(normal, v) - offset < floor. */
+static void FacesBelow(const cd3Polytope* p, int vertexCount, CarriedVertices* carried, cdReal floor,
 					   uint64_t* below)
 {
-	cd3Mat33 rotation = cd3MakeMatFromQuat(rel.q);
-	int count = q->vertexCount;
 #if CD3_SUPPORT_SSE
-	__m128 columns[3 * PRUNE_VERTICES / 4];
-	float* vx = (float*)(void*)columns;
-	float* vy = vx + PRUNE_VERTICES;
-	float* vz = vy + PRUNE_VERTICES;
-	int padded = (count + 3) & ~3;
-	for (int i = 0; i < padded; ++i)
+	int padded = (vertexCount + 3) & ~3;
+	for (int i = vertexCount; i < padded; ++i)
 	{
 		/* Lanes past the count repeat vertex 0 (their bits are masked off below). */
-		cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i < count ? i : 0]), rel.p);
-		vx[i] = v.x;
-		vy[i] = v.y;
-		vz[i] = v.z;
+		carried->x[i] = carried->x[0];
+		carried->y[i] = carried->y[0];
+		carried->z[i] = carried->z[0];
 	}
-	uint64_t valid = count >= 64 ? ~(uint64_t)0 : (((uint64_t)1 << count) - 1u);
+	uint64_t valid = vertexCount >= 64 ? ~(uint64_t)0 : (((uint64_t)1 << vertexCount) - 1u);
 	for (int f = 0; f < p->faceCount; ++f)
 	{
 		cd3Plane plane = p->planes[f];
-		__m128 nx = _mm_set1_ps(plane.normal.x), ny = _mm_set1_ps(plane.normal.y), nz = _mm_set1_ps(plane.normal.z);
+		__m128 nx = _mm_set1_ps(plane.normal.x), ny = _mm_set1_ps(plane.normal.y),
+			   nz = _mm_set1_ps(plane.normal.z);
 		__m128 level = _mm_set1_ps(plane.offset + floor);
 		uint64_t bits = 0u;
 		for (int i = 0; i < padded; i += 4)
 		{
-			__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, _mm_load_ps(vx + i)), _mm_mul_ps(ny, _mm_load_ps(vy + i))),
-								  _mm_mul_ps(nz, _mm_load_ps(vz + i)));
+			__m128 d = _mm_add_ps(
+				_mm_add_ps(_mm_mul_ps(nx, _mm_load_ps(carried->x + i)), _mm_mul_ps(ny, _mm_load_ps(carried->y + i))),
+				_mm_mul_ps(nz, _mm_load_ps(carried->z + i)));
 			bits |= (uint64_t)_mm_movemask_ps(_mm_cmplt_ps(d, level)) << i;
 		}
 		below[f] = bits & valid;
 	}
 #else
-	cd3Vec carried[PRUNE_VERTICES];
-	for (int i = 0; i < count; ++i)
-	{
-		carried[i] = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
-	}
 	for (int f = 0; f < p->faceCount; ++f)
 	{
 		cd3Plane plane = p->planes[f];
 		cdReal level = plane.offset + floor;
 		uint64_t bits = 0u;
-		for (int i = 0; i < count; ++i)
+		for (int i = 0; i < vertexCount; ++i)
 		{
-			bits |= (uint64_t)(cd3Dot(plane.normal, carried[i]) < level) << i;
+			cdReal d = plane.normal.x * carried->x[i] + plane.normal.y * carried->y[i] +
+					   plane.normal.z * carried->z[i];
+			bits |= (uint64_t)(d < level) << i;
 		}
 		below[f] = bits;
 	}
@@ -626,7 +634,7 @@ size_t cd3HullQueryDataSize(int halfEdgeCount, int faceCount)
 	}
 	size_t edgePadded = (size_t)((halfEdgeCount / 2 + 3) & ~3), facePadded = (size_t)((faceCount + 3) & ~3);
 	return sizeof(cd3HullQueryData) + 3 * (edgePadded + facePadded) * sizeof(cdReal) +
-		   facePadded / 4 * 16 * sizeof(uint64_t) + edgePadded * sizeof(int32_t);
+		   facePadded / 4 * 16 * sizeof(uint64_t) + 3 * edgePadded * sizeof(int32_t);
 }
 
 void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
@@ -646,6 +654,13 @@ void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
 		{
 			unique[count++] = i;
 		}
+	}
+	int32_t* faces2 = (int32_t*)(void*)cd3HullQueryEdgeFaces(q);
+	for (int k = 0; k < count; ++k)
+	{
+		const cd3HullHalfEdge* e = &hull->edges[unique[k]];
+		faces2[2 * k] = e->face;
+		faces2[2 * k + 1] = hull->edges[e->twin].face;
 	}
 	cdReal* arcs = (cdReal*)(void*)cd3HullQueryArcs(q);
 	for (int k = 0; k < count; ++k)
@@ -913,7 +928,7 @@ static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform 
 
 /* The edge pairs of A's edges `keptA` and B's edges `keptB` (half-edge indices, in the order of
  * QueryEdgesGauss, which is the test order), without the tables: the Gauss-map test of the
- * uncached path and TestEdgePair, pair by pair (the same arithmetic as the tables' path). */
+ * uncached path and TestEdgePair, pair by pair (the arithmetic of the tables' path). */
 static void QueryEdgesFew(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cdReal limit,
 						  const int* keptA, int countA, const int* keptB, int countB, cd3SatResult* r,
 						  cd3Vec* bestAxis)
@@ -954,6 +969,75 @@ static void QueryEdgesFew(const cd3Polytope* a, const cd3Polytope* b, cd3Transfo
 	}
 }
 
+/* p's edges (the hull's list, or the half-edges below their twins, as QueryEdgesGauss lists them)
+ * that the pruning keeps (EdgePruned): the first FEW_PAIRS in `kept`, in order (room for one
+ * more), and with `keep`, each edge's flag (the first EDGE_CACHE edges) and the first 32 as bits
+ * of *mask. Returns how many are kept; *all: how many there are. */
+static int KeptEdges(const cd3Polytope* p, const uint64_t* below, int* kept, bool* keep, uint32_t* mask,
+					 int* all)
+{
+	int n = 0;
+	uint32_t bits = 0u;
+	if (p->query != NULL)
+	{
+		/* The hull's edges and their faces as lists: no walk through the half-edges. */
+		const int32_t* list = cd3HullQueryEdges(p->query);
+		const int32_t* faces = cd3HullQueryEdgeFaces(p->query);
+		int count = p->query->edgeCount;
+		for (int k = 0; k < count; ++k)
+		{
+			bool kept1 = (below[faces[2 * k]] & below[faces[2 * k + 1]]) == 0u;
+			if (kept1)
+			{
+				kept[n < FEW_PAIRS ? n : FEW_PAIRS] = list[k];
+				++n;
+			}
+			bits |= (uint32_t)kept1 << (k & 31);
+			if (keep != NULL && k < EDGE_CACHE)
+			{
+				keep[k] = kept1;
+			}
+		}
+		*all = count;
+		if (count > 32)
+		{
+			bits = ~0u; /* only the masked test reads the bits, on at most 32 edges */
+		}
+	}
+	else
+	{
+		int unique = 0;
+		for (int i = 0; i < p->edgeAxisCount; ++i)
+		{
+			if (p->edges[i].twin < i)
+			{
+				continue;
+			}
+			bool kept1 = !EdgePruned(p, below, i);
+			if (kept1)
+			{
+				kept[n < FEW_PAIRS ? n : FEW_PAIRS] = i;
+				++n;
+			}
+			if (unique < 32)
+			{
+				bits |= (uint32_t)kept1 << unique;
+			}
+			if (keep != NULL && unique < EDGE_CACHE)
+			{
+				keep[unique] = kept1;
+			}
+			++unique;
+		}
+		*all = unique;
+	}
+	if (mask != NULL)
+	{
+		*mask = bits;
+	}
+	return n;
+}
+
 /* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
  * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
  * difference, whose normal is the cross of the edges oriented within A's arc. Stops early once an
@@ -964,55 +1048,15 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 							const uint64_t* belowA, const uint64_t* belowB, bool* pruned, cd3SatResult* r,
 							cd3Vec* bestAxis)
 {
-	/* The edges left by the pruning, in test order (A's as QueryEdgesGauss lists them below). */
+	/* The edges left by the pruning, in test order (A's as listed below). */
 	bool keepA[EDGE_CACHE];
 	uint32_t keepMaskA = ~0u;
 	if (belowA != NULL)
 	{
-		int keptA[FEW_PAIRS], keptB[FEW_PAIRS];
-		int countA = 0, countB = 0, allA = 0, allB = 0;
-		const int32_t* listA = a->query != NULL ? cd3HullQueryEdges(a->query) : NULL;
-		int edgesA = a->query != NULL ? a->query->edgeCount : a->edgeAxisCount;
-		keepMaskA = 0u;
-		for (int u = 0; u < edgesA; ++u)
-		{
-			int i = listA != NULL ? listA[u] : u;
-			if (a->edges[i].twin < i)
-			{
-				continue;
-			}
-			bool keep = !EdgePruned(a, belowA, i);
-			if (allA < EDGE_CACHE)
-			{
-				keepA[allA] = keep;
-				keepMaskA |= (uint32_t)keep << (allA & 31);
-			}
-			++allA;
-			if (keep && countA < FEW_PAIRS)
-			{
-				keptA[countA] = i;
-			}
-			countA += keep;
-		}
-		const int32_t* listB = b->query != NULL ? cd3HullQueryEdges(b->query) : NULL;
-		int edgesB = b->query != NULL ? b->query->edgeCount : b->edgeAxisCount;
-		for (int u = 0; u < edgesB; ++u)
-		{
-			int j = listB != NULL ? listB[u] : u;
-			if (b->edges[j].twin < j)
-			{
-				continue;
-			}
-			++allB;
-			if (!EdgePruned(b, belowB, j))
-			{
-				if (countB < FEW_PAIRS)
-				{
-					keptB[countB] = j;
-				}
-				++countB;
-			}
-		}
+		int keptA[FEW_PAIRS + 1], keptB[FEW_PAIRS + 1];
+		int allA, allB;
+		int countA = KeptEdges(a, belowA, keptA, keepA, &keepMaskA, &allA);
+		int countB = KeptEdges(b, belowB, keptB, NULL, NULL, &allB);
 		*pruned = countA < allA || countB < allB;
 		if (countA * countB <= FEW_PAIRS)
 		{
@@ -1376,7 +1420,12 @@ static cd3SatResult SatPolytopes(const cd3Polytope* a, const cd3Polytope* b, cdR
 	cd3SatResult r;
 	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
 	cd3Transform relA = cd3InvMulTransforms(b->transform, a->transform);
-	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA);
+	/* The pruning needs each polytope's vertices in the other's frame: QueryFaces keeps them. */
+	bool canPrune = prune && !a->flat && !b->flat && a->vertexCount <= PRUNE_VERTICES &&
+					b->vertexCount <= PRUNE_VERTICES && a->faceCount <= SMALL_POLYTOPE &&
+					b->faceCount <= SMALL_POLYTOPE;
+	CarriedVertices bInA, aInB; /* B's vertices in A's frame, A's in B's */
+	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA, canPrune ? &bInA : NULL);
 	r.faceSeparationB = -CD_REAL_MAX;
 	r.faceB = -1;
 	r.edgeSeparation = -CD_REAL_MAX;
@@ -1388,7 +1437,7 @@ static cd3SatResult SatPolytopes(const cd3Polytope* a, const cd3Polytope* b, cdR
 	{
 		return r;
 	}
-	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
+	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB, canPrune ? &aInB : NULL);
 	if (r.faceSeparationB > limit)
 	{
 		return r;
@@ -1398,8 +1447,7 @@ static cd3SatResult SatPolytopes(const cd3Polytope* a, const cd3Polytope* b, cdR
 	{
 		QueryEdgesProjected(a, b, relB, &r, &bestAxis);
 	}
-	else if (prune && a->vertexCount <= PRUNE_VERTICES && b->vertexCount <= PRUNE_VERTICES &&
-			 a->faceCount <= SMALL_POLYTOPE && b->faceCount <= SMALL_POLYTOPE)
+	else if (canPrune)
 	{
 		/* The floor below every face separation that matters to the caller, less the round-off of
 		 * the plane distances (coordinates of the sizes and of the offset between the frames). */
@@ -1407,8 +1455,8 @@ static cd3SatResult SatPolytopes(const cd3Polytope* a, const cd3Polytope* b, cdR
 		cdReal roundOff = SUPPORT_TOLERANCE * (a->size + b->size + cd3Length(relB.p));
 		cdReal floor = cdMin(best - slack, CD_R(0.0)) - roundOff;
 		uint64_t belowA[SMALL_POLYTOPE], belowB[SMALL_POLYTOPE];
-		FacesBelow(a, b, relB, floor, belowA);
-		FacesBelow(b, a, relA, floor, belowB);
+		FacesBelow(a, b->vertexCount, &bInA, floor, belowA);
+		FacesBelow(b, a->vertexCount, &aInB, floor, belowB);
 		QueryEdgesGauss(a, b, relB, limit, belowA, belowB, pruned, &r, &bestAxis);
 	}
 	else

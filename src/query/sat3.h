@@ -8,7 +8,8 @@
 /* cd3Hull.queryData: a header, then the columns (cdReal) of the unique edges' arcs cross(nb, na)
  * (x, y, z, each edgePadded entries), of the face normals (x, y, z, each facePadded entries), then
  * EdgesOfFaces' tables (facePadded / 4 of 16 uint64_t), then the unique edges' half-edge indices
- * (the half-edge below its twin, in index order; edgePadded int32_t). Padding is zero. */
+ * (the half-edge below its twin, in index order; edgePadded int32_t), then their faces (the
+ * half-edge's, then its twin's; 2 edgePadded int32_t). Padding is zero. */
 #define CD3_HULL_QUERY_EDGES 32
 #define CD3_HULL_QUERY_FACES 16
 
@@ -35,6 +36,11 @@ static inline const uint64_t (*cd3HullQueryTables(const cd3HullQueryData* q))[16
 static inline const int32_t* cd3HullQueryEdges(const cd3HullQueryData* q)
 {
 	return (const int32_t*)(const void*)(cd3HullQueryTables(q) + q->facePadded / 4);
+}
+
+static inline const int32_t* cd3HullQueryEdgeFaces(const cd3HullQueryData* q)
+{
+	return cd3HullQueryEdges(q) + q->edgePadded;
 }
 
 /* Bytes of the query data of a hull with these counts (a multiple of 16), 0 when it gets none. */
