@@ -1058,6 +1058,10 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		int countA = KeptEdges(a, belowA, keptA, keepA, &keepMaskA, &allA);
 		int countB = KeptEdges(b, belowB, keptB, NULL, NULL, &allB);
 		*pruned = countA < allA || countB < allB;
+		if (countA == 0 || countB == 0)
+		{
+			return; /* no edge pair left */
+		}
 		if (countA * countB <= FEW_PAIRS)
 		{
 			QueryEdgesFew(a, b, relB, limit, keptA, countA, keptB, countB, r, bestAxis);
