@@ -312,13 +312,14 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 	return best;
 }
 
-/* Edge pruning (cd3SatPolytopesPruned). Along any axis n between the normals of an edge's two faces
- * (its arc on the Gauss map) the edge supports its polytope P, so the separation of the pair along n
- * is at most dot(n, x - edge point) for any point x of the other polytope Q: when that is negative at
- * both ends of the arc, it is at most the larger of x's two plane distances (a negative linear
- * function on the arc, divided by |n| <= 1 of the normals' blend). So an edge of P with a vertex of Q
- * farther than `floor` (negative) below both its faces' planes separates by less than `floor` along
- * every edge pair it forms. */
+/* Edge pruning (cd3SatPolytopesPruned). Along any axis n on an edge's arc (n = (s na + t nb) / |s na
+ * + t nb|, s, t >= 0, na and nb its faces' unit normals) the edge supports its polytope P, so an edge
+ * pair of it separates along n by at most dot(n, x - p) for any point x of the other polytope Q and p
+ * on the edge. With da and db x's distances to the two face planes (both through p), that is
+ * (s da + t db) / |s na + t nb| <= max(da, db) when both are negative (the numerator is at most
+ * (s + t) max(da, db), the length at most s + t). So an edge of P with a vertex of Q below both its
+ * faces' planes by more than -floor (floor negative) separates by less than floor in every edge pair
+ * it forms. */
 
 /* Bits i of below[f] for each face f of p: q's vertex i (`carried` into p's frame by QueryFaces)
  * lies below the face's plane by more than -floor: dot(normal, v) - offset < floor. */
