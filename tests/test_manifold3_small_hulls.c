@@ -6,6 +6,7 @@
  * depth (a brute separating-axis test in double over every face normal and every edge pair's
  * cross product) and the contact must not be empty. */
 #include "collide/collide.h"
+#include "../src/query/sat3.h" /* internal: the pruned separating-axis test against the full one */
 #include "manifold_separation3.h"
 #include "test.h"
 
@@ -279,8 +280,71 @@ static void TestQueryDataAgrees(void)
 	TEST_CHECKF(compared > 200 && refused > 20, "%d pairs in contact, %d swaps refused", compared, refused);
 }
 
+/* The pruned separating-axis test (the contact path of small polytopes) skips the edges that cannot
+ * separate more than the best face less a slack, nor more than zero: over random pairs of hulls (and
+ * of a box and a hull), overlapping and apart, its separation and face axes are the full test's bit
+ * for bit, and so is its edge pair whenever the full test's separates more than that floor; below
+ * it the pruned test's edge pair separates no more than the full test's. */
+static void TestPrunedSatAgrees(void)
+{
+	TestRng rng = TestRngMake(0x5a7e15u);
+	int prunedCount = 0, edgesAbove = 0, edgesBest = 0;
+	for (int k = 0; k < 1500; ++k)
+	{
+		int countA = 4 + (int)TestRngRange(&rng, 0.0, 9.0), countB = 4 + (int)TestRngRange(&rng, 0.0, 9.0);
+		cd3Hull* ha = RandomHull(&rng, countA);
+		cd3Hull* hb = RandomHull(&rng, countB);
+		cd3HullShape a = {ha, {cd3Scale(CD_R(0.2), RandomUnit(&rng)), RandomRotation(&rng)}};
+		cd3HullShape b = {
+			hb, {cd3Scale((cdReal)TestRngRange(&rng, 0.3, 2.5), RandomUnit(&rng)), RandomRotation(&rng)}};
+		cd3Polytope pa, pb;
+		if (k % 5 == 4)
+		{
+			cd3Box box = {a.transform.p, cd3MakeVec(CD_R(0.6), CD_R(0.3), CD_R(0.45)), a.transform.q};
+			cd3InitBoxPolytope(&pa, box);
+		}
+		else
+		{
+			cd3InitHullPolytope(&pa, a);
+		}
+		cd3InitHullPolytope(&pb, b);
+		cdReal slack = CD_R(1.0e-4) * (cdReal)TestRngRange(&rng, 0.0, 4.0);
+		cd3SatResult full = cd3SatPolytopes(&pa, &pb);
+		bool pruned = false;
+		cd3SatResult cut = cd3SatPolytopesPruned(&pa, &pb, CD_REAL_MAX, slack, &pruned);
+		prunedCount += pruned;
+		TEST_CHECKF(cd3SatSeparation(&cut) == cd3SatSeparation(&full), "pair %d: separation %g, full test %g",
+					k, (double)cd3SatSeparation(&cut), (double)cd3SatSeparation(&full));
+		TEST_CHECKF(cut.faceA == full.faceA && cut.faceB == full.faceB &&
+						cut.faceSeparationA == full.faceSeparationA && cut.faceSeparationB == full.faceSeparationB,
+					"pair %d: face axes %d %d, full test %d %d", k, cut.faceA, cut.faceB, full.faceA, full.faceB);
+		cdReal floor = cdMin(cdMax(full.faceSeparationA, full.faceSeparationB) - slack, CD_R(0.0));
+		if (full.edgeA >= 0 && full.edgeSeparation >= floor)
+		{
+			TEST_CHECKF(cut.edgeA == full.edgeA && cut.edgeB == full.edgeB &&
+							cut.edgeSeparation == full.edgeSeparation && cd3VecEqual(cut.edgeNormal, full.edgeNormal),
+						"pair %d: edge pair %d-%d at %g, full test %d-%d at %g", k, cut.edgeA, cut.edgeB,
+						(double)cut.edgeSeparation, full.edgeA, full.edgeB, (double)full.edgeSeparation);
+			++edgesAbove;
+			edgesBest += full.edgeSeparation > cdMax(full.faceSeparationA, full.faceSeparationB);
+		}
+		else
+		{
+			TEST_CHECKF(cut.edgeSeparation <= full.edgeSeparation, "pair %d: edge pair at %g, full test %g", k,
+						(double)cut.edgeSeparation, (double)full.edgeSeparation);
+		}
+		TEST_CHECK(pruned || (cut.edgeA == full.edgeA && cut.edgeSeparation == full.edgeSeparation));
+		cd3DestroyHull(ha);
+		cd3DestroyHull(hb);
+	}
+	TEST_CHECKF(prunedCount > 1200 && edgesAbove > 900 && edgesBest > 500,
+				"%d pairs pruned, %d edge pairs above the floor, %d of them the best axis", prunedCount,
+				edgesAbove, edgesBest);
+}
+
 int main(void)
 {
+	TEST_RUN(TestPrunedSatAgrees);
 	TEST_RUN(TestQueryDataAgrees);
 	TEST_RUN(TestMaskedGaussTest);
 	TEST_RUN(TestLargerA);

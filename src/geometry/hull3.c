@@ -1696,7 +1696,7 @@ static cdResult ValidateHull(const cd3Hull* hull, bool global, int* vertexScratc
 		union
 		{
 			uint64_t align;
-			unsigned char bytes[2048];
+			unsigned char bytes[4096]; /* the largest query data: 2,064 bytes (double) */
 		} expected;
 		size_t size = cd3HullQueryDataSize(e, f);
 		if (size == 0 || size > sizeof(expected.bytes))

@@ -935,7 +935,19 @@ static cdReal EdgeTieSize(const cd3Polytope* a, const cd3Polytope* b)
  * pair whose edges do not cross along its axis (EdgeContact) gives no contact (the caller then
  * takes the distance); without it, its closest points stand. */
 static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat,
-							  cdReal speculativeDistance, bool checkEdges)
+							  cdReal speculativeDistance, bool checkEdges, bool pruned);
+
+/* SatContact on a pruned SAT result (cd3SatPolytopesPruned) once the edge pairs it skipped may
+ * matter (the face's incident polygon clipped away): the full test, then the same steps. */
+MANIFOLD_NOINLINE static cd3Manifold SatContactUnpruned(const cd3Polytope* a, const cd3Polytope* b,
+														cdReal speculativeDistance, bool checkEdges)
+{
+	cd3SatResult full = cd3SatPolytopesWithin(a, b, speculativeDistance);
+	return SatContact(a, b, &full, speculativeDistance, checkEdges, false);
+}
+
+static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const cd3SatResult* sat,
+							  cdReal speculativeDistance, bool checkEdges, bool pruned)
 {
 	cdReal size = a->size + b->size;
 	bool useB =
@@ -965,6 +977,10 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 	{
 		cd3Manifold m = useB ? FaceContact(b, face, a, true, speculativeDistance)
 							 : FaceContact(a, face, b, false, speculativeDistance);
+		if (m.pointCount == 0 && pruned)
+		{
+			return SatContactUnpruned(a, b, speculativeDistance, checkEdges);
+		}
 		if (m.pointCount == 0 && !edges && other >= 0)
 		{
 			/* The incident polygon clipped away against a sliver of a face (a box 1e-9 thin whose
@@ -977,6 +993,10 @@ static cd3Manifold SatContact(const cd3Polytope* a, const cd3Polytope* b, const 
 		{
 			return m;
 		}
+	}
+	if (pruned)
+	{
+		return SatContactUnpruned(a, b, speculativeDistance, checkEdges);
 	}
 	if (!edges || sat->edgeSeparation > speculativeDistance)
 	{
@@ -1216,7 +1236,7 @@ static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, co
 }
 
 MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b,
-														 cd3SatResult sat, cdReal speculativeDistance);
+														 cd3SatResult sat, bool pruned, cdReal speculativeDistance);
 
 static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
 {
@@ -1233,15 +1253,20 @@ static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, 
 		}
 		/* EPA gave no direction (hulls of 6 vertices at 1e9 in float: overlapping, depth 0 and a
 		 * zero normal): the separating-axis test, whatever its cost, has an axis. */
-		return CollidePolytopesSat(a, b, cd3SatPolytopes(a, b), speculativeDistance);
+		return CollidePolytopesSat(a, b, cd3SatPolytopes(a, b), false, speculativeDistance);
 	}
 	/* Beyond the speculative distance the SAT's answer is empty whatever the exact separation: it
-	 * may stop at the first axis that shows it. */
-	return CollidePolytopesSat(a, b, cd3SatPolytopesWithin(a, b, speculativeDistance), speculativeDistance);
+	 * may stop at the first axis that shows it. The contact takes an edge pair over the faces only
+	 * when it separates more than the face SatContact picks, which is within FACE_BIAS of the best
+	 * face: edge pairs below that may be skipped (SatContact runs the full test when it needs them). */
+	bool pruned;
+	cd3SatResult sat =
+		cd3SatPolytopesPruned(a, b, speculativeDistance, FACE_BIAS * FaceTieSize(a, b), &pruned);
+	return CollidePolytopesSat(a, b, sat, pruned, speculativeDistance);
 }
 
 static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b, cd3SatResult sat,
-									   cdReal speculativeDistance)
+									   bool pruned, cdReal speculativeDistance)
 {
 	cdReal separation = cd3SatSeparation(&sat);
 	if (!(separation <= speculativeDistance))
@@ -1264,7 +1289,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 				return apart.distance <= speculativeDistance ? VertexContact(apart) : EmptyManifold();
 			}
 		}
-		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true, pruned);
 		if (m.pointCount > 0 && disparate)
 		{
 			DropPointsOffShapes(&m, a, b);
@@ -1295,7 +1320,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 			{
 				return WitnessContact(a, b, &sat, cp);
 			}
-			m = SatContact(a, b, &sat, speculativeDistance, false);
+			m = SatContact(a, b, &sat, speculativeDistance, false, pruned);
 			if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
 			{
 				DropPointsOffShapes(&m, a, b);
@@ -1333,7 +1358,7 @@ static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* 
 					(cp.distance <= tolerance && cp.distance <= RoundOff(cp.pointA, a->size + b->size));
 	if (cp.distance <= separation + tolerance)
 	{
-		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true);
+		cd3Manifold m = SatContact(a, b, &sat, speculativeDistance, true, pruned);
 		if (m.pointCount > 0 && cdMax(a->size, b->size) > CD_R(16.0) * cdMin(a->size, b->size))
 		{
 			/* A face 4.3e8 long clipped against a needle's face 1.6e6 long (float) kept points
@@ -2130,7 +2155,7 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, const cd
 	cd3Polytope pa, pb;
 	cd3InitBoxPolytope(&pa, *a);
 	cd3InitBoxPolytope(&pb, *b);
-	m = CollidePolytopesSat(&pa, &pb, separation <= CD_R(0.0) ? cd3SatPolytopes(&pa, &pb) : sat,
+	m = CollidePolytopesSat(&pa, &pb, separation <= CD_R(0.0) ? cd3SatPolytopes(&pa, &pb) : sat, false,
 							speculativeDistance);
 	return m;
 }

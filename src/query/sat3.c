@@ -198,9 +198,22 @@ static bool IsZero(cd3Vec v)
  * eight at a time (the loops vectorize). Larger ones search q's support vertex per face. */
 #define SMALL_POLYTOPE 64
 
+/* Vertices of the other polytope carried into a polytope's frame, as columns (for the pruning). */
+#define PRUNE_VERTICES 64
+
+typedef struct CarriedVertices
+{
+#if CD3_SUPPORT_SSE
+	__m128 align; /* the columns 16-byte aligned (PRUNE_VERTICES is a multiple of 4) */
+#endif
+	cdReal x[PRUNE_VERTICES], y[PRUNE_VERTICES], z[PRUNE_VERTICES];
+} CarriedVertices;
+
 /* Largest separation over p's face normals against q, whose local points map into p's frame by
- * `rel`. */
-static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace)
+ * `rel`. With `carried` (when q has at most PRUNE_VERTICES vertices and both are small), q's
+ * vertices in p's frame are kept there. */
+static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transform rel, int* bestFace,
+						 CarriedVertices* carried)
 {
 	cdReal best = -CD_REAL_MAX;
 	*bestFace = -1;
@@ -244,6 +257,12 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 		for (int i = 0; i < q->vertexCount; ++i)
 		{
 			cd3Vec v = cd3Add(cd3MulMV(rotation, q->vertices[i]), rel.p);
+			if (carried != NULL)
+			{
+				carried->x[i] = v.x;
+				carried->y[i] = v.y;
+				carried->z[i] = v.z;
+			}
 #if CD3_SUPPORT_SSE
 			__m128 vx = _mm_set1_ps(v.x), vy = _mm_set1_ps(v.y), vz = _mm_set1_ps(v.z);
 			for (int f = 0; f < padded; f += 4)
@@ -291,6 +310,71 @@ static cdReal QueryFaces(const cd3Polytope* p, const cd3Polytope* q, cd3Transfor
 		}
 	}
 	return best;
+}
+
+/* Edge pruning (cd3SatPolytopesPruned). Along any axis n on an edge's arc (n = (s na + t nb) / |s na
+ * + t nb|, s, t >= 0, na and nb its faces' unit normals) the edge supports its polytope P, so an edge
+ * pair of it separates along n by at most dot(n, x - p) for any point x of the other polytope Q and p
+ * on the edge. With da and db x's distances to the two face planes (both through p), that is
+ * (s da + t db) / |s na + t nb| <= max(da, db) when both are negative (the numerator is at most
+ * (s + t) max(da, db), the length at most s + t). So an edge of P with a vertex of Q below both its
+ * faces' planes by more than -floor (floor negative) separates by less than floor in every edge pair
+ * it forms. */
+
+/* Bits i of below[f] for each face f of p: q's vertex i (`carried` into p's frame by QueryFaces)
+ * lies below the face's plane by more than -floor: dot(normal, v) - offset < floor. */
+static void FacesBelow(const cd3Polytope* p, int vertexCount, CarriedVertices* carried, cdReal floor,
+					   uint64_t* below)
+{
+#if CD3_SUPPORT_SSE
+	int padded = (vertexCount + 3) & ~3;
+	for (int i = vertexCount; i < padded; ++i)
+	{
+		/* Lanes past the count repeat vertex 0 (their bits are masked off below). */
+		carried->x[i] = carried->x[0];
+		carried->y[i] = carried->y[0];
+		carried->z[i] = carried->z[0];
+	}
+	uint64_t valid = vertexCount >= 64 ? ~(uint64_t)0 : (((uint64_t)1 << vertexCount) - 1u);
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cd3Plane plane = p->planes[f];
+		__m128 nx = _mm_set1_ps(plane.normal.x), ny = _mm_set1_ps(plane.normal.y),
+			   nz = _mm_set1_ps(plane.normal.z);
+		__m128 level = _mm_set1_ps(plane.offset + floor);
+		uint64_t bits = 0u;
+		for (int i = 0; i < padded; i += 4)
+		{
+			__m128 d = _mm_add_ps(
+				_mm_add_ps(_mm_mul_ps(nx, _mm_load_ps(carried->x + i)), _mm_mul_ps(ny, _mm_load_ps(carried->y + i))),
+				_mm_mul_ps(nz, _mm_load_ps(carried->z + i)));
+			bits |= (uint64_t)_mm_movemask_ps(_mm_cmplt_ps(d, level)) << i;
+		}
+		below[f] = bits & valid;
+	}
+#else
+	for (int f = 0; f < p->faceCount; ++f)
+	{
+		cd3Plane plane = p->planes[f];
+		cdReal level = plane.offset + floor;
+		uint64_t bits = 0u;
+		for (int i = 0; i < vertexCount; ++i)
+		{
+			cdReal d = plane.normal.x * carried->x[i] + plane.normal.y * carried->y[i] +
+					   plane.normal.z * carried->z[i];
+			bits |= (uint64_t)(d < level) << i;
+		}
+		below[f] = bits;
+	}
+#endif
+}
+
+/* Whether p's edge of half-edge i is pruned: a vertex of the other polytope lies below both its
+ * faces (FacesBelow). */
+static inline bool EdgePruned(const cd3Polytope* p, const uint64_t* below, int i)
+{
+	const cd3HullHalfEdge* e = &p->edges[i];
+	return (below[e->face] & below[p->edges[e->twin].face]) != 0u;
 }
 
 static void Project(const cd3Polytope* p, cd3Transform rel, cd3Vec axis, cdReal* lo, cdReal* hi)
@@ -551,7 +635,7 @@ size_t cd3HullQueryDataSize(int halfEdgeCount, int faceCount)
 	}
 	size_t edgePadded = (size_t)((halfEdgeCount / 2 + 3) & ~3), facePadded = (size_t)((faceCount + 3) & ~3);
 	return sizeof(cd3HullQueryData) + 3 * (edgePadded + facePadded) * sizeof(cdReal) +
-		   facePadded / 4 * 16 * sizeof(uint64_t) + edgePadded * sizeof(int32_t);
+		   facePadded / 4 * 16 * sizeof(uint64_t) + 3 * edgePadded * sizeof(int32_t);
 }
 
 void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
@@ -571,6 +655,13 @@ void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
 		{
 			unique[count++] = i;
 		}
+	}
+	int32_t* faces2 = (int32_t*)(void*)cd3HullQueryEdgeFaces(q);
+	for (int k = 0; k < count; ++k)
+	{
+		const cd3HullHalfEdge* e = &hull->edges[unique[k]];
+		faces2[2 * k] = e->face;
+		faces2[2 * k + 1] = hull->edges[e->twin].face;
 	}
 	cdReal* arcs = (cdReal*)(void*)cd3HullQueryArcs(q);
 	for (int k = 0; k < count; ++k)
@@ -592,8 +683,9 @@ void cd3BuildHullQueryData(const cd3Hull* hull, void* memory)
 					(uint64_t(*)[16])(void*)cd3HullQueryTables(q));
 }
 
-/* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c). */
-static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int* out)
+/* CrossingArcs for B's edge between its faces fc (normal c) and fd (d), dxc = cross(d, c), among
+ * A's arcs `keep` (bits). */
+static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, uint32_t keep, cd3Vec dxc, int* out)
 {
 	uint32_t up, down;
 	SideMasks(m->fx, m->fy, m->fz, m->facePadded, dxc, &up, &down);
@@ -603,7 +695,7 @@ static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, cd3Vec dxc, int
 	uint32_t cUp = m->positive[fc], cDown = m->negative[fc];
 	uint32_t dUp = m->positive[fd], dDown = m->negative[fd];
 	uint32_t pass =
-		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown));
+		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown)) & keep;
 	int n = 0;
 	while (pass != 0u)
 	{
@@ -832,13 +924,156 @@ static void FlushPairs(const cd3Polytope* a, const cd3Polytope* b, cd3Transform 
 	pending->count = 0;
 }
 
+/* At most this many edge pairs left by the pruning take QueryEdgesFew. */
+#define FEW_PAIRS 24
+
+/* The edge pairs of A's edges `keptA` and B's edges `keptB` (half-edge indices, in the order of
+ * QueryEdgesGauss, which is the test order), without the tables: the Gauss-map test of the
+ * uncached path and TestEdgePair, pair by pair (the arithmetic of the tables' path). */
+static void QueryEdgesFew(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cdReal limit,
+						  const int* keptA, int countA, const int* keptB, int countB, cd3SatResult* r,
+						  cd3Vec* bestAxis)
+{
+	EdgeData edges[FEW_PAIRS];
+	for (int k = 0; k < countA; ++k)
+	{
+		edges[k] = MakeEdgeData(a, keptA[k]);
+	}
+	for (int u = 0; u < countB; ++u)
+	{
+		int j = keptB[u];
+		const cd3HullHalfEdge* eb = &b->edges[j];
+		const cd3HullHalfEdge* twin = &b->edges[eb->twin];
+		cd3Vec qb0 = cd3TransformPoint(relB, b->vertices[eb->origin]);
+		cd3Vec qb1 = cd3TransformPoint(relB, b->vertices[twin->origin]);
+		cd3Vec c = cd3Neg(cd3RotateVector(relB.q, b->planes[eb->face].normal));
+		cd3Vec d = cd3Neg(cd3RotateVector(relB.q, b->planes[twin->face].normal));
+		cd3Vec edgeB = cd3Sub(qb1, qb0);
+		cdReal edgeB2 = cd3LengthSquared(edgeB);
+		cd3Vec dxc = cd3Cross(d, c);
+		for (int k = 0; k < countA; ++k)
+		{
+			const EdgeData* e = &edges[k];
+			cdReal cba = cd3Dot(c, e->bxa);
+			cdReal dba = cd3Dot(d, e->bxa);
+			cdReal adc = cd3Dot(e->na, dxc);
+			cdReal bdc = cd3Dot(e->nb, dxc);
+			if (cba * dba < CD_R(0.0) && adc * bdc < CD_R(0.0) && cba * bdc > CD_R(0.0))
+			{
+				TestEdgePair(a, b, relB, e, j, qb0, edgeB, edgeB2, r, bestAxis);
+			}
+		}
+		if (r->edgeSeparation > limit)
+		{
+			return;
+		}
+	}
+}
+
+/* p's edges (the hull's list, or the half-edges below their twins, as QueryEdgesGauss lists them)
+ * that the pruning keeps (EdgePruned): the first FEW_PAIRS in `kept`, in order (room for one
+ * more), and with `keep`, each edge's flag (the first EDGE_CACHE edges) and the first 32 as bits
+ * of *mask. Returns how many are kept; *all: how many there are. */
+static int KeptEdges(const cd3Polytope* p, const uint64_t* below, int* kept, bool* keep, uint32_t* mask,
+					 int* all)
+{
+	int n = 0;
+	uint32_t bits = 0u;
+	if (p->query != NULL)
+	{
+		/* The hull's edges and their faces as lists: no walk through the half-edges. */
+		const int32_t* list = cd3HullQueryEdges(p->query);
+		const int32_t* faces = cd3HullQueryEdgeFaces(p->query);
+		int count = p->query->edgeCount;
+		for (int k = 0; k < count; ++k)
+		{
+			bool kept1 = (below[faces[2 * k]] & below[faces[2 * k + 1]]) == 0u;
+			if (kept1)
+			{
+				kept[n < FEW_PAIRS ? n : FEW_PAIRS] = list[k];
+				++n;
+			}
+			bits |= (uint32_t)kept1 << (k & 31);
+			if (keep != NULL && k < EDGE_CACHE)
+			{
+				keep[k] = kept1;
+			}
+		}
+		*all = count;
+		if (count > 32)
+		{
+			bits = ~0u; /* only the masked test reads the bits, on at most 32 edges */
+		}
+	}
+	else
+	{
+		int unique = 0;
+		for (int i = 0; i < p->edgeAxisCount; ++i)
+		{
+			if (p->edges[i].twin < i)
+			{
+				continue;
+			}
+			bool kept1 = !EdgePruned(p, below, i);
+			if (kept1)
+			{
+				kept[n < FEW_PAIRS ? n : FEW_PAIRS] = i;
+				++n;
+			}
+			if (unique < 32)
+			{
+				bits |= (uint32_t)kept1 << unique;
+			}
+			if (keep != NULL && unique < EDGE_CACHE)
+			{
+				keep[unique] = kept1;
+			}
+			++unique;
+		}
+		*all = unique;
+	}
+	if (mask != NULL)
+	{
+		*mask = bits;
+	}
+	return n;
+}
+
 /* Edge pairs of two solid polytopes, pruned on the Gauss map: the arcs a-b (A's edge) and c-d
  * (B's edge, normals negated) cross exactly when the pair builds a face of the Minkowski
  * difference, whose normal is the cross of the edges oriented within A's arc. Stops early once an
- * edge pair separates by more than `limit` (the answer is then only known to exceed it). */
+ * edge pair separates by more than `limit` (the answer is then only known to exceed it). With
+ * belowA and belowB (FacesBelow of A against B and of B against A), the pruned edges are skipped,
+ * and *pruned tells whether there were any. */
 static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Transform relB, cdReal limit,
-							cd3SatResult* r, cd3Vec* bestAxis)
+							const uint64_t* belowA, const uint64_t* belowB, bool* pruned, cd3SatResult* r,
+							cd3Vec* bestAxis)
 {
+	/* The edges left by the pruning, in test order (A's as listed below). */
+	bool keepA[EDGE_CACHE];
+	uint32_t keepMaskA = ~0u;
+	if (belowA != NULL)
+	{
+		int keptA[FEW_PAIRS + 1], keptB[FEW_PAIRS + 1];
+		int allA, allB;
+		int countA = KeptEdges(a, belowA, keptA, keepA, &keepMaskA, &allA);
+		int countB = KeptEdges(b, belowB, keptB, NULL, NULL, &allB);
+		*pruned = countA < allA || countB < allB;
+		if (countA == 0 || countB == 0)
+		{
+			return; /* no edge pair left */
+		}
+		if (countA * countB <= FEW_PAIRS)
+		{
+			QueryEdgesFew(a, b, relB, limit, keptA, countA, keptB, countB, r, bestAxis);
+			return;
+		}
+	}
+	else
+	{
+		*pruned = false;
+	}
+
 	EdgeData cache[EDGE_CACHE];
 	ArcColumns arcs;
 	int crossing[EDGE_CACHE];
@@ -936,7 +1171,7 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 	{
 		int j = uniqueB != NULL ? uniqueB[u] : u;
 		const cd3HullHalfEdge* eb = &b->edges[j];
-		if (eb->twin < j)
+		if (eb->twin < j || (belowB != NULL && EdgePruned(b, belowB, j)))
 		{
 			continue;
 		}
@@ -969,11 +1204,14 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 					return;
 				}
 			}
-			int n = masked ? CrossingArcsMasked(&masks, eb->face, twin->face, dxc, crossing)
+			int n = masked ? CrossingArcsMasked(&masks, eb->face, twin->face, keepMaskA, dxc, crossing)
 						   : CrossingArcs(&arcs, cached, c, d, dxc, crossing);
 			for (int k = 0; k < n; ++k)
 			{
-				AddPendingPair(&pending, &cache[crossing[k]], crossing[k], j, qb0, edgeB, edgeB2);
+				if (belowA == NULL || keepA[crossing[k]])
+				{
+					AddPendingPair(&pending, &cache[crossing[k]], crossing[k], j, qb0, edgeB, edgeB2);
+				}
 			}
 			continue;
 		}
@@ -981,7 +1219,7 @@ static void QueryEdgesGauss(const cd3Polytope* a, const cd3Polytope* b, cd3Trans
 		{
 			for (int k = 0; k < a->edgeAxisCount; ++k)
 			{
-				if (a->edges[k].twin < k)
+				if (a->edges[k].twin < k || (belowA != NULL && EdgePruned(a, belowA, k)))
 				{
 					continue;
 				}
@@ -1180,23 +1418,31 @@ static void QueryEdgesProjected(const cd3Polytope* a, const cd3Polytope* b, cd3T
 	}
 }
 
-cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit)
+/* cd3SatPolytopesWithin, and with prune cd3SatPolytopesPruned. */
+static cd3SatResult SatPolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal limit, bool prune,
+								 cdReal slack, bool* pruned)
 {
 	cd3SatResult r;
 	cd3Transform relB = cd3InvMulTransforms(a->transform, b->transform); /* B local -> A local */
 	cd3Transform relA = cd3InvMulTransforms(b->transform, a->transform);
-	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA);
+	/* The pruning needs each polytope's vertices in the other's frame: QueryFaces keeps them. */
+	bool canPrune = prune && !a->flat && !b->flat && a->vertexCount <= PRUNE_VERTICES &&
+					b->vertexCount <= PRUNE_VERTICES && a->faceCount <= SMALL_POLYTOPE &&
+					b->faceCount <= SMALL_POLYTOPE;
+	CarriedVertices bInA, aInB; /* B's vertices in A's frame, A's in B's */
+	r.faceSeparationA = QueryFaces(a, b, relB, &r.faceA, canPrune ? &bInA : NULL);
 	r.faceSeparationB = -CD_REAL_MAX;
 	r.faceB = -1;
 	r.edgeSeparation = -CD_REAL_MAX;
 	r.edgeA = -1;
 	r.edgeB = -1;
 	r.edgeNormal = cd3MakeVec(CD_R(0.0), CD_R(0.0), CD_R(0.0));
+	*pruned = false;
 	if (r.faceSeparationA > limit)
 	{
 		return r;
 	}
-	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB);
+	r.faceSeparationB = QueryFaces(b, a, relA, &r.faceB, canPrune ? &aInB : NULL);
 	if (r.faceSeparationB > limit)
 	{
 		return r;
@@ -1206,12 +1452,36 @@ cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, c
 	{
 		QueryEdgesProjected(a, b, relB, &r, &bestAxis);
 	}
+	else if (canPrune)
+	{
+		/* The floor below every face separation that matters to the caller, less the round-off of
+		 * the plane distances (coordinates of the sizes and of the offset between the frames). */
+		cdReal best = cdMax(r.faceSeparationA, r.faceSeparationB);
+		cdReal roundOff = SUPPORT_TOLERANCE * (a->size + b->size + cd3Length(relB.p));
+		cdReal floor = cdMin(best - slack, CD_R(0.0)) - roundOff;
+		uint64_t belowA[SMALL_POLYTOPE], belowB[SMALL_POLYTOPE];
+		FacesBelow(a, b->vertexCount, &bInA, floor, belowA);
+		FacesBelow(b, a->vertexCount, &aInB, floor, belowB);
+		QueryEdgesGauss(a, b, relB, limit, belowA, belowB, pruned, &r, &bestAxis);
+	}
 	else
 	{
-		QueryEdgesGauss(a, b, relB, limit, &r, &bestAxis);
+		QueryEdgesGauss(a, b, relB, limit, NULL, NULL, pruned, &r, &bestAxis);
 	}
 	r.edgeNormal = cd3RotateVector(a->transform.q, bestAxis);
 	return r;
+}
+
+cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit)
+{
+	bool pruned;
+	return SatPolytopes(a, b, limit, false, CD_R(0.0), &pruned);
+}
+
+cd3SatResult cd3SatPolytopesPruned(const cd3Polytope* a, const cd3Polytope* b, cdReal limit, cdReal slack,
+								   bool* pruned)
+{
+	return SatPolytopes(a, b, limit, true, slack, pruned);
 }
 
 cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b)

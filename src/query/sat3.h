@@ -8,7 +8,8 @@
 /* cd3Hull.queryData: a header, then the columns (cdReal) of the unique edges' arcs cross(nb, na)
  * (x, y, z, each edgePadded entries), of the face normals (x, y, z, each facePadded entries), then
  * EdgesOfFaces' tables (facePadded / 4 of 16 uint64_t), then the unique edges' half-edge indices
- * (the half-edge below its twin, in index order; edgePadded int32_t). Padding is zero. */
+ * (the half-edge below its twin, in index order; edgePadded int32_t), then their faces (the
+ * half-edge's, then its twin's; 2 edgePadded int32_t). Padding is zero. */
 #define CD3_HULL_QUERY_EDGES 32
 #define CD3_HULL_QUERY_FACES 16
 
@@ -35,6 +36,11 @@ static inline const uint64_t (*cd3HullQueryTables(const cd3HullQueryData* q))[16
 static inline const int32_t* cd3HullQueryEdges(const cd3HullQueryData* q)
 {
 	return (const int32_t*)(const void*)(cd3HullQueryTables(q) + q->facePadded / 4);
+}
+
+static inline const int32_t* cd3HullQueryEdgeFaces(const cd3HullQueryData* q)
+{
+	return cd3HullQueryEdges(q) + q->edgePadded;
 }
 
 /* Bytes of the query data of a hull with these counts (a multiple of 16), 0 when it gets none. */
@@ -95,6 +101,16 @@ cd3SatResult cd3SatPolytopes(const cd3Polytope* a, const cd3Polytope* b);
  * then cd3SatSeparation of the result exceeds `limit` and nothing else in it is exact. Exact when
  * the separation is at most `limit`. */
 cd3SatResult cd3SatPolytopesWithin(const cd3Polytope* a, const cd3Polytope* b, cdReal limit);
+
+/* cd3SatPolytopesWithin that skips the edge pairs that cannot separate the polytopes by more than
+ * the best face axis less `slack` (nor by more than zero), when the other polytope has a vertex that
+ * far below both faces of one of their edges. The separation (cd3SatSeparation) stays exact and so
+ * does the best edge pair when it separates by more than that floor; below it, the edge pair
+ * reported may be a lesser one or none (edgeA -1). *pruned tells whether any edge was skipped: the
+ * result is then cd3SatPolytopesWithin's in every field only above the floor. Solid polytopes only
+ * (flat ones take every edge pair). */
+cd3SatResult cd3SatPolytopesPruned(const cd3Polytope* a, const cd3Polytope* b, cdReal limit, cdReal slack,
+								   bool* pruned);
 
 /* The same for two boxes, with the fifteen axes in closed form; face and half-edge indices are
  * those of cd3InitBoxPolytope. Edge axes that do not beat the best face axis are not reported
