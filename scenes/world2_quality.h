@@ -8,7 +8,8 @@
  *
  *   pyramid_20, pyramid_40, large_pyramid, many_pyramids: every apex (a box with no box resting
  *     on it at the start) moved less than 2 cm (the text gives the worst apex's x and y moves: a
- *     stack of soft contacts sinks under its own weight, a toppling one moves sideways);
+ *     tall stack of soft contacts sinks into them and is pushed back up slowly, which moves the
+ *     apex up; a toppling one moves it sideways);
  *   joint_grid: the grid does not tear: every revolute joint's anchors (the grid's neighbours,
  *     1 m apart) are less than half a link (0.5 m) apart at the end (10,000 discs hanging from 7
  *     stretch the soft joints by some 40 cm in Box2D v3 and in collide);
