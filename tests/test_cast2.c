@@ -47,6 +47,22 @@ static double RefMinimumBefore(const cd2Shape* a, const cd2Sweep* sa, const cd2S
 	return smallest;
 }
 
+/* No contact closer than the slop before `end` (sampled), and a hit at a distance inside the
+ * target band. */
+static void CheckToiAgainstReference(int i, const cd2Shape* a, const cd2Sweep* sa, const cd2Shape* b,
+									 const cd2Sweep* sb, cdToiOutput out, double end, int samples)
+{
+	double before = RefMinimumBefore(a, sa, b, sb, end, samples);
+	TEST_CHECKF(before >= SLOP - 1e-4, "case %d: distance %.9g before t = %.9g (state %d)", i, before, end,
+				(int)out.state);
+	if (out.state == CD_TOI_HIT)
+	{
+		double distance = RefDistanceAt(a, sa, b, sb, (double)out.t);
+		TEST_CHECKF(distance >= SLOP - 1e-4 && distance <= 1.25 * SLOP + 1e-4,
+					"case %d: distance %.9g at t %.9g", i, distance, (double)out.t);
+	}
+}
+
 static cd2Sweep StillSweep(void)
 {
 	cd2Sweep s;
@@ -398,16 +414,8 @@ static void TestToiRandomPairs(void)
 						(double)out.t);
 			continue;
 		}
-		double end = out.state == CD_TOI_SEPARATED ? 1.0 : (double)out.t;
-		double before = RefMinimumBefore(&a, &sa, &b, &sb, end, 64);
-		TEST_CHECKF(before >= SLOP - 1e-4, "case %d: distance %.9g before t = %.9g (state %d)", i, before,
-					end, (int)out.state);
-		if (out.state == CD_TOI_HIT)
-		{
-			double distance = RefDistanceAt(&a, &sa, &b, &sb, (double)out.t);
-			TEST_CHECKF(distance >= SLOP - 1e-4 && distance <= 1.25 * SLOP + 1e-4,
-						"case %d: distance %.9g at t %.9g", i, distance, (double)out.t);
-		}
+		CheckToiAgainstReference(i, &a, &sa, &b, &sb, out,
+								 out.state == CD_TOI_SEPARATED ? 1.0 : (double)out.t, 64);
 		cdToiOutput swapped = cd2TimeOfImpact(&b, &sb, &a, &sa, target, tolerance);
 		if (swapped.state == out.state && fabs((double)swapped.t - (double)out.t) <= 1e-4)
 		{
@@ -505,15 +513,10 @@ static void TestToiTurningApproach(void)
 		cdToiOutput out = cd2TimeOfImpact(&a, &sa, &b, &sb, target, tolerance);
 		TEST_CHECKF(out.state == CD_TOI_HIT || out.state == CD_TOI_SEPARATED, "case %d: state %d", i,
 					(int)out.state);
-		double end = out.state == CD_TOI_HIT ? (double)out.t : 1.0;
-		double before = RefMinimumBefore(&a, &sa, &b, &sb, end, 256);
-		TEST_CHECKF(before >= SLOP - 1e-4, "case %d: distance %.9g before t = %.9g (state %d)", i, before,
-					end, (int)out.state);
+		CheckToiAgainstReference(i, &a, &sa, &b, &sb, out, out.state == CD_TOI_HIT ? (double)out.t : 1.0,
+								 256);
 		if (out.state == CD_TOI_HIT)
 		{
-			double distance = RefDistanceAt(&a, &sa, &b, &sb, (double)out.t);
-			TEST_CHECKF(distance >= SLOP - 1e-4 && distance <= 1.25 * SLOP + 1e-4,
-						"case %d: distance %.9g at t %.9g", i, distance, (double)out.t);
 			++hits;
 			gjkCalls += out.iterations;
 		}
