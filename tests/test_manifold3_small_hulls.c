@@ -315,14 +315,16 @@ static void TestPrunedSatAgrees(void)
 		prunedCount += pruned;
 		TEST_CHECKF(cd3SatSeparation(&cut) == cd3SatSeparation(&full), "pair %d: separation %g, full test %g",
 					k, (double)cd3SatSeparation(&cut), (double)cd3SatSeparation(&full));
-		TEST_CHECKF(cut.faceA == full.faceA && cut.faceB == full.faceB &&
-						cut.faceSeparationA == full.faceSeparationA && cut.faceSeparationB == full.faceSeparationB,
-					"pair %d: face axes %d %d, full test %d %d", k, cut.faceA, cut.faceB, full.faceA, full.faceB);
+		TEST_CHECKF(
+			cut.faceA == full.faceA && cut.faceB == full.faceB &&
+				cut.faceSeparationA == full.faceSeparationA && cut.faceSeparationB == full.faceSeparationB,
+			"pair %d: face axes %d %d, full test %d %d", k, cut.faceA, cut.faceB, full.faceA, full.faceB);
 		cdReal floor = cdMin(cdMax(full.faceSeparationA, full.faceSeparationB) - slack, CD_R(0.0));
 		if (full.edgeA >= 0 && full.edgeSeparation >= floor)
 		{
 			TEST_CHECKF(cut.edgeA == full.edgeA && cut.edgeB == full.edgeB &&
-							cut.edgeSeparation == full.edgeSeparation && cd3VecEqual(cut.edgeNormal, full.edgeNormal),
+							cut.edgeSeparation == full.edgeSeparation &&
+							cd3VecEqual(cut.edgeNormal, full.edgeNormal),
 						"pair %d: edge pair %d-%d at %g, full test %d-%d at %g", k, cut.edgeA, cut.edgeB,
 						(double)cut.edgeSeparation, full.edgeA, full.edgeB, (double)full.edgeSeparation);
 			++edgesAbove;
@@ -330,8 +332,8 @@ static void TestPrunedSatAgrees(void)
 		}
 		else
 		{
-			TEST_CHECKF(cut.edgeSeparation <= full.edgeSeparation, "pair %d: edge pair at %g, full test %g", k,
-						(double)cut.edgeSeparation, (double)full.edgeSeparation);
+			TEST_CHECKF(cut.edgeSeparation <= full.edgeSeparation, "pair %d: edge pair at %g, full test %g",
+						k, (double)cut.edgeSeparation, (double)full.edgeSeparation);
 		}
 		TEST_CHECK(pruned || (cut.edgeA == full.edgeA && cut.edgeSeparation == full.edgeSeparation));
 		cd3DestroyHull(ha);

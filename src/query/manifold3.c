@@ -1236,7 +1236,8 @@ static cd3Manifold WitnessContact(const cd3Polytope* a, const cd3Polytope* b, co
 }
 
 MANIFOLD_NOINLINE static cd3Manifold CollidePolytopesSat(const cd3Polytope* a, const cd3Polytope* b,
-														 cd3SatResult sat, bool pruned, cdReal speculativeDistance);
+														 cd3SatResult sat, bool pruned,
+														 cdReal speculativeDistance);
 
 static cd3Manifold CollidePolytopes(const cd3Polytope* a, const cd3Polytope* b, cdReal speculativeDistance)
 {

@@ -345,9 +345,9 @@ static void FacesBelow(const cd3Polytope* p, int vertexCount, CarriedVertices* c
 		uint64_t bits = 0u;
 		for (int i = 0; i < padded; i += 4)
 		{
-			__m128 d = _mm_add_ps(
-				_mm_add_ps(_mm_mul_ps(nx, _mm_load_ps(carried->x + i)), _mm_mul_ps(ny, _mm_load_ps(carried->y + i))),
-				_mm_mul_ps(nz, _mm_load_ps(carried->z + i)));
+			__m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, _mm_load_ps(carried->x + i)),
+											 _mm_mul_ps(ny, _mm_load_ps(carried->y + i))),
+								  _mm_mul_ps(nz, _mm_load_ps(carried->z + i)));
 			bits |= (uint64_t)_mm_movemask_ps(_mm_cmplt_ps(d, level)) << i;
 		}
 		below[f] = bits & valid;
@@ -694,8 +694,8 @@ static int CrossingArcsMasked(const ArcMasks* m, int fc, int fd, uint32_t keep, 
 	uint32_t bUp = (uint32_t)(edgesUp >> 32), bDown = (uint32_t)(edgesDown >> 32);
 	uint32_t cUp = m->positive[fc], cDown = m->negative[fc];
 	uint32_t dUp = m->positive[fd], dDown = m->negative[fd];
-	uint32_t pass =
-		((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) & ((cUp & bUp) | (cDown & bDown)) & keep;
+	uint32_t pass = ((cUp & dDown) | (cDown & dUp)) & ((aUp & bDown) | (aDown & bUp)) &
+					((cUp & bUp) | (cDown & bDown)) & keep;
 	int n = 0;
 	while (pass != 0u)
 	{
