@@ -350,6 +350,8 @@ export interface JointDef2 {
   linearHertz?: number; linearDampingRatio?: number; angularHertz?: number; angularDampingRatio?: number;
   /** Joint events (getEvents().joints) when the reaction force (N) or torque (N m) exceeds it; 0 (default): none. Not for filter joints. */
   forceThreshold?: number; torqueThreshold?: number;
+  /** Distance, prismatic, revolute, weld and wheel joints: the constraints' own softness; 0 (default): the world's jointHertz / jointDampingRatio. */
+  constraintHertz?: number; constraintDampingRatio?: number;
   userData?: unknown;
 }
 
@@ -502,6 +504,9 @@ export class Joint2 {
   /** Joint event thresholds (>= 0; 0: none). */
   forceThreshold: number;
   torqueThreshold: number;
+  readonly constraintHertz: number;
+  readonly constraintDampingRatio: number;
+  setConstraintTuning(hertz: number, dampingRatio: number): void;
   readonly angle: number;
   readonly translation: number;
   readonly currentLength: number;

@@ -377,7 +377,8 @@ typedef struct cd2DistanceJointDef
 	cdReal minLength, maxLength;
 	bool enableMotor;
 	cdReal maxMotorForce, motorSpeed;
-	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2DistanceJointDef;
@@ -424,7 +425,8 @@ typedef struct cd2PrismaticJointDef
 	cdReal lowerTranslation, upperTranslation;
 	bool enableMotor;
 	cdReal maxMotorForce, motorSpeed;
-	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2PrismaticJointDef;
@@ -440,7 +442,8 @@ typedef struct cd2RevoluteJointDef
 	cdReal lowerAngle, upperAngle; /* radians, lower <= upper */
 	bool enableMotor;
 	cdReal maxMotorTorque, motorSpeed;
-	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2RevoluteJointDef;
@@ -452,7 +455,8 @@ typedef struct cd2WeldJointDef
 	cdReal referenceAngle;
 	cdReal linearHertz, angularHertz; /* 0: rigid */
 	cdReal linearDampingRatio, angularDampingRatio;
-	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2WeldJointDef;
@@ -468,7 +472,8 @@ typedef struct cd2WheelJointDef
 	cdReal lowerTranslation, upperTranslation;
 	bool enableMotor;
 	cdReal maxMotorTorque, motorSpeed;
-	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2WheelJointDef;
@@ -499,6 +504,12 @@ CD_API cd2BodyId cd2Joint_GetBodyB(cd2JointId jointId);
 /* Reaction on B of the last step (N and N*m): the joint's accumulated impulse over the step time. */
 CD_API cd2Vec cd2Joint_GetConstraintForce(cd2JointId jointId);
 CD_API cdReal cd2Joint_GetConstraintTorque(cd2JointId jointId);
+/* The softness of the joint's point, angle and length constraints (not of its springs): hertz and
+ * damping ratio >= 0, each 0 for the world's jointHertz / jointDampingRatio. Distance, prismatic,
+ * revolute, weld and wheel joints; refused for the others, which have their own tuning. */
+CD_API void cd2Joint_SetConstraintTuning(cd2JointId jointId, cdReal hertz, cdReal dampingRatio);
+CD_API cdReal cd2Joint_GetConstraintHertz(cd2JointId jointId);
+CD_API cdReal cd2Joint_GetConstraintDampingRatio(cd2JointId jointId);
 /* Thresholds of the joint events (>= 0; 0: none). Refused for a filter joint, which has no force. */
 CD_API void cd2Joint_SetForceThreshold(cd2JointId jointId, cdReal force);
 CD_API cdReal cd2Joint_GetForceThreshold(cd2JointId jointId);

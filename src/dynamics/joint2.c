@@ -168,6 +168,15 @@ static void cd2InitThresholds(cd2Joint* joint, cdReal force, cdReal torque)
 	}
 }
 
+static void cd2InitConstraintTuning(cd2Joint* joint, cdReal hertz, cdReal dampingRatio)
+{
+	if (joint != NULL)
+	{
+		joint->data.constraintHertz = hertz;
+		joint->data.constraintDampingRatio = dampingRatio;
+	}
+}
+
 /* ---- defaults ---------------------------------------------------------------------------------- */
 cd2DistanceJointDef cd2DefaultDistanceJointDef(void)
 {
@@ -253,8 +262,11 @@ cd2JointId cd2CreateDistanceJoint(cd2WorldId worldId, const cd2DistanceJointDef*
 	}
 	cd2Joint* joint = cd2CreateJointRecord(
 		worldId, def->bodyIdA, def->bodyIdB, CD2_DISTANCE_JOINT, def->collideConnected, def->userData,
-		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
 	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -356,8 +368,11 @@ cd2JointId cd2CreatePrismaticJoint(cd2WorldId worldId, const cd2PrismaticJointDe
 				 cd2NonNeg(def->maxMotorForce) && cd2Finite(def->motorSpeed);
 	cd2Joint* joint = cd2CreateJointRecord(
 		worldId, def->bodyIdA, def->bodyIdB, CD2_PRISMATIC_JOINT, def->collideConnected, def->userData,
-		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
 	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -393,8 +408,11 @@ cd2JointId cd2CreateRevoluteJoint(cd2WorldId worldId, const cd2RevoluteJointDef*
 				 cd2Finite(def->motorSpeed);
 	cd2Joint* joint = cd2CreateJointRecord(
 		worldId, def->bodyIdA, def->bodyIdB, CD2_REVOLUTE_JOINT, def->collideConnected, def->userData,
-		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
 	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -428,8 +446,11 @@ cd2JointId cd2CreateWeldJoint(cd2WorldId worldId, const cd2WeldJointDef* def)
 				 cd2NonNeg(def->angularDampingRatio);
 	cd2Joint* joint = cd2CreateJointRecord(
 		worldId, def->bodyIdA, def->bodyIdB, CD2_WELD_JOINT, def->collideConnected, def->userData,
-		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
 	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -460,8 +481,11 @@ cd2JointId cd2CreateWheelJoint(cd2WorldId worldId, const cd2WheelJointDef* def)
 				 cd2NonNeg(def->maxMotorTorque) && cd2Finite(def->motorSpeed);
 	cd2Joint* joint = cd2CreateJointRecord(
 		worldId, def->bodyIdA, def->bodyIdB, CD2_WHEEL_JOINT, def->collideConnected, def->userData,
-		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
 	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -565,6 +589,43 @@ cdReal cd2Joint_GetConstraintTorque(cd2JointId jointId)
 	cd2World* world = NULL;
 	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
 	return joint != NULL ? joint->constraintTorque : CD_R(0.0);
+}
+
+static bool cd2HasConstraintTuning(cd2JointType type)
+{
+	return type == CD2_DISTANCE_JOINT || type == CD2_PRISMATIC_JOINT || type == CD2_REVOLUTE_JOINT ||
+		   type == CD2_WELD_JOINT || type == CD2_WHEEL_JOINT;
+}
+
+void cd2Joint_SetConstraintTuning(cd2JointId jointId, cdReal hertz, cdReal dampingRatio)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (!cd2HasConstraintTuning(joint->type) || !cd2NonNeg(hertz) || !cd2NonNeg(dampingRatio))
+	{
+		CD2_REFUSE("cd2Joint_SetConstraintTuning: a motor, mouse or filter joint, or not numbers >= 0");
+		return;
+	}
+	joint->data.constraintHertz = hertz;
+	joint->data.constraintDampingRatio = dampingRatio;
+}
+
+cdReal cd2Joint_GetConstraintHertz(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->data.constraintHertz : CD_R(0.0);
+}
+
+cdReal cd2Joint_GetConstraintDampingRatio(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->data.constraintDampingRatio : CD_R(0.0);
 }
 
 void cd2Joint_SetForceThreshold(cd2JointId jointId, cdReal force)
@@ -1052,6 +1113,14 @@ void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, i
 		d->deltaAngle =
 			cd2UnwindAngle(cd2RotGetAngle(cd2InvMulRot(a->transform.q, b->transform.q)) - d->referenceAngle);
 		d->jointSoftness = context->jointSoftness;
+		if (d->constraintHertz > CD_R(0.0) || d->constraintDampingRatio > CD_R(0.0))
+		{
+			/* The joint's own tuning, capped like the world's at a quarter of the sub-step rate. */
+			cdReal hertz = d->constraintHertz > CD_R(0.0) ? d->constraintHertz : world->jointHertz;
+			cdReal ratio =
+				d->constraintDampingRatio > CD_R(0.0) ? d->constraintDampingRatio : world->jointDampingRatio;
+			d->jointSoftness = cd2MakeSoft(cdMin(hertz, CD_R(0.25) * context->inv_h), ratio, context->h);
+		}
 		if (joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT)
 		{
 			d->axisA = cd2RotateVector(a->transform.q, d->localAxisA);

@@ -188,7 +188,8 @@ typedef struct cd2JointData
 	cd2Vec localAxisA;
 	cdReal referenceAngle;
 	cdReal length, minLength, maxLength;
-	cdReal hertz, dampingRatio; /* spring */
+	cdReal hertz, dampingRatio;						/* spring */
+	cdReal constraintHertz, constraintDampingRatio; /* 0: the world's jointHertz, jointDampingRatio */
 	cdReal angularHertz, angularDampingRatio;
 	cdReal lower, upper;			  /* limit (angle or translation) */
 	cdReal motorSpeed, maxMotorForce; /* force or torque */

@@ -735,8 +735,9 @@ const J = {
   hertz: 13, dampingRatio: 14, enableLimit: 15, lower: 16, upper: 17, enableMotor: 18, maxMotor: 19,
   motorSpeed: 20, collideConnected: 21, length: 22, target: 23, maxForce: 25, maxTorque: 26,
   linearOffset: 27, angularOffset: 29, correctionFactor: 30, angularHertz: 31, angularDampingRatio: 32,
-  forceThreshold: 33, torqueThreshold: 34,
+  forceThreshold: 33, torqueThreshold: 34, constraintHertz: 35, constraintDampingRatio: 36,
 };
+const TUNED_JOINTS = ['distance', 'prismatic', 'revolute', 'weld', 'wheel'];
 
 World2.prototype.createJoint = function createJoint(def) {
   this._check('createJoint');
@@ -784,6 +785,10 @@ World2.prototype.createJoint = function createJoint(def) {
     throw new TypeError('def: a filter joint has no force, so no forceThreshold or torqueThreshold');
   }
   put('forceThreshold', J.forceThreshold, nonNeg); put('torqueThreshold', J.torqueThreshold, nonNeg);
+  if (!TUNED_JOINTS.includes(def.type) && (def.constraintHertz !== undefined || def.constraintDampingRatio !== undefined)) {
+    throw new TypeError(`def: a ${def.type} joint has no constraintHertz or constraintDampingRatio`);
+  }
+  put('constraintHertz', J.constraintHertz, nonNeg); put('constraintDampingRatio', J.constraintDampingRatio, nonNeg);
   if (f[p + J.lower] > f[p + J.upper]) throw new RangeError('def: the lower limit must not exceed the upper limit');
   const r = E().joint2Create(this._w);
   if (r === 0) throw staleError('Body2', 'createJoint');
@@ -875,6 +880,12 @@ export class Joint2 {
   /** Joint events when the reaction torque exceeds it (N m); 0: none. */
   get torqueThreshold() { return w.F32[this._get('torqueThreshold') + 12]; }
   set torqueThreshold(v) { this._set('torqueThreshold', 14, [nonNeg(v, 'torqueThreshold')]); }
+  /** The softness of the point, angle and length constraints (0: the world's jointHertz / jointDampingRatio). */
+  get constraintHertz() { return w.F32[this._get('constraintHertz') + 13]; }
+  get constraintDampingRatio() { return w.F32[this._get('constraintDampingRatio') + 14]; }
+  setConstraintTuning(hertz, dampingRatio) {
+    this._set('setConstraintTuning', 15, [nonNeg(hertz, 'hertz'), nonNeg(dampingRatio, 'dampingRatio')]);
+  }
   /** Revolute joints: angle of B relative to A minus the reference angle. */
   get angle() { if (this.type !== 'revolute') throw new TypeError(`angle does not apply to a ${this.type} joint`); return w.F32[this._get('angle') + 8]; }
   /** Prismatic and wheel joints: translation along the axis. */

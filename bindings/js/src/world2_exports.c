@@ -871,7 +871,8 @@ EXPORT("shape2Set") int cdjsShape2Set(int world0, int index1, int generation, in
  * anchorA x y, anchorB x y (body frames), axis x y, referenceAngle, enableSpring, hertz,
  * dampingRatio, enableLimit, lower, upper, enableMotor, maxMotor, motorSpeed, collideConnected,
  * length, target x y, maxForce, maxTorque, linearOffset x y, angularOffset, correctionFactor,
- * angularHertz, angularDampingRatio, forceThreshold, torqueThreshold (NaN: default). Returns index1
+ * angularHertz, angularDampingRatio, forceThreshold, torqueThreshold, constraintHertz,
+ * constraintDampingRatio (NaN: default). Returns index1
  * (IO[0] out: generation), 0 for a stale body, -1 for a bad def. */
 EXPORT("joint2Create") int cdjsJoint2Create(int world0)
 {
@@ -1055,6 +1056,10 @@ EXPORT("joint2Create") int cdjsJoint2Create(int world0)
 		cd2Joint_SetForceThreshold(id, orDefault(p[28], 0.0f));
 		cd2Joint_SetTorqueThreshold(id, orDefault(p[29], 0.0f));
 	}
+	if (p[30] == p[30] || p[31] == p[31])
+	{
+		cd2Joint_SetConstraintTuning(id, orDefault(p[30], 0.0f), orDefault(p[31], 0.0f));
+	}
 	putInt(IO, (int32_t)id.generation);
 	return id.index1;
 }
@@ -1072,7 +1077,7 @@ EXPORT("joint2Destroy") int cdjsJoint2Destroy(int world0, int index1, int genera
 
 /* IO out: type, bodyA index1, generation, bodyB index1, generation (ints), force x y, torque,
  * revolute angle, translation (prismatic, wheel), current length (distance), force threshold,
- * torque threshold. */
+ * torque threshold, constraint hertz, constraint damping ratio. */
 EXPORT("joint2Get") int cdjsJoint2Get(int world0, int index1, int generation)
 {
 	cd2JointId id;
@@ -1097,14 +1102,16 @@ EXPORT("joint2Get") int cdjsJoint2Get(int world0, int index1, int generation)
 	o[10] = type == CD2_DISTANCE_JOINT ? cd2DistanceJoint_GetCurrentLength(id) : 0.0f;
 	o[11] = cd2Joint_GetForceThreshold(id);
 	o[12] = cd2Joint_GetTorqueThreshold(id);
+	o[13] = cd2Joint_GetConstraintHertz(id);
+	o[14] = cd2Joint_GetConstraintDampingRatio(id);
 	return 1;
 }
 
 /* what: 0 motor on/off (a), 1 motor speed (a), 2 max motor (a), 3 limit on/off (a), 4 limits
  * (lower, upper), 5 spring on/off (a), 6 spring hertz (a), 7 spring damping ratio (a), 8 mouse
  * target (x, y), 9 distance length (a), 10 motor joint linear offset (x, y), 11 motor joint
- * angular offset (a), 12 wake bodies, 13 force threshold (a), 14 torque threshold (a). Returns 1, 0
- * stale, -1 wrong joint type for the call. */
+ * angular offset (a), 12 wake bodies, 13 force threshold (a), 14 torque threshold (a), 15
+ * constraint tuning (hertz, damping ratio). Returns 1, 0 stale, -1 wrong joint type for the call. */
 EXPORT("joint2Set") int cdjsJoint2Set(int world0, int index1, int generation, int what)
 {
 	cd2JointId id;
@@ -1215,6 +1222,14 @@ EXPORT("joint2Set") int cdjsJoint2Set(int world0, int index1, int generation, in
 			{
 				cd2Joint_SetTorqueThreshold(id, a[0]);
 			}
+			break;
+		case 15:
+			if (type != CD2_DISTANCE_JOINT && type != CD2_PRISMATIC_JOINT && type != CD2_REVOLUTE_JOINT &&
+				type != CD2_WELD_JOINT && type != CD2_WHEEL_JOINT)
+			{
+				return -1;
+			}
+			cd2Joint_SetConstraintTuning(id, a[0], a[1]);
 			break;
 		default:
 			return -1;

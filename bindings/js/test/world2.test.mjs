@@ -218,6 +218,28 @@ test('joint events: a breakable joint reports a pull over its threshold and brea
   world.destroy();
 });
 
+test('a joint tuned to 4 Hz sags g / (2 pi f)^2 under its load; tuning is refused where it does not apply', () => {
+  const world = new c.World2({ gravity: { x: 0, y: -10 }, enableSleep: false });
+  const pivot = world.createBody({ position: { x: 0, y: 0 } });
+  const bob = world.createBody({ type: 'dynamic', position: { x: 0, y: -1 } });
+  bob.createShape(c.circle({ x: 0, y: 0 }, 0.25));
+  const j = world.createJoint({ type: 'revolute', bodyA: pivot, bodyB: bob, localAnchorB: { x: 0, y: 1 }, constraintHertz: 4, constraintDampingRatio: 1 });
+  assert.equal(j.constraintHertz, 4);
+  assert.equal(j.constraintDampingRatio, 1);
+  for (let i = 0; i < 240; i++) world.step(DT, 4);
+  const expected = 10 / (2 * Math.PI * 4) ** 2;
+  const sag = -1 - bob.position.y;
+  assert.ok(Math.abs(sag - expected) < 0.01 * expected, `sag ${sag}, expected ${expected}`);
+  j.setConstraintTuning(0, 0);
+  for (let i = 0; i < 60; i++) world.step(DT, 4);
+  assert.ok(Math.abs(-1 - bob.position.y) < 1e-3, 'back to the world softness');
+  assert.throws(() => j.setConstraintTuning(-1, 1), RangeError);
+  assert.throws(() => world.createJoint({ type: 'motor', bodyA: pivot, bodyB: bob, constraintHertz: 5 }), TypeError);
+  const motor = world.createJoint({ type: 'motor', bodyA: pivot, bodyB: bob });
+  assert.throws(() => motor.setConstraintTuning(5, 1), { name: 'TypeError', message: /does not apply to a motor joint/ });
+  world.destroy();
+});
+
 test('ray casts and overlap queries hit the right shapes at the right places', () => {
   const { world, groundShape } = groundWorld();
   const b = world.createBody({ position: { x: 3, y: 2 } });
