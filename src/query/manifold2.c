@@ -700,8 +700,9 @@ static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal specula
 	cdReal total = a->radius + b->radius;
 	int edgeB;
 	cdReal limit = total + speculativeDistance;
-	cdReal separationB = MaxSeparation(b, a, &edgeB);
-	if (separationB > limit)
+	cdReal separationB;
+	if (!cd2MaxSeparationWithin(b->normals, b->vertices, b->count, a->vertices, a->count, limit, &edgeB,
+								&separationB))
 	{
 		return EmptyManifold();
 	}
@@ -1008,8 +1009,9 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	/* A's edges first, on B's placed vertices only: pairs apart along one of them (half of what
 	 * a broadphase reports) end here, before B's normals are placed or the cores are set up. */
 	int edgeA;
-	cdReal separationA = cd2MaxSeparation(a->normals, a->vertices, a->count, vertices, count, &edgeA);
-	if (separationA > a->radius + b->radius + speculativeDistance)
+	cdReal separationA;
+	if (!cd2MaxSeparationWithin(a->normals, a->vertices, a->count, vertices, count,
+								a->radius + b->radius + speculativeDistance, &edgeA, &separationA))
 	{
 		return EmptyManifold();
 	}
