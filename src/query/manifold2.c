@@ -318,7 +318,9 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
  * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8
  * edges, about half of them apart, the scan's single exit branch mispredicts less than the tree's branches on
  * the count and on the first four edges, and it executes fewer instructions;
- * cd2CollideCirclePolygonLocal uses it. For polygon cores. */
+ * cd2CollideCirclePolygonLocal uses it where SSE2 is not (the float build on SSE2 runs PairScanEdge
+ * instead). For polygon cores. */
+#if !CD2_SEPARATION_SSE
 static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
 											  cdReal speculativeDistance)
 {
@@ -350,6 +352,7 @@ static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdRe
 	}
 	return CenterContactOnEdge(k, center, pointRadius, speculativeDistance, edge, edgeSeparation, true);
 }
+#endif
 
 static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal pointRadius,
 											cdReal speculativeDistance, bool flip)
