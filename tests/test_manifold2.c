@@ -1267,9 +1267,9 @@ static void TestChainNoGhosts(void)
 	TEST_CHECK(cd2CollideCircleSegment(ball, twoSided, CD_R(0.0)).pointCount == 1);
 }
 
-/* The separating-axis scan (SSE2 four edges at a time in the float build, a plain loop elsewhere)
- * against the early-exit scan the manifolds used before: the same edge and the same value bit for
- * bit, for every pair of counts 1..8, with coordinates drawn from a few values in half the rounds
+/* The separating-axis scan (SSE2 four edges at a time in the float build, a plain loop elsewhere),
+ * and its form with a limit, against the early-exit scan the manifolds used before: the same edge
+ * and the same value bit for bit, for every pair of counts 1..8, with coordinates drawn from a few values in half the rounds
  * so that edges tie (the first one wins) and separations come out as zeros of either sign. */
 static void TestSeparationScan(void)
 {
@@ -1314,6 +1314,24 @@ static void TestSeparationScan(void)
 			plainEdge == expectedEdge && memcmp(&plain, &expected, sizeof plain) == 0,
 			"round %d (%d edges, %d points): plain scan edge %d separation %.9g, expected edge %d %.9g",
 			round, count, otherCount, plainEdge, (double)plain, expectedEdge, (double)expected);
+		/* The form with a limit: beyond it exactly when the separation exceeds the limit, else the
+		 * same edge and value; limits just below, at and just above the separation (and zero, at
+		 * which the coarse rounds' zeros of either sign sit). */
+		cdReal limits[4] = {expected, expected - CD_R(0.125), expected + CD_R(0.125), CD_R(0.0)};
+		for (int k = 0; k < 4; ++k)
+		{
+			int withinEdge = -1;
+			cdReal separation = CD_R(7.0);
+			bool within = cd2MaxSeparationWithin(normals, vertices, count, others, otherCount, limits[k],
+												 &withinEdge, &separation);
+			bool expectWithin = !(expected > limits[k]);
+			TEST_CHECKF(within == expectWithin && (!within || (withinEdge == expectedEdge &&
+																memcmp(&separation, &expected, sizeof separation) == 0)),
+						"round %d (%d edges, %d points), limit %.9g: within %d edge %d separation %.9g, "
+						"expected within %d edge %d %.9g",
+						round, count, otherCount, (double)limits[k], within, withinEdge, (double)separation,
+						expectWithin, expectedEdge, (double)expected);
+		}
 	}
 }
 

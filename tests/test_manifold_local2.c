@@ -307,7 +307,8 @@ static void TestFarFromOrigin(void)
 }
 
 /* cd2CollideCirclePolygonLocal has its own scan of the polygon's edges (it stops at the first edge
- * the circle is beyond): its manifold must be, bit for bit, the world form's on the circle's centre
+ * the circle is beyond; two edges to a vector and the contact in vector lanes in the float build on
+ * SSE2): its manifold must be, bit for bit, the world form's on the circle's centre
  * placed in the polygon's frame as the local form places it (cd2InvTransformPoint), mapped back by
  * xfB. Centres aimed at every feature: near and exactly on vertices, on edges, inside (ties between
  * equal edges included, with the identity transform so that the centre lands exactly), and far

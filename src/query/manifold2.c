@@ -318,7 +318,9 @@ static inline CenterContact CoreCenterContact(const Core* k, cd2Vec center, cdRe
  * first; a NaN centre gives edge 0 at -CD_REAL_MAX, as there). On the 2D world's mix of polygons of 3 to 8
  * edges, about half of them apart, the scan's single exit branch mispredicts less than the tree's branches on
  * the count and on the first four edges, and it executes fewer instructions;
- * cd2CollideCirclePolygonLocal uses it. For polygon cores. */
+ * cd2CollideCirclePolygonLocal uses it where SSE2 is not (the float build on SSE2 runs PairScanEdge
+ * instead). For polygon cores. */
+#if !CD2_SEPARATION_SSE
 static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdReal pointRadius,
 											  cdReal speculativeDistance)
 {
@@ -350,6 +352,7 @@ static inline CenterContact ScanCenterContact(const Core* k, cd2Vec center, cdRe
 	}
 	return CenterContactOnEdge(k, center, pointRadius, speculativeDistance, edge, edgeSeparation, true);
 }
+#endif
 
 static inline cd2Manifold CollideCoreCenter(const Core* k, cd2Vec center, cdReal pointRadius,
 											cdReal speculativeDistance, bool flip)
@@ -700,8 +703,9 @@ static cd2Manifold CollideCoresFrom(const Core* a, const Core* b, cdReal specula
 	cdReal total = a->radius + b->radius;
 	int edgeB;
 	cdReal limit = total + speculativeDistance;
-	cdReal separationB = MaxSeparation(b, a, &edgeB);
-	if (separationB > limit)
+	cdReal separationB;
+	if (!cd2MaxSeparationWithin(b->normals, b->vertices, b->count, a->vertices, a->count, limit, &edgeB,
+								&separationB))
 	{
 		return EmptyManifold();
 	}
@@ -1008,8 +1012,9 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	/* A's edges first, on B's placed vertices only: pairs apart along one of them (half of what
 	 * a broadphase reports) end here, before B's normals are placed or the cores are set up. */
 	int edgeA;
-	cdReal separationA = cd2MaxSeparation(a->normals, a->vertices, a->count, vertices, count, &edgeA);
-	if (separationA > a->radius + b->radius + speculativeDistance)
+	cdReal separationA;
+	if (!cd2MaxSeparationWithin(a->normals, a->vertices, a->count, vertices, count,
+								a->radius + b->radius + speculativeDistance, &edgeA, &separationA))
 	{
 		return EmptyManifold();
 	}
@@ -1044,6 +1049,73 @@ static inline __m128 RotateLanes(__m128 cosine, __m128 sine, __m128 v)
 }
 #endif
 
+#if CD2_SEPARATION_SSE
+/* ScanCenterContact's edge for a centre given as (x, y, x, y) in the float build on SSE2, two edges to
+ * a vector: false when the centre is beyond the limit along some edge (no contact), else the first
+ * edge of the largest separation and that separation, bit for bit as the scan on finite input.
+ * Edges i and i + 1 (vertices and normals adjacent in memory) take one subtraction, one product
+ * and one swap-and-add, each lane pair holding cd2Dot(normal, centre - vertex) in cd2Dot's order
+ * (the swapped lane adds the same two products the other way round: the same value, since addition
+ * commutes exactly). Either edge beyond the limit means no contact, as the scan's early exit: the
+ * largest separation is then beyond it too. The first edge of the largest separation is kept by
+ * the scan's branches. An odd last edge is loaded alone (the arrays hold CD2_MAX_POLYGON_VERTICES
+ * entries, but those past the count are not the polygon's). */
+static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limitValue, int* edgeOut,
+								cdReal* separationOut)
+{
+	int count = b->count;
+	CD_ASSERT(count >= 3 && count <= CD2_MAX_POLYGON_VERTICES);
+	__m128 limit = _mm_set1_ps(limitValue);
+	int edge = 0;
+	cdReal edgeSeparation = -CD_REAL_MAX;
+	int i = 0;
+	for (; i + 2 <= count; i += 2)
+	{
+		__m128 d = _mm_sub_ps(centre, _mm_loadu_ps(&b->vertices[i].x));
+		__m128 p = _mm_mul_ps(_mm_loadu_ps(&b->normals[i].x), d);
+		__m128 sep = _mm_add_ps(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 3, 0, 1)));
+		if (_mm_movemask_ps(_mm_cmpgt_ps(sep, limit)) != 0)
+		{
+			return false;
+		}
+		cdReal s0 = _mm_cvtss_f32(sep);
+		cdReal s1 = _mm_cvtss_f32(_mm_movehl_ps(sep, sep));
+		if (s0 > edgeSeparation)
+		{
+			edge = i;
+			edgeSeparation = s0;
+			KEEP_BRANCH();
+		}
+		if (s1 > edgeSeparation)
+		{
+			edge = i + 1;
+			edgeSeparation = s1;
+			KEEP_BRANCH();
+		}
+	}
+	if (i < count)
+	{
+		__m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[i]);
+		__m128 n = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[i]);
+		__m128 p = _mm_mul_ps(n, _mm_sub_ps(centre, v));
+		cdReal s0 = _mm_cvtss_f32(_mm_add_ps(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 3, 0, 1))));
+		if (s0 > limitValue)
+		{
+			return false;
+		}
+		if (s0 > edgeSeparation)
+		{
+			edge = i;
+			edgeSeparation = s0;
+			KEEP_BRANCH();
+		}
+	}
+	*edgeOut = edge;
+	*separationOut = edgeSeparation;
+	return true;
+}
+#endif
+
 /* The circle's centre into the polygon's frame, the manifold built there and mapped back in
  * place (a manifold returned by one call and copied by the next waited on store forwarding). */
 cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
@@ -1054,20 +1126,95 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	 * rotation on the way to the first edge test, whose branch every pair waits on (building the
 	 * inverse transform first and placing the centre by it adds work before that branch). */
 #if CD2_SEPARATION_SSE
-	/* In the float build on SSE2 on the argument registers' pairs as they arrive (centre, xfB.p
-	 * and xfB.q two floats each), and the contact mapped back the same way. */
+	/* In the float build on SSE2 the whole contact in vector lanes, from the argument registers'
+	 * pairs as they arrive (centre, xfB.p and xfB.q two floats each) to the stored normal and
+	 * point: CenterContactOnEdge's steps on a polygon core and the mapping back, the same values
+	 * bit for bit (each lane computes its scalar expression in the same order), without moving
+	 * scalars between registers and vectors on the way (on collide_bench_scenes' circle-polygon
+	 * row those moves and a spill of the tangent cost more than the arithmetic). */
 	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
 	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
 	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
 	__m128 origin = PairLanes(xfB.p);
 	__m128 inverseSine = _mm_xor_ps(sine, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); /* (s, -s) */
 	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(a.center), origin));
-	cd2Vec center = cd2MakeVec(_mm_cvtss_f32(placed),
-							   _mm_cvtss_f32(_mm_shuffle_ps(placed, placed, _MM_SHUFFLE(1, 1, 1, 1))));
+	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
+	cd2Manifold m;
+	cdReal total = b->radius + a.radius;
+	int edge;
+	cdReal edgeSeparation;
+	bool hit = PairScanEdge(b, centre, total + speculativeDistance, &edge, &edgeSeparation);
+	__m128 mapped = _mm_setzero_ps();
+	cdReal separation = CD_R(0.0);
+	uint32_t id = 0u;
+	if (hit)
+	{
+		int next = edge + 1 < b->count ? edge + 1 : 0;
+		/* (v1, v2): the edge's vertices; the normal in lanes 0 and 1. */
+		__m128 ends =
+			_mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[edge]),
+						 (const __m64*)(const void*)&b->vertices[next]);
+		__m128 normal = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[edge]);
+		cdReal coreSeparation = edgeSeparation;
+		id = (uint32_t)edge;
+		if (edgeSeparation > CD_R(0.0))
+		{
+			/* (centre - v1, centre - v2), and along the tangent cd2LeftPerp(normal) = (-ny, nx):
+			 * cd2Dot(tangent, centre - v1) in lane 0, cd2Dot(tangent, v2 - v1) in lane 2. */
+			__m128 offsets = _mm_sub_ps(centre, ends);
+			__m128 edgeVector = _mm_sub_ps(ends, _mm_movelh_ps(ends, ends)); /* lanes 2, 3: v2 - v1 */
+			__m128 tangent = _mm_xor_ps(_mm_shuffle_ps(normal, normal, _MM_SHUFFLE(0, 1, 0, 1)),
+										_mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f));
+			__m128 products =
+				_mm_mul_ps(tangent, _mm_shuffle_ps(offsets, edgeVector, _MM_SHUFFLE(3, 2, 1, 0)));
+			__m128 dots = _mm_add_ps(products, _mm_shuffle_ps(products, products, _MM_SHUFFLE(2, 3, 0, 1)));
+			cdReal along = _mm_cvtss_f32(dots);
+			cdReal extent = _mm_cvtss_f32(_mm_movehl_ps(dots, dots));
+			int vertex = along <= CD_R(0.0) ? edge : along >= extent ? next : -1;
+			if (vertex >= 0)
+			{
+				/* LengthNoErrno and cd2Scale(1 / distance, offset), as CenterContactOnEdge. */
+				__m128 offset = vertex == edge ? offsets : _mm_movehl_ps(offsets, offsets);
+				__m128 squares = _mm_mul_ps(offset, offset);
+				cdReal distance = _mm_cvtss_f32(_mm_sqrt_ss(
+					_mm_add_ss(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(1, 1, 1, 1)))));
+				if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
+				{
+					normal = _mm_mul_ps(_mm_set1_ps(CD_R(1.0) / distance), offset);
+					coreSeparation = distance;
+					id = VERTEX_FEATURE | (uint32_t)vertex;
+				}
+			}
+		}
+		separation = coreSeparation - total;
+		hit = !(separation > speculativeDistance);
+		/* The point centre + 0.5 * (polygon radius - circle radius - core separation) * normal;
+		 * then the normal (negated: from the circle to the polygon) rotated and the point rotated
+		 * and moved, in one vector: cd2RotateVector(q, cd2Neg(normal)) and
+		 * cd2TransformPoint(xfB, point). */
+		__m128 point = _mm_add_ps(
+			centre, _mm_mul_ps(_mm_set1_ps(CD_R(0.5) * (b->radius - a.radius - coreSeparation)), normal));
+		__m128 pair = _mm_movelh_ps(_mm_xor_ps(normal, _mm_set1_ps(-0.0f)), point);
+		__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
+		mapped = RotateLanes(cosine, forwardSine, pair);
+		/* Plus -0 in the normal's lanes: x + -0 is x for every x, signed zeros included. */
+		mapped = _mm_add_ps(mapped, _mm_movelh_ps(_mm_set1_ps(-0.0f), origin));
+	}
+	/* One exit, the manifold written once: with a return per case GCC built it on the stack and
+	 * copied it out, and the copy's wide loads of narrow stores waited on store forwarding. */
+	m = EmptyManifold();
+	if (hit)
+	{
+		/* The normal and the first point are adjacent (checked below the function). */
+		_mm_storeu_ps(&m.normal.x, mapped);
+		m.points[0].separation = separation;
+		m.points[0].id = id;
+		m.pointCount = 1;
+	}
+	return m;
 #else
 	cd2Rot q = xfB.q;
 	cd2Vec center = cd2InvRotateVector(q, cd2Sub(a.center, xfB.p));
-#endif
 	cd2Manifold m;
 	Core coreB;
 	InitPolygonCore(&coreB, b);
@@ -1075,29 +1222,14 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	m = EmptyManifold();
 	if (contact.hit)
 	{
-#if CD2_SEPARATION_SSE
-		/* Normal (negated: from the circle to the polygon) rotated, point rotated and moved, in
-		 * one vector: cd2RotateVector(q, cd2Neg(normal)) and cd2TransformPoint(xfB, point). */
-		__m128 normal =
-			_mm_xor_ps(_mm_unpacklo_ps(_mm_set1_ps(contact.normal.x), _mm_set1_ps(contact.normal.y)),
-					   _mm_set1_ps(-0.0f));
-		__m128 pair = _mm_movelh_ps(
-			normal, _mm_unpacklo_ps(_mm_set1_ps(contact.point.x), _mm_set1_ps(contact.point.y)));
-		__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
-		__m128 mapped = RotateLanes(cosine, forwardSine, pair);
-		/* Plus -0 in the normal's lanes: x + -0 is x for every x, signed zeros included. */
-		mapped = _mm_add_ps(mapped, _mm_movelh_ps(_mm_set1_ps(-0.0f), origin));
-		/* The normal and the first point are adjacent (checked below the function). */
-		_mm_storeu_ps(&m.normal.x, mapped);
-#else
 		m.normal = cd2RotateVector(q, cd2Neg(contact.normal));
 		m.points[0].point = cd2TransformPoint(xfB, contact.point);
-#endif
 		m.points[0].separation = contact.separation;
 		m.points[0].id = contact.id;
 		m.pointCount = 1;
 	}
 	return m;
+#endif
 }
 
 #if CD2_SEPARATION_SSE

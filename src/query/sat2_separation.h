@@ -198,4 +198,64 @@ static inline cdReal cd2MaxSeparation(const cd2Vec* normals, const cd2Vec* verti
 #endif
 }
 
+/* cd2MaxSeparation for a caller that stops when the separation exceeds `limit`: false when it
+ * does (then *edge and *separation are not set), else true with the same edge and separation as
+ * cd2MaxSeparation. The SSE form tests the maximum as soon as the lanes are reduced, before the
+ * lookup of its first lane: that exit is the branch a broadphase's mix of pairs (about half of them
+ * apart) mispredicts, and it no longer waits on the lookup (on finite input the maximum and the
+ * value of its first lane are the same number, so the test is the same). */
+static inline bool cd2MaxSeparationWithin(const cd2Vec* normals, const cd2Vec* vertices, int count,
+										  const cd2Vec* others, int otherCount, cdReal limit, int* edge,
+										  cdReal* separation)
+{
+#if CD2_SEPARATION_SSE
+	CD_ASSERT(count >= 1 && count <= CD2_MAX_POLYGON_VERTICES && otherCount >= 1);
+	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+	__m128 nx, ny, vx, vy;
+	cd2SeparationLoad4(normals, 0, i1, i2, i3, &nx, &ny);
+	cd2SeparationLoad4(vertices, 0, i1, i2, i3, &vx, &vy);
+	__m128 low = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
+	__m128 high = low;
+	if (count > 4)
+	{
+		int i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
+		cd2SeparationLoad4(normals, 4, i5, i6, i7, &nx, &ny);
+		cd2SeparationLoad4(vertices, 4, i5, i6, i7, &vx, &vy);
+		high = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
+	}
+	__m128 top = _mm_max_ps(low, high);
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(1, 0, 3, 2)));
+	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
+	if (_mm_cvtss_f32(top) > limit)
+	{
+		return false;
+	}
+	int lanes = _mm_movemask_ps(_mm_cmpeq_ps(low, top)) | _mm_movemask_ps(_mm_cmpeq_ps(high, top)) << 4;
+	static const int8_t FIRST_LANE_WITHIN[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	int first = (lanes & 15) != 0 ? FIRST_LANE_WITHIN[lanes & 15] : 4 + FIRST_LANE_WITHIN[lanes >> 4];
+	float values[8];
+	_mm_storeu_ps(values, low);
+	_mm_storeu_ps(values + 4, high);
+	cdReal best = values[first];
+	if (!(best > -CD_REAL_MAX))
+	{
+		first = 0;
+		best = -CD_REAL_MAX;
+	}
+	/* Non-finite lanes can make the first lane's value differ from the maximum: the test as
+	 * cd2MaxSeparation's caller makes it. */
+	if (best > limit)
+	{
+		return false;
+	}
+	*edge = first;
+	*separation = best;
+	return true;
+#else
+	cdReal best = cd2MaxSeparation(normals, vertices, count, others, otherCount, edge);
+	*separation = best;
+	return !(best > limit);
+#endif
+}
+
 #endif
