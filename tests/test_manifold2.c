@@ -1269,8 +1269,8 @@ static void TestChainNoGhosts(void)
 
 /* The separating-axis scan (SSE2 four edges at a time in the float build, a plain loop elsewhere),
  * and its form with a limit, against the early-exit scan the manifolds used before: the same edge
- * and the same value bit for bit, for every pair of counts 1..8, with coordinates drawn from a few values in half the rounds
- * so that edges tie (the first one wins) and separations come out as zeros of either sign. */
+ * and the same value bit for bit, for every pair of counts 1..8, with coordinates drawn from a few values in
+ * half the rounds so that edges tie (the first one wins) and separations come out as zeros of either sign. */
 static void TestSeparationScan(void)
 {
 	TestRng rng = {0x5e9a7u};
@@ -1325,8 +1325,9 @@ static void TestSeparationScan(void)
 			bool within = cd2MaxSeparationWithin(normals, vertices, count, others, otherCount, limits[k],
 												 &withinEdge, &separation);
 			bool expectWithin = !(expected > limits[k]);
-			TEST_CHECKF(within == expectWithin && (!within || (withinEdge == expectedEdge &&
-																memcmp(&separation, &expected, sizeof separation) == 0)),
+			TEST_CHECKF(within == expectWithin &&
+							(!within || (withinEdge == expectedEdge &&
+										 memcmp(&separation, &expected, sizeof separation) == 0)),
 						"round %d (%d edges, %d points), limit %.9g: within %d edge %d separation %.9g, "
 						"expected within %d edge %d %.9g",
 						round, count, otherCount, (double)limits[k], within, withinEdge, (double)separation,
