@@ -53,7 +53,9 @@ static cdReal DrawValue(TestRng* rng)
 	{
 		return (cdReal)TestRngRange(rng, -2.0, 2.0);
 	}
-	double magnitude = pow(10.0, TestRngRange(rng, -30.0, 30.0));
+	static const double scales[] = {1e-30, 1e-20, 1e-10, 1e-3, 1.0, 1e3, 1e10, 1e20, 1e30};
+	double magnitude =
+		TestRngRange(rng, 1.0, 10.0) * scales[TestRngInt(rng, (int)(sizeof(scales) / sizeof(scales[0])))];
 	return (cdReal)(TestRngInt(rng, 2) == 0 ? magnitude : -magnitude);
 }
 
