@@ -29,6 +29,12 @@ collide_missing_packages() {
 		# ODE's trimesh: the mesh-ray column of collide_bench_scenes (bench/scenes).
 		dpkg -s libode-dev >/dev/null 2>&1 || missing+=(libode-dev)
 	fi
+	# scripts/test-aarch64.sh (the test_aarch64_qemu CTest of the float suite): the aarch64 cross
+	# compiler and qemu's user-mode emulator.
+	if [ "${1:-}" = "aarch64" ] || [ "${1:-}" = "tests" ]; then
+		command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu libc6-dev-arm64-cross)
+		command -v qemu-aarch64 >/dev/null 2>&1 || missing+=(qemu-user)
+	fi
 	echo "${missing[@]:-}"
 }
 

@@ -26,7 +26,7 @@ run_suite() {
 	ctest --test-dir "$build" -j"$jobs" --output-on-failure --timeout 600
 }
 
-run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_BUILD_JS_TESTS=ON
+run_suite float -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_BUILD_JS_TESTS=ON -DCOLLIDE_TEST_AARCH64=ON
 run_suite double -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_DOUBLE=ON -DCOLLIDE_BENCH_BOX2D_V3=OFF
 # ThreadSanitizer (clang, Debug): only the 2D world's threads test (the built-in pool and a user
 # task system with 2 and 4 workers), about 45 s to build and run.

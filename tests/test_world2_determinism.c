@@ -1,10 +1,12 @@
 /* The 2D world's determinism: a falling pile (a pyramid of boxes dropped from a height, with
  * circles and capsules raining on it) is stepped for 3 s and every body's state (position,
  * rotation, velocities) is hashed bit for bit. The hash must be the same on every run, for every
- * worker count, and equal to the one committed below for the build (float or double on x86-64,
- * where the SSE2 solver and its scalar fallback, -DCOLLIDE_NO_SIMD, give the same bits; other
- * machines check the first two only). A change of the solver that changes results on purpose
- * updates the committed hashes, with the reason in its commit. */
+ * worker count, and equal to the one committed below for the build (float or double on x86-64 and
+ * aarch64, where the SSE2, AVX2 (-DCOLLIDE_AVX2=ON, eight lanes) and NEON solvers and the scalar
+ * fallback of four or eight lanes, -DCOLLIDE_NO_SIMD, all give the same bits: the lane width does
+ * not change a lane's arithmetic; scripts/test-aarch64.sh runs it under qemu; other machines check
+ * the first two only). A change of the solver that changes results on purpose updates the
+ * committed hashes, with the reason in its commit. */
 #include "test.h"
 
 #include <collide/collide.h>
@@ -288,7 +290,7 @@ static void TestSameBitsEveryRunAndWorkerCount(void)
 			}
 		}
 	}
-#if defined(__x86_64__) || defined(_M_X64)
+#if defined(__x86_64__) || defined(_M_X64) || defined(__aarch64__)
 #if CD_DOUBLE
 	const uint64_t committed = UINT64_C(0x1c54b8b0ae80cee3);
 #else

@@ -30,7 +30,77 @@ typedef struct cd2BodyLanes
 static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const int* index)
 {
 	cd2BodyLanes out;
-#if CD_WIDE_SSE
+#if CD_WIDE_AVX2
+	/* Rows of four reals: body i in the low half, body i + 4 in the high half, then the four-by-four
+	 * transpose of SSE2 in each half (column k: real k of bodies 0..3 | of bodies 4..7). */
+	const float* b[8];
+	for (int i = 0; i < 8; ++i)
+	{
+		b[i] = (const float*)(bodies + index[i]);
+	}
+	for (int half = 0; half < 2; ++half)
+	{
+		int o = 4 * half;
+		__m256 r0 = _mm256_set_m128(_mm_loadu_ps(b[4] + o), _mm_loadu_ps(b[0] + o));
+		__m256 r1 = _mm256_set_m128(_mm_loadu_ps(b[5] + o), _mm_loadu_ps(b[1] + o));
+		__m256 r2 = _mm256_set_m128(_mm_loadu_ps(b[6] + o), _mm_loadu_ps(b[2] + o));
+		__m256 r3 = _mm256_set_m128(_mm_loadu_ps(b[7] + o), _mm_loadu_ps(b[3] + o));
+		__m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
+		__m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
+		__m256 c0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+		__m256 c1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+		__m256 c2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+		__m256 c3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+		if (half == 0)
+		{
+			out.vx = c0;
+			out.vy = c1;
+			out.w = c2;
+			out.dpx = c3;
+		}
+		else
+		{
+			out.dpy = c0;
+			out.qc = c1;
+			out.qs = c2;
+		}
+	}
+#elif CD_WIDE_NEON
+	const float* b0 = (const float*)(bodies + index[0]);
+	const float* b1 = (const float*)(bodies + index[1]);
+	const float* b2 = (const float*)(bodies + index[2]);
+	const float* b3 = (const float*)(bodies + index[3]);
+	for (int half = 0; half < 2; ++half)
+	{
+		/* Rows r0..r3 are reals 4 * half .. 4 * half + 3 of the four bodies; transposed, column k
+		 * holds real 4 * half + k of every lane. */
+		float32x4_t r0 = vld1q_f32(b0 + 4 * half), r1 = vld1q_f32(b1 + 4 * half);
+		float32x4_t r2 = vld1q_f32(b2 + 4 * half), r3 = vld1q_f32(b3 + 4 * half);
+		float32x4_t t0 = vzip1q_f32(r0, r1), t1 = vzip2q_f32(r0, r1);
+		float32x4_t t2 = vzip1q_f32(r2, r3), t3 = vzip2q_f32(r2, r3);
+		float32x4_t c0 =
+			vreinterpretq_f32_f64(vzip1q_f64(vreinterpretq_f64_f32(t0), vreinterpretq_f64_f32(t2)));
+		float32x4_t c1 =
+			vreinterpretq_f32_f64(vzip2q_f64(vreinterpretq_f64_f32(t0), vreinterpretq_f64_f32(t2)));
+		float32x4_t c2 =
+			vreinterpretq_f32_f64(vzip1q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
+		float32x4_t c3 =
+			vreinterpretq_f32_f64(vzip2q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
+		if (half == 0)
+		{
+			out.vx = c0;
+			out.vy = c1;
+			out.w = c2;
+			out.dpx = c3;
+		}
+		else
+		{
+			out.dpy = c0;
+			out.qc = c1;
+			out.qs = c2;
+		}
+	}
+#elif CD_WIDE_SSE
 	const float* b0 = (const float*)(bodies + index[0]);
 	const float* b1 = (const float*)(bodies + index[1]);
 	const float* b2 = (const float*)(bodies + index[2]);
@@ -97,7 +167,44 @@ static inline cd2BodyLanes cd2GatherBodies(const cd2SolverBody* bodies, const in
 static inline void cd2ScatterVelocities(cd2SolverBody* bodies, const int* index, const unsigned char* moves,
 										cdW vx, cdW vy, cdW w, cdW dpx)
 {
-#if CD_WIDE_SSE
+#if CD_WIDE_AVX2
+	/* Back to rows (vx, vy, w, dpx) in each half: row k holds body k in its low half and body k + 4
+	 * in its high half (dpx as gathered, unchanged). */
+	__m256 t0 = _mm256_unpacklo_ps(vx, vy), t1 = _mm256_unpackhi_ps(vx, vy);
+	__m256 t2 = _mm256_unpacklo_ps(w, dpx), t3 = _mm256_unpackhi_ps(w, dpx);
+	__m256 rows[4];
+	rows[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+	rows[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+	rows[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+	rows[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+	for (int k = 0; k < 4; ++k)
+	{
+		if (moves[k] != 0)
+		{
+			_mm_storeu_ps((float*)(bodies + index[k]), _mm256_castps256_ps128(rows[k]));
+		}
+		if (moves[k + 4] != 0)
+		{
+			_mm_storeu_ps((float*)(bodies + index[k + 4]), _mm256_extractf128_ps(rows[k], 1));
+		}
+	}
+#elif CD_WIDE_NEON
+	/* Back to rows (vx, vy, w, dpx) of each body, one store each (dpx as gathered, unchanged). */
+	float32x4_t t0 = vzip1q_f32(vx, vy), t1 = vzip2q_f32(vx, vy);
+	float32x4_t t2 = vzip1q_f32(w, dpx), t3 = vzip2q_f32(w, dpx);
+	float32x4_t rows[4];
+	rows[0] = vreinterpretq_f32_f64(vzip1q_f64(vreinterpretq_f64_f32(t0), vreinterpretq_f64_f32(t2)));
+	rows[1] = vreinterpretq_f32_f64(vzip2q_f64(vreinterpretq_f64_f32(t0), vreinterpretq_f64_f32(t2)));
+	rows[2] = vreinterpretq_f32_f64(vzip1q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
+	rows[3] = vreinterpretq_f32_f64(vzip2q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
+	for (int k = 0; k < 4; ++k)
+	{
+		if (moves[k] != 0)
+		{
+			vst1q_f32((float*)(bodies + index[k]), rows[k]);
+		}
+	}
+#elif CD_WIDE_SSE
 	/* Back to rows (vx, vy, w, dpx) of each body, one store each (dpx as gathered, unchanged). */
 	_MM_TRANSPOSE4_PS(vx, vy, w, dpx);
 	if (moves[0] != 0)

@@ -2,7 +2,7 @@
  * sub-stepped soft step (integrate velocities, warm start, solve with bias, integrate positions,
  * relax without bias; restitution last), then finalize (transforms, bounds, continuous collision,
  * hit and move events, sleep). The contacts are sorted by graph colour; the coloured ones are solved
- * four at a time (contact_solver_wide2.c), the overflow colour and the joints one by one.
+ * CD_W at a time (contact_solver_wide2.c), the overflow colour and the joints one by one.
  *
  * Scheduling: everything from listing the awake bodies and the touching contacts to finalizing the
  * bodies is two fixed lists of stages, each an index range (chunks of bodies or contacts, bodies,
