@@ -355,7 +355,7 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		cd2RunTask(world, cd2RebuildTreeTask, jobCount, 1, minParallel, world->broadPhase);
 	}
 	cd2BroadPhase_EndRebuild(world->broadPhase);
-	CD2_TIMER_MARK(3, "tree rebuild");
+	CD2_PROFILE_MARK(world, rebuildTree);
 	int itemCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
 	if (itemCount == 0)
 	{
@@ -388,7 +388,6 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		return;
 	}
 	cd2RunTask(world, cd2FindPairsTask, itemCount, 64, CD2_PARALLEL_MIN_PAIR_ITEMS, &search);
-	CD2_TIMER_MARK(4, "pair search");
 	/* The ranges that overflowed, again on this thread, with room doubled until they fit. */
 	bool anyFailed = memchr(search.failed, 1, (size_t)itemCount) != NULL;
 	cd2PairBuffer retry = {NULL, 0, 0, {0}};
@@ -933,7 +932,6 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 	ctx.entries = (cd2ContactSolveEntry*)cdArena_AllocUncleared(&world->arena,
 																(size_t)count * sizeof(cd2ContactSolveEntry));
 	cd2RunTask(world, cd2UpdateContactsTask, count, 64, CD2_PARALLEL_MIN_CONTACTS, &ctx);
-	CD2_TIMER_MARK(1, "narrow");
 
 	/* (Contacts destroyed below only free their slot: count and the indices stay valid.) */
 	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count;
@@ -946,5 +944,4 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		}
 	}
 	world->stepSolveEntries = ctx.entries;
-	CD2_TIMER_MARK(2, "contact merge");
 }

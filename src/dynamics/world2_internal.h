@@ -9,35 +9,19 @@
 #include "../base/graph_color.h"
 #include "wide2.h"
 
-/* Profiling, off unless the library is built with -DCD2_STEP_TIMERS: the stepping thread's wall time
- * per part of the step, summed over the steps into cd2StepTimers[i] (seconds, named by
- * cd2StepTimerNames[i]; a program declares both extern and reads them). The parts "narrow",
- * "pair search", "tree rebuild", "setup stages" and "stages" run on the workers; the others are
- * serial. */
-#ifdef CD2_STEP_TIMERS
-#include <time.h>
-extern double cd2StepTimers[16];
-extern const char* cd2StepTimerNames[16];
-extern double cd2TimerLast_;
-static inline double cd2TimerNow(void)
-{
-	struct timespec t;
-	timespec_get(&t, TIME_UTC);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-#define CD2_TIMER_BEGIN (cd2TimerLast_ = cd2TimerNow())
-#define CD2_TIMER_MARK(i, name)                                                                              \
+/* The step's profile (cd2World_GetProfile): while world->profiling is on, the wall time since the
+ * last mark is added to world->profile.field (ms). */
+double cd2ProfileNow(void); /* seconds */
+#define CD2_PROFILE_MARK(world, field)                                                                       \
 	do                                                                                                       \
 	{                                                                                                        \
-		double cd2TimerT_ = cd2TimerNow();                                                                   \
-		cd2StepTimers[i] += cd2TimerT_ - cd2TimerLast_;                                                      \
-		cd2StepTimerNames[i] = name;                                                                         \
-		cd2TimerLast_ = cd2TimerT_;                                                                          \
+		if ((world)->profiling)                                                                              \
+		{                                                                                                    \
+			double cd2ProfileT_ = cd2ProfileNow();                                                           \
+			(world)->profile.field += (float)(1000.0 * (cd2ProfileT_ - (world)->profileMark));              \
+			(world)->profileMark = cd2ProfileT_;                                                             \
+		}                                                                                                    \
 	} while (0)
-#else
-#define CD2_TIMER_BEGIN ((void)0)
-#define CD2_TIMER_MARK(i, name) ((void)0)
-#endif
 
 #define CD2_NULL_INDEX (-1)
 
@@ -492,6 +476,10 @@ typedef struct cd2World
 	/* The solver's last colourings (solver2.c). */
 	cd2ColorCache contactColorCache;
 	cd2ColorCache jointColorCache;
+	/* cd2World_GetProfile: the last step's, and the time of the last mark (seconds). */
+	bool profiling;
+	cd2Profile profile;
+	double profileMark;
 } cd2World;
 
 /* ---- world2.c -------------------------------------------------------------------------------- */
