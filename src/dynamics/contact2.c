@@ -527,9 +527,9 @@ static cd2Manifold cd2WorldManifold(const cd2Contact* contact)
 	m.pointCount = contact->pointCount;
 	for (int i = 0; i < contact->pointCount; ++i)
 	{
-		m.points[i].point = contact->points[i].point;
+		m.points[i].point = contact->cache[i].point;
 		m.points[i].separation = contact->points[i].separation;
-		m.points[i].id = contact->points[i].id;
+		m.points[i].id = contact->cache[i].id;
 	}
 	return m;
 }
@@ -633,14 +633,15 @@ static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const 
 	for (int k = 0; k < contact->pointCount; ++k)
 	{
 		cd2ContactPoint* cp = contact->points + k;
+		cd2ContactPointCache* cc = contact->cache + k;
 		/* The stored point as carried by A and by B, from the centres (no large coordinates). */
-		cd2Vec rA = cd2RotateVector(xfA.q, cd2Sub(cp->localPointA, bodyA->localCenter));
-		cd2Vec rB = cd2RotateVector(xfB.q, cd2Sub(cp->localPointB, bodyB->localCenter));
+		cd2Vec rA = cd2RotateVector(xfA.q, cd2Sub(cc->localPointA, bodyA->localCenter));
+		cd2Vec rB = cd2RotateVector(xfB.q, cd2Sub(cc->localPointB, bodyB->localCenter));
 		cd2Vec d = cd2Add(dc, cd2Sub(rB, rA));
-		cp->separation = cp->baseSeparation + cd2Dot(d, n);
+		cp->separation = cc->baseSeparation + cd2Dot(d, n);
 		cp->anchorA = cd2MulAdd(rA, CD_R(0.5), d);
 		cp->anchorB = cd2MulSub(rB, CD_R(0.5), d);
-		cp->point = cd2Add(bodyA->center, cp->anchorA);
+		cc->point = cd2Add(bodyA->center, cp->anchorA);
 	}
 	return true;
 }
@@ -653,6 +654,7 @@ static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA,
 	cd2Manifold m = cd2ContactCollide(shapeA, shapeB, xfAB, speculative);
 	cd2Transform xfA = bodyA->transform;
 	cd2ContactPoint old[2];
+	uint32_t oldId[2] = {contact->cache[0].id, contact->cache[1].id};
 	int oldCount = contact->pointCount;
 	memcpy(old, contact->points, sizeof(old));
 	contact->pointCount = m.pointCount;
@@ -664,19 +666,21 @@ static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA,
 	for (int k = 0; k < m.pointCount; ++k)
 	{
 		cd2ContactPoint* cp = contact->points + k;
+		cd2ContactPointCache* cc = contact->cache + k;
 		memset(cp, 0, sizeof(*cp));
-		cp->point = cd2TransformPoint(xfA, m.points[k].point);
-		cp->anchorA = cd2Sub(cp->point, bodyA->center);
-		cp->anchorB = cd2Sub(cp->point, bodyB->center);
+		memset(cc, 0, sizeof(*cc));
+		cc->point = cd2TransformPoint(xfA, m.points[k].point);
+		cp->anchorA = cd2Sub(cc->point, bodyA->center);
+		cp->anchorB = cd2Sub(cc->point, bodyB->center);
 		cp->separation = m.points[k].separation;
-		cp->id = m.points[k].id;
-		cp->localPointA = m.points[k].point;
-		cp->localPointB = cd2InvTransformPoint(xfAB, m.points[k].point);
-		cp->baseSeparation = m.points[k].separation;
+		cc->id = m.points[k].id;
+		cc->localPointA = m.points[k].point;
+		cc->localPointB = cd2InvTransformPoint(xfAB, m.points[k].point);
+		cc->baseSeparation = m.points[k].separation;
 		/* Warm starting: the same features keep their impulses. */
 		for (int j = 0; j < oldCount; ++j)
 		{
-			if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
+			if (cd2WarmStartKey(oldId[j]) == cd2WarmStartKey(cc->id))
 			{
 				cp->normalImpulse = old[j].normalImpulse;
 				cp->tangentImpulse = old[j].tangentImpulse;

@@ -1006,11 +1006,11 @@ static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 		bool hit = false;
 		for (int k = 0; k < contact->pointCount; ++k)
 		{
-			cdReal approach = -contact->points[k].relativeVelocity;
+			cdReal approach = -contact->cache[k].relativeVelocity;
 			if (approach > event.approachSpeed && contact->points[k].maxNormalImpulse > CD_R(0.0))
 			{
 				event.approachSpeed = approach;
-				event.point = contact->points[k].point;
+				event.point = contact->cache[k].point;
 				hit = true;
 			}
 		}
@@ -1230,6 +1230,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	{
 		hitCandidates += setup.contactChunkHits[c];
 	}
+	context.storeApproach = hitCandidates > 0;
 	bool ok = true;
 	if (!cd2PrepareContactsWide(world, &context))
 	{

@@ -5,6 +5,8 @@
 
 #include "collide/world2.h"
 
+#include <stddef.h>
+
 #include "../base/container.h"
 #include "../base/graph_color.h"
 #include "wide2.h"
@@ -104,19 +106,26 @@ typedef struct cd2ChainRec
 } cd2ChainRec;
 
 /* ---- contacts -------------------------------------------------------------------------------- */
+/* A contact point as the solver reads and writes it (the prepare and the store): kept apart from the
+ * narrowphase's data below so that a contact's solver fields share few cache lines. */
 typedef struct cd2ContactPoint
 {
 	cd2Vec anchorA, anchorB; /* from the centres of mass to the point, world orientation */
-	cd2Vec point;			 /* world, at the last update */
 	cdReal separation;
-	uint32_t id;
 	cdReal normalImpulse, tangentImpulse, maxNormalImpulse;
+} cd2ContactPoint;
+
+/* The rest of a contact point: its world point and feature id, the approach speed for hit events,
+ * and for recycling (see cd2UpdateContacts) the point in A's and in B's body frame and its
+ * separation when the narrowphase last ran. */
+typedef struct cd2ContactPointCache
+{
+	cd2Vec point; /* world, at the last update */
+	uint32_t id;
 	cdReal relativeVelocity; /* normal approach speed at the start of the step (negative: closing) */
-	/* Recycling (see cd2UpdateContacts): the point in A's and in B's body frame and its separation
-	 * when the narrowphase last ran. */
 	cd2Vec localPointA, localPointB;
 	cdReal baseSeparation;
-} cd2ContactPoint;
+} cd2ContactPointCache;
 
 enum
 {
@@ -132,23 +141,46 @@ enum
 	CD2_CONTACT_SIM_UPDATED = 1 << 8
 };
 
+/* A contact record is CD2_CONTACT_BYTES long, a multiple of 64, and starts with the fields the
+ * solver's prepare and store read and write: in the float build they are 96 bytes, so in an array
+ * aligned to 32 bytes (cdAlloc) they always lie in two cache lines. The solver visits the records
+ * colour by colour, far apart; fewer lines per record is most of its prepare's time. */
+#if CD_DOUBLE
+#define CD2_CONTACT_BYTES 448
+#else
+#define CD2_CONTACT_BYTES 256
+#endif
+
 typedef struct cd2Contact
 {
-	bool inUse;
-	uint32_t flags;
-	int shapeA, shapeB, bodyA, bodyB;
-	int prevKey[2], nextKey[2]; /* edges in bodyA's (0) and bodyB's (1) lists */
-	cd2Vec normal;				/* world, from A to B */
-	int pointCount;
-	cd2ContactPoint points[2];
-	cdReal rollingImpulse;
-	cdReal friction, restitution, rollingResistance, tangentSpeed;
-	/* Recycling: the normal in A's body frame, B's body frame in A's and the speculative distance
-	 * when the narrowphase last ran. */
-	cd2Vec localNormal;
-	cd2Transform cachedPose;
-	cdReal cachedSpeculative;
+	union
+	{
+		struct
+		{
+			/* What the solver reads and writes, together. */
+			cd2Vec normal; /* world, from A to B */
+			int pointCount;
+			cdReal rollingImpulse;
+			cdReal friction, restitution, rollingResistance, tangentSpeed;
+			cd2ContactPoint points[2];
+			/* The rest. */
+			cd2ContactPointCache cache[2]; /* of points[k] */
+			bool inUse;
+			uint32_t flags;
+			int shapeA, shapeB, bodyA, bodyB;
+			int prevKey[2], nextKey[2]; /* edges in bodyA's (0) and bodyB's (1) lists */
+			/* Recycling: the normal in A's body frame, B's body frame in A's and the speculative
+			 * distance when the narrowphase last ran. */
+			cd2Vec localNormal;
+			cd2Transform cachedPose;
+			cdReal cachedSpeculative;
+		};
+		unsigned char bytes[CD2_CONTACT_BYTES];
+	};
 } cd2Contact;
+
+_Static_assert(sizeof(cd2Contact) == CD2_CONTACT_BYTES, "cd2Contact: the fields outgrew CD2_CONTACT_BYTES");
+_Static_assert(CD_DOUBLE || offsetof(cd2Contact, cache) == 96, "cd2Contact: the solver's fields must be 96 bytes");
 
 /* ---- joints ---------------------------------------------------------------------------------- */
 typedef struct cd2Softness
@@ -368,6 +400,9 @@ typedef struct cd2StepContext
 	/* The slots of `joints` in joint index order (memory order), for the prepare stage. */
 	int* jointIndexOrder;
 	bool enableWarmStarting;
+	/* Some touching contact has hit events: the store writes the points' approach speeds (only hit
+	 * events read them; without any the store leaves that line of the records alone). */
+	bool storeApproach;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
 	/* The step's move events, one per solver body, written by index (NULL: out of memory). */
