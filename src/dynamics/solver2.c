@@ -398,7 +398,10 @@ static void cd2CountBodies(cd2World* world, cd2SolveSetup* setup, int startChunk
 			uint8_t kind = 0;
 			if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
 			{
-				body->solverIndex = CD2_NULL_INDEX;
+				if (body->solverIndex != CD2_NULL_INDEX) /* (most are already: no write) */
+				{
+					body->solverIndex = CD2_NULL_INDEX;
+				}
 			}
 			else
 			{

@@ -43,8 +43,10 @@ double cd2ProfileNow(void); /* seconds */
 typedef struct cd2Body
 {
 	uint32_t generation;
-	bool inUse;
+	/* What the step's setup reads and writes of every body, in its first cache line. */
+	bool inUse, awake, enabled;
 	cd2BodyType type;
+	int solverIndex; /* in the step's dense awake arrays, or CD2_NULL_INDEX */
 	cd2Transform transform; /* of the body origin */
 	cd2Vec center;			/* world centre of mass */
 	cd2Vec center0;			/* at the start of the step (continuous collision) */
@@ -57,13 +59,12 @@ typedef struct cd2Body
 	cdReal mass, invMass, inertia, invInertia;
 	cdReal linearDamping, angularDamping, gravityScale, sleepThreshold, sleepTime;
 	cdReal minExtent, maxExtent; /* of the shapes about the centre of mass */
-	bool enableSleep, awake, fixedRotation, isBullet, enabled, customMass, isFast;
+	bool enableSleep, fixedRotation, isBullet, customMass, isFast;
 	int headShape, shapeCount;
 	int headContactKey; /* contact edge key: contactIndex << 1 | side */
 	int headJointKey;
 	int islandId; /* sleeping island, or CD2_NULL_INDEX */
 	int islandNext;
-	int solverIndex; /* in the step's dense awake arrays, or CD2_NULL_INDEX */
 	void* userData;
 } cd2Body;
 
