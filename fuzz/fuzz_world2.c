@@ -172,6 +172,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 							jd.enableLimit = true;
 							jd.lowerAngle = -CD_R(1.0);
 							jd.upperAngle = CD_R(1.0);
+							jd.forceThreshold = CD_R(50.0); /* breaks on its joint event (step) */
 							joints[j] = cd2CreateRevoluteJoint(world, &jd);
 							break;
 						}
@@ -311,8 +312,26 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 				}
 				break;
 			default:
+			{
 				cd2World_Step(world, CD_R(1.0) / CD_R(60.0), 1 + FuzzByte(&r) % 4);
+				/* Joint events name live joints over their threshold, with finite reactions; the
+				 * joint breaks (is destroyed) on its event. */
+				cd2JointEvents je = cd2World_GetJointEvents(world);
+				for (int e = 0; e < je.count; ++e)
+				{
+					const cd2JointEvent* event = je.jointEvents + e;
+					cdReal force = cd2Length(event->force);
+					if (!cd2Joint_IsValid(event->jointId) || !cdIsValidReal(force) ||
+						!cdIsValidReal(event->torque) ||
+						!(force > cd2Joint_GetForceThreshold(event->jointId)))
+					{
+						FuzzFail("world2-events: joint event %d of %d: stale or not over the threshold", e,
+								 je.count);
+					}
+					cd2DestroyJoint(event->jointId);
+				}
 				break;
+			}
 		}
 		if (s_refusals - before != expected)
 		{

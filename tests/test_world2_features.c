@@ -172,6 +172,204 @@ static void TestJointReaction(void)
 	cd2DestroyWorld(world);
 }
 
+static int g_thresholdRefusals = 0;
+
+static bool CountThresholdRefusal(const char* condition, const char* fileName, int lineNumber)
+{
+	(void)condition;
+	(void)fileName;
+	(void)lineNumber;
+	++g_thresholdRefusals;
+	return false;
+}
+
+/* Joint events: a ball hanging from a revolute joint with a force threshold of twice its weight
+ * raises none while it hangs, one per step while a push drives the reaction over the threshold, and
+ * the joint destroyed on its event (a breakable joint) lets the ball fall. A weld joint holding a
+ * beam out from a wall reports its torque against a torque threshold below it, and none above. */
+static void TestJointEvents(void)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.enableSleep = false;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2BodyId bob = MakeBall(world, cd2MakeVec(CD_R(0.0), CD_R(-1.0)), CD_R(0.25), false);
+	cdReal weight = cd2Body_GetMass(bob) * CD_R(10.0);
+	cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+	TEST_CHECK(jd.forceThreshold == CD_R(0.0) && jd.torqueThreshold == CD_R(0.0));
+	jd.bodyIdA = ground;
+	jd.bodyIdB = bob;
+	jd.localAnchorB = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	jd.forceThreshold = CD_R(2.0) * weight;
+	jd.userData = &g_thresholdRefusals;
+	cd2JointId joint = cd2CreateRevoluteJoint(world, &jd);
+	TEST_CHECK(cd2Joint_GetForceThreshold(joint) == CD_R(2.0) * weight);
+	int quietEvents = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		quietEvents += cd2World_GetJointEvents(world).count;
+	}
+	TEST_CHECK(quietEvents == 0);
+	/* A downward push of 5 weights for one step: the joint holds the ball against it. */
+	cd2Body_ApplyForceToCenter(bob, cd2MakeVec(CD_R(0.0), -CD_R(5.0) * weight), true);
+	cd2World_Step(world, DT, 4);
+	cd2JointEvents events = cd2World_GetJointEvents(world);
+	TEST_CHECK(events.count == 1);
+	bool broke = false;
+	for (int i = 0; i < events.count; ++i)
+	{
+		const cd2JointEvent* e = events.jointEvents + i;
+		TEST_CHECK(e->jointId.index1 == joint.index1 && e->jointId.generation == joint.generation);
+		TEST_CHECK(e->userData == &g_thresholdRefusals);
+		TEST_CHECKF(cd2Length(e->force) > CD_R(2.0) * weight, "force %g, weight %g",
+					(double)cd2Length(e->force), (double)weight);
+		TEST_CHECK(e->force.x == cd2Joint_GetConstraintForce(joint).x &&
+				   e->force.y == cd2Joint_GetConstraintForce(joint).y);
+		cd2DestroyJoint(e->jointId);
+		broke = true;
+	}
+	TEST_CHECK(broke && !cd2Joint_IsValid(joint));
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetJointEvents(world).count == 0);
+	cdReal y0 = cd2Body_GetPosition(bob).y;
+	for (int i = 0; i < 30; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	TEST_CHECKF(cd2Body_GetPosition(bob).y < y0 - CD_R(1.0), "fell from %g to %g", (double)y0,
+				(double)cd2Body_GetPosition(bob).y);
+
+	/* A 2 m beam (1 kg/m^2, 0.2 m thick) welded to the ground at its end: torque m g L / 2. */
+	cd2BodyDef beamDef = cd2DefaultBodyDef();
+	beamDef.type = CD_DYNAMIC_BODY;
+	beamDef.position = cd2MakeVec(CD_R(1.0), CD_R(5.0));
+	cd2BodyId beam = cd2CreateBody(world, &beamDef);
+	cd2ShapeDef sd = cd2DefaultShapeDef();
+	cd2Polygon box;
+	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(1.0), CD_R(0.1)}, {CD_R(1.0), CD_R(0.0)}}, &box);
+	cd2CreatePolygonShape(beam, &sd, &box);
+	cdReal torque = cd2Body_GetMass(beam) * CD_R(10.0) * CD_R(1.0);
+	cd2WeldJointDef wj = cd2DefaultWeldJointDef();
+	wj.bodyIdA = ground;
+	wj.bodyIdB = beam;
+	wj.localAnchorA = cd2MakeVec(CD_R(0.0), CD_R(5.0));
+	wj.localAnchorB = cd2MakeVec(-CD_R(1.0), CD_R(0.0));
+	wj.torqueThreshold = CD_R(0.9) * torque;
+	cd2JointId weld = cd2CreateWeldJoint(world, &wj);
+	int beamEvents = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+		events = cd2World_GetJointEvents(world);
+		beamEvents += events.count;
+		if (i == 59)
+		{
+			TEST_CHECK(events.count == 1);
+			TEST_CHECKF(events.count == 1 &&
+							cdAbs(cdAbs(events.jointEvents[0].torque) - torque) < CD_R(0.02) * torque,
+						"torque %g, expected %g",
+						events.count == 1 ? (double)events.jointEvents[0].torque : 0.0, (double)torque);
+		}
+	}
+	TEST_CHECK(beamEvents == 60);
+	cd2Joint_SetTorqueThreshold(weld, CD_R(1.1) * torque);
+	TEST_CHECK(cd2Joint_GetTorqueThreshold(weld) == CD_R(1.1) * torque);
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetJointEvents(world).count == 0);
+	cd2Joint_SetTorqueThreshold(weld, CD_R(0.0));
+	cd2Joint_SetForceThreshold(weld, CD_R(0.5) * cd2Body_GetMass(beam) * CD_R(10.0));
+	cd2World_Step(world, DT, 4);
+	TEST_CHECK(cd2World_GetJointEvents(world).count == 1);
+
+	/* Bad thresholds are refused and change nothing; a filter joint has none. */
+	cdSetAssertFcn(CountThresholdRefusal);
+	g_thresholdRefusals = 0;
+	cdReal before = cd2Joint_GetForceThreshold(weld);
+	cd2Joint_SetForceThreshold(weld, -CD_R(1.0));
+	cd2Joint_SetTorqueThreshold(weld, CD_R(0.0) / CD_R(0.0));
+	TEST_CHECK(g_thresholdRefusals == 2 && cd2Joint_GetForceThreshold(weld) == before &&
+			   cd2Joint_GetTorqueThreshold(weld) == CD_R(0.0));
+	wj.torqueThreshold = -CD_R(1.0);
+	TEST_CHECK(!cd2Joint_IsValid(cd2CreateWeldJoint(world, &wj)));
+	cd2FilterJointDef fj = cd2DefaultFilterJointDef();
+	fj.bodyIdA = ground;
+	fj.bodyIdB = beam;
+	cd2JointId filter = cd2CreateFilterJoint(world, &fj);
+	cd2Joint_SetForceThreshold(filter, CD_R(1.0));
+	TEST_CHECK(g_thresholdRefusals == 4 && cd2Joint_GetForceThreshold(filter) == CD_R(0.0));
+	cdSetAssertFcn(NULL);
+	cd2DestroyWorld(world);
+}
+
+/* A joint's own constraint softness: a ball hanging from a revolute joint tuned to 4 Hz (critically
+ * damped) settles g / (2 pi f)^2 = 1.58 cm below its anchor, the sag of a spring of that frequency
+ * (the soft step's steady state); the same joint with the world's softness (60 Hz) sags by under a
+ * millimetre. */
+static cdReal HangingSag(cdReal hertz, cdReal dampingRatio)
+{
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	wd.enableSleep = false;
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2BodyId bob = MakeBall(world, cd2MakeVec(CD_R(0.0), -CD_R(1.0)), CD_R(0.25), false);
+	cd2RevoluteJointDef jd = cd2DefaultRevoluteJointDef();
+	jd.bodyIdA = ground;
+	jd.bodyIdB = bob;
+	jd.localAnchorB = cd2MakeVec(CD_R(0.0), CD_R(1.0));
+	jd.constraintHertz = hertz;
+	jd.constraintDampingRatio = dampingRatio;
+	cd2JointId joint = cd2CreateRevoluteJoint(world, &jd);
+	TEST_CHECK(cd2Joint_GetConstraintHertz(joint) == hertz &&
+			   cd2Joint_GetConstraintDampingRatio(joint) == dampingRatio);
+	for (int i = 0; i < 240; ++i)
+	{
+		cd2World_Step(world, DT, 4);
+	}
+	cdReal sag = -CD_R(1.0) - cd2Body_GetPosition(bob).y;
+	cd2DestroyWorld(world);
+	return sag;
+}
+
+static void TestJointConstraintTuning(void)
+{
+	cdReal soft = HangingSag(CD_R(4.0), CD_R(1.0));
+	cdReal expected = CD_R(10.0) / ((CD_R(2.0) * CD_PI * CD_R(4.0)) * (CD_R(2.0) * CD_PI * CD_R(4.0)));
+	TEST_CHECKF(cdAbs(soft - expected) < CD_R(0.01) * expected, "sag %g, expected %g", (double)soft,
+				(double)expected);
+	cdReal rigid = HangingSag(CD_R(0.0), CD_R(0.0));
+	TEST_CHECKF(cdAbs(rigid) < CD_R(1e-3), "sag with the world's softness %g", (double)rigid);
+
+	/* Tuning is refused for a motor joint and for bad numbers; the joint keeps its own. */
+	cdSetAssertFcn(CountThresholdRefusal);
+	g_thresholdRefusals = 0;
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId ground = cd2CreateBody(world, &bd);
+	cd2BodyId ball = MakeBall(world, CD2_VEC_ZERO, CD_R(0.3), false);
+	cd2WeldJointDef wj = cd2DefaultWeldJointDef();
+	wj.bodyIdA = ground;
+	wj.bodyIdB = ball;
+	cd2JointId weld = cd2CreateWeldJoint(world, &wj);
+	cd2Joint_SetConstraintTuning(weld, CD_R(10.0), CD_R(0.5));
+	TEST_CHECK(cd2Joint_GetConstraintHertz(weld) == CD_R(10.0) &&
+			   cd2Joint_GetConstraintDampingRatio(weld) == CD_R(0.5));
+	cd2Joint_SetConstraintTuning(weld, -CD_R(1.0), CD_R(0.5));
+	cd2Joint_SetConstraintTuning(weld, CD_R(1.0), CD_R(0.0) / CD_R(0.0));
+	cd2MotorJointDef mj = cd2DefaultMotorJointDef();
+	mj.bodyIdA = ground;
+	mj.bodyIdB = ball;
+	cd2Joint_SetConstraintTuning(cd2CreateMotorJoint(world, &mj), CD_R(10.0), CD_R(1.0));
+	wj.constraintHertz = -CD_R(2.0);
+	TEST_CHECK(!cd2Joint_IsValid(cd2CreateWeldJoint(world, &wj)));
+	TEST_CHECK(g_thresholdRefusals == 4 && cd2Joint_GetConstraintHertz(weld) == CD_R(10.0));
+	cdSetAssertFcn(NULL);
+	cd2DestroyWorld(world);
+}
+
 static void TestJointKinds(void)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
@@ -1735,6 +1933,8 @@ int main(void)
 	TEST_RUN(TestPendulumEnergy);
 	TEST_RUN(TestRevoluteChainEnergy);
 	TEST_RUN(TestJointReaction);
+	TEST_RUN(TestJointEvents);
+	TEST_RUN(TestJointConstraintTuning);
 	TEST_RUN(TestJointKinds);
 	TEST_RUN(TestJointSetters);
 	TEST_RUN(TestFilterJointAndFilters);

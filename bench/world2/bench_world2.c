@@ -301,7 +301,7 @@ static void printProfile(const char* sceneName, const Result* results)
 		"step", "pairs (new pairs, new contacts)", "tree rebuild", "collide (manifolds, touch changes)",
 		"solve", "  solver setup", "  prepare constraints", "  integrate velocities", "  warm start",
 		"  solve impulses", "  integrate positions", "  relax impulses", "  restitution", "  store impulses",
-		"  finalize bodies (v3 transforms)", "  refit, bullets", "  hit events", "  sleep (v3: and split islands)",
+		"  finalize bodies (v3 transforms)", "  refit, bullets", "  events (hit, joint)", "  sleep (v3: and split islands)",
 		"  solve other", "sensors"};
 	int columns[2 * ENGINE_COUNT][2];
 	int columnCount = 0;

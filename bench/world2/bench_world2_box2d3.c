@@ -210,9 +210,9 @@ static void box2d3EnableProfile(void* world)
 	(void)world; /* always on in Box2D v3 */
 }
 
-/* b2Profile lined up with collide's rows: the tree rebuild runs inside v3's solve (a task next to
- * the solver), so it is in "solve other"; "store" includes v3's joint events; events are v3's hit
- * and sensor hit events; sleep is v3's sleep islands and split islands. */
+/* b2Profile lined up with collide's rows: v3 times no tree rebuild of its own (its rebuild is part
+ * of another row); events are v3's hit, sensor hit and joint events; sleep is v3's sleep islands
+ * and split islands. */
 static void box2d3Profile(void* world, double* rows)
 {
 	b2Profile p = b2World_GetProfile(((Box2d3World*)world)->id);
@@ -232,11 +232,10 @@ static void box2d3Profile(void* world, double* rows)
 	 * task) goes to store. */
 	double named = (double)p.prepareConstraints + p.integrateVelocities + p.warmStart + p.solveImpulses +
 				   p.integratePositions + p.relaxImpulses + p.applyRestitution + p.storeImpulses;
-	rows[W2P_STORE] = p.storeImpulses + ((double)p.constraints > named ? (double)p.constraints - named : 0.0) +
-					  p.jointEvents;
+	rows[W2P_STORE] = p.storeImpulses + ((double)p.constraints > named ? (double)p.constraints - named : 0.0);
 	rows[W2P_FINALIZE] = p.transforms;
 	rows[W2P_REFIT] = (double)p.refit + p.bullets;
-	rows[W2P_EVENTS] = (double)p.hitEvents + p.sensorHits;
+	rows[W2P_EVENTS] = (double)p.hitEvents + p.sensorHits + p.jointEvents;
 	rows[W2P_SLEEP] = (double)p.sleepIslands + p.splitIslands;
 	rows[W2P_SENSORS] = p.sensors;
 }

@@ -83,7 +83,7 @@ static void collideProfile(void* world, double* rows)
 	rows[W2P_STORE] = p.storeImpulses;
 	rows[W2P_FINALIZE] = p.finalize;
 	rows[W2P_REFIT] = p.refit;
-	rows[W2P_EVENTS] = p.hitEvents;
+	rows[W2P_EVENTS] = (double)p.hitEvents + p.jointEvents;
 	rows[W2P_SLEEP] = p.sleepIslands;
 	rows[W2P_SENSORS] = p.sensors;
 }

@@ -348,6 +348,10 @@ export interface JointDef2 {
   collideConnected?: boolean; target?: Vec2; maxForce?: number; maxTorque?: number;
   linearOffset?: Vec2; angularOffset?: number; correctionFactor?: number;
   linearHertz?: number; linearDampingRatio?: number; angularHertz?: number; angularDampingRatio?: number;
+  /** Joint events (getEvents().joints) when the reaction force (N) or torque (N m) exceeds it; 0 (default): none. Not for filter joints. */
+  forceThreshold?: number; torqueThreshold?: number;
+  /** Distance, prismatic, revolute, weld and wheel joints: the constraints' own softness; 0 (default): the world's jointHertz / jointDampingRatio. */
+  constraintHertz?: number; constraintDampingRatio?: number;
   userData?: unknown;
 }
 
@@ -364,6 +368,8 @@ export interface WorldEvents2 {
   sensorBegin: { sensor: BodyShape2 | null; visitor: BodyShape2 | null }[];
   sensorEnd: { sensor: BodyShape2 | null; visitor: BodyShape2 | null }[];
   moves: { body: Body2 | null; x: number; y: number; cos: number; sin: number; fellAsleep: boolean }[];
+  /** Joints whose reaction exceeded their forceThreshold or torqueThreshold in the last step (destroy one to break it). */
+  joints: { joint: Joint2 | null; force: Vec2; torque: number }[];
 }
 export interface WorldHit2 { shape: BodyShape2 | null; point: Vec2; normal: Vec2; fraction: number }
 
@@ -495,6 +501,12 @@ export class Joint2 {
   destroy(): void;
   readonly constraintForce: Vec2;
   readonly constraintTorque: number;
+  /** Joint event thresholds (>= 0; 0: none). */
+  forceThreshold: number;
+  torqueThreshold: number;
+  readonly constraintHertz: number;
+  readonly constraintDampingRatio: number;
+  setConstraintTuning(hertz: number, dampingRatio: number): void;
   readonly angle: number;
   readonly translation: number;
   readonly currentLength: number;

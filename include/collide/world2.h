@@ -187,6 +187,7 @@ typedef struct cd2Profile
 	float applyRestitution;
 	float storeImpulses;  /* impulses back into the contacts and joints */
 	float finalize;		  /* transforms, sleep times, tight boxes of each body */
+	float jointEvents;	  /* joints over their force or torque threshold */
 	float refit;		  /* kinematic wakes, bullets, broadphase moves */
 	float hitEvents;
 	float sleepIslands;
@@ -408,6 +409,8 @@ typedef struct cd2DistanceJointDef
 	cdReal minLength, maxLength;
 	bool enableMotor;
 	cdReal maxMotorForce, motorSpeed;
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2DistanceJointDef;
@@ -425,7 +428,8 @@ typedef struct cd2MotorJointDef
 	cd2Vec linearOffset; /* of B's origin in A's frame */
 	cdReal angularOffset;
 	cdReal maxForce, maxTorque;
-	cdReal correctionFactor; /* 0..1, default 0.3 */
+	cdReal correctionFactor;				/* 0..1, default 0.3 */
+	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2MotorJointDef;
@@ -436,6 +440,7 @@ typedef struct cd2MouseJointDef
 	cd2BodyId bodyIdA, bodyIdB;
 	cd2Vec target; /* world; the anchor on B is the target at creation */
 	cdReal hertz, dampingRatio, maxForce;
+	cdReal forceThreshold, torqueThreshold; /* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2MouseJointDef;
@@ -452,6 +457,8 @@ typedef struct cd2PrismaticJointDef
 	cdReal lowerTranslation, upperTranslation;
 	bool enableMotor;
 	cdReal maxMotorForce, motorSpeed;
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2PrismaticJointDef;
@@ -467,6 +474,8 @@ typedef struct cd2RevoluteJointDef
 	cdReal lowerAngle, upperAngle; /* radians, lower <= upper */
 	bool enableMotor;
 	cdReal maxMotorTorque, motorSpeed;
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2RevoluteJointDef;
@@ -478,6 +487,8 @@ typedef struct cd2WeldJointDef
 	cdReal referenceAngle;
 	cdReal linearHertz, angularHertz; /* 0: rigid */
 	cdReal linearDampingRatio, angularDampingRatio;
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2WeldJointDef;
@@ -493,6 +504,8 @@ typedef struct cd2WheelJointDef
 	cdReal lowerTranslation, upperTranslation;
 	bool enableMotor;
 	cdReal maxMotorTorque, motorSpeed;
+	cdReal constraintHertz, constraintDampingRatio; /* own softness; 0: the world's (jointHertz...) */
+	cdReal forceThreshold, torqueThreshold;			/* joint events; 0: none (see cd2JointEvent) */
 	bool collideConnected;
 	void* userData;
 } cd2WheelJointDef;
@@ -523,6 +536,17 @@ CD_API cd2BodyId cd2Joint_GetBodyB(cd2JointId jointId);
 /* Reaction on B of the last step (N and N*m): the joint's accumulated impulse over the step time. */
 CD_API cd2Vec cd2Joint_GetConstraintForce(cd2JointId jointId);
 CD_API cdReal cd2Joint_GetConstraintTorque(cd2JointId jointId);
+/* The softness of the joint's point, angle and length constraints (not of its springs): hertz and
+ * damping ratio >= 0, each 0 for the world's jointHertz / jointDampingRatio. Distance, prismatic,
+ * revolute, weld and wheel joints; refused for the others, which have their own tuning. */
+CD_API void cd2Joint_SetConstraintTuning(cd2JointId jointId, cdReal hertz, cdReal dampingRatio);
+CD_API cdReal cd2Joint_GetConstraintHertz(cd2JointId jointId);
+CD_API cdReal cd2Joint_GetConstraintDampingRatio(cd2JointId jointId);
+/* Thresholds of the joint events (>= 0; 0: none). Refused for a filter joint, which has no force. */
+CD_API void cd2Joint_SetForceThreshold(cd2JointId jointId, cdReal force);
+CD_API cdReal cd2Joint_GetForceThreshold(cd2JointId jointId);
+CD_API void cd2Joint_SetTorqueThreshold(cd2JointId jointId, cdReal torque);
+CD_API cdReal cd2Joint_GetTorqueThreshold(cd2JointId jointId);
 CD_API void* cd2Joint_GetUserData(cd2JointId jointId);
 CD_API void cd2Joint_SetUserData(cd2JointId jointId, void* userData);
 CD_API void cd2Joint_WakeBodies(cd2JointId jointId);
@@ -612,9 +636,28 @@ typedef struct cd2BodyEvents
 	int moveCount;
 } cd2BodyEvents;
 
+/* A joint whose reaction force (N) or torque (N m) over the last step exceeded its threshold
+ * (forceThreshold, torqueThreshold of its def or cd2Joint_SetForceThreshold / SetTorqueThreshold;
+ * 0, the default, raises none). One event per joint and step, in a deterministic order, for the
+ * awake joints; a breakable joint is one the user destroys on its event. */
+typedef struct cd2JointEvent
+{
+	cd2JointId jointId;
+	void* userData;
+	cd2Vec force;  /* the reaction force on B, as cd2Joint_GetConstraintForce */
+	cdReal torque; /* as cd2Joint_GetConstraintTorque */
+} cd2JointEvent;
+
+typedef struct cd2JointEvents
+{
+	const cd2JointEvent* jointEvents;
+	int count;
+} cd2JointEvents;
+
 CD_API cd2ContactEvents cd2World_GetContactEvents(cd2WorldId worldId);
 CD_API cd2SensorEvents cd2World_GetSensorEvents(cd2WorldId worldId);
 CD_API cd2BodyEvents cd2World_GetBodyEvents(cd2WorldId worldId);
+CD_API cd2JointEvents cd2World_GetJointEvents(cd2WorldId worldId);
 
 /* Called during the step for touching contacts of shapes with enablePreSolveEvents (manifold in
  * world space); return false to disable the contact for this step (one-way platforms). Must not

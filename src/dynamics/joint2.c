@@ -153,6 +153,30 @@ static bool cd2NonNeg(cdReal a)
 	return cdIsValidReal(a) && a >= CD_R(0.0);
 }
 
+/* Joint event thresholds: zero (none) or positive, finite or not. */
+static bool cd2ValidThresholds(cdReal force, cdReal torque)
+{
+	return !(force != force) && !(torque != torque) && force >= CD_R(0.0) && torque >= CD_R(0.0);
+}
+
+static void cd2InitThresholds(cd2Joint* joint, cdReal force, cdReal torque)
+{
+	if (joint != NULL)
+	{
+		joint->forceThreshold = force;
+		joint->torqueThreshold = torque;
+	}
+}
+
+static void cd2InitConstraintTuning(cd2Joint* joint, cdReal hertz, cdReal dampingRatio)
+{
+	if (joint != NULL)
+	{
+		joint->data.constraintHertz = hertz;
+		joint->data.constraintDampingRatio = dampingRatio;
+	}
+}
+
 /* ---- defaults ---------------------------------------------------------------------------------- */
 cd2DistanceJointDef cd2DefaultDistanceJointDef(void)
 {
@@ -236,8 +260,13 @@ cd2JointId cd2CreateDistanceJoint(cd2WorldId worldId, const cd2DistanceJointDef*
 		CD2_REFUSE("cd2CreateDistanceJoint: NULL def");
 		return id;
 	}
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_DISTANCE_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_DISTANCE_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -281,8 +310,10 @@ cd2JointId cd2CreateMotorJoint(cd2WorldId worldId, const cd2MotorJointDef* def)
 	bool valid = cd2IsValidVec(def->linearOffset) && cd2Finite(def->angularOffset) &&
 				 cd2NonNeg(def->maxForce) && cd2NonNeg(def->maxTorque) && cd2NonNeg(def->correctionFactor) &&
 				 def->correctionFactor <= CD_R(1.0);
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_MOTOR_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_MOTOR_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
 	if (joint != NULL)
 	{
 		joint->data.linearOffset = def->linearOffset;
@@ -304,8 +335,10 @@ cd2JointId cd2CreateMouseJoint(cd2WorldId worldId, const cd2MouseJointDef* def)
 	}
 	bool valid = cd2IsValidVec(def->target) && cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) &&
 				 cd2NonNeg(def->maxForce);
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_MOUSE_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_MOUSE_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold), &id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
 	if (joint != NULL)
 	{
 		cd2World* world = cd2GetWorld(worldId);
@@ -333,8 +366,13 @@ cd2JointId cd2CreatePrismaticJoint(cd2WorldId worldId, const cd2PrismaticJointDe
 				 cd2NonNeg(def->hertz) && cd2NonNeg(def->dampingRatio) && cd2Finite(def->lowerTranslation) &&
 				 cd2Finite(def->upperTranslation) && def->lowerTranslation <= def->upperTranslation &&
 				 cd2NonNeg(def->maxMotorForce) && cd2Finite(def->motorSpeed);
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_PRISMATIC_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_PRISMATIC_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -368,8 +406,13 @@ cd2JointId cd2CreateRevoluteJoint(cd2WorldId worldId, const cd2RevoluteJointDef*
 				 cd2Finite(def->lowerAngle) && cd2Finite(def->upperAngle) &&
 				 def->lowerAngle <= def->upperAngle && cd2NonNeg(def->maxMotorTorque) &&
 				 cd2Finite(def->motorSpeed);
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_REVOLUTE_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_REVOLUTE_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -401,8 +444,13 @@ cd2JointId cd2CreateWeldJoint(cd2WorldId worldId, const cd2WeldJointDef* def)
 				 cd2Finite(def->referenceAngle) && cd2NonNeg(def->linearHertz) &&
 				 cd2NonNeg(def->angularHertz) && cd2NonNeg(def->linearDampingRatio) &&
 				 cd2NonNeg(def->angularDampingRatio);
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_WELD_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_WELD_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -431,8 +479,13 @@ cd2JointId cd2CreateWheelJoint(cd2WorldId worldId, const cd2WheelJointDef* def)
 				 cd2NonNeg(def->dampingRatio) && cd2Finite(def->lowerTranslation) &&
 				 cd2Finite(def->upperTranslation) && def->lowerTranslation <= def->upperTranslation &&
 				 cd2NonNeg(def->maxMotorTorque) && cd2Finite(def->motorSpeed);
-	cd2Joint* joint = cd2CreateJointRecord(worldId, def->bodyIdA, def->bodyIdB, CD2_WHEEL_JOINT,
-										   def->collideConnected, def->userData, valid, &id);
+	cd2Joint* joint = cd2CreateJointRecord(
+		worldId, def->bodyIdA, def->bodyIdB, CD2_WHEEL_JOINT, def->collideConnected, def->userData,
+		valid && cd2ValidThresholds(def->forceThreshold, def->torqueThreshold) &&
+			cd2NonNeg(def->constraintHertz) && cd2NonNeg(def->constraintDampingRatio),
+		&id);
+	cd2InitThresholds(joint, def->forceThreshold, def->torqueThreshold);
+	cd2InitConstraintTuning(joint, def->constraintHertz, def->constraintDampingRatio);
 	if (joint != NULL)
 	{
 		cd2JointData* d = &joint->data;
@@ -536,6 +589,89 @@ cdReal cd2Joint_GetConstraintTorque(cd2JointId jointId)
 	cd2World* world = NULL;
 	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
 	return joint != NULL ? joint->constraintTorque : CD_R(0.0);
+}
+
+static bool cd2HasConstraintTuning(cd2JointType type)
+{
+	return type == CD2_DISTANCE_JOINT || type == CD2_PRISMATIC_JOINT || type == CD2_REVOLUTE_JOINT ||
+		   type == CD2_WELD_JOINT || type == CD2_WHEEL_JOINT;
+}
+
+void cd2Joint_SetConstraintTuning(cd2JointId jointId, cdReal hertz, cdReal dampingRatio)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (!cd2HasConstraintTuning(joint->type) || !cd2NonNeg(hertz) || !cd2NonNeg(dampingRatio))
+	{
+		CD2_REFUSE("cd2Joint_SetConstraintTuning: a motor, mouse or filter joint, or not numbers >= 0");
+		return;
+	}
+	joint->data.constraintHertz = hertz;
+	joint->data.constraintDampingRatio = dampingRatio;
+}
+
+cdReal cd2Joint_GetConstraintHertz(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->data.constraintHertz : CD_R(0.0);
+}
+
+cdReal cd2Joint_GetConstraintDampingRatio(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->data.constraintDampingRatio : CD_R(0.0);
+}
+
+void cd2Joint_SetForceThreshold(cd2JointId jointId, cdReal force)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (joint->type == CD2_FILTER_JOINT || !cd2ValidThresholds(force, CD_R(0.0)))
+	{
+		CD2_REFUSE("cd2Joint_SetForceThreshold: a filter joint, or not a number >= 0");
+		return;
+	}
+	joint->forceThreshold = force;
+}
+
+cdReal cd2Joint_GetForceThreshold(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->forceThreshold : CD_R(0.0);
+}
+
+void cd2Joint_SetTorqueThreshold(cd2JointId jointId, cdReal torque)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, true);
+	if (joint == NULL)
+	{
+		return;
+	}
+	if (joint->type == CD2_FILTER_JOINT || !cd2ValidThresholds(CD_R(0.0), torque))
+	{
+		CD2_REFUSE("cd2Joint_SetTorqueThreshold: a filter joint, or not a number >= 0");
+		return;
+	}
+	joint->torqueThreshold = torque;
+}
+
+cdReal cd2Joint_GetTorqueThreshold(cd2JointId jointId)
+{
+	cd2World* world = NULL;
+	cd2Joint* joint = cd2LookupJoint(jointId, &world, false);
+	return joint != NULL ? joint->torqueThreshold : CD_R(0.0);
 }
 
 void* cd2Joint_GetUserData(cd2JointId jointId)
@@ -977,6 +1113,14 @@ void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, i
 		d->deltaAngle =
 			cd2UnwindAngle(cd2RotGetAngle(cd2InvMulRot(a->transform.q, b->transform.q)) - d->referenceAngle);
 		d->jointSoftness = context->jointSoftness;
+		if (d->constraintHertz > CD_R(0.0) || d->constraintDampingRatio > CD_R(0.0))
+		{
+			/* The joint's own tuning, capped like the world's at a quarter of the sub-step rate. */
+			cdReal hertz = d->constraintHertz > CD_R(0.0) ? d->constraintHertz : world->jointHertz;
+			cdReal ratio =
+				d->constraintDampingRatio > CD_R(0.0) ? d->constraintDampingRatio : world->jointDampingRatio;
+			d->jointSoftness = cd2MakeSoft(cdMin(hertz, CD_R(0.25) * context->inv_h), ratio, context->h);
+		}
 		if (joint->type == CD2_PRISMATIC_JOINT || joint->type == CD2_WHEEL_JOINT)
 		{
 			d->axisA = cd2RotateVector(a->transform.q, d->localAxisA);

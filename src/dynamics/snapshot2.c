@@ -427,6 +427,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 	world->sensorBeginEvents.count = 0;
 	world->sensorEndEvents.count = 0;
 	world->moveEvents.count = 0;
+	world->jointEvents.count = 0;
 	world->stepEndEventCount = 0;
 	world->stepSensorEndEventCount = 0;
 	/* The awake sets are derived: the next sleep check builds them from the restored links. */

@@ -608,6 +608,36 @@ static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 	memcpy(context->joints, sorted, (size_t)n * sizeof(int));
 }
 
+/* The joint events of the step: the solved joints whose reaction exceeded a threshold, in the
+ * solver's (deterministic) joint order. On the calling thread, after the stages stored the
+ * reactions; only when some solved joint has a threshold. */
+static void cd2ReportJointEvents(cd2World* world, const cd2StepContext* context)
+{
+	for (int i = 0; i < context->jointCount; ++i)
+	{
+		int index = context->joints[i];
+		const cd2Joint* joint = world->joints.data + index;
+		cdReal force = cd2Length(joint->constraintForce), torque = cdAbs(joint->constraintTorque);
+		bool overForce = joint->forceThreshold > CD_R(0.0) && force > joint->forceThreshold;
+		bool overTorque = joint->torqueThreshold > CD_R(0.0) && torque > joint->torqueThreshold;
+		if (!overForce && !overTorque)
+		{
+			continue;
+		}
+		if (!cdArrayReserveFor(world->jointEvents, world->jointEvents.count + 1))
+		{
+			world->outOfMemory = true;
+			return;
+		}
+		cd2JointEvent* event = world->jointEvents.data + world->jointEvents.count++;
+		cd2JointId id = {index + 1, world->index, joint->generation};
+		event->jointId = id;
+		event->userData = joint->userData;
+		event->force = joint->constraintForce;
+		event->torque = joint->constraintTorque;
+	}
+}
+
 /* The joints to solve (an awake body, none disabled), in index order, then coloured. */
 static void cd2CollectJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup)
 {
@@ -634,6 +664,10 @@ static void cd2CollectJoints(cd2World* world, cd2StepContext* context, cd2SolveS
 		{
 			setup->jointBodyA[context->jointCount] = indexA;
 			setup->jointBodyB[context->jointCount] = indexB;
+		}
+		if (joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0))
+		{
+			context->thresholdJointCount += 1;
 		}
 		context->joints[context->jointCount++] = i;
 	}
@@ -1337,6 +1371,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 
 	CD2_PROFILE_MARK(world, finalize);
+	if (context.thresholdJointCount > 0)
+	{
+		cd2ReportJointEvents(world, &context);
+		CD2_PROFILE_MARK(world, jointEvents);
+	}
 	/* The rest of finalize, on this thread: what reads other bodies' final poses or writes shared
 	 * structures, for the bodies the finalize stage flagged, in body order. */
 	bool sleepAllowed = world->enableSleep;

@@ -214,6 +214,7 @@ void cd2DestroyWorld(cd2WorldId worldId)
 	cdArrayFree(world->sensorBeginEvents);
 	cdArrayFree(world->sensorEndEvents);
 	cdArrayFree(world->moveEvents);
+	cdArrayFree(world->jointEvents);
 	cdArena_Destroy(&world->arena);
 	cdThreadPool_Destroy(world->threadPool);
 	s_worlds[world->index] = NULL;
@@ -273,6 +274,7 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 	world->hitEvents.count = 0;
 	world->sensorBeginEvents.count = 0;
 	world->moveEvents.count = 0;
+	world->jointEvents.count = 0;
 
 	/* New pairs become contacts, then every awake contact gets its manifold. */
 	world->stepTimeStep = timeStep;
@@ -494,6 +496,20 @@ cd2BodyEvents cd2World_GetBodyEvents(cd2WorldId worldId)
 	}
 	events.moveEvents = world->moveEvents.data;
 	events.moveCount = world->moveEvents.count;
+	return events;
+}
+
+cd2JointEvents cd2World_GetJointEvents(cd2WorldId worldId)
+{
+	cd2JointEvents events;
+	memset(&events, 0, sizeof(events));
+	cd2World* world = cd2GetWorld(worldId);
+	if (world == NULL)
+	{
+		return events;
+	}
+	events.jointEvents = world->jointEvents.data;
+	events.count = world->jointEvents.count;
 	return events;
 }
 

@@ -205,7 +205,8 @@ typedef struct cd2JointData
 	cd2Vec localAxisA;
 	cdReal referenceAngle;
 	cdReal length, minLength, maxLength;
-	cdReal hertz, dampingRatio; /* spring */
+	cdReal hertz, dampingRatio;						/* spring */
+	cdReal constraintHertz, constraintDampingRatio; /* 0: the world's jointHertz, jointDampingRatio */
 	cdReal angularHertz, angularDampingRatio;
 	cdReal lower, upper;			  /* limit (angle or translation) */
 	cdReal motorSpeed, maxMotorForce; /* force or torque */
@@ -222,6 +223,8 @@ typedef struct cd2Joint
 	int bodyA, bodyB;
 	int prevKey[2], nextKey[2];
 	bool collideConnected;
+	/* Joint events when the reaction exceeds them (0: none); read as the step lists the joints. */
+	cdReal forceThreshold, torqueThreshold;
 	cd2JointData data;
 	cd2Vec constraintForce; /* last step */
 	cdReal constraintTorque;
@@ -391,6 +394,7 @@ typedef struct cd2StepContext
 	int* colorOfConstraint; /* colour of each (sorted) constraint, NULL when not coloured */
 	int* joints;
 	int jointCount;
+	int thresholdJointCount; /* of `joints`, those with a force or torque threshold */
 	/* The joints sorted by graph colour (see graph_color.h): the joints of colour c are
 	 * [jointColorStart[c], jointColorStart[c + 1]); the last colour is the overflow, solved in
 	 * order on one thread. */
@@ -426,6 +430,7 @@ typedef CD_ARRAY(cd2ContactHitEvent) cd2HitEventArray;
 typedef CD_ARRAY(cd2SensorBeginTouchEvent) cd2SensorBeginArray;
 typedef CD_ARRAY(cd2SensorEndTouchEvent) cd2SensorEndArray;
 typedef CD_ARRAY(cd2BodyMoveEvent) cd2MoveEventArray;
+typedef CD_ARRAY(cd2JointEvent) cd2JointEventArray;
 
 /* What the solver needs of a contact, written by cd2UpdateContacts for each contact index (so that
  * the solver's setup reads a small array, not every contact record): its two bodies when it is
@@ -492,6 +497,7 @@ typedef struct cd2World
 	cd2SensorBeginArray sensorBeginEvents;
 	cd2SensorEndArray sensorEndEvents;
 	cd2MoveEventArray moveEvents;
+	cd2JointEventArray jointEvents;
 	/* End events recorded by the last step; those appended after it (a shape destroyed between
 	 * steps) are kept for the next step's arrays. */
 	int stepEndEventCount, stepSensorEndEventCount;

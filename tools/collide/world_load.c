@@ -886,6 +886,10 @@ static const Field s_distanceFields[] = {
 	{"maxMotorForce", FIELD_REAL, offsetof(cd2DistanceJointDef, maxMotorForce)},
 	{"motorSpeed", FIELD_REAL, offsetof(cd2DistanceJointDef, motorSpeed)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2DistanceJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2DistanceJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2DistanceJointDef, torqueThreshold)},
+	{"constraintHertz", FIELD_REAL, offsetof(cd2DistanceJointDef, constraintHertz)},
+	{"constraintDampingRatio", FIELD_REAL, offsetof(cd2DistanceJointDef, constraintDampingRatio)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 
@@ -902,6 +906,8 @@ static const Field s_motorFields[] = {
 	{"maxTorque", FIELD_REAL, offsetof(cd2MotorJointDef, maxTorque)},
 	{"correctionFactor", FIELD_REAL, offsetof(cd2MotorJointDef, correctionFactor)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2MotorJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2MotorJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2MotorJointDef, torqueThreshold)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 
@@ -912,6 +918,8 @@ static const Field s_mouseFields[] = {
 	{"dampingRatio", FIELD_REAL, offsetof(cd2MouseJointDef, dampingRatio)},
 	{"maxForce", FIELD_REAL, offsetof(cd2MouseJointDef, maxForce)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2MouseJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2MouseJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2MouseJointDef, torqueThreshold)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 
@@ -931,6 +939,10 @@ static const Field s_prismaticFields[] = {
 	{"maxMotorForce", FIELD_REAL, offsetof(cd2PrismaticJointDef, maxMotorForce)},
 	{"motorSpeed", FIELD_REAL, offsetof(cd2PrismaticJointDef, motorSpeed)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2PrismaticJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2PrismaticJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2PrismaticJointDef, torqueThreshold)},
+	{"constraintHertz", FIELD_REAL, offsetof(cd2PrismaticJointDef, constraintHertz)},
+	{"constraintDampingRatio", FIELD_REAL, offsetof(cd2PrismaticJointDef, constraintDampingRatio)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 
@@ -949,6 +961,10 @@ static const Field s_revoluteFields[] = {
 	{"maxMotorTorque", FIELD_REAL, offsetof(cd2RevoluteJointDef, maxMotorTorque)},
 	{"motorSpeed", FIELD_REAL, offsetof(cd2RevoluteJointDef, motorSpeed)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2RevoluteJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2RevoluteJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2RevoluteJointDef, torqueThreshold)},
+	{"constraintHertz", FIELD_REAL, offsetof(cd2RevoluteJointDef, constraintHertz)},
+	{"constraintDampingRatio", FIELD_REAL, offsetof(cd2RevoluteJointDef, constraintDampingRatio)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 
@@ -962,6 +978,10 @@ static const Field s_weldFields[] = {
 	{"linearDampingRatio", FIELD_REAL, offsetof(cd2WeldJointDef, linearDampingRatio)},
 	{"angularDampingRatio", FIELD_REAL, offsetof(cd2WeldJointDef, angularDampingRatio)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2WeldJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2WeldJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2WeldJointDef, torqueThreshold)},
+	{"constraintHertz", FIELD_REAL, offsetof(cd2WeldJointDef, constraintHertz)},
+	{"constraintDampingRatio", FIELD_REAL, offsetof(cd2WeldJointDef, constraintDampingRatio)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 
@@ -980,6 +1000,10 @@ static const Field s_wheelFields[] = {
 	{"maxMotorTorque", FIELD_REAL, offsetof(cd2WheelJointDef, maxMotorTorque)},
 	{"motorSpeed", FIELD_REAL, offsetof(cd2WheelJointDef, motorSpeed)},
 	{"collideConnected", FIELD_BOOL, offsetof(cd2WheelJointDef, collideConnected)},
+	{"forceThreshold", FIELD_REAL, offsetof(cd2WheelJointDef, forceThreshold)},
+	{"torqueThreshold", FIELD_REAL, offsetof(cd2WheelJointDef, torqueThreshold)},
+	{"constraintHertz", FIELD_REAL, offsetof(cd2WheelJointDef, constraintHertz)},
+	{"constraintDampingRatio", FIELD_REAL, offsetof(cd2WheelJointDef, constraintDampingRatio)},
 	{NULL, FIELD_SPECIAL, 0},
 };
 

@@ -487,7 +487,7 @@ static int runScene(const RunOptions* o)
 		status = RUN_EXIT_ERROR;
 	}
 	double stepSeconds = 0.0;
-	long contactBegins = 0, sensorBegins = 0;
+	long contactBegins = 0, sensorBegins = 0, jointsBroken = 0;
 	long progressEvery = steps / 100 > 0 ? steps / 100 : 1;
 	for (long step = 1; status == 0 && step <= steps; ++step)
 	{
@@ -503,6 +503,13 @@ static int runScene(const RunOptions* o)
 		cd2SensorEvents sensorEvents = cd2World_GetSensorEvents(world->world);
 		contactBegins += contactEvents.beginCount;
 		sensorBegins += sensorEvents.beginCount;
+		/* Breakable joints (forceThreshold, torqueThreshold): destroyed on their events. */
+		cd2JointEvents jointEvents = cd2World_GetJointEvents(world->world);
+		for (int e = 0; e < jointEvents.count; ++e)
+		{
+			cd2DestroyJoint(jointEvents.jointEvents[e].jointId);
+		}
+		jointsBroken += jointEvents.count;
 		if (csv != NULL && !writeCsvRows(csv, world, step, (double)step * dt, &csvRows))
 		{
 			status = RUN_EXIT_ERROR;
@@ -541,7 +548,8 @@ static int runScene(const RunOptions* o)
 		printf("bodies: %d (%d dynamic, %d sleeping), shapes: %d, joints: %d\n", counters.bodyCount,
 			   dynamicCount, sleeping, counters.shapeCount, counters.jointCount);
 		printf("contacts: %d (%d touching)\n", counters.contactCount, counters.touchingContactCount);
-		printf("events: %ld contacts began, %ld sensor entries\n", contactBegins, sensorBegins);
+		printf("events: %ld contacts began, %ld sensor entries, %ld joints broke\n", contactBegins,
+			   sensorBegins, jointsBroken);
 		if (o->csvPath != NULL)
 		{
 			printf("csv: %s (%ld rows)\n", o->csvPath, csvRows);

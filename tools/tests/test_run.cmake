@@ -3,6 +3,8 @@
 #   [-DBUILTIN=name] [-DSTEPS=n] [-DBODIES=n] [-DARGS="..."] [-DXMLLINT=path]
 # csv: exit 0, a summary, and a CSV with a header and BODIES * (STEPS + 1) rows of 11 finite fields.
 # free-fall: the ball's height after 1 s is 100 - g t^2 / 2 within 1%, x unchanged.
+# breakable: of two balls hanging from joints, the one whose forceThreshold is below its weight
+# breaks free ("1 joints broke") and has fallen below y = 5; the other still hangs at y = 8.
 # one-way: the side-scroller's hero, thrown up from y = 1 under a one-way ledge (top at y = 3.15),
 # passes through it and stands on it: after STEPS steps y is 3.9 (+-0.05: capsule half-height
 # 0.75 above the top) and x is over the ledge.
@@ -40,7 +42,7 @@ if(MODE STREQUAL "help")
   return()
 endif()
 
-if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall" OR MODE STREQUAL "one-way")
+if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall" OR MODE STREQUAL "one-way" OR MODE STREQUAL "breakable")
   set(csv ${OUT_DIR}/states.csv)
   run_tool(${SCENE} --steps ${STEPS} --csv ${csv})
   if(NOT status STREQUAL "0" OR NOT out MATCHES "steps: ${STEPS} of" OR NOT out MATCHES "ms/step: [0-9.]+"
@@ -87,6 +89,25 @@ if(MODE STREQUAL "csv" OR MODE STREQUAL "free-fall" OR MODE STREQUAL "one-way")
     list(GET fields 5 y)
     if(NOT y MATCHES "^3\\.(8[5-9]|9[0-4])" OR NOT x MATCHES "^-[0-3]\\.")
       message(FATAL_ERROR "the hero did not land on the one-way ledge: ${hero}")
+    endif()
+  endif()
+  if(MODE STREQUAL "breakable")
+    set(weak "")
+    set(strong "")
+    foreach(line IN LISTS lines)
+      if(line MATCHES "^${STEPS},[^,]*,[0-9]+,weak,")
+        set(weak "${line}")
+      elseif(line MATCHES "^${STEPS},[^,]*,[0-9]+,strong,")
+        set(strong "${line}")
+      endif()
+    endforeach()
+    string(REPLACE "," ";" weakFields "${weak}")
+    string(REPLACE "," ";" strongFields "${strong}")
+    list(GET weakFields 5 weakY)
+    list(GET strongFields 5 strongY)
+    if(NOT out MATCHES ", 1 joints broke" OR NOT weakY MATCHES "^-?[0-4]\\." OR NOT strongY MATCHES "^7\\.99")
+      message(FATAL_ERROR "expected the weak joint to break (the ball below y = 5) and the strong one "
+        "to hold (y = 7.99...)\nweak: ${weak}\nstrong: ${strong}\n${context}")
     endif()
   endif()
   if(MODE STREQUAL "free-fall")

@@ -268,7 +268,8 @@ export class World2 {
    * The events of the last step: contactBegin [{shapeA, shapeB, normal, points: [{x, y,
    * separation}]}], contactEnd [{shapeA, shapeB}], hits [{shapeA, shapeB, point, normal,
    * approachSpeed}], sensorBegin and sensorEnd [{sensor, visitor}], moves [{body, x, y, cos, sin,
-   * fellAsleep}]. Shapes destroyed since the step come back as null.
+   * fellAsleep}], joints [{joint, force, torque}] (over their thresholds). Shapes, bodies and joints
+   * destroyed since the step come back as null.
    */
   getEvents() {
     this._check('getEvents');
@@ -277,9 +278,9 @@ export class World2 {
     w.views();
     const f = w.F32, i = w.I32;
     let p = ptr >> 2;
-    const [nb, ne, nh, nsb, nse, nm] = [i[p], i[p + 1], i[p + 2], i[p + 3], i[p + 4], i[p + 5]];
-    p += 6;
-    const ev = { contactBegin: [], contactEnd: [], hits: [], sensorBegin: [], sensorEnd: [], moves: [] };
+    const [nb, ne, nh, nsb, nse, nm, nj] = [i[p], i[p + 1], i[p + 2], i[p + 3], i[p + 4], i[p + 5], i[p + 6]];
+    p += 7;
+    const ev = { contactBegin: [], contactEnd: [], hits: [], sensorBegin: [], sensorEnd: [], moves: [], joints: [] };
     for (let k = 0; k < nb; k++, p += 13) {
       const n = i[p + 6];
       const points = [];
@@ -294,6 +295,9 @@ export class World2 {
     for (let k = 0; k < nse; k++, p += 4) ev.sensorEnd.push({ sensor: this._shape(i[p], i[p + 1]), visitor: this._shape(i[p + 2], i[p + 3]) });
     for (let k = 0; k < nm; k++, p += 7) {
       ev.moves.push({ body: this._body(i[p], i[p + 1]), x: f[p + 2], y: f[p + 3], cos: f[p + 4], sin: f[p + 5], fellAsleep: f[p + 6] !== 0 });
+    }
+    for (let k = 0; k < nj; k++, p += 5) {
+      ev.joints.push({ joint: this._joints.get(key(i[p], i[p + 1])) ?? null, force: { x: f[p + 2], y: f[p + 3] }, torque: f[p + 4] });
     }
     return ev;
   }
@@ -731,7 +735,9 @@ const J = {
   hertz: 13, dampingRatio: 14, enableLimit: 15, lower: 16, upper: 17, enableMotor: 18, maxMotor: 19,
   motorSpeed: 20, collideConnected: 21, length: 22, target: 23, maxForce: 25, maxTorque: 26,
   linearOffset: 27, angularOffset: 29, correctionFactor: 30, angularHertz: 31, angularDampingRatio: 32,
+  forceThreshold: 33, torqueThreshold: 34, constraintHertz: 35, constraintDampingRatio: 36,
 };
+const TUNED_JOINTS = ['distance', 'prismatic', 'revolute', 'weld', 'wheel'];
 
 World2.prototype.createJoint = function createJoint(def) {
   this._check('createJoint');
@@ -775,6 +781,14 @@ World2.prototype.createJoint = function createJoint(def) {
   putVec('linearOffset', J.linearOffset); put('angularOffset', J.angularOffset);
   put('correctionFactor', J.correctionFactor, nonNeg);
   put('angularHertz', J.angularHertz, nonNeg); put('angularDampingRatio', J.angularDampingRatio, nonNeg);
+  if (def.type === 'filter' && (def.forceThreshold !== undefined || def.torqueThreshold !== undefined)) {
+    throw new TypeError('def: a filter joint has no force, so no forceThreshold or torqueThreshold');
+  }
+  put('forceThreshold', J.forceThreshold, nonNeg); put('torqueThreshold', J.torqueThreshold, nonNeg);
+  if (!TUNED_JOINTS.includes(def.type) && (def.constraintHertz !== undefined || def.constraintDampingRatio !== undefined)) {
+    throw new TypeError(`def: a ${def.type} joint has no constraintHertz or constraintDampingRatio`);
+  }
+  put('constraintHertz', J.constraintHertz, nonNeg); put('constraintDampingRatio', J.constraintDampingRatio, nonNeg);
   if (f[p + J.lower] > f[p + J.upper]) throw new RangeError('def: the lower limit must not exceed the upper limit');
   const r = E().joint2Create(this._w);
   if (r === 0) throw staleError('Body2', 'createJoint');
@@ -860,6 +874,18 @@ export class Joint2 {
   /** Reaction force on body B over the last step (N). */
   get constraintForce() { const p = this._get('constraintForce'); return { x: w.F32[p + 5], y: w.F32[p + 6] }; }
   get constraintTorque() { return w.F32[this._get('constraintTorque') + 7]; }
+  /** Joint events (World2.getEvents().joints) when the reaction force exceeds it (N); 0: none. */
+  get forceThreshold() { return w.F32[this._get('forceThreshold') + 11]; }
+  set forceThreshold(v) { this._set('forceThreshold', 13, [nonNeg(v, 'forceThreshold')]); }
+  /** Joint events when the reaction torque exceeds it (N m); 0: none. */
+  get torqueThreshold() { return w.F32[this._get('torqueThreshold') + 12]; }
+  set torqueThreshold(v) { this._set('torqueThreshold', 14, [nonNeg(v, 'torqueThreshold')]); }
+  /** The softness of the point, angle and length constraints (0: the world's jointHertz / jointDampingRatio). */
+  get constraintHertz() { return w.F32[this._get('constraintHertz') + 13]; }
+  get constraintDampingRatio() { return w.F32[this._get('constraintDampingRatio') + 14]; }
+  setConstraintTuning(hertz, dampingRatio) {
+    this._set('setConstraintTuning', 15, [nonNeg(hertz, 'hertz'), nonNeg(dampingRatio, 'dampingRatio')]);
+  }
   /** Revolute joints: angle of B relative to A minus the reference angle. */
   get angle() { if (this.type !== 'revolute') throw new TypeError(`angle does not apply to a ${this.type} joint`); return w.F32[this._get('angle') + 8]; }
   /** Prismatic and wheel joints: translation along the axis. */

@@ -871,8 +871,9 @@ EXPORT("shape2Set") int cdjsShape2Set(int world0, int index1, int generation, in
  * anchorA x y, anchorB x y (body frames), axis x y, referenceAngle, enableSpring, hertz,
  * dampingRatio, enableLimit, lower, upper, enableMotor, maxMotor, motorSpeed, collideConnected,
  * length, target x y, maxForce, maxTorque, linearOffset x y, angularOffset, correctionFactor,
- * angularHertz, angularDampingRatio (NaN: default). Returns index1 (IO[0] out: generation), 0 for a
- * stale body, -1 for a bad def. */
+ * angularHertz, angularDampingRatio, forceThreshold, torqueThreshold, constraintHertz,
+ * constraintDampingRatio (NaN: default). Returns index1
+ * (IO[0] out: generation), 0 for a stale body, -1 for a bad def. */
 EXPORT("joint2Create") int cdjsJoint2Create(int world0)
 {
 	JsWorld* w = getWorld(world0);
@@ -1049,6 +1050,16 @@ EXPORT("joint2Create") int cdjsJoint2Create(int world0)
 	{
 		return -1;
 	}
+	/* The thresholds (checked >= 0 by the JavaScript side) on every kind but the filter joint. */
+	if (getInt(in) != CD2_FILTER_JOINT)
+	{
+		cd2Joint_SetForceThreshold(id, orDefault(p[28], 0.0f));
+		cd2Joint_SetTorqueThreshold(id, orDefault(p[29], 0.0f));
+	}
+	if (p[30] == p[30] || p[31] == p[31])
+	{
+		cd2Joint_SetConstraintTuning(id, orDefault(p[30], 0.0f), orDefault(p[31], 0.0f));
+	}
 	putInt(IO, (int32_t)id.generation);
 	return id.index1;
 }
@@ -1065,7 +1076,8 @@ EXPORT("joint2Destroy") int cdjsJoint2Destroy(int world0, int index1, int genera
 }
 
 /* IO out: type, bodyA index1, generation, bodyB index1, generation (ints), force x y, torque,
- * revolute angle, translation (prismatic, wheel), current length (distance). */
+ * revolute angle, translation (prismatic, wheel), current length (distance), force threshold,
+ * torque threshold, constraint hertz, constraint damping ratio. */
 EXPORT("joint2Get") int cdjsJoint2Get(int world0, int index1, int generation)
 {
 	cd2JointId id;
@@ -1088,13 +1100,18 @@ EXPORT("joint2Get") int cdjsJoint2Get(int world0, int index1, int generation)
 	o[8] = type == CD2_REVOLUTE_JOINT ? cd2RevoluteJoint_GetAngle(id) : 0.0f;
 	o[9] = type == CD2_PRISMATIC_JOINT || type == CD2_WHEEL_JOINT ? cd2Joint_GetTranslation(id) : 0.0f;
 	o[10] = type == CD2_DISTANCE_JOINT ? cd2DistanceJoint_GetCurrentLength(id) : 0.0f;
+	o[11] = cd2Joint_GetForceThreshold(id);
+	o[12] = cd2Joint_GetTorqueThreshold(id);
+	o[13] = cd2Joint_GetConstraintHertz(id);
+	o[14] = cd2Joint_GetConstraintDampingRatio(id);
 	return 1;
 }
 
 /* what: 0 motor on/off (a), 1 motor speed (a), 2 max motor (a), 3 limit on/off (a), 4 limits
  * (lower, upper), 5 spring on/off (a), 6 spring hertz (a), 7 spring damping ratio (a), 8 mouse
  * target (x, y), 9 distance length (a), 10 motor joint linear offset (x, y), 11 motor joint
- * angular offset (a), 12 wake bodies. Returns 1, 0 stale, -1 wrong joint type for the call. */
+ * angular offset (a), 12 wake bodies, 13 force threshold (a), 14 torque threshold (a), 15
+ * constraint tuning (hertz, damping ratio). Returns 1, 0 stale, -1 wrong joint type for the call. */
 EXPORT("joint2Set") int cdjsJoint2Set(int world0, int index1, int generation, int what)
 {
 	cd2JointId id;
@@ -1191,6 +1208,29 @@ EXPORT("joint2Set") int cdjsJoint2Set(int world0, int index1, int generation, in
 		case 12:
 			cd2Joint_WakeBodies(id);
 			break;
+		case 13:
+		case 14:
+			if (type == CD2_FILTER_JOINT)
+			{
+				return -1;
+			}
+			if (what == 13)
+			{
+				cd2Joint_SetForceThreshold(id, a[0]);
+			}
+			else
+			{
+				cd2Joint_SetTorqueThreshold(id, a[0]);
+			}
+			break;
+		case 15:
+			if (type != CD2_DISTANCE_JOINT && type != CD2_PRISMATIC_JOINT && type != CD2_REVOLUTE_JOINT &&
+				type != CD2_WELD_JOINT && type != CD2_WHEEL_JOINT)
+			{
+				return -1;
+			}
+			cd2Joint_SetConstraintTuning(id, a[0], a[1]);
+			break;
 		default:
 			return -1;
 	}
@@ -1199,13 +1239,14 @@ EXPORT("joint2Set") int cdjsJoint2Set(int world0, int index1, int generation, in
 
 /* ---- events ----------------------------------------------------------------------------------
  * All events of the last step in one record list; returns a byte pointer to it:
- * counts (ints): contact begin, end, hit, sensor begin, end, body moves; then
+ * counts (ints): contact begin, end, hit, sensor begin, end, body moves, joint events; then
  * contact begin: a index1 gen, b index1 gen (ints), normal x y, pointCount (int), then two points
  *   (x, y, separation) = 13 floats (a one-point manifold repeats its point);
  * contact end: a index1 gen, b index1 gen = 4;
  * hit: a, b (4 ints), point x y, normal x y, approachSpeed = 9;
  * sensor begin / end: sensor index1 gen, visitor index1 gen = 4;
- * body move: body index1 gen (ints), x, y, cos, sin, fellAsleep = 7. */
+ * body move: body index1 gen (ints), x, y, cos, sin, fellAsleep = 7;
+ * joint event: joint index1 gen (ints), force x y, torque = 5. */
 EXPORT("world2Events") float* cdjsWorld2Events(int world0)
 {
 	JsWorld* w = getWorld(world0);
@@ -1217,8 +1258,9 @@ EXPORT("world2Events") float* cdjsWorld2Events(int world0)
 	cd2ContactEvents c = cd2World_GetContactEvents(w->id);
 	cd2SensorEvents s = cd2World_GetSensorEvents(w->id);
 	cd2BodyEvents b = cd2World_GetBodyEvents(w->id);
-	int total = 6 + 13 * c.beginCount + 4 * c.endCount + 9 * c.hitCount + 4 * (s.beginCount + s.endCount) +
-				7 * b.moveCount;
+	cd2JointEvents j = cd2World_GetJointEvents(w->id);
+	int total = 7 + 13 * c.beginCount + 4 * c.endCount + 9 * c.hitCount + 4 * (s.beginCount + s.endCount) +
+				7 * b.moveCount + 5 * j.count;
 	if (!outReserve(total))
 	{
 		return NULL;
@@ -1230,7 +1272,8 @@ EXPORT("world2Events") float* cdjsWorld2Events(int world0)
 	putInt(o + 3, s.beginCount);
 	putInt(o + 4, s.endCount);
 	putInt(o + 5, b.moveCount);
-	o += 6;
+	putInt(o + 6, j.count);
+	o += 7;
 	for (int i = 0; i < c.beginCount; ++i, o += 13)
 	{
 		const cd2ContactBeginTouchEvent* e = c.beginEvents + i;
@@ -1284,6 +1327,15 @@ EXPORT("world2Events") float* cdjsWorld2Events(int world0)
 		o[4] = e->transform.q.c;
 		o[5] = e->transform.q.s;
 		o[6] = e->fellAsleep ? 1.0f : 0.0f;
+	}
+	for (int i = 0; i < j.count; ++i, o += 5)
+	{
+		const cd2JointEvent* e = j.jointEvents + i;
+		putInt(o, e->jointId.index1);
+		putInt(o + 1, (int32_t)e->jointId.generation);
+		o[2] = e->force.x;
+		o[3] = e->force.y;
+		o[4] = e->torque;
 	}
 	return g_out;
 }

@@ -184,6 +184,62 @@ test('joints hold: a revolute pendulum keeps its anchor, a distance joint its le
   world.destroy();
 });
 
+test('joint events: a breakable joint reports a pull over its threshold and breaks when destroyed', () => {
+  const world = new c.World2({ gravity: { x: 0, y: -10 }, enableSleep: false });
+  const pivot = world.createBody({ position: { x: 0, y: 10 } });
+  const bob = world.createBody({ type: 'dynamic', position: { x: 0, y: 9 } });
+  bob.createShape(c.circle({ x: 0, y: 0 }, 0.25));
+  const weight = bob.mass * 10;
+  const rope = world.createJoint({ type: 'revolute', bodyA: pivot, bodyB: bob, localAnchorB: { x: 0, y: 1 }, forceThreshold: 2 * weight, userData: 'rope' });
+  assert.ok(Math.abs(rope.forceThreshold - 2 * weight) < 1e-6 * weight);
+  assert.equal(rope.torqueThreshold, 0);
+  let quiet = 0;
+  for (let i = 0; i < 60; i++) { world.step(DT, 4); quiet += world.getEvents().joints.length; }
+  assert.equal(quiet, 0, 'no event while the ball hangs at rest');
+  bob.applyForceToCenter({ x: 0, y: -5 * weight });
+  world.step(DT, 4);
+  const { joints } = world.getEvents();
+  assert.equal(joints.length, 1);
+  assert.equal(joints[0].joint, rope);
+  assert.ok(Math.hypot(joints[0].force.x, joints[0].force.y) > 2 * weight, `force ${joints[0].force.y}`);
+  joints[0].joint.destroy();
+  const y0 = bob.position.y;
+  for (let i = 0; i < 30; i++) world.step(DT, 4);
+  assert.ok(bob.position.y < y0 - 1, 'the ball falls once the joint broke');
+  const other = world.createBody({ type: 'dynamic', position: { x: 3, y: 9 } });
+  other.createShape(c.circle({ x: 0, y: 0 }, 0.25));
+  const j2 = world.createJoint({ type: 'weld', bodyA: pivot, bodyB: other, localAnchorA: { x: 3, y: -1 } });
+  j2.torqueThreshold = 5;
+  assert.equal(j2.torqueThreshold, 5);
+  assert.throws(() => { j2.forceThreshold = -1; }, { name: 'RangeError', message: /forceThreshold must be >= 0/ });
+  assert.throws(() => world.createJoint({ type: 'filter', bodyA: pivot, bodyB: other, forceThreshold: 1 }), TypeError);
+  const filter = world.createJoint({ type: 'filter', bodyA: pivot, bodyB: other });
+  assert.throws(() => { filter.torqueThreshold = 1; }, { name: 'TypeError', message: /torqueThreshold does not apply to a filter joint/ });
+  world.destroy();
+});
+
+test('a joint tuned to 4 Hz sags g / (2 pi f)^2 under its load; tuning is refused where it does not apply', () => {
+  const world = new c.World2({ gravity: { x: 0, y: -10 }, enableSleep: false });
+  const pivot = world.createBody({ position: { x: 0, y: 0 } });
+  const bob = world.createBody({ type: 'dynamic', position: { x: 0, y: -1 } });
+  bob.createShape(c.circle({ x: 0, y: 0 }, 0.25));
+  const j = world.createJoint({ type: 'revolute', bodyA: pivot, bodyB: bob, localAnchorB: { x: 0, y: 1 }, constraintHertz: 4, constraintDampingRatio: 1 });
+  assert.equal(j.constraintHertz, 4);
+  assert.equal(j.constraintDampingRatio, 1);
+  for (let i = 0; i < 240; i++) world.step(DT, 4);
+  const expected = 10 / (2 * Math.PI * 4) ** 2;
+  const sag = -1 - bob.position.y;
+  assert.ok(Math.abs(sag - expected) < 0.01 * expected, `sag ${sag}, expected ${expected}`);
+  j.setConstraintTuning(0, 0);
+  for (let i = 0; i < 60; i++) world.step(DT, 4);
+  assert.ok(Math.abs(-1 - bob.position.y) < 1e-3, 'back to the world softness');
+  assert.throws(() => j.setConstraintTuning(-1, 1), RangeError);
+  assert.throws(() => world.createJoint({ type: 'motor', bodyA: pivot, bodyB: bob, constraintHertz: 5 }), TypeError);
+  const motor = world.createJoint({ type: 'motor', bodyA: pivot, bodyB: bob });
+  assert.throws(() => motor.setConstraintTuning(5, 1), { name: 'TypeError', message: /does not apply to a motor joint/ });
+  world.destroy();
+});
+
 test('ray casts and overlap queries hit the right shapes at the right places', () => {
   const { world, groundShape } = groundWorld();
   const b = world.createBody({ position: { x: 3, y: 2 } });
