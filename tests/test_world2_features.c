@@ -1102,8 +1102,8 @@ static void TestContinuousOneSidedChain(void)
 			if (kind == 2 && i == 4)
 			{
 				/* Resting on the floor: now down hard and sideways. */
-				cd2Body_SetLinearVelocity(body, cd2MakeVec((cdReal)TestRngRange(&rng, -300.0, 300.0),
-															-CD_R(900.0)));
+				cd2Body_SetLinearVelocity(
+					body, cd2MakeVec((cdReal)TestRngRange(&rng, -300.0, 300.0), -CD_R(900.0)));
 			}
 			cd2World_Step(world, DT, 4);
 			cd2Vec p = cd2Body_GetPosition(body);

@@ -297,12 +297,26 @@ static void printFigure(double v, const char* format, int width)
 /* --profile: one table per scene, a column per engine and worker count that has a profile. */
 static void printProfile(const char* sceneName, const Result* results)
 {
-	static const char* rowNames[W2P_ROW_COUNT] = {
-		"step", "pairs (new pairs, new contacts)", "tree rebuild", "collide (manifolds, touch changes)",
-		"solve", "  solver setup", "  prepare constraints", "  integrate velocities", "  warm start",
-		"  solve impulses", "  integrate positions", "  relax impulses", "  restitution", "  store impulses",
-		"  finalize bodies (v3 transforms)", "  refit, bullets", "  events (hit, joint)", "  sleep (v3: and split islands)",
-		"  solve other", "sensors"};
+	static const char* rowNames[W2P_ROW_COUNT] = {"step",
+												  "pairs (new pairs, new contacts)",
+												  "tree rebuild",
+												  "collide (manifolds, touch changes)",
+												  "solve",
+												  "  solver setup",
+												  "  prepare constraints",
+												  "  integrate velocities",
+												  "  warm start",
+												  "  solve impulses",
+												  "  integrate positions",
+												  "  relax impulses",
+												  "  restitution",
+												  "  store impulses",
+												  "  finalize bodies (v3 transforms)",
+												  "  refit, bullets",
+												  "  events (hit, joint)",
+												  "  sleep (v3: and split islands)",
+												  "  solve other",
+												  "sensors"};
 	int columns[2 * ENGINE_COUNT][2];
 	int columnCount = 0;
 	for (int w = 0; w < 2; ++w)
@@ -321,8 +335,9 @@ static void printProfile(const char* sceneName, const Result* results)
 	{
 		return;
 	}
-	printf("\nprofile, %s: ms/step on the stepping thread (mean over the timed steps of every run)\n\n| stage |",
-		   sceneName);
+	printf(
+		"\nprofile, %s: ms/step on the stepping thread (mean over the timed steps of every run)\n\n| stage |",
+		sceneName);
 	for (int c = 0; c < columnCount; ++c)
 	{
 		printf(" %s %dw |", engines[columns[c][0]].name, columns[c][1] + 1);

@@ -185,10 +185,10 @@ typedef struct cd2Profile
 	float integratePositions; /* per sub-step */
 	float relaxImpulses;	  /* without bias */
 	float applyRestitution;
-	float storeImpulses;  /* impulses back into the contacts and joints */
-	float finalize;		  /* transforms, sleep times, tight boxes of each body */
-	float jointEvents;	  /* joints over their force or torque threshold */
-	float refit;		  /* kinematic wakes, bullets, broadphase moves */
+	float storeImpulses; /* impulses back into the contacts and joints */
+	float finalize;		 /* transforms, sleep times, tight boxes of each body */
+	float jointEvents;	 /* joints over their force or torque threshold */
+	float refit;		 /* kinematic wakes, bullets, broadphase moves */
 	float hitEvents;
 	float sleepIslands;
 	float sensors;

@@ -20,7 +20,7 @@ double cd2ProfileNow(void); /* seconds */
 		if ((world)->profiling)                                                                              \
 		{                                                                                                    \
 			double cd2ProfileT_ = cd2ProfileNow();                                                           \
-			(world)->profile.field += (float)(1000.0 * (cd2ProfileT_ - (world)->profileMark));              \
+			(world)->profile.field += (float)(1000.0 * (cd2ProfileT_ - (world)->profileMark));               \
 			(world)->profileMark = cd2ProfileT_;                                                             \
 		}                                                                                                    \
 	} while (0)
@@ -46,7 +46,7 @@ typedef struct cd2Body
 	/* What the step's setup reads and writes of every body, in its first cache line. */
 	bool inUse, awake, enabled;
 	cd2BodyType type;
-	int solverIndex; /* in the step's dense awake arrays, or CD2_NULL_INDEX */
+	int solverIndex;		/* in the step's dense awake arrays, or CD2_NULL_INDEX */
 	cd2Transform transform; /* of the body origin */
 	cd2Vec center;			/* world centre of mass */
 	cd2Vec center0;			/* at the start of the step (continuous collision) */
@@ -181,7 +181,8 @@ typedef struct cd2Contact
 } cd2Contact;
 
 _Static_assert(sizeof(cd2Contact) == CD2_CONTACT_BYTES, "cd2Contact: the fields outgrew CD2_CONTACT_BYTES");
-_Static_assert(CD_DOUBLE || offsetof(cd2Contact, cache) == 96, "cd2Contact: the solver's fields must be 96 bytes");
+_Static_assert(CD_DOUBLE || offsetof(cd2Contact, cache) == 96,
+			   "cd2Contact: the solver's fields must be 96 bytes");
 
 /* ---- joints ---------------------------------------------------------------------------------- */
 typedef struct cd2Softness
