@@ -1061,6 +1061,66 @@ static void TestContinuous(void)
 	cd2DestroyWorld(world);
 }
 
+/* Fast ordinary bodies against a one-sided chain floor (free side up): shot down steeply, shot at a
+ * grazing angle, resting on it and then shot down hard, and shot so that the first step ends with
+ * the centre just in front of the chain, deep in it, before going on down (the sweep skips a shape
+ * whose centroid ends well in front of a segment, and only then). None may end behind the chain. */
+static void TestContinuousOneSidedChain(void)
+{
+	TestRng rng = TestRngMake(23);
+	cd2WorldDef wd = cd2DefaultWorldDef();
+	cd2WorldId world = cd2CreateWorld(&wd);
+	cd2BodyDef bd = cd2DefaultBodyDef();
+	cd2BodyId terrain = cd2CreateBody(world, &bd);
+	cd2Vec points[41];
+	for (int i = 0; i < 41; ++i)
+	{
+		points[i] = cd2MakeVec((cdReal)(20 - i), CD_R(0.0)); /* right to left: free side up */
+	}
+	cd2ChainDef cd = cd2DefaultChainDef();
+	cd.points = points;
+	cd.count = 41;
+	cd2CreateChainShape(terrain, &cd);
+	int below = 0, shots = 1200, skimmed = 0;
+	for (int s = 0; s < shots; ++s)
+	{
+		int kind = s % 4;
+		cdReal x = (cdReal)TestRngRange(&rng, -10.0, 10.0);
+		cdReal radius = CD_R(0.05) + CD_R(0.3) * (cdReal)TestRngRange(&rng, 0.0, 1.0);
+		cdReal y = kind == 2 ? radius : CD_R(3.0);
+		/* kind 3: the centre ends the first step between 0.1 and 0.45 radii above the chain */
+		cdReal depth = radius * (cdReal)TestRngRange(&rng, 0.1, 0.45);
+		cd2BodyId body = MakeBall(world, cd2MakeVec(x, y), radius, false);
+		cd2Vec v = kind == 0   ? cd2MakeVec((cdReal)TestRngRange(&rng, -100.0, 100.0), -CD_R(600.0))
+				   : kind == 1 ? cd2MakeVec((cdReal)TestRngRange(&rng, 100.0, 200.0), -CD_R(120.0))
+				   : kind == 3 ? cd2MakeVec(CD_R(0.0), -(y - depth) / DT)
+							   : CD2_VEC_ZERO;
+		cd2Body_SetLinearVelocity(body, v);
+		cdReal lowest = CD_R(1.0);
+		for (int i = 0; i < 12; ++i)
+		{
+			if (kind == 2 && i == 4)
+			{
+				/* Resting on the floor: now down hard and sideways. */
+				cd2Body_SetLinearVelocity(
+					body, cd2MakeVec((cdReal)TestRngRange(&rng, -300.0, 300.0), -CD_R(900.0)));
+			}
+			cd2World_Step(world, DT, 4);
+			cd2Vec p = cd2Body_GetPosition(body);
+			if (cdAbs(p.x) < CD_R(19.0)) /* over the chain (a grazing shot leaves it sideways) */
+			{
+				lowest = cdMin(lowest, p.y);
+				skimmed += kind == 1 && p.y < CD_R(2.0) * radius ? 1 : 0;
+			}
+		}
+		below += lowest < CD_R(0.0) ? 1 : 0;
+		cd2DestroyBody(body);
+	}
+	TEST_CHECKF(below == 0, "%d of %d ended behind the chain", below, shots);
+	TEST_CHECK(skimmed > 0); /* grazing shots reached the floor over the chain */
+	cd2DestroyWorld(world);
+}
+
 /* Fast non-bullet balls shot at the wall (at x = wallX, from 10 m before it); how many ended beyond it. */
 static int ShootAtWallAt(cd2WorldId world, int shots, TestRng* rng, cdReal wallX)
 {
@@ -1887,6 +1947,7 @@ int main(void)
 	TEST_RUN(TestChain);
 	TEST_RUN(TestContinuous);
 	TEST_RUN(TestContinuousStaticCount);
+	TEST_RUN(TestContinuousOneSidedChain);
 	TEST_RUN(TestFinalizeAcrossWorkers);
 	TEST_RUN(TestJointColorsAcrossWorkers);
 	TEST_RUN(TestCreatedAsleep);

@@ -1,7 +1,7 @@
 /* collide_bench_world2: the 2D world scenes on collide and the peers in the same run.
  *
  *   collide_bench_world2 [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--runs R]
- *                        [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]
+ *                        [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list] [--profile]
  *
  * For every scene, engine and worker count (1 and 2 where the engine has threads) the scene is
  * built R times (default 3) and stepped its step count at 60 Hz with its sub-step count; the
@@ -12,7 +12,11 @@
  * figure then says how many runs it is the median of). The quality criterion (scenes/world2_quality.h) is
  * judged on the first run's snapshots.
  * --smoke: pyramid_20, 30 steps, 1 run, 1 worker; exits 1 unless every built column ran and
- * computed its quality criterion. Exit 2 on bad arguments. */
+ * computed its quality criterion. Exit 2 on bad arguments.
+ * --profile: after each scene, the engines' own per-stage times (cd2World_GetProfile,
+ * b2World_GetProfile) side by side, ms per step on the stepping thread, the mean over the timed
+ * steps of every run; stages that mean the same share a row. Profiling makes collide read the
+ * clock at every stage (Box2D v3 always does), so its ms/step may rise slightly. */
 #define _POSIX_C_SOURCE 200809L
 #include "bench_world2.h"
 
@@ -106,6 +110,8 @@ typedef struct Result
 	int bodies, contacts;
 	double bytesPerBody, bytesPerContact; /* < 0: not measurable */
 	World2Quality quality;
+	double profile[2][W2P_ROW_COUNT]; /* --profile: sums over the timed steps */
+	int profileSteps[2];
 } Result;
 
 typedef struct Options
@@ -116,12 +122,13 @@ typedef struct Options
 	int steps; /* 0: the scene's own */
 	bool workers[2];
 	bool smoke;
+	bool profile;
 	double budget; /* seconds per (scene, engine, workers) after which no more runs start; 0: none */
 } Options;
 
 /* One run; fills ms/step and, when measure, bodies, contacts, memory and quality. */
 static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int steps, bool measure,
-					double* msPerStep, Result* r)
+					bool profile, double* msPerStep, Result* r)
 {
 	const World2SceneInfo* info = world2SceneInfo(id);
 	const float timeStep = 1.0f / 60.0f;
@@ -140,7 +147,12 @@ static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int st
 	{
 		e->counts(world, &bodies0, &contacts0);
 	}
-	double excluded = 0.0; /* time of the settled snapshot, not part of the step time */
+	profile = profile && e->enableProfile != NULL && e->profile != NULL;
+	if (profile)
+	{
+		e->enableProfile(world);
+	}
+	double excluded = 0.0; /* time of the settled snapshot and of reading the profile */
 	double t0 = 0.0;
 	for (int i = 0; i < steps; ++i)
 	{
@@ -157,6 +169,24 @@ static bool runOnce(const World2Engine* e, World2SceneId id, int workers, int st
 		if (i == 0)
 		{
 			t0 = nowSeconds(); /* the first step is not timed */
+		}
+		else if (profile)
+		{
+			double p0 = nowSeconds();
+			double rows[W2P_ROW_COUNT] = {0.0};
+			e->profile(world, rows);
+			double inSolve = 0.0;
+			for (int k = W2P_SOLVER_SETUP; k <= W2P_SLEEP; ++k)
+			{
+				inSolve += rows[k];
+			}
+			rows[W2P_SOLVE_OTHER] = rows[W2P_SOLVE] - inSolve;
+			for (int k = 0; k < W2P_ROW_COUNT; ++k)
+			{
+				r->profile[workers - 1][k] += rows[k];
+			}
+			r->profileSteps[workers - 1] += 1;
+			excluded += nowSeconds() - p0;
 		}
 	}
 	double t1 = nowSeconds();
@@ -223,7 +253,7 @@ static void runScene(World2SceneId id, const Options* o, Result* results)
 				bool measure = !r->ran;
 				double begin = nowSeconds();
 				double ms = 0.0;
-				if (!runOnce(engines[e].engine, id, w, steps, measure, &ms, r))
+				if (!runOnce(engines[e].engine, id, w, steps, measure, o->profile, &ms, r))
 				{
 					active[e] = false;
 					continue;
@@ -264,6 +294,75 @@ static void printFigure(double v, const char* format, int width)
 	}
 }
 
+/* --profile: one table per scene, a column per engine and worker count that has a profile. */
+static void printProfile(const char* sceneName, const Result* results)
+{
+	static const char* rowNames[W2P_ROW_COUNT] = {"step",
+												  "pairs (new pairs, new contacts)",
+												  "tree rebuild",
+												  "collide (manifolds, touch changes)",
+												  "solve",
+												  "  solver setup",
+												  "  prepare constraints",
+												  "  integrate velocities",
+												  "  warm start",
+												  "  solve impulses",
+												  "  integrate positions",
+												  "  relax impulses",
+												  "  restitution",
+												  "  store impulses",
+												  "  finalize bodies (v3 transforms)",
+												  "  refit, bullets",
+												  "  events (hit, joint)",
+												  "  sleep (v3: and split islands)",
+												  "  solve other",
+												  "sensors"};
+	int columns[2 * ENGINE_COUNT][2];
+	int columnCount = 0;
+	for (int w = 0; w < 2; ++w)
+	{
+		for (int e = 0; e < ENGINE_COUNT; ++e)
+		{
+			if (results[e].ran && results[e].profileSteps[w] > 0)
+			{
+				columns[columnCount][0] = e;
+				columns[columnCount][1] = w;
+				++columnCount;
+			}
+		}
+	}
+	if (columnCount == 0)
+	{
+		return;
+	}
+	printf(
+		"\nprofile, %s: ms/step on the stepping thread (mean over the timed steps of every run)\n\n| stage |",
+		sceneName);
+	for (int c = 0; c < columnCount; ++c)
+	{
+		printf(" %s %dw |", engines[columns[c][0]].name, columns[c][1] + 1);
+	}
+	printf("\n|---|");
+	for (int c = 0; c < columnCount; ++c)
+	{
+		printf("---:|");
+	}
+	printf("\n");
+	for (int k = 0; k < W2P_ROW_COUNT; ++k)
+	{
+		printf("| %s |", rowNames[k]);
+		for (int c = 0; c < columnCount; ++c)
+		{
+			const Result* r = &results[columns[c][0]];
+			int w = columns[c][1];
+			printf(" %.3f |", r->profile[w][k] / (double)r->profileSteps[w]);
+		}
+		printf("\n");
+	}
+	printf("\n");
+	fflush(stdout);
+}
+
 static bool parseList(const char* arg, bool* flags, int count, const char* (*nameOf)(int))
 {
 	char buffer[512];
@@ -302,7 +401,8 @@ static void usage(void)
 {
 	fprintf(stderr,
 			"usage: collide_bench_world2 [--scene NAME[,NAME...]] [--engine NAME[,NAME...]] [--runs R]\n"
-			"                            [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]\n");
+			"                            [--steps N] [--workers 1|2|12] [--budget S] [--smoke] [--list]\n"
+			"                            [--profile]\n");
 }
 
 int main(int argc, char** argv)
@@ -329,6 +429,10 @@ int main(int argc, char** argv)
 		else if (strcmp(a, "--smoke") == 0)
 		{
 			o.smoke = true;
+		}
+		else if (strcmp(a, "--profile") == 0)
+		{
+			o.profile = true;
 		}
 		else if (strcmp(a, "--scene") == 0 && v != NULL)
 		{
@@ -536,6 +640,10 @@ int main(int argc, char** argv)
 				}
 			}
 			fflush(stdout);
+		}
+		if (o.profile)
+		{
+			printProfile(info->name, results[s]);
 		}
 	}
 	/* Box2D 2.4 target: collide at most 0.5x Box2D 2.4 on pyramid_40. */

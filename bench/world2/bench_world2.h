@@ -12,6 +12,33 @@
 extern "C" {
 #endif
 
+/* --profile: the engines' own per-stage times of a step (ms), lined up by meaning; a row an engine
+ * does not time separately stays 0 (its time is in another row; see bench_world2.c). */
+typedef enum World2ProfileRow
+{
+	W2P_STEP,
+	W2P_PAIRS,
+	W2P_REBUILD_TREE,
+	W2P_COLLIDE,
+	W2P_SOLVE,
+	W2P_SOLVER_SETUP,
+	W2P_PREPARE,
+	W2P_INTEGRATE_VELOCITIES,
+	W2P_WARM_START,
+	W2P_SOLVE_IMPULSES,
+	W2P_INTEGRATE_POSITIONS,
+	W2P_RELAX,
+	W2P_RESTITUTION,
+	W2P_STORE,
+	W2P_FINALIZE,
+	W2P_REFIT,
+	W2P_EVENTS,
+	W2P_SLEEP,
+	W2P_SOLVE_OTHER, /* solve minus its rows above (set by the bench) */
+	W2P_SENSORS,
+	W2P_ROW_COUNT
+} World2ProfileRow;
+
 typedef struct World2Engine
 {
 	const char* name;
@@ -29,6 +56,10 @@ typedef struct World2Engine
 	 * result with computed == false falls back to world2CheckQuality. */
 	World2Quality (*quality)(void* world, World2SceneId scene, const World2Snapshot* start,
 							 const World2Snapshot* end, double time);
+	/* Optional (--profile): turn the engine's profile on (before the first step), and read the last
+	 * step's into rows[W2P_ROW_COUNT] (ms). */
+	void (*enableProfile)(void* world);
+	void (*profile)(void* world, double* rows);
 } World2Engine;
 
 /* Defined by the adapters that are built (W2_HAVE_<ENGINE>). */

@@ -109,4 +109,6 @@ extern "C" const World2Engine world2EngineBox2d24 = {
 	box2d24Counts,
 	box2d24Destroy,
 	nullptr,
+	nullptr,
+	nullptr,
 };

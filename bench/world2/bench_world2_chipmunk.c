@@ -181,4 +181,6 @@ const World2Engine world2EngineChipmunk = {
 	chipmunkCounts,
 	chipmunkDestroy,
 	NULL,
+	NULL,
+	NULL,
 };

@@ -59,6 +59,35 @@ static World2Quality collideQuality(void* world, World2SceneId id, const World2S
 	return world2SceneQuality((const World2Scene*)world, start, end, time);
 }
 
+static void collideEnableProfile(void* world)
+{
+	cd2World_EnableProfiling(((World2Scene*)world)->world, true);
+}
+
+static void collideProfile(void* world, double* rows)
+{
+	cd2Profile p = cd2World_GetProfile(((World2Scene*)world)->world);
+	rows[W2P_STEP] = p.step;
+	rows[W2P_PAIRS] = p.pairs;
+	rows[W2P_REBUILD_TREE] = p.rebuildTree;
+	rows[W2P_COLLIDE] = p.collide;
+	rows[W2P_SOLVE] = p.solve;
+	rows[W2P_SOLVER_SETUP] = p.solverSetup;
+	rows[W2P_PREPARE] = p.prepareConstraints;
+	rows[W2P_INTEGRATE_VELOCITIES] = p.integrateVelocities;
+	rows[W2P_WARM_START] = p.warmStart;
+	rows[W2P_SOLVE_IMPULSES] = p.solveImpulses;
+	rows[W2P_INTEGRATE_POSITIONS] = p.integratePositions;
+	rows[W2P_RELAX] = p.relaxImpulses;
+	rows[W2P_RESTITUTION] = p.applyRestitution;
+	rows[W2P_STORE] = p.storeImpulses;
+	rows[W2P_FINALIZE] = p.finalize;
+	rows[W2P_REFIT] = p.refit;
+	rows[W2P_EVENTS] = (double)p.hitEvents + p.jointEvents;
+	rows[W2P_SLEEP] = p.sleepIslands;
+	rows[W2P_SENSORS] = p.sensors;
+}
+
 const World2Engine world2EngineCollide = {
 	"collide",
 	"collide's 2D world (defaults of cd2DefaultWorldDef), 4 sub-steps, scenes/world2_scenes.c; workerCount "
@@ -72,4 +101,6 @@ const World2Engine world2EngineCollide = {
 	collideCounts,
 	collideDestroy,
 	collideQuality,
+	collideEnableProfile,
+	collideProfile,
 };

@@ -166,6 +166,38 @@ typedef struct cd2Counters
 
 CD_API cd2Counters cd2World_GetCounters(cd2WorldId worldId);
 
+/* Where the last step's time went: wall time on the stepping thread, in milliseconds, recorded
+ * while profiling is on (cd2World_EnableProfiling; off by default: it reads the clock at every
+ * stage). With workers, a stage's time includes waiting for the other workers to finish it. The
+ * solve's fields from prepareConstraints to storeImpulses are summed over the sub-steps. */
+typedef struct cd2Profile
+{
+	float step;				   /* the whole cd2World_Step */
+	float rebuildTree;		   /* the broadphase tree, rebuilt where last step's moves grew it */
+	float pairs;			   /* new pairs of the moved proxies, new contacts */
+	float collide;			   /* manifolds and the contacts' begin/end of touch */
+	float solve;			   /* everything below up to sleepIslands */
+	float solverSetup;		   /* awake lists, colouring, solver bodies, wide layout */
+	float prepareConstraints;  /* contact and joint constraints (and packing them four wide) */
+	float integrateVelocities; /* per sub-step */
+	float warmStart;
+	float solveImpulses;	  /* with bias */
+	float integratePositions; /* per sub-step */
+	float relaxImpulses;	  /* without bias */
+	float applyRestitution;
+	float storeImpulses; /* impulses back into the contacts and joints */
+	float finalize;		 /* transforms, sleep times, tight boxes of each body */
+	float jointEvents;	 /* joints over their force or torque threshold */
+	float refit;		 /* kinematic wakes, bullets, broadphase moves */
+	float hitEvents;
+	float sleepIslands;
+	float sensors;
+} cd2Profile;
+
+CD_API void cd2World_EnableProfiling(cd2WorldId worldId, bool flag);
+/* The last step's profile; all zero while profiling is off. */
+CD_API cd2Profile cd2World_GetProfile(cd2WorldId worldId);
+
 /* ---- bodies --------------------------------------------------------------------------------- */
 typedef enum cd2BodyType
 {

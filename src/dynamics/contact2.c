@@ -355,7 +355,7 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		cd2RunTask(world, cd2RebuildTreeTask, jobCount, 1, minParallel, world->broadPhase);
 	}
 	cd2BroadPhase_EndRebuild(world->broadPhase);
-	CD2_TIMER_MARK(3, "tree rebuild");
+	CD2_PROFILE_MARK(world, rebuildTree);
 	int itemCount = cd2BroadPhase_BeginMovedPairs(world->broadPhase);
 	if (itemCount == 0)
 	{
@@ -388,7 +388,6 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 		return;
 	}
 	cd2RunTask(world, cd2FindPairsTask, itemCount, 64, CD2_PARALLEL_MIN_PAIR_ITEMS, &search);
-	CD2_TIMER_MARK(4, "pair search");
 	/* The ranges that overflowed, again on this thread, with room doubled until they fit. */
 	bool anyFailed = memchr(search.failed, 1, (size_t)itemCount) != NULL;
 	cd2PairBuffer retry = {NULL, 0, 0, {0}};
@@ -528,9 +527,9 @@ static cd2Manifold cd2WorldManifold(const cd2Contact* contact)
 	m.pointCount = contact->pointCount;
 	for (int i = 0; i < contact->pointCount; ++i)
 	{
-		m.points[i].point = contact->points[i].point;
+		m.points[i].point = contact->cache[i].point;
 		m.points[i].separation = contact->points[i].separation;
-		m.points[i].id = contact->points[i].id;
+		m.points[i].id = contact->cache[i].id;
 	}
 	return m;
 }
@@ -634,14 +633,15 @@ static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const 
 	for (int k = 0; k < contact->pointCount; ++k)
 	{
 		cd2ContactPoint* cp = contact->points + k;
+		cd2ContactPointCache* cc = contact->cache + k;
 		/* The stored point as carried by A and by B, from the centres (no large coordinates). */
-		cd2Vec rA = cd2RotateVector(xfA.q, cd2Sub(cp->localPointA, bodyA->localCenter));
-		cd2Vec rB = cd2RotateVector(xfB.q, cd2Sub(cp->localPointB, bodyB->localCenter));
+		cd2Vec rA = cd2RotateVector(xfA.q, cd2Sub(cc->localPointA, bodyA->localCenter));
+		cd2Vec rB = cd2RotateVector(xfB.q, cd2Sub(cc->localPointB, bodyB->localCenter));
 		cd2Vec d = cd2Add(dc, cd2Sub(rB, rA));
-		cp->separation = cp->baseSeparation + cd2Dot(d, n);
+		cp->separation = cc->baseSeparation + cd2Dot(d, n);
 		cp->anchorA = cd2MulAdd(rA, CD_R(0.5), d);
 		cp->anchorB = cd2MulSub(rB, CD_R(0.5), d);
-		cp->point = cd2Add(bodyA->center, cp->anchorA);
+		cc->point = cd2Add(bodyA->center, cp->anchorA);
 	}
 	return true;
 }
@@ -654,6 +654,7 @@ static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA,
 	cd2Manifold m = cd2ContactCollide(shapeA, shapeB, xfAB, speculative);
 	cd2Transform xfA = bodyA->transform;
 	cd2ContactPoint old[2];
+	uint32_t oldId[2] = {contact->cache[0].id, contact->cache[1].id};
 	int oldCount = contact->pointCount;
 	memcpy(old, contact->points, sizeof(old));
 	contact->pointCount = m.pointCount;
@@ -665,19 +666,21 @@ static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA,
 	for (int k = 0; k < m.pointCount; ++k)
 	{
 		cd2ContactPoint* cp = contact->points + k;
+		cd2ContactPointCache* cc = contact->cache + k;
 		memset(cp, 0, sizeof(*cp));
-		cp->point = cd2TransformPoint(xfA, m.points[k].point);
-		cp->anchorA = cd2Sub(cp->point, bodyA->center);
-		cp->anchorB = cd2Sub(cp->point, bodyB->center);
+		memset(cc, 0, sizeof(*cc));
+		cc->point = cd2TransformPoint(xfA, m.points[k].point);
+		cp->anchorA = cd2Sub(cc->point, bodyA->center);
+		cp->anchorB = cd2Sub(cc->point, bodyB->center);
 		cp->separation = m.points[k].separation;
-		cp->id = m.points[k].id;
-		cp->localPointA = m.points[k].point;
-		cp->localPointB = cd2InvTransformPoint(xfAB, m.points[k].point);
-		cp->baseSeparation = m.points[k].separation;
+		cc->id = m.points[k].id;
+		cc->localPointA = m.points[k].point;
+		cc->localPointB = cd2InvTransformPoint(xfAB, m.points[k].point);
+		cc->baseSeparation = m.points[k].separation;
 		/* Warm starting: the same features keep their impulses. */
 		for (int j = 0; j < oldCount; ++j)
 		{
-			if (cd2WarmStartKey(old[j].id) == cd2WarmStartKey(cp->id))
+			if (cd2WarmStartKey(oldId[j]) == cd2WarmStartKey(cc->id))
 			{
 				cp->normalImpulse = old[j].normalImpulse;
 				cp->tangentImpulse = old[j].tangentImpulse;
@@ -933,7 +936,6 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 	ctx.entries = (cd2ContactSolveEntry*)cdArena_AllocUncleared(&world->arena,
 																(size_t)count * sizeof(cd2ContactSolveEntry));
 	cd2RunTask(world, cd2UpdateContactsTask, count, 64, CD2_PARALLEL_MIN_CONTACTS, &ctx);
-	CD2_TIMER_MARK(1, "narrow");
 
 	/* (Contacts destroyed below only free their slot: count and the indices stay valid.) */
 	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count;
@@ -946,5 +948,4 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 		}
 	}
 	world->stepSolveEntries = ctx.entries;
-	CD2_TIMER_MARK(2, "contact merge");
 }

@@ -239,7 +239,7 @@ void cd2StoreImpulses(cd2World* world, const cd2StepContext* context, int start,
 			contact->points[k].normalImpulse = c->points[k].normalImpulse;
 			contact->points[k].tangentImpulse = c->points[k].tangentImpulse;
 			contact->points[k].maxNormalImpulse = c->points[k].maxNormalImpulse;
-			contact->points[k].relativeVelocity = c->points[k].relativeVelocity;
+			contact->cache[k].relativeVelocity = c->points[k].relativeVelocity;
 		}
 	}
 }

@@ -294,13 +294,13 @@ bool cd2PrepareContactsWide(cd2World* world, cd2StepContext* context)
  * scattered over the contact array. */
 #define CD2_PACK_PREFETCH_AHEAD 24
 
-/* Asks for the lines of contact record `contact` from its normal to its tangent speed: what
+/* Asks for the lines of contact record `contact` from its normal to its points: what
  * cd2PrepareContactConstraint reads and the store writes. */
 static CD2_ALWAYS_INLINE void cd2PrefetchContactRecord(const cd2World* world, int contact)
 {
 #if defined(__GNUC__) || defined(__clang__)
 	const char* first = (const char*)&world->contacts.data[contact].normal;
-	const char* last = (const char*)(&world->contacts.data[contact].tangentSpeed + 1);
+	const char* last = (const char*)world->contacts.data[contact].cache;
 	for (const char* p = first; p < last; p += 64)
 	{
 		__builtin_prefetch(p);
@@ -312,20 +312,28 @@ static CD2_ALWAYS_INLINE void cd2PrefetchContactRecord(const cd2World* world, in
 #endif
 }
 
-/* The same for writing: the lines of the record's points and rolling impulse. */
-static CD2_ALWAYS_INLINE void cd2PrefetchContactForStore(const cd2World* world, int contact)
+/* The same for writing: the lines of the record's rolling impulse and points, and of the points'
+ * approach speeds. */
+static CD2_ALWAYS_INLINE void cd2PrefetchContactForStore(const cd2World* world, int contact, bool approach)
 {
 #if defined(__GNUC__) || defined(__clang__)
-	const char* first = (const char*)&world->contacts.data[contact].points[0].normalImpulse;
-	const char* last = (const char*)(&world->contacts.data[contact].rollingImpulse + 1);
+	const cd2Contact* record = world->contacts.data + contact;
+	const char* first = (const char*)&record->rollingImpulse;
+	const char* last = (const char*)record->cache;
 	for (const char* p = first; p < last; p += 64)
 	{
 		__builtin_prefetch(p, 1);
 	}
 	__builtin_prefetch(last - 1, 1);
+	if (approach)
+	{
+		__builtin_prefetch(&record->cache[0].relativeVelocity, 1);
+		__builtin_prefetch(&record->cache[1].relativeVelocity, 1);
+	}
 #else
 	(void)world;
 	(void)contact;
+	(void)approach;
 #endif
 }
 
@@ -768,7 +776,7 @@ void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlo
 			{
 				if (ahead->contact[lane] >= 0)
 				{
-					cd2PrefetchContactForStore(world, ahead->contact[lane]);
+					cd2PrefetchContactForStore(world, ahead->contact[lane], context->storeApproach);
 				}
 			}
 		}
@@ -787,7 +795,10 @@ void cd2StoreContactsWide(cd2World* world, cd2StepContext* context, int startBlo
 				mp->normalImpulse = cdWGetLane(&wp->normalImpulse, lane);
 				mp->tangentImpulse = cdWGetLane(&wp->tangentImpulse, lane);
 				mp->maxNormalImpulse = cdWGetLane(&wp->maxNormalImpulse, lane);
-				mp->relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+				if (context->storeApproach)
+				{
+					contact->cache[k].relativeVelocity = cdWGetLane(&wp->relativeVelocity, lane);
+				}
 			}
 		}
 	}

@@ -35,6 +35,7 @@ typedef struct cd2ContinuousContext
 	int shapeIndex;
 	bool isBullet;
 	cd2Sweep sweep;
+	cd2Vec centroid1; /* the shape's centroid at the end of the step */
 	cdReal fraction;
 } cd2ContinuousContext;
 
@@ -70,11 +71,16 @@ static bool cd2ContinuousCallback(int proxyId, uint64_t userData, void* context)
 	cd2Transform otherXf = otherBody->transform;
 	if (other->type == CD2_WORLD_SHAPE_CHAIN_SEGMENT)
 	{
-		/* One-sided: a body that starts behind the segment passes. */
+		/* One-sided: a body that starts behind the segment passes. So does a shape whose centroid
+		 * ends the step at least half the body's inner extent in front of the segment's line: it
+		 * has not gone through, what overlaps is the contact's to push out, and its core (see
+		 * below) starts the next step clear of the segment. The common case: a body sliding along
+		 * a wall. */
 		cd2Vec p1 = cd2TransformPoint(otherXf, other->geometry.chainSegment.p1);
 		cd2Vec p2 = cd2TransformPoint(otherXf, other->geometry.chainSegment.p2);
 		cd2Vec normal = cd2RightPerp(cd2Sub(p2, p1));
-		if (cd2Dot(normal, cd2Sub(c->sweep.center0, p1)) < CD_R(0.0))
+		if (cd2Dot(normal, cd2Sub(c->sweep.center0, p1)) < CD_R(0.0) ||
+			cd2Dot(normal, cd2Sub(c->centroid1, p1)) > CD_R(0.5) * body->minExtent * cd2Length(normal))
 		{
 			return true;
 		}
@@ -137,6 +143,7 @@ void cd2SolveContinuous(cd2World* world, int bodyIndex)
 			continue;
 		}
 		c.shapeIndex = s;
+		c.centroid1 = cd2TransformPoint(body->transform, cd2WorldShapeCentroid(shape));
 		cd2Aabb box = cd2AabbUnion(cd2ComputeWorldShapeAabb(shape, xf0),
 								   cd2ComputeWorldShapeAabb(shape, body->transform));
 		/* A bullet against every shape, the others against the static ones (their own tree). */

@@ -162,7 +162,7 @@ void cd2World_Draw(cd2WorldId worldId, const cd2DebugDraw* draw)
 			}
 			for (int k = 0; k < contact->pointCount; ++k)
 			{
-				cd2Vec p = contact->points[k].point;
+				cd2Vec p = contact->cache[k].point;
 				if (draw->drawPoint != NULL)
 				{
 					draw->drawPoint(p, CD_R(5.0), CD2_COLOR_CONTACT, draw->context);

@@ -398,7 +398,10 @@ static void cd2CountBodies(cd2World* world, cd2SolveSetup* setup, int startChunk
 			uint8_t kind = 0;
 			if (!body->inUse || !body->enabled || !body->awake || body->type == CD_STATIC_BODY)
 			{
-				body->solverIndex = CD2_NULL_INDEX;
+				if (body->solverIndex != CD2_NULL_INDEX) /* (most are already: no write) */
+				{
+					body->solverIndex = CD2_NULL_INDEX;
+				}
 			}
 			else
 			{
@@ -861,9 +864,56 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 	}
 }
 
+/* The profile field a stage's time goes to (the setup's stages go to solverSetup as a whole). */
+static float* cd2StageProfileField(cd2World* world, const cd2Stage* stage)
+{
+	cd2Profile* p = &world->profile;
+	switch (stage->kind)
+	{
+		case CD2_STAGE_PREPARE_JOINTS:
+		case CD2_STAGE_PREPARE_CONTACTS:
+		case CD2_STAGE_PACK_WIDE:
+			return &p->prepareConstraints;
+		case CD2_STAGE_INTEGRATE_VELOCITIES:
+			return &p->integrateVelocities;
+		case CD2_STAGE_WARM_START_JOINTS:
+		case CD2_STAGE_WARM_START_WIDE:
+		case CD2_STAGE_WARM_START_OVERFLOW:
+			return &p->warmStart;
+		case CD2_STAGE_SOLVE_JOINTS:
+		case CD2_STAGE_SOLVE_WIDE:
+		case CD2_STAGE_SOLVE_OVERFLOW:
+			return stage->useBias ? &p->solveImpulses : &p->relaxImpulses;
+		case CD2_STAGE_INTEGRATE_POSITIONS:
+			return &p->integratePositions;
+		case CD2_STAGE_RESTITUTION_WIDE:
+		case CD2_STAGE_RESTITUTION:
+			return &p->applyRestitution;
+		case CD2_STAGE_STORE_WIDE:
+		case CD2_STAGE_STORE_IMPULSES:
+		case CD2_STAGE_STORE_JOINTS:
+			return &p->storeImpulses;
+		case CD2_STAGE_FINALIZE_BODIES:
+			return &p->finalize;
+		default:
+			return &p->solverSetup;
+	}
+}
+
+/* Adds the time since the last mark to the stage's profile field (the stepping thread, profiling on). */
+static void cd2ProfileStage(cd2World* world, const cd2Stage* stage)
+{
+	if (world != NULL)
+	{
+		double now = cd2ProfileNow();
+		*cd2StageProfileField(world, stage) += (float)(1000.0 * (now - world->profileMark));
+		world->profileMark = now;
+	}
+}
+
 /* The stages of a run (runLength), each whole, in order. Every thread reads the same restitution
  * flag: it was set before the stages that set it were seen finished. */
-static void cd2ExecuteRun(const cd2StageList* list, const cd2Stage* first)
+static void cd2ExecuteRun(const cd2StageList* list, const cd2Stage* first, cd2World* profileWorld)
 {
 	for (int k = 0; k < first->runLength; ++k)
 	{
@@ -872,13 +922,14 @@ static void cd2ExecuteRun(const cd2StageList* list, const cd2Stage* first)
 		{
 			cd2ExecuteStage(list, stage, 0, stage->itemCount);
 		}
+		cd2ProfileStage(profileWorld, stage);
 	}
 }
 
 /* Walks every stage in order, taking blocks while there are some, then waiting for the blocks that
  * other threads took (release on finishing a block, acquire on seeing them all finished: the next
  * stage reads what this one wrote). A run of one-block stages is one block. */
-static void cd2RunStages(const cd2StageList* list, cd2Stage* stages, int stageCount)
+static void cd2RunStages(const cd2StageList* list, cd2Stage* stages, int stageCount, cd2World* profileWorld)
 {
 	for (int s = 0; s < stageCount; s += stages[s].runLength)
 	{
@@ -888,15 +939,16 @@ static void cd2RunStages(const cd2StageList* list, cd2Stage* stages, int stageCo
 #if CD2_STAGE_ATOMICS
 			if (atomic_fetch_add_explicit(&stage->claimed, 1, memory_order_relaxed) == 0)
 			{
-				cd2ExecuteRun(list, stage);
+				cd2ExecuteRun(list, stage, profileWorld);
 				cdSyncCount_Add(&stage->done, 1);
 			}
 			else
 			{
 				cdSyncCount_AwaitAtLeast(&stage->done, 1);
+				cd2ProfileStage(profileWorld, stage);
 			}
 #else
-			cd2ExecuteRun(list, stage);
+			cd2ExecuteRun(list, stage, profileWorld);
 #endif
 			continue;
 		}
@@ -926,14 +978,14 @@ static void cd2RunStages(const cd2StageList* list, cd2Stage* stages, int stageCo
 		{
 			cdSyncCount_Add(&stage->done, finished);
 		}
-		if (finished == stage->blockCount)
+		if (finished != stage->blockCount) /* else all of it on this thread: nothing to wait for */
 		{
-			continue; /* all of it on this thread: nothing to wait for */
+			cdSyncCount_AwaitAtLeast(&stage->done, stage->blockCount);
 		}
-		cdSyncCount_AwaitAtLeast(&stage->done, stage->blockCount);
 #else
 		cd2ExecuteStage(list, stage, 0, stage->itemCount);
 #endif
+		cd2ProfileStage(profileWorld, stage);
 	}
 }
 
@@ -944,7 +996,7 @@ static void cd2PreStageTask(int start, int end, uint32_t workerIndex, void* task
 	(void)end;
 	(void)workerIndex;
 	const cd2StageList* list = (const cd2StageList*)taskContext;
-	cd2RunStages(list, list->preStages, list->preStageCount);
+	cd2RunStages(list, list->preStages, list->preStageCount, NULL);
 }
 
 static void cd2StageTask(int start, int end, uint32_t workerIndex, void* taskContext)
@@ -953,7 +1005,7 @@ static void cd2StageTask(int start, int end, uint32_t workerIndex, void* taskCon
 	(void)end;
 	(void)workerIndex;
 	const cd2StageList* list = (const cd2StageList*)taskContext;
-	cd2RunStages(list, list->stages, list->stageCount);
+	cd2RunStages(list, list->stages, list->stageCount, NULL);
 }
 
 /* One task per further worker (the stepping thread walks the stages too); NULL when there are
@@ -991,11 +1043,11 @@ static void cd2ReportHits(cd2World* world, cd2StepContext* context)
 		bool hit = false;
 		for (int k = 0; k < contact->pointCount; ++k)
 		{
-			cdReal approach = -contact->points[k].relativeVelocity;
+			cdReal approach = -contact->cache[k].relativeVelocity;
 			if (approach > event.approachSpeed && contact->points[k].maxNormalImpulse > CD_R(0.0))
 			{
 				event.approachSpeed = approach;
-				event.point = contact->points[k].point;
+				event.point = contact->cache[k].point;
 				hit = true;
 			}
 		}
@@ -1197,10 +1249,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.stages = NULL;
 	list.stageCount = 0;
 	list.stageCapacity = 0;
-	CD2_TIMER_MARK(5, "setup alloc");
 
 	void* helpers = helpersStart ? cd2StartHelpers(world, cd2PreStageTask, &list) : NULL;
-	cd2RunStages(&list, list.preStages, list.preStageCount);
+	cd2RunStages(&list, list.preStages, list.preStageCount, NULL);
 	if (helpers != NULL)
 	{
 		world->finishTask(helpers, world->userTaskContext);
@@ -1216,7 +1267,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	{
 		hitCandidates += setup.contactChunkHits[c];
 	}
-	CD2_TIMER_MARK(6, "setup stages");
+	context.storeApproach = hitCandidates > 0;
 	bool ok = true;
 	if (!cd2PrepareContactsWide(world, &context))
 	{
@@ -1311,18 +1362,19 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		world->outOfMemory = true;
 	}
 
-	CD2_TIMER_MARK(8, "setup wide+stages");
+	CD2_PROFILE_MARK(world, solverSetup);
 	helpers = parallel ? cd2StartHelpers(world, cd2StageTask, &list) : NULL;
-	cd2RunStages(&list, list.stages, list.stageCount);
+	cd2RunStages(&list, list.stages, list.stageCount, world->profiling ? world : NULL);
 	if (helpers != NULL)
 	{
 		world->finishTask(helpers, world->userTaskContext);
 	}
 
-	CD2_TIMER_MARK(9, "stages");
+	CD2_PROFILE_MARK(world, finalize);
 	if (context.thresholdJointCount > 0)
 	{
 		cd2ReportJointEvents(world, &context);
+		CD2_PROFILE_MARK(world, jointEvents);
 	}
 	/* The rest of finalize, on this thread: what reads other bodies' final poses or writes shared
 	 * structures, for the bodies the finalize stage flagged, in body order. */
@@ -1395,14 +1447,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			}
 		}
 	}
-	CD2_TIMER_MARK(10, "post finalize");
+	CD2_PROFILE_MARK(world, refit);
 	if (hitCandidates > 0)
 	{
 		cd2ReportHits(world, &context);
 	}
 	/* Only a body that has rested for CD2_TIME_TO_SLEEP can fall asleep (an island sleeps when its
 	 * least rested body has); without one there is nothing to check. */
-	CD2_TIMER_MARK(11, "hits");
+	CD2_PROFILE_MARK(world, hitEvents);
 	if (sleepAllowed && rested &&
 		cd2UpdateSleep(world, context.bodyIndices, context.finalFlags, context.bodyCount) > 0)
 	{
@@ -1415,4 +1467,5 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	{
 		world->moveEvents.count = context.bodyCount;
 	}
+	CD2_PROFILE_MARK(world, sleepIslands);
 }

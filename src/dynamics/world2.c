@@ -2,13 +2,9 @@
 #include "world2_internal.h"
 #include "../broad/broad_internal.h"
 #include "../base/thread_pool.h"
-#ifdef CD2_STEP_TIMERS
-double cd2StepTimers[16];
-const char* cd2StepTimerNames[16];
-double cd2TimerLast_;
-#endif
 
 #include <stdio.h>
+#include <time.h>
 
 static cd2World* s_worlds[CD2_MAX_WORLDS];
 static uint16_t s_worldGenerations[CD2_MAX_WORLDS];
@@ -285,20 +281,36 @@ void cd2World_Step(cd2WorldId worldId, cdReal timeStep, int subStepCount)
 #ifdef CD2_VALIDATE_AWAKE_SETS
 	cd2AwakeSets_Validate(world);
 #endif
-	CD2_TIMER_BEGIN;
+	double stepStart = 0.0;
+	if (world->profiling)
+	{
+		memset(&world->profile, 0, sizeof(world->profile));
+		stepStart = cd2ProfileNow();
+		world->profileMark = stepStart;
+	}
 	cd2UpdateBroadPhasePairs(world);
-	CD2_TIMER_MARK(0, "pairs");
+	CD2_PROFILE_MARK(world, pairs);
 	cd2UpdateContacts(world, timeStep);
+	CD2_PROFILE_MARK(world, collide);
 	if (timeStep > CD_R(0.0))
 	{
+		double solveStart = world->profileMark;
 		cd2Solve(world, timeStep, subStepCount);
+		if (world->profiling)
+		{
+			world->profile.solve = (float)(1000.0 * (cd2ProfileNow() - solveStart));
+			world->profileMark = cd2ProfileNow();
+		}
 	}
-	CD2_TIMER_MARK(12, "sleep");
 #ifdef CD2_VALIDATE_AWAKE_SETS
 	cd2AwakeSets_Validate(world);
 #endif
 	cd2UpdateSensors(world);
-	CD2_TIMER_MARK(15, "sensors");
+	CD2_PROFILE_MARK(world, sensors);
+	if (world->profiling)
+	{
+		world->profile.step = (float)(1000.0 * (cd2ProfileNow() - stepStart));
+	}
 	cdArena_Reset(&world->arena);
 	world->stepSolveEntries = NULL;
 	world->stepTimeStep = CD_R(0.0);
@@ -370,6 +382,39 @@ void cd2World_SetUserData(cd2WorldId worldId, void* userData)
 	{
 		world->userData = userData;
 	}
+}
+
+double cd2ProfileNow(void)
+{
+	struct timespec t;
+	if (timespec_get(&t, TIME_UTC) == 0)
+	{
+		return 0.0;
+	}
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+void cd2World_EnableProfiling(cd2WorldId worldId, bool flag)
+{
+	cd2World* world = cd2GetWorld(worldId);
+	if (world == NULL)
+	{
+		return;
+	}
+	world->profiling = flag;
+	memset(&world->profile, 0, sizeof(world->profile));
+}
+
+cd2Profile cd2World_GetProfile(cd2WorldId worldId)
+{
+	cd2Profile profile;
+	memset(&profile, 0, sizeof(profile));
+	cd2World* world = cd2GetWorld(worldId);
+	if (world != NULL && world->profiling)
+	{
+		profile = world->profile;
+	}
+	return profile;
 }
 
 cd2Counters cd2World_GetCounters(cd2WorldId worldId)

@@ -5,39 +5,25 @@
 
 #include "collide/world2.h"
 
+#include <stddef.h>
+
 #include "../base/container.h"
 #include "../base/graph_color.h"
 #include "wide2.h"
 
-/* Profiling, off unless the library is built with -DCD2_STEP_TIMERS: the stepping thread's wall time
- * per part of the step, summed over the steps into cd2StepTimers[i] (seconds, named by
- * cd2StepTimerNames[i]; a program declares both extern and reads them). The parts "narrow",
- * "pair search", "tree rebuild", "setup stages" and "stages" run on the workers; the others are
- * serial. */
-#ifdef CD2_STEP_TIMERS
-#include <time.h>
-extern double cd2StepTimers[16];
-extern const char* cd2StepTimerNames[16];
-extern double cd2TimerLast_;
-static inline double cd2TimerNow(void)
-{
-	struct timespec t;
-	timespec_get(&t, TIME_UTC);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-#define CD2_TIMER_BEGIN (cd2TimerLast_ = cd2TimerNow())
-#define CD2_TIMER_MARK(i, name)                                                                              \
+/* The step's profile (cd2World_GetProfile): while world->profiling is on, the wall time since the
+ * last mark is added to world->profile.field (ms). */
+double cd2ProfileNow(void); /* seconds */
+#define CD2_PROFILE_MARK(world, field)                                                                       \
 	do                                                                                                       \
 	{                                                                                                        \
-		double cd2TimerT_ = cd2TimerNow();                                                                   \
-		cd2StepTimers[i] += cd2TimerT_ - cd2TimerLast_;                                                      \
-		cd2StepTimerNames[i] = name;                                                                         \
-		cd2TimerLast_ = cd2TimerT_;                                                                          \
+		if ((world)->profiling)                                                                              \
+		{                                                                                                    \
+			double cd2ProfileT_ = cd2ProfileNow();                                                           \
+			(world)->profile.field += (float)(1000.0 * (cd2ProfileT_ - (world)->profileMark));               \
+			(world)->profileMark = cd2ProfileT_;                                                             \
+		}                                                                                                    \
 	} while (0)
-#else
-#define CD2_TIMER_BEGIN ((void)0)
-#define CD2_TIMER_MARK(i, name) ((void)0)
-#endif
 
 #define CD2_NULL_INDEX (-1)
 
@@ -57,8 +43,10 @@ static inline double cd2TimerNow(void)
 typedef struct cd2Body
 {
 	uint32_t generation;
-	bool inUse;
+	/* What the step's setup reads and writes of every body, in its first cache line. */
+	bool inUse, awake, enabled;
 	cd2BodyType type;
+	int solverIndex;		/* in the step's dense awake arrays, or CD2_NULL_INDEX */
 	cd2Transform transform; /* of the body origin */
 	cd2Vec center;			/* world centre of mass */
 	cd2Vec center0;			/* at the start of the step (continuous collision) */
@@ -71,13 +59,12 @@ typedef struct cd2Body
 	cdReal mass, invMass, inertia, invInertia;
 	cdReal linearDamping, angularDamping, gravityScale, sleepThreshold, sleepTime;
 	cdReal minExtent, maxExtent; /* of the shapes about the centre of mass */
-	bool enableSleep, awake, fixedRotation, isBullet, enabled, customMass, isFast;
+	bool enableSleep, fixedRotation, isBullet, customMass, isFast;
 	int headShape, shapeCount;
 	int headContactKey; /* contact edge key: contactIndex << 1 | side */
 	int headJointKey;
 	int islandId; /* sleeping island, or CD2_NULL_INDEX */
 	int islandNext;
-	int solverIndex; /* in the step's dense awake arrays, or CD2_NULL_INDEX */
 	void* userData;
 } cd2Body;
 
@@ -120,19 +107,26 @@ typedef struct cd2ChainRec
 } cd2ChainRec;
 
 /* ---- contacts -------------------------------------------------------------------------------- */
+/* A contact point as the solver reads and writes it (the prepare and the store): kept apart from the
+ * narrowphase's data below so that a contact's solver fields share few cache lines. */
 typedef struct cd2ContactPoint
 {
 	cd2Vec anchorA, anchorB; /* from the centres of mass to the point, world orientation */
-	cd2Vec point;			 /* world, at the last update */
 	cdReal separation;
-	uint32_t id;
 	cdReal normalImpulse, tangentImpulse, maxNormalImpulse;
+} cd2ContactPoint;
+
+/* The rest of a contact point: its world point and feature id, the approach speed for hit events,
+ * and for recycling (see cd2UpdateContacts) the point in A's and in B's body frame and its
+ * separation when the narrowphase last ran. */
+typedef struct cd2ContactPointCache
+{
+	cd2Vec point; /* world, at the last update */
+	uint32_t id;
 	cdReal relativeVelocity; /* normal approach speed at the start of the step (negative: closing) */
-	/* Recycling (see cd2UpdateContacts): the point in A's and in B's body frame and its separation
-	 * when the narrowphase last ran. */
 	cd2Vec localPointA, localPointB;
 	cdReal baseSeparation;
-} cd2ContactPoint;
+} cd2ContactPointCache;
 
 enum
 {
@@ -148,23 +142,47 @@ enum
 	CD2_CONTACT_SIM_UPDATED = 1 << 8
 };
 
+/* A contact record is CD2_CONTACT_BYTES long, a multiple of 64, and starts with the fields the
+ * solver's prepare and store read and write: in the float build they are 96 bytes, so in an array
+ * aligned to 32 bytes (cdAlloc) they always lie in two cache lines. The solver visits the records
+ * colour by colour, far apart; fewer lines per record is most of its prepare's time. */
+#if CD_DOUBLE
+#define CD2_CONTACT_BYTES 448
+#else
+#define CD2_CONTACT_BYTES 256
+#endif
+
 typedef struct cd2Contact
 {
-	bool inUse;
-	uint32_t flags;
-	int shapeA, shapeB, bodyA, bodyB;
-	int prevKey[2], nextKey[2]; /* edges in bodyA's (0) and bodyB's (1) lists */
-	cd2Vec normal;				/* world, from A to B */
-	int pointCount;
-	cd2ContactPoint points[2];
-	cdReal rollingImpulse;
-	cdReal friction, restitution, rollingResistance, tangentSpeed;
-	/* Recycling: the normal in A's body frame, B's body frame in A's and the speculative distance
-	 * when the narrowphase last ran. */
-	cd2Vec localNormal;
-	cd2Transform cachedPose;
-	cdReal cachedSpeculative;
+	union
+	{
+		struct
+		{
+			/* What the solver reads and writes, together. */
+			cd2Vec normal; /* world, from A to B */
+			int pointCount;
+			cdReal rollingImpulse;
+			cdReal friction, restitution, rollingResistance, tangentSpeed;
+			cd2ContactPoint points[2];
+			/* The rest. */
+			cd2ContactPointCache cache[2]; /* of points[k] */
+			bool inUse;
+			uint32_t flags;
+			int shapeA, shapeB, bodyA, bodyB;
+			int prevKey[2], nextKey[2]; /* edges in bodyA's (0) and bodyB's (1) lists */
+			/* Recycling: the normal in A's body frame, B's body frame in A's and the speculative
+			 * distance when the narrowphase last ran. */
+			cd2Vec localNormal;
+			cd2Transform cachedPose;
+			cdReal cachedSpeculative;
+		};
+		unsigned char bytes[CD2_CONTACT_BYTES];
+	};
 } cd2Contact;
+
+_Static_assert(sizeof(cd2Contact) == CD2_CONTACT_BYTES, "cd2Contact: the fields outgrew CD2_CONTACT_BYTES");
+_Static_assert(CD_DOUBLE || offsetof(cd2Contact, cache) == 96,
+			   "cd2Contact: the solver's fields must be 96 bytes");
 
 /* ---- joints ---------------------------------------------------------------------------------- */
 typedef struct cd2Softness
@@ -388,6 +406,9 @@ typedef struct cd2StepContext
 	/* The slots of `joints` in joint index order (memory order), for the prepare stage. */
 	int* jointIndexOrder;
 	bool enableWarmStarting;
+	/* Some touching contact has hit events: the store writes the points' approach speeds (only hit
+	 * events read them; without any the store leaves that line of the records alone). */
+	bool storeApproach;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
 	/* The step's move events, one per solver body, written by index (NULL: out of memory). */
@@ -498,6 +519,10 @@ typedef struct cd2World
 	/* The solver's last colourings (solver2.c). */
 	cd2ColorCache contactColorCache;
 	cd2ColorCache jointColorCache;
+	/* cd2World_GetProfile: the last step's, and the time of the last mark (seconds). */
+	bool profiling;
+	cd2Profile profile;
+	double profileMark;
 } cd2World;
 
 /* ---- world2.c -------------------------------------------------------------------------------- */
