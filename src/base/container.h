@@ -61,12 +61,12 @@ static inline int cdIdPool_GetCount(const cdIdPool* pool)
 }
 
 /* ---- pair set (pair_set.c) -------------------------------------------------------------------
- * Open-addressing hash map from a 64-bit key (two 32-bit ids) to an int value. */
+ * Open-addressing hash set of 64-bit keys (two 32-bit ids). Keys only: a lookup, made for every
+ * overlap the broadphase reports, touches one array. */
 typedef struct cdPairSet
 {
 	uint64_t* keys; /* 0 = empty slot; stored keys are key + 1 */
-	int* values;
-	int capacity; /* power of two */
+	int capacity;	/* power of two */
 	int count;
 } cdPairSet;
 
@@ -78,10 +78,9 @@ static inline uint64_t cdPairKey(int a, int b)
 
 void cdPairSet_Destroy(cdPairSet* set);
 void cdPairSet_Clear(cdPairSet* set);
-/* Returns false when memory runs out. Adding an existing key replaces its value. */
-bool cdPairSet_Add(cdPairSet* set, uint64_t key, int value);
-/* The value, or -1 when absent. */
-int cdPairSet_Find(const cdPairSet* set, uint64_t key);
+/* Returns false when memory runs out. Adding an existing key changes nothing. */
+bool cdPairSet_Add(cdPairSet* set, uint64_t key);
+bool cdPairSet_Contains(const cdPairSet* set, uint64_t key);
 bool cdPairSet_Remove(cdPairSet* set, uint64_t key);
 
 /* ---- bit set ------------------------------------------------------------------------------------ */

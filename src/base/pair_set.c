@@ -1,5 +1,5 @@
-/* collide: hash map from 64-bit pair keys to ints, open addressing with linear probing and
- * backward-shift deletion (no tombstones, so lookups stay short after many removals). */
+/* collide: hash set of 64-bit pair keys, open addressing with linear probing and backward-shift
+ * deletion (no tombstones, so lookups stay short after many removals). */
 #include "container.h"
 
 static uint32_t cdHashKey(uint64_t key)
@@ -13,7 +13,6 @@ static uint32_t cdHashKey(uint64_t key)
 void cdPairSet_Destroy(cdPairSet* set)
 {
 	cdFree(set->keys);
-	cdFree(set->values);
 	memset(set, 0, sizeof(*set));
 }
 
@@ -30,11 +29,8 @@ static bool cdPairSet_Grow(cdPairSet* set)
 {
 	int capacity = set->capacity == 0 ? 32 : 2 * set->capacity;
 	uint64_t* keys = (uint64_t*)cdAlloc((size_t)capacity * sizeof(uint64_t));
-	int* values = (int*)cdAlloc((size_t)capacity * sizeof(int));
-	if (keys == NULL || values == NULL)
+	if (keys == NULL)
 	{
-		cdFree(keys);
-		cdFree(values);
 		return false;
 	}
 	memset(keys, 0, (size_t)capacity * sizeof(uint64_t));
@@ -52,17 +48,14 @@ static bool cdPairSet_Grow(cdPairSet* set)
 			slot = (slot + 1) & mask;
 		}
 		keys[slot] = stored;
-		values[slot] = set->values[i];
 	}
 	cdFree(set->keys);
-	cdFree(set->values);
 	set->keys = keys;
-	set->values = values;
 	set->capacity = capacity;
 	return true;
 }
 
-bool cdPairSet_Add(cdPairSet* set, uint64_t key, int value)
+bool cdPairSet_Add(cdPairSet* set, uint64_t key)
 {
 	if (2 * (set->count + 1) > set->capacity && !cdPairSet_Grow(set))
 	{
@@ -74,13 +67,11 @@ bool cdPairSet_Add(cdPairSet* set, uint64_t key, int value)
 	{
 		if (set->keys[slot] == key + 1)
 		{
-			set->values[slot] = value;
 			return true;
 		}
 		slot = (slot + 1) & mask;
 	}
 	set->keys[slot] = key + 1;
-	set->values[slot] = value;
 	set->count += 1;
 	return true;
 }
@@ -104,10 +95,9 @@ static int cdPairSet_Slot(const cdPairSet* set, uint64_t key)
 	return -1;
 }
 
-int cdPairSet_Find(const cdPairSet* set, uint64_t key)
+bool cdPairSet_Contains(const cdPairSet* set, uint64_t key)
 {
-	int slot = cdPairSet_Slot(set, key);
-	return slot < 0 ? -1 : set->values[slot];
+	return cdPairSet_Slot(set, key) >= 0;
 }
 
 bool cdPairSet_Remove(cdPairSet* set, uint64_t key)
@@ -128,7 +118,6 @@ bool cdPairSet_Remove(cdPairSet* set, uint64_t key)
 		if (!between)
 		{
 			set->keys[hole] = set->keys[next];
-			set->values[hole] = set->values[next];
 			hole = next;
 		}
 		next = (next + 1) & mask;

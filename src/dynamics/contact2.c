@@ -237,7 +237,7 @@ static void cd2CreateContact(cd2World* world, int indexA, int indexB)
 	}
 	int index = cdIdPool_Alloc(&world->contactPool);
 	if (index < 0 || !cdArrayReserveFor(world->contacts, index + 1) ||
-		!cdPairSet_Add(&world->pairs, cdPairKey(indexA, indexB), index))
+		!cdPairSet_Add(&world->pairs, cdPairKey(indexA, indexB)))
 	{
 		if (index >= 0)
 		{
@@ -308,7 +308,7 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 	int indexA = cd2ProxyShape(userDataA), indexB = cd2ProxyShape(userDataB);
 	uint64_t key = cdPairKey(indexA, indexB);
 	/* Most overlaps of moved boxes already have their contact. */
-	if (cdPairSet_Find(&world->pairs, key) >= 0 || !world->shapes.data[indexA].inUse ||
+	if (cdPairSet_Contains(&world->pairs, key) || !world->shapes.data[indexA].inUse ||
 		!world->shapes.data[indexB].inUse || !cd2ShouldCreateContact(world, indexA, indexB))
 	{
 		return;

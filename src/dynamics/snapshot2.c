@@ -351,7 +351,7 @@ cdResult cd2World_RestoreState(cd2WorldId worldId, const void* buffer, size_t si
 		const cd2Contact* c = s.contacts.data + i;
 		if (c->inUse)
 		{
-			memoryOk = cdPairSet_Add(&pairs, cdPairKey(c->shapeA, c->shapeB), i);
+			memoryOk = cdPairSet_Add(&pairs, cdPairKey(c->shapeA, c->shapeB));
 		}
 	}
 	if (!memoryOk)
