@@ -84,6 +84,45 @@ static inline __m128 cd2SeparationLanes(__m128 nx, __m128 ny, __m128 vx, __m128 
 	}
 	return lowest;
 }
+
+/* The separations of B from A's edges 0-3 (low) and 4-7 (high; low again for up to four edges),
+ * and their maximum in every lane of *top. Lanes past the count repeat edge 0: a copy never beats
+ * the first edge under the first-maximum rule. */
+static inline void cd2SeparationLanes8(const cd2Vec* normals, const cd2Vec* vertices, int count,
+									   const cd2Vec* others, int otherCount, __m128* low, __m128* high,
+									   __m128* top)
+{
+	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+	__m128 nx, ny, vx, vy;
+	cd2SeparationLoad4(normals, 0, i1, i2, i3, &nx, &ny);
+	cd2SeparationLoad4(vertices, 0, i1, i2, i3, &vx, &vy);
+	*low = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
+	*high = *low;
+	if (count > 4)
+	{
+		int i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
+		cd2SeparationLoad4(normals, 4, i5, i6, i7, &nx, &ny);
+		cd2SeparationLoad4(vertices, 4, i5, i6, i7, &vx, &vy);
+		*high = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
+	}
+	__m128 t = _mm_max_ps(*low, *high);
+	t = _mm_max_ps(t, _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2)));
+	*top = _mm_max_ps(t, _mm_shuffle_ps(t, t, _MM_SHUFFLE(2, 3, 0, 1)));
+}
+
+/* The first edge whose lane equals the maximum top (-0 and +0 compare equal, as under the scalar
+ * rule), and that lane's value. */
+static inline int cd2SeparationFirstLane(__m128 low, __m128 high, __m128 top, cdReal* value)
+{
+	int lanes = _mm_movemask_ps(_mm_cmpeq_ps(low, top)) | _mm_movemask_ps(_mm_cmpeq_ps(high, top)) << 4;
+	static const int8_t FIRST_LANE[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	int first = (lanes & 15) != 0 ? FIRST_LANE[lanes & 15] : 4 + FIRST_LANE[lanes >> 4];
+	float values[8];
+	_mm_storeu_ps(values, low);
+	_mm_storeu_ps(values + 4, high);
+	*value = values[first];
+	return first;
+}
 #endif
 
 #if CD2_SEPARATION_WASM
@@ -123,32 +162,10 @@ static inline cdReal cd2MaxSeparation(const cd2Vec* normals, const cd2Vec* verti
 	_Static_assert(sizeof(cd2Vec) == 2 * sizeof(float), "cd2Vec must be two packed floats");
 	_Static_assert(CD2_MAX_POLYGON_VERTICES <= 8, "two groups of four edges");
 	CD_ASSERT(count >= 1 && count <= CD2_MAX_POLYGON_VERTICES && otherCount >= 1);
-	/* Lanes past the count repeat edge 0: a copy never beats the first edge under the
-	 * first-maximum rule. */
-	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
-	__m128 nx, ny, vx, vy;
-	cd2SeparationLoad4(normals, 0, i1, i2, i3, &nx, &ny);
-	cd2SeparationLoad4(vertices, 0, i1, i2, i3, &vx, &vy);
-	__m128 low = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
-	__m128 high = low;
-	if (count > 4)
-	{
-		int i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
-		cd2SeparationLoad4(normals, 4, i5, i6, i7, &nx, &ny);
-		cd2SeparationLoad4(vertices, 4, i5, i6, i7, &vx, &vy);
-		high = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
-	}
-	__m128 top = _mm_max_ps(low, high);
-	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(1, 0, 3, 2)));
-	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
-	/* The first lane equal to the maximum (-0 and +0 compare equal, as under the scalar rule). */
-	int lanes = _mm_movemask_ps(_mm_cmpeq_ps(low, top)) | _mm_movemask_ps(_mm_cmpeq_ps(high, top)) << 4;
-	static const int8_t FIRST_LANE[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
-	int first = (lanes & 15) != 0 ? FIRST_LANE[lanes & 15] : 4 + FIRST_LANE[lanes >> 4];
-	float values[8];
-	_mm_storeu_ps(values, low);
-	_mm_storeu_ps(values + 4, high);
-	cdReal best = values[first];
+	__m128 low, high, top;
+	cd2SeparationLanes8(normals, vertices, count, others, otherCount, &low, &high, &top);
+	cdReal best;
+	int first = cd2SeparationFirstLane(low, high, top, &best);
 	/* The scalar scan starts from -CD_REAL_MAX and keeps edge 0 when nothing exceeds it. */
 	if (!(best > -CD_REAL_MAX))
 	{
@@ -210,33 +227,14 @@ static inline bool cd2MaxSeparationWithin(const cd2Vec* normals, const cd2Vec* v
 {
 #if CD2_SEPARATION_SSE
 	CD_ASSERT(count >= 1 && count <= CD2_MAX_POLYGON_VERTICES && otherCount >= 1);
-	int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
-	__m128 nx, ny, vx, vy;
-	cd2SeparationLoad4(normals, 0, i1, i2, i3, &nx, &ny);
-	cd2SeparationLoad4(vertices, 0, i1, i2, i3, &vx, &vy);
-	__m128 low = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
-	__m128 high = low;
-	if (count > 4)
-	{
-		int i5 = count > 5 ? 5 : 0, i6 = count > 6 ? 6 : 0, i7 = count > 7 ? 7 : 0;
-		cd2SeparationLoad4(normals, 4, i5, i6, i7, &nx, &ny);
-		cd2SeparationLoad4(vertices, 4, i5, i6, i7, &vx, &vy);
-		high = cd2SeparationLanes(nx, ny, vx, vy, others, otherCount);
-	}
-	__m128 top = _mm_max_ps(low, high);
-	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(1, 0, 3, 2)));
-	top = _mm_max_ps(top, _mm_shuffle_ps(top, top, _MM_SHUFFLE(2, 3, 0, 1)));
+	__m128 low, high, top;
+	cd2SeparationLanes8(normals, vertices, count, others, otherCount, &low, &high, &top);
 	if (_mm_cvtss_f32(top) > limit)
 	{
 		return false;
 	}
-	int lanes = _mm_movemask_ps(_mm_cmpeq_ps(low, top)) | _mm_movemask_ps(_mm_cmpeq_ps(high, top)) << 4;
-	static const int8_t FIRST_LANE_WITHIN[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
-	int first = (lanes & 15) != 0 ? FIRST_LANE_WITHIN[lanes & 15] : 4 + FIRST_LANE_WITHIN[lanes >> 4];
-	float values[8];
-	_mm_storeu_ps(values, low);
-	_mm_storeu_ps(values + 4, high);
-	cdReal best = values[first];
+	cdReal best;
+	int first = cd2SeparationFirstLane(low, high, top, &best);
 	if (!(best > -CD_REAL_MAX))
 	{
 		first = 0;
