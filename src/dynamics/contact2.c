@@ -119,6 +119,13 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 				break;
 		}
 	}
+	else if (shapeA->type == CD2_WORLD_SHAPE_POLYGON && shapeB->type == CD2_WORLD_SHAPE_CIRCLE)
+	{
+		/* Stored polygon first: the polygon-first form places only the centre and maps nothing back,
+		 * the same bits as the table's swapped circle-polygon call (the circle placed by xfAB, the
+		 * normal flipped) without the flip or the world-space form's edge search. */
+		return cd2CollidePolygonCircleLocal(&shapeA->geometry.polygon, shapeB->geometry.circle, xfAB, sd);
+	}
 	else
 	{
 		switch (CD2_WORLD_PAIR_KEY(shapeA->type, shapeB->type))
