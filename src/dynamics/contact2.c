@@ -121,9 +121,10 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 	}
 	else if (shapeA->type == CD2_WORLD_SHAPE_POLYGON && shapeB->type == CD2_WORLD_SHAPE_CIRCLE)
 	{
-		/* Stored polygon first: the polygon-first form places only the centre and maps nothing back,
-		 * the same bits as the table's swapped circle-polygon call (the circle placed by xfAB, the
-		 * normal flipped) without the flip or the world-space form's edge search. */
+		/* Stored polygon first: the polygon-first form places only the centre and maps nothing back.
+		 * Every contact is the table's swapped circle-polygon call's (the circle placed by xfAB, the
+		 * normal flipped) bit for bit, without the flip or the world-space form's edge search; an
+		 * empty manifold's zero normal is +0 where the flip made it -0. */
 		return cd2CollidePolygonCircleLocal(&shapeA->geometry.polygon, shapeB->geometry.circle, xfAB, sd);
 	}
 	else

@@ -1275,14 +1275,21 @@ cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Tr
 	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
 	__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
 	__m128 origin = PairLanes(xfB.p);
+	__m128 local = PairLanes(b.center);
+	/* A circle centred on its body (the common case) lands on xfB.p: the rotated zero centre
+	 * (zeros) plus a non-zero translation is the translation exactly, and skipping the rotation
+	 * takes xfB.q (composed last by the caller) off the path to the first edge test. Tested
+	 * in lanes: both centre coordinates zero and both translation coordinates non-zero (a zero
+	 * translation coordinate takes the sum, whose zero sign can differ). */
+	__m128 zero = _mm_setzero_ps();
 	__m128 placed;
-	if ((b.center.x == CD_R(0.0)) & (b.center.y == CD_R(0.0)) & (xfB.p.x != CD_R(0.0)) & (xfB.p.y != CD_R(0.0)))
+	if ((_mm_movemask_ps(_mm_and_ps(_mm_cmpeq_ps(local, zero), _mm_cmpneq_ps(origin, zero))) & 3) == 3)
 	{
 		placed = origin;
 	}
 	else
 	{
-		placed = _mm_add_ps(RotateLanes(cosine, forwardSine, PairLanes(b.center)), origin);
+		placed = _mm_add_ps(RotateLanes(cosine, forwardSine, local), origin);
 	}
 	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
 	cd2Manifold m;

@@ -162,7 +162,8 @@ cd2Manifold cd2CollideLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform x
 	}
 	if (a->type == CD2_SHAPE_POLYGON && b->type == CD2_SHAPE_CIRCLE)
 	{
-		/* The same bits as cd2Collide on the placed circle (the circle-polygon core, normal flipped). */
+		/* The same contact bit for bit as cd2Collide on the placed circle (the circle-polygon core,
+		 * normal flipped); an empty manifold's zero normal is +0 where the flip made it -0. */
 		return cd2CollidePolygonCircleLocal(&a->polygon, b->circle, xfB, speculativeDistance);
 	}
 	return CollidePlaced(a, b, xfB, speculativeDistance);
