@@ -392,11 +392,182 @@ static void TestCirclePolygonScan(void)
 	TEST_CHECK(contacts > 5000 && vertexContacts > 1000 && empty > 5000 && ties > 100);
 }
 
+/* The polygon-first forms. cd2CollidePolygonCircle against cd2CollideCirclePolygon with the shapes
+ * swapped: the same points, separations and ids bit for bit, the normal negated (manifold2.h).
+ * cd2CollidePolygonCircleLocal against cd2CollidePolygonCircle on the circle placed by
+ * cd2TransformPoint: bit for bit (the local-form contract), and cd2CollideLocal on the tagged
+ * shapes gives the same bits. Against the circle-first local form with the inverse transform
+ * (which takes the centre back into the polygon's frame and maps the contact into the circle's):
+ * the same contact within round-off with the opposite normal, the same ids except where two
+ * features tie within round-off. Centres aimed at every feature (on and near vertices, on edges,
+ * inside, far away), circles centred on their body or not, and exact transforms (the identity,
+ * quarter turns, zero and negative-zero translations) as well as random ones. */
+static cd2Transform InverseOf(cd2Transform xf)
+{
+	cd2Transform inv;
+	inv.q.c = xf.q.c;
+	inv.q.s = -xf.q.s;
+	inv.p = cd2Neg(cd2InvRotateVector(xf.q, xf.p));
+	return inv;
+}
+
+static void TestPolygonCircle(void)
+{
+	TestRng rng = TestRngMake(0x9c1cu);
+	int contacts = 0, vertexContacts = 0, empty = 0, near = 0, mismatches = 0, ties = 0, exactTransforms = 0;
+	int trials = 40000;
+	for (int trial = 0; trial < trials; ++trial)
+	{
+		cd2Polygon polygon;
+		if (trial % 16 == 0)
+		{
+			cdReal h = RandomReal(&rng, 0.1, 2.0);
+			cd2Vec corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+			TEST_CHECK(cd2MakePolygon(corners, 4, &polygon) == CD_OK);
+		}
+		else
+		{
+			polygon = RandomPolygon(&rng, RandomVec(&rng, 0.3));
+			polygon.radius = TestRngInt(&rng, 3) == 0 ? RandomReal(&rng, 0.0, 0.2) : CD_R(0.0);
+		}
+		/* xf: the circle's body frame in the polygon's. */
+		cd2Transform xf;
+		int kind = TestRngInt(&rng, 8);
+		if (kind < 3)
+		{
+			/* Exact: a quarter turn (identity included), a translation with zero or negative-zero
+			 * components or none. */
+			static const cdReal turns[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+			int turn = TestRngInt(&rng, 4);
+			xf.q.c = turns[turn][0];
+			xf.q.s = turns[turn][1];
+			xf.p = kind == 0 ? CD2_VEC_ZERO : RandomVec(&rng, 3.0);
+			if (kind == 1)
+			{
+				xf.p.x = TestRngInt(&rng, 2) == 0 ? CD_R(0.0) : -CD_R(0.0);
+			}
+			++exactTransforms;
+		}
+		else
+		{
+			xf = RandomTransform(&rng, 10.0);
+		}
+		/* The centre's target in the polygon's frame. */
+		int v = TestRngInt(&rng, polygon.count);
+		cd2Vec vertex = polygon.vertices[v], after = polygon.vertices[(v + 1) % polygon.count];
+		cd2Vec target;
+		switch (trial % 8)
+		{
+			case 0:
+				target = vertex;
+				break;
+			case 1:
+				target = cd2Add(vertex, RandomVec(&rng, 0.3));
+				break;
+			case 2:
+				target = cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0));
+				break;
+			case 3:
+				target = cd2MulAdd(cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0)),
+								   RandomReal(&rng, -0.3, 0.6), polygon.normals[v]);
+				break;
+			case 4:
+				target = trial % 16 == 4 ? CD2_VEC_ZERO : polygon.centroid;
+				break;
+			case 5:
+				target = RandomVec(&rng, 5.0);
+				break;
+			default:
+				target = RandomVec(&rng, 1.5);
+				break;
+		}
+		/* The circle in its body's frame: centred on the body (the common case) or not, placed so
+		 * that its centre lands on the target. */
+		cd2Circle circle;
+		circle.radius = RandomSize(&rng, 0.8);
+		circle.center = TestRngInt(&rng, 2) == 0 ? CD2_VEC_ZERO : RandomVec(&rng, 1.0);
+		cd2Transform body = xf;
+		body.p = cd2Sub(target, cd2RotateVector(xf.q, circle.center));
+		if (kind == 0 || (kind == 1 && TestRngInt(&rng, 2) == 0))
+		{
+			body.p = xf.p; /* keep the exact translation */
+		}
+		cdReal speculative = (cdReal)(0.1 * TestRngInt(&rng, 3));
+
+		cd2Manifold local = cd2CollidePolygonCircleLocal(&polygon, circle, body, speculative);
+		cd2Circle placed = circle;
+		placed.center = cd2TransformPoint(body, circle.center);
+		cd2Manifold world = cd2CollidePolygonCircle(&polygon, placed, speculative);
+		TEST_CHECKF(SameBits(local, world), "trial %d: local %d/%d points, id %u/%u", trial, local.pointCount,
+					world.pointCount, local.points[0].id, world.points[0].id);
+
+		/* The world form is the circle-first one with the normal negated. */
+		cd2Manifold swapped = cd2CollideCirclePolygon(placed, &polygon, speculative);
+		swapped.normal = cd2Neg(swapped.normal);
+		TEST_CHECKF(SameBits(world, swapped), "trial %d: polygon-first against circle-first", trial);
+
+		/* The dispatcher on tagged shapes. */
+		cd2Shape sa = cd2MakePolygonShape(&polygon);
+		cd2Shape sb;
+		sb.type = CD2_SHAPE_CIRCLE;
+		sb.circle = circle;
+		TEST_CHECKF(SameBits(cd2CollideLocal(&sa, &sb, body, speculative), local), "trial %d: cd2CollideLocal",
+					trial);
+
+		/* The circle-first local form from the circle's frame, mapped into the polygon's. */
+		cd2Manifold first = cd2CollideCirclePolygonLocal(circle, &polygon, InverseOf(body), speculative);
+		cd2Manifold mapped = cd2TransformManifold(body, first);
+		mapped.normal = cd2Neg(mapped.normal);
+		double scale = 1.0 + fabs((double)body.p.x) + fabs((double)body.p.y);
+		if (Near(local, mapped, 32.0 * (double)CD_REAL_EPSILON * scale))
+		{
+			++near;
+		}
+		else
+		{
+			/* A tie decided the other way by round-off: the other feature's contact is then just as
+			 * deep, so the separations still agree. Centres aimed exactly at a vertex or at the
+			 * polygon's centre are ties by construction (two edges, or all, equally near). */
+			bool tieByConstruction = trial % 8 == 0 || trial % 8 == 4;
+			ties += tieByConstruction;
+			mismatches += !tieByConstruction;
+			double tie = 64.0 * (double)CD_REAL_EPSILON * scale;
+			bool sameDepth = local.pointCount == mapped.pointCount &&
+							 (local.pointCount == 0 ||
+							  fabs((double)local.points[0].separation - (double)mapped.points[0].separation) <= tie);
+			/* Or at the speculative limit, where one form keeps the contact and the other drops it. */
+			bool atLimit =
+				(local.pointCount == 1 && fabs((double)local.points[0].separation - (double)speculative) <= tie) ||
+				(mapped.pointCount == 1 && fabs((double)mapped.points[0].separation - (double)speculative) <= tie);
+			TEST_CHECKF(sameDepth || atLimit, "trial %d: circle-first %d points sep %.9g, polygon-first %d sep %.9g",
+						trial, mapped.pointCount, (double)mapped.points[0].separation, local.pointCount,
+						(double)local.points[0].separation);
+		}
+
+		if (local.pointCount == 1)
+		{
+			/* The reported normal and depth: the centre lies along the normal at the radius plus
+			 * the separation (plus the polygon's radius) from A's surface point. */
+			TEST_CHECK(isfinite((double)local.normal.x) && isfinite((double)local.normal.y));
+			TEST_CHECK_NEAR((double)cd2Length(local.normal), 1.0, 1e-5);
+		}
+		contacts += local.pointCount;
+		vertexContacts += local.pointCount == 1 && (local.points[0].id & 0x100u) != 0u;
+		empty += local.pointCount == 0;
+	}
+	printf("polygon-circle: %d contacts (%d at vertices), %d empty, %d exact transforms; circle-first "
+		   "form within round-off on %d, a tie by construction on %d, other differences %d\n",
+		   contacts, vertexContacts, empty, exactTransforms, near, ties, mismatches);
+	TEST_CHECK(contacts > 5000 && vertexContacts > 1000 && empty > 5000 && exactTransforms > 10000);
+	TEST_CHECKF(mismatches <= trials / 100, "%d of %d pairs differ beyond round-off", mismatches, trials);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSameAsWorldForm);
 	TEST_RUN(TestMovedBodies);
 	TEST_RUN(TestFarFromOrigin);
 	TEST_RUN(TestCirclePolygonScan);
+	TEST_RUN(TestPolygonCircle);
 	return TEST_SUMMARY();
 }

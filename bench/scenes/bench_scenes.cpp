@@ -11,6 +11,10 @@
 // - 2D distance: B's polygon is moved into A's frame in the loop (vertices and normals) and
 //   cd2Distance is called, or cd2DistanceLocal gets B's local polygon and the transform; Box2D's
 //   b2Distance gets the two local proxies and the transforms, from a cold simplex cache;
+// - circle-polygon manifolds: collide's circle-first call (the circle as A: its centre taken into
+//   the polygon's frame and the contact mapped back into the circle's) and its polygon-first call
+//   (cd2CollidePolygonCircleLocal, the polygon as A as in b2CollidePolygonAndCircle: only the
+//   centre is placed, the contact reported in the polygon's frame);
 // - time of impact: both take local shapes and two sweeps (A at rest, B translating and rotating
 //   from separated to overlapping); target separation one linear slop, tolerance a quarter slop;
 // - mesh rays: the closest hit of each ray (segment of length 30) on the height field.
@@ -563,6 +567,23 @@ int main(int argc, char** argv)
 									}});
 #endif
 		Row(o, "2D manifold circle-polygon, world output", SC_NPAIRS, mineWorld, worldPeers);
+
+		// The polygon as A, as Box2D 2.4's call takes it (and as a solver in collide calls it for a
+		// contact stored polygon first): only the circle's centre is placed in the polygon's frame,
+		// and the manifold is reported there.
+		auto polygonFirst = [&s, skin](int i) {
+			cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.xfCircle[(size_t)i]);
+			return cd2CollidePolygonCircleLocal(&s.a[(size_t)i].local, s.circle[(size_t)i], xf, skin)
+				.pointCount;
+		};
+		Row(o, "2D manifold polygon-circle", SC_NPAIRS, polygonFirst, peers);
+		auto polygonFirstWorld = [&s, skin](int i) {
+			cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.xfCircle[(size_t)i]);
+			return WorldOutput(
+				cd2CollidePolygonCircleLocal(&s.a[(size_t)i].local, s.circle[(size_t)i], xf, skin),
+				s.a[(size_t)i].xf);
+		};
+		Row(o, "2D manifold polygon-circle, world output", SC_NPAIRS, polygonFirstWorld, worldPeers);
 	}
 	{
 		Toi2 s = MakeToi2();

@@ -9,7 +9,9 @@
  * point + separation/2 * normal on B's. A pair with pointCount 0 has no contact (its normal is
  * zero). Segments are zero-radius capsules: two segments (no area) only touch where they cross
  * or come within the speculative distance. Functions name their shapes in the canonical order
- * Circle, Capsule, Polygon, Segment; cd2Collide takes tagged shapes in either order.
+ * Circle, Capsule, Polygon, Segment (cd2CollidePolygonCircle, the polygon-first form of
+ * cd2CollideCirclePolygon, is the one addition out of that order); cd2Collide takes tagged shapes
+ * in either order.
  *
  * Reference edge bias (the one statement of this rule; docs/API.md links here): between two
  * polygon-like cores (polygons, boxes, AABBs, capsules and segments as their axes) the reference
@@ -66,6 +68,10 @@ CD_API cd2Manifold cd2CollideCircleCircle(cd2Circle a, cd2Circle b, cdReal specu
 CD_API cd2Manifold cd2CollideCircleCapsule(cd2Circle a, cd2Capsule b, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCirclePolygon(cd2Circle a, const cd2Polygon* b, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCircleSegment(cd2Circle a, cd2Segment b, cdReal speculativeDistance);
+/* The one pair also offered out of canonical order, for a solver that keeps the polygon as A: the
+ * same points, separations and feature ids as cd2CollideCirclePolygon(b, a, ...), bit for bit,
+ * with the opposite normal (from the polygon to the circle). */
+CD_API cd2Manifold cd2CollidePolygonCircle(const cd2Polygon* a, cd2Circle b, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsuleCapsule(cd2Capsule a, cd2Capsule b, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsulePolygon(cd2Capsule a, const cd2Polygon* b, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsuleSegment(cd2Capsule a, cd2Segment b, cdReal speculativeDistance);
@@ -109,6 +115,14 @@ CD_API cd2Manifold cd2CollideCircleCapsuleLocal(cd2Circle a, cd2Capsule b, cd2Tr
 CD_API cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
 												cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Transform xfB,
+												cdReal speculativeDistance);
+/* The polygon as A: only the circle's centre is placed (cd2TransformPoint(xfB, b.center)) and the
+ * manifold is built in the polygon's frame, nothing mapped back; bit for bit
+ * cd2CollidePolygonCircle(a, placed circle). The cheapest way to collide a circle with a polygon:
+ * cd2CollideCirclePolygonLocal(b, a, inverse of xfB) gives the same contact within round-off
+ * with the opposite normal, but takes the centre back into the polygon's frame and maps the
+ * manifold back into the circle's. */
+CD_API cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Transform xfB,
 												cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsuleCapsuleLocal(cd2Capsule a, cd2Capsule b, cd2Transform xfB,
 												 cdReal speculativeDistance);

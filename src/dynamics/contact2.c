@@ -119,6 +119,14 @@ cd2Manifold cd2ContactCollide(const cd2WorldShape* shapeA, const cd2WorldShape* 
 				break;
 		}
 	}
+	else if (shapeA->type == CD2_WORLD_SHAPE_POLYGON && shapeB->type == CD2_WORLD_SHAPE_CIRCLE)
+	{
+		/* Stored polygon first: the polygon-first form places only the centre and maps nothing back.
+		 * Every contact is the table's swapped circle-polygon call's (the circle placed by xfAB, the
+		 * normal flipped) bit for bit, without the flip or the world-space form's edge search; an
+		 * empty manifold's zero normal is +0 where the flip made it -0. */
+		return cd2CollidePolygonCircleLocal(&shapeA->geometry.polygon, shapeB->geometry.circle, xfAB, sd);
+	}
 	else
 	{
 		switch (CD2_WORLD_PAIR_KEY(shapeA->type, shapeB->type))

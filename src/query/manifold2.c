@@ -1116,37 +1116,21 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 }
 #endif
 
-/* The circle's centre into the polygon's frame, the manifold built there and mapped back in
- * place (a manifold returned by one call and copied by the next waited on store forwarding). */
-cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
-										 cdReal speculativeDistance)
-{
-	CD_ASSERT(b != NULL);
-	/* The centre in B's frame, cd2InvTransformPoint(xfB, centre): one subtraction and one
-	 * rotation on the way to the first edge test, whose branch every pair waits on (building the
-	 * inverse transform first and placing the centre by it adds work before that branch). */
 #if CD2_SEPARATION_SSE
-	/* In the float build on SSE2 the whole contact in vector lanes, from the argument registers'
-	 * pairs as they arrive (centre, xfB.p and xfB.q two floats each) to the stored normal and
-	 * point: CenterContactOnEdge's steps on a polygon core and the mapping back, the same values
-	 * bit for bit (each lane computes its scalar expression in the same order), without moving
-	 * scalars between registers and vectors on the way (on collide_bench_scenes' circle-polygon
-	 * row those moves and a spill of the tangent cost more than the arithmetic). */
-	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
-	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
-	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
-	__m128 origin = PairLanes(xfB.p);
-	__m128 inverseSine = _mm_xor_ps(sine, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); /* (s, -s) */
-	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(a.center), origin));
-	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
-	cd2Manifold m;
-	cdReal total = b->radius + a.radius;
+/* The contact of a circle whose centre is given as (x, y, x, y) in a polygon's frame, in vector
+ * lanes (float build on SSE2): CenterContactOnEdge's steps on a polygon core after PairScanEdge,
+ * the same values bit for bit (each lane computes its scalar expression in the same order).
+ * Returns whether there is a contact; then normal (lanes 0 and 1: from the polygon to the centre)
+ * and point (lanes 0 and 1, and again in 2 and 3) are in the polygon's frame. Shared by the two
+ * local forms, which differ only in where the centre comes from and where the contact goes. */
+static inline bool PolygonCentreLanes(const cd2Polygon* b, __m128 centre, cdReal circleRadius,
+									  cdReal speculativeDistance, __m128* normalOut, __m128* pointOut,
+									  cdReal* separationOut, uint32_t* idOut)
+{
+	cdReal total = b->radius + circleRadius;
 	int edge;
 	cdReal edgeSeparation;
 	bool hit = PairScanEdge(b, centre, total + speculativeDistance, &edge, &edgeSeparation);
-	__m128 mapped = _mm_setzero_ps();
-	cdReal separation = CD_R(0.0);
-	uint32_t id = 0u;
 	if (hit)
 	{
 		int next = edge + 1 < b->count ? edge + 1 : 0;
@@ -1156,7 +1140,7 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 						 (const __m64*)(const void*)&b->vertices[next]);
 		__m128 normal = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[edge]);
 		cdReal coreSeparation = edgeSeparation;
-		id = (uint32_t)edge;
+		uint32_t id = (uint32_t)edge;
 		if (edgeSeparation > CD_R(0.0))
 		{
 			/* (centre - v1, centre - v2), and along the tangent cd2LeftPerp(normal) = (-ny, nx):
@@ -1186,14 +1170,52 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 				}
 			}
 		}
-		separation = coreSeparation - total;
+		cdReal separation = coreSeparation - total;
 		hit = !(separation > speculativeDistance);
-		/* The point centre + 0.5 * (polygon radius - circle radius - core separation) * normal;
-		 * then the normal (negated: from the circle to the polygon) rotated and the point rotated
-		 * and moved, in one vector: cd2RotateVector(q, cd2Neg(normal)) and
-		 * cd2TransformPoint(xfB, point). */
-		__m128 point = _mm_add_ps(
-			centre, _mm_mul_ps(_mm_set1_ps(CD_R(0.5) * (b->radius - a.radius - coreSeparation)), normal));
+		/* The point centre + 0.5 * (polygon radius - circle radius - core separation) * normal. */
+		*pointOut = _mm_add_ps(
+			centre, _mm_mul_ps(_mm_set1_ps(CD_R(0.5) * (b->radius - circleRadius - coreSeparation)), normal));
+		*normalOut = normal;
+		*separationOut = separation;
+		*idOut = id;
+	}
+	return hit;
+}
+#endif
+
+/* The circle's centre into the polygon's frame, the manifold built there and mapped back in
+ * place (a manifold returned by one call and copied by the next waited on store forwarding). */
+cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Transform xfB,
+										 cdReal speculativeDistance)
+{
+	CD_ASSERT(b != NULL);
+	/* The centre in B's frame, cd2InvTransformPoint(xfB, centre): one subtraction and one
+	 * rotation on the way to the first edge test, whose branch every pair waits on (building the
+	 * inverse transform first and placing the centre by it adds work before that branch). */
+#if CD2_SEPARATION_SSE
+	/* In the float build on SSE2 the whole contact in vector lanes, from the argument registers'
+	 * pairs as they arrive (centre, xfB.p and xfB.q two floats each) to the stored normal and
+	 * point (PolygonCentreLanes, then the mapping back), without moving scalars between registers
+	 * and vectors on the way (on collide_bench_scenes' circle-polygon row those moves and a spill
+	 * of the tangent cost more than the arithmetic). */
+	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
+	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
+	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+	__m128 origin = PairLanes(xfB.p);
+	__m128 inverseSine = _mm_xor_ps(sine, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); /* (s, -s) */
+	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(a.center), origin));
+	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
+	cd2Manifold m;
+	__m128 normal = _mm_setzero_ps(), point = _mm_setzero_ps();
+	cdReal separation = CD_R(0.0);
+	uint32_t id = 0u;
+	bool hit =
+		PolygonCentreLanes(b, centre, a.radius, speculativeDistance, &normal, &point, &separation, &id);
+	__m128 mapped = _mm_setzero_ps();
+	if (hit)
+	{
+		/* The normal (negated: from the circle to the polygon) rotated and the point rotated and
+		 * moved, in one vector: cd2RotateVector(q, cd2Neg(normal)) and cd2TransformPoint(xfB, point). */
 		__m128 pair = _mm_movelh_ps(_mm_xor_ps(normal, _mm_set1_ps(-0.0f)), point);
 		__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
 		mapped = RotateLanes(cosine, forwardSine, pair);
@@ -1232,10 +1254,83 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 #endif
 }
 
+cd2Manifold cd2CollidePolygonCircle(const cd2Polygon* a, cd2Circle b, cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL);
+	Core coreA;
+	InitPolygonCore(&coreA, a);
+	return CollideCoreCenter(&coreA, b.center, b.radius, speculativeDistance, false);
+}
+
+/* The circle's centre placed in the polygon's frame by xfB (cd2TransformPoint) and the manifold
+ * built there: nothing to map back, the polygon being A. */
+cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Transform xfB,
+										 cdReal speculativeDistance)
+{
+	CD_ASSERT(a != NULL);
+#if CD2_SEPARATION_SSE
+	/* cd2TransformPoint(xfB, centre) in lanes: the rotation, then the translation added. */
+	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
+	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
+	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+	__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
+	__m128 origin = PairLanes(xfB.p);
+	__m128 local = PairLanes(b.center);
+	/* A circle centred on its body (the common case) lands on xfB.p: the rotated zero centre
+	 * (zeros) plus a non-zero translation is the translation exactly, and skipping the rotation
+	 * takes xfB.q (composed last by the caller) off the path to the first edge test. Tested
+	 * in lanes: both centre coordinates zero and both translation coordinates non-zero (a zero
+	 * translation coordinate takes the sum, whose zero sign can differ). */
+	__m128 zero = _mm_setzero_ps();
+	__m128 placed;
+	if ((_mm_movemask_ps(_mm_and_ps(_mm_cmpeq_ps(local, zero), _mm_cmpneq_ps(origin, zero))) & 3) == 3)
+	{
+		placed = origin;
+	}
+	else
+	{
+		placed = _mm_add_ps(RotateLanes(cosine, forwardSine, local), origin);
+	}
+	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
+	cd2Manifold m;
+	__m128 normal = _mm_setzero_ps(), point = _mm_setzero_ps();
+	cdReal separation = CD_R(0.0);
+	uint32_t id = 0u;
+	bool hit =
+		PolygonCentreLanes(a, centre, b.radius, speculativeDistance, &normal, &point, &separation, &id);
+	m = EmptyManifold();
+	if (hit)
+	{
+		/* The normal and the first point are adjacent (checked below the function). */
+		_mm_storeu_ps(&m.normal.x, _mm_movelh_ps(normal, point));
+		m.points[0].separation = separation;
+		m.points[0].id = id;
+		m.pointCount = 1;
+	}
+	return m;
+#else
+	cd2Vec center = cd2TransformPoint(xfB, b.center);
+	cd2Manifold m;
+	Core coreA;
+	InitPolygonCore(&coreA, a);
+	CenterContact contact = ScanCenterContact(&coreA, center, b.radius, speculativeDistance);
+	m = EmptyManifold();
+	if (contact.hit)
+	{
+		m.normal = contact.normal;
+		m.points[0].point = contact.point;
+		m.points[0].separation = contact.separation;
+		m.points[0].id = contact.id;
+		m.pointCount = 1;
+	}
+	return m;
+#endif
+}
+
 #if CD2_SEPARATION_SSE
 _Static_assert(offsetof(cd2Manifold, points) == 2 * sizeof(cdReal) &&
 				   offsetof(cd2ManifoldPoint, point) == 0 && sizeof(cd2Vec) == 2 * sizeof(cdReal),
-			   "cd2CollideCirclePolygonLocal stores the normal and the first point as four adjacent floats");
+			   "the circle-polygon local forms store the normal and the first point as four adjacent floats");
 #endif
 
 cd2Manifold cd2CollidePolygonSegment(const cd2Polygon* a, cd2Segment b, cdReal speculativeDistance)

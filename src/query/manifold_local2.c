@@ -3,8 +3,8 @@
  * the same answer by construction. One exception, for cost: a circle, capsule or chain segment
  * against a polygon moves the small shape into the polygon's frame instead (a few points rather
  * than up to 8 vertices and normals) and maps the manifold back, equal within round-off.
- * cd2CollideCirclePolygonLocal and cd2CollidePolygonPolygonLocal, the calls of a 2D step's
- * commonest contacts, are in manifold2.c, next to the cores they run on. */
+ * cd2CollideCirclePolygonLocal, cd2CollidePolygonCircleLocal and cd2CollidePolygonPolygonLocal,
+ * the calls of a 2D step's commonest contacts, are in manifold2.c, next to the cores they run on. */
 #include "collide/manifold2.h"
 
 static inline cd2Circle CircleIn(cd2Transform xf, cd2Circle c)
@@ -159,6 +159,12 @@ cd2Manifold cd2CollideLocal(const cd2Shape* a, const cd2Shape* b, cd2Transform x
 	if (b->type == CD2_SHAPE_POLYGON && a->type == CD2_SHAPE_CIRCLE)
 	{
 		return cd2CollideCirclePolygonLocal(a->circle, &b->polygon, xfB, speculativeDistance);
+	}
+	if (a->type == CD2_SHAPE_POLYGON && b->type == CD2_SHAPE_CIRCLE)
+	{
+		/* The same contact bit for bit as cd2Collide on the placed circle (the circle-polygon core,
+		 * normal flipped); an empty manifold's zero normal is +0 where the flip made it -0. */
+		return cd2CollidePolygonCircleLocal(&a->polygon, b->circle, xfB, speculativeDistance);
 	}
 	return CollidePlaced(a, b, xfB, speculativeDistance);
 }
