@@ -32,6 +32,7 @@
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
+#include "../broad/broad_internal.h"
 #include "../base/thread_pool.h"
 
 #if !defined(__STDC_NO_ATOMICS__)
@@ -222,7 +223,18 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 			shape->aabb = cd2ComputeShapeBounds(world, shape);
 			if (cd2ShapeProxyNeedsSync(shape))
 			{
-				flags |= CD2_FINAL_SYNC_PROXY;
+				if ((flags & CD2_FINAL_SYNC_PROXY) != 0u)
+				{
+					flags |= CD2_FINAL_SYNC_SEVERAL;
+				}
+				else
+				{
+					flags |= CD2_FINAL_SYNC_PROXY;
+					cd2FinalSync* sync = context->finalSync + k;
+					sync->shape = si;
+					sync->proxy = shape->proxyId;
+					sync->fat = cd2ComputeShapeFatBox(world, shape);
+				}
 			}
 		}
 		context->finalFlags[k] = (uint8_t)flags;
@@ -1312,7 +1324,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		   : NULL;
 	context.finalFlags =
 		ok ? (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1) : NULL;
-	if (stageMemory == NULL || context.finalFlags == NULL)
+	context.finalSync = ok ? (cd2FinalSync*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) *
+																					  sizeof(cd2FinalSync))
+						   : NULL;
+	/* (The serial pass's list of the bodies it moves in the broadphase.) */
+	int* finalMoves =
+		ok ? (int*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(int)) : NULL;
+	if (stageMemory == NULL || context.finalFlags == NULL || context.finalSync == NULL || finalMoves == NULL)
 	{
 		world->outOfMemory = true;
 		return;
@@ -1426,12 +1444,47 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			event->fellAsleep = false;
 		}
 	}
-	/* The broadphase, after every sweep (they query it as it was before the step's moves). */
+	/* The broadphase, after every sweep (they query it as it was before the step's moves), in body
+	 * order. A body with one shape to move (most) takes the fat box the finalize stage computed; the
+	 * records of the moves a few bodies ahead are loaded meanwhile, level by level (the shape, the
+	 * proxy's table entries, its parent in the tree, the grandparent): scattered records that the
+	 * moves would otherwise wait for one after the other. */
+	int finalMoveCount = 0;
 	for (int k = 0; k < context.bodyCount; ++k)
 	{
-		unsigned flags = context.finalFlags[k];
-		if ((flags & (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET)) == 0u)
+		if ((context.finalFlags[k] & (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET)) != 0u)
 		{
+			finalMoves[finalMoveCount++] = k;
+		}
+	}
+	enum
+	{
+		CD2_FINAL_AHEAD = 4,
+		CD2_FINAL_STAGES = 3
+	};
+	for (int j = 0; j < finalMoveCount; ++j)
+	{
+		for (int stage = 0; stage < CD2_FINAL_STAGES; ++stage)
+		{
+			int at = j + (CD2_FINAL_STAGES - stage) * CD2_FINAL_AHEAD;
+			if (at < finalMoveCount &&
+				(context.finalFlags[finalMoves[at]] &
+				 (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET | CD2_FINAL_SYNC_SEVERAL)) == CD2_FINAL_SYNC_PROXY)
+			{
+				const cd2FinalSync* next = context.finalSync + finalMoves[at];
+				if (stage == 0)
+				{
+					CD2_PREFETCH(&world->shapes.data[next->shape].fatAabb);
+				}
+				cd2BroadPhase_PrefetchMove(world->broadPhase, next->proxy, stage);
+			}
+		}
+		int k = finalMoves[j];
+		unsigned flags = context.finalFlags[k];
+		if ((flags & (CD2_FINAL_BULLET | CD2_FINAL_SYNC_SEVERAL)) == 0u &&
+			world->shapes.data[context.finalSync[k].shape].proxyId != CD_NULL_PROXY)
+		{
+			cd2SyncShapeProxyTo(world, context.finalSync[k].shape, context.finalSync[k].fat);
 			continue;
 		}
 		const cd2Body* body = world->bodies.data + context.bodyIndices[k];
