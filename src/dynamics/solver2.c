@@ -252,9 +252,8 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 typedef enum cd2StageKind
 {
 	CD2_STAGE_COUNT_BODIES,			/* chunks of world bodies (the setup's, before the list) */
-	CD2_STAGE_LIST_BODIES,			/* chunks of world bodies */
-	CD2_STAGE_COUNT_CONTACTS,		/* chunks of contacts */
-	CD2_STAGE_LIST_CONTACTS,		/* chunks of contacts */
+	CD2_STAGE_LIST_BODIES,			/* chunks of world bodies, then of contacts and of joints (counted) */
+	CD2_STAGE_LIST_CONTACTS,		/* chunks of contacts, then of joints */
 	CD2_STAGE_COLOR_AND_SETUP,		/* the two colourings, then blocks of bodies */
 	CD2_STAGE_PREPARE_JOINTS,		/* joints, in index order */
 	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
@@ -294,9 +293,10 @@ typedef struct cd2Stage
 	int runLength;
 } cd2Stage;
 
-/* The setup of the step before the stages proper: the dense lists of awake bodies and of the
- * touching contacts, counted and then written chunk by chunk (chunks of a fixed size, so that the
- * lists do not depend on how the chunks are split among threads), then the colourings of the
+/* The setup of the step before the stages proper: the dense lists of awake bodies, of the
+ * touching contacts and of the joints to solve, counted and then written chunk by chunk (chunks of a
+ * fixed size, so that the lists do not depend on how the chunks are split among threads; the
+ * contacts and joints are counted in the stage that lists the bodies), then the colourings of the
  * contacts and of the joints, each on one thread, next to the filling of the solver bodies. The
  * scratch is allocated before, for the largest counts (the arena is not for several threads). */
 #define CD2_SETUP_CHUNK 1024
@@ -313,6 +313,9 @@ typedef struct cd2SolveSetup
 	int* contactChunkHits;
 	uint8_t* contactChunkNew; /* the chunk's constraints differ from the cached colouring's */
 	int contactChunkCount;
+	int* jointChunkCounts;
+	int* jointChunkThresholds; /* of which with a force or torque threshold */
+	int jointChunkCount;
 	cd2ConstraintPair* pairs; /* the constraints in contact index order */
 	int* bodyA;				  /* the colouring's bodies of each pair */
 	int* bodyB;
@@ -471,8 +474,9 @@ static bool cd2ContactSolved(const cd2World* world, const cd2SolveSetup* setup, 
 	{
 		cd2SetContactSolveEntry(out, world->contacts.data + i);
 	}
+	/* (The kinds, not the solver indices: the contacts are counted while the bodies are listed.) */
 	return out->bodyA != CD2_NULL_INDEX &&
-		   (setup->solverOf[out->bodyA] >= 0 || setup->solverOf[out->bodyB] >= 0);
+		   (setup->bodyKind[out->bodyA] != 0 || setup->bodyKind[out->bodyB] != 0);
 }
 
 static void cd2CountContacts(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
@@ -650,40 +654,84 @@ static void cd2ReportJointEvents(cd2World* world, const cd2StepContext* context)
 	}
 }
 
-/* The joints to solve (an awake body, none disabled), in index order, then coloured. */
-static void cd2CollectJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup)
+/* Whether joint i is solved: an awake body, none disabled (a body not solved is static, asleep or
+ * disabled; a disabled one drops the joint). By the bodies' kinds: counted while they are listed. */
+static bool cd2JointSolved(const cd2World* world, const cd2SolveSetup* setup, const cd2Joint* joint)
 {
+	if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
+	{
+		return false;
+	}
+	bool solvedA = setup->bodyKind[joint->bodyA] != 0, solvedB = setup->bodyKind[joint->bodyB] != 0;
+	return (solvedA || solvedB) && (solvedA || world->bodies.data[joint->bodyA].enabled) &&
+		   (solvedB || world->bodies.data[joint->bodyB].enabled);
+}
+
+static void cd2CountJoints(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
+{
+	int count = world->joints.count;
+	for (int c = startChunk; c < endChunk; ++c)
+	{
+		int solved = 0, thresholds = 0;
+		for (int i = c * CD2_SETUP_CHUNK, end = cd2ChunkEnd(c, count); i < end; ++i)
+		{
+			const cd2Joint* joint = world->joints.data + i;
+			if (i + 16 < end)
+			{
+				CD2_PREFETCH(joint + 16);
+			}
+			if (cd2JointSolved(world, setup, joint))
+			{
+				++solved;
+				thresholds += joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0) ? 1 : 0;
+			}
+		}
+		setup->jointChunkCounts[c] = solved;
+		setup->jointChunkThresholds[c] = thresholds;
+	}
+}
+
+/* The joints to solve of chunks [startChunk, endChunk), in index order after those of the chunks
+ * before (coloured later, see cd2ColorJoints). */
+static void cd2ListJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
+						  int endChunk)
+{
+	int k = 0;
+	for (int c = 0; c < startChunk; ++c)
+	{
+		k += setup->jointChunkCounts[c];
+	}
 	const int* solverOf = setup->solverOf;
-	for (int i = 0; i < world->joints.count && context->joints != NULL; ++i)
+	int count = world->joints.count;
+	for (int i = startChunk * CD2_SETUP_CHUNK, end = cd2ChunkEnd(endChunk - 1, count);
+		 i < end && context->joints != NULL; ++i)
 	{
 		const cd2Joint* joint = world->joints.data + i;
-		if (i + 16 < world->joints.count)
+		if (i + 16 < end)
 		{
 			CD2_PREFETCH(joint + 16);
 		}
-		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
-		{
-			continue;
-		}
-		/* A body without a solver index is static, asleep or disabled; a disabled one drops the joint. */
-		int indexA = solverOf[joint->bodyA], indexB = solverOf[joint->bodyB];
-		if ((indexA < 0 && indexB < 0) || (indexA < 0 && !world->bodies.data[joint->bodyA].enabled) ||
-			(indexB < 0 && !world->bodies.data[joint->bodyB].enabled))
+		if (!cd2JointSolved(world, setup, joint))
 		{
 			continue;
 		}
 		if (setup->jointBodyA != NULL && setup->jointBodyB != NULL)
 		{
-			setup->jointBodyA[context->jointCount] = indexA;
-			setup->jointBodyB[context->jointCount] = indexB;
+			setup->jointBodyA[k] = solverOf[joint->bodyA];
+			setup->jointBodyB[k] = solverOf[joint->bodyB];
 		}
-		if (joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0))
-		{
-			context->thresholdJointCount += 1;
-		}
-		context->joints[context->jointCount++] = i;
+		context->joints[k++] = i;
 	}
-	cd2ColorJoints(context, setup);
+	if (endChunk == setup->jointChunkCount)
+	{
+		int thresholds = 0;
+		for (int c = 0; c < setup->jointChunkCount; ++c)
+		{
+			thresholds += setup->jointChunkThresholds[c];
+		}
+		context->jointCount = k;
+		context->thresholdJointCount = thresholds;
+	}
 }
 
 /* Items [start, end) of the colour-and-setup stage: item 0 and item 1 are the contacts' and the
@@ -701,7 +749,7 @@ static void cd2ColorAndSetup(cd2World* world, cd2StepContext* context, cd2SolveS
 		}
 		else if (job == 1)
 		{
-			cd2CollectJoints(world, context, setup);
+			cd2ColorJoints(context, setup);
 		}
 		else
 		{
@@ -805,14 +853,40 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2CountBodies(world, list->setup, start, end);
 			break;
 		case CD2_STAGE_LIST_BODIES:
-			cd2ListBodies(world, context, list->setup, start, end);
+		{
+			/* Items: the body chunks, then the contact chunks and the joint chunks to count. */
+			const cd2SolveSetup* setup = list->setup;
+			int bodies = setup->bodyChunkCount, contacts = bodies + setup->contactChunkCount;
+			if (start < bodies)
+			{
+				cd2ListBodies(world, context, list->setup, start, cdMinInt(end, bodies));
+			}
+			if (start < contacts && end > bodies)
+			{
+				cd2CountContacts(world, list->setup, cdMaxInt(start, bodies) - bodies,
+								 cdMinInt(end, contacts) - bodies);
+			}
+			if (end > contacts)
+			{
+				cd2CountJoints(world, list->setup, cdMaxInt(start, contacts) - contacts, end - contacts);
+			}
 			break;
-		case CD2_STAGE_COUNT_CONTACTS:
-			cd2CountContacts(world, list->setup, start, end);
-			break;
+		}
 		case CD2_STAGE_LIST_CONTACTS:
-			cd2ListContacts(world, context, list->setup, start, end);
+		{
+			/* Items: the contact chunks, then the joint chunks. */
+			int contacts = list->setup->contactChunkCount;
+			if (start < contacts)
+			{
+				cd2ListContacts(world, context, list->setup, start, cdMinInt(end, contacts));
+			}
+			if (end > contacts)
+			{
+				cd2ListJoints(world, context, list->setup, cdMaxInt(start, contacts) - contacts,
+							  end - contacts);
+			}
 			break;
+		}
 		case CD2_STAGE_COLOR_AND_SETUP:
 			cd2ColorAndSetup(world, context, list->setup, start, end);
 			break;
@@ -1161,6 +1235,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	setup.contactChunkHits =
 		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount * sizeof(int));
 	setup.contactChunkNew = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount);
+	setup.jointChunkCount = (jointCapacity + CD2_SETUP_CHUNK - 1) / CD2_SETUP_CHUNK;
+	setup.jointChunkCounts =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.jointChunkCount * sizeof(int));
+	setup.jointChunkThresholds =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.jointChunkCount * sizeof(int));
 	/* From the entries the contact update left (a small array read in order), else from the
 	 * contacts themselves. */
 	setup.entries = world->stepSolveEntries;
@@ -1176,7 +1255,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		(contactCapacity > 0 && (setup.contactChunkCounts == NULL || setup.contactChunkHits == NULL ||
 								 setup.contactChunkNew == NULL || setup.pairs == NULL ||
 								 setup.bodyA == NULL || setup.bodyB == NULL)) ||
-		(jointCapacity > 0 && context.joints == NULL))
+		(jointCapacity > 0 &&
+		 (context.joints == NULL || setup.jointChunkCounts == NULL || setup.jointChunkThresholds == NULL)))
 	{
 		world->outOfMemory = true;
 		return;
@@ -1242,9 +1322,11 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.stages = preStages;
 	list.stageCapacity = 5;
 	cd2AddStage(&list, CD2_STAGE_COUNT_BODIES, setup.bodyChunkCount, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_LIST_BODIES, setup.bodyChunkCount, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_COUNT_CONTACTS, setup.contactChunkCount, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_LIST_CONTACTS, setup.contactChunkCount, 1, 0, false);
+	/* The contacts and the joints are counted while the bodies are listed (by the bodies' kinds, set
+	 * by the count), and listed together. */
+	cd2AddStage(&list, CD2_STAGE_LIST_BODIES,
+				setup.bodyChunkCount + setup.contactChunkCount + setup.jointChunkCount, 1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_LIST_CONTACTS, setup.contactChunkCount + setup.jointChunkCount, 1, 0, false);
 	{
 		/* Blocks of solver bodies as the setup stage's were (the count is not known yet: blocks past
 		 * it do nothing). */
