@@ -1541,8 +1541,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	}
 	enum
 	{
-		CD2_FINAL_AHEAD = 4,
-		CD2_FINAL_STAGES = 3
+		CD2_FINAL_AHEAD = 8,
+		CD2_FINAL_STAGES = 4
 	};
 	for (int j = 0; j < finalMoveCount; ++j)
 	{
