@@ -579,11 +579,14 @@ static void cd2ColorContacts(cd2StepContext* context, cd2SolveSetup* setup)
  * colour share no awake body, so a colour's joints run on any number of threads with the same
  * bits, and the results do not depend on the worker count. Kinematic bodies count as movable here
  * (a joint's solve writes both of its awake bodies); static and sleeping ones do not. Out of
- * scratch memory: every joint in the overflow colour, in index order, on one thread. */
+ * scratch memory: every joint in the overflow colour, in index order, on one thread. Also the
+ * slots of the sorted joints in joint index order (context->jointIndexOrder: the listed joints
+ * were in index order, so it is the inverse of the colour order). */
 static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 {
 	int n = context->jointCount;
 	int* start = context->jointColorStart;
+	int* indexOrder = context->jointIndexOrder;
 	for (int c = 0; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
 	{
 		start[c] = 0;
@@ -592,6 +595,10 @@ static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 	if (n < 2 || setup->jointBodyA == NULL || setup->jointBodyB == NULL || setup->jointColors == NULL ||
 		setup->jointOrder == NULL || setup->jointSorted == NULL || setup->jointUsed == NULL)
 	{
+		for (int k = 0; k < n && indexOrder != NULL; ++k)
+		{
+			indexOrder[k] = k;
+		}
 		return;
 	}
 	int* colors = setup->jointColors;
@@ -616,6 +623,10 @@ static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 	{
 		sorted[i] = context->joints[order[i]];
 		start[colors[i] + 1] += 1;
+	}
+	for (int i = 0; i < n && indexOrder != NULL; ++i)
+	{
+		indexOrder[order[i]] = i;
 	}
 	for (int c = 1; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
 	{
@@ -1248,6 +1259,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	setup.bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	setup.bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)jointCapacity * sizeof(int));
+	context.jointIndexOrder =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
 	if ((bodyCapacity > 0 &&
 		 (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
 		  context.accelerations == NULL || setup.solverOf == NULL || setup.colorBodyOf == NULL ||
@@ -1255,8 +1268,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		(contactCapacity > 0 && (setup.contactChunkCounts == NULL || setup.contactChunkHits == NULL ||
 								 setup.contactChunkNew == NULL || setup.pairs == NULL ||
 								 setup.bodyA == NULL || setup.bodyB == NULL)) ||
-		(jointCapacity > 0 &&
-		 (context.joints == NULL || setup.jointChunkCounts == NULL || setup.jointChunkThresholds == NULL)))
+		(jointCapacity > 0 && (context.joints == NULL || context.jointIndexOrder == NULL ||
+							   setup.jointChunkCounts == NULL || setup.jointChunkThresholds == NULL)))
 	{
 		world->outOfMemory = true;
 		return;

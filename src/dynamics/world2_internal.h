@@ -413,7 +413,8 @@ typedef struct cd2StepContext
 	/* One per joint of `joints`, set by cd2PrepareJoints: what the sub-steps read of it, so that
 	 * they never read the joint or body records. */
 	cd2JointRef* jointRefs;
-	/* The slots of `joints` in joint index order (memory order), for the prepare stage. */
+	/* The slots of `joints` in joint index order (memory order), for the prepare stage (set with the
+	 * joints' colouring). */
 	int* jointIndexOrder;
 	bool enableWarmStarting;
 	/* Some touching contact has hit events: the store writes the points' approach speeds (only hit
