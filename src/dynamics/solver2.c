@@ -315,6 +315,9 @@ typedef struct cd2SolveSetup
 	int contactChunkCount;
 	int* jointChunkCounts;
 	int* jointChunkThresholds; /* of which with a force or torque threshold */
+	/* Per joint, from the count: its bodies when solved, else CD2_NULL_INDEX twice (the list then
+	 * reads this small array, not the joint records again). */
+	int* jointBodies;
 	int jointChunkCount;
 	cd2ConstraintPair* pairs; /* the constraints in contact index order */
 	int* bodyA;				  /* the colouring's bodies of each pair */
@@ -691,7 +694,10 @@ static void cd2CountJoints(cd2World* world, cd2SolveSetup* setup, int startChunk
 			{
 				CD2_PREFETCH(joint + 16);
 			}
-			if (cd2JointSolved(world, setup, joint))
+			bool isSolved = cd2JointSolved(world, setup, joint);
+			setup->jointBodies[2 * i] = isSolved ? joint->bodyA : CD2_NULL_INDEX;
+			setup->jointBodies[2 * i + 1] = isSolved ? joint->bodyB : CD2_NULL_INDEX;
+			if (isSolved)
 			{
 				++solved;
 				thresholds += joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0) ? 1 : 0;
@@ -717,19 +723,15 @@ static void cd2ListJoints(cd2World* world, cd2StepContext* context, cd2SolveSetu
 	for (int i = startChunk * CD2_SETUP_CHUNK, end = cd2ChunkEnd(endChunk - 1, count);
 		 i < end && context->joints != NULL; ++i)
 	{
-		const cd2Joint* joint = world->joints.data + i;
-		if (i + 16 < end)
-		{
-			CD2_PREFETCH(joint + 16);
-		}
-		if (!cd2JointSolved(world, setup, joint))
+		int bodyA = setup->jointBodies[2 * i], bodyB = setup->jointBodies[2 * i + 1];
+		if (bodyA == CD2_NULL_INDEX)
 		{
 			continue;
 		}
 		if (setup->jointBodyA != NULL && setup->jointBodyB != NULL)
 		{
-			setup->jointBodyA[k] = solverOf[joint->bodyA];
-			setup->jointBodyB[k] = solverOf[joint->bodyB];
+			setup->jointBodyA[k] = solverOf[bodyA];
+			setup->jointBodyB[k] = solverOf[bodyB];
 		}
 		context->joints[k++] = i;
 	}
@@ -1251,6 +1253,7 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.jointChunkCount * sizeof(int));
 	setup.jointChunkThresholds =
 		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.jointChunkCount * sizeof(int));
+	setup.jointBodies = (int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * 2 * sizeof(int));
 	/* From the entries the contact update left (a small array read in order), else from the
 	 * contacts themselves. */
 	setup.entries = world->stepSolveEntries;
@@ -1268,8 +1271,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		(contactCapacity > 0 && (setup.contactChunkCounts == NULL || setup.contactChunkHits == NULL ||
 								 setup.contactChunkNew == NULL || setup.pairs == NULL ||
 								 setup.bodyA == NULL || setup.bodyB == NULL)) ||
-		(jointCapacity > 0 && (context.joints == NULL || context.jointIndexOrder == NULL ||
-							   setup.jointChunkCounts == NULL || setup.jointChunkThresholds == NULL)))
+		(jointCapacity > 0 &&
+		 (context.joints == NULL || context.jointIndexOrder == NULL || setup.jointChunkCounts == NULL ||
+		  setup.jointChunkThresholds == NULL || setup.jointBodies == NULL)))
 	{
 		world->outOfMemory = true;
 		return;
