@@ -318,6 +318,9 @@ typedef struct cd2SolveSetup
 	/* Per joint, from the count: its bodies when solved, else CD2_NULL_INDEX twice (the list then
 	 * reads this small array, not the joint records again). */
 	int* jointBodies;
+	/* On one thread: the joints are not counted first but listed in one pass over their records
+	 * (the list stage is one block then). */
+	bool jointsInOnePass;
 	int jointChunkCount;
 	cd2ConstraintPair* pairs; /* the constraints in contact index order */
 	int* bodyA;				  /* the colouring's bodies of each pair */
@@ -720,13 +723,36 @@ static void cd2ListJoints(cd2World* world, cd2StepContext* context, cd2SolveSetu
 	}
 	const int* solverOf = setup->solverOf;
 	int count = world->joints.count;
+	bool onePass = setup->jointsInOnePass;
+	CD_ASSERT(!onePass || (startChunk == 0 && endChunk == setup->jointChunkCount));
+	int thresholds = 0;
 	for (int i = startChunk * CD2_SETUP_CHUNK, end = cd2ChunkEnd(endChunk - 1, count);
 		 i < end && context->joints != NULL; ++i)
 	{
-		int bodyA = setup->jointBodies[2 * i], bodyB = setup->jointBodies[2 * i + 1];
-		if (bodyA == CD2_NULL_INDEX)
+		int bodyA, bodyB;
+		if (onePass)
 		{
-			continue;
+			const cd2Joint* joint = world->joints.data + i;
+			if (i + 16 < end)
+			{
+				CD2_PREFETCH(joint + 16);
+			}
+			if (!cd2JointSolved(world, setup, joint))
+			{
+				continue;
+			}
+			bodyA = joint->bodyA;
+			bodyB = joint->bodyB;
+			thresholds += joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0) ? 1 : 0;
+		}
+		else
+		{
+			bodyA = setup->jointBodies[2 * i];
+			bodyB = setup->jointBodies[2 * i + 1];
+			if (bodyA == CD2_NULL_INDEX)
+			{
+				continue;
+			}
 		}
 		if (setup->jointBodyA != NULL && setup->jointBodyB != NULL)
 		{
@@ -737,8 +763,7 @@ static void cd2ListJoints(cd2World* world, cd2StepContext* context, cd2SolveSetu
 	}
 	if (endChunk == setup->jointChunkCount)
 	{
-		int thresholds = 0;
-		for (int c = 0; c < setup->jointChunkCount; ++c)
+		for (int c = 0; c < setup->jointChunkCount && !onePass; ++c)
 		{
 			thresholds += setup->jointChunkThresholds[c];
 		}
@@ -1340,9 +1365,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.stageCapacity = 5;
 	cd2AddStage(&list, CD2_STAGE_COUNT_BODIES, setup.bodyChunkCount, 1, 0, false);
 	/* The contacts and the joints are counted while the bodies are listed (by the bodies' kinds, set
-	 * by the count), and listed together. */
+	 * by the count), and listed together; on one thread the joints are listed in one pass. */
+	setup.jointsInOnePass = list.workerCount == 1;
 	cd2AddStage(&list, CD2_STAGE_LIST_BODIES,
-				setup.bodyChunkCount + setup.contactChunkCount + setup.jointChunkCount, 1, 0, false);
+				setup.bodyChunkCount + setup.contactChunkCount +
+					(setup.jointsInOnePass ? 0 : setup.jointChunkCount),
+				1, 0, false);
 	cd2AddStage(&list, CD2_STAGE_LIST_CONTACTS, setup.contactChunkCount + setup.jointChunkCount, 1, 0, false);
 	{
 		/* Blocks of solver bodies as the setup stage's were (the count is not known yet: blocks past
