@@ -359,6 +359,13 @@ static inline bool cd3BroadRayBox(const cd3BroadRayData* r, cd3Aabb box, cdReal 
 void cd2BroadPhase_SetEnlargeMoves(cd2BroadPhase* broadPhase, bool flag);
 void cd3BroadPhase_SetEnlargeMoves(cd3BroadPhase* broadPhase, bool flag);
 
+/* A hint before a coming MoveProxy of proxyId, for a caller that knows its next moves: stage 0
+ * loads the proxy's table entries, stage s > 0 the structure's records the move reads at depth s
+ * (each stage reads what the one before loaded: call them in order, several moves apart). Does
+ * nothing to the broadphase's state; an invalid id is ignored. */
+void cd2BroadPhase_PrefetchMove(const cd2BroadPhase* broadPhase, int proxyId, int stage);
+void cd3BroadPhase_PrefetchMove(const cd3BroadPhase* broadPhase, int proxyId, int stage);
+
 /* The deferred restructuring of enlarge mode in jobs that may run on several threads, before
  * BeginMovedPairs (whose flush otherwise does it on the calling thread):
  *   n = BeginRebuild(bp); RebuildJobs(bp, start, end) over any split of [0, n), at the same time on

@@ -1059,31 +1059,8 @@ bool cd2PrepareJoints(cd2World* world, cd2StepContext* context)
 	}
 	context->jointRefs = (cd2JointRef*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount *
 																				 sizeof(cd2JointRef));
-	context->jointIndexOrder =
-		(int*)cdArena_AllocUncleared(&world->arena, (size_t)context->jointCount * sizeof(int));
-	/* The slot of each joint, so that the joints are read in index order (in memory order). */
-	int* slotOf = (int*)cdArena_AllocUncleared(&world->arena, (size_t)world->joints.count * sizeof(int));
-	if (context->jointRefs == NULL || context->jointIndexOrder == NULL || slotOf == NULL)
-	{
-		return false;
-	}
-	for (int index = 0; index < world->joints.count; ++index)
-	{
-		slotOf[index] = CD2_NULL_INDEX;
-	}
-	for (int i = 0; i < context->jointCount; ++i)
-	{
-		slotOf[context->joints[i]] = i;
-	}
-	int k = 0;
-	for (int index = 0; index < world->joints.count; ++index)
-	{
-		if (slotOf[index] >= 0)
-		{
-			context->jointIndexOrder[k++] = slotOf[index];
-		}
-	}
-	return true;
+	/* (jointIndexOrder: set by the colouring, see cd2StepContext.) */
+	return context->jointRefs != NULL && context->jointIndexOrder != NULL;
 }
 
 void cd2PrepareJointRange(cd2World* world, cd2StepContext* context, int start, int end)

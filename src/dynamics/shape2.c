@@ -277,15 +277,42 @@ static void cd2SyncStaticProxy(cd2World* world, int shapeIndex)
 	}
 }
 
+cd2Aabb cd2ComputeShapeFatBox(const cd2World* world, const cd2WorldShape* shape)
+{
+	const cd2Body* body = world->bodies.data + shape->body;
+	cdReal margin = body->type == CD_STATIC_BODY ? CD_R(0.0) : cd2ShapeAabbMargin(shape);
+	return cd2AabbInflate(shape->aabb, margin);
+}
+
+void cd2SyncShapeProxyTo(cd2World* world, int shapeIndex, cd2Aabb fat)
+{
+	cd2WorldShape* shape = world->shapes.data + shapeIndex;
+	if (cd2BroadPhase_MoveProxy(world->broadPhase, shape->proxyId, fat, CD2_VEC_ZERO))
+	{
+		shape->fatAabb = fat;
+	}
+	else if (!cd2AabbContains(shape->fatAabb, shape->aabb))
+	{
+		world->outOfMemory = true;
+	}
+	else
+	{
+		/* A same-size fat box is not a move for the broadphase; keep its box and ours equal. */
+		shape->fatAabb = cd2BroadPhase_GetFatAabb(world->broadPhase, shape->proxyId);
+	}
+	if (shape->staticProxyId != CD_NULL_PROXY)
+	{
+		cd2SyncStaticProxy(world, shapeIndex);
+	}
+}
+
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 {
 	cd2WorldShape* shape = world->shapes.data + shapeIndex;
-	const cd2Body* body = world->bodies.data + shape->body;
 	cd2Aabb aabb = shape->aabb;
-	cdReal margin = body->type == CD_STATIC_BODY ? CD_R(0.0) : cd2ShapeAabbMargin(shape);
 	if (shape->proxyId == CD_NULL_PROXY)
 	{
-		shape->fatAabb = cd2AabbInflate(aabb, margin);
+		shape->fatAabb = cd2ComputeShapeFatBox(world, shape);
 		bool isStatic = world->bodies.data[shape->body].type == CD_STATIC_BODY;
 		shape->proxyId = cd2BroadPhase_CreateProxy(world->broadPhase, shape->fatAabb,
 												   cd2ProxyUserData(shapeIndex, isStatic));
@@ -302,24 +329,7 @@ void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove)
 	}
 	if (forceMove || !cd2AabbContains(shape->fatAabb, aabb))
 	{
-		cd2Aabb fat = cd2AabbInflate(aabb, margin);
-		if (cd2BroadPhase_MoveProxy(world->broadPhase, shape->proxyId, fat, CD2_VEC_ZERO))
-		{
-			shape->fatAabb = fat;
-		}
-		else if (!cd2AabbContains(shape->fatAabb, aabb))
-		{
-			world->outOfMemory = true;
-		}
-		else
-		{
-			/* A same-size fat box is not a move for the broadphase; keep its box and ours equal. */
-			shape->fatAabb = cd2BroadPhase_GetFatAabb(world->broadPhase, shape->proxyId);
-		}
-		if (shape->staticProxyId != CD_NULL_PROXY)
-		{
-			cd2SyncStaticProxy(world, shapeIndex);
-		}
+		cd2SyncShapeProxyTo(world, shapeIndex, cd2ComputeShapeFatBox(world, shape));
 	}
 }
 

@@ -32,6 +32,7 @@
 #include "world2_internal.h"
 
 #include "../base/graph_color.h"
+#include "../broad/broad_internal.h"
 #include "../base/thread_pool.h"
 
 #if !defined(__STDC_NO_ATOMICS__)
@@ -222,7 +223,18 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 			shape->aabb = cd2ComputeShapeBounds(world, shape);
 			if (cd2ShapeProxyNeedsSync(shape))
 			{
-				flags |= CD2_FINAL_SYNC_PROXY;
+				if ((flags & CD2_FINAL_SYNC_PROXY) != 0u)
+				{
+					flags |= CD2_FINAL_SYNC_SEVERAL;
+				}
+				else
+				{
+					flags |= CD2_FINAL_SYNC_PROXY;
+					cd2FinalSync* sync = context->finalSync + k;
+					sync->shape = si;
+					sync->proxy = shape->proxyId;
+					sync->fat = cd2ComputeShapeFatBox(world, shape);
+				}
 			}
 		}
 		context->finalFlags[k] = (uint8_t)flags;
@@ -240,9 +252,8 @@ static void cd2FinalizeBodies(cd2World* world, const cd2StepContext* context, in
 typedef enum cd2StageKind
 {
 	CD2_STAGE_COUNT_BODIES,			/* chunks of world bodies (the setup's, before the list) */
-	CD2_STAGE_LIST_BODIES,			/* chunks of world bodies */
-	CD2_STAGE_COUNT_CONTACTS,		/* chunks of contacts */
-	CD2_STAGE_LIST_CONTACTS,		/* chunks of contacts */
+	CD2_STAGE_LIST_BODIES,			/* chunks of world bodies, then of contacts and of joints (counted) */
+	CD2_STAGE_LIST_CONTACTS,		/* chunks of contacts, then of joints */
 	CD2_STAGE_COLOR_AND_SETUP,		/* the two colourings, then blocks of bodies */
 	CD2_STAGE_PREPARE_JOINTS,		/* joints, in index order */
 	CD2_STAGE_PREPARE_CONTACTS,		/* constraints */
@@ -282,9 +293,10 @@ typedef struct cd2Stage
 	int runLength;
 } cd2Stage;
 
-/* The setup of the step before the stages proper: the dense lists of awake bodies and of the
- * touching contacts, counted and then written chunk by chunk (chunks of a fixed size, so that the
- * lists do not depend on how the chunks are split among threads), then the colourings of the
+/* The setup of the step before the stages proper: the dense lists of awake bodies, of the
+ * touching contacts and of the joints to solve, counted and then written chunk by chunk (chunks of a
+ * fixed size, so that the lists do not depend on how the chunks are split among threads; the
+ * contacts and joints are counted in the stage that lists the bodies), then the colourings of the
  * contacts and of the joints, each on one thread, next to the filling of the solver bodies. The
  * scratch is allocated before, for the largest counts (the arena is not for several threads). */
 #define CD2_SETUP_CHUNK 1024
@@ -301,6 +313,15 @@ typedef struct cd2SolveSetup
 	int* contactChunkHits;
 	uint8_t* contactChunkNew; /* the chunk's constraints differ from the cached colouring's */
 	int contactChunkCount;
+	int* jointChunkCounts;
+	int* jointChunkThresholds; /* of which with a force or torque threshold */
+	/* Per joint, from the count: its bodies when solved, else CD2_NULL_INDEX twice (the list then
+	 * reads this small array, not the joint records again). */
+	int* jointBodies;
+	/* On one thread: the joints are not counted first but listed in one pass over their records
+	 * (the list stage is one block then). */
+	bool jointsInOnePass;
+	int jointChunkCount;
 	cd2ConstraintPair* pairs; /* the constraints in contact index order */
 	int* bodyA;				  /* the colouring's bodies of each pair */
 	int* bodyB;
@@ -459,8 +480,9 @@ static bool cd2ContactSolved(const cd2World* world, const cd2SolveSetup* setup, 
 	{
 		cd2SetContactSolveEntry(out, world->contacts.data + i);
 	}
+	/* (The kinds, not the solver indices: the contacts are counted while the bodies are listed.) */
 	return out->bodyA != CD2_NULL_INDEX &&
-		   (setup->solverOf[out->bodyA] >= 0 || setup->solverOf[out->bodyB] >= 0);
+		   (setup->bodyKind[out->bodyA] != 0 || setup->bodyKind[out->bodyB] != 0);
 }
 
 static void cd2CountContacts(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
@@ -563,11 +585,14 @@ static void cd2ColorContacts(cd2StepContext* context, cd2SolveSetup* setup)
  * colour share no awake body, so a colour's joints run on any number of threads with the same
  * bits, and the results do not depend on the worker count. Kinematic bodies count as movable here
  * (a joint's solve writes both of its awake bodies); static and sleeping ones do not. Out of
- * scratch memory: every joint in the overflow colour, in index order, on one thread. */
+ * scratch memory: every joint in the overflow colour, in index order, on one thread. Also the
+ * slots of the sorted joints in joint index order (context->jointIndexOrder: the listed joints
+ * were in index order, so it is the inverse of the colour order). */
 static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 {
 	int n = context->jointCount;
 	int* start = context->jointColorStart;
+	int* indexOrder = context->jointIndexOrder;
 	for (int c = 0; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
 	{
 		start[c] = 0;
@@ -576,6 +601,10 @@ static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 	if (n < 2 || setup->jointBodyA == NULL || setup->jointBodyB == NULL || setup->jointColors == NULL ||
 		setup->jointOrder == NULL || setup->jointSorted == NULL || setup->jointUsed == NULL)
 	{
+		for (int k = 0; k < n && indexOrder != NULL; ++k)
+		{
+			indexOrder[k] = k;
+		}
 		return;
 	}
 	int* colors = setup->jointColors;
@@ -600,6 +629,10 @@ static void cd2ColorJoints(cd2StepContext* context, cd2SolveSetup* setup)
 	{
 		sorted[i] = context->joints[order[i]];
 		start[colors[i] + 1] += 1;
+	}
+	for (int i = 0; i < n && indexOrder != NULL; ++i)
+	{
+		indexOrder[order[i]] = i;
 	}
 	for (int c = 1; c < CD_GRAPH_COLOR_COUNT + 2; ++c)
 	{
@@ -638,40 +671,105 @@ static void cd2ReportJointEvents(cd2World* world, const cd2StepContext* context)
 	}
 }
 
-/* The joints to solve (an awake body, none disabled), in index order, then coloured. */
-static void cd2CollectJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup)
+/* Whether joint i is solved: an awake body, none disabled (a body not solved is static, asleep or
+ * disabled; a disabled one drops the joint). By the bodies' kinds: counted while they are listed. */
+static bool cd2JointSolved(const cd2World* world, const cd2SolveSetup* setup, const cd2Joint* joint)
 {
-	const int* solverOf = setup->solverOf;
-	for (int i = 0; i < world->joints.count && context->joints != NULL; ++i)
+	if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
 	{
-		const cd2Joint* joint = world->joints.data + i;
-		if (i + 16 < world->joints.count)
+		return false;
+	}
+	bool solvedA = setup->bodyKind[joint->bodyA] != 0, solvedB = setup->bodyKind[joint->bodyB] != 0;
+	return (solvedA || solvedB) && (solvedA || world->bodies.data[joint->bodyA].enabled) &&
+		   (solvedB || world->bodies.data[joint->bodyB].enabled);
+}
+
+static void cd2CountJoints(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
+{
+	int count = world->joints.count;
+	for (int c = startChunk; c < endChunk; ++c)
+	{
+		int solved = 0, thresholds = 0;
+		for (int i = c * CD2_SETUP_CHUNK, end = cd2ChunkEnd(c, count); i < end; ++i)
 		{
-			CD2_PREFETCH(joint + 16);
+			const cd2Joint* joint = world->joints.data + i;
+			if (i + 16 < end)
+			{
+				CD2_PREFETCH(joint + 16);
+			}
+			bool isSolved = cd2JointSolved(world, setup, joint);
+			setup->jointBodies[2 * i] = isSolved ? joint->bodyA : CD2_NULL_INDEX;
+			setup->jointBodies[2 * i + 1] = isSolved ? joint->bodyB : CD2_NULL_INDEX;
+			if (isSolved)
+			{
+				++solved;
+				thresholds += joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0) ? 1 : 0;
+			}
 		}
-		if (!joint->inUse || joint->type == CD2_FILTER_JOINT)
+		setup->jointChunkCounts[c] = solved;
+		setup->jointChunkThresholds[c] = thresholds;
+	}
+}
+
+/* The joints to solve of chunks [startChunk, endChunk), in index order after those of the chunks
+ * before (coloured later, see cd2ColorJoints). */
+static void cd2ListJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
+						  int endChunk)
+{
+	int k = 0;
+	for (int c = 0; c < startChunk; ++c)
+	{
+		k += setup->jointChunkCounts[c];
+	}
+	const int* solverOf = setup->solverOf;
+	int count = world->joints.count;
+	bool onePass = setup->jointsInOnePass;
+	CD_ASSERT(!onePass || (startChunk == 0 && endChunk == setup->jointChunkCount));
+	int thresholds = 0;
+	for (int i = startChunk * CD2_SETUP_CHUNK, end = cd2ChunkEnd(endChunk - 1, count);
+		 i < end && context->joints != NULL; ++i)
+	{
+		int bodyA, bodyB;
+		if (onePass)
 		{
-			continue;
+			const cd2Joint* joint = world->joints.data + i;
+			if (i + 16 < end)
+			{
+				CD2_PREFETCH(joint + 16);
+			}
+			if (!cd2JointSolved(world, setup, joint))
+			{
+				continue;
+			}
+			bodyA = joint->bodyA;
+			bodyB = joint->bodyB;
+			thresholds += joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0) ? 1 : 0;
 		}
-		/* A body without a solver index is static, asleep or disabled; a disabled one drops the joint. */
-		int indexA = solverOf[joint->bodyA], indexB = solverOf[joint->bodyB];
-		if ((indexA < 0 && indexB < 0) || (indexA < 0 && !world->bodies.data[joint->bodyA].enabled) ||
-			(indexB < 0 && !world->bodies.data[joint->bodyB].enabled))
+		else
 		{
-			continue;
+			bodyA = setup->jointBodies[2 * i];
+			bodyB = setup->jointBodies[2 * i + 1];
+			if (bodyA == CD2_NULL_INDEX)
+			{
+				continue;
+			}
 		}
 		if (setup->jointBodyA != NULL && setup->jointBodyB != NULL)
 		{
-			setup->jointBodyA[context->jointCount] = indexA;
-			setup->jointBodyB[context->jointCount] = indexB;
+			setup->jointBodyA[k] = solverOf[bodyA];
+			setup->jointBodyB[k] = solverOf[bodyB];
 		}
-		if (joint->forceThreshold > CD_R(0.0) || joint->torqueThreshold > CD_R(0.0))
-		{
-			context->thresholdJointCount += 1;
-		}
-		context->joints[context->jointCount++] = i;
+		context->joints[k++] = i;
 	}
-	cd2ColorJoints(context, setup);
+	if (endChunk == setup->jointChunkCount)
+	{
+		for (int c = 0; c < setup->jointChunkCount && !onePass; ++c)
+		{
+			thresholds += setup->jointChunkThresholds[c];
+		}
+		context->jointCount = k;
+		context->thresholdJointCount = thresholds;
+	}
 }
 
 /* Items [start, end) of the colour-and-setup stage: item 0 and item 1 are the contacts' and the
@@ -689,7 +787,7 @@ static void cd2ColorAndSetup(cd2World* world, cd2StepContext* context, cd2SolveS
 		}
 		else if (job == 1)
 		{
-			cd2CollectJoints(world, context, setup);
+			cd2ColorJoints(context, setup);
 		}
 		else
 		{
@@ -793,14 +891,40 @@ static void cd2ExecuteStage(const cd2StageList* list, const cd2Stage* stage, int
 			cd2CountBodies(world, list->setup, start, end);
 			break;
 		case CD2_STAGE_LIST_BODIES:
-			cd2ListBodies(world, context, list->setup, start, end);
+		{
+			/* Items: the body chunks, then the contact chunks and the joint chunks to count. */
+			const cd2SolveSetup* setup = list->setup;
+			int bodies = setup->bodyChunkCount, contacts = bodies + setup->contactChunkCount;
+			if (start < bodies)
+			{
+				cd2ListBodies(world, context, list->setup, start, cdMinInt(end, bodies));
+			}
+			if (start < contacts && end > bodies)
+			{
+				cd2CountContacts(world, list->setup, cdMaxInt(start, bodies) - bodies,
+								 cdMinInt(end, contacts) - bodies);
+			}
+			if (end > contacts)
+			{
+				cd2CountJoints(world, list->setup, cdMaxInt(start, contacts) - contacts, end - contacts);
+			}
 			break;
-		case CD2_STAGE_COUNT_CONTACTS:
-			cd2CountContacts(world, list->setup, start, end);
-			break;
+		}
 		case CD2_STAGE_LIST_CONTACTS:
-			cd2ListContacts(world, context, list->setup, start, end);
+		{
+			/* Items: the contact chunks, then the joint chunks. */
+			int contacts = list->setup->contactChunkCount;
+			if (start < contacts)
+			{
+				cd2ListContacts(world, context, list->setup, start, cdMinInt(end, contacts));
+			}
+			if (end > contacts)
+			{
+				cd2ListJoints(world, context, list->setup, cdMaxInt(start, contacts) - contacts,
+							  end - contacts);
+			}
 			break;
+		}
 		case CD2_STAGE_COLOR_AND_SETUP:
 			cd2ColorAndSetup(world, context, list->setup, start, end);
 			break;
@@ -1149,6 +1273,12 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	setup.contactChunkHits =
 		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount * sizeof(int));
 	setup.contactChunkNew = (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)setup.contactChunkCount);
+	setup.jointChunkCount = (jointCapacity + CD2_SETUP_CHUNK - 1) / CD2_SETUP_CHUNK;
+	setup.jointChunkCounts =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.jointChunkCount * sizeof(int));
+	setup.jointChunkThresholds =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)setup.jointChunkCount * sizeof(int));
+	setup.jointBodies = (int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * 2 * sizeof(int));
 	/* From the entries the contact update left (a small array read in order), else from the
 	 * contacts themselves. */
 	setup.entries = world->stepSolveEntries;
@@ -1157,6 +1287,8 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	setup.bodyA = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	setup.bodyB = (int*)cdArena_AllocUncleared(&world->arena, (size_t)contactCapacity * sizeof(int));
 	context.joints = (int*)cdArena_Alloc(&world->arena, (size_t)jointCapacity * sizeof(int));
+	context.jointIndexOrder =
+		(int*)cdArena_AllocUncleared(&world->arena, (size_t)jointCapacity * sizeof(int));
 	if ((bodyCapacity > 0 &&
 		 (context.bodies == NULL || context.bodyIndices == NULL || context.params == NULL ||
 		  context.accelerations == NULL || setup.solverOf == NULL || setup.colorBodyOf == NULL ||
@@ -1164,7 +1296,9 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		(contactCapacity > 0 && (setup.contactChunkCounts == NULL || setup.contactChunkHits == NULL ||
 								 setup.contactChunkNew == NULL || setup.pairs == NULL ||
 								 setup.bodyA == NULL || setup.bodyB == NULL)) ||
-		(jointCapacity > 0 && context.joints == NULL))
+		(jointCapacity > 0 &&
+		 (context.joints == NULL || context.jointIndexOrder == NULL || setup.jointChunkCounts == NULL ||
+		  setup.jointChunkThresholds == NULL || setup.jointBodies == NULL)))
 	{
 		world->outOfMemory = true;
 		return;
@@ -1230,9 +1364,14 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 	list.stages = preStages;
 	list.stageCapacity = 5;
 	cd2AddStage(&list, CD2_STAGE_COUNT_BODIES, setup.bodyChunkCount, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_LIST_BODIES, setup.bodyChunkCount, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_COUNT_CONTACTS, setup.contactChunkCount, 1, 0, false);
-	cd2AddStage(&list, CD2_STAGE_LIST_CONTACTS, setup.contactChunkCount, 1, 0, false);
+	/* The contacts and the joints are counted while the bodies are listed (by the bodies' kinds, set
+	 * by the count), and listed together; on one thread the joints are listed in one pass. */
+	setup.jointsInOnePass = list.workerCount == 1;
+	cd2AddStage(&list, CD2_STAGE_LIST_BODIES,
+				setup.bodyChunkCount + setup.contactChunkCount +
+					(setup.jointsInOnePass ? 0 : setup.jointChunkCount),
+				1, 0, false);
+	cd2AddStage(&list, CD2_STAGE_LIST_CONTACTS, setup.contactChunkCount + setup.jointChunkCount, 1, 0, false);
 	{
 		/* Blocks of solver bodies as the setup stage's were (the count is not known yet: blocks past
 		 * it do nothing). */
@@ -1312,7 +1451,13 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 		   : NULL;
 	context.finalFlags =
 		ok ? (uint8_t*)cdArena_AllocUncleared(&world->arena, (size_t)bodyCapacity + 1) : NULL;
-	if (stageMemory == NULL || context.finalFlags == NULL)
+	context.finalSync = ok ? (cd2FinalSync*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) *
+																					  sizeof(cd2FinalSync))
+						   : NULL;
+	/* (The serial pass's list of the bodies it moves in the broadphase.) */
+	int* finalMoves =
+		ok ? (int*)cdArena_AllocUncleared(&world->arena, (size_t)(bodyCapacity + 1) * sizeof(int)) : NULL;
+	if (stageMemory == NULL || context.finalFlags == NULL || context.finalSync == NULL || finalMoves == NULL)
 	{
 		world->outOfMemory = true;
 		return;
@@ -1426,12 +1571,47 @@ void cd2Solve(cd2World* world, cdReal timeStep, int subStepCount)
 			event->fellAsleep = false;
 		}
 	}
-	/* The broadphase, after every sweep (they query it as it was before the step's moves). */
+	/* The broadphase, after every sweep (they query it as it was before the step's moves), in body
+	 * order. A body with one shape to move (most) takes the fat box the finalize stage computed; the
+	 * records of the moves a few bodies ahead are loaded meanwhile, level by level (the shape, the
+	 * proxy's table entries, its parent in the tree, the grandparent): scattered records that the
+	 * moves would otherwise wait for one after the other. */
+	int finalMoveCount = 0;
 	for (int k = 0; k < context.bodyCount; ++k)
 	{
-		unsigned flags = context.finalFlags[k];
-		if ((flags & (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET)) == 0u)
+		if ((context.finalFlags[k] & (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET)) != 0u)
 		{
+			finalMoves[finalMoveCount++] = k;
+		}
+	}
+	enum
+	{
+		CD2_FINAL_AHEAD = 8,
+		CD2_FINAL_STAGES = 4
+	};
+	for (int j = 0; j < finalMoveCount; ++j)
+	{
+		for (int stage = 0; stage < CD2_FINAL_STAGES; ++stage)
+		{
+			int at = j + (CD2_FINAL_STAGES - stage) * CD2_FINAL_AHEAD;
+			if (at < finalMoveCount &&
+				(context.finalFlags[finalMoves[at]] &
+				 (CD2_FINAL_SYNC_PROXY | CD2_FINAL_BULLET | CD2_FINAL_SYNC_SEVERAL)) == CD2_FINAL_SYNC_PROXY)
+			{
+				const cd2FinalSync* next = context.finalSync + finalMoves[at];
+				if (stage == 0)
+				{
+					CD2_PREFETCH(&world->shapes.data[next->shape].fatAabb);
+				}
+				cd2BroadPhase_PrefetchMove(world->broadPhase, next->proxy, stage);
+			}
+		}
+		int k = finalMoves[j];
+		unsigned flags = context.finalFlags[k];
+		if ((flags & (CD2_FINAL_BULLET | CD2_FINAL_SYNC_SEVERAL)) == 0u &&
+			world->shapes.data[context.finalSync[k].shape].proxyId != CD_NULL_PROXY)
+		{
+			cd2SyncShapeProxyTo(world, context.finalSync[k].shape, context.finalSync[k].fat);
 			continue;
 		}
 		const cd2Body* body = world->bodies.data + context.bodyIndices[k];

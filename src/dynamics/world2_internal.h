@@ -367,6 +367,16 @@ typedef struct cd2ContactConstraintWide
 	int contact[CD_W]; /* the lane's contact, -1 for an empty lane */
 } cd2ContactConstraintWide;
 
+/* A body's shape that the finalize stage found out of its fat box: the shape, its proxy and its new
+ * fat box (cd2ComputeShapeFatBox), computed there so that the serial move reads neither the body
+ * nor the shape's geometry, and knows which proxies come next (to load their records early). */
+typedef struct cd2FinalSync
+{
+	int shape;
+	int proxy;
+	cd2Aabb fat;
+} cd2FinalSync;
+
 typedef struct cd2StepContext
 {
 	cdReal dt, inv_dt, h, inv_h;
@@ -403,7 +413,8 @@ typedef struct cd2StepContext
 	/* One per joint of `joints`, set by cd2PrepareJoints: what the sub-steps read of it, so that
 	 * they never read the joint or body records. */
 	cd2JointRef* jointRefs;
-	/* The slots of `joints` in joint index order (memory order), for the prepare stage. */
+	/* The slots of `joints` in joint index order (memory order), for the prepare stage (set with the
+	 * joints' colouring). */
 	int* jointIndexOrder;
 	bool enableWarmStarting;
 	/* Some touching contact has hit events: the store writes the points' approach speeds (only hit
@@ -411,6 +422,8 @@ typedef struct cd2StepContext
 	bool storeApproach;
 	/* Per solver body, what the finalize stage left for the serial pass after it (CD2_FINAL_*). */
 	uint8_t* finalFlags;
+	/* Per solver body with CD2_FINAL_SYNC_PROXY: its first shape to move in the broadphase. */
+	cd2FinalSync* finalSync;
 	/* The step's move events, one per solver body, written by index (NULL: out of memory). */
 	cd2BodyMoveEvent* moveEvents;
 } cd2StepContext;
@@ -423,6 +436,8 @@ typedef struct cd2StepContext
 #define CD2_FINAL_BULLET 2u
 #define CD2_FINAL_KINEMATIC 4u
 #define CD2_FINAL_RESTED 8u
+/* More than one of the body's shapes left its fat box (cd2FinalSync holds the first only). */
+#define CD2_FINAL_SYNC_SEVERAL 16u
 
 /* ---- events ---------------------------------------------------------------------------------- */
 typedef CD_ARRAY(cd2ContactBeginTouchEvent) cd2BeginEventArray;
@@ -579,6 +594,11 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 cd2Aabb cd2ComputeShapeBounds(const cd2World* world, const cd2WorldShape* shape);
 bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape);
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove);
+/* The broadphase half split once more, for a shape whose box left its fat box: the new fat box
+ * (shape->aabb with the shape's margin; read-only, any thread), then the move with that box (what
+ * cd2SyncShapeProxy does without forceMove, not thread-safe). */
+cd2Aabb cd2ComputeShapeFatBox(const cd2World* world, const cd2WorldShape* shape);
+void cd2SyncShapeProxyTo(cd2World* world, int shapeIndex, cd2Aabb fat);
 
 /* ---- contact2.c ------------------------------------------------------------------------------ */
 void cd2UpdateBroadPhasePairs(cd2World* world);
