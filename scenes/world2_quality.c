@@ -8,13 +8,13 @@
 /* Step counts and sub-steps of Box2D v3's benchmark/main.c for its scenes; the pyramids of bases 20
  * and 40 and the card house stand 10 s after 1 s of settling, large_pyramid 5.3 s after 3 s. */
 static const World2SceneInfo world2Scenes[WORLD2_SCENE_COUNT] = {
-	{"pyramid_20", 660, 4, false, 60},	 {"pyramid_40", 660, 4, false, 60},
+	{"pyramid_20", 660, 4, false, 60},	  {"pyramid_40", 660, 4, false, 60},
 	{"large_pyramid", 500, 4, true, 180}, {"many_pyramids", 200, 4, true, 60},
-	{"joint_grid", 500, 4, true, 0},	 {"rain", 1000, 4, true, 0},
-	{"smash", 300, 4, true, 0},			 {"spinner", 500, 4, true, 0},
-	{"tumbler", 750, 4, true, 0},		 {"card_house", 660, 4, false, 60},
-	{"ramp", 120, 4, false, 0},			 {"bullets", 120, 4, false, 0},
-	{"side_scroller", 900, 4, false, 0}, {"slingshot", 600, 4, false, 0},
+	{"joint_grid", 500, 4, true, 0},	  {"rain", 1000, 4, true, 0},
+	{"smash", 300, 4, true, 0},			  {"spinner", 500, 4, true, 0},
+	{"tumbler", 750, 4, true, 0},		  {"card_house", 660, 4, false, 60},
+	{"ramp", 120, 4, false, 0},			  {"bullets", 120, 4, false, 0},
+	{"side_scroller", 900, 4, false, 0},  {"slingshot", 600, 4, false, 0},
 	{"chains", 600, 4, false, 0},
 };
 
