@@ -511,8 +511,8 @@ static void TestPolygonCircle(void)
 		cd2Shape sb;
 		sb.type = CD2_SHAPE_CIRCLE;
 		sb.circle = circle;
-		TEST_CHECKF(SameBits(cd2CollideLocal(&sa, &sb, body, speculative), local), "trial %d: cd2CollideLocal",
-					trial);
+		TEST_CHECKF(SameBits(cd2CollideLocal(&sa, &sb, body, speculative), local),
+					"trial %d: cd2CollideLocal", trial);
 
 		/* The circle-first local form from the circle's frame, mapped into the polygon's. */
 		cd2Manifold first = cd2CollideCirclePolygonLocal(circle, &polygon, InverseOf(body), speculative);
@@ -533,14 +533,16 @@ static void TestPolygonCircle(void)
 			mismatches += !tieByConstruction;
 			double tie = 64.0 * (double)CD_REAL_EPSILON * scale;
 			bool sameDepth = local.pointCount == mapped.pointCount &&
-							 (local.pointCount == 0 ||
-							  fabs((double)local.points[0].separation - (double)mapped.points[0].separation) <= tie);
+							 (local.pointCount == 0 || fabs((double)local.points[0].separation -
+															(double)mapped.points[0].separation) <= tie);
 			/* Or at the speculative limit, where one form keeps the contact and the other drops it. */
-			bool atLimit =
-				(local.pointCount == 1 && fabs((double)local.points[0].separation - (double)speculative) <= tie) ||
-				(mapped.pointCount == 1 && fabs((double)mapped.points[0].separation - (double)speculative) <= tie);
-			TEST_CHECKF(sameDepth || atLimit, "trial %d: circle-first %d points sep %.9g, polygon-first %d sep %.9g",
-						trial, mapped.pointCount, (double)mapped.points[0].separation, local.pointCount,
+			bool atLimit = (local.pointCount == 1 &&
+							fabs((double)local.points[0].separation - (double)speculative) <= tie) ||
+						   (mapped.pointCount == 1 &&
+							fabs((double)mapped.points[0].separation - (double)speculative) <= tie);
+			TEST_CHECKF(sameDepth || atLimit,
+						"trial %d: circle-first %d points sep %.9g, polygon-first %d sep %.9g", trial,
+						mapped.pointCount, (double)mapped.points[0].separation, local.pointCount,
 						(double)local.points[0].separation);
 		}
 
