@@ -8,7 +8,8 @@ For each dimension N (2, 3):
   * every pair row's typed overlap function (the Overlap column, unless GJK) is named in the
     "## ND matrix" section, and every cdNOverlap<A><B> named there is a row of the pair table;
   * every pair row's typed manifold function (the Collide column, unless CORE or NONE) is named in
-    the "## ND contact manifolds" section, and every cdNCollide<A><B> named there is a row's;
+    the "## ND contact manifolds" section, and every cdNCollide<A><B> named there is a row's (or,
+    if public, the mirror of a row's, such as cd2CollidePolygonCircle);
   * the Distance column: `cdNDistance` is named in the matrix section (it serves every pair); a
     CLOSED_FORM distance whose cdNClosestPoints<A><B> is public is named there, and every
     cdNClosestPoints<A><B> named there is a CLOSED_FORM row's; a named closed-form distance
@@ -168,7 +169,11 @@ def check_dimension(n, pairs_text, api, public, errors):
             errors.append("docs/API.md '## %s': `%s` is not a row of the pair table (pairs%d.h)"
                           % (matrix_key, name, n))
     for name in sorted(manifolds):
-        if re.fullmatch(r"%sCollide(%s)(%s)" % (prefix, shape_alt, shape_alt), name) and name not in collides:
+        match = re.fullmatch(r"%sCollide(%s)(%s)" % (prefix, shape_alt, shape_alt), name)
+        # A public form out of canonical order (cd2CollidePolygonCircle) mirrors a row's function.
+        mirrored = (match is not None and name in public
+                    and "%sCollide%s%s" % (prefix, match.group(2), match.group(1)) in collides)
+        if match is not None and name not in collides and not mirrored:
             errors.append("docs/API.md '## %s': `%s` is not a typed manifold of the pair table (pairs%d.h)"
                           % (manifold_key, name, n))
 
