@@ -47,6 +47,8 @@ EXCEPTIONS = {
     "cd3MakeConeHull": "creates a cd3Hull (the family of cd3MakeBoxHull)",
     "cdInternalAssert": "called by the CD_ASSERT macro only",
     "cd3CollideHullTriangle": "former order of cd3CollideTriangleHull, kept for one release",
+    "cd2CollidePolygonCircle": "the mirror of cd2CollideCirclePolygon with the polygon as A (normal from the polygon)",
+    "cd2CollidePolygonCircleLocal": "the polygon-first local form: only the circle's centre is placed, nothing mapped back",
 }
 # Creators of objects that are not spelled cdNCreateX (see EXCEPTIONS).
 CREATORS = {"cd3Hull": ["cd3ComputeHull", "cd3MakeBoxHull", "cd3MakeCylinderHull", "cd3MakeConeHull"]}
