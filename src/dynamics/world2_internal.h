@@ -594,7 +594,7 @@ void cd2UpdateShapeBounds(cd2World* world, int shapeIndex, bool forceMove);
 cd2Aabb cd2ComputeShapeBounds(const cd2World* world, const cd2WorldShape* shape);
 bool cd2ShapeProxyNeedsSync(const cd2WorldShape* shape);
 void cd2SyncShapeProxy(cd2World* world, int shapeIndex, bool forceMove);
-/* The broadphase half split once more, for a shape whose box left its fat box: the new fat box
+/* cd2SyncShapeProxy in two halves, for a shape whose box left its fat box: the new fat box
  * (shape->aabb with the shape's margin; read-only, any thread), then the move with that box (what
  * cd2SyncShapeProxy does without forceMove, not thread-safe). */
 cd2Aabb cd2ComputeShapeFatBox(const cd2World* world, const cd2WorldShape* shape);
