@@ -1530,6 +1530,33 @@ static void TestDirectCapsuleFaceSide(void)
 				generic.pointCount, generic.points[0].id, (double)generic.normal.x, (double)generic.normal.y);
 }
 
+/* fuzz_chain2 (fuzz/corpus/fuzz_chain2/regression-polygon-face-facing-away-1e9): a rounded sliver
+ * polygon reaching from 1e9 to a vertex near a short chain segment. At those coordinates the
+ * closest points of the cores tie between the polygon's edges, and the one found has its closest
+ * point inside a face whose normal points away from the segment. The generic path refuses such a
+ * face and takes the gap contact; the dedicated routine clipped against that face, which the chain
+ * then turned into a two-point contact on the segment's face where the generic path reports none. */
+static void TestDirectPolygonFaceFacingAway(void)
+{
+	cd2ChainSegment s = {V(0.0081249997, 0.0081249997), V(-0.00162500003, -0.00124999997),
+						 V(-0.00325000007, -0.00412499998), V(0.00800000038, 0.0118749999)};
+	cd2Vec points[3] = {V(-1e9, -1e9), V(-9.99999972e-10, 0.00862499978), V(-1e9, -32934408.0)};
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 3, CD_R(0.0125000002), &polygon) == CD_OK);
+	cd2Manifold direct = cd2CollideChainSegmentPolygonDirect(&s, &polygon, CD_R(0.0));
+	cd2Manifold generic = cd2CollideChainSegmentPolygon(&s, &polygon, CD_R(0.0));
+	bool same = direct.pointCount == generic.pointCount && cd2VecEqual(direct.normal, generic.normal);
+	for (int i = 0; same && i < direct.pointCount; ++i)
+	{
+		same = direct.points[i].id == generic.points[i].id &&
+			   cd2VecEqual(direct.points[i].point, generic.points[i].point) &&
+			   direct.points[i].separation == generic.points[i].separation;
+	}
+	TEST_CHECKF(same, "direct %d points normal (%.9g %.9g), generic %d points normal (%.9g %.9g)",
+				direct.pointCount, (double)direct.normal.x, (double)direct.normal.y, generic.pointCount,
+				(double)generic.normal.x, (double)generic.normal.y);
+}
+
 /* Extreme scales: nothing NaN, normals unit, hits on the chain's side. */
 static void TestScales(void)
 {
@@ -1630,6 +1657,7 @@ int main(void)
 	TEST_RUN(TestDirectCapsuleEndOnCoreLine);
 	TEST_RUN(TestDirectCapsuleEndsTie);
 	TEST_RUN(TestDirectCapsuleFaceSide);
+	TEST_RUN(TestDirectPolygonFaceFacingAway);
 	TEST_RUN(TestScales);
 	return TEST_SUMMARY();
 }

@@ -597,15 +597,24 @@ static void CollideCores(const Pair* pair, cd2Manifold* out)
 				else
 				{
 					/* The shape's face holding its closest point; of a capsule's two-sided core, the
-					 * side facing the gap (against u), as the generic path picks it. */
+					 * side facing the gap (against u), as the generic path picks it. A polygon face
+					 * whose normal does not face the segment is not what is closest (the closest
+					 * points tie between edges at coordinates whose round-off exceeds the shapes'
+					 * sizes): the generic path then takes the gap contact, and so does this one. */
+					cd2Vec u = cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
 					int face = closestEdgeB;
 					if (pair->segments)
 					{
-						cd2Vec u =
-							cd2Scale(CD_R(1.0) / closest.distance, cd2Sub(closest.pointB, closest.pointA));
 						face = cd2Dot(polygon->normals[0], cd2Neg(u)) >= CD_R(0.0) ? 0 : 1;
 					}
-					ClipOnPolygon(out, pair, face, false);
+					if (cd2Dot(polygon->normals[face], u) <= CD_R(0.0))
+					{
+						ClipOnPolygon(out, pair, face, false);
+					}
+					else
+					{
+						out->pointCount = 0;
+					}
 				}
 				if (out->pointCount > 0 &&
 					SmallestSeparation(out) <= closest.distance - total + separatedTolerance)
