@@ -306,6 +306,54 @@ static void TestFarFromOrigin(void)
 	TEST_CHECK(worstLocal <= worstWorld || worstWorld <= 16.0 * (double)CD_REAL_EPSILON * 3.0);
 }
 
+/* The polygons of the centre tests: every 16th trial a square around the origin (a centre at the
+ * origin is equally far inside all edges), else a random one, rounded one time in three. */
+static cd2Polygon CentreTestPolygon(TestRng* rng, int trial)
+{
+	cd2Polygon polygon;
+	if (trial % 16 == 0)
+	{
+		cdReal h = RandomReal(rng, 0.1, 2.0);
+		cd2Vec corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+		TEST_CHECK(cd2MakePolygon(corners, 4, &polygon) == CD_OK);
+	}
+	else
+	{
+		polygon = RandomPolygon(rng, RandomVec(rng, 0.3));
+		polygon.radius = TestRngInt(rng, 3) == 0 ? RandomReal(rng, 0.0, 0.2) : CD_R(0.0);
+	}
+	return polygon;
+}
+
+/* A circle centre's target in the polygon's frame, aimed by the trial at every feature: exactly on
+ * a vertex, near one, on an edge, near an edge inside or out, the origin (trial % 16 == 4: the
+ * square's centre) or the centroid, far away, near by. */
+static cd2Vec CentreTestTarget(TestRng* rng, const cd2Polygon* polygon, int trial)
+{
+	int v = TestRngInt(rng, polygon->count);
+	cd2Vec vertex = polygon->vertices[v], after = polygon->vertices[(v + 1) % polygon->count];
+	switch (trial % 8)
+	{
+		case 0:
+			return vertex;
+		case 1:
+			return cd2Add(vertex, RandomVec(rng, 0.3));
+		case 2:
+			return cd2Lerp(vertex, after, RandomReal(rng, 0.0, 1.0));
+		case 3:
+		{
+			cd2Vec onEdge = cd2Lerp(vertex, after, RandomReal(rng, 0.0, 1.0));
+			return cd2MulAdd(onEdge, RandomReal(rng, -0.3, 0.6), polygon->normals[v]);
+		}
+		case 4:
+			return trial % 16 == 4 ? CD2_VEC_ZERO : polygon->centroid;
+		case 5:
+			return RandomVec(rng, 5.0);
+		default:
+			return RandomVec(rng, 1.5);
+	}
+}
+
 /* cd2CollideCirclePolygonLocal has its own scan of the polygon's edges (it stops at the first edge
  * the circle is beyond; two edges to a vector and the contact in vector lanes in the float build on
  * SSE2): its manifold must be, bit for bit, the world form's on the circle's centre
@@ -319,51 +367,12 @@ static void TestCirclePolygonScan(void)
 	int contacts = 0, vertexContacts = 0, empty = 0, ties = 0;
 	for (int trial = 0; trial < 40000; ++trial)
 	{
-		cd2Polygon polygon;
-		if (trial % 16 == 0)
-		{
-			/* A square around the origin: a centre at the origin is equally far inside all edges. */
-			cdReal h = RandomReal(&rng, 0.1, 2.0);
-			cd2Vec corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
-			TEST_CHECK(cd2MakePolygon(corners, 4, &polygon) == CD_OK);
-		}
-		else
-		{
-			polygon = RandomPolygon(&rng, RandomVec(&rng, 0.3));
-			polygon.radius = TestRngInt(&rng, 3) == 0 ? RandomReal(&rng, 0.0, 0.2) : CD_R(0.0);
-		}
+		cd2Polygon polygon = CentreTestPolygon(&rng, trial);
 		bool identity = TestRngInt(&rng, 4) == 0;
 		cd2Transform xf = identity ? CD2_TRANSFORM_IDENTITY : RandomTransform(&rng, 10.0);
-		/* The centre's target in the polygon's frame. */
-		int v = TestRngInt(&rng, polygon.count);
-		cd2Vec vertex = polygon.vertices[v], after = polygon.vertices[(v + 1) % polygon.count];
-		cd2Vec target;
-		switch (trial % 8)
-		{
-			case 0:
-				target = vertex;
-				break;
-			case 1:
-				target = cd2Add(vertex, RandomVec(&rng, 0.3));
-				break;
-			case 2:
-				target = cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0));
-				break;
-			case 3:
-				target = cd2MulAdd(cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0)),
-								   RandomReal(&rng, -0.3, 0.6), polygon.normals[v]);
-				break;
-			case 4:
-				target = trial % 16 == 4 ? CD2_VEC_ZERO : polygon.centroid;
-				ties += trial % 16 == 4 && identity;
-				break;
-			case 5:
-				target = RandomVec(&rng, 5.0);
-				break;
-			default:
-				target = RandomVec(&rng, 1.5);
-				break;
-		}
+		/* The centre's target in the polygon's frame (ties: the square's centre, landing exactly). */
+		cd2Vec target = CentreTestTarget(&rng, &polygon, trial);
+		ties += trial % 16 == 4 && identity;
 		cd2Circle circle;
 		circle.center = cd2TransformPoint(xf, target);
 		circle.radius = RandomSize(&rng, 0.8);
@@ -418,18 +427,7 @@ static void TestPolygonCircle(void)
 	int trials = 40000;
 	for (int trial = 0; trial < trials; ++trial)
 	{
-		cd2Polygon polygon;
-		if (trial % 16 == 0)
-		{
-			cdReal h = RandomReal(&rng, 0.1, 2.0);
-			cd2Vec corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
-			TEST_CHECK(cd2MakePolygon(corners, 4, &polygon) == CD_OK);
-		}
-		else
-		{
-			polygon = RandomPolygon(&rng, RandomVec(&rng, 0.3));
-			polygon.radius = TestRngInt(&rng, 3) == 0 ? RandomReal(&rng, 0.0, 0.2) : CD_R(0.0);
-		}
+		cd2Polygon polygon = CentreTestPolygon(&rng, trial);
 		/* xf: the circle's body frame in the polygon's. */
 		cd2Transform xf;
 		int kind = TestRngInt(&rng, 8);
@@ -453,34 +451,7 @@ static void TestPolygonCircle(void)
 			xf = RandomTransform(&rng, 10.0);
 		}
 		/* The centre's target in the polygon's frame. */
-		int v = TestRngInt(&rng, polygon.count);
-		cd2Vec vertex = polygon.vertices[v], after = polygon.vertices[(v + 1) % polygon.count];
-		cd2Vec target;
-		switch (trial % 8)
-		{
-			case 0:
-				target = vertex;
-				break;
-			case 1:
-				target = cd2Add(vertex, RandomVec(&rng, 0.3));
-				break;
-			case 2:
-				target = cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0));
-				break;
-			case 3:
-				target = cd2MulAdd(cd2Lerp(vertex, after, RandomReal(&rng, 0.0, 1.0)),
-								   RandomReal(&rng, -0.3, 0.6), polygon.normals[v]);
-				break;
-			case 4:
-				target = trial % 16 == 4 ? CD2_VEC_ZERO : polygon.centroid;
-				break;
-			case 5:
-				target = RandomVec(&rng, 5.0);
-				break;
-			default:
-				target = RandomVec(&rng, 1.5);
-				break;
-		}
+		cd2Vec target = CentreTestTarget(&rng, &polygon, trial);
 		/* The circle in its body's frame: centred on the body (the common case) or not, placed so
 		 * that its centre lands on the target. */
 		cd2Circle circle;
