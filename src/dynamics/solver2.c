@@ -405,6 +405,17 @@ static int cd2ChunkEnd(int chunk, int count)
 	return count - chunk * CD2_SETUP_CHUNK > CD2_SETUP_CHUNK ? (chunk + 1) * CD2_SETUP_CHUNK : count;
 }
 
+/* Where chunk startChunk's items start in a dense list: the counts of the chunks before it. */
+static int cd2ChunkOffset(const int* chunkCounts, int startChunk)
+{
+	int offset = 0;
+	for (int c = 0; c < startChunk; ++c)
+	{
+		offset += chunkCounts[c];
+	}
+	return offset;
+}
+
 /* Chunks [startChunk, endChunk) of the world bodies: which are solved (awake, enabled, not static),
  * counted per chunk; the others lose their solver index. */
 static void cd2CountBodies(cd2World* world, cd2SolveSetup* setup, int startChunk, int endChunk)
@@ -440,11 +451,7 @@ static void cd2CountBodies(cd2World* world, cd2SolveSetup* setup, int startChunk
 static void cd2ListBodies(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
 						  int endChunk)
 {
-	int k = 0;
-	for (int c = 0; c < startChunk; ++c)
-	{
-		k += setup->bodyChunkCounts[c];
-	}
+	int k = cd2ChunkOffset(setup->bodyChunkCounts, startChunk);
 	int end = cd2ChunkEnd(endChunk - 1, world->bodies.count);
 	for (int i = startChunk * CD2_SETUP_CHUNK; i < end; ++i)
 	{
@@ -509,11 +516,7 @@ static void cd2CountContacts(cd2World* world, cd2SolveSetup* setup, int startChu
 static void cd2ListContacts(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
 							int endChunk)
 {
-	int k = 0;
-	for (int c = 0; c < startChunk; ++c)
-	{
-		k += setup->contactChunkCounts[c];
-	}
+	int k = cd2ChunkOffset(setup->contactChunkCounts, startChunk);
 	const cd2ColorCache* cache = setup->contactCache;
 	int cached = cache != NULL ? cache->count : 0;
 	for (int c = startChunk; c < endChunk; ++c)
@@ -716,11 +719,7 @@ static void cd2CountJoints(cd2World* world, cd2SolveSetup* setup, int startChunk
 static void cd2ListJoints(cd2World* world, cd2StepContext* context, cd2SolveSetup* setup, int startChunk,
 						  int endChunk)
 {
-	int k = 0;
-	for (int c = 0; c < startChunk; ++c)
-	{
-		k += setup->jointChunkCounts[c];
-	}
+	int k = cd2ChunkOffset(setup->jointChunkCounts, startChunk);
 	const int* solverOf = setup->solverOf;
 	int count = world->joints.count;
 	bool onePass = setup->jointsInOnePass;

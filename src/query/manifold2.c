@@ -1039,6 +1039,14 @@ static inline __m128 PairLanes(cd2Vec pair)
 	return _mm_castpd_ps(_mm_set_sd(bits));
 }
 
+/* A rotation's cosine and sine, each in every lane (for RotateLanes). */
+static inline void RotationLanes(cd2Rot q, __m128* cosine, __m128* sine)
+{
+	__m128 rotation = PairLanes(cd2MakeVec(q.c, q.s));
+	*cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
+	*sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+}
+
 /* cosine * v + sine * swap(v) in lanes 0 and 1: with sine = (-s, s) the rotation of v by (c, s),
  * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
  * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
@@ -1198,9 +1206,8 @@ cd2Manifold cd2CollideCirclePolygonLocal(cd2Circle a, const cd2Polygon* b, cd2Tr
 	 * point (PolygonCentreLanes, then the mapping back), without moving scalars between registers
 	 * and vectors on the way (on collide_bench_scenes' circle-polygon row those moves and a spill
 	 * of the tangent cost more than the arithmetic). */
-	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
-	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
-	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+	__m128 cosine, sine;
+	RotationLanes(xfB.q, &cosine, &sine);
 	__m128 origin = PairLanes(xfB.p);
 	__m128 inverseSine = _mm_xor_ps(sine, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); /* (s, -s) */
 	__m128 placed = RotateLanes(cosine, inverseSine, _mm_sub_ps(PairLanes(a.center), origin));
@@ -1270,9 +1277,8 @@ cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Tr
 	CD_ASSERT(a != NULL);
 #if CD2_SEPARATION_SSE
 	/* cd2TransformPoint(xfB, centre) in lanes: the rotation, then the translation added. */
-	__m128 rotation = PairLanes(cd2MakeVec(xfB.q.c, xfB.q.s));
-	__m128 cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
-	__m128 sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+	__m128 cosine, sine;
+	RotationLanes(xfB.q, &cosine, &sine);
 	__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
 	__m128 origin = PairLanes(xfB.p);
 	__m128 local = PairLanes(b.center);
