@@ -25,6 +25,8 @@
 #include "sat3_box.h"
 #include "sat3_support.h"
 
+#include <stddef.h>
+
 /* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
  * pair over the faces, only when it separates by this much more. */
 #define FACE_BIAS CD_R(1.0e-4)
@@ -2051,11 +2053,30 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 	cd3Quat qa = a->rotation;
 	bool identityA = cd3IsIdentityQuatBits(qa);
 	cd3Transform frame = {a->center, qa};
-	m->normal = cd3Normalize(sat->edgeNormal);
+	cd3Vec normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
 		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
-	AddPoint(m, identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local), sat->edgeSeparation,
-			 id);
+	cd3Vec point = identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local);
+#if CD3_BOX_FACES_SSE
+	/* The manifold (empty on entry) written in the 16-byte pieces its caller copies it by, each
+	 * from one store: the normal and x, then y, z, the separation and the id, and the count at the
+	 * end (field stores read back 16 bytes at a time stalled on store forwarding). */
+	_Static_assert(sizeof(cd3Manifold) == 96 && offsetof(cd3Manifold, points) == 12 &&
+					   offsetof(cd3Manifold, pointCount) == 92 && sizeof(cd3ManifoldPoint) == 20,
+				   "cd3Manifold layout (float build)");
+	uint32_t yBits, zBits, separationBits;
+	memcpy(&yBits, &point.y, sizeof yBits);
+	memcpy(&zBits, &point.z, sizeof zBits);
+	memcpy(&separationBits, &sat->edgeSeparation, sizeof separationBits);
+	char* bytes = (char*)m;
+	_mm_storeu_ps((float*)(void*)bytes, _mm_setr_ps(normal.x, normal.y, normal.z, point.x));
+	_mm_storeu_si128((__m128i*)(void*)(bytes + 16),
+					 _mm_setr_epi32((int)yBits, (int)zBits, (int)separationBits, (int)id));
+	_mm_storeu_si128((__m128i*)(void*)(bytes + 80), _mm_setr_epi32(0, 0, 0, 1));
+#else
+	m->normal = normal;
+	AddPoint(m, point, sat->edgeSeparation, id);
+#endif
 }
 
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
