@@ -175,9 +175,10 @@ static cdReal SumAbs(cd3Vec v)
 	return MarginAbs(v.x) + MarginAbs(v.y) + MarginAbs(v.z);
 }
 
+/* The largest |component|, for the margins of MayHitTriangle. */
 static cdReal MaxAbs3(cd3Vec v)
 {
-	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+	return cdMax(MarginAbs(v.x), cdMax(MarginAbs(v.y), MarginAbs(v.z)));
 }
 
 /* False only when cd3RaycastTriangle(t, ray) certainly misses: a cdReal test of the ray line
