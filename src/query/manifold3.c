@@ -2191,29 +2191,32 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
  * the placed box, bit for bit), handed on by address. */
 cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance)
 {
-	cd3Box placed;
-	placed.halfExtents = b.halfExtents;
 	/* A box centred in its body's frame (the common case) is placed by xfB alone: the products with
 	 * the zero centre and the identity rotation give xfB's own components (up to the sign of a zero). */
 	bool centred = cd3AreZeroBits(b.center.x, b.center.y, b.center.z);
 	bool aligned = cd3IsIdentityQuatBits(b.rotation);
-	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
-	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
+	cd3Box placed;
 #if CD3_BOX_FACES_SSE
 	/* Both boxes in their bodies' frames (the common case): B's frame and the face separations
 	 * from xfB at once, and the pairs apart along a face normal (most of those a broadphase
-	 * reports apart) end here. The SAT takes the rest on from them. */
+	 * reports apart) end here, before anything is stored. The SAT takes the rest on from them. */
 	if (((int)centred & (int)aligned & (int)cd3IsIdentityQuatBits(a.rotation)) != 0)
 	{
 		cd3BoxFaces faces;
 		if (cd3ComputeBoxFaces(&faces, a.halfExtents, b.halfExtents, xfB.q, cd3Sub(xfB.p, a.center),
-							   speculativeDistance))
+							   speculativeDistance, true))
 		{
 			return EmptyManifold();
 		}
+		placed.halfExtents = b.halfExtents;
+		placed.center = xfB.p;
+		placed.rotation = xfB.q;
 		return CollideBoxes(&a, &placed, &faces, speculativeDistance);
 	}
 #endif
+	placed.halfExtents = b.halfExtents;
+	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
+	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
 	return CollideBoxes(&a, &placed, NULL, speculativeDistance);
 }
 

@@ -181,9 +181,10 @@ static inline __m128 cd3BoxAbs4(__m128 x)
 /* Fills *f for box A unrotated at the origin with half extents ha and box B with half extents
  * hb, rotated by q and centred at t (A's frame). True when a face axis puts them apart by more
  * than `limit` (no separation is then a NaN): the answer cd3SatBoxesInPlace gives with faceExit
- * = limit is then apart beyond the limit. */
+ * = limit is then apart beyond the limit. With onlyIfNear, *f is left unwritten when true is
+ * returned (a caller that then stops saves the stores). */
 static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Quat rotation, cd3Vec t,
-									  float limit)
+									  float limit, bool onlyIfNear)
 {
 	/* Lanes x, y, z, w; the comments name the lanes low to high. */
 	__m128 q = _mm_setr_ps(rotation.x, rotation.y, rotation.z, rotation.w);
@@ -231,6 +232,14 @@ static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Q
 										   _mm_mul_ps(_mm_shuffle_ps(va, va, 0x55), cd3BoxAbs4(r1))),
 								_mm_mul_ps(_mm_shuffle_ps(va, va, 0xaa), cd3BoxAbs4(r2)));
 	__m128 faceB = _mm_sub_ps(_mm_sub_ps(cd3BoxAbs4(offsetB), vb), radiusA);
+	__m128 bound = _mm_set1_ps(limit);
+	int beyond = _mm_movemask_ps(_mm_or_ps(_mm_cmpgt_ps(faceA, bound), _mm_cmpgt_ps(faceB, bound)));
+	int unordered = _mm_movemask_ps(_mm_cmpunord_ps(faceA, faceB));
+	bool apart = (beyond & 7) != 0 && (unordered & 7) == 0;
+	if (apart && onlyIfNear)
+	{
+		return true;
+	}
 	_mm_storeu_ps(f->column[0], c0);
 	_mm_storeu_ps(f->column[1], c1);
 	_mm_storeu_ps(f->column[2], c2);
@@ -240,10 +249,7 @@ static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Q
 	_mm_storeu_ps(f->faceA, faceA);
 	_mm_storeu_ps(f->offsetB, offsetB);
 	_mm_storeu_ps(f->faceB, faceB);
-	__m128 bound = _mm_set1_ps(limit);
-	int beyond = _mm_movemask_ps(_mm_or_ps(_mm_cmpgt_ps(faceA, bound), _mm_cmpgt_ps(faceB, bound)));
-	int unordered = _mm_movemask_ps(_mm_cmpunord_ps(faceA, faceB));
-	return (beyond & 7) != 0 && (unordered & 7) == 0;
+	return apart;
 }
 
 /* One lane per j of cd3BoxEdgeAxis's inputs for the three edge axes A_i x B_j of one i: ri1 and
@@ -327,7 +333,7 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	cd3BoxFaces computed;
 	if (faces == NULL)
 	{
-		(void)cd3ComputeBoxFaces(&computed, boxA->halfExtents, boxB->halfExtents, q, t, faceExit);
+		(void)cd3ComputeBoxFaces(&computed, boxA->halfExtents, boxB->halfExtents, q, t, faceExit, false);
 		faces = &computed;
 	}
 	cd3Mat33 m;
