@@ -1912,7 +1912,7 @@ static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const
 	int j = 0;
 	for (int axis = 1; axis < 3; ++axis)
 	{
-		if (cdAbs(along[axis]) > cdAbs(along[j]))
+		if (cd3AbsNoBranch(along[axis]) > cd3AbsNoBranch(along[j]))
 		{
 			j = axis;
 		}
@@ -2107,9 +2107,9 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, const cd
 		cdReal size = -CD_R(1.0);
 		/* Above this bound of size (its 1-norm form, which is at least the 2-norms) a lead decides
 		 * without the square roots of size, which sat on the path to the choice's branch. */
-		cdReal sizeBound =
-			CD_R(2.02) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
-						  cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
+		cdReal sizeBound = CD_R(2.02) * (cd3AbsNoBranch(a->halfExtents.x) + cd3AbsNoBranch(a->halfExtents.y) +
+										 cd3AbsNoBranch(a->halfExtents.z) + cd3AbsNoBranch(b->halfExtents.x) +
+										 cd3AbsNoBranch(b->halfExtents.y) + cd3AbsNoBranch(b->halfExtents.z));
 		bool useB = false;
 		if (sat.faceSeparationB > sat.faceSeparationA)
 		{
