@@ -253,10 +253,12 @@ static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Q
 }
 
 /* One lane per j of cd3BoxEdgeAxis's inputs for the three edge axes A_i x B_j of one i: ri1 and
- * ri2 the rows i+1 and i+2 of the rotation, a the absolute rows, radiusB from absolute row i. */
+ * ri2 the rows i+1 and i+2 of the rotation, a the absolute rows, radiusB from absolute row i.
+ * threshold2 is the threshold's square and ahead whether the threshold is >= 0 (the same in
+ * every lane, so a branch on it is the selection cd3BoxEdgeAxis makes). */
 static inline __m128 cd3BoxEdgeCandidates4(__m128 ri1, __m128 ri2, __m128 ai1, __m128 ai2, __m128 ai,
 										   __m128 hai1, __m128 hai2, __m128 ti1, __m128 ti2, __m128 hb1,
-										   __m128 hb2, __m128 threshold)
+										   __m128 hb2, __m128 threshold2, bool ahead)
 {
 	/* cd3BoxEdgeAxis: ri1j * ri1j + ri2j * ri2j; radiusA ha(i+1) a(i+2)j + ha(i+2) a(i+1)j;
 	 * radiusB hb(j+1) ai(j+2) + hb(j+2) ai(j+1); centre t(i+2) ri1j - t(i+1) ri2j. */
@@ -266,13 +268,11 @@ static inline __m128 cd3BoxEdgeCandidates4(__m128 ri1, __m128 ri2, __m128 ai1, _
 								_mm_mul_ps(hb2, _mm_shuffle_ps(ai, ai, _MM_SHUFFLE(3, 0, 2, 1))));
 	__m128 centre = _mm_sub_ps(_mm_mul_ps(ti2, ri1), _mm_mul_ps(ti1, ri2));
 	__m128 gap = _mm_sub_ps(_mm_sub_ps(cd3BoxAbs4(centre), radiusA), radiusB);
-	__m128 bar = _mm_mul_ps(_mm_mul_ps(threshold, threshold), length2);
-	__m128 zero = _mm_setzero_ps();
-	__m128 ahead = _mm_cmpge_ps(threshold, zero);
+	__m128 bar = _mm_mul_ps(threshold2, length2);
 	__m128 gap2 = _mm_mul_ps(gap, gap);
-	__m128 beatsAhead = _mm_and_ps(_mm_cmpgt_ps(gap, zero), _mm_cmpgt_ps(gap2, bar));
-	__m128 beatsBehind = _mm_or_ps(_mm_cmpge_ps(gap, zero), _mm_cmplt_ps(gap2, bar));
-	__m128 beats = _mm_or_ps(_mm_and_ps(ahead, beatsAhead), _mm_andnot_ps(ahead, beatsBehind));
+	__m128 zero = _mm_setzero_ps();
+	__m128 beats = ahead ? _mm_and_ps(_mm_cmpgt_ps(gap, zero), _mm_cmpgt_ps(gap2, bar))
+						 : _mm_or_ps(_mm_cmpge_ps(gap, zero), _mm_cmplt_ps(gap2, bar));
 	__m128 explicitRadius =
 		_mm_cmplt_ps(length2, _mm_set1_ps(CD3_BOX_EXPLICIT_RADIUS_SINE * CD3_BOX_EXPLICIT_RADIUS_SINE));
 	__m128 notParallel = _mm_cmpgt_ps(length2, _mm_set1_ps(CD3_BOX_PARALLEL_SINE * CD3_BOX_PARALLEL_SINE));
@@ -292,13 +292,15 @@ static inline unsigned cd3BoxEdgeCandidates(const cd3BoxFaces* f, cd3Vec ha, cd3
 	__m128 ha0 = _mm_set1_ps(ha.x), ha1 = _mm_set1_ps(ha.y), ha2 = _mm_set1_ps(ha.z);
 	__m128 t0 = _mm_set1_ps(t.x), t1 = _mm_set1_ps(t.y), t2 = _mm_set1_ps(t.z);
 	__m128 hb1 = _mm_setr_ps(hb.y, hb.z, hb.x, 0.0f), hb2 = _mm_setr_ps(hb.z, hb.x, hb.y, 0.0f);
-	__m128 threshold = _mm_set1_ps(faceBest);
+	/* cd3BoxEdgeAxis's threshold is faceBest for the first axis (the best edge is -CD_REAL_MAX). */
+	__m128 threshold2 = _mm_set1_ps(faceBest * faceBest);
+	bool ahead = faceBest >= CD_R(0.0);
 	unsigned m0 = (unsigned)_mm_movemask_ps(
-		cd3BoxEdgeCandidates4(r1, r2, a1, a2, a0, ha1, ha2, t1, t2, hb1, hb2, threshold));
+		cd3BoxEdgeCandidates4(r1, r2, a1, a2, a0, ha1, ha2, t1, t2, hb1, hb2, threshold2, ahead));
 	unsigned m1 = (unsigned)_mm_movemask_ps(
-		cd3BoxEdgeCandidates4(r2, r0, a2, a0, a1, ha2, ha0, t2, t0, hb1, hb2, threshold));
+		cd3BoxEdgeCandidates4(r2, r0, a2, a0, a1, ha2, ha0, t2, t0, hb1, hb2, threshold2, ahead));
 	unsigned m2 = (unsigned)_mm_movemask_ps(
-		cd3BoxEdgeCandidates4(r0, r1, a0, a1, a2, ha0, ha1, t0, t1, hb1, hb2, threshold));
+		cd3BoxEdgeCandidates4(r0, r1, a0, a1, a2, ha0, ha1, t0, t1, hb1, hb2, threshold2, ahead));
 	return (m0 & 7u) | (m1 & 7u) << 3 | (m2 & 7u) << 6;
 }
 #endif
