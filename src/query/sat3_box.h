@@ -352,9 +352,15 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	cdReal r00 = m.cx.x, r10 = m.cx.y, r20 = m.cx.z;
 	cdReal r01 = m.cy.x, r11 = m.cy.y, r21 = m.cy.z;
 	cdReal r02 = m.cz.x, r12 = m.cz.y, r22 = m.cz.z;
+#if CD3_BOX_FACES_SSE
+	/* |rij| where an edge axis the screening kept needs it (the face separations came in lanes). */
+#define CD3_BOX_ABS(ij) cd3AbsNoBranch(r##ij)
+#else
 	cdReal a00 = cd3AbsNoBranch(r00), a10 = cd3AbsNoBranch(r10), a20 = cd3AbsNoBranch(r20);
 	cdReal a01 = cd3AbsNoBranch(r01), a11 = cd3AbsNoBranch(r11), a21 = cd3AbsNoBranch(r21);
 	cdReal a02 = cd3AbsNoBranch(r02), a12 = cd3AbsNoBranch(r12), a22 = cd3AbsNoBranch(r22);
+#define CD3_BOX_ABS(ij) a##ij
+#endif
 	cdReal t0 = t.x, t1 = t.y, t2 = t.z;
 
 	cd3SatResult r;
@@ -433,33 +439,43 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 #define CD3_BOX_EDGE_CANDIDATE(k) 1u
 #endif
 	bool apart = (CD3_BOX_EDGE_CANDIDATE(0) &&
-				  cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * a20 + ha2 * a10, hb1 * a02 + hb2 * a01,
-								 t2 * r10 - t1 * r20, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * CD3_BOX_ABS(20) + ha2 * CD3_BOX_ABS(10),
+								 hb1 * CD3_BOX_ABS(02) + hb2 * CD3_BOX_ABS(01), t2 * r10 - t1 * r20, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(1) &&
-				  cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * a21 + ha2 * a11, hb2 * a00 + hb0 * a02,
-								 t2 * r11 - t1 * r21, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * CD3_BOX_ABS(21) + ha2 * CD3_BOX_ABS(11),
+								 hb2 * CD3_BOX_ABS(00) + hb0 * CD3_BOX_ABS(02), t2 * r11 - t1 * r21, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(2) &&
-				  cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * a22 + ha2 * a12, hb0 * a01 + hb1 * a00,
-								 t2 * r12 - t1 * r22, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * CD3_BOX_ABS(22) + ha2 * CD3_BOX_ABS(12),
+								 hb0 * CD3_BOX_ABS(01) + hb1 * CD3_BOX_ABS(00), t2 * r12 - t1 * r22, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(3) &&
-				  cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * a00 + ha0 * a20, hb1 * a12 + hb2 * a11,
-								 t0 * r20 - t2 * r00, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * CD3_BOX_ABS(00) + ha0 * CD3_BOX_ABS(20),
+								 hb1 * CD3_BOX_ABS(12) + hb2 * CD3_BOX_ABS(11), t0 * r20 - t2 * r00, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(4) &&
-				  cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * a01 + ha0 * a21, hb2 * a10 + hb0 * a12,
-								 t0 * r21 - t2 * r01, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * CD3_BOX_ABS(01) + ha0 * CD3_BOX_ABS(21),
+								 hb2 * CD3_BOX_ABS(10) + hb0 * CD3_BOX_ABS(12), t0 * r21 - t2 * r01, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(5) &&
-				  cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * a02 + ha0 * a22, hb0 * a11 + hb1 * a10,
-								 t0 * r22 - t2 * r02, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * CD3_BOX_ABS(02) + ha0 * CD3_BOX_ABS(22),
+								 hb0 * CD3_BOX_ABS(11) + hb1 * CD3_BOX_ABS(10), t0 * r22 - t2 * r02, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(6) &&
-				  cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * a10 + ha1 * a00, hb1 * a22 + hb2 * a21,
-								 t1 * r00 - t0 * r10, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * CD3_BOX_ABS(10) + ha1 * CD3_BOX_ABS(00),
+								 hb1 * CD3_BOX_ABS(22) + hb2 * CD3_BOX_ABS(21), t1 * r00 - t0 * r10, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(7) &&
-				  cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * a11 + ha1 * a01, hb2 * a20 + hb0 * a22,
-								 t1 * r01 - t0 * r11, faceBest, faceExit, &m, hb)) ||
+				  cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * CD3_BOX_ABS(11) + ha1 * CD3_BOX_ABS(01),
+								 hb2 * CD3_BOX_ABS(20) + hb0 * CD3_BOX_ABS(22), t1 * r01 - t0 * r11, faceBest,
+								 faceExit, &m, hb)) ||
 				 (CD3_BOX_EDGE_CANDIDATE(8) &&
-				  cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * a12 + ha1 * a02, hb0 * a21 + hb1 * a20,
-								 t1 * r02 - t0 * r12, faceBest, faceExit, &m, hb));
+				  cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * CD3_BOX_ABS(12) + ha1 * CD3_BOX_ABS(02),
+								 hb0 * CD3_BOX_ABS(21) + hb1 * CD3_BOX_ABS(20), t1 * r02 - t0 * r12, faceBest,
+								 faceExit, &m, hb));
 #undef CD3_BOX_EDGE_CANDIDATE
+#undef CD3_BOX_ABS
 	(void)apart;
 	r.edgeSeparation = e.separation;
 	r.edgeA = -1;
