@@ -5,6 +5,8 @@
 #include "geometry/mesh3_internal.h"
 #include "query/mesh_query3.h"
 
+#include <string.h>
+
 #if !CD_DOUBLE && defined(__SSE2__) && !defined(COLLIDE_NO_SIMD)
 #include <emmintrin.h>
 #define CD_MESH_SSE 1
@@ -227,6 +229,26 @@ static cdReal TriangleMagnitude(cd3Triangle t, cdReal rayMagnitude)
 	return cdMax(rayMagnitude, cdMax(MaxAbs3(t.a), cdMax(MaxAbs3(t.b), MaxAbs3(t.c))));
 }
 
+/* The bits of a real. */
+#if CD_DOUBLE
+typedef uint64_t RealBits;
+#else
+typedef uint32_t RealBits;
+#endif
+static inline RealBits GetBits(cdReal x)
+{
+	RealBits bits;
+	memcpy(&bits, &x, sizeof bits);
+	return bits;
+}
+
+/* The identity transform with +0 zeros: one integer test instead of seven comparisons. */
+static inline bool IsIdentityBits(cd3Transform xf)
+{
+	return (GetBits(xf.p.x) | GetBits(xf.p.y) | GetBits(xf.p.z) | GetBits(xf.q.x) | GetBits(xf.q.y) |
+			GetBits(xf.q.z) | (GetBits(xf.q.w) ^ GetBits(CD_R(1.0)))) == 0;
+}
+
 /* Node fractions are those of the mesh-space ray; the triangle casts run in world space on the
  * world triangles, like a loop over cd3RaycastTriangle. The margin covers the difference between
  * the two fractions (a few epsilons). */
@@ -238,9 +260,11 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 	{
 		return false;
 	}
-	/* The identity (the common case of a static mesh placed in world space) moves nothing. */
-	bool identity = xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) && xf.p.z == CD_R(0.0) &&
-					xf.q.x == CD_R(0.0) && xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0);
+	/* The identity (the common case of a static mesh placed in world space) moves nothing. Its
+	 * exact bits are tested first, in one integer test; the comparisons take the other zeros. */
+	bool identity = IsIdentityBits(xf) || (xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) &&
+										   xf.p.z == CD_R(0.0) && xf.q.x == CD_R(0.0) &&
+										   xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0));
 	RayBox box = MakeRayBox(identity ? ray : RayToMesh(xf, ray));
 	cd3Vec rayEnd = cd3Add(ray.origin, ray.translation);
 	cdReal rayMagnitude = cdMax(MaxAbs3(ray.origin), MaxAbs3(rayEnd));
