@@ -19,9 +19,17 @@
 #include <float.h>
 #include <math.h>
 
+/* |a| as a max, one instruction where cdAbs compares and branches on a sign that is random from
+ * call to call; it differs from cdAbs only in the sign of a zero (and of a NaN), which the
+ * magnitudes below, only compared or multiplied into tolerances, never show. */
+static inline cdReal AbsNoBranch(cdReal a)
+{
+	return cdMax(a, -a);
+}
+
 static cdReal MaxAbsComponent(cd3Vec v)
 {
-	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+	return cdMax(AbsNoBranch(v.x), cdMax(AbsNoBranch(v.y), AbsNoBranch(v.z)));
 }
 
 /* Unit direction and length of the translation; false for a zero (or non-finite) length. */
@@ -283,6 +291,14 @@ bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit)
 	return true;
 }
 
+/* WideMaxAbs with |x| as a max (no branch on the sign): the same value but for the sign of a zero
+ * (and of a NaN), which the size test below (> 0) does not see. */
+static inline double WideMaxAbsNoBranch(WideVec v)
+{
+	double x = v.x > -v.x ? v.x : -v.x, y = v.y > -v.y ? v.y : -v.y, z = v.z > -v.z ? v.z : -v.z;
+	return x > y ? (x > z ? x : z) : (y > z ? y : z);
+}
+
 /* Squared distance from p to the segment a-b, in double. */
 static double WideSegmentDistanceSquared(WideVec a, WideVec b, WideVec p)
 {
@@ -310,7 +326,8 @@ bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
 	WideVec ac = WideSub(Widen(t.c), a);
 	WideVec bc = WideSub(Widen(t.c), Widen(t.b));
 	/* Scaled to the triangle's size, so that products of up to four lengths stay in range. */
-	double size = WideMaxAbs(ab) > WideMaxAbs(ac) ? WideMaxAbs(ab) : WideMaxAbs(ac);
+	double size =
+		WideMaxAbsNoBranch(ab) > WideMaxAbsNoBranch(ac) ? WideMaxAbsNoBranch(ab) : WideMaxAbsNoBranch(ac);
 	if (!(size > 0.0))
 	{
 		return false;
