@@ -25,6 +25,8 @@
 #include "sat3_box.h"
 #include "sat3_support.h"
 
+#include <stddef.h>
+
 /* Tie tolerances, as fractions of the pair's size: B's face is preferred over A's, and an edge
  * pair over the faces, only when it separates by this much more. */
 #define FACE_BIAS CD_R(1.0e-4)
@@ -1910,7 +1912,7 @@ static void BoxFaceContact(const cd3Box* ref, int face, const cd3Box* inc, const
 	int j = 0;
 	for (int axis = 1; axis < 3; ++axis)
 	{
-		if (cdAbs(along[axis]) > cdAbs(along[j]))
+		if (cd3AbsNoBranch(along[axis]) > cd3AbsNoBranch(along[j]))
 		{
 			j = axis;
 		}
@@ -2051,11 +2053,30 @@ static void BoxEdgeContact(const cd3Box* a, const cd3Box* b, const cd3SatResult*
 	cd3Quat qa = a->rotation;
 	bool identityA = cd3IsIdentityQuatBits(qa);
 	cd3Transform frame = {a->center, qa};
-	m->normal = cd3Normalize(sat->edgeNormal);
+	cd3Vec normal = cd3Normalize(sat->edgeNormal);
 	uint32_t id =
 		CD3_FEATURE_EDGES | ((uint32_t)sat->edgeA & 0x7fffu) | (((uint32_t)sat->edgeB & 0x7fffu) << 15);
-	AddPoint(m, identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local), sat->edgeSeparation,
-			 id);
+	cd3Vec point = identityA ? cd3Add(a->center, local) : cd3TransformPoint(frame, local);
+#if CD3_BOX_FACES_SSE
+	/* The manifold (empty on entry) written in the 16-byte pieces its caller copies it by, each
+	 * from one store: the normal and x, then y, z, the separation and the id, and the count at the
+	 * end (field stores read back 16 bytes at a time stalled on store forwarding). */
+	_Static_assert(sizeof(cd3Manifold) == 96 && offsetof(cd3Manifold, points) == 12 &&
+					   offsetof(cd3Manifold, pointCount) == 92 && sizeof(cd3ManifoldPoint) == 20,
+				   "cd3Manifold layout (float build)");
+	uint32_t yBits, zBits, separationBits;
+	memcpy(&yBits, &point.y, sizeof yBits);
+	memcpy(&zBits, &point.z, sizeof zBits);
+	memcpy(&separationBits, &sat->edgeSeparation, sizeof separationBits);
+	char* bytes = (char*)m;
+	_mm_storeu_ps((float*)(void*)bytes, _mm_setr_ps(normal.x, normal.y, normal.z, point.x));
+	_mm_storeu_si128((__m128i*)(void*)(bytes + 16),
+					 _mm_setr_epi32((int)yBits, (int)zBits, (int)separationBits, (int)id));
+	_mm_storeu_si128((__m128i*)(void*)(bytes + 80), _mm_setr_epi32(0, 0, 0, 1));
+#else
+	m->normal = normal;
+	AddPoint(m, point, sat->edgeSeparation, id);
+#endif
 }
 
 /* The box-box manifold on boxes passed by address: the public functions take them by value, and
@@ -2086,9 +2107,9 @@ static cd3Manifold CollideBoxes(const cd3Box* boxA, const cd3Box* boxB, const cd
 		cdReal size = -CD_R(1.0);
 		/* Above this bound of size (its 1-norm form, which is at least the 2-norms) a lead decides
 		 * without the square roots of size, which sat on the path to the choice's branch. */
-		cdReal sizeBound =
-			CD_R(2.02) * (cdAbs(a->halfExtents.x) + cdAbs(a->halfExtents.y) + cdAbs(a->halfExtents.z) +
-						  cdAbs(b->halfExtents.x) + cdAbs(b->halfExtents.y) + cdAbs(b->halfExtents.z));
+		cdReal sizeBound = CD_R(2.02) * (cd3AbsNoBranch(a->halfExtents.x) + cd3AbsNoBranch(a->halfExtents.y) +
+										 cd3AbsNoBranch(a->halfExtents.z) + cd3AbsNoBranch(b->halfExtents.x) +
+										 cd3AbsNoBranch(b->halfExtents.y) + cd3AbsNoBranch(b->halfExtents.z));
 		bool useB = false;
 		if (sat.faceSeparationB > sat.faceSeparationA)
 		{
@@ -2170,29 +2191,32 @@ cd3Manifold cd3CollideBoxBox(cd3Box a, cd3Box b, cdReal speculativeDistance)
  * the placed box, bit for bit), handed on by address. */
 cd3Manifold cd3CollideBoxBoxLocal(cd3Box a, cd3Box b, cd3Transform xfB, cdReal speculativeDistance)
 {
-	cd3Box placed;
-	placed.halfExtents = b.halfExtents;
 	/* A box centred in its body's frame (the common case) is placed by xfB alone: the products with
 	 * the zero centre and the identity rotation give xfB's own components (up to the sign of a zero). */
 	bool centred = cd3AreZeroBits(b.center.x, b.center.y, b.center.z);
 	bool aligned = cd3IsIdentityQuatBits(b.rotation);
-	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
-	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
+	cd3Box placed;
 #if CD3_BOX_FACES_SSE
 	/* Both boxes in their bodies' frames (the common case): B's frame and the face separations
 	 * from xfB at once, and the pairs apart along a face normal (most of those a broadphase
-	 * reports apart) end here. The SAT takes the rest on from them. */
+	 * reports apart) end here, before anything is stored. The SAT takes the rest on from them. */
 	if (((int)centred & (int)aligned & (int)cd3IsIdentityQuatBits(a.rotation)) != 0)
 	{
 		cd3BoxFaces faces;
 		if (cd3ComputeBoxFaces(&faces, a.halfExtents, b.halfExtents, xfB.q, cd3Sub(xfB.p, a.center),
-							   speculativeDistance))
+							   speculativeDistance, true))
 		{
 			return EmptyManifold();
 		}
+		placed.halfExtents = b.halfExtents;
+		placed.center = xfB.p;
+		placed.rotation = xfB.q;
 		return CollideBoxes(&a, &placed, &faces, speculativeDistance);
 	}
 #endif
+	placed.halfExtents = b.halfExtents;
+	placed.center = centred ? xfB.p : cd3TransformPoint(xfB, b.center);
+	placed.rotation = aligned ? xfB.q : cd3MulQuat(xfB.q, b.rotation);
 	return CollideBoxes(&a, &placed, NULL, speculativeDistance);
 }
 

@@ -5,6 +5,8 @@
 #include "geometry/mesh3_internal.h"
 #include "query/mesh_query3.h"
 
+#include <string.h>
+
 #if !CD_DOUBLE && defined(__SSE2__) && !defined(COLLIDE_NO_SIMD)
 #include <emmintrin.h>
 #define CD_MESH_SSE 1
@@ -159,14 +161,26 @@ static cd3Triangle TriangleToWorld(cd3Transform xf, cd3Triangle t)
 	return w;
 }
 
-static cdReal SumAbs(cd3Vec v)
+/* |a| for the margins of MayHitTriangle, where the sign of a zero does not matter: one masking
+ * instruction (cdAbs keeps -0, which takes a compare and a blend). */
+static inline cdReal MarginAbs(cdReal a)
 {
-	return cdAbs(v.x) + cdAbs(v.y) + cdAbs(v.z);
+#if CD_DOUBLE
+	return fabs(a);
+#else
+	return fabsf(a);
+#endif
 }
 
+static cdReal SumAbs(cd3Vec v)
+{
+	return MarginAbs(v.x) + MarginAbs(v.y) + MarginAbs(v.z);
+}
+
+/* The largest |component|, for the margins of MayHitTriangle. */
 static cdReal MaxAbs3(cd3Vec v)
 {
-	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+	return cdMax(MarginAbs(v.x), cdMax(MarginAbs(v.y), MarginAbs(v.z)));
 }
 
 /* False only when cd3RaycastTriangle(t, ray) certainly misses: a cdReal test of the ray line
@@ -174,10 +188,11 @@ static cdReal MaxAbs3(cd3Vec v)
  * determinant), each compared with a margin of 32 epsilons of a bound on its terms. That bound
  * covers the round-off of these products (a few epsilons: each term is a product of three
  * rounded differences) and the tolerance of cd3RaycastTriangle, which accepts hit points within
- * 4 double epsilons of the largest coordinate `magnitude` of the triangle and the ray's ends: a
- * point that far outside an edge moves a numerator by at most that distance times |d| times the
- * other edge's length. NaN and infinite products never reject. */
-static bool MayHitTriangle(cd3Triangle t, cd3Ray ray, cdReal rayMagnitude)
+ * 4 double epsilons of the largest coordinate of the triangle and the ray's ends (`magnitude` is
+ * at least that: TriangleMagnitude, or the mesh's for all its triangles): a point that far
+ * outside an edge moves a numerator by at most that distance times |d| times the other edge's
+ * length. A larger magnitude only widens the margins. NaN and infinite products never reject. */
+static bool MayHitTriangle(cd3Triangle t, cd3Ray ray, cdReal magnitude)
 {
 	cd3Vec d = ray.translation;
 	cd3Vec e1 = cd3Sub(t.b, t.a), e2 = cd3Sub(t.c, t.a), s = cd3Sub(ray.origin, t.a);
@@ -187,7 +202,6 @@ static bool MayHitTriangle(cd3Triangle t, cd3Ray ray, cdReal rayMagnitude)
 	cdReal u = cd3Dot(s, p);
 	cdReal v = cd3Dot(d, q);
 	cdReal w = cd3Dot(e2, q); /* the fraction times det */
-	cdReal magnitude = cdMax(rayMagnitude, cdMax(MaxAbs3(t.a), cdMax(MaxAbs3(t.b), MaxAbs3(t.c))));
 	cdReal ds = SumAbs(d), e1s = SumAbs(e1), e2s = SumAbs(e2), ss = SumAbs(s) + magnitude;
 	cdReal k = CD_R(32.0) * CD_REAL_EPSILON;
 	cdReal marginDet = k * e1s * ds * e2s;
@@ -209,6 +223,32 @@ static bool MayHitTriangle(cd3Triangle t, cd3Ray ray, cdReal rayMagnitude)
 			 w > det + marginW + marginDet);
 }
 
+/* The largest coordinate of the triangle and the ray's ends, for MayHitTriangle. */
+static cdReal TriangleMagnitude(cd3Triangle t, cdReal rayMagnitude)
+{
+	return cdMax(rayMagnitude, cdMax(MaxAbs3(t.a), cdMax(MaxAbs3(t.b), MaxAbs3(t.c))));
+}
+
+/* The bits of a real. */
+#if CD_DOUBLE
+typedef uint64_t RealBits;
+#else
+typedef uint32_t RealBits;
+#endif
+static inline RealBits GetBits(cdReal x)
+{
+	RealBits bits;
+	memcpy(&bits, &x, sizeof bits);
+	return bits;
+}
+
+/* The identity transform with +0 zeros: one integer test instead of seven comparisons. */
+static inline bool IsIdentityBits(cd3Transform xf)
+{
+	return (GetBits(xf.p.x) | GetBits(xf.p.y) | GetBits(xf.p.z) | GetBits(xf.q.x) | GetBits(xf.q.y) |
+			GetBits(xf.q.z) | (GetBits(xf.q.w) ^ GetBits(CD_R(1.0)))) == 0;
+}
+
 /* Node fractions are those of the mesh-space ray; the triangle casts run in world space on the
  * world triangles, like a loop over cd3RaycastTriangle. The margin covers the difference between
  * the two fractions (a few epsilons). */
@@ -220,12 +260,18 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 	{
 		return false;
 	}
-	/* The identity (the common case of a static mesh placed in world space) moves nothing. */
-	bool identity = xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) && xf.p.z == CD_R(0.0) &&
-					xf.q.x == CD_R(0.0) && xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0);
+	/* The identity (the common case of a static mesh placed in world space) moves nothing. Its
+	 * exact bits are tested first, in one integer test; the comparisons take the other zeros. */
+	bool identity = IsIdentityBits(xf) || (xf.p.x == CD_R(0.0) && xf.p.y == CD_R(0.0) &&
+										   xf.p.z == CD_R(0.0) && xf.q.x == CD_R(0.0) &&
+										   xf.q.y == CD_R(0.0) && xf.q.z == CD_R(0.0) && xf.q.w == CD_R(1.0));
 	RayBox box = MakeRayBox(identity ? ray : RayToMesh(xf, ray));
 	cd3Vec rayEnd = cd3Add(ray.origin, ray.translation);
 	cdReal rayMagnitude = cdMax(MaxAbs3(ray.origin), MaxAbs3(rayEnd));
+	/* With the identity the stored triangles are the ones cast against, and the mesh's bounds
+	 * (the union of the padded triangle bounds) bound every coordinate of them: one magnitude
+	 * for all (a world placement computes each world triangle's own). */
+	cdReal meshMagnitude = cdMax(rayMagnitude, cdMax(MaxAbs3(mesh->bounds.min), MaxAbs3(mesh->bounds.max)));
 	bool found = false;
 	cd3RayHit best;
 	int bestSlot = 0;
@@ -247,7 +293,8 @@ static bool RaycastMesh(const cd3Mesh* mesh, cd3Transform xf, cd3Ray ray, bool a
 			{
 				cd3RayHit hit;
 				cd3Triangle t = identity ? mesh->triangles[s] : TriangleToWorld(xf, mesh->triangles[s]);
-				if (!MayHitTriangle(t, ray, rayMagnitude) || !cd3RaycastTriangle(t, ray, &hit))
+				cdReal magnitude = identity ? meshMagnitude : TriangleMagnitude(t, rayMagnitude);
+				if (!MayHitTriangle(t, ray, magnitude) || !cd3RaycastTriangle(t, ray, &hit))
 				{
 					continue;
 				}

@@ -19,9 +19,17 @@
 #include <float.h>
 #include <math.h>
 
+/* |a| as a max, one instruction where cdAbs compares and branches on a sign that is random from
+ * call to call; it differs from cdAbs only in the sign of a zero (and of a NaN), which the
+ * magnitudes below, only compared or multiplied into tolerances, never show. */
+static inline cdReal AbsNoBranch(cdReal a)
+{
+	return cdMax(a, -a);
+}
+
 static cdReal MaxAbsComponent(cd3Vec v)
 {
-	return cdMax(cdAbs(v.x), cdMax(cdAbs(v.y), cdAbs(v.z)));
+	return cdMax(AbsNoBranch(v.x), cdMax(AbsNoBranch(v.y), AbsNoBranch(v.z)));
 }
 
 /* Unit direction and length of the translation; false for a zero (or non-finite) length. */
@@ -283,6 +291,14 @@ bool cd3RaycastBox(cd3Box b, cd3Ray ray, cd3RayHit* hit)
 	return true;
 }
 
+/* WideMaxAbs with |x| as a max (no branch on the sign): the same value but for the sign of a zero
+ * (and of a NaN), which the size test below (> 0) does not see. */
+static inline double WideMaxAbsNoBranch(WideVec v)
+{
+	double x = v.x > -v.x ? v.x : -v.x, y = v.y > -v.y ? v.y : -v.y, z = v.z > -v.z ? v.z : -v.z;
+	return x > y ? (x > z ? x : z) : (y > z ? y : z);
+}
+
 /* Squared distance from p to the segment a-b, in double. */
 static double WideSegmentDistanceSquared(WideVec a, WideVec b, WideVec p)
 {
@@ -310,7 +326,8 @@ bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
 	WideVec ac = WideSub(Widen(t.c), a);
 	WideVec bc = WideSub(Widen(t.c), Widen(t.b));
 	/* Scaled to the triangle's size, so that products of up to four lengths stay in range. */
-	double size = WideMaxAbs(ab) > WideMaxAbs(ac) ? WideMaxAbs(ab) : WideMaxAbs(ac);
+	double size =
+		WideMaxAbsNoBranch(ab) > WideMaxAbsNoBranch(ac) ? WideMaxAbsNoBranch(ab) : WideMaxAbsNoBranch(ac);
 	if (!(size > 0.0))
 	{
 		return false;
@@ -346,30 +363,40 @@ bool cd3RaycastTriangle(cd3Triangle t, cd3Ray ray, cd3RayHit* hit)
 		cdMax(cdMax(MaxAbsComponent(t.a), MaxAbsComponent(t.b)),
 			  cdMax(MaxAbsComponent(t.c), cdMax(MaxAbsComponent(ray.origin), MaxAbsComponent(end))));
 	/* The round-off of q: 4 epsilon of the arithmetic used here (double, also in the float build). */
-	double tolerance = 4.0 * DBL_EPSILON * (double)magnitude * inverse * sqrt(nn);
-	double fromAc = WideDot(n, WideCross(q, ac)) / sqrt(acac);
-	double fromAb = WideDot(n, WideCross(ab, q)) / sqrt(abab);
-	double fromBc = WideDot(n, WideCross(bc, WideSub(q, ab))) / sqrt(WideDot(bc, bc));
-	if (fromAc < -tolerance || fromAb < -tolerance || !(fromBc >= -tolerance))
+	double normalLength = sqrt(nn);
+	double tolerance = 4.0 * DBL_EPSILON * (double)magnitude * inverse * normalLength;
+	double insideAc = WideDot(n, WideCross(q, ac));
+	double insideAb = WideDot(n, WideCross(ab, q));
+	double insideBc = WideDot(n, WideCross(bc, WideSub(q, ab)));
+	/* A point inside all three edges (the common case of a hit) is accepted without the
+	 * distances: a numerator >= 0 over a positive length is >= 0, so the tests below would pass
+	 * (unless the tolerance is NaN, which rejects). */
+	if (!(insideAc >= 0.0 && insideAb >= 0.0 && insideBc >= 0.0 && tolerance == tolerance))
 	{
-		return false;
-	}
-	if (fromAc < 0.0 || fromAb < 0.0 || fromBc < 0.0)
-	{
-		/* Within the tolerance of an edge's line, but that is not the edge: beyond the tip of a
-		 * needle every point near its axis is close to both long edges' lines (a hit 16
-		 * lengths past one was accepted). The distance to the nearest edge decides. */
-		WideVec zero = {0.0, 0.0, 0.0};
-		double reach = tolerance / sqrt(nn);
-		if (WideSegmentDistanceSquared(zero, ab, q) > reach * reach &&
-			WideSegmentDistanceSquared(zero, ac, q) > reach * reach &&
-			WideSegmentDistanceSquared(ab, ac, q) > reach * reach)
+		double fromAc = insideAc / sqrt(acac);
+		double fromAb = insideAb / sqrt(abab);
+		double fromBc = insideBc / sqrt(WideDot(bc, bc));
+		if (fromAc < -tolerance || fromAb < -tolerance || !(fromBc >= -tolerance))
 		{
 			return false;
 		}
+		if (fromAc < 0.0 || fromAb < 0.0 || fromBc < 0.0)
+		{
+			/* Within the tolerance of an edge's line, but that is not the edge: beyond the tip
+			 * of a needle every point near its axis is close to both long edges' lines (a hit 16
+			 * lengths past one was accepted). The distance to the nearest edge decides. */
+			WideVec zero = {0.0, 0.0, 0.0};
+			double reach = tolerance / normalLength;
+			if (WideSegmentDistanceSquared(zero, ab, q) > reach * reach &&
+				WideSegmentDistanceSquared(zero, ac, q) > reach * reach &&
+				WideSegmentDistanceSquared(ab, ac, q) > reach * reach)
+			{
+				return false;
+			}
+		}
 	}
 
-	cd3Vec unitNormal = Narrow(WideScale(1.0 / sqrt(nn), n));
+	cd3Vec unitNormal = Narrow(WideScale(1.0 / normalLength, n));
 	hit->fraction = (cdReal)fraction;
 	hit->point = cd3MulAdd(ray.origin, hit->fraction, ray.translation);
 	/* Two-sided: the normal faces the ray origin. */

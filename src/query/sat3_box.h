@@ -166,6 +166,7 @@ typedef struct cd3BoxFaces cd3BoxFaces;
 struct cd3BoxFaces
 {
 	float column[3][4]; /* column[j][i]: B's axis j on A's axis i (the rotation's columns) */
+	float row[3][4];	/* row[i][j]: the same entries by rows (lane 3 unused) */
 	float faceA[4];		/* separation along A's axis i */
 	float offsetB[4];	/* the centre offset on B's axis j */
 	float faceB[4];		/* separation along B's axis j */
@@ -180,9 +181,10 @@ static inline __m128 cd3BoxAbs4(__m128 x)
 /* Fills *f for box A unrotated at the origin with half extents ha and box B with half extents
  * hb, rotated by q and centred at t (A's frame). True when a face axis puts them apart by more
  * than `limit` (no separation is then a NaN): the answer cd3SatBoxesInPlace gives with faceExit
- * = limit is then apart beyond the limit. */
+ * = limit is then apart beyond the limit. With onlyIfNear, *f is left unwritten when true is
+ * returned (a caller that then stops saves the stores). */
 static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Quat rotation, cd3Vec t,
-									  float limit)
+									  float limit, bool onlyIfNear)
 {
 	/* Lanes x, y, z, w; the comments name the lanes low to high. */
 	__m128 q = _mm_setr_ps(rotation.x, rotation.y, rotation.z, rotation.w);
@@ -230,16 +232,76 @@ static inline bool cd3ComputeBoxFaces(cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Q
 										   _mm_mul_ps(_mm_shuffle_ps(va, va, 0x55), cd3BoxAbs4(r1))),
 								_mm_mul_ps(_mm_shuffle_ps(va, va, 0xaa), cd3BoxAbs4(r2)));
 	__m128 faceB = _mm_sub_ps(_mm_sub_ps(cd3BoxAbs4(offsetB), vb), radiusA);
-	_mm_storeu_ps(f->column[0], c0);
-	_mm_storeu_ps(f->column[1], c1);
-	_mm_storeu_ps(f->column[2], c2);
-	_mm_storeu_ps(f->faceA, faceA);
-	_mm_storeu_ps(f->offsetB, offsetB);
-	_mm_storeu_ps(f->faceB, faceB);
 	__m128 bound = _mm_set1_ps(limit);
 	int beyond = _mm_movemask_ps(_mm_or_ps(_mm_cmpgt_ps(faceA, bound), _mm_cmpgt_ps(faceB, bound)));
 	int unordered = _mm_movemask_ps(_mm_cmpunord_ps(faceA, faceB));
-	return (beyond & 7) != 0 && (unordered & 7) == 0;
+	bool apart = (beyond & 7) != 0 && (unordered & 7) == 0;
+	if (apart && onlyIfNear)
+	{
+		return true;
+	}
+	_mm_storeu_ps(f->column[0], c0);
+	_mm_storeu_ps(f->column[1], c1);
+	_mm_storeu_ps(f->column[2], c2);
+	_mm_storeu_ps(f->row[0], r0);
+	_mm_storeu_ps(f->row[1], r1);
+	_mm_storeu_ps(f->row[2], r2);
+	_mm_storeu_ps(f->faceA, faceA);
+	_mm_storeu_ps(f->offsetB, offsetB);
+	_mm_storeu_ps(f->faceB, faceB);
+	return apart;
+}
+
+/* One lane per j of cd3BoxEdgeAxis's inputs for the three edge axes A_i x B_j of one i: ri1 and
+ * ri2 the rows i+1 and i+2 of the rotation, a the absolute rows, radiusB from absolute row i.
+ * threshold2 is the threshold's square and ahead whether the threshold is >= 0 (the same in
+ * every lane, so a branch on it is the selection cd3BoxEdgeAxis makes). */
+static inline __m128 cd3BoxEdgeCandidates4(__m128 ri1, __m128 ri2, __m128 ai1, __m128 ai2, __m128 ai,
+										   __m128 hai1, __m128 hai2, __m128 ti1, __m128 ti2, __m128 hb1,
+										   __m128 hb2, __m128 threshold2, bool ahead)
+{
+	/* cd3BoxEdgeAxis: ri1j * ri1j + ri2j * ri2j; radiusA ha(i+1) a(i+2)j + ha(i+2) a(i+1)j;
+	 * radiusB hb(j+1) ai(j+2) + hb(j+2) ai(j+1); centre t(i+2) ri1j - t(i+1) ri2j. */
+	__m128 length2 = _mm_add_ps(_mm_mul_ps(ri1, ri1), _mm_mul_ps(ri2, ri2));
+	__m128 radiusA = _mm_add_ps(_mm_mul_ps(hai1, ai2), _mm_mul_ps(hai2, ai1));
+	__m128 radiusB = _mm_add_ps(_mm_mul_ps(hb1, _mm_shuffle_ps(ai, ai, _MM_SHUFFLE(3, 1, 0, 2))),
+								_mm_mul_ps(hb2, _mm_shuffle_ps(ai, ai, _MM_SHUFFLE(3, 0, 2, 1))));
+	__m128 centre = _mm_sub_ps(_mm_mul_ps(ti2, ri1), _mm_mul_ps(ti1, ri2));
+	__m128 gap = _mm_sub_ps(_mm_sub_ps(cd3BoxAbs4(centre), radiusA), radiusB);
+	__m128 bar = _mm_mul_ps(threshold2, length2);
+	__m128 gap2 = _mm_mul_ps(gap, gap);
+	__m128 zero = _mm_setzero_ps();
+	__m128 beats = ahead ? _mm_and_ps(_mm_cmpgt_ps(gap, zero), _mm_cmpgt_ps(gap2, bar))
+						 : _mm_or_ps(_mm_cmpge_ps(gap, zero), _mm_cmplt_ps(gap2, bar));
+	__m128 explicitRadius =
+		_mm_cmplt_ps(length2, _mm_set1_ps(CD3_BOX_EXPLICIT_RADIUS_SINE * CD3_BOX_EXPLICIT_RADIUS_SINE));
+	__m128 notParallel = _mm_cmpgt_ps(length2, _mm_set1_ps(CD3_BOX_PARALLEL_SINE * CD3_BOX_PARALLEL_SINE));
+	return _mm_and_ps(notParallel, _mm_or_ps(beats, explicitRadius));
+}
+
+/* The edge axes that cd3BoxEdgeAxis may take, bit 3 i + j for A_i x B_j: the others are parallel,
+ * or do not beat faceBest (then they beat no larger threshold either: the test on squares is
+ * monotone in the threshold, rounding included), and cd3BoxEdgeAxis would return false on them
+ * without a change, whatever the best edge so far. The same operations on the same values as
+ * cd3BoxEdgeAxis in each lane, so the same decisions. */
+static inline unsigned cd3BoxEdgeCandidates(const cd3BoxFaces* f, cd3Vec ha, cd3Vec hb, cd3Vec t,
+											cdReal faceBest)
+{
+	__m128 r0 = _mm_loadu_ps(f->row[0]), r1 = _mm_loadu_ps(f->row[1]), r2 = _mm_loadu_ps(f->row[2]);
+	__m128 a0 = cd3BoxAbs4(r0), a1 = cd3BoxAbs4(r1), a2 = cd3BoxAbs4(r2);
+	__m128 ha0 = _mm_set1_ps(ha.x), ha1 = _mm_set1_ps(ha.y), ha2 = _mm_set1_ps(ha.z);
+	__m128 t0 = _mm_set1_ps(t.x), t1 = _mm_set1_ps(t.y), t2 = _mm_set1_ps(t.z);
+	__m128 hb1 = _mm_setr_ps(hb.y, hb.z, hb.x, 0.0f), hb2 = _mm_setr_ps(hb.z, hb.x, hb.y, 0.0f);
+	/* cd3BoxEdgeAxis's threshold is faceBest for the first axis (the best edge is -CD_REAL_MAX). */
+	__m128 threshold2 = _mm_set1_ps(faceBest * faceBest);
+	bool ahead = faceBest >= CD_R(0.0);
+	unsigned m0 = (unsigned)_mm_movemask_ps(
+		cd3BoxEdgeCandidates4(r1, r2, a1, a2, a0, ha1, ha2, t1, t2, hb1, hb2, threshold2, ahead));
+	unsigned m1 = (unsigned)_mm_movemask_ps(
+		cd3BoxEdgeCandidates4(r2, r0, a2, a0, a1, ha2, ha0, t2, t0, hb1, hb2, threshold2, ahead));
+	unsigned m2 = (unsigned)_mm_movemask_ps(
+		cd3BoxEdgeCandidates4(r0, r1, a0, a1, a2, ha0, ha1, t0, t1, hb1, hb2, threshold2, ahead));
+	return (m0 & 7u) | (m1 & 7u) << 3 | (m2 & 7u) << 6;
 }
 #endif
 
@@ -273,7 +335,7 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	cd3BoxFaces computed;
 	if (faces == NULL)
 	{
-		(void)cd3ComputeBoxFaces(&computed, boxA->halfExtents, boxB->halfExtents, q, t, faceExit);
+		(void)cd3ComputeBoxFaces(&computed, boxA->halfExtents, boxB->halfExtents, q, t, faceExit, false);
 		faces = &computed;
 	}
 	cd3Mat33 m;
@@ -290,9 +352,15 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	cdReal r00 = m.cx.x, r10 = m.cx.y, r20 = m.cx.z;
 	cdReal r01 = m.cy.x, r11 = m.cy.y, r21 = m.cy.z;
 	cdReal r02 = m.cz.x, r12 = m.cz.y, r22 = m.cz.z;
+#if CD3_BOX_FACES_SSE
+	/* |rij| where an edge axis the screening kept needs it (the face separations came in lanes). */
+#define CD3_BOX_ABS(ij) cd3AbsNoBranch(r##ij)
+#else
 	cdReal a00 = cd3AbsNoBranch(r00), a10 = cd3AbsNoBranch(r10), a20 = cd3AbsNoBranch(r20);
 	cdReal a01 = cd3AbsNoBranch(r01), a11 = cd3AbsNoBranch(r11), a21 = cd3AbsNoBranch(r21);
 	cdReal a02 = cd3AbsNoBranch(r02), a12 = cd3AbsNoBranch(r12), a22 = cd3AbsNoBranch(r22);
+#define CD3_BOX_ABS(ij) a##ij
+#endif
 	cdReal t0 = t.x, t1 = t.y, t2 = t.z;
 
 	cd3SatResult r;
@@ -364,24 +432,50 @@ static inline void cd3SatBoxesInPlace(const cd3Box* boxA, const cd3Box* boxB, cd
 	/* The edge axes in turn, stopping at the first one that puts the boxes
 	 * beyond faceExit (the answer is then empty whatever the other axes give). */
 	cd3Vec hb = boxB->halfExtents;
-	bool apart = cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * a20 + ha2 * a10, hb1 * a02 + hb2 * a01,
-								t2 * r10 - t1 * r20, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * a21 + ha2 * a11, hb2 * a00 + hb0 * a02,
-								t2 * r11 - t1 * r21, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * a22 + ha2 * a12, hb0 * a01 + hb1 * a00,
-								t2 * r12 - t1 * r22, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * a00 + ha0 * a20, hb1 * a12 + hb2 * a11,
-								t0 * r20 - t2 * r00, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * a01 + ha0 * a21, hb2 * a10 + hb0 * a12,
-								t0 * r21 - t2 * r01, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * a02 + ha0 * a22, hb0 * a11 + hb1 * a10,
-								t0 * r22 - t2 * r02, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * a10 + ha1 * a00, hb1 * a22 + hb2 * a21,
-								t1 * r00 - t0 * r10, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * a11 + ha1 * a01, hb2 * a20 + hb0 * a22,
-								t1 * r01 - t0 * r11, faceBest, faceExit, &m, hb) ||
-				 cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * a12 + ha1 * a02, hb0 * a21 + hb1 * a20,
-								t1 * r02 - t0 * r12, faceBest, faceExit, &m, hb);
+#if CD3_BOX_FACES_SSE
+	unsigned candidates = cd3BoxEdgeCandidates(faces, boxA->halfExtents, hb, t, faceBest);
+#define CD3_BOX_EDGE_CANDIDATE(k) ((candidates >> (k)) & 1u)
+#else
+#define CD3_BOX_EDGE_CANDIDATE(k) 1u
+#endif
+	bool apart = (CD3_BOX_EDGE_CANDIDATE(0) &&
+				  cd3BoxEdgeAxis(&e, 0, 0, r10, r20, ha1 * CD3_BOX_ABS(20) + ha2 * CD3_BOX_ABS(10),
+								 hb1 * CD3_BOX_ABS(02) + hb2 * CD3_BOX_ABS(01), t2 * r10 - t1 * r20, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(1) &&
+				  cd3BoxEdgeAxis(&e, 0, 1, r11, r21, ha1 * CD3_BOX_ABS(21) + ha2 * CD3_BOX_ABS(11),
+								 hb2 * CD3_BOX_ABS(00) + hb0 * CD3_BOX_ABS(02), t2 * r11 - t1 * r21, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(2) &&
+				  cd3BoxEdgeAxis(&e, 0, 2, r12, r22, ha1 * CD3_BOX_ABS(22) + ha2 * CD3_BOX_ABS(12),
+								 hb0 * CD3_BOX_ABS(01) + hb1 * CD3_BOX_ABS(00), t2 * r12 - t1 * r22, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(3) &&
+				  cd3BoxEdgeAxis(&e, 1, 0, r20, r00, ha2 * CD3_BOX_ABS(00) + ha0 * CD3_BOX_ABS(20),
+								 hb1 * CD3_BOX_ABS(12) + hb2 * CD3_BOX_ABS(11), t0 * r20 - t2 * r00, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(4) &&
+				  cd3BoxEdgeAxis(&e, 1, 1, r21, r01, ha2 * CD3_BOX_ABS(01) + ha0 * CD3_BOX_ABS(21),
+								 hb2 * CD3_BOX_ABS(10) + hb0 * CD3_BOX_ABS(12), t0 * r21 - t2 * r01, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(5) &&
+				  cd3BoxEdgeAxis(&e, 1, 2, r22, r02, ha2 * CD3_BOX_ABS(02) + ha0 * CD3_BOX_ABS(22),
+								 hb0 * CD3_BOX_ABS(11) + hb1 * CD3_BOX_ABS(10), t0 * r22 - t2 * r02, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(6) &&
+				  cd3BoxEdgeAxis(&e, 2, 0, r00, r10, ha0 * CD3_BOX_ABS(10) + ha1 * CD3_BOX_ABS(00),
+								 hb1 * CD3_BOX_ABS(22) + hb2 * CD3_BOX_ABS(21), t1 * r00 - t0 * r10, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(7) &&
+				  cd3BoxEdgeAxis(&e, 2, 1, r01, r11, ha0 * CD3_BOX_ABS(11) + ha1 * CD3_BOX_ABS(01),
+								 hb2 * CD3_BOX_ABS(20) + hb0 * CD3_BOX_ABS(22), t1 * r01 - t0 * r11, faceBest,
+								 faceExit, &m, hb)) ||
+				 (CD3_BOX_EDGE_CANDIDATE(8) &&
+				  cd3BoxEdgeAxis(&e, 2, 2, r02, r12, ha0 * CD3_BOX_ABS(12) + ha1 * CD3_BOX_ABS(02),
+								 hb0 * CD3_BOX_ABS(21) + hb1 * CD3_BOX_ABS(20), t1 * r02 - t0 * r12, faceBest,
+								 faceExit, &m, hb));
+#undef CD3_BOX_EDGE_CANDIDATE
+#undef CD3_BOX_ABS
 	(void)apart;
 	r.edgeSeparation = e.separation;
 	r.edgeA = -1;
