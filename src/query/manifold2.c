@@ -960,6 +960,43 @@ cd2Manifold cd2CollidePolygonPolygon(const cd2Polygon* a, const cd2Polygon* b, c
 
 /* ---- local-frame forms of the commonest contacts (the others: manifold_local2.c) --------------- */
 
+#if CD2_SEPARATION_SSE
+/* The two floats of v in lanes 0 and 1 of a vector (upper lanes zero). Through a double: a
+ * cd2Vec or cd2Rot argument arrives in one vector register, and this keeps it there, where
+ * reading its fields split it through the stack or the integer registers. */
+static inline __m128 PairLanes(cd2Vec pair)
+{
+	double bits;
+	memcpy(&bits, &pair, sizeof bits);
+	return _mm_castpd_ps(_mm_set_sd(bits));
+}
+
+/* The two floats of v in lanes 0 and 1 and again in 2 and 3: one shuffle of the argument register. */
+static inline __m128 DoubledPairLanes(cd2Vec pair)
+{
+	double bits;
+	memcpy(&bits, &pair, sizeof bits);
+	return _mm_castpd_ps(_mm_set1_pd(bits));
+}
+
+/* A rotation's cosine and sine, each in every lane (for RotateLanes). */
+static inline void RotationLanes(cd2Rot q, __m128* cosine, __m128* sine)
+{
+	__m128 rotation = PairLanes(cd2MakeVec(q.c, q.s));
+	*cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
+	*sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+}
+
+/* cosine * v + sine * swap(v) in lanes 0 and 1: with sine = (-s, s) the rotation of v by (c, s),
+ * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
+ * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
+ * product plus or minus another, and addition commutes exactly). */
+static inline __m128 RotateLanes(__m128 cosine, __m128 sine, __m128 v)
+{
+	return _mm_add_ps(_mm_mul_ps(cosine, v), _mm_mul_ps(sine, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+}
+#endif
+
 /* in[0..count) placed by xf into out (points: rotated and moved; else only rotated), bit for bit
  * as cd2TransformPoint / cd2RotateVector. In the float build on SSE2 two vectors per lane group,
  * with xf kept in registers: spilling a cd2Transform argument and reading it back 16 bytes at a
@@ -969,14 +1006,13 @@ static inline void PlaceVectors(cd2Vec* out, const cd2Vec* in, int count, cd2Tra
 	CD_ASSERT(0 <= count && count <= CD2_MAX_POLYGON_VERTICES);
 #if CD2_SEPARATION_SSE
 	/* c * x + (-s) * y is c * x - s * y exactly, and s * x + c * y is c * y + s * x. */
-	/* Built with register shuffles from scalars: a _mm_setr_ps of the fields went through the
-	 * stack. */
-	__m128 c = _mm_set1_ps(xf.q.c);
-	__m128 sine = _mm_set1_ps(xf.q.s);
-	__m128 s = _mm_unpacklo_ps(_mm_xor_ps(sine, _mm_set1_ps(-0.0f)), sine);
-	s = _mm_movelh_ps(s, s);
-	__m128 p = _mm_unpacklo_ps(_mm_set_ss(xf.p.x), _mm_set_ss(xf.p.y));
-	p = _mm_movelh_ps(p, p);
+	/* Built by shuffles of the argument registers, xf.q's pair and xf.p's pair: a _mm_setr_ps of
+	 * the fields went through the stack, and broadcasting the fields one at a time took them
+	 * through the integer registers (a few cycles before the first placed vertex). */
+	__m128 c, sine;
+	RotationLanes(xf.q, &c, &sine);
+	__m128 s = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s, -s, s) */
+	__m128 p = DoubledPairLanes(xf.p);
 	int i = 0;
 	for (; i + 2 <= count; i += 2)
 	{
@@ -1028,34 +1064,6 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	return CollideCoresFrom(&coreA, &coreB, speculativeDistance, separationA, edgeA);
 }
 
-#if CD2_SEPARATION_SSE
-/* The two floats of v in lanes 0 and 1 of a vector (upper lanes zero). Through a double: a
- * cd2Vec or cd2Rot argument arrives in one vector register, and this keeps it there, where
- * reading its fields split it through the stack or the integer registers. */
-static inline __m128 PairLanes(cd2Vec pair)
-{
-	double bits;
-	memcpy(&bits, &pair, sizeof bits);
-	return _mm_castpd_ps(_mm_set_sd(bits));
-}
-
-/* A rotation's cosine and sine, each in every lane (for RotateLanes). */
-static inline void RotationLanes(cd2Rot q, __m128* cosine, __m128* sine)
-{
-	__m128 rotation = PairLanes(cd2MakeVec(q.c, q.s));
-	*cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
-	*sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
-}
-
-/* cosine * v + sine * swap(v) in lanes 0 and 1: with sine = (-s, s) the rotation of v by (c, s),
- * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
- * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
- * product plus or minus another, and addition commutes exactly). */
-static inline __m128 RotateLanes(__m128 cosine, __m128 sine, __m128 v)
-{
-	return _mm_add_ps(_mm_mul_ps(cosine, v), _mm_mul_ps(sine, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
-}
-#endif
 
 #if CD2_SEPARATION_SSE
 /* ScanCenterContact's edge for a centre given as (x, y, x, y) in the float build on SSE2, two edges to
@@ -1276,28 +1284,29 @@ cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Tr
 {
 	CD_ASSERT(a != NULL);
 #if CD2_SEPARATION_SSE
-	/* cd2TransformPoint(xfB, centre) in lanes: the rotation, then the translation added. */
-	__m128 cosine, sine;
-	RotationLanes(xfB.q, &cosine, &sine);
-	__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
-	__m128 origin = PairLanes(xfB.p);
-	__m128 local = PairLanes(b.center);
+	/* cd2TransformPoint(xfB, centre) in lanes: the rotation, then the translation added. The
+	 * translation and the centre are read as (x, y, x, y) by one shuffle of their argument
+	 * registers. */
+	__m128 origin = DoubledPairLanes(xfB.p);
+	__m128 local = DoubledPairLanes(b.center);
 	/* A circle centred on its body (the common case) lands on xfB.p: the rotated zero centre
 	 * (zeros) plus a non-zero translation is the translation exactly, and skipping the rotation
 	 * takes xfB.q (composed last by the caller) off the path to the first edge test. Tested
 	 * in lanes: both centre coordinates zero and both translation coordinates non-zero (a zero
 	 * translation coordinate takes the sum, whose zero sign can differ). */
 	__m128 zero = _mm_setzero_ps();
-	__m128 placed;
+	__m128 centre;
 	if ((_mm_movemask_ps(_mm_and_ps(_mm_cmpeq_ps(local, zero), _mm_cmpneq_ps(origin, zero))) & 3) == 3)
 	{
-		placed = origin;
+		centre = origin;
 	}
 	else
 	{
-		placed = _mm_add_ps(RotateLanes(cosine, forwardSine, local), origin);
+		__m128 cosine, sine;
+		RotationLanes(xfB.q, &cosine, &sine);
+		__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
+		centre = _mm_add_ps(RotateLanes(cosine, forwardSine, local), origin);
 	}
-	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
 	cd2Manifold m;
 	__m128 normal = _mm_setzero_ps(), point = _mm_setzero_ps();
 	cdReal separation = CD_R(0.0);
