@@ -987,7 +987,8 @@ static inline void RotationLanes(cd2Rot q, __m128* cosine, __m128* sine)
 	*sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
 }
 
-/* cosine * v + sine * swap(v) in lanes 0 and 1: with sine = (-s, s) the rotation of v by (c, s),
+/* cosine * v + sine * swap(v) in lanes 0 and 1 (and 2 and 3, for a second pair or the same pair
+ * again): with sine = (-s, s) the rotation of v by (c, s),
  * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
  * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
  * product plus or minus another, and addition commutes exactly). */
@@ -1063,7 +1064,6 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 	coreB.radius = b->radius;
 	return CollideCoresFrom(&coreA, &coreB, speculativeDistance, separationA, edgeA);
 }
-
 
 #if CD2_SEPARATION_SSE
 /* ScanCenterContact's edge for a centre given as (x, y, x, y) in the float build on SSE2, two edges to
