@@ -1082,10 +1082,12 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 	int count = b->count;
 	CD_ASSERT(count >= 3 && count <= CD2_MAX_POLYGON_VERTICES);
 	__m128 limit = _mm_set1_ps(limitValue);
-	int edge = 0;
+	/* One index for both arrays and for the edge found (a polygon has at least one pair). */
+	size_t pairs = (size_t)count & ~(size_t)1;
+	size_t edge = 0;
 	cdReal edgeSeparation = -CD_REAL_MAX;
-	int i = 0;
-	for (; i + 2 <= count; i += 2)
+	size_t i = 0;
+	do
 	{
 		__m128 d = _mm_sub_ps(centre, _mm_loadu_ps(&b->vertices[i].x));
 		__m128 p = _mm_mul_ps(_mm_loadu_ps(&b->normals[i].x), d);
@@ -1108,8 +1110,9 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 			edgeSeparation = s1;
 			KEEP_BRANCH();
 		}
-	}
-	if (i < count)
+		i += 2;
+	} while (i < pairs);
+	if (i < (size_t)count)
 	{
 		__m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[i]);
 		__m128 n = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[i]);
@@ -1126,7 +1129,7 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 			KEEP_BRANCH();
 		}
 	}
-	*edgeOut = edge;
+	*edgeOut = (int)edge;
 	*separationOut = edgeSeparation;
 	return true;
 }
