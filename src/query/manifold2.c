@@ -1147,18 +1147,21 @@ static inline bool PolygonCentreLanes(const cd2Polygon* b, __m128 centre, cdReal
 									  cdReal* separationOut, uint32_t* idOut)
 {
 	cdReal total = b->radius + circleRadius;
-	int edge;
+	int edgeFound;
 	cdReal edgeSeparation;
-	bool hit = PairScanEdge(b, centre, total + speculativeDistance, &edge, &edgeSeparation);
+	bool hit = PairScanEdge(b, centre, total + speculativeDistance, &edgeFound, &edgeSeparation);
 	if (hit)
 	{
-		int next = edge + 1 < b->count ? edge + 1 : 0;
+		size_t edge = (size_t)edgeFound;
+		size_t next = edge + 1 < (size_t)b->count ? edge + 1 : 0;
 		/* (v1, v2): the edge's vertices; the normal in lanes 0 and 1. */
 		__m128 ends =
 			_mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[edge]),
 						 (const __m64*)(const void*)&b->vertices[next]);
 		__m128 normal = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[edge]);
-		cdReal coreSeparation = edgeSeparation;
+		/* The core separation in lanes 0 and 1, so that the point's offset below needs no
+		 * broadcast on the way from a vertex's distance. */
+		__m128 coreSeparation = _mm_set1_ps(edgeSeparation);
 		uint32_t id = (uint32_t)edge;
 		if (edgeSeparation > CD_R(0.0))
 		{
@@ -1173,27 +1176,34 @@ static inline bool PolygonCentreLanes(const cd2Polygon* b, __m128 centre, cdReal
 			__m128 dots = _mm_add_ps(products, _mm_shuffle_ps(products, products, _MM_SHUFFLE(2, 3, 0, 1)));
 			cdReal along = _mm_cvtss_f32(dots);
 			cdReal extent = _mm_cvtss_f32(_mm_movehl_ps(dots, dots));
-			int vertex = along <= CD_R(0.0) ? edge : along >= extent ? next : -1;
-			if (vertex >= 0)
+			/* The region of v1 (along <= 0) or of v2 (along >= extent); a NaN is in neither. */
+			if (along <= CD_R(0.0) || along >= extent)
 			{
-				/* LengthNoErrno and cd2Scale(1 / distance, offset), as CenterContactOnEdge. */
-				__m128 offset = vertex == edge ? offsets : _mm_movehl_ps(offsets, offsets);
+				bool first = along <= CD_R(0.0);
+				size_t vertex = first ? edge : next;
+				/* LengthNoErrno and cd2Scale(1 / distance, offset), as CenterContactOnEdge, in
+				 * lanes 0 and 1: each lane's sum adds the same two squares (lane 1 the other way
+				 * round, the same value), so the square root, the quotient and the products are
+				 * those of the scalar steps, without broadcasting a scalar between them. */
+				__m128 offset = first ? offsets : _mm_movehl_ps(offsets, offsets);
 				__m128 squares = _mm_mul_ps(offset, offset);
-				cdReal distance = _mm_cvtss_f32(_mm_sqrt_ss(
-					_mm_add_ss(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(1, 1, 1, 1)))));
+				__m128 distances =
+					_mm_sqrt_ps(_mm_add_ps(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(2, 3, 0, 1))));
+				cdReal distance = _mm_cvtss_f32(distances);
 				if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
 				{
-					normal = _mm_mul_ps(_mm_set1_ps(CD_R(1.0) / distance), offset);
-					coreSeparation = distance;
+					normal = _mm_mul_ps(_mm_div_ps(_mm_set1_ps(CD_R(1.0)), distances), offset);
+					coreSeparation = distances;
 					id = VERTEX_FEATURE | (uint32_t)vertex;
 				}
 			}
 		}
-		cdReal separation = coreSeparation - total;
+		cdReal separation = _mm_cvtss_f32(coreSeparation) - total;
 		hit = !(separation > speculativeDistance);
 		/* The point centre + 0.5 * (polygon radius - circle radius - core separation) * normal. */
-		*pointOut = _mm_add_ps(
-			centre, _mm_mul_ps(_mm_set1_ps(CD_R(0.5) * (b->radius - circleRadius - coreSeparation)), normal));
+		__m128 half = _mm_mul_ps(_mm_set1_ps(CD_R(0.5)),
+								 _mm_sub_ps(_mm_set1_ps(b->radius - circleRadius), coreSeparation));
+		*pointOut = _mm_add_ps(centre, _mm_mul_ps(half, normal));
 		*normalOut = normal;
 		*separationOut = separation;
 		*idOut = id;
