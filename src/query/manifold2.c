@@ -1187,8 +1187,8 @@ static inline bool PolygonCentreLanes(const cd2Polygon* b, __m128 centre, cdReal
 				 * those of the scalar steps, without broadcasting a scalar between them. */
 				__m128 offset = first ? offsets : _mm_movehl_ps(offsets, offsets);
 				__m128 squares = _mm_mul_ps(offset, offset);
-				__m128 distances =
-					_mm_sqrt_ps(_mm_add_ps(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(2, 3, 0, 1))));
+				__m128 distances = _mm_sqrt_ps(
+					_mm_add_ps(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(2, 3, 0, 1))));
 				cdReal distance = _mm_cvtss_f32(distances);
 				if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
 				{
