@@ -1085,9 +1085,30 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 	/* One index for both arrays and for the edge found (a polygon has at least one pair). */
 	size_t pairs = (size_t)count & ~(size_t)1;
 	size_t edge = 0;
-	cdReal edgeSeparation = -CD_REAL_MAX;
+	cdReal edgeSeparation;
 	size_t i = 0;
-	do
+	{
+		/* The first pair: edge 0 is the largest so far when its separation is above the start
+		 * value -CD_REAL_MAX, which is what the maximum of the two gives (max_ss takes its second
+		 * operand when the first is NaN), without a compare and branch. */
+		__m128 d = _mm_sub_ps(centre, _mm_loadu_ps(&b->vertices[0].x));
+		__m128 p = _mm_mul_ps(_mm_loadu_ps(&b->normals[0].x), d);
+		__m128 sep = _mm_add_ps(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 3, 0, 1)));
+		if (_mm_movemask_ps(_mm_cmpgt_ps(sep, limit)) != 0)
+		{
+			return false;
+		}
+		edgeSeparation = _mm_cvtss_f32(_mm_max_ss(sep, _mm_set_ss(-CD_REAL_MAX)));
+		cdReal s1 = _mm_cvtss_f32(_mm_movehl_ps(sep, sep));
+		if (s1 > edgeSeparation)
+		{
+			edge = 1;
+			edgeSeparation = s1;
+			KEEP_BRANCH();
+		}
+		i = 2;
+	}
+	while (i < pairs)
 	{
 		__m128 d = _mm_sub_ps(centre, _mm_loadu_ps(&b->vertices[i].x));
 		__m128 p = _mm_mul_ps(_mm_loadu_ps(&b->normals[i].x), d);
@@ -1111,7 +1132,7 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 			KEEP_BRANCH();
 		}
 		i += 2;
-	} while (i < pairs);
+	}
 	if (i < (size_t)count)
 	{
 		__m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[i]);
