@@ -960,6 +960,44 @@ cd2Manifold cd2CollidePolygonPolygon(const cd2Polygon* a, const cd2Polygon* b, c
 
 /* ---- local-frame forms of the commonest contacts (the others: manifold_local2.c) --------------- */
 
+#if CD2_SEPARATION_SSE
+/* The two floats of v in lanes 0 and 1 of a vector (upper lanes zero). Through a double: a
+ * cd2Vec or cd2Rot argument arrives in one vector register, and this keeps it there, where
+ * reading its fields split it through the stack or the integer registers. */
+static inline __m128 PairLanes(cd2Vec pair)
+{
+	double bits;
+	memcpy(&bits, &pair, sizeof bits);
+	return _mm_castpd_ps(_mm_set_sd(bits));
+}
+
+/* The two floats of v in lanes 0 and 1 and again in 2 and 3: one shuffle of the argument register. */
+static inline __m128 DoubledPairLanes(cd2Vec pair)
+{
+	double bits;
+	memcpy(&bits, &pair, sizeof bits);
+	return _mm_castpd_ps(_mm_set1_pd(bits));
+}
+
+/* A rotation's cosine and sine, each in every lane (for RotateLanes). */
+static inline void RotationLanes(cd2Rot q, __m128* cosine, __m128* sine)
+{
+	__m128 rotation = PairLanes(cd2MakeVec(q.c, q.s));
+	*cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
+	*sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
+}
+
+/* cosine * v + sine * swap(v) in lanes 0 and 1 (and 2 and 3, for a second pair or the same pair
+ * again): with sine = (-s, s) the rotation of v by (c, s),
+ * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
+ * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
+ * product plus or minus another, and addition commutes exactly). */
+static inline __m128 RotateLanes(__m128 cosine, __m128 sine, __m128 v)
+{
+	return _mm_add_ps(_mm_mul_ps(cosine, v), _mm_mul_ps(sine, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+}
+#endif
+
 /* in[0..count) placed by xf into out (points: rotated and moved; else only rotated), bit for bit
  * as cd2TransformPoint / cd2RotateVector. In the float build on SSE2 two vectors per lane group,
  * with xf kept in registers: spilling a cd2Transform argument and reading it back 16 bytes at a
@@ -969,14 +1007,13 @@ static inline void PlaceVectors(cd2Vec* out, const cd2Vec* in, int count, cd2Tra
 	CD_ASSERT(0 <= count && count <= CD2_MAX_POLYGON_VERTICES);
 #if CD2_SEPARATION_SSE
 	/* c * x + (-s) * y is c * x - s * y exactly, and s * x + c * y is c * y + s * x. */
-	/* Built with register shuffles from scalars: a _mm_setr_ps of the fields went through the
-	 * stack. */
-	__m128 c = _mm_set1_ps(xf.q.c);
-	__m128 sine = _mm_set1_ps(xf.q.s);
-	__m128 s = _mm_unpacklo_ps(_mm_xor_ps(sine, _mm_set1_ps(-0.0f)), sine);
-	s = _mm_movelh_ps(s, s);
-	__m128 p = _mm_unpacklo_ps(_mm_set_ss(xf.p.x), _mm_set_ss(xf.p.y));
-	p = _mm_movelh_ps(p, p);
+	/* Built by shuffles of the argument registers, xf.q's pair and xf.p's pair: a _mm_setr_ps of
+	 * the fields went through the stack, and broadcasting the fields one at a time took them
+	 * through the integer registers (a few cycles before the first placed vertex). */
+	__m128 c, sine;
+	RotationLanes(xf.q, &c, &sine);
+	__m128 s = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s, -s, s) */
+	__m128 p = DoubledPairLanes(xf.p);
 	int i = 0;
 	for (; i + 2 <= count; i += 2)
 	{
@@ -1029,35 +1066,6 @@ cd2Manifold cd2CollidePolygonPolygonLocal(const cd2Polygon* a, const cd2Polygon*
 }
 
 #if CD2_SEPARATION_SSE
-/* The two floats of v in lanes 0 and 1 of a vector (upper lanes zero). Through a double: a
- * cd2Vec or cd2Rot argument arrives in one vector register, and this keeps it there, where
- * reading its fields split it through the stack or the integer registers. */
-static inline __m128 PairLanes(cd2Vec pair)
-{
-	double bits;
-	memcpy(&bits, &pair, sizeof bits);
-	return _mm_castpd_ps(_mm_set_sd(bits));
-}
-
-/* A rotation's cosine and sine, each in every lane (for RotateLanes). */
-static inline void RotationLanes(cd2Rot q, __m128* cosine, __m128* sine)
-{
-	__m128 rotation = PairLanes(cd2MakeVec(q.c, q.s));
-	*cosine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(0, 0, 0, 0));
-	*sine = _mm_shuffle_ps(rotation, rotation, _MM_SHUFFLE(1, 1, 1, 1));
-}
-
-/* cosine * v + sine * swap(v) in lanes 0 and 1: with sine = (-s, s) the rotation of v by (c, s),
- * c * x - s * y and c * y + s * x, and with sine = (s, -s) the inverse rotation, c * x + s * y and
- * c * y - s * x: cd2RotateVector's and cd2InvRotateVector's values bit for bit (each lane is one
- * product plus or minus another, and addition commutes exactly). */
-static inline __m128 RotateLanes(__m128 cosine, __m128 sine, __m128 v)
-{
-	return _mm_add_ps(_mm_mul_ps(cosine, v), _mm_mul_ps(sine, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
-}
-#endif
-
-#if CD2_SEPARATION_SSE
 /* ScanCenterContact's edge for a centre given as (x, y, x, y) in the float build on SSE2, two edges to
  * a vector: false when the centre is beyond the limit along some edge (no contact), else the first
  * edge of the largest separation and that separation, bit for bit as the scan on finite input.
@@ -1074,10 +1082,33 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 	int count = b->count;
 	CD_ASSERT(count >= 3 && count <= CD2_MAX_POLYGON_VERTICES);
 	__m128 limit = _mm_set1_ps(limitValue);
-	int edge = 0;
-	cdReal edgeSeparation = -CD_REAL_MAX;
-	int i = 0;
-	for (; i + 2 <= count; i += 2)
+	/* One index for both arrays and for the edge found (a polygon has at least one pair). */
+	size_t pairs = (size_t)count & ~(size_t)1;
+	size_t edge = 0;
+	cdReal edgeSeparation;
+	size_t i = 0;
+	{
+		/* The first pair: edge 0 is the largest so far when its separation is above the start
+		 * value -CD_REAL_MAX, which is what the maximum of the two gives (max_ss takes its second
+		 * operand when the first is NaN), without a compare and branch. */
+		__m128 d = _mm_sub_ps(centre, _mm_loadu_ps(&b->vertices[0].x));
+		__m128 p = _mm_mul_ps(_mm_loadu_ps(&b->normals[0].x), d);
+		__m128 sep = _mm_add_ps(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 3, 0, 1)));
+		if (_mm_movemask_ps(_mm_cmpgt_ps(sep, limit)) != 0)
+		{
+			return false;
+		}
+		edgeSeparation = _mm_cvtss_f32(_mm_max_ss(sep, _mm_set_ss(-CD_REAL_MAX)));
+		cdReal s1 = _mm_cvtss_f32(_mm_movehl_ps(sep, sep));
+		if (s1 > edgeSeparation)
+		{
+			edge = 1;
+			edgeSeparation = s1;
+			KEEP_BRANCH();
+		}
+		i = 2;
+	}
+	while (i < pairs)
 	{
 		__m128 d = _mm_sub_ps(centre, _mm_loadu_ps(&b->vertices[i].x));
 		__m128 p = _mm_mul_ps(_mm_loadu_ps(&b->normals[i].x), d);
@@ -1100,8 +1131,9 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 			edgeSeparation = s1;
 			KEEP_BRANCH();
 		}
+		i += 2;
 	}
-	if (i < count)
+	if (i < (size_t)count)
 	{
 		__m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[i]);
 		__m128 n = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[i]);
@@ -1118,7 +1150,7 @@ static inline bool PairScanEdge(const cd2Polygon* b, __m128 centre, cdReal limit
 			KEEP_BRANCH();
 		}
 	}
-	*edgeOut = edge;
+	*edgeOut = (int)edge;
 	*separationOut = edgeSeparation;
 	return true;
 }
@@ -1136,18 +1168,21 @@ static inline bool PolygonCentreLanes(const cd2Polygon* b, __m128 centre, cdReal
 									  cdReal* separationOut, uint32_t* idOut)
 {
 	cdReal total = b->radius + circleRadius;
-	int edge;
+	int edgeFound;
 	cdReal edgeSeparation;
-	bool hit = PairScanEdge(b, centre, total + speculativeDistance, &edge, &edgeSeparation);
+	bool hit = PairScanEdge(b, centre, total + speculativeDistance, &edgeFound, &edgeSeparation);
 	if (hit)
 	{
-		int next = edge + 1 < b->count ? edge + 1 : 0;
+		size_t edge = (size_t)edgeFound;
+		size_t next = edge + 1 < (size_t)b->count ? edge + 1 : 0;
 		/* (v1, v2): the edge's vertices; the normal in lanes 0 and 1. */
 		__m128 ends =
 			_mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->vertices[edge]),
 						 (const __m64*)(const void*)&b->vertices[next]);
 		__m128 normal = _mm_loadl_pi(_mm_setzero_ps(), (const __m64*)(const void*)&b->normals[edge]);
-		cdReal coreSeparation = edgeSeparation;
+		/* The core separation in lanes 0 and 1, so that the point's offset below needs no
+		 * broadcast on the way from a vertex's distance. */
+		__m128 coreSeparation = _mm_set1_ps(edgeSeparation);
 		uint32_t id = (uint32_t)edge;
 		if (edgeSeparation > CD_R(0.0))
 		{
@@ -1162,27 +1197,34 @@ static inline bool PolygonCentreLanes(const cd2Polygon* b, __m128 centre, cdReal
 			__m128 dots = _mm_add_ps(products, _mm_shuffle_ps(products, products, _MM_SHUFFLE(2, 3, 0, 1)));
 			cdReal along = _mm_cvtss_f32(dots);
 			cdReal extent = _mm_cvtss_f32(_mm_movehl_ps(dots, dots));
-			int vertex = along <= CD_R(0.0) ? edge : along >= extent ? next : -1;
-			if (vertex >= 0)
+			/* The region of v1 (along <= 0) or of v2 (along >= extent); a NaN is in neither. */
+			if (along <= CD_R(0.0) || along >= extent)
 			{
-				/* LengthNoErrno and cd2Scale(1 / distance, offset), as CenterContactOnEdge. */
-				__m128 offset = vertex == edge ? offsets : _mm_movehl_ps(offsets, offsets);
+				bool first = along <= CD_R(0.0);
+				size_t vertex = first ? edge : next;
+				/* LengthNoErrno and cd2Scale(1 / distance, offset), as CenterContactOnEdge, in
+				 * lanes 0 and 1: each lane's sum adds the same two squares (lane 1 the other way
+				 * round, the same value), so the square root, the quotient and the products are
+				 * those of the scalar steps, without broadcasting a scalar between them. */
+				__m128 offset = first ? offsets : _mm_movehl_ps(offsets, offsets);
 				__m128 squares = _mm_mul_ps(offset, offset);
-				cdReal distance = _mm_cvtss_f32(_mm_sqrt_ss(
-					_mm_add_ss(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(1, 1, 1, 1)))));
+				__m128 distances = _mm_sqrt_ps(
+					_mm_add_ps(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(2, 3, 0, 1))));
+				cdReal distance = _mm_cvtss_f32(distances);
 				if (distance >= CD_REAL_EPSILON * CD_REAL_EPSILON && distance <= CD_REAL_MAX)
 				{
-					normal = _mm_mul_ps(_mm_set1_ps(CD_R(1.0) / distance), offset);
-					coreSeparation = distance;
+					normal = _mm_mul_ps(_mm_div_ps(_mm_set1_ps(CD_R(1.0)), distances), offset);
+					coreSeparation = distances;
 					id = VERTEX_FEATURE | (uint32_t)vertex;
 				}
 			}
 		}
-		cdReal separation = coreSeparation - total;
+		cdReal separation = _mm_cvtss_f32(coreSeparation) - total;
 		hit = !(separation > speculativeDistance);
 		/* The point centre + 0.5 * (polygon radius - circle radius - core separation) * normal. */
-		*pointOut = _mm_add_ps(
-			centre, _mm_mul_ps(_mm_set1_ps(CD_R(0.5) * (b->radius - circleRadius - coreSeparation)), normal));
+		__m128 half = _mm_mul_ps(_mm_set1_ps(CD_R(0.5)),
+								 _mm_sub_ps(_mm_set1_ps(b->radius - circleRadius), coreSeparation));
+		*pointOut = _mm_add_ps(centre, _mm_mul_ps(half, normal));
 		*normalOut = normal;
 		*separationOut = separation;
 		*idOut = id;
@@ -1276,28 +1318,29 @@ cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Tr
 {
 	CD_ASSERT(a != NULL);
 #if CD2_SEPARATION_SSE
-	/* cd2TransformPoint(xfB, centre) in lanes: the rotation, then the translation added. */
-	__m128 cosine, sine;
-	RotationLanes(xfB.q, &cosine, &sine);
-	__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
-	__m128 origin = PairLanes(xfB.p);
-	__m128 local = PairLanes(b.center);
+	/* cd2TransformPoint(xfB, centre) in lanes: the rotation, then the translation added. The
+	 * translation and the centre are read as (x, y, x, y) by one shuffle of their argument
+	 * registers. */
+	__m128 origin = DoubledPairLanes(xfB.p);
+	__m128 local = DoubledPairLanes(b.center);
 	/* A circle centred on its body (the common case) lands on xfB.p: the rotated zero centre
 	 * (zeros) plus a non-zero translation is the translation exactly, and skipping the rotation
 	 * takes xfB.q (composed last by the caller) off the path to the first edge test. Tested
 	 * in lanes: both centre coordinates zero and both translation coordinates non-zero (a zero
 	 * translation coordinate takes the sum, whose zero sign can differ). */
 	__m128 zero = _mm_setzero_ps();
-	__m128 placed;
+	__m128 centre;
 	if ((_mm_movemask_ps(_mm_and_ps(_mm_cmpeq_ps(local, zero), _mm_cmpneq_ps(origin, zero))) & 3) == 3)
 	{
-		placed = origin;
+		centre = origin;
 	}
 	else
 	{
-		placed = _mm_add_ps(RotateLanes(cosine, forwardSine, local), origin);
+		__m128 cosine, sine;
+		RotationLanes(xfB.q, &cosine, &sine);
+		__m128 forwardSine = _mm_xor_ps(sine, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); /* (-s, s) */
+		centre = _mm_add_ps(RotateLanes(cosine, forwardSine, local), origin);
 	}
-	__m128 centre = _mm_movelh_ps(placed, placed); /* (x, y, x, y) */
 	cd2Manifold m;
 	__m128 normal = _mm_setzero_ps(), point = _mm_setzero_ps();
 	cdReal separation = CD_R(0.0);
