@@ -300,34 +300,62 @@ typedef struct cd2PairSearch
 	uint8_t* failed;		/* per item: 1 when its range overflowed its worker's buffer */
 } cd2PairSearch;
 
+/* The pairs a worker's search reports wait in a small batch: each one's slot of the pair set
+ * starts loading when it arrives (most reported pairs already have their contact, and the set is too
+ * large for the nearest caches), and the batch is checked in arrival order when full, so the lookups'
+ * misses overlap instead of each stalling the search. */
+#define CD2_PAIR_BATCH 16
+
 typedef struct cd2PairSink
 {
 	const cd2World* world;
 	cd2PairBuffer* buffer;
 	bool overflow;
+	int pendingCount;
+	uint64_t pending[CD2_PAIR_BATCH];
 } cd2PairSink;
+
+/* The batch's pairs that make a new contact into the worker's buffer, in arrival order. */
+static void cd2FlushPairs(cd2PairSink* sink)
+{
+	const cd2World* world = sink->world;
+	cd2PairBuffer* buffer = sink->buffer;
+	for (int i = 0; i < sink->pendingCount; ++i)
+	{
+		uint64_t key = sink->pending[i];
+		int indexA = (int)(uint32_t)key, indexB = (int)(uint32_t)(key >> 32);
+		/* Most overlaps of moved boxes already have their contact. */
+		if (cdPairSet_Contains(&world->pairs, key) || !world->shapes.data[indexA].inUse ||
+			!world->shapes.data[indexB].inUse || !cd2ShouldCreateContact(world, indexA, indexB))
+		{
+			continue;
+		}
+		if (buffer->count == buffer->capacity)
+		{
+			sink->overflow = true;
+			break;
+		}
+		buffer->keys[buffer->count++] = key;
+	}
+	sink->pendingCount = 0;
+}
 
 static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context)
 {
 	(void)proxyA;
 	(void)proxyB;
 	cd2PairSink* sink = (cd2PairSink*)context;
-	const cd2World* world = sink->world;
-	int indexA = cd2ProxyShape(userDataA), indexB = cd2ProxyShape(userDataB);
-	uint64_t key = cdPairKey(indexA, indexB);
-	/* Most overlaps of moved boxes already have their contact. */
-	if (cdPairSet_Contains(&world->pairs, key) || !world->shapes.data[indexA].inUse ||
-		!world->shapes.data[indexB].inUse || !cd2ShouldCreateContact(world, indexA, indexB))
+	uint64_t key = cdPairKey(cd2ProxyShape(userDataA), cd2ProxyShape(userDataB));
+	const uint64_t* slot = cdPairSet_HomeSlot(&sink->world->pairs, key);
+	if (slot != NULL)
 	{
-		return;
+		CD2_PREFETCH(slot);
 	}
-	cd2PairBuffer* buffer = sink->buffer;
-	if (buffer->count == buffer->capacity)
+	sink->pending[sink->pendingCount++] = key;
+	if (sink->pendingCount == CD2_PAIR_BATCH)
 	{
-		sink->overflow = true;
-		return;
+		cd2FlushPairs(sink);
 	}
-	buffer->keys[buffer->count++] = key;
 }
 
 /* The pairs of items [start, end) of the broadphase's search into this worker's buffer. A range whose pairs
@@ -335,9 +363,14 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	cd2PairSearch* search = (cd2PairSearch*)taskContext;
-	cd2PairSink sink = {search->world, search->buffers + workerIndex, false};
+	cd2PairSink sink;
+	sink.world = search->world;
+	sink.buffer = search->buffers + workerIndex;
+	sink.overflow = false;
+	sink.pendingCount = 0;
 	int rangeStart = sink.buffer->count;
 	cd2BroadPhase_QueryMovedPairs(search->world->broadPhase, startIndex, endIndex, cd2CollectPair, &sink);
+	cd2FlushPairs(&sink);
 	if (sink.overflow)
 	{
 		sink.buffer->count = rangeStart;
@@ -411,12 +444,17 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 			cd2BroadPhase_EndMovedPairs(world->broadPhase, false);
 			return;
 		}
-		cd2PairSink sink = {world, &retry, false};
+		cd2PairSink sink;
+		sink.world = world;
+		sink.buffer = &retry;
+		sink.overflow = false;
+		sink.pendingCount = 0;
 		for (int i = 0; i < itemCount && !sink.overflow; ++i)
 		{
 			if (search.failed[i] != 0)
 			{
 				cd2BroadPhase_QueryMovedPairs(world->broadPhase, i, i + 1, cd2CollectPair, &sink);
+				cd2FlushPairs(&sink);
 			}
 		}
 		anyFailed = sink.overflow;
@@ -799,6 +837,9 @@ static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
 	}
 }
 
+/* How many contacts ahead of the one updated the update starts loading their inputs. */
+#define CD2_UPDATE_PREFETCH_AHEAD 8
+
 static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
@@ -807,8 +848,32 @@ static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerI
 	{
 		memset(ctx->changed + startIndex, 0, (size_t)(endIndex - startIndex));
 	}
+	const cd2World* world = ctx->world;
 	for (int i = startIndex; i < endIndex; ++i)
 	{
+		/* The bodies and shapes of a contact a few ahead start loading now: they lie far apart in
+		 * memory, and this loop's time is mostly waiting for them.
+		 * (Written out here: in a helper function GCC judged the prefetches free of effects and
+		 * dropped the call.) */
+		const cd2Contact* ahead =
+			i + CD2_UPDATE_PREFETCH_AHEAD < endIndex ? world->contacts.data + i + CD2_UPDATE_PREFETCH_AHEAD : NULL;
+		if (ahead != NULL && ahead->inUse)
+		{
+			const cd2Body* bodyA = world->bodies.data + ahead->bodyA;
+			const cd2Body* bodyB = world->bodies.data + ahead->bodyB;
+			const cd2WorldShape* shapeA = world->shapes.data + ahead->shapeA;
+			const cd2WorldShape* shapeB = world->shapes.data + ahead->shapeB;
+			CD2_PREFETCH(&bodyA->transform);
+			CD2_PREFETCH(&bodyA->linearVelocity);
+			CD2_PREFETCH(&bodyA->maxExtent);
+			CD2_PREFETCH(&bodyB->transform);
+			CD2_PREFETCH(&bodyB->linearVelocity);
+			CD2_PREFETCH(&bodyB->maxExtent);
+			CD2_PREFETCH(&shapeA->enableHitEvents);
+			CD2_PREFETCH(&shapeA->fatAabb.max);
+			CD2_PREFETCH(&shapeB->enableHitEvents);
+			CD2_PREFETCH(&shapeB->fatAabb.max);
+		}
 		cd2UpdateContact(ctx, i);
 		/* What the solver sees, unless the merge changes the contact (it rewrites its entry then). */
 		if (ctx->entries != NULL)
