@@ -869,8 +869,14 @@ static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerI
 			CD2_PREFETCH(&bodyB->transform);
 			CD2_PREFETCH(&bodyB->linearVelocity);
 			CD2_PREFETCH(&bodyB->maxExtent);
+			CD2_PREFETCH(&shapeA->type);
+			CD2_PREFETCH(&shapeA->geometry.polygon.normals[0]);
+			CD2_PREFETCH(&shapeA->geometry.polygon.count);
 			CD2_PREFETCH(&shapeA->enableHitEvents);
 			CD2_PREFETCH(&shapeA->fatAabb.max);
+			CD2_PREFETCH(&shapeB->type);
+			CD2_PREFETCH(&shapeB->geometry.polygon.normals[0]);
+			CD2_PREFETCH(&shapeB->geometry.polygon.count);
 			CD2_PREFETCH(&shapeB->enableHitEvents);
 			CD2_PREFETCH(&shapeB->fatAabb.max);
 		}
