@@ -996,6 +996,46 @@ static void cd2MergeContact(cd2World* world, int i)
 	}
 }
 
+/* The merge's look-ahead (see cd2UpdateContacts): hints only, never read as data. Macros, not
+ * functions: GCC 12 took a function made of prefetches for one without effects and dropped its
+ * calls. */
+#define CD2_MERGE_AHEAD_FAR 8
+#define CD2_MERGE_AHEAD_NEAR 4
+/* The record's fields the merge reads first (flags, shapes, bodies, edge keys). */
+#define cd2PrefetchMergeRecord(world, index)                                                                 \
+	do                                                                                                       \
+	{                                                                                                        \
+		const cd2Contact* prefetched_ = (world)->contacts.data + (index);                                     \
+		CD2_PREFETCH(&prefetched_->flags);                                                                   \
+		CD2_PREFETCH(&prefetched_->nextKey[1]);                                                              \
+	} while (0)
+/* What destroying a contact that left its pair touches: the pair set's slot of its key and the
+ * edge-list neighbours' keys. */
+#define cd2PrefetchMergeTargets(world, index)                                                                \
+	do                                                                                                       \
+	{                                                                                                        \
+		const cd2Contact* target_ = (world)->contacts.data + (index);                                         \
+		if (target_->inUse && (target_->flags & CD2_CONTACT_SIM_DISJOINT) != 0)                              \
+		{                                                                                                    \
+			const uint64_t* slot_ = cdPairSet_HomeSlot(&(world)->pairs, cdPairKey(target_->shapeA, target_->shapeB)); \
+			if (slot_ != NULL)                                                                               \
+			{                                                                                                \
+				CD2_PREFETCH(slot_);                                                                         \
+			}                                                                                                \
+			for (int side_ = 0; side_ < 2; ++side_)                                                          \
+			{                                                                                                \
+				if (target_->prevKey[side_] != CD2_NULL_INDEX)                                               \
+				{                                                                                            \
+					CD2_PREFETCH(&(world)->contacts.data[cd2EdgeContact(target_->prevKey[side_])].nextKey[0]); \
+				}                                                                                            \
+				if (target_->nextKey[side_] != CD2_NULL_INDEX)                                               \
+				{                                                                                            \
+					CD2_PREFETCH(&(world)->contacts.data[cd2EdgeContact(target_->nextKey[side_])].prevKey[0]); \
+				}                                                                                            \
+			}                                                                                                \
+		}                                                                                                    \
+	} while (0)
+
 void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 {
 	/* Manifolds on the workers, then the state changes (destruction, pre-solve callbacks, events,
@@ -1016,10 +1056,39 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 																(size_t)count * sizeof(cd2ContactSolveEntry));
 	cd2RunTask(world, cd2UpdateContactsTask, count, 64, CD2_PARALLEL_MIN_CONTACTS, &ctx);
 
-	/* (Contacts destroyed below only free their slot: count and the indices stay valid.) */
+	/* (Contacts destroyed below only free their slot: count and the indices stay valid.)
+	 * Two cursors run ahead over the changed contacts, loading what the merge will read: the
+	 * records CD2_MERGE_AHEAD_FAR ahead, then, CD2_MERGE_AHEAD_NEAR ahead, what destroying one
+	 * touches (its pair set slot, the neighbours in its bodies' edge lists). */
+	int far = 0, near = 0;
+	if (ctx.changed != NULL)
+	{
+		far = cd2NextChanged(ctx.changed, 0, count);
+		near = far;
+		for (int k = 0; k < CD2_MERGE_AHEAD_FAR && far < count; ++k)
+		{
+			cd2PrefetchMergeRecord(world, far);
+			far = cd2NextChanged(ctx.changed, far + 1, count);
+		}
+		for (int k = 0; k < CD2_MERGE_AHEAD_NEAR && near < count; ++k)
+		{
+			cd2PrefetchMergeTargets(world, near);
+			near = cd2NextChanged(ctx.changed, near + 1, count);
+		}
+	}
 	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count;
 		 i = cd2NextChanged(ctx.changed, i + 1, count))
 	{
+		if (far < count)
+		{
+			cd2PrefetchMergeRecord(world, far);
+			far = cd2NextChanged(ctx.changed, far + 1, count);
+		}
+		if (near < count)
+		{
+			cd2PrefetchMergeTargets(world, near);
+			near = cd2NextChanged(ctx.changed, near + 1, count);
+		}
 		cd2MergeContact(world, i);
 		if (ctx.entries != NULL)
 		{
