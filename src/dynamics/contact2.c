@@ -695,10 +695,41 @@ static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const 
 /* The narrowphase for one contact, stored with the data recycling needs. */
 static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA, const cd2WorldShape* shapeB,
 							   const cd2Body* bodyA, const cd2Body* bodyB, cd2Transform xfAB,
-							   cdReal speculative)
+							   cdReal speculative, cdReal timeStep)
 {
 	cd2Manifold m = cd2ContactCollide(shapeA, shapeB, xfAB, speculative);
 	cd2Transform xfA = bodyA->transform;
+	/* The narrowphase ran with the margin of the fastest closing the two bodies allow; a point
+	 * beyond the fixed margin stays only while its own approach speed along the normal can close
+	 * its gap in this step. Points of bodies sliding past or moving apart are no constraints then.
+	 * What no point reports is apart by at least the smallest separation dropped (and the margin
+	 * the narrowphase ran with): what an empty manifold's recycling relies on. */
+	cdReal guaranteed = speculative;
+	if (m.pointCount > 0)
+	{
+		cd2Vec n = cd2RotateVector(xfA.q, m.normal);
+		int kept = 0;
+		for (int k = 0; k < m.pointCount; ++k)
+		{
+			cd2ManifoldPoint mp = m.points[k];
+			if (mp.separation > CD_SPECULATIVE_DISTANCE)
+			{
+				cd2Vec p = cd2TransformPoint(xfA, mp.point);
+				cd2Vec vA = cd2Add(bodyA->linearVelocity,
+								   cd2CrossSV(bodyA->angularVelocity, cd2Sub(p, bodyA->center)));
+				cd2Vec vB = cd2Add(bodyB->linearVelocity,
+								   cd2CrossSV(bodyB->angularVelocity, cd2Sub(p, bodyB->center)));
+				cdReal approach = -cd2Dot(cd2Sub(vB, vA), n);
+				if (mp.separation > CD_SPECULATIVE_DISTANCE + timeStep * cdMax(approach, CD_R(0.0)))
+				{
+					guaranteed = cdMin(guaranteed, mp.separation);
+					continue;
+				}
+			}
+			m.points[kept++] = mp;
+		}
+		m.pointCount = kept;
+	}
 	cd2ContactPoint old[2];
 	uint32_t oldId[2] = {contact->cache[0].id, contact->cache[1].id};
 	int oldCount = contact->pointCount;
@@ -707,7 +738,7 @@ static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA,
 	contact->normal = cd2RotateVector(xfA.q, m.normal);
 	contact->localNormal = m.normal;
 	contact->cachedPose = xfAB;
-	contact->cachedSpeculative = speculative;
+	contact->cachedSpeculative = guaranteed;
 	contact->flags |= CD2_CONTACT_CACHE_VALID;
 	for (int k = 0; k < m.pointCount; ++k)
 	{
@@ -821,7 +852,7 @@ static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
 	}
 	if (!recycled)
 	{
-		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative);
+		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative, ctx->timeStep);
 	}
 	/* The merge's work: a change of touching, or a pre-solve call. */
 	bool touching = contact->pointCount > 0;
