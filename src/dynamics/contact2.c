@@ -870,6 +870,8 @@ static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
 
 /* How many contacts ahead of the one updated the update starts loading their inputs. */
 #define CD2_UPDATE_PREFETCH_AHEAD 8
+/* Bodies within this many indices of the current contact's count as near (see below). */
+#define CD2_UPDATE_PREFETCH_NEAR 64
 
 static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
@@ -888,7 +890,12 @@ static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerI
 		 * dropped the call.) */
 		const cd2Contact* ahead =
 			i + CD2_UPDATE_PREFETCH_AHEAD < endIndex ? world->contacts.data + i + CD2_UPDATE_PREFETCH_AHEAD : NULL;
-		if (ahead != NULL && ahead->inUse)
+		/* Only when that contact's body lies far from this one's in memory: contacts made in body
+		 * order (a stack, a pyramid) are read in body order, which the hardware prefetcher follows
+		 * by itself, and the extra loads there only cost. */
+		if (ahead != NULL && ahead->inUse &&
+			(uint32_t)(ahead->bodyB - world->contacts.data[i].bodyB + CD2_UPDATE_PREFETCH_NEAR) >
+				2u * CD2_UPDATE_PREFETCH_NEAR)
 		{
 			const cd2Body* bodyA = world->bodies.data + ahead->bodyA;
 			const cd2Body* bodyB = world->bodies.data + ahead->bodyB;
