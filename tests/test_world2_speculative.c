@@ -83,7 +83,8 @@ static void TestApproachingIsCaught(void)
 	cd2Counters c = cd2World_GetCounters(world);
 	TEST_CHECKF(c.touchingContactCount == 1, "%d touching", c.touchingContactCount);
 	cdReal bottom = cd2Body_GetPosition(box).y - CD_R(0.5);
-	TEST_CHECKF(bottom > -CD_LINEAR_SLOP && bottom < CD_R(0.01), "bottom at %g after one step", (double)bottom);
+	TEST_CHECKF(bottom > -CD_LINEAR_SLOP && bottom < CD_R(0.01), "bottom at %g after one step",
+				(double)bottom);
 	for (int i = 0; i < 30; ++i)
 	{
 		cd2World_Step(world, DT, 4);

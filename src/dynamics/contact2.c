@@ -888,8 +888,9 @@ static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerI
 		 * memory, and this loop's time is mostly waiting for them.
 		 * (Written out here: in a helper function GCC judged the prefetches free of effects and
 		 * dropped the call.) */
-		const cd2Contact* ahead =
-			i + CD2_UPDATE_PREFETCH_AHEAD < endIndex ? world->contacts.data + i + CD2_UPDATE_PREFETCH_AHEAD : NULL;
+		const cd2Contact* ahead = i + CD2_UPDATE_PREFETCH_AHEAD < endIndex
+									  ? world->contacts.data + i + CD2_UPDATE_PREFETCH_AHEAD
+									  : NULL;
 		/* Only when that contact's body lies far from this one's in memory: contacts made in body
 		 * order (a stack, a pyramid) are read in body order, which the hardware prefetcher follows
 		 * by itself, and the extra loads there only cost. */
@@ -1043,7 +1044,7 @@ static void cd2MergeContact(cd2World* world, int i)
 #define cd2PrefetchMergeRecord(world, index)                                                                 \
 	do                                                                                                       \
 	{                                                                                                        \
-		const cd2Contact* prefetched_ = (world)->contacts.data + (index);                                     \
+		const cd2Contact* prefetched_ = (world)->contacts.data + (index);                                    \
 		CD2_PREFETCH(&prefetched_->flags);                                                                   \
 		CD2_PREFETCH(&prefetched_->nextKey[1]);                                                              \
 	} while (0)
@@ -1052,10 +1053,11 @@ static void cd2MergeContact(cd2World* world, int i)
 #define cd2PrefetchMergeTargets(world, index)                                                                \
 	do                                                                                                       \
 	{                                                                                                        \
-		const cd2Contact* target_ = (world)->contacts.data + (index);                                         \
+		const cd2Contact* target_ = (world)->contacts.data + (index);                                        \
 		if (target_->inUse && (target_->flags & CD2_CONTACT_SIM_DISJOINT) != 0)                              \
 		{                                                                                                    \
-			const uint64_t* slot_ = cdPairSet_HomeSlot(&(world)->pairs, cdPairKey(target_->shapeA, target_->shapeB)); \
+			const uint64_t* slot_ =                                                                          \
+				cdPairSet_HomeSlot(&(world)->pairs, cdPairKey(target_->shapeA, target_->shapeB));            \
 			if (slot_ != NULL)                                                                               \
 			{                                                                                                \
 				CD2_PREFETCH(slot_);                                                                         \
@@ -1064,11 +1066,13 @@ static void cd2MergeContact(cd2World* world, int i)
 			{                                                                                                \
 				if (target_->prevKey[side_] != CD2_NULL_INDEX)                                               \
 				{                                                                                            \
-					CD2_PREFETCH(&(world)->contacts.data[cd2EdgeContact(target_->prevKey[side_])].nextKey[0]); \
+					CD2_PREFETCH(                                                                            \
+						&(world)->contacts.data[cd2EdgeContact(target_->prevKey[side_])].nextKey[0]);        \
 				}                                                                                            \
 				if (target_->nextKey[side_] != CD2_NULL_INDEX)                                               \
 				{                                                                                            \
-					CD2_PREFETCH(&(world)->contacts.data[cd2EdgeContact(target_->nextKey[side_])].prevKey[0]); \
+					CD2_PREFETCH(                                                                            \
+						&(world)->contacts.data[cd2EdgeContact(target_->nextKey[side_])].prevKey[0]);        \
 				}                                                                                            \
 			}                                                                                                \
 		}                                                                                                    \
