@@ -76,6 +76,22 @@ static inline uint64_t cdPairKey(int a, int b)
 	return ((uint64_t)hi << 32) | lo;
 }
 
+/* The set's hash of a key. */
+static inline uint32_t cdPairHash(uint64_t key)
+{
+	key ^= key >> 33;
+	key *= 0xff51afd7ed558ccdull;
+	key ^= key >> 33;
+	return (uint32_t)key;
+}
+
+/* Where a lookup of key starts reading (NULL for an empty set): a caller that looks up many keys
+ * can start loading their slots ahead (a prefetch) so the misses overlap. */
+static inline const uint64_t* cdPairSet_HomeSlot(const cdPairSet* set, uint64_t key)
+{
+	return set->capacity > 0 ? set->keys + (cdPairHash(key) & ((uint32_t)set->capacity - 1u)) : NULL;
+}
+
 void cdPairSet_Destroy(cdPairSet* set);
 void cdPairSet_Clear(cdPairSet* set);
 /* Returns false when memory runs out. Adding an existing key changes nothing. */

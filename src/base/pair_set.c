@@ -2,14 +2,6 @@
  * deletion (no tombstones, so lookups stay short after many removals). */
 #include "container.h"
 
-static uint32_t cdHashKey(uint64_t key)
-{
-	key ^= key >> 33;
-	key *= 0xff51afd7ed558ccdull;
-	key ^= key >> 33;
-	return (uint32_t)key;
-}
-
 void cdPairSet_Destroy(cdPairSet* set)
 {
 	cdFree(set->keys);
@@ -42,7 +34,7 @@ static bool cdPairSet_Grow(cdPairSet* set)
 		{
 			continue;
 		}
-		uint32_t slot = cdHashKey(stored - 1) & mask;
+		uint32_t slot = cdPairHash(stored - 1) & mask;
 		while (keys[slot] != 0)
 		{
 			slot = (slot + 1) & mask;
@@ -62,7 +54,7 @@ bool cdPairSet_Add(cdPairSet* set, uint64_t key)
 		return false;
 	}
 	uint32_t mask = (uint32_t)set->capacity - 1u;
-	uint32_t slot = cdHashKey(key) & mask;
+	uint32_t slot = cdPairHash(key) & mask;
 	while (set->keys[slot] != 0)
 	{
 		if (set->keys[slot] == key + 1)
@@ -83,7 +75,7 @@ static int cdPairSet_Slot(const cdPairSet* set, uint64_t key)
 		return -1;
 	}
 	uint32_t mask = (uint32_t)set->capacity - 1u;
-	uint32_t slot = cdHashKey(key) & mask;
+	uint32_t slot = cdPairHash(key) & mask;
 	while (set->keys[slot] != 0)
 	{
 		if (set->keys[slot] == key + 1)
@@ -112,7 +104,7 @@ bool cdPairSet_Remove(cdPairSet* set, uint64_t key)
 	uint32_t next = (hole + 1) & mask;
 	while (set->keys[next] != 0)
 	{
-		uint32_t home = cdHashKey(set->keys[next] - 1) & mask;
+		uint32_t home = cdPairHash(set->keys[next] - 1) & mask;
 		/* Move the entry back into the hole when its home is not in (hole, next]. */
 		bool between = hole <= next ? (hole < home && home <= next) : (hole < home || home <= next);
 		if (!between)

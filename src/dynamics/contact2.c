@@ -300,34 +300,62 @@ typedef struct cd2PairSearch
 	uint8_t* failed;		/* per item: 1 when its range overflowed its worker's buffer */
 } cd2PairSearch;
 
+/* The pairs a worker's search reports wait in a small batch: each one's slot of the pair set
+ * starts loading when it arrives (most reported pairs already have their contact, and the set is too
+ * large for the nearest caches), and the batch is checked in arrival order when full, so the lookups'
+ * misses overlap instead of each stalling the search. */
+#define CD2_PAIR_BATCH 16
+
 typedef struct cd2PairSink
 {
 	const cd2World* world;
 	cd2PairBuffer* buffer;
 	bool overflow;
+	int pendingCount;
+	uint64_t pending[CD2_PAIR_BATCH];
 } cd2PairSink;
+
+/* The batch's pairs that make a new contact into the worker's buffer, in arrival order. */
+static void cd2FlushPairs(cd2PairSink* sink)
+{
+	const cd2World* world = sink->world;
+	cd2PairBuffer* buffer = sink->buffer;
+	for (int i = 0; i < sink->pendingCount; ++i)
+	{
+		uint64_t key = sink->pending[i];
+		int indexA = (int)(uint32_t)key, indexB = (int)(uint32_t)(key >> 32);
+		/* Most overlaps of moved boxes already have their contact. */
+		if (cdPairSet_Contains(&world->pairs, key) || !world->shapes.data[indexA].inUse ||
+			!world->shapes.data[indexB].inUse || !cd2ShouldCreateContact(world, indexA, indexB))
+		{
+			continue;
+		}
+		if (buffer->count == buffer->capacity)
+		{
+			sink->overflow = true;
+			break;
+		}
+		buffer->keys[buffer->count++] = key;
+	}
+	sink->pendingCount = 0;
+}
 
 static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t userDataB, void* context)
 {
 	(void)proxyA;
 	(void)proxyB;
 	cd2PairSink* sink = (cd2PairSink*)context;
-	const cd2World* world = sink->world;
-	int indexA = cd2ProxyShape(userDataA), indexB = cd2ProxyShape(userDataB);
-	uint64_t key = cdPairKey(indexA, indexB);
-	/* Most overlaps of moved boxes already have their contact. */
-	if (cdPairSet_Contains(&world->pairs, key) || !world->shapes.data[indexA].inUse ||
-		!world->shapes.data[indexB].inUse || !cd2ShouldCreateContact(world, indexA, indexB))
+	uint64_t key = cdPairKey(cd2ProxyShape(userDataA), cd2ProxyShape(userDataB));
+	const uint64_t* slot = cdPairSet_HomeSlot(&sink->world->pairs, key);
+	if (slot != NULL)
 	{
-		return;
+		CD2_PREFETCH(slot);
 	}
-	cd2PairBuffer* buffer = sink->buffer;
-	if (buffer->count == buffer->capacity)
+	sink->pending[sink->pendingCount++] = key;
+	if (sink->pendingCount == CD2_PAIR_BATCH)
 	{
-		sink->overflow = true;
-		return;
+		cd2FlushPairs(sink);
 	}
-	buffer->keys[buffer->count++] = key;
 }
 
 /* The pairs of items [start, end) of the broadphase's search into this worker's buffer. A range whose pairs
@@ -335,9 +363,14 @@ static void cd2CollectPair(int proxyA, int proxyB, uint64_t userDataA, uint64_t 
 static void cd2FindPairsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	cd2PairSearch* search = (cd2PairSearch*)taskContext;
-	cd2PairSink sink = {search->world, search->buffers + workerIndex, false};
+	cd2PairSink sink;
+	sink.world = search->world;
+	sink.buffer = search->buffers + workerIndex;
+	sink.overflow = false;
+	sink.pendingCount = 0;
 	int rangeStart = sink.buffer->count;
 	cd2BroadPhase_QueryMovedPairs(search->world->broadPhase, startIndex, endIndex, cd2CollectPair, &sink);
+	cd2FlushPairs(&sink);
 	if (sink.overflow)
 	{
 		sink.buffer->count = rangeStart;
@@ -411,12 +444,17 @@ void cd2UpdateBroadPhasePairs(cd2World* world)
 			cd2BroadPhase_EndMovedPairs(world->broadPhase, false);
 			return;
 		}
-		cd2PairSink sink = {world, &retry, false};
+		cd2PairSink sink;
+		sink.world = world;
+		sink.buffer = &retry;
+		sink.overflow = false;
+		sink.pendingCount = 0;
 		for (int i = 0; i < itemCount && !sink.overflow; ++i)
 		{
 			if (search.failed[i] != 0)
 			{
 				cd2BroadPhase_QueryMovedPairs(world->broadPhase, i, i + 1, cd2CollectPair, &sink);
+				cd2FlushPairs(&sink);
 			}
 		}
 		anyFailed = sink.overflow;
@@ -657,10 +695,41 @@ static bool cd2RecycleManifold(cd2Contact* contact, const cd2Body* bodyA, const 
 /* The narrowphase for one contact, stored with the data recycling needs. */
 static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA, const cd2WorldShape* shapeB,
 							   const cd2Body* bodyA, const cd2Body* bodyB, cd2Transform xfAB,
-							   cdReal speculative)
+							   cdReal speculative, cdReal timeStep)
 {
 	cd2Manifold m = cd2ContactCollide(shapeA, shapeB, xfAB, speculative);
 	cd2Transform xfA = bodyA->transform;
+	/* The narrowphase ran with the margin of the fastest closing the two bodies allow; a point
+	 * beyond the fixed margin stays only while its own approach speed along the normal can close
+	 * its gap in this step. Points of bodies sliding past or moving apart are no constraints then.
+	 * What no point reports is apart by at least the smallest separation dropped (and the margin
+	 * the narrowphase ran with): what an empty manifold's recycling relies on. */
+	cdReal guaranteed = speculative;
+	if (m.pointCount > 0)
+	{
+		cd2Vec n = cd2RotateVector(xfA.q, m.normal);
+		int kept = 0;
+		for (int k = 0; k < m.pointCount; ++k)
+		{
+			cd2ManifoldPoint mp = m.points[k];
+			if (mp.separation > CD_SPECULATIVE_DISTANCE)
+			{
+				cd2Vec p = cd2TransformPoint(xfA, mp.point);
+				cd2Vec vA = cd2Add(bodyA->linearVelocity,
+								   cd2CrossSV(bodyA->angularVelocity, cd2Sub(p, bodyA->center)));
+				cd2Vec vB = cd2Add(bodyB->linearVelocity,
+								   cd2CrossSV(bodyB->angularVelocity, cd2Sub(p, bodyB->center)));
+				cdReal approach = -cd2Dot(cd2Sub(vB, vA), n);
+				if (mp.separation > CD_SPECULATIVE_DISTANCE + timeStep * cdMax(approach, CD_R(0.0)))
+				{
+					guaranteed = cdMin(guaranteed, mp.separation);
+					continue;
+				}
+			}
+			m.points[kept++] = mp;
+		}
+		m.pointCount = kept;
+	}
 	cd2ContactPoint old[2];
 	uint32_t oldId[2] = {contact->cache[0].id, contact->cache[1].id};
 	int oldCount = contact->pointCount;
@@ -669,7 +738,7 @@ static void cd2ComputeManifold(cd2Contact* contact, const cd2WorldShape* shapeA,
 	contact->normal = cd2RotateVector(xfA.q, m.normal);
 	contact->localNormal = m.normal;
 	contact->cachedPose = xfAB;
-	contact->cachedSpeculative = speculative;
+	contact->cachedSpeculative = guaranteed;
 	contact->flags |= CD2_CONTACT_CACHE_VALID;
 	for (int k = 0; k < m.pointCount; ++k)
 	{
@@ -783,7 +852,7 @@ static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
 	}
 	if (!recycled)
 	{
-		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative);
+		cd2ComputeManifold(contact, shapeA, shapeB, bodyA, bodyB, xfAB, speculative, ctx->timeStep);
 	}
 	/* The merge's work: a change of touching, or a pre-solve call. */
 	bool touching = contact->pointCount > 0;
@@ -799,6 +868,11 @@ static void cd2UpdateContact(const cd2ContactUpdateContext* ctx, int i)
 	}
 }
 
+/* How many contacts ahead of the one updated the update starts loading their inputs. */
+#define CD2_UPDATE_PREFETCH_AHEAD 8
+/* Bodies within this many indices of the current contact's count as near (see below). */
+#define CD2_UPDATE_PREFETCH_NEAR 64
+
 static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
@@ -807,8 +881,44 @@ static void cd2UpdateContactsTask(int startIndex, int endIndex, uint32_t workerI
 	{
 		memset(ctx->changed + startIndex, 0, (size_t)(endIndex - startIndex));
 	}
+	const cd2World* world = ctx->world;
 	for (int i = startIndex; i < endIndex; ++i)
 	{
+		/* The bodies and shapes of a contact a few ahead start loading now: they lie far apart in
+		 * memory, and this loop's time is mostly waiting for them.
+		 * (Written out here: in a helper function GCC judged the prefetches free of effects and
+		 * dropped the call.) */
+		const cd2Contact* ahead = i + CD2_UPDATE_PREFETCH_AHEAD < endIndex
+									  ? world->contacts.data + i + CD2_UPDATE_PREFETCH_AHEAD
+									  : NULL;
+		/* Only when that contact's body lies far from this one's in memory: contacts made in body
+		 * order (a stack, a pyramid) are read in body order, which the hardware prefetcher follows
+		 * by itself, and the extra loads there only cost. */
+		if (ahead != NULL && ahead->inUse &&
+			(uint32_t)(ahead->bodyB - world->contacts.data[i].bodyB + CD2_UPDATE_PREFETCH_NEAR) >
+				2u * CD2_UPDATE_PREFETCH_NEAR)
+		{
+			const cd2Body* bodyA = world->bodies.data + ahead->bodyA;
+			const cd2Body* bodyB = world->bodies.data + ahead->bodyB;
+			const cd2WorldShape* shapeA = world->shapes.data + ahead->shapeA;
+			const cd2WorldShape* shapeB = world->shapes.data + ahead->shapeB;
+			CD2_PREFETCH(&bodyA->transform);
+			CD2_PREFETCH(&bodyA->linearVelocity);
+			CD2_PREFETCH(&bodyA->maxExtent);
+			CD2_PREFETCH(&bodyB->transform);
+			CD2_PREFETCH(&bodyB->linearVelocity);
+			CD2_PREFETCH(&bodyB->maxExtent);
+			CD2_PREFETCH(&shapeA->type);
+			CD2_PREFETCH(&shapeA->geometry.polygon.normals[0]);
+			CD2_PREFETCH(&shapeA->geometry.polygon.count);
+			CD2_PREFETCH(&shapeA->enableHitEvents);
+			CD2_PREFETCH(&shapeA->fatAabb.max);
+			CD2_PREFETCH(&shapeB->type);
+			CD2_PREFETCH(&shapeB->geometry.polygon.normals[0]);
+			CD2_PREFETCH(&shapeB->geometry.polygon.count);
+			CD2_PREFETCH(&shapeB->enableHitEvents);
+			CD2_PREFETCH(&shapeB->fatAabb.max);
+		}
 		cd2UpdateContact(ctx, i);
 		/* What the solver sees, unless the merge changes the contact (it rewrites its entry then). */
 		if (ctx->entries != NULL)
@@ -925,6 +1035,49 @@ static void cd2MergeContact(cd2World* world, int i)
 	}
 }
 
+/* The merge's look-ahead (see cd2UpdateContacts): hints only, never read as data. Macros, not
+ * functions: GCC 12 took a function made of prefetches for one without effects and dropped its
+ * calls. */
+#define CD2_MERGE_AHEAD_FAR 8
+#define CD2_MERGE_AHEAD_NEAR 4
+/* The record's fields the merge reads first (flags, shapes, bodies, edge keys). */
+#define cd2PrefetchMergeRecord(world, index)                                                                 \
+	do                                                                                                       \
+	{                                                                                                        \
+		const cd2Contact* prefetched_ = (world)->contacts.data + (index);                                    \
+		CD2_PREFETCH(&prefetched_->flags);                                                                   \
+		CD2_PREFETCH(&prefetched_->nextKey[1]);                                                              \
+	} while (0)
+/* What destroying a contact that left its pair touches: the pair set's slot of its key and the
+ * edge-list neighbours' keys. */
+#define cd2PrefetchMergeTargets(world, index)                                                                \
+	do                                                                                                       \
+	{                                                                                                        \
+		const cd2Contact* target_ = (world)->contacts.data + (index);                                        \
+		if (target_->inUse && (target_->flags & CD2_CONTACT_SIM_DISJOINT) != 0)                              \
+		{                                                                                                    \
+			const uint64_t* slot_ =                                                                          \
+				cdPairSet_HomeSlot(&(world)->pairs, cdPairKey(target_->shapeA, target_->shapeB));            \
+			if (slot_ != NULL)                                                                               \
+			{                                                                                                \
+				CD2_PREFETCH(slot_);                                                                         \
+			}                                                                                                \
+			for (int side_ = 0; side_ < 2; ++side_)                                                          \
+			{                                                                                                \
+				if (target_->prevKey[side_] != CD2_NULL_INDEX)                                               \
+				{                                                                                            \
+					CD2_PREFETCH(                                                                            \
+						&(world)->contacts.data[cd2EdgeContact(target_->prevKey[side_])].nextKey[0]);        \
+				}                                                                                            \
+				if (target_->nextKey[side_] != CD2_NULL_INDEX)                                               \
+				{                                                                                            \
+					CD2_PREFETCH(                                                                            \
+						&(world)->contacts.data[cd2EdgeContact(target_->nextKey[side_])].prevKey[0]);        \
+				}                                                                                            \
+			}                                                                                                \
+		}                                                                                                    \
+	} while (0)
+
 void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 {
 	/* Manifolds on the workers, then the state changes (destruction, pre-solve callbacks, events,
@@ -945,10 +1098,39 @@ void cd2UpdateContacts(cd2World* world, cdReal timeStep)
 																(size_t)count * sizeof(cd2ContactSolveEntry));
 	cd2RunTask(world, cd2UpdateContactsTask, count, 64, CD2_PARALLEL_MIN_CONTACTS, &ctx);
 
-	/* (Contacts destroyed below only free their slot: count and the indices stay valid.) */
+	/* (Contacts destroyed below only free their slot: count and the indices stay valid.)
+	 * Two cursors run ahead over the changed contacts, loading what the merge will read: the
+	 * records CD2_MERGE_AHEAD_FAR ahead, then, CD2_MERGE_AHEAD_NEAR ahead, what destroying one
+	 * touches (its pair set slot, the neighbours in its bodies' edge lists). */
+	int far = 0, near = 0;
+	if (ctx.changed != NULL)
+	{
+		far = cd2NextChanged(ctx.changed, 0, count);
+		near = far;
+		for (int k = 0; k < CD2_MERGE_AHEAD_FAR && far < count; ++k)
+		{
+			cd2PrefetchMergeRecord(world, far);
+			far = cd2NextChanged(ctx.changed, far + 1, count);
+		}
+		for (int k = 0; k < CD2_MERGE_AHEAD_NEAR && near < count; ++k)
+		{
+			cd2PrefetchMergeTargets(world, near);
+			near = cd2NextChanged(ctx.changed, near + 1, count);
+		}
+	}
 	for (int i = cd2NextChanged(ctx.changed, 0, count); i < count;
 		 i = cd2NextChanged(ctx.changed, i + 1, count))
 	{
+		if (far < count)
+		{
+			cd2PrefetchMergeRecord(world, far);
+			far = cd2NextChanged(ctx.changed, far + 1, count);
+		}
+		if (near < count)
+		{
+			cd2PrefetchMergeTargets(world, near);
+			near = cd2NextChanged(ctx.changed, near + 1, count);
+		}
 		cd2MergeContact(world, i);
 		if (ctx.entries != NULL)
 		{
