@@ -345,6 +345,9 @@ static CD2_ALWAYS_INLINE void cd2PrefetchContact(const cd2World* world, const cd
 	}
 }
 
+/* How many blocks ahead the pack asks for the lines it writes. */
+#define CD2_PACK_STORE_AHEAD 2
+
 /* What the pack reads of a block's contacts and bodies, lane by lane (zero in empty lanes and for a
  * missing second point), before the wide arithmetic. */
 typedef struct cd2PackInput
@@ -386,6 +389,20 @@ bool cd2PackContactsWide(const cd2World* world, cd2StepContext* context, int sta
 			}
 		}
 		cd2ContactConstraintWide* w = context->wide + block;
+#if defined(__GNUC__) || defined(__clang__)
+		/* The lines of a block a few ahead, for writing (past this range too: with one worker the next
+		 * range follows). Asking early makes the many lines a block writes arrive together; waiting
+		 * for each at its first store was a third of the pack's time. */
+		if (block + CD2_PACK_STORE_AHEAD < context->wideCount)
+		{
+			const char* next = (const char*)(w + CD2_PACK_STORE_AHEAD);
+			for (size_t o = 0; o < sizeof(cd2ContactConstraintWide); o += 64)
+			{
+				__builtin_prefetch(next + o, 1);
+			}
+			__builtin_prefetch(next + sizeof(cd2ContactConstraintWide) - 1, 1);
+		}
+#endif
 		cd2PackInput in;
 		memset(&in, 0, sizeof(in));
 		cdReal restitution[CD_W] = {0}, friction[CD_W] = {0}, tangentSpeed[CD_W] = {0};
