@@ -7,6 +7,8 @@
 
 #include <collide/collide.h>
 
+#include "world2_test_scenes.h"
+
 #define DT (CD_R(1.0) / CD_R(60.0))
 
 /* A world without gravity: the bodies move only as set. */
@@ -16,19 +18,6 @@ static cd2WorldId MakeWorld(void)
 	wd.gravity = cd2MakeVec(CD_R(0.0), CD_R(0.0));
 	wd.enableSleep = false;
 	return cd2CreateWorld(&wd);
-}
-
-/* A static box 200 wide and 2 high whose top is at y = 0. */
-static void MakeGround(cd2WorldId world)
-{
-	cd2BodyDef bd = cd2DefaultBodyDef();
-	bd.position = cd2MakeVec(CD_R(0.0), CD_R(-1.0));
-	cd2BodyId ground = cd2CreateBody(world, &bd);
-	cd2ShapeDef sd = cd2DefaultShapeDef();
-	cd2Polygon box;
-	cd2MakeBoxPolygon((cd2Box){{CD_R(0.0), CD_R(0.0)}, {CD_R(100.0), CD_R(1.0)}, {CD_R(1.0), CD_R(0.0)}},
-					  &box);
-	cd2CreatePolygonShape(ground, &sd, &box);
 }
 
 /* A half-unit box whose bottom is `gap` above the ground (top at y = 0), moving at velocity v. */

@@ -5,7 +5,7 @@
 #define COLLIDE_TESTS_WORLD2_TEST_SCENES_H
 
 /* A static box 200 wide and 2 high whose top is at y = 0. */
-static cd2BodyId MakeGround(cd2WorldId world)
+static inline cd2BodyId MakeGround(cd2WorldId world)
 {
 	cd2BodyDef bd = cd2DefaultBodyDef();
 	bd.position = cd2MakeVec(CD_R(0.0), CD_R(-1.0));
@@ -18,8 +18,8 @@ static cd2BodyId MakeGround(cd2WorldId world)
 	return ground;
 }
 
-static cd2BodyId MakeBox(cd2WorldId world, cd2Vec position, cdReal halfWidth, cdReal halfHeight,
-						 cdReal density, cdReal friction)
+static inline cd2BodyId MakeBox(cd2WorldId world, cd2Vec position, cdReal halfWidth, cdReal halfHeight,
+								cdReal density, cdReal friction)
 {
 	cd2BodyDef bd = cd2DefaultBodyDef();
 	bd.type = CD_DYNAMIC_BODY;
@@ -36,7 +36,7 @@ static cd2BodyId MakeBox(cd2WorldId world, cd2Vec position, cdReal halfWidth, cd
 }
 
 /* The peers' pyramid on the ground: unit boxes, rows offset by half a box. Returns the top box. */
-static cd2BodyId MakePyramid(cd2WorldId world, int base)
+static inline cd2BodyId MakePyramid(cd2WorldId world, int base)
 {
 	MakeGround(world);
 	cd2BodyId top = CD2_NULL_BODY_ID;
@@ -57,7 +57,7 @@ static cd2BodyId MakePyramid(cd2WorldId world, int base)
  * contacts compress the rows within the first second), the world holds the boxes and the ground,
  * and at least `minTouching` contacts touch. Returns how far the top box got sideways from where
  * it was after the first second (the largest |dx| over the 9 s that follow). */
-static cdReal CheckPyramidStands(int base, cdReal maxSettle, int minTouching)
+static inline cdReal CheckPyramidStands(int base, cdReal maxSettle, int minTouching)
 {
 	cd2WorldDef wd = cd2DefaultWorldDef();
 	wd.enableSleep = false; /* the stack must hold by itself, not by sleeping */

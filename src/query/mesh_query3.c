@@ -2,6 +2,7 @@
  * convex shape and closest point, all walking the BVH of src/geometry/mesh3.c with a fixed stack.
  * Queries run in the mesh's frame where only bounds are compared, and on world-space triangles
  * where a primitive routine decides, so that the answers are those of the primitive routines. */
+#include "base/real_bits.h"
 #include "geometry/mesh3_internal.h"
 #include "query/mesh_query3.h"
 
@@ -229,24 +230,12 @@ static cdReal TriangleMagnitude(cd3Triangle t, cdReal rayMagnitude)
 	return cdMax(rayMagnitude, cdMax(MaxAbs3(t.a), cdMax(MaxAbs3(t.b), MaxAbs3(t.c))));
 }
 
-/* The bits of a real. */
-#if CD_DOUBLE
-typedef uint64_t RealBits;
-#else
-typedef uint32_t RealBits;
-#endif
-static inline RealBits GetBits(cdReal x)
-{
-	RealBits bits;
-	memcpy(&bits, &x, sizeof bits);
-	return bits;
-}
-
 /* The identity transform with +0 zeros: one integer test instead of seven comparisons. */
 static inline bool IsIdentityBits(cd3Transform xf)
 {
-	return (GetBits(xf.p.x) | GetBits(xf.p.y) | GetBits(xf.p.z) | GetBits(xf.q.x) | GetBits(xf.q.y) |
-			GetBits(xf.q.z) | (GetBits(xf.q.w) ^ GetBits(CD_R(1.0)))) == 0;
+	return (cdGetRealBits(xf.p.x) | cdGetRealBits(xf.p.y) | cdGetRealBits(xf.p.z) | cdGetRealBits(xf.q.x) |
+			cdGetRealBits(xf.q.y) | cdGetRealBits(xf.q.z) |
+			(cdGetRealBits(xf.q.w) ^ cdGetRealBits(CD_R(1.0)))) == 0;
 }
 
 /* Node fractions are those of the mesh-space ray; the triangle casts run in world space on the

@@ -5,6 +5,8 @@
 
 #include "sat3.h"
 
+#include "base/real_bits.h"
+
 #include <string.h>
 
 /* Edge pairs whose cross product is shorter than this fraction of |eA| |eB| are parallel (as in
@@ -34,33 +36,20 @@ static inline int cd3SupportingBoxEdge(int axis, cd3Vec direction)
 	return CD3_BOX_EDGE_FROM[vertex][axis];
 }
 
-/* The bits of a real (zero only for +0). */
-#if CD_DOUBLE
-typedef uint64_t cd3RealBits;
-#else
-typedef uint32_t cd3RealBits;
-#endif
-static inline cd3RealBits cd3GetRealBits(cdReal x)
-{
-	cd3RealBits bits;
-	memcpy(&bits, &x, sizeof bits);
-	return bits;
-}
-
 /* True when x, y and z are all +0: one integer test instead of a compare-and-branch on each (the
  * box-box path asks this of every pose, and -0, which fails it, takes the general path, whose
  * answer is the same up to the sign of a zero). */
 static inline bool cd3AreZeroBits(cdReal x, cdReal y, cdReal z)
 {
-	return (cd3GetRealBits(x) | cd3GetRealBits(y) | cd3GetRealBits(z)) == 0;
+	return (cdGetRealBits(x) | cdGetRealBits(y) | cdGetRealBits(z)) == 0;
 }
 
 /* The identity rotation, tested as cd3AreZeroBits on x, y, z and w == 1 (on the bits: 1 has no
  * other representation, and integer tests combine without the flags of a float comparison). */
 static inline bool cd3IsIdentityQuatBits(cd3Quat q)
 {
-	return ((cd3GetRealBits(q.x) | cd3GetRealBits(q.y) | cd3GetRealBits(q.z)) |
-			(cd3GetRealBits(q.w) ^ cd3GetRealBits(CD_R(1.0)))) == 0;
+	return ((cdGetRealBits(q.x) | cdGetRealBits(q.y) | cdGetRealBits(q.z)) |
+			(cdGetRealBits(q.w) ^ cdGetRealBits(CD_R(1.0)))) == 0;
 }
 
 /* |a| as a max, which compiles to one instruction: the signs of the box SAT's matrix entries and
