@@ -535,6 +535,73 @@ static void TestPolygonCircle(void)
 	TEST_CHECKF(mismatches <= trials / 100, "%d of %d pairs differ beyond round-off", mismatches, trials);
 }
 
+/* cd2CollidePolygonCircleBodies, from the two body transforms: bit for bit the world form on the
+ * circle's centre placed by cd2TransformPoint(xfB, .) and then cd2InvTransformPoint(xfA, .), and
+ * for a circle centred on its body the same values as the local form with the composed transform.
+ * Centres aimed at every feature of the polygon; body transforms random, far from the origin, or
+ * exact (quarter turns, zero translations, where the centred shortcut does not apply). */
+static void TestPolygonCircleBodies(void)
+{
+	TestRng rng = TestRngMake(0xb0d1e5u);
+	int contacts = 0, vertexContacts = 0, empty = 0, centred = 0, exact = 0;
+	static const cdReal turns[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+	for (int trial = 0; trial < 40000; ++trial)
+	{
+		cd2Polygon polygon = CentreTestPolygon(&rng, trial);
+		cd2Transform xfA, xfB;
+		bool exactFrames = TestRngInt(&rng, 4) == 0;
+		if (exactFrames)
+		{
+			int turnA = TestRngInt(&rng, 4), turnB = TestRngInt(&rng, 4);
+			xfA.q.c = turns[turnA][0];
+			xfA.q.s = turns[turnA][1];
+			xfB.q.c = turns[turnB][0];
+			xfB.q.s = turns[turnB][1];
+			xfA.p = CD2_VEC_ZERO;
+			++exact;
+		}
+		else
+		{
+			xfA = RandomTransform(&rng, TestRngInt(&rng, 2) == 0 ? 10.0 : 1000.0);
+			xfB.q = RandomTransform(&rng, 1.0).q;
+		}
+		cd2Circle circle;
+		circle.radius = RandomSize(&rng, 0.8);
+		bool centredCircle = TestRngInt(&rng, 2) == 0;
+		circle.center = centredCircle ? CD2_VEC_ZERO : RandomVec(&rng, 1.0);
+		centred += centredCircle;
+		/* B's origin placed so that the circle's centre lands on the target (in the polygon's frame);
+		 * with exact frames sometimes B's origin at the world origin instead. */
+		cd2Vec target = cd2TransformPoint(xfA, CentreTestTarget(&rng, &polygon, trial));
+		xfB.p = cd2Sub(target, cd2RotateVector(xfB.q, circle.center));
+		if (exactFrames && TestRngInt(&rng, 3) == 0)
+		{
+			xfB.p = CD2_VEC_ZERO;
+		}
+		cdReal speculative = (cdReal)(0.1 * TestRngInt(&rng, 3));
+
+		cd2Manifold bodies = cd2CollidePolygonCircleBodies(&polygon, xfA, circle, xfB, speculative);
+		cd2Circle placed = circle;
+		placed.center = cd2InvTransformPoint(xfA, cd2TransformPoint(xfB, circle.center));
+		cd2Manifold world = cd2CollidePolygonCircle(&polygon, placed, speculative);
+		TEST_CHECKF(SameBits(bodies, world), "trial %d: bodies %d/%d points, id %u/%u", trial,
+					bodies.pointCount, world.pointCount, bodies.points[0].id, world.points[0].id);
+		if (centredCircle)
+		{
+			cd2Manifold local =
+				cd2CollidePolygonCircleLocal(&polygon, circle, cd2InvMulTransforms(xfA, xfB), speculative);
+			TEST_CHECKF(SameBits(bodies, local), "trial %d: bodies against the local form", trial);
+		}
+		contacts += bodies.pointCount;
+		vertexContacts += bodies.pointCount == 1 && (bodies.points[0].id & 0x100u) != 0u;
+		empty += bodies.pointCount == 0;
+	}
+	printf(
+		"polygon-circle from body transforms: %d contacts (%d at vertices), %d empty, %d centred, %d exact\n",
+		contacts, vertexContacts, empty, centred, exact);
+	TEST_CHECK(contacts > 5000 && vertexContacts > 1000 && empty > 5000 && centred > 10000 && exact > 5000);
+}
+
 int main(void)
 {
 	TEST_RUN(TestSameAsWorldForm);
@@ -542,5 +609,6 @@ int main(void)
 	TEST_RUN(TestFarFromOrigin);
 	TEST_RUN(TestCirclePolygonScan);
 	TEST_RUN(TestPolygonCircle);
+	TEST_RUN(TestPolygonCircleBodies);
 	return TEST_SUMMARY();
 }

@@ -13,8 +13,10 @@
 //   b2Distance gets the two local proxies and the transforms, from a cold simplex cache;
 // - circle-polygon manifolds: collide's circle-first call (the circle as A: its centre taken into
 //   the polygon's frame and the contact mapped back into the circle's) and its polygon-first call
-//   (cd2CollidePolygonCircleLocal, the polygon as A as in b2CollidePolygonAndCircle: only the
-//   centre is placed, the contact reported in the polygon's frame);
+//   (the polygon as A as in b2CollidePolygonAndCircle: only the centre is placed, the contact
+//   reported in the polygon's frame), from the two body transforms as Box2D's call takes them
+//   (cd2CollidePolygonCircleBodies) and from the relative transform composed in the loop
+//   (cd2CollidePolygonCircleLocal);
 // - time of impact: both take local shapes and two sweeps (A at rest, B translating and rotating
 //   from separated to overlapping); target separation one linear slop, tolerance a quarter slop;
 // - mesh rays: the closest hit of each ray (segment of length 30) on the height field.
@@ -568,20 +570,28 @@ int main(int argc, char** argv)
 #endif
 		Row(o, "2D manifold circle-polygon, world output", SC_NPAIRS, mineWorld, worldPeers);
 
-		// The polygon as A, as Box2D 2.4's call takes it (and as a solver in collide calls it for a
-		// contact stored polygon first): only the circle's centre is placed in the polygon's frame,
-		// and the manifold is reported there.
+		// The polygon as A, as Box2D 2.4's call takes it: only the circle's centre is placed in the
+		// polygon's frame, and the manifold is reported there. cd2CollidePolygonCircleBodies takes
+		// the two body transforms, as b2CollidePolygonAndCircle does; the Local form takes the
+		// relative transform, composed in the loop (what collide's 2D world passes, having composed
+		// it for the contact anyway).
 		auto polygonFirst = [&s, skin](int i) {
+			return cd2CollidePolygonCircleBodies(&s.a[(size_t)i].local, s.a[(size_t)i].xf,
+												 s.circle[(size_t)i], s.xfCircle[(size_t)i], skin)
+				.pointCount;
+		};
+		Row(o, "2D manifold polygon-circle", SC_NPAIRS, polygonFirst, peers);
+		auto polygonFirstLocal = [&s, skin](int i) {
 			cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.xfCircle[(size_t)i]);
 			return cd2CollidePolygonCircleLocal(&s.a[(size_t)i].local, s.circle[(size_t)i], xf, skin)
 				.pointCount;
 		};
-		Row(o, "2D manifold polygon-circle", SC_NPAIRS, polygonFirst, peers);
+		Row(o, "2D manifold polygon-circle, Local form", SC_NPAIRS, polygonFirstLocal, peers);
 		auto polygonFirstWorld = [&s, skin](int i) {
-			cd2Transform xf = cd2InvMulTransforms(s.a[(size_t)i].xf, s.xfCircle[(size_t)i]);
-			return WorldOutput(
-				cd2CollidePolygonCircleLocal(&s.a[(size_t)i].local, s.circle[(size_t)i], xf, skin),
-				s.a[(size_t)i].xf);
+			return WorldOutput(cd2CollidePolygonCircleBodies(&s.a[(size_t)i].local, s.a[(size_t)i].xf,
+															 s.circle[(size_t)i], s.xfCircle[(size_t)i],
+															 skin),
+							   s.a[(size_t)i].xf);
 		};
 		Row(o, "2D manifold polygon-circle, world output", SC_NPAIRS, polygonFirstWorld, worldPeers);
 	}

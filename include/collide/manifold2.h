@@ -124,6 +124,16 @@ CD_API cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Tr
  * manifold back into the circle's. */
 CD_API cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Transform xfB,
 												cdReal speculativeDistance);
+/* The same contact from the two body transforms, as a narrowphase holding two bodies has them
+ * (and as Box2D's b2CollidePolygonAndCircle takes them): the polygon in its body frame placed by
+ * xfA, the circle in its body frame placed by xfB. Only the circle's centre is moved into the
+ * polygon's frame, by cd2InvTransformPoint(xfA, cd2TransformPoint(xfB, b.center)), and the
+ * manifold comes back in the polygon's frame; bit for bit cd2CollidePolygonCircle(a, circle
+ * placed there). No relative transform is composed: for a circle centred on its body that is
+ * cd2CollidePolygonCircleLocal(a, b, cd2InvMulTransforms(xfA, xfB)) bit for bit, for less work
+ * (and the composed transform is not built and passed). */
+CD_API cd2Manifold cd2CollidePolygonCircleBodies(const cd2Polygon* a, cd2Transform xfA, cd2Circle b,
+												 cd2Transform xfB, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsuleCapsuleLocal(cd2Capsule a, cd2Capsule b, cd2Transform xfB,
 												 cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsulePolygonLocal(cd2Capsule a, const cd2Polygon* b, cd2Transform xfB,
