@@ -17,7 +17,11 @@
  *                       overlapping ones;
  *   manifold-symmetry   cd2Collide(b, a): shapes of different kinds give the same points,
  *                       separations and ids with the opposite normal; shapes of one kind (AABB, box
- *                       and polygon are one) agree on whether there is contact away from the boundary.
+ *                       and polygon are one) agree on whether there is contact away from the boundary;
+ *   manifold-frames     a polygon A and a circle B, each taken as given in its body frame, with
+ *                       decoded body transforms: cd2CollidePolygonCircleLocal and
+ *                       cd2CollidePolygonCircleBodies give, value for value, cd2CollidePolygonCircle
+ *                       on the circle's centre placed as their contracts say (manifold2.h).
  * The band is FUZZ_BAND times the largest magnitude of the case plus 0.1 linear slop: the 2D
  * manifolds decide with absolute tolerances of that size (manifold2.h: B's reference edge is taken
  * only when it separates by 0.1 slop more; cores within 0.1 slop take the clipping path), which
@@ -28,6 +32,7 @@ static struct
 {
 	cd2Shape a, b;
 	cdReal speculative;
+	cd2Transform xfA, xfB; /* body transforms of the manifold-frames check */
 } s_case;
 
 /* Open findings (fuzz/crashes/README.md, FuzzPassOver): the checks this target's CI run still
@@ -49,6 +54,11 @@ static void Fail(const char* check, const char* format, ...)
 	FuzzPrintShape2("a", &s_case.a);
 	FuzzPrintShape2("b", &s_case.b);
 	fprintf(stderr, "  speculative distance %.9g\n", (double)s_case.speculative);
+	fprintf(stderr,
+			"  body transforms (frames check): A (%.9g %.9g) rotation (%.9g %.9g), B (%.9g %.9g) rotation "
+			"(%.9g %.9g)\n",
+			(double)s_case.xfA.p.x, (double)s_case.xfA.p.y, (double)s_case.xfA.q.c, (double)s_case.xfA.q.s,
+			(double)s_case.xfB.p.x, (double)s_case.xfB.p.y, (double)s_case.xfB.q.c, (double)s_case.xfB.q.s);
 	FuzzFail("see above");
 }
 
@@ -116,6 +126,58 @@ static void CheckManifold(const cd2Manifold* m, const cd2Shape* a, const cd2Shap
 	}
 }
 
+/* A body transform: a turn of k/64 of a circle (k = 0 the identity, multiples of 16 exact quarter
+ * turns) and a translation in the documented range. */
+static cd2Transform DecodeTransform(FuzzReader* r)
+{
+	cd2Transform xf;
+	uint8_t turn = FuzzByte(r);
+	xf.q =
+		(turn & 15) == 0 ? cd2MakeRot(CD_R(0.0)) : cd2MakeRot((cdReal)((double)(turn & 63) * (CD_PI / 32.0)));
+	if ((turn & 15) == 0)
+	{
+		static const cdReal quarter[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+		xf.q.c = quarter[(turn >> 4) & 3][0];
+		xf.q.s = quarter[(turn >> 4) & 3][1];
+	}
+	xf.p = FuzzVec2(r);
+	return xf;
+}
+
+static bool SameManifold(const cd2Manifold* m, const cd2Manifold* n)
+{
+	bool same = m->pointCount == n->pointCount && cd2VecEqual(m->normal, n->normal);
+	for (int i = 0; same && i < m->pointCount; ++i)
+	{
+		same = cd2VecEqual(m->points[i].point, n->points[i].point) &&
+			   m->points[i].separation == n->points[i].separation && m->points[i].id == n->points[i].id;
+	}
+	return same;
+}
+
+/* manifold-frames: the polygon-first circle forms against their contracts. */
+static void CheckFrames(const cd2Polygon* polygon, cd2Circle circle)
+{
+	cdReal d = s_case.speculative;
+	cd2Circle placed = circle;
+	placed.center = cd2TransformPoint(s_case.xfB, circle.center);
+	cd2Manifold local = cd2CollidePolygonCircleLocal(polygon, circle, s_case.xfB, d);
+	cd2Manifold expected = cd2CollidePolygonCircle(polygon, placed, d);
+	if (!SameManifold(&local, &expected))
+	{
+		Fail("manifold-frames", "cd2CollidePolygonCircleLocal: %d points, world form %d", local.pointCount,
+			 expected.pointCount);
+	}
+	placed.center = cd2InvTransformPoint(s_case.xfA, placed.center);
+	cd2Manifold bodies = cd2CollidePolygonCircleBodies(polygon, s_case.xfA, circle, s_case.xfB, d);
+	expected = cd2CollidePolygonCircle(polygon, placed, d);
+	if (!SameManifold(&bodies, &expected))
+	{
+		Fail("manifold-frames", "cd2CollidePolygonCircleBodies: %d points, world form %d", bodies.pointCount,
+			 expected.pointCount);
+	}
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -127,6 +189,8 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	usable = FuzzDecodeShape2(&r, types, 6, &s_case.b) && usable;
 	uint8_t flags = FuzzByte(&r);
 	s_case.speculative = (flags & 1) ? FuzzClampSize(FuzzRawReal(&r)) : CD_R(0.0);
+	s_case.xfA = DecodeTransform(&r);
+	s_case.xfB = DecodeTransform(&r);
 	if (!usable)
 	{
 		return 0;
@@ -135,6 +199,15 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	const cd2Shape* b = &s_case.b;
 	double scale = fmax(fmax(FuzzShapeScale2(a), FuzzShapeScale2(b)), (double)s_case.speculative);
 	double band = FUZZ_BAND * scale + 0.1 * (double)CD_LINEAR_SLOP;
+
+	if (a->type == CD2_SHAPE_POLYGON && b->type == CD2_SHAPE_CIRCLE)
+	{
+		CheckFrames(&a->polygon, b->circle);
+	}
+	else if (b->type == CD2_SHAPE_POLYGON && a->type == CD2_SHAPE_CIRCLE)
+	{
+		CheckFrames(&b->polygon, a->circle);
+	}
 
 	cd2Manifold ab = cd2Collide(a, b, s_case.speculative);
 	cd2Manifold ba = cd2Collide(b, a, s_case.speculative);
@@ -168,13 +241,9 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
 	if (Kind(a->type) != Kind(b->type))
 	{
-		bool same = ab.pointCount == ba.pointCount && cd2VecEqual(ab.normal, cd2Neg(ba.normal));
-		for (int i = 0; same && i < ab.pointCount; ++i)
-		{
-			same = cd2VecEqual(ab.points[i].point, ba.points[i].point) &&
-				   ab.points[i].separation == ba.points[i].separation && ab.points[i].id == ba.points[i].id;
-		}
-		if (!same)
+		cd2Manifold flipped = ba;
+		flipped.normal = cd2Neg(ba.normal);
+		if (!SameManifold(&ab, &flipped))
 		{
 			Fail("manifold-symmetry",
 				 "collide(a, b): %d points, normal (%.9g %.9g); collide(b, a): %d points, "
