@@ -118,10 +118,10 @@ CD_API cd2Manifold cd2CollideCircleSegmentLocal(cd2Circle a, cd2Segment b, cd2Tr
 												cdReal speculativeDistance);
 /* The polygon as A: only the circle's centre is placed (cd2TransformPoint(xfB, b.center)) and the
  * manifold is built in the polygon's frame, nothing mapped back; bit for bit
- * cd2CollidePolygonCircle(a, placed circle). The cheapest way to collide a circle with a polygon:
- * cd2CollideCirclePolygonLocal(b, a, inverse of xfB) gives the same contact within round-off
- * with the opposite normal, but takes the centre back into the polygon's frame and maps the
- * manifold back into the circle's. */
+ * cd2CollidePolygonCircle(a, placed circle). With the relative transform at hand, the cheapest
+ * way to collide a circle with a polygon: cd2CollideCirclePolygonLocal(b, a, inverse of xfB) gives
+ * the same contact within round-off with the opposite normal, but takes the centre back into the
+ * polygon's frame and maps the manifold back into the circle's. */
 CD_API cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b, cd2Transform xfB,
 												cdReal speculativeDistance);
 /* The same contact from the two body transforms, as a narrowphase holding two bodies has them
@@ -129,9 +129,9 @@ CD_API cd2Manifold cd2CollidePolygonCircleLocal(const cd2Polygon* a, cd2Circle b
  * xfA, the circle in its body frame placed by xfB. Only the circle's centre is moved into the
  * polygon's frame, by cd2InvTransformPoint(xfA, cd2TransformPoint(xfB, b.center)), and the
  * manifold comes back in the polygon's frame; bit for bit cd2CollidePolygonCircle(a, circle
- * placed there). No relative transform is composed: for a circle centred on its body that is
- * cd2CollidePolygonCircleLocal(a, b, cd2InvMulTransforms(xfA, xfB)) bit for bit, for less work
- * (and the composed transform is not built and passed). */
+ * placed there). No relative transform is composed (a circle needs no rotation): for a circle
+ * centred on its body the manifold has the values of cd2CollidePolygonCircleLocal(a, b,
+ * cd2InvMulTransforms(xfA, xfB)), for less work than composing that transform and calling it. */
 CD_API cd2Manifold cd2CollidePolygonCircleBodies(const cd2Polygon* a, cd2Transform xfA, cd2Circle b,
 												 cd2Transform xfB, cdReal speculativeDistance);
 CD_API cd2Manifold cd2CollideCapsuleCapsuleLocal(cd2Capsule a, cd2Capsule b, cd2Transform xfB,
