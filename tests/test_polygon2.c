@@ -434,6 +434,46 @@ static void TestHugeAndSmall(void)
 	cdSetLengthUnitsPerMeter((cdReal)1);
 }
 
+/* Euclidean distance from p to the polygon (0 inside), in double. */
+static double DistanceToPolygon(const cd2Polygon* polygon, cd2Vec p)
+{
+	bool inside = true;
+	double nearest = INFINITY;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		cd2Vec a = polygon->vertices[i], b = polygon->vertices[(i + 1) % polygon->count];
+		double abx = (double)b.x - (double)a.x, aby = (double)b.y - (double)a.y;
+		double apx = (double)p.x - (double)a.x, apy = (double)p.y - (double)a.y;
+		inside = inside && abx * apy - aby * apx >= 0.0;
+		double t = fmin(fmax((apx * abx + apy * aby) / (abx * abx + aby * aby), 0.0), 1.0);
+		nearest = fmin(nearest, hypot(apx - t * abx, apy - t * aby));
+	}
+	return inside ? 0.0 : nearest;
+}
+
+/* Dropping nearly collinear vertices in a sharp corner (fuzz_polygon2 finding, float build): a
+ * sliver 1e9 long and 1.25e5 wide whose drops each kept every input point within the tolerance
+ * of the new edge's line, yet left (-125000, -81250) 39,469 from the polygon, past the sharp corner
+ * at (-117500, -120000) (the tolerance at 1e9 is 7,629). Every input point must lie within one
+ * weld and one drop of the polygon, measured as a distance, not along one edge's normal. */
+static void TestSharpCornerDrop(void)
+{
+	cd2Vec points[8] = {
+		V(3.20185665e-31, -665531328), V(3.76527642e-37, -1e9), V(-117500, -120000), V(-125000, -125000),
+		V(-125000, -125000),		   V(-125000, -125000),		V(-125000, -81250),	 V(-110000, -27238384)};
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakePolygon(points, 8, &polygon) == CD_OK);
+	double maxAbs = MaxAbsCoordinate(points, 8);
+	double tolerance =
+		2.0 * (double)cd2GetPolygonWeldTolerance((cdReal)maxAbs) + 16.0 * (double)CD_REAL_EPSILON * maxAbs;
+	for (int i = 0; i < 8; ++i)
+	{
+		double d = DistanceToPolygon(&polygon, points[i]);
+		TEST_CHECKF(d <= tolerance, "input %d (%.9g, %.9g) is %.9g from the polygon (tolerance %.9g)", i,
+					(double)points[i].x, (double)points[i].y, d, tolerance);
+	}
+}
+
 /* Rounded polygons: the builders' radius checks, and every 2D query on a rounded unit square
  * [0,1]^2 with radius 0.5 (the stadium-cornered square reaching from -0.5 to 1.5). */
 static void TestRounded(void)
@@ -536,6 +576,7 @@ int main(void)
 	TEST_RUN(TestRandomClouds);
 	TEST_RUN(TestHugeAndSmall);
 	TEST_RUN(TestOutOfRange);
+	TEST_RUN(TestSharpCornerDrop);
 	TEST_RUN(TestRounded);
 	return TEST_SUMMARY();
 }

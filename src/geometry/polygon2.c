@@ -25,6 +25,41 @@ static double DistanceDouble(cd2Vec a, cd2Vec b)
 	return sqrt(dx * dx + dy * dy);
 }
 
+/* Distance from p to the segment a-b, in double. */
+static double DistanceToSegment(cd2Vec p, cd2Vec a, cd2Vec b)
+{
+	double abx = (double)b.x - (double)a.x, aby = (double)b.y - (double)a.y;
+	double apx = (double)p.x - (double)a.x, apy = (double)p.y - (double)a.y;
+	double lengthSquared = abx * abx + aby * aby;
+	double t = lengthSquared > 0.0 ? (apx * abx + apy * aby) / lengthSquared : 0.0;
+	t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+	double dx = apx - t * abx, dy = apy - t * aby;
+	return sqrt(dx * dx + dy * dy);
+}
+
+/* Whether p lies within tolerance of the convex counter-clockwise polygon hull[0..count) without
+ * vertex `skip`: inside every edge's line, or within tolerance of its boundary. The distance to
+ * the boundary, not to one edge's line: in a sharp corner a point can be within tolerance of both
+ * edges' lines and still far from the corner. */
+static bool WithinHullWithout(const cd2Vec* hull, int count, int skip, cd2Vec p, double tolerance)
+{
+	bool inside = true;
+	double nearest = INFINITY;
+	for (int k = 0; k < count; ++k)
+	{
+		if (k == skip)
+		{
+			continue;
+		}
+		int next = k + 1 < count ? k + 1 : 0;
+		next = next == skip ? (next + 1 < count ? next + 1 : 0) : next;
+		inside = inside && Orient(hull[k], hull[next], p) >= 0.0;
+		double d = DistanceToSegment(p, hull[k], hull[next]);
+		nearest = d < nearest ? d : nearest;
+	}
+	return inside || nearest <= tolerance;
+}
+
 static bool LexicographicLess(cd2Vec a, cd2Vec b)
 {
 	return a.x < b.x || (a.x == b.x && a.y < b.y);
@@ -163,7 +198,8 @@ cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out)
 	/* Drop nearly collinear vertices, the flattest first, while some vertex stands within the
 	 * tolerance of the line through its neighbours. Removing a vertex of a convex polygon keeps it
 	 * convex; a removal is skipped if it would leave any input point farther than the tolerance
-	 * outside the new edge, so drops never accumulate beyond the tolerance. */
+	 * from the polygon (not only from the new edge's line: past a sharp corner the two differ), so
+	 * drops never accumulate beyond the tolerance. */
 	while (hullCount >= 3)
 	{
 		int flattest = -1;
@@ -179,9 +215,9 @@ cdResult cd2MakePolygon(const cd2Vec* points, int count, cd2Polygon* out)
 				continue;
 			}
 			bool keepsPointsInside = true;
-			for (int j = 0; j < uniqueCount && keepsPointsInside && base > 0.0; ++j)
+			for (int j = 0; j < uniqueCount && keepsPointsInside; ++j)
 			{
-				keepsPointsInside = Orient(previous, next, unique[j]) / -base <= tolerance;
+				keepsPointsInside = WithinHullWithout(hull, hullCount, i, unique[j], tolerance);
 			}
 			if (keepsPointsInside)
 			{
