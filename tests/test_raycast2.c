@@ -835,6 +835,27 @@ static void TestSliverPolygon(void)
 	TEST_CHECKF(checked > 1000, "only %d cases", checked);
 }
 
+/* A rounded polygon whose rim (radius 1) is thinner than the round-off of its edges (1e9 long, in
+ * float about 119): a ray that starts 0.4 outside the rim near a vertex and ends deep inside the
+ * core was missed by every edge's capsule (fuzz_query2 finding). It must hit, at the rim or on the
+ * core within that round-off. */
+static void TestRimThinnerThanRoundOff(void)
+{
+	cd2Vec points[5] = {cd2MakeVec(CD_R(-1e9), CD_R(6750000.0)), cd2MakeVec(CD_R(7125000.0), CD_R(-1e9)),
+						cd2MakeVec(CD_R(1e9), CD_R(-1e9)), cd2MakeVec(CD_R(0.0), CD_R(0.0)),
+						cd2MakeVec(CD_R(-12500000.0), CD_R(7125000.0))};
+	cd2Polygon polygon;
+	TEST_CHECK(cd2MakeRoundedPolygon(points, 5, (cdReal)0.999999881, &polygon) == CD_OK);
+	cd2RayHit hit = UntouchedHit();
+	cd2Ray ray = Ray((cdReal)0.999999881, (cdReal)0.999999881, (cdReal)0.999999881, CD_R(-12500000.0));
+	TEST_CHECK(cd2RaycastPolygon(&polygon, ray, &hit));
+	/* The entry is within a few hundred units (the round-off at 1e9) of the vertex at the origin:
+	 * a fraction of at most 1e-4 of the ray's 1.25e7. */
+	TEST_CHECKF(hit.fraction >= CD_R(0.0) && hit.fraction <= CD_R(1e-4), "fraction %.9g",
+				(double)hit.fraction);
+	TEST_CHECK_NEAR((double)cd2Length(hit.normal), 1.0, 1e-5);
+}
+
 static void TestSegmentExact(void)
 {
 	cd2Segment g = {cd2MakeVec(CD_R(0.0), CD_R(-1.0)), cd2MakeVec(CD_R(0.0), CD_R(3.0))};
@@ -1437,6 +1458,7 @@ int main(void)
 	TEST_RUN(TestPolygonExact);
 	TEST_RUN(TestSegmentExact);
 	TEST_RUN(TestSliverPolygon);
+	TEST_RUN(TestRimThinnerThanRoundOff);
 	TEST_RUN(TestDispatcher);
 	TEST_RUN(TestSolidsAgainstReference);
 	TEST_RUN(TestSolidsNearTangent);

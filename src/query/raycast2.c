@@ -235,6 +235,8 @@ bool cd2RaycastBox(cd2Box b, cd2Ray ray, cd2RayHit* hit)
 /* A rounded polygon is the union of its core polygon and the capsules around its edges. From an
  * origin outside it, the ray crosses an edge capsule before it can reach the core, so the first
  * entry is the earliest entry into an edge capsule, and that capsule's normal is the union's. */
+static bool RaycastSharpPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit);
+
 static bool RaycastRoundedPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 {
 	if (cd2PointInPolygon(ray.origin, polygon))
@@ -258,23 +260,18 @@ static bool RaycastRoundedPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayH
 	if (found)
 	{
 		*hit = best;
+		return true;
 	}
-	return found;
+	/* A ray into the core passes through the rounded rim first, but a rim thinner than the
+	 * round-off of the edges' coordinates (a radius of 1 on edges 1e9 long in float) can be missed
+	 * by every edge's capsule: the core's own hit, on or inside the shape, is then the answer. */
+	return RaycastSharpPolygon(polygon, ray, hit);
 }
 
-bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
+/* The ray against the polygon's core (its radius ignored). */
+static bool RaycastSharpPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 {
-	CD_ASSERT(polygon != NULL && hit != NULL);
 	int count = polygon->count;
-	if (count < 1 || count > CD2_MAX_POLYGON_VERTICES)
-	{
-		return false;
-	}
-	if (polygon->radius > CD_R(0.0))
-	{
-		return RaycastRoundedPolygon(polygon, ray, hit);
-	}
-
 	/* Inside or on the boundary within round-off, as cd2PointInPolygon decides (robust also beyond
 	 * a sharp vertex, where the origin can be within round-off of both edge lines far from the
 	 * polygon). */
@@ -321,6 +318,21 @@ bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
 		return false;
 	}
 	return cd2HitAtFraction(ray, lower, polygon->normals[index], hit);
+}
+
+bool cd2RaycastPolygon(const cd2Polygon* polygon, cd2Ray ray, cd2RayHit* hit)
+{
+	CD_ASSERT(polygon != NULL && hit != NULL);
+	int count = polygon->count;
+	if (count < 1 || count > CD2_MAX_POLYGON_VERTICES)
+	{
+		return false;
+	}
+	if (polygon->radius > CD_R(0.0))
+	{
+		return RaycastRoundedPolygon(polygon, ray, hit);
+	}
+	return RaycastSharpPolygon(polygon, ray, hit);
 }
 
 static cdReal RayMaxAbs(cd2Vec v)
