@@ -1382,9 +1382,43 @@ static void TestRoundOffBeyondShapeSize(void)
 	}
 }
 
+/* The incident edge of a tie within round-off (fuzz_manifold2 finding, float build): a segment
+ * (0, 13750)-(0, -115000) reaching 5,000 into a sliver 1.4e9 long whose two long edges' normals
+ * both round to x = 1. The first of the tie lay wholly below the segment's extent and gave one point
+ * at y = -2.67e8 (2.67e8 off the segment); the incident edge is the one that reaches over it. Every
+ * point lies on both shapes within the contract's tolerance at 1e9. */
+static void TestIncidentEdgeTie(void)
+{
+	cd2Vec points[5] = {{CD_R(-431602080.0), CD_R(1e9)},
+						{CD_R(-45000.0), CD_R(-430751712.0)},
+						{CD_R(-7500.0), CD_R(-267181264.0)},
+						{CD_R(5000.0), CD_R(-88750.0)},
+						{CD_R(-13750.0), CD_R(-13750.0)}};
+	cd2Shape sliver, segment;
+	sliver.type = CD2_SHAPE_POLYGON;
+	TEST_CHECK(cd2MakePolygon(points, 5, &sliver.polygon) == CD_OK);
+	segment.type = CD2_SHAPE_SEGMENT;
+	segment.segment.p1 = cd2MakeVec((cdReal)9.99999972e-10, CD_R(13750.0));
+	segment.segment.p2 = cd2MakeVec((cdReal)9.99999972e-10, CD_R(-115000.0));
+	cd2Manifold m = cd2Collide(&sliver, &segment, CD_R(25000.0));
+	TEST_CHECK(m.pointCount > 0);
+	double band = 256.0 * (double)CD_REAL_EPSILON * 1e9;
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		cd2Vec p = m.points[i].point;
+		cd2Vec onB = cd2MulAdd(p, CD_R(0.5) * m.points[i].separation, m.normal);
+		double offSegment = (double)cd2Length(cd2Sub(onB, cd2ClosestPointOnSegment(segment.segment, onB)));
+		TEST_CHECKF(offSegment <= band, "point %d (%.9g %.9g): %.9g off the segment (band %.9g)", i,
+					(double)p.x, (double)p.y, offSegment, band);
+		TEST_CHECKF(m.points[i].separation < CD_R(0.0), "point %d: separation %.9g for shapes that overlap",
+					i, (double)m.points[i].separation);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(TestRoundOffBeyondShapeSize);
+	TEST_RUN(TestIncidentEdgeTie);
 	TEST_RUN(TestBoxes);
 	TEST_RUN(TestDepthAlongNormal);
 	TEST_RUN(TestRoundedPolygons);
