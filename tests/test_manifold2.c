@@ -1413,6 +1413,31 @@ static void TestIncidentEdgeTie(void)
 		TEST_CHECKF(m.points[i].separation < CD_R(0.0), "point %d: separation %.9g for shapes that overlap",
 					i, (double)m.points[i].separation);
 	}
+
+	/* The same sliver rounded by 1e9 around a box near its sharp end: the radius moves the tied
+	 * edges' surface ends along the box's face, so the tie is decided on the core ends (the first
+	 * edge's point had been 2.67e8 off the box). */
+	cd2Vec rounded[6] = {{CD_R(-431602080.0), (cdReal)9.17479852e-08},
+						 {CD_R(-45000.0), CD_R(-536870432.0)},
+						 {CD_R(-7500.0), CD_R(-267181264.0)},
+						 {CD_R(5000.0), CD_R(-88750.0)},
+						 {CD_R(-13750.0), CD_R(-13750.0)},
+						 {CD_R(-116250.0), CD_R(0.0)}};
+	TEST_CHECK(cd2MakeRoundedPolygon(rounded, 6, CD_R(1e9), &sliver.polygon) == CD_OK);
+	cd2Shape box;
+	box.type = CD2_SHAPE_BOX;
+	box.box.center = cd2MakeVec(CD_R(-10000.0), (cdReal)9.99999972e-10);
+	box.box.halfExtents = cd2MakeVec(CD_R(118750.0), CD_R(10000.0));
+	box.box.rotation.c = (cdReal)1.49999996e-05;
+	box.box.rotation.s = CD_R(1.0);
+	m = cd2Collide(&sliver, &box, CD_R(1e9));
+	TEST_CHECK(m.pointCount > 0);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		cd2Vec onB = cd2MulAdd(m.points[i].point, CD_R(0.5) * m.points[i].separation, m.normal);
+		double offBox = (double)cd2Length(cd2Sub(onB, cd2ClosestPointOnShape(&box, onB)));
+		TEST_CHECKF(offBox <= band, "rounded sliver: point %d %.9g off the box (band %.9g)", i, offBox, band);
+	}
 }
 
 int main(void)

@@ -16,6 +16,7 @@
  *   no crossing to look for. The candidates, their order and the search over the edges are the
  *   generic path's, so its choices on near ties are kept. */
 #include "chain_manifold2.h"
+#include "incident_tie2.h"
 
 /* The tolerances of manifold2.c, which this routine must follow to take the same decisions. */
 #define SEPARATED_SLOPS CD_R(0.1)
@@ -223,6 +224,21 @@ static void ClipOnSegment(cd2Manifold* manifold, const Pair* pair, int side, boo
 	}
 	cd2Vec v1 = side == 0 ? pair->p1 : pair->p2;
 	cd2Vec v2 = side == 0 ? pair->p2 : pair->p1;
+	if (polygon->count > 2)
+	{
+		/* The tie rule of manifold2.c's clipping (incident_tie2.h), on the same surface ends. */
+		cd2Vec tangent = cd2LeftPerp(n);
+		cdReal upper = cd2Dot(tangent, cd2Sub(v2, v1));
+		cd2Vec shift = cd2Scale(polygon->radius, polygon->normals[incident]);
+		cdReal along0 = cd2Dot(tangent, cd2Sub(cd2Add(polygon->vertices[incident], shift), v1));
+		cdReal along1 =
+			cd2Dot(tangent, cd2Sub(cd2Add(polygon->vertices[NextVertex(polygon, incident)], shift), v1));
+		if ((along0 < CD_R(0.0) && along1 < CD_R(0.0)) || (along0 > upper && along1 > upper))
+		{
+			incident = cd2TiedIncidentEdge(polygon->vertices, polygon->normals, polygon->count, n, lowest,
+										   incident, tangent, v1, upper);
+		}
+	}
 	uint32_t base = (uint32_t)side | (uint32_t)incident << 8;
 	ClipEdges(manifold, n, v1, v2, CD_R(0.0), polygon->vertices[incident],
 			  polygon->vertices[NextVertex(polygon, incident)], polygon->normals[incident], polygon->radius,

@@ -20,6 +20,7 @@
  * Points are reported midway between the surfaces; the normal points from A to B. */
 #include "collide/manifold2.h"
 
+#include "incident_tie2.h"
 #include "pairs2.h"
 #include "sat2_separation.h"
 
@@ -443,38 +444,24 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 		(along[0] < CD_R(0.0) && along[1] < CD_R(0.0)) || (along[0] > upper && along[1] > upper);
 	if (whollyBeyond && incident->count > 2)
 	{
-		/* A neighbour facing the normal as much within round-off (edges of a sliver at 1e9 whose
-		 * normals round to the same floats) that reaches over the reference edge is the incident
-		 * edge: the first of the tie lay wholly beyond a side line, far from the contact. Written
-		 * out here, not through a helper taking the arrays: the common path keeps them in
+		/* A tie within round-off may leave the first edge far from the contact (incident_tie2.h).
+		 * The arrays are refilled here, not by a helper taking them: the common path keeps them in
 		 * registers. */
-		int neighbours[2] = {incidentEdge > 0 ? incidentEdge - 1 : incident->count - 1,
-							 incidentEdge + 1 < incident->count ? incidentEdge + 1 : 0};
-		for (int k = 0; k < 2 && whollyBeyond; ++k)
+		int tied = cd2TiedIncidentEdge(incident->vertices, incident->normals, incident->count, n, lowest,
+									   incidentEdge, tangent, v1, upper);
+		if (tied != incidentEdge)
 		{
-			int candidate = neighbours[k];
-			if (cd2Dot(n, incident->normals[candidate]) - lowest > CD_R(4.0) * CD_REAL_EPSILON)
+			incidentEdge = tied;
+			core[0] = incident->vertices[tied];
+			core[1] = incident->vertices[tied + 1 < incident->count ? tied + 1 : 0];
+			cd2Vec shift = cd2Scale(incident->radius, incident->normals[tied]);
+			for (int i = 0; i < 2; ++i)
 			{
-				continue;
+				w[i] = cd2Add(core[i], shift);
+				along[i] = cd2Dot(tangent, cd2Sub(w[i], v1));
 			}
-			cd2Vec start = incident->vertices[candidate];
-			cd2Vec end = incident->vertices[candidate + 1 < incident->count ? candidate + 1 : 0];
-			cd2Vec shift = cd2Scale(incident->radius, incident->normals[candidate]);
-			cd2Vec startSurface = cd2Add(start, shift), endSurface = cd2Add(end, shift);
-			cdReal startAlong = cd2Dot(tangent, cd2Sub(startSurface, v1));
-			cdReal endAlong = cd2Dot(tangent, cd2Sub(endSurface, v1));
-			if ((startAlong < CD_R(0.0) && endAlong < CD_R(0.0)) || (startAlong > upper && endAlong > upper))
-			{
-				continue;
-			}
-			incidentEdge = candidate;
-			core[0] = start;
-			core[1] = end;
-			w[0] = startSurface;
-			w[1] = endSurface;
-			along[0] = startAlong;
-			along[1] = endAlong;
-			whollyBeyond = false;
+			whollyBeyond =
+				(along[0] < CD_R(0.0) && along[1] < CD_R(0.0)) || (along[0] > upper && along[1] > upper);
 		}
 	}
 	if (whollyBeyond)
