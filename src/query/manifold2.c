@@ -41,8 +41,11 @@
  * (GCC and clang otherwise turn a small if into selects). */
 #if defined(__GNUC__) || defined(__clang__)
 #define KEEP_BRANCH() __asm__ volatile("")
+/* A condition that is almost never true: its code is laid out away from the common path. */
+#define RARELY(condition) __builtin_expect(!!(condition), 0)
 #else
 #define KEEP_BRANCH() ((void)0)
+#define RARELY(condition) (condition)
 #endif
 
 #define VERTEX_FEATURE 0x100u
@@ -442,7 +445,7 @@ static void Clip(cd2Manifold* manifold, const Core* reference, int referenceEdge
 	int pointCount = 2;
 	bool whollyBeyond =
 		(along[0] < CD_R(0.0) && along[1] < CD_R(0.0)) || (along[0] > upper && along[1] > upper);
-	if (whollyBeyond && incident->count > 2)
+	if (RARELY(whollyBeyond && incident->count > 2))
 	{
 		/* A tie within round-off may leave the first edge far from the contact (incident_tie2.h).
 		 * The arrays are refilled here, not by a helper taking them: the common path keeps them in
