@@ -38,21 +38,21 @@ static double DistanceToSegment(cd2Vec p, cd2Vec a, cd2Vec b)
 }
 
 /* Whether p lies within tolerance of the convex counter-clockwise polygon hull[0..count) without
- * vertex `skip`: inside every edge's line, or within tolerance of its boundary. The distance to
+ * vertex `removed`: inside every edge's line, or within tolerance of its boundary. The distance to
  * the boundary, not to one edge's line: in a sharp corner a point can be within tolerance of both
  * edges' lines and still far from the corner. */
-static bool WithinHullWithout(const cd2Vec* hull, int count, int skip, cd2Vec p, double tolerance)
+static bool WithinHullWithout(const cd2Vec* hull, int count, int removed, cd2Vec p, double tolerance)
 {
 	bool inside = true;
 	double nearest = INFINITY;
 	for (int k = 0; k < count; ++k)
 	{
-		if (k == skip)
+		if (k == removed)
 		{
 			continue;
 		}
 		int next = k + 1 < count ? k + 1 : 0;
-		next = next == skip ? (next + 1 < count ? next + 1 : 0) : next;
+		next = next == removed ? (next + 1 < count ? next + 1 : 0) : next;
 		inside = inside && Orient(hull[k], hull[next], p) >= 0.0;
 		double d = DistanceToSegment(p, hull[k], hull[next]);
 		nearest = d < nearest ? d : nearest;
